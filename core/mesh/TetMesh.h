@@ -1,0 +1,32 @@
+#pragma once
+/// @file TetMesh.h
+/// @brief Plain mesh containers shared by every core stage (no VTK).
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+#include <vector>
+
+namespace geolattice {
+
+using Vec3 = Eigen::Vector3d;
+
+/// @brief Closed triangle surface. points: #V positions (mm), triangles: #F vertex triples,
+/// counter-clockwise seen from outside (outward normals).
+struct TriangleSurface {
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 3>> triangles;
+};
+
+/// @brief Linear tetrahedral mesh. points: #V positions (mm), tets: #T vertex quadruples.
+/// Positive orientation: (p1-p0) x (p2-p0) . (p3-p0) > 0.
+struct TetMesh {
+  std::vector<Vec3> points;
+  std::vector<std::array<int, 4>> tets;
+};
+
+/// @brief Signed volume of tet (a, b, c, d): positive for positive orientation.
+inline double signedTetVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
+  return (b - a).cross(c - a).dot(d - a) / 6.0;
+}
+
+} // namespace geolattice
