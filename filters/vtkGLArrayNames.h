@@ -28,6 +28,9 @@ constexpr const char* ReferenceFallbackTets = "ReferenceFallbackTets";
 constexpr const char* SourceCount = "SourceCount";
 // Tetrahedralization output.
 constexpr const char* TetQuality = "RadiusEdgeRatio";
+// Field data of vtkGLPlaceOnPlatform: p_out = PlacementScale * p_in + PlacementTranslation.
+constexpr const char* PlacementScale = "PlacementScale";             ///< 1 value, uniform scale factor
+constexpr const char* PlacementTranslation = "PlacementTranslation"; ///< 3 values (mm), applied after scaling
 } // namespace arrays
 } // namespace geolattice
 #endif

@@ -1,0 +1,455 @@
+#include "io/MeshFileIO.h"
+
+#include "common/Error.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string_view>
+#include <system_error>
+#include <vector>
+
+namespace geolattice {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// Whole file in memory; throws with the file name when it is missing or unreadable.
+std::string loadFile(const std::string& path) {
+  std::error_code ec;
+  if (!fs::exists(path, ec)) {
+    throw GeoLatticeError("file not found: " + path);
+  }
+  if (fs::is_directory(path, ec)) {
+    throw GeoLatticeError("cannot read " + path + ": it is a directory");
+  }
+  std::ifstream in(path, std::ios::binary);
+  if (!in) {
+    throw GeoLatticeError("cannot open " + path + ": " + std::strerror(errno));
+  }
+  std::ostringstream text;
+  text << in.rdbuf();
+  if (in.bad()) {
+    throw GeoLatticeError("cannot read " + path + ": I/O error");
+  }
+  return text.str();
+}
+
+/// Splits a text into whitespace-separated tokens line by line, skipping blank lines and
+/// '#' comments, and keeps the 1-based number of the current line for error messages.
+class LineTokenizer {
+public:
+  LineTokenizer(std::string path, std::string text) : path_(std::move(path)), text_(std::move(text)) {}
+
+  /// Tokens of the next line that has any; false at end of file.
+  bool next(std::vector<std::string_view>& tokens) {
+    tokens.clear();
+    while (pos_ < text_.size()) {
+      const size_t end = std::min(text_.find('\n', pos_), text_.size());
+      std::string_view line(text_.data() + pos_, end - pos_);
+      pos_ = end + 1;
+      ++line_;
+      line = line.substr(0, line.find('#'));
+      size_t i = 0;
+      while (i < line.size()) {
+        while (i < line.size() && isSpace(line[i])) {
+          ++i;
+        }
+        const size_t start = i;
+        while (i < line.size() && !isSpace(line[i])) {
+          ++i;
+        }
+        if (i > start) {
+          tokens.push_back(line.substr(start, i - start));
+        }
+      }
+      if (!tokens.empty()) {
+        return true;
+      }
+    }
+    return false;
+  }
+
+  /// Throws "path:line: message" for the line last returned by next().
+  [[noreturn]] void fail(const std::string& message) const {
+    throw GeoLatticeError(path_ + ":" + std::to_string(line_) + ": " + message);
+  }
+
+  /// Throws when the file ends before `what` (e.g. "vertex 12 of 100") was read.
+  [[noreturn]] void failEof(const std::string& what) const {
+    throw GeoLatticeError(path_ + ": unexpected end of file: expected " + what +
+                          " (counts in the header do not match the data)");
+  }
+
+  double number(std::string_view token, const char* what) const {
+    if (!token.empty() && token.front() == '+') {
+      token.remove_prefix(1); // from_chars does not take a leading '+'
+    }
+    double value = 0.0;
+    const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (ec != std::errc() || ptr != token.data() + token.size()) {
+      fail(std::string("expected a number for ") + what + ", got '" + std::string(token) + "'");
+    }
+    if (!std::isfinite(value)) {
+      fail(std::string("non-finite value for ") + what + ": '" + std::string(token) + "'");
+    }
+    return value;
+  }
+
+  long long integer(std::string_view token, const char* what) const {
+    if (!token.empty() && token.front() == '+') {
+      token.remove_prefix(1);
+    }
+    long long value = 0;
+    const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
+    if (ec != std::errc() || ptr != token.data() + token.size()) {
+      fail(std::string("expected an integer for ") + what + ", got '" + std::string(token) + "'");
+    }
+    return value;
+  }
+
+  /// A non-negative count that fits an int (vertex/cell counts of the header).
+  int count(std::string_view token, const char* what) const {
+    const long long value = integer(token, what);
+    if (value < 0 || value > std::numeric_limits<int>::max()) {
+      fail(std::string("invalid ") + what + " " + std::to_string(value));
+    }
+    return static_cast<int>(value);
+  }
+
+  /// A vertex index shifted by -base, checked against [0, numPoints).
+  int index(std::string_view token, long long base, int numPoints, long long cell, const char* cellName) const {
+    const long long raw = integer(token, "a vertex index");
+    const long long value = raw - base;
+    if (value < 0 || value >= numPoints) {
+      fail(std::string(cellName) + " " + std::to_string(cell) + ": vertex index " + std::to_string(raw) +
+           " out of range [" + std::to_string(base) + ", " + std::to_string(base + numPoints - 1) + "]");
+    }
+    return static_cast<int>(value);
+  }
+
+  Vec3 point(const std::vector<std::string_view>& tokens, size_t first) const {
+    return Vec3(number(tokens[first], "x"), number(tokens[first + 1], "y"), number(tokens[first + 2], "z"));
+  }
+
+  /// Throws if any non-comment line follows the data the header announced.
+  void expectEnd(const std::string& announced) {
+    std::vector<std::string_view> tokens;
+    if (next(tokens)) {
+      fail("extra data after " + announced + " (counts in the header do not match the data)");
+    }
+  }
+
+  const std::string& path() const { return path_; }
+
+private:
+  static bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+  std::string path_;
+  std::string text_;
+  size_t pos_ = 0;
+  int line_ = 0;
+};
+
+std::string toLower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+/// True for OFF header keywords whose vertex lines start with x y z: OFF with any of the
+/// prefixes S/T (texture), C (colour), N (normal). 4OFF (4-D) and nOFF (n-D) are not.
+bool isOffKeyword(std::string_view token) {
+  if (token.size() < 3 || token.substr(token.size() - 3) != "OFF") {
+    return false;
+  }
+  const std::string_view prefix = token.substr(0, token.size() - 3);
+  return prefix.find_first_not_of("STCN") == std::string_view::npos;
+}
+
+void checkNotEmpty(const std::string& path, size_t numPoints, size_t numCells, const char* cellName) {
+  if (numPoints == 0 || numCells == 0) {
+    throw GeoLatticeError("empty mesh: " + path + " has " + std::to_string(numPoints) + " vertices and " +
+                          std::to_string(numCells) + " " + cellName);
+  }
+}
+
+} // namespace
+
+TriangleSurface readOff(const std::string& path) {
+  LineTokenizer lines(path, loadFile(path));
+  std::vector<std::string_view> tok;
+  if (!lines.next(tok)) {
+    throw GeoLatticeError("empty mesh: " + path + " has no data");
+  }
+  // Header keyword (optional in Geomview's OFF), then the counts on the same or next line.
+  if (toLower(std::string(tok[0])).find("off") != std::string::npos) {
+    if (!isOffKeyword(tok[0]) && tok[0] != "off") {
+      lines.fail("unsupported OFF variant '" + std::string(tok[0]) + "' (supported: OFF, COFF, NOFF, CNOFF, STOFF)");
+    }
+    tok.erase(tok.begin());
+    if (tok.empty() && !lines.next(tok)) {
+      lines.failEof("the counts line '#vertices #faces #edges'");
+    }
+  }
+  if (tok.size() < 2 || tok.size() > 3) {
+    lines.fail("expected the counts '#vertices #faces [#edges]'");
+  }
+  const int numPoints = lines.count(tok[0], "vertex count");
+  const int numFaces = lines.count(tok[1], "face count");
+  checkNotEmpty(path, static_cast<size_t>(numPoints), static_cast<size_t>(numFaces), "faces");
+
+  TriangleSurface surface;
+  surface.points.resize(numPoints);
+  for (int i = 0; i < numPoints; ++i) {
+    if (!lines.next(tok)) {
+      lines.failEof("vertex " + std::to_string(i) + " of " + std::to_string(numPoints));
+    }
+    if (tok.size() < 3) {
+      lines.fail("vertex " + std::to_string(i) + ": expected 'x y z', got " + std::to_string(tok.size()) + " values");
+    }
+    surface.points[i] = lines.point(tok, 0);
+  }
+  surface.triangles.reserve(numFaces);
+  for (int f = 0; f < numFaces; ++f) {
+    if (!lines.next(tok)) {
+      lines.failEof("face " + std::to_string(f) + " of " + std::to_string(numFaces));
+    }
+    const long long n = lines.integer(tok[0], "the face's vertex count");
+    if (n < 3) {
+      lines.fail("face " + std::to_string(f) + " has " + std::to_string(n) + " vertices; at least 3 needed");
+    }
+    if (static_cast<long long>(tok.size()) < n + 1) {
+      lines.fail("face " + std::to_string(f) + ": expected " + std::to_string(n) + " vertex indices, got " +
+                 std::to_string(tok.size() - 1));
+    }
+    std::vector<int> ids(static_cast<size_t>(n));
+    for (long long k = 0; k < n; ++k) {
+      ids[k] = lines.index(tok[k + 1], 0, numPoints, f, "face");
+    }
+    // Fan triangulation keeps the polygon's orientation; exact for convex polygons.
+    for (long long k = 1; k + 1 < n; ++k) {
+      surface.triangles.push_back({ids[0], ids[k], ids[k + 1]});
+    }
+  }
+  lines.expectEnd(std::to_string(numPoints) + " vertices and " + std::to_string(numFaces) + " faces");
+  return surface;
+}
+
+TetMesh readTetFile(const std::string& path) {
+  LineTokenizer lines(path, loadFile(path));
+  std::vector<std::string_view> tok;
+  // "N vertices" / "M tets": a count optionally followed by one word.
+  auto header = [&](const char* what, const char* example, bool first) {
+    if (!lines.next(tok)) {
+      if (first) {
+        throw GeoLatticeError("empty mesh: " + path + " has no data");
+      }
+      lines.failEof(std::string("the header line '") + example + "'");
+    }
+    if (tok.size() > 2) {
+      lines.fail(std::string("expected '") + example + "'");
+    }
+    return lines.count(tok[0], what);
+  };
+  const int numPoints = header("vertex count", "N vertices", true);
+  const int numTets = header("tet count", "M tets", false);
+  checkNotEmpty(path, static_cast<size_t>(numPoints), static_cast<size_t>(numTets), "tets");
+
+  TetMesh mesh;
+  mesh.points.resize(numPoints);
+  for (int i = 0; i < numPoints; ++i) {
+    if (!lines.next(tok)) {
+      lines.failEof("vertex " + std::to_string(i) + " of " + std::to_string(numPoints));
+    }
+    if (tok.size() < 3) {
+      lines.fail("vertex " + std::to_string(i) + ": expected 'x y z', got " + std::to_string(tok.size()) + " values");
+    }
+    mesh.points[i] = lines.point(tok, 0);
+  }
+  mesh.tets.resize(numTets);
+  for (int t = 0; t < numTets; ++t) {
+    if (!lines.next(tok)) {
+      lines.failEof("tet " + std::to_string(t) + " of " + std::to_string(numTets));
+    }
+    if (tok.size() < 5 || tok[0] != "4") {
+      lines.fail("tet " + std::to_string(t) + ": expected '4 a b c d'");
+    }
+    for (int k = 0; k < 4; ++k) {
+      mesh.tets[t][k] = lines.index(tok[k + 1], 0, numPoints, t, "tet");
+    }
+  }
+  lines.expectEnd(std::to_string(numPoints) + " vertices and " + std::to_string(numTets) + " tets");
+  return mesh;
+}
+
+TetMesh readTetGenMesh(const std::string& path) {
+  const fs::path given(path);
+  const std::string ext = given.extension().string();
+  const std::string lowerExt = toLower(ext);
+  if (lowerExt != ".node" && lowerExt != ".ele") {
+    throw GeoLatticeError("not a TetGen mesh path (expected a .node or .ele file): " + path);
+  }
+  // Keep the letter case of the given extension for the partner file (mesh.NODE -> mesh.ELE).
+  const bool upper = ext.size() > 1 && std::isupper(static_cast<unsigned char>(ext[1]));
+  fs::path nodePath = given;
+  fs::path elePath = given;
+  nodePath.replace_extension(upper ? ".NODE" : ".node");
+  elePath.replace_extension(upper ? ".ELE" : ".ele");
+
+  TetMesh mesh;
+  std::vector<std::string_view> tok;
+  long long base = 0;
+  {
+    // .node: "<#points> <dimension> [<#attributes> [<#boundary markers>]]", then
+    // "<point #> <x> <y> <z> [attributes] [marker]".
+    LineTokenizer lines(nodePath.string(), loadFile(nodePath.string()));
+    if (!lines.next(tok)) {
+      throw GeoLatticeError("empty mesh: " + nodePath.string() + " has no header line");
+    }
+    if (tok.size() < 2 || tok.size() > 4) {
+      lines.fail("expected '<#points> <dimension> <#attributes> <#boundary markers>'");
+    }
+    const int numPoints = lines.count(tok[0], "point count");
+    const long long dim = lines.integer(tok[1], "dimension");
+    if (dim != 3) {
+      lines.fail("dimension " + std::to_string(dim) + " is not supported (only 3)");
+    }
+    const int numAttributes = tok.size() > 2 ? lines.count(tok[2], "attribute count") : 0;
+    const int numMarkers = tok.size() > 3 ? lines.count(tok[3], "boundary marker count") : 0;
+    if (numMarkers > 1) {
+      lines.fail("boundary marker count must be 0 or 1, got " + std::to_string(numMarkers));
+    }
+    if (numPoints == 0) {
+      throw GeoLatticeError("empty mesh: " + nodePath.string() + " has 0 points");
+    }
+    mesh.points.resize(numPoints);
+    const size_t minTokens = 4 + static_cast<size_t>(numAttributes) + static_cast<size_t>(numMarkers);
+    for (int i = 0; i < numPoints; ++i) {
+      if (!lines.next(tok)) {
+        lines.failEof("point " + std::to_string(i) + " of " + std::to_string(numPoints));
+      }
+      if (tok.size() < minTokens) {
+        lines.fail("point line: expected " + std::to_string(minTokens) + " values ('<point #> x y z' + " +
+                   std::to_string(numAttributes) + " attributes + " + std::to_string(numMarkers) +
+                   " markers), got " + std::to_string(tok.size()));
+      }
+      const long long number = lines.integer(tok[0], "the point number");
+      if (i == 0) {
+        if (number != 0 && number != 1) {
+          lines.fail("first point number must be 0 or 1, got " + std::to_string(number));
+        }
+        base = number;
+      } else if (number != base + i) {
+        lines.fail("point numbers must be consecutive: expected " + std::to_string(base + i) + ", got " +
+                   std::to_string(number));
+      }
+      mesh.points[i] = lines.point(tok, 1);
+    }
+    lines.expectEnd(std::to_string(numPoints) + " points");
+  }
+  {
+    // .ele: "<#tets> <nodes per tet (4 or 10)> [<#attributes>]", then
+    // "<tet #> <n1> ... <nk> [attributes]" with point numbers of the .node file.
+    LineTokenizer lines(elePath.string(), loadFile(elePath.string()));
+    if (!lines.next(tok)) {
+      throw GeoLatticeError("empty mesh: " + elePath.string() + " has no header line");
+    }
+    if (tok.size() < 2 || tok.size() > 3) {
+      lines.fail("expected '<#tetrahedra> <nodes per tetrahedron> <#attributes>'");
+    }
+    const int numTets = lines.count(tok[0], "tet count");
+    const long long nodesPerTet = lines.integer(tok[1], "nodes per tetrahedron");
+    if (nodesPerTet != 4 && nodesPerTet != 10) {
+      lines.fail("nodes per tetrahedron must be 4 or 10, got " + std::to_string(nodesPerTet));
+    }
+    const int numAttributes = tok.size() > 2 ? lines.count(tok[2], "attribute count") : 0;
+    if (numTets == 0) {
+      throw GeoLatticeError("empty mesh: " + elePath.string() + " has 0 tetrahedra");
+    }
+    const int numPoints = static_cast<int>(mesh.points.size());
+    const size_t minTokens = 1 + static_cast<size_t>(nodesPerTet) + static_cast<size_t>(numAttributes);
+    mesh.tets.resize(numTets);
+    for (int t = 0; t < numTets; ++t) {
+      if (!lines.next(tok)) {
+        lines.failEof("tetrahedron " + std::to_string(t) + " of " + std::to_string(numTets));
+      }
+      if (tok.size() < minTokens) {
+        lines.fail("tetrahedron line: expected " + std::to_string(minTokens) + " values, got " +
+                   std::to_string(tok.size()));
+      }
+      lines.integer(tok[0], "the tetrahedron number");
+      for (int k = 0; k < 4; ++k) {
+        mesh.tets[t][k] = lines.index(tok[k + 1], base, numPoints, t, "tetrahedron");
+      }
+    }
+    lines.expectEnd(std::to_string(numTets) + " tetrahedra");
+  }
+  return mesh;
+}
+
+void writeTetFile(const std::string& path, const TetMesh& mesh) {
+  checkNotEmpty(path, mesh.points.size(), mesh.tets.size(), "tets");
+  const long long numPoints = static_cast<long long>(mesh.points.size());
+  for (size_t t = 0; t < mesh.tets.size(); ++t) {
+    for (int id : mesh.tets[t]) {
+      if (id < 0 || id >= numPoints) {
+        throw GeoLatticeError("cannot write " + path + ": tet " + std::to_string(t) + " has vertex index " +
+                              std::to_string(id) + " out of range [0, " + std::to_string(numPoints - 1) + "]");
+      }
+    }
+  }
+  for (size_t i = 0; i < mesh.points.size(); ++i) {
+    if (!mesh.points[i].allFinite()) {
+      throw GeoLatticeError("cannot write " + path + ": vertex " + std::to_string(i) + " is not finite");
+    }
+  }
+
+  const std::string tmpPath = path + ".tmp";
+  {
+    std::ofstream out(tmpPath, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      throw GeoLatticeError("cannot write " + tmpPath + ": " + std::strerror(errno));
+    }
+    // Shortest representation that parses back to the same double (std::to_chars).
+    char buf[64];
+    auto put = [&](double v) {
+      const auto [ptr, ec] = std::to_chars(buf, buf + sizeof(buf), v);
+      out.write(buf, ptr - buf);
+    };
+    out << mesh.points.size() << " vertices\n" << mesh.tets.size() << " tets\n";
+    for (const Vec3& p : mesh.points) {
+      put(p.x());
+      out.put(' ');
+      put(p.y());
+      out.put(' ');
+      put(p.z());
+      out.put('\n');
+    }
+    for (const auto& t : mesh.tets) {
+      out << "4 " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
+    }
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(tmpPath, ignored);
+      throw GeoLatticeError("cannot write " + tmpPath + ": I/O error (disk full?)");
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmpPath, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(tmpPath, ignored);
+    throw GeoLatticeError("cannot rename " + tmpPath + " to " + path + ": " + ec.message());
+  }
+}
+
+} // namespace geolattice

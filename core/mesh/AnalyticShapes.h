@@ -1,0 +1,38 @@
+#pragma once
+/// @file AnalyticShapes.h
+/// @brief Closed, outward-oriented, edge-manifold triangle surfaces and an exact tet mesh,
+/// generated in code: test fixtures and simple parts that need no input file.
+///
+/// Data flow: these shapes feed the tetrahedralizer (surfaces) or the GDF stages directly
+/// (boxTetMesh) wherever a test needs a mesh whose geometry is known exactly.
+#include "mesh/TetMesh.h"
+
+namespace geolattice {
+
+/// @brief Surface of the axis-aligned box [0,sx] x [0,sy] x [0,sz] (mm).
+/// Every face is a regular grid of right triangles; the grid step along each axis is the same
+/// on every face that contains that axis, so faces share their boundary vertices (no
+/// duplicates). Steps are chosen so that every triangle edge, the diagonals included, is
+/// <= maxEdge. Triangles are counter-clockwise seen from outside.
+/// @param size   box extents (sx, sy, sz) in mm, each > 0 and finite
+/// @param maxEdge upper bound of the triangle edge length in mm, > 0
+/// @throws GeoLatticeError on non-positive or non-finite arguments or more than 2^31 vertices.
+TriangleSurface boxSurface(const Vec3& size, double maxEdge);
+
+/// @brief Icosphere: a regular icosahedron subdivided subdivisionLevel times (each triangle
+/// into 4) with every vertex projected onto the sphere. Level L has 20*4^L triangles and
+/// 10*4^L + 2 vertices; counter-clockwise seen from outside.
+/// @param centre centre (mm)
+/// @param radius radius (mm), > 0
+/// @param subdivisionLevel 0..10
+/// @throws GeoLatticeError on a non-positive radius or a level outside 0..10.
+TriangleSurface sphereSurface(const Vec3& centre, double radius, int subdivisionLevel);
+
+/// @brief Structured tet mesh of the box [0,sx] x [0,sy] x [0,sz] (mm) with nx*ny*nz cells,
+/// each cell split into 6 tets along its main diagonal (Kuhn / Freudenthal split). The split
+/// is the same in every cell, so the mesh is conforming. Every tet is positively oriented.
+/// Vertex (i,j,k) has id i + (nx+1)*(j + (ny+1)*k); #V = (nx+1)(ny+1)(nz+1), #T = 6*nx*ny*nz.
+/// @throws GeoLatticeError on non-positive sizes or counts, or more than 2^31 tets.
+TetMesh boxTetMesh(const Vec3& size, int nx, int ny, int nz);
+
+} // namespace geolattice

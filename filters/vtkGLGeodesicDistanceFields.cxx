@@ -1,0 +1,211 @@
+#include "vtkGLGeodesicDistanceFields.h"
+
+#include "vtkGLArrayNames.h"
+#include "vtkGLMeshConversion.h"
+
+#include "common/Error.h"
+#include "gdf/GeodesicDistanceFields.h"
+#include "gdf/HeatSources.h"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <chrono>
+
+vtkStandardNewMacro(vtkGLGeodesicDistanceFields);
+
+struct vtkGLGeodesicDistanceFields::SolverCache
+{
+  std::unique_ptr<geolattice::GeodesicDistanceFields> Solver;
+  vtkMTimeType MeshTime = 0;
+  geolattice::GeodesicFieldOptions Options;
+};
+
+namespace
+{
+bool sameSetUp(const geolattice::GeodesicFieldOptions& a, const geolattice::GeodesicFieldOptions& b)
+{
+  return a.timeFactor == b.timeFactor && a.reference == b.reference &&
+    a.referenceParallelDeg == b.referenceParallelDeg && a.backend == b.backend;
+}
+
+vtkNew<vtkDoubleArray> pointArray(const char* name, const Eigen::VectorXd& values)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->SetNumberOfTuples(values.size());
+  for (Eigen::Index i = 0; i < values.size(); ++i)
+  {
+    a->SetValue(i, values[i]);
+  }
+  return a;
+}
+
+vtkNew<vtkDoubleArray> vectorArray(const char* name, const std::vector<geolattice::Vec3>& values)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  for (size_t i = 0; i < values.size(); ++i)
+  {
+    a->SetTypedTuple(static_cast<vtkIdType>(i), values[i].data());
+  }
+  return a;
+}
+
+void addField(vtkFieldData* fd, const char* name, std::initializer_list<double> values)
+{
+  vtkNew<vtkDoubleArray> a;
+  a->SetName(name);
+  for (double v : values)
+  {
+    a->InsertNextValue(v);
+  }
+  fd->AddArray(a);
+}
+} // namespace
+
+vtkGLGeodesicDistanceFields::vtkGLGeodesicDistanceFields()
+  : Cache(new SolverCache)
+{
+  // Default mask array for MASK_ARRAY mode; ParaView users pick any point array.
+  this->SetInputArrayToProcess(
+    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, geolattice::arrays::HeatSource);
+}
+
+vtkGLGeodesicDistanceFields::~vtkGLGeodesicDistanceFields() = default;
+
+int vtkGLGeodesicDistanceFields::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
+  return 1;
+}
+
+int vtkGLGeodesicDistanceFields::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  namespace gl = geolattice;
+  const auto start = std::chrono::steady_clock::now();
+  try
+  {
+    gl::GeodesicFieldOptions options;
+    options.timeFactor = this->TimeFactor;
+    options.reference = gl::Vec3(this->ReferenceVector[0], this->ReferenceVector[1], this->ReferenceVector[2]);
+    options.referenceParallelDeg = this->ReferenceParallelAngle;
+    options.backend = this->UseCholmod ? gl::CholeskyBackend::Cholmod : gl::CholeskyBackend::EigenLDLT;
+
+    SolverCache& cache = *this->Cache;
+    const vtkMTimeType meshTime = input ? input->GetMTime() : 0;
+    if (!cache.Solver || cache.MeshTime != meshTime || !sameSetUp(cache.Options, options))
+    {
+      cache.Solver.reset();
+      const gl::TetMesh mesh = gl::toTetMesh(input);
+      this->UpdateProgress(0.05);
+      cache.Solver = std::make_unique<gl::GeodesicDistanceFields>(mesh, options);
+      cache.MeshTime = meshTime;
+      cache.Options = options;
+    }
+    this->UpdateProgress(0.5);
+    if (this->GetAbortExecute())
+    {
+      output->Initialize();
+      return 1;
+    }
+
+    const gl::TetMesh& mesh = cache.Solver->mesh();
+    std::vector<int> sources;
+    switch (this->SourceMode)
+    {
+      case MASK_ARRAY:
+      {
+        vtkDataArray* mask = this->GetInputArrayToProcess(0, inputVector);
+        if (!mask)
+        {
+          throw gl::GeoLatticeError("source mode is MASK_ARRAY but the selected point array is missing");
+        }
+        std::vector<double> values(mask->GetNumberOfTuples());
+        for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
+        {
+          values[i] = mask->GetComponent(i, 0);
+        }
+        sources = gl::sourcesFromMask(mesh, values);
+        break;
+      }
+      case DOWNWARD_FACES:
+        sources = gl::sourcesFromDownwardFaces(mesh, cache.Solver->topology(), this->BaseFaceAngle);
+        break;
+      default:
+        sources = gl::sourcesNearLowestZ(mesh, this->BaseTolerance);
+    }
+    const gl::GeodesicFields fields = cache.Solver->solve(sources);
+    this->UpdateProgress(0.95);
+
+    output->ShallowCopy(input);
+    vtkPointData* pd = output->GetPointData();
+    pd->AddArray(pointArray(gl::arrays::Gamma, fields.gamma));
+    pd->AddArray(pointArray(gl::arrays::Alpha, fields.alpha));
+    pd->AddArray(pointArray(gl::arrays::Beta, fields.beta));
+    pd->SetActiveScalars(gl::arrays::Gamma);
+    vtkNew<vtkUnsignedCharArray> isSource;
+    isSource->SetName(gl::arrays::HeatSource);
+    isSource->SetNumberOfTuples(input->GetNumberOfPoints());
+    isSource->FillValue(0);
+    for (int s : sources)
+    {
+      isSource->SetValue(s, 1);
+    }
+    pd->AddArray(isSource);
+    vtkCellData* cd = output->GetCellData();
+    cd->AddArray(vectorArray(gl::arrays::GammaGradient, fields.gammaDirection));
+    cd->AddArray(vectorArray(gl::arrays::AlphaDirection, fields.alphaDirection));
+    cd->AddArray(vectorArray(gl::arrays::BetaDirection, fields.betaDirection));
+
+    vtkNew<vtkFieldData> fd;
+    fd->DeepCopy(input->GetFieldData());
+    addField(fd, gl::arrays::GammaRange, { fields.gamma.minCoeff(), fields.gamma.maxCoeff() });
+    addField(fd, gl::arrays::AlphaRange, { fields.alpha.minCoeff(), fields.alpha.maxCoeff() });
+    addField(fd, gl::arrays::BetaRange, { fields.beta.minCoeff(), fields.beta.maxCoeff() });
+    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    addField(fd, gl::arrays::GdfTimings,
+      { fields.timings.assembly, fields.timings.factorization, fields.timings.solve, total });
+    const auto& dev = fields.orthogonalityDeviationDeg;
+    addField(fd, gl::arrays::OrthogonalityDeg, { dev[0], dev[1], dev[2], dev[3] });
+    addField(fd, gl::arrays::ReferenceFallbackTets, { static_cast<double>(fields.referenceFallbackTets) });
+    addField(fd, gl::arrays::SourceCount, { static_cast<double>(sources.size()) });
+    output->SetFieldData(fd);
+    this->UpdateProgress(1.0);
+  }
+  catch (const std::exception& e)
+  {
+    vtkErrorMacro(<< e.what());
+    output->Initialize();
+  }
+  return 1;
+}
+
+void vtkGLGeodesicDistanceFields::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "SourceMode: " << this->SourceMode << "\n";
+  os << indent << "BaseTolerance: " << this->BaseTolerance << " mm\n";
+  os << indent << "BaseFaceAngle: " << this->BaseFaceAngle << " deg\n";
+  os << indent << "TimeFactor: " << this->TimeFactor << "\n";
+  os << indent << "ReferenceVector: " << this->ReferenceVector[0] << " " << this->ReferenceVector[1] << " "
+     << this->ReferenceVector[2] << "\n";
+  os << indent << "ReferenceParallelAngle: " << this->ReferenceParallelAngle << " deg\n";
+  os << indent << "UseCholmod: " << this->UseCholmod << "\n";
+}

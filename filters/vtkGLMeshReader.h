@@ -1,0 +1,84 @@
+/**
+ * @class   vtkGLMeshReader
+ * @brief   Reads a model as a triangle surface or a tet mesh, chosen by the file extension.
+ *
+ * The entry point of the pipeline: a printed part comes in as a closed triangle surface (to be
+ * tetrahedralized) or as a ready tet mesh.
+ *
+ * Inputs:  none (0 input ports).
+ * Output:  port 0, its type decided in RequestDataObject from the extension (case-insensitive):
+ *   - `.stl` (vtkSTLReader, points merged), `.obj` (vtkOBJReader), `.ply` (vtkPLYReader),
+ *     `.vtp` (vtkXMLPolyDataReader), `.off` (core readOff) -> vtkPolyData of triangles only.
+ *     Polygons are triangulated, vertices/lines dropped, coincident points merged
+ *     (vtkCleanPolyData, exact), so a triangle soup (STL) or an OBJ whose vertices were split
+ *     by texture coordinates becomes one connected surface. Point normals and texture
+ *     coordinates are dropped (they are per-corner data that merging would make wrong); other
+ *     point and cell arrays of a `.vtp`/`.ply` are kept.
+ *   - `.vtu` (vtkXMLUnstructuredGridReader, arrays kept), `.tet` (core readTetFile),
+ *     `.node`/`.ele` (core readTetGenMesh; either file of the pair) -> vtkUnstructuredGrid of
+ *     VTK_TETRA cells only.
+ * Coordinates are passed through unchanged (no unit conversion; see vtkGLPlaceOnPlatform).
+ *
+ * Parameters: FileName (path, no default).
+ *
+ * Errors (vtkErrorMacro, empty output, RequestData still returns 1 so that the pipeline
+ * does not abort): no file name, missing file ("file not found: <path>"), unknown extension
+ * (the message lists the supported ones), an empty mesh, a non-tetrahedral cell in a `.vtu`,
+ * a parse error of the core readers (file and line), a VTK reader reporting an error.
+ */
+#ifndef vtkGLMeshReader_h
+#define vtkGLMeshReader_h
+
+#include "GeoLatticeFiltersModule.h"
+#include "vtkDataObjectAlgorithm.h"
+
+#include <string>
+
+class GEOLATTICEFILTERS_EXPORT vtkGLMeshReader : public vtkDataObjectAlgorithm
+{
+public:
+  static vtkGLMeshReader* New();
+  vtkTypeMacro(vtkGLMeshReader, vtkDataObjectAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Path of the model file (no default). The extension chooses the format and output type.
+  vtkSetFilePathMacro(FileName);
+  vtkGetFilePathMacro(FileName);
+  ///@}
+
+  /// 1 if the path has a supported extension and names an existing regular file (used by
+  /// ParaView's reader factory), else 0.
+  static int CanReadFile(const char* path);
+
+  /// True if the extension of `path` gives a tet mesh (.vtu, .tet, .node, .ele), false for a
+  /// surface or an unsupported extension.
+  static bool IsTetMeshFile(const char* path);
+
+  /// True if the extension of `path` (case-insensitive) is one of the supported ones.
+  static bool IsSupportedFile(const char* path);
+
+  ///@{
+  /// The supported extensions with their dot, lower case: ".stl", ".obj", ... (surfaces first,
+  /// then tet meshes). GetSupportedExtensionsString() gives them space-separated, for messages
+  /// and the CLI's help.
+  static int GetNumberOfSupportedExtensions();
+  static const char* GetSupportedExtension(int i);
+  static const char* GetSupportedExtensionsString();
+  ///@}
+
+protected:
+  vtkGLMeshReader();
+  ~vtkGLMeshReader() override;
+
+  int RequestDataObject(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  char* FileName = nullptr;
+
+private:
+  vtkGLMeshReader(const vtkGLMeshReader&) = delete;
+  void operator=(const vtkGLMeshReader&) = delete;
+};
+
+#endif

@@ -1,0 +1,77 @@
+/**
+ * @class   vtkGLPlaceOnPlatform
+ * @brief   Scales a model uniformly and moves it so that its base sits on the platform z = 0.
+ *
+ * Printing starts from the platform: the later stages take the lowest part of the model as
+ * the base (heat source of the γ field), so the model is placed with min z = 0, optionally
+ * centred in x and y, and brought to millimetres by a uniform scale.
+ *
+ * Input:  any vtkPointSet (vtkPolyData surface or vtkUnstructuredGrid tet mesh), non-empty.
+ * Output: the same type and topology with every point mapped to
+ *   p_out = s * p_in + t,
+ * where s = Scale, or FitSize / (largest bounding-box side) when FitSize > 0, and
+ * t = (-s * cx, -s * cy, -s * zmin) with (cx, cy) the bounding-box centre in x, y if CenterXY,
+ * else t = (0, 0, -s * zmin). Point and cell arrays are passed unchanged (a uniform positive
+ * scale keeps directions). Output points are double precision, so min z = 0 and the FitSize
+ * side hold to double rounding even for single-precision input.
+ * Field data (added to the input's): `PlacementScale` (1 value: s) and
+ * `PlacementTranslation` (3 values: t, mm), names in vtkGLArrayNames.h.
+ *
+ * Parameters:
+ *   - Scale: uniform scale factor (default 1, must be > 0), e.g. 10 for a model in cm.
+ *   - FitSize: target largest bounding-box side (mm, default 0 = off, must be >= 0). When > 0
+ *     it replaces Scale.
+ *   - CenterXY: move the bounding-box centre in x and y to 0 (default on).
+ *
+ * Errors (vtkErrorMacro, empty output): Scale <= 0, FitSize < 0, an empty input, FitSize > 0 for
+ * a model whose bounding box has no extent. Out-of-domain values are reported rather than
+ * clamped so that a wrong unit is noticed.
+ */
+#ifndef vtkGLPlaceOnPlatform_h
+#define vtkGLPlaceOnPlatform_h
+
+#include "GeoLatticeFiltersModule.h"
+#include "vtkPointSetAlgorithm.h"
+
+class GEOLATTICEFILTERS_EXPORT vtkGLPlaceOnPlatform : public vtkPointSetAlgorithm
+{
+public:
+  static vtkGLPlaceOnPlatform* New();
+  vtkTypeMacro(vtkGLPlaceOnPlatform, vtkPointSetAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Uniform scale factor (default 1, > 0). Ignored when FitSize > 0.
+  vtkSetMacro(Scale, double);
+  vtkGetMacro(Scale, double);
+  ///@}
+
+  ///@{
+  /// Target largest bounding-box side after scaling (mm, default 0 = use Scale, >= 0).
+  vtkSetMacro(FitSize, double);
+  vtkGetMacro(FitSize, double);
+  ///@}
+
+  ///@{
+  /// Centre the bounding box in x and y on the origin (default on).
+  vtkSetMacro(CenterXY, vtkTypeBool);
+  vtkGetMacro(CenterXY, vtkTypeBool);
+  vtkBooleanMacro(CenterXY, vtkTypeBool);
+  ///@}
+
+protected:
+  vtkGLPlaceOnPlatform() = default;
+  ~vtkGLPlaceOnPlatform() override = default;
+
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double Scale = 1.0;
+  double FitSize = 0.0;
+  vtkTypeBool CenterXY = true;
+
+private:
+  vtkGLPlaceOnPlatform(const vtkGLPlaceOnPlatform&) = delete;
+  void operator=(const vtkGLPlaceOnPlatform&) = delete;
+};
+
+#endif

@@ -1,0 +1,227 @@
+// Accuracy and robustness of the heat-method GDF (paper Eqs. 1-5).
+#include "common/Error.h"
+#include "gdf/GeodesicDistanceFields.h"
+#include "gdf/HeatSources.h"
+#include "mesh/AnalyticShapes.h"
+#include "mesh/TetMeshTopology.h"
+#include "tetrahedralize/SurfaceTetrahedralizer.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace geolattice;
+
+namespace {
+
+struct ErrorStats {
+  double mean = 0;
+  double max = 0;
+};
+
+template <class Expected>
+ErrorStats fieldError(const TetMesh& mesh, const Eigen::VectorXd& field, Expected expected) {
+  ErrorStats s;
+  for (size_t v = 0; v < mesh.points.size(); ++v) {
+    const double e = std::abs(field[v] - expected(mesh.points[v]));
+    s.mean += e;
+    s.max = std::max(s.max, e);
+  }
+  s.mean /= static_cast<double>(mesh.points.size());
+  return s;
+}
+
+// Box 40 x 40 x 60 mm meshed by TetGen with a 1.5 mm target edge length.
+const TetMesh& boxMesh() {
+  static const TetMesh mesh = [] {
+    TetrahedralizeOptions options;
+    options.targetEdgeLength = 1.5;
+    return tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 1.5), options).mesh;
+  }();
+  return mesh;
+}
+
+const GeodesicFields& boxFields() {
+  static const GeodesicFields fields = computeGeodesicDistanceFields(boxMesh(), sourcesNearLowestZ(boxMesh(), 1e-6));
+  return fields;
+}
+
+} // namespace
+
+TEST(TetLaplacian, DivergenceOfGradientIsStiffnessTimesField) {
+  const TetMesh mesh = boxTetMesh(Vec3(2, 3, 4), 3, 3, 4);
+  const TetOperators ops = buildTetOperators(mesh);
+  Eigen::VectorXd f(mesh.points.size());
+  for (size_t v = 0; v < mesh.points.size(); ++v) {
+    const Vec3& p = mesh.points[v];
+    f[v] = p.x() * p.x() - 2 * p.y() + std::sin(p.z());
+  }
+  std::vector<Vec3> grad(mesh.tets.size());
+  for (size_t t = 0; t < mesh.tets.size(); ++t) {
+    grad[t] = tetGradient(ops, mesh, static_cast<int>(t), f);
+  }
+  const Eigen::VectorXd b = integratedDivergence(ops, mesh, grad);
+  EXPECT_LT((b - ops.stiffness * f).norm(), 1e-10 * b.norm());
+  EXPECT_NEAR(ops.vertexVolumes.sum(), 24.0, 1e-10);
+  // Constants are in the null space of K.
+  EXPECT_LT((ops.stiffness * Eigen::VectorXd::Ones(f.size())).norm(), 1e-12);
+}
+
+TEST(TetLaplacian, RejectsInvertedTet) {
+  TetMesh mesh = boxTetMesh(Vec3(1, 1, 1), 1, 1, 1);
+  std::swap(mesh.tets[2][0], mesh.tets[2][1]);
+  try {
+    buildTetOperators(mesh);
+    FAIL() << "expected an error";
+  } catch (const GeoLatticeError& e) {
+    EXPECT_NE(std::string(e.what()).find("inverted tet 2"), std::string::npos) << e.what();
+  }
+}
+
+TEST(GeodesicDistanceFields, BoxGammaIsHeightAlphaBetaAreAffine) {
+  const TetMesh& mesh = boxMesh();
+  const std::vector<int> sources = sourcesNearLowestZ(mesh, 1e-6);
+  const GeodesicFields& f = boxFields();
+
+  const ErrorStats gamma = fieldError(mesh, f.gamma, [](const Vec3& p) { return p.z(); });
+  EXPECT_LT(gamma.mean, 0.005 * 60) << "mean |γ - z|";
+  EXPECT_LT(gamma.max, 0.02 * 60) << "max |γ - z|";
+  // r = (1,0,0), g_γ = +z: g_α = r × z = -y, g_β = g_α × g_γ = -x (Eq. 3).
+  const ErrorStats alpha = fieldError(mesh, f.alpha, [](const Vec3& p) { return 40 - p.y(); });
+  const ErrorStats beta = fieldError(mesh, f.beta, [](const Vec3& p) { return 40 - p.x(); });
+  EXPECT_LT(alpha.mean, 0.005 * 40);
+  EXPECT_LT(alpha.max, 0.02 * 40);
+  EXPECT_LT(beta.mean, 0.005 * 40);
+  EXPECT_LT(beta.max, 0.02 * 40);
+  RecordProperty("gamma_mean_rel_pct", std::to_string(100 * gamma.mean / 60));
+  RecordProperty("gamma_max_rel_pct", std::to_string(100 * gamma.max / 60));
+  std::printf("box: gamma mean %.4f%% max %.4f%%, alpha mean %.4f%% max %.4f%%, beta mean %.4f%% max %.4f%%\n",
+              100 * gamma.mean / 60, 100 * gamma.max / 60, 100 * alpha.mean / 40, 100 * alpha.max / 40,
+              100 * beta.mean / 40, 100 * beta.max / 40);
+  for (int s : sources) {
+    EXPECT_EQ(f.gamma[s], 0.0);
+  }
+  EXPECT_NEAR(f.alpha.minCoeff(), 0.0, 1e-12);
+  EXPECT_NEAR(f.beta.minCoeff(), 0.0, 1e-12);
+}
+
+TEST(GeodesicDistanceFields, DirectionsAreOrthonormalPerTet) {
+  const TetMesh& mesh = boxMesh();
+  const GeodesicFields& f = boxFields();
+  ASSERT_EQ(f.gammaDirection.size(), mesh.tets.size());
+  for (size_t t = 0; t < mesh.tets.size(); ++t) {
+    ASSERT_LT(std::abs(f.alphaDirection[t].dot(f.gammaDirection[t])), 1e-9) << t;
+    ASSERT_LT(std::abs(f.betaDirection[t].dot(f.gammaDirection[t])), 1e-9) << t;
+    ASSERT_LT(std::abs(f.alphaDirection[t].dot(f.betaDirection[t])), 1e-9) << t;
+    ASSERT_NEAR(f.gammaDirection[t].norm(), 1.0, 1e-12);
+    ASSERT_NEAR(f.alphaDirection[t].norm(), 1.0, 1e-12);
+  }
+  EXPECT_EQ(f.referenceFallbackTets, 0);
+  EXPECT_LT(f.orthogonalityDeviationDeg[1], 5.0);
+}
+
+TEST(GeodesicDistanceFields, ReferenceParallelToGammaFallsBackAndIsReported) {
+  const TetMesh mesh = boxTetMesh(Vec3(10, 10, 20), 5, 5, 10);
+  GeodesicFieldOptions options;
+  options.reference = Vec3(0, 0, 1); // (nearly) parallel to g_γ everywhere
+  options.referenceParallelDeg = 45;
+  const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 1e-6), options);
+  EXPECT_GT(f.referenceFallbackTets, static_cast<int>(mesh.tets.size()) * 9 / 10);
+  for (size_t t = 0; t < mesh.tets.size(); ++t) {
+    ASSERT_TRUE(f.alphaDirection[t].allFinite());
+    ASSERT_NEAR(f.alphaDirection[t].norm(), 1.0, 1e-9);
+    ASSERT_LT(std::abs(f.alphaDirection[t].dot(f.gammaDirection[t])), 1e-9);
+  }
+  EXPECT_TRUE(f.alpha.allFinite());
+  EXPECT_GT(f.alpha.maxCoeff(), 9.0); // a real field across the box, not zero
+}
+
+TEST(GeodesicDistanceFields, SourceSelectionsAgreeOnTheBox) {
+  const TetMesh mesh = boxTetMesh(Vec3(10, 10, 20), 5, 5, 10);
+  const TetMeshTopology topology(mesh);
+  const std::vector<int> lowest = sourcesNearLowestZ(mesh, 1e-6);
+  EXPECT_EQ(sourcesFromDownwardFaces(mesh, topology, 10.0), lowest);
+  std::vector<double> mask(mesh.points.size(), 0.0);
+  for (int v : lowest) {
+    mask[v] = 1.0;
+  }
+  EXPECT_EQ(sourcesFromMask(mesh, mask), lowest);
+  EXPECT_THROW(sourcesFromMask(mesh, std::vector<double>(3, 1.0)), GeoLatticeError);
+  EXPECT_THROW(sourcesNearLowestZ(mesh, -1.0), GeoLatticeError);
+}
+
+TEST(GeodesicDistanceFields, BackendsAgree) {
+  const TetMesh mesh = boxTetMesh(Vec3(10, 12, 20), 6, 6, 10);
+  GeodesicFieldOptions options;
+  const auto sources = sourcesNearLowestZ(mesh, 1e-6);
+  const GeodesicFields a = computeGeodesicDistanceFields(mesh, sources, options);
+  options.backend = CholeskyBackend::EigenLDLT;
+  const GeodesicFields b = computeGeodesicDistanceFields(mesh, sources, options);
+  EXPECT_LT((a.gamma - b.gamma).lpNorm<Eigen::Infinity>(), 1e-8);
+  EXPECT_LT((a.alpha - b.alpha).lpNorm<Eigen::Infinity>(), 1e-8);
+  EXPECT_LT((a.beta - b.beta).lpNorm<Eigen::Infinity>(), 1e-8);
+}
+
+TEST(GeodesicDistanceFields, SolverIsReusedForNewSources) {
+  const TetMesh mesh = boxTetMesh(Vec3(10, 10, 10), 5, 5, 5);
+  GeodesicDistanceFields solver(mesh);
+  const std::vector<int> bottom = sourcesNearLowestZ(mesh, 1e-6);
+  std::vector<int> top;
+  for (size_t v = 0; v < mesh.points.size(); ++v) {
+    if (mesh.points[v].z() > 10 - 1e-9) {
+      top.push_back(static_cast<int>(v));
+    }
+  }
+  const GeodesicFields first = solver.solve(bottom);
+  const GeodesicFields fromTop = solver.solve(top);
+  const GeodesicFields again = solver.solve(bottom);
+  // The cached factorizations give the same answers as a fresh solver.
+  EXPECT_LT((fromTop.gamma - computeGeodesicDistanceFields(mesh, top).gamma).lpNorm<Eigen::Infinity>(), 1e-10);
+  EXPECT_LT((again.gamma - first.gamma).lpNorm<Eigen::Infinity>(), 1e-12);
+  double meanTop = 0;
+  for (int v : top) {
+    EXPECT_EQ(fromTop.gamma[v], 0.0);
+    meanTop += first.gamma[v] / static_cast<double>(top.size());
+  }
+  EXPECT_NEAR(meanTop, 10.0, 0.3); // coarse 2 mm Kuhn mesh: corners are off by up to ~1 mm
+
+}
+
+TEST(GeodesicDistanceFields, BadInputIsReported) {
+  const TetMesh mesh = boxTetMesh(Vec3(1, 1, 1), 2, 2, 2);
+  GeodesicDistanceFields solver(mesh);
+  EXPECT_THROW(solver.solve({}), GeoLatticeError);
+  EXPECT_THROW(solver.solve({-1}), GeoLatticeError);
+  EXPECT_THROW(solver.solve({static_cast<int>(mesh.points.size())}), GeoLatticeError);
+  GeodesicFieldOptions zeroTime;
+  zeroTime.timeFactor = 0;
+  EXPECT_THROW(GeodesicDistanceFields(mesh, zeroTime), GeoLatticeError);
+  GeodesicFieldOptions zeroRef;
+  zeroRef.reference = Vec3::Zero();
+  EXPECT_THROW(GeodesicDistanceFields(mesh, zeroRef), GeoLatticeError);
+  EXPECT_THROW(GeodesicDistanceFields(TetMesh{}), GeoLatticeError);
+
+  // Two disjoint boxes with sources in only one of them.
+  TetMesh two = boxTetMesh(Vec3(1, 1, 1), 1, 1, 1);
+  const int n = static_cast<int>(two.points.size());
+  const size_t nt = two.tets.size();
+  for (int v = 0; v < n; ++v) {
+    two.points.push_back(two.points[v] + Vec3(5, 0, 0));
+  }
+  for (size_t t = 0; t < nt; ++t) {
+    auto tet = two.tets[t];
+    for (int& v : tet) {
+      v += n;
+    }
+    two.tets.push_back(tet);
+  }
+  GeodesicDistanceFields twoSolver(two);
+  EXPECT_EQ(twoSolver.componentCount(), 2);
+  try {
+    twoSolver.solve({0});
+    FAIL() << "expected an error";
+  } catch (const GeoLatticeError& e) {
+    EXPECT_NE(std::string(e.what()).find("contain no source"), std::string::npos) << e.what();
+  }
+  EXPECT_NO_THROW(twoSolver.solve({0, n}));
+}
