@@ -105,6 +105,45 @@ TEST(GeodesicDistanceFields, BoxGammaIsHeightAlphaBetaAreAffine) {
   EXPECT_NEAR(f.beta.minCoeff(), 0.0, 1e-12);
 }
 
+// Ball of radius 20 mm; the source is the ball of radius 2 mm around the centre. The 2 mm sphere
+// is embedded in the tet mesh (an inner closed surface of the PLC), so the source region's
+// boundary is a mesh surface and γ can be compared with |x| - 2 directly.
+TEST(GeodesicDistanceFields, BallGammaIsDistanceToTheCentralBall) {
+  TriangleSurface surface = sphereSurface(Vec3::Zero(), 20, 4);
+  const TriangleSurface inner = sphereSurface(Vec3::Zero(), 2, 2);
+  const int offset = static_cast<int>(surface.points.size());
+  surface.points.insert(surface.points.end(), inner.points.begin(), inner.points.end());
+  for (auto t : inner.triangles) {
+    for (int& v : t) {
+      v += offset;
+    }
+    surface.triangles.push_back(t);
+  }
+  TetrahedralizeOptions options;
+  options.targetEdgeLength = 1.5;
+  const TetMesh mesh = tetrahedralizeSurface(surface, options).mesh;
+  std::vector<int> sources;
+  for (size_t v = 0; v < mesh.points.size(); ++v) {
+    if (mesh.points[v].norm() <= 2 + 1e-9) {
+      sources.push_back(static_cast<int>(v));
+    }
+  }
+  ASSERT_GT(sources.size(), 100u);
+  const GeodesicFields f = computeGeodesicDistanceFields(mesh, sources);
+  double relative = 0;
+  int count = 0;
+  for (size_t v = 0; v < mesh.points.size(); ++v) {
+    const double d = mesh.points[v].norm() - 2;
+    if (d > 1e-6) {
+      relative += std::abs(f.gamma[v] - d) / d;
+      ++count;
+    }
+  }
+  relative /= count;
+  std::printf("ball: mean relative error of γ vs |x| - 2: %.3f%% over %d vertices\n", 100 * relative, count);
+  EXPECT_LT(relative, 0.02);
+}
+
 TEST(GeodesicDistanceFields, DirectionsAreOrthonormalPerTet) {
   const TetMesh& mesh = boxMesh();
   const GeodesicFields& f = boxFields();
