@@ -1,0 +1,173 @@
+// Curved layer slicer: exact planes on a box with γ = z (including iso-values that hit mesh
+// vertices exactly), layer counts, topology and orientation, and bad options.
+#include "common/Error.h"
+#include "mesh/AnalyticShapes.h"
+#include "slicer/CurvedLayerSlicer.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+
+using namespace geolattice;
+
+namespace {
+
+struct ZField {
+  Eigen::VectorXd gamma, alpha, beta;
+  std::vector<Vec3> normals;
+};
+
+ZField heightField(const TetMesh& mesh) {
+  ZField f;
+  const auto n = static_cast<Eigen::Index>(mesh.points.size());
+  f.gamma.resize(n);
+  f.alpha.resize(n);
+  f.beta.resize(n);
+  for (Eigen::Index v = 0; v < n; ++v) {
+    f.gamma[v] = mesh.points[v].z();
+    f.alpha[v] = 40 - mesh.points[v].y();
+    f.beta[v] = 40 - mesh.points[v].x();
+  }
+  f.normals = vertexGradientDirections(mesh, f.gamma);
+  return f;
+}
+
+double triangleArea(const CurvedLayers& layers, const std::array<int, 3>& t) {
+  const Vec3& a = layers.points[t[0]];
+  return 0.5 * (layers.points[t[1]] - a).cross(layers.points[t[2]] - a).norm();
+}
+
+/// Every undirected edge of the layer's triangles is used at most twice, and interior edges
+/// are traversed in opposite directions (consistent orientation).
+void expectEdgeManifoldAndOriented(const CurvedLayers& layers, int layer) {
+  std::map<std::pair<int, int>, int> directed;
+  for (int k = layers.layerTriangleOffset[layer]; k < layers.layerTriangleOffset[layer + 1]; ++k) {
+    const auto& t = layers.triangles[k];
+    for (int e = 0; e < 3; ++e) {
+      ++directed[{t[e], t[(e + 1) % 3]}];
+    }
+  }
+  for (const auto& [edge, count] : directed) {
+    ASSERT_EQ(count, 1) << "directed edge used twice in layer " << layer;
+    const auto reverse = directed.find({edge.second, edge.first});
+    const int undirected = count + (reverse == directed.end() ? 0 : reverse->second);
+    ASSERT_LE(undirected, 2);
+  }
+}
+
+} // namespace
+
+TEST(CurvedLayerSlicer, LayerCountFormula) {
+  SlicerOptions o;
+  o.interval = 0.6;
+  o.firstLayerOffset = 0.6;
+  EXPECT_EQ(layerCount(60.0, o), 100); // floor((60 - 0.6) / 0.6) + 1
+  EXPECT_EQ(layerCount(0.59, o), 0);
+  EXPECT_EQ(layerCount(0.6, o), 1);
+  o.firstLayerOffset = 0.25;
+  o.interval = 0.5;
+  EXPECT_EQ(layerCount(10.0, o), 20);
+  EXPECT_EQ(layerCount(10.25, o), 21);
+}
+
+TEST(CurvedLayerSlicer, BoxLayersArePlanesEvenThroughMeshVertices) {
+  // z levels of the mesh vertices are multiples of 2 mm; φ = 0.5 k hits them every 4th layer.
+  const TetMesh mesh = boxTetMesh(Vec3(40, 40, 60), 10, 10, 30);
+  const ZField f = heightField(mesh);
+  SlicerOptions o;
+  o.interval = 0.5;
+  o.firstLayerOffset = 0.5;
+  const CurvedLayers layers = sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o);
+  ASSERT_EQ(static_cast<int>(layers.layerValues.size()), layerCount(60.0, o));
+  ASSERT_EQ(layers.layerValues.size(), 120u); // the top face z = 60 is the last layer
+  for (size_t l = 0; l < layers.layerValues.size(); ++l) {
+    const int L = static_cast<int>(l);
+    double area = 0;
+    for (int k = layers.layerTriangleOffset[L]; k < layers.layerTriangleOffset[L + 1]; ++k) {
+      const double a = triangleArea(layers, layers.triangles[k]);
+      ASSERT_GT(a, 0.0);
+      area += a;
+      const auto& t = layers.triangles[k];
+      const Vec3 n = (layers.points[t[1]] - layers.points[t[0]]).cross(layers.points[t[2]] - layers.points[t[0]]);
+      ASSERT_GT(n.z(), 0.0) << "triangle normals follow +∇γ";
+    }
+    EXPECT_NEAR(area, 1600.0, 1e-8) << "layer " << l << " at z = " << layers.layerValues[l];
+    for (int p = layers.layerPointOffset[L]; p < layers.layerPointOffset[L + 1]; ++p) {
+      ASSERT_EQ(layers.pointLayer[p], L);
+      ASSERT_NEAR(layers.points[p].z(), layers.layerValues[l], 1e-6);
+      ASSERT_NEAR(layers.alpha[p], 40 - layers.points[p].y(), 1e-9);
+      ASSERT_NEAR(layers.normals[p].z(), 1.0, 1e-9);
+    }
+    expectEdgeManifoldAndOriented(layers, L);
+  }
+  EXPECT_GT(layers.droppedDegenerateTriangles, 0); // the exact hits did occur
+}
+
+TEST(CurvedLayerSlicer, PointsKeepTheirSourceEdgeAndExactGamma) {
+  const TetMesh mesh = boxTetMesh(Vec3(10, 10, 10), 4, 4, 4);
+  ZField f = heightField(mesh);
+  // A non-linear γ so the layers are curved: γ = z + 0.05 (x^2 + y^2).
+  for (size_t v = 0; v < mesh.points.size(); ++v) {
+    const Vec3& p = mesh.points[v];
+    f.gamma[v] = p.z() + 0.05 * (p.x() * p.x() + p.y() * p.y());
+  }
+  f.normals = vertexGradientDirections(mesh, f.gamma);
+  SlicerOptions o;
+  o.interval = 0.7;
+  o.firstLayerOffset = 0.3;
+  const CurvedLayers layers = sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o);
+  const double gmax = f.gamma.maxCoeff();
+  ASSERT_EQ(static_cast<int>(layers.layerValues.size()), layerCount(gmax, o));
+  for (size_t p = 0; p < layers.points.size(); ++p) {
+    const auto [a, b] = layers.sourceEdge[p];
+    const double t = layers.edgeParameter[p];
+    const double g = (1 - t) * f.gamma[a] + t * f.gamma[b];
+    ASSERT_LT(std::abs(g - layers.layerValues[layers.pointLayer[p]]), 1e-9 * gmax);
+    ASSERT_LT((layers.points[p] - ((1 - t) * mesh.points[a] + t * mesh.points[b])).norm(), 1e-12);
+  }
+  for (size_t l = 0; l < layers.layerValues.size(); ++l) {
+    expectEdgeManifoldAndOriented(layers, static_cast<int>(l));
+  }
+}
+
+TEST(CurvedLayerSlicer, LayerRangeSelectsASubset) {
+  const TetMesh mesh = boxTetMesh(Vec3(4, 4, 10), 2, 2, 5);
+  const ZField f = heightField(mesh);
+  SlicerOptions o;
+  o.interval = 1.0;
+  o.firstLayerOffset = 0.5;
+  o.firstLayer = 3;
+  o.lastLayer = 5;
+  const CurvedLayers layers = sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o);
+  ASSERT_EQ(layers.layerValues.size(), 3u);
+  EXPECT_EQ(layers.layerIndex.front(), 3);
+  EXPECT_DOUBLE_EQ(layers.layerValues.front(), 3.5);
+  for (const Vec3& p : layers.points) {
+    EXPECT_GE(p.z(), 3.5 - 1e-12);
+    EXPECT_LE(p.z(), 5.5 + 1e-12);
+  }
+}
+
+TEST(CurvedLayerSlicer, BadOptionsAreReported) {
+  const TetMesh mesh = boxTetMesh(Vec3(4, 4, 10), 2, 2, 5);
+  const ZField f = heightField(mesh);
+  SlicerOptions o;
+  o.interval = 0;
+  EXPECT_THROW(sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o), GeoLatticeError);
+  o.interval = -1;
+  EXPECT_THROW(sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o), GeoLatticeError);
+  o = SlicerOptions{};
+  o.interval = 20; // larger than γ_max = 10 with offset = interval: no layer
+  o.firstLayerOffset = 20;
+  try {
+    sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o);
+    FAIL() << "expected an error";
+  } catch (const GeoLatticeError& e) {
+    EXPECT_NE(std::string(e.what()).find("no layer"), std::string::npos) << e.what();
+  }
+  o = SlicerOptions{};
+  o.firstLayer = 1000;
+  EXPECT_THROW(sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o), GeoLatticeError);
+  EXPECT_THROW(sliceCurvedLayers(mesh, f.gamma.head(3), f.alpha, f.beta, f.normals, SlicerOptions{}), GeoLatticeError);
+  EXPECT_THROW(sliceCurvedLayers(TetMesh{}, f.gamma, f.alpha, f.beta, f.normals, SlicerOptions{}), GeoLatticeError);
+}
