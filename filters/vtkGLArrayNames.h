@@ -31,6 +31,33 @@ constexpr const char* TetQuality = "RadiusEdgeRatio";
 // Field data of vtkGLPlaceOnPlatform: p_out = PlacementScale * p_in + PlacementTranslation.
 constexpr const char* PlacementScale = "PlacementScale";             ///< 1 value, uniform scale factor
 constexpr const char* PlacementTranslation = "PlacementTranslation"; ///< 3 values (mm), applied after scaling
+// Curved layer slicer output (vtkGLCurvedLayerSlicer).
+constexpr const char* Normals = "Normals";               ///< point data: unit nozzle direction (+∇γ)
+constexpr const char* SourceEdge = "SourceEdge";         ///< point data: tet-mesh edge (2 point ids)
+constexpr const char* EdgeParameter = "EdgeParameter";   ///< point data: t along SourceEdge
+constexpr const char* LayerId = "LayerId";               ///< cell data: layer index i
+constexpr const char* LayerComponent = "LayerComponent"; ///< cell data: connected piece within the layer
+constexpr const char* LayerValues = "LayerValues";       ///< field data: φ_i per extracted layer (mm)
+constexpr const char* LayerComponents = "LayerComponents"; ///< field data: pieces per layer
+constexpr const char* LayerArea = "LayerArea";           ///< field data: area per layer (mm^2)
+constexpr const char* LayerSpacingMin = "LayerSpacingMin";   ///< field data: per layer (mm)
+constexpr const char* LayerSpacingMean = "LayerSpacingMean"; ///< field data: per layer (mm)
+constexpr const char* LayerSpacingMax = "LayerSpacingMax";   ///< field data: per layer (mm)
+// Field data of vtkGLTetrahedralizeSurface (its cell data is TetQuality above).
+constexpr const char* TargetEdgeLength = "TargetEdgeLength"; ///< 1 value: edge length used (mm), automatic or set
+constexpr const char* MeanEdgeLength = "MeanEdgeLength";     ///< 1 value: mean unique-edge length of the tets (mm)
+constexpr const char* TetCount = "TetCount";                 ///< 1 value: number of tets
+constexpr const char* TetrahedralizeSeconds = "TetrahedralizeSeconds"; ///< 1 value: wall time (s), all TetGen runs
+// Overhang analysis (vtkGLOverhangAnalysis): cell data on the boundary surface.
+constexpr const char* OverhangPlanar = "OverhangPlanar"; ///< θ for d = +z, planar 2.5-axis slicing (degrees)
+constexpr const char* OverhangCurved = "OverhangCurved"; ///< θ for d = GammaGradient, curved layers (degrees)
+constexpr const char* OnBase = "OnBase";                 ///< uint8: 1 = face rests on the platform
+// Field data of vtkGLOverhangAnalysis.
+constexpr const char* OverhangPlanarFraction = "OverhangPlanarFraction"; ///< area with θ_planar > threshold / off-base area
+constexpr const char* OverhangCurvedFraction = "OverhangCurvedFraction"; ///< area with θ_curved > threshold / off-base area
+constexpr const char* OverhangThresholdDeg = "OverhangThresholdDeg";     ///< threshold used (degrees)
+constexpr const char* OverhangBaseArea = "OverhangBaseArea";             ///< area of the on-base faces (mm^2)
+constexpr const char* OverhangTotalArea = "OverhangTotalArea";           ///< area of all boundary faces (mm^2)
 } // namespace arrays
 } // namespace geolattice
 #endif

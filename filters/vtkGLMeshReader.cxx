@@ -5,6 +5,8 @@
 #include "common/Error.h"
 #include "io/MeshFileIO.h"
 
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
 #include <vtkCellType.h>
 #include <vtkCleanPolyData.h>
 #include <vtkCommand.h>
@@ -24,6 +26,7 @@
 #include <vtkTriangleFilter.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
+#include <vtkXMLReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include <algorithm>
@@ -31,6 +34,7 @@
 #include <filesystem>
 #include <string>
 #include <system_error>
+#include <utility>
 
 vtkStandardNewMacro(vtkGLMeshReader);
 
@@ -69,8 +73,8 @@ int extensionIndex(const char* path)
   return -1;
 }
 
-/// Collects the ErrorEvents of an inner reader (and of its executive) so that this reader
-/// reports them once, under its own name, instead of the inner objects printing them.
+/// Collects the error and warning events of an inner reader (and of its executive) so that
+/// this reader reports them once, under its own name, instead of the inner objects printing them.
 class ErrorCollector : public vtkCommand
 {
 public:
@@ -79,12 +83,14 @@ public:
 
   void Execute(vtkObject*, unsigned long event, void* callData) override
   {
-    if (event != vtkCommand::ErrorEvent)
+    const bool error = event == vtkCommand::ErrorEvent;
+    if (!error && event != vtkCommand::WarningEvent)
     {
       return;
     }
-    ++this->Count;
-    if (this->First.empty() && callData)
+    std::string& first = error ? this->FirstError : this->FirstWarning;
+    this->ErrorCount += error ? 1 : 0;
+    if (first.empty() && callData)
     {
       // "vtkSTLReader (0x...): message" -> "message"
       std::string text = static_cast<const char*>(callData);
@@ -97,33 +103,70 @@ public:
       {
         text.pop_back();
       }
-      this->First = text;
+      // The executive's "Algorithm ... returned failure for request: <info dump>" says nothing
+      // the reader's own message or warning does not say better.
+      if (text.rfind("Algorithm ", 0) != 0 || text.find("returned failure") == std::string::npos)
+      {
+        first = text;
+      }
     }
   }
 
-  int Count = 0;
-  std::string First;
+  /// Observe errors and warnings of `object`; returns the two observer tags.
+  std::pair<unsigned long, unsigned long> Watch(vtkObject* object)
+  {
+    return { object->AddObserver(vtkCommand::ErrorEvent, this),
+      object->AddObserver(vtkCommand::WarningEvent, this) };
+  }
+
+  int ErrorCount = 0;
+  std::string FirstError;
+  std::string FirstWarning;
 };
 
-/// Runs a VTK algorithm, turning any error it reports into a GeoLatticeError.
-/// Errors are seen through ErrorEvents (when warnings are displayed) and the error code.
-void runChecked(vtkAlgorithm* algorithm, const std::string& path)
+/// Runs a VTK algorithm, turning any error it reports into a GeoLatticeError. Errors are seen
+/// through ErrorEvents (only emitted while vtkObject::GlobalWarningDisplay is on), the error
+/// code, and for the XML readers their parser's errors. Warnings of a failing reader (e.g.
+/// "Could not open PLY file") go into the error message; the first warning of a successful
+/// one is passed on as a warning of `reporter` (this reader).
+void runChecked(vtkAlgorithm* algorithm, const std::string& path, vtkObject* reporter)
 {
   vtkNew<ErrorCollector> errors;
-  const unsigned long tag1 = algorithm->AddObserver(vtkCommand::ErrorEvent, errors);
-  const unsigned long tag2 = algorithm->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
-  algorithm->Update();
-  algorithm->RemoveObserver(tag1);
-  algorithm->GetExecutive()->RemoveObserver(tag2);
-  if (errors->Count > 0 || algorithm->GetErrorCode() != vtkErrorCode::NoError)
+  const auto tags = errors->Watch(algorithm);
+  const auto executiveTags = errors->Watch(algorithm->GetExecutive());
+  if (auto* xml = vtkXMLReader::SafeDownCast(algorithm))
   {
-    std::string reason = errors->First;
+    xml->SetReaderErrorObserver(errors);
+    xml->SetParserErrorObserver(errors);
+  }
+  algorithm->Update();
+  algorithm->RemoveObserver(tags.first);
+  algorithm->RemoveObserver(tags.second);
+  algorithm->GetExecutive()->RemoveObserver(executiveTags.first);
+  algorithm->GetExecutive()->RemoveObserver(executiveTags.second);
+  if (auto* xml = vtkXMLReader::SafeDownCast(algorithm))
+  {
+    xml->SetReaderErrorObserver(nullptr);
+    xml->SetParserErrorObserver(nullptr);
+  }
+  if (errors->ErrorCount > 0 || algorithm->GetErrorCode() != vtkErrorCode::NoError)
+  {
+    std::string reason = errors->FirstError;
+    if (!errors->FirstWarning.empty())
+    {
+      reason += (reason.empty() ? "" : " (") + errors->FirstWarning + (reason.empty() ? "" : ")");
+    }
     if (reason.empty())
     {
       reason = vtkErrorCode::GetStringFromErrorCode(algorithm->GetErrorCode());
     }
     throw geolattice::GeoLatticeError(std::string(algorithm->GetClassName()) + " cannot read " +
       path + ": " + reason);
+  }
+  if (!errors->FirstWarning.empty())
+  {
+    vtkWarningWithObjectMacro(reporter, << algorithm->GetClassName() << " reading " << path << ": "
+                                        << errors->FirstWarning);
   }
 }
 
@@ -150,8 +193,37 @@ void dropCornerAttributes(vtkPolyData* poly)
   }
 }
 
+/// Throws if a cell refers to a point that does not exist. VTK readers do not all check this
+/// (vtkOBJReader keeps "f 1 2 3 9" of a 3-vertex file as a polygon with point id 8), and the
+/// filters downstream would read out of bounds.
+void checkPointIds(vtkCellArray* cells, vtkIdType numPoints, const char* cellName, const std::string& path)
+{
+  if (!cells)
+  {
+    return;
+  }
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  vtkIdType cell = 0;
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
+  {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(n, ids);
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      if (ids[k] < 0 || ids[k] >= numPoints)
+      {
+        throw geolattice::GeoLatticeError("index out of range: " + std::string(cellName) + " " +
+          std::to_string(cell) + " of " + path + " uses point " + std::to_string(ids[k]) +
+          " (0-based), but there are " + std::to_string(numPoints) + " points");
+      }
+    }
+  }
+}
+
 /// Surface formats -> triangles only, coincident points merged.
-void readSurface(const std::string& path, const std::string& ext, vtkPolyData* output)
+void readSurface(
+  const std::string& path, const std::string& ext, vtkPolyData* output, vtkObject* reporter)
 {
   vtkNew<vtkPolyData> raw;
   if (ext == ".off")
@@ -187,7 +259,7 @@ void readSurface(const std::string& path, const std::string& ext, vtkPolyData* o
       vtp->SetFileName(path.c_str());
       reader = vtp;
     }
-    runChecked(reader, path);
+    runChecked(reader, path, reporter);
     vtkPolyData* read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
     if (!read)
     {
@@ -195,6 +267,8 @@ void readSurface(const std::string& path, const std::string& ext, vtkPolyData* o
         std::string(reader->GetClassName()) + " gave no polydata for " + path);
     }
     raw->ShallowCopy(read);
+    checkPointIds(raw->GetPolys(), raw->GetNumberOfPoints(), "polygon", path);
+    checkPointIds(raw->GetStrips(), raw->GetNumberOfPoints(), "triangle strip", path);
   }
   dropCornerAttributes(raw);
 
@@ -210,7 +284,7 @@ void readSurface(const std::string& path, const std::string& ext, vtkPolyData* o
   clean->ConvertPolysToLinesOff();
   clean->ConvertLinesToPointsOff();
   clean->ConvertStripsToPolysOff();
-  runChecked(clean, path);
+  runChecked(clean, path, reporter);
   vtkPolyData* cleaned = clean->GetOutput();
   if (cleaned->GetNumberOfPolys() == 0)
   {
@@ -220,7 +294,8 @@ void readSurface(const std::string& path, const std::string& ext, vtkPolyData* o
 }
 
 /// Tet formats -> VTK_TETRA cells only.
-void readTetMesh(const std::string& path, const std::string& ext, vtkUnstructuredGrid* output)
+void readTetMesh(const std::string& path, const std::string& ext, vtkUnstructuredGrid* output,
+  vtkObject* reporter)
 {
   if (ext == ".tet")
   {
@@ -234,7 +309,7 @@ void readTetMesh(const std::string& path, const std::string& ext, vtkUnstructure
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(path.c_str());
-  runChecked(reader, path);
+  runChecked(reader, path, reporter);
   vtkUnstructuredGrid* grid = reader->GetOutput();
   if (grid->GetNumberOfCells() == 0 || grid->GetNumberOfPoints() == 0)
   {
@@ -242,6 +317,7 @@ void readTetMesh(const std::string& path, const std::string& ext, vtkUnstructure
       std::to_string(grid->GetNumberOfPoints()) + " points and " +
       std::to_string(grid->GetNumberOfCells()) + " cells");
   }
+  checkPointIds(grid->GetCells(), grid->GetNumberOfPoints(), "cell", path);
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
   {
     if (grid->GetCellType(c) != VTK_TETRA)
@@ -348,7 +424,7 @@ int vtkGLMeshReader::RequestData(
       {
         throw geolattice::GeoLatticeError("internal error: output is not an unstructured grid");
       }
-      readTetMesh(path, ext, grid);
+      readTetMesh(path, ext, grid, this);
     }
     else
     {
@@ -357,7 +433,7 @@ int vtkGLMeshReader::RequestData(
       {
         throw geolattice::GeoLatticeError("internal error: output is not polydata");
       }
-      readSurface(path, ext, poly);
+      readSurface(path, ext, poly, this);
     }
     this->UpdateProgress(1.0);
   }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <numeric>
 #include <queue>
@@ -52,61 +53,64 @@ int vertexComponents(const TetMesh& mesh, std::vector<int>& component) {
   return count;
 }
 
-/// The principal sub-matrix of A on the rows/columns with keep[i]; reduced[i] maps old -> new.
-SparseMatrix restrictMatrix(const SparseMatrix& A, const std::vector<int>& reduced, int n) {
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(A.nonZeros());
-  for (int c = 0; c < A.outerSize(); ++c) {
-    if (reduced[c] < 0) {
-      continue;
+/// Lower triangle of the symmetric K with every diagonal entry stored (first in its column,
+/// 0 if K has none). The heat, pinned and Dirichlet matrices all use this one pattern, so
+/// CHOLMOD orders and analyses it once (SparseCholesky::shareAnalysis).
+SparseMatrix lowerWithDiagonal(const SparseMatrix& K) {
+  const int n = static_cast<int>(K.cols());
+  std::vector<int> outer(static_cast<size_t>(n) + 1, 0);
+  std::vector<int> inner;
+  std::vector<double> values;
+  inner.reserve(static_cast<size_t>(K.nonZeros() / 2 + n));
+  values.reserve(inner.capacity());
+  for (int c = 0; c < n; ++c) {
+    inner.push_back(c);
+    values.push_back(0.0);
+    for (SparseMatrix::InnerIterator it(K, c); it; ++it) {
+      if (it.row() == c) {
+        values.back() = it.value();
+      } else if (it.row() > c) {
+        inner.push_back(static_cast<int>(it.row()));
+        values.push_back(it.value());
+      }
     }
-    for (SparseMatrix::InnerIterator it(A, c); it; ++it) {
-      if (reduced[it.row()] >= 0 && it.row() >= c) { // lower triangle is all the solvers read
-        triplets.emplace_back(reduced[it.row()], reduced[c], it.value());
+    outer[c + 1] = static_cast<int>(inner.size());
+  }
+  SparseMatrix L = Eigen::Map<const SparseMatrix>(n, n, static_cast<Eigen::Index>(inner.size()), outer.data(),
+                                                  inner.data(), values.data());
+  return L;
+}
+
+/// In place on a lowerWithDiagonal() matrix: rows and columns with fixed[i] become those of a
+/// positive multiple of the identity (entries kept as explicit zeros, so the pattern does not
+/// change). Solving with b_i = 0 on those rows gives x_i = 0 exactly and the other entries
+/// of x solve the principal sub-system of the free rows: the Dirichlet / pinned problem.
+void fixRows(SparseMatrix& L, const std::vector<char>& fixed) {
+  const int n = static_cast<int>(L.cols());
+  const int* outer = L.outerIndexPtr();
+  const int* inner = L.innerIndexPtr();
+  double* values = L.valuePtr();
+  for (int c = 0; c < n; ++c) {
+    const int begin = outer[c];
+    if (fixed[c]) {
+      values[begin] = values[begin] > 0 ? values[begin] : 1.0; // keep K's scale on the diagonal
+      std::fill(values + begin + 1, values + outer[c + 1], 0.0);
+    } else {
+      for (int k = begin + 1; k < outer[c + 1]; ++k) {
+        if (fixed[inner[k]]) {
+          values[k] = 0.0;
+        }
       }
     }
   }
-  SparseMatrix R(n, n);
-  R.setFromTriplets(triplets.begin(), triplets.end());
-  R.makeCompressed();
-  return R;
 }
 
-/// Reduced index map for "all vertices except `fixed`"; returns the reduced size.
-int freeIndexMap(size_t nv, const std::vector<int>& fixed, std::vector<int>& reduced) {
-  reduced.assign(nv, 0);
-  for (int f : fixed) {
-    reduced[f] = -1;
+std::vector<char> indexMask(size_t n, const std::vector<int>& indices) {
+  std::vector<char> mask(n, 0);
+  for (int i : indices) {
+    mask[i] = 1;
   }
-  int n = 0;
-  for (size_t i = 0; i < nv; ++i) {
-    if (reduced[i] == 0) {
-      reduced[i] = n++;
-    }
-  }
-  return n;
-}
-
-/// Solves K x = b with x = 0 on the removed vertices, given the factorization of the reduced K.
-Eigen::VectorXd solveReduced(const SparseCholesky& solver, const std::vector<int>& reduced, int n,
-                             const Eigen::VectorXd& b) {
-  Eigen::VectorXd x = Eigen::VectorXd::Zero(b.size());
-  if (n == 0) {
-    return x;
-  }
-  Eigen::VectorXd rb(n);
-  for (Eigen::Index i = 0; i < b.size(); ++i) {
-    if (reduced[i] >= 0) {
-      rb[reduced[i]] = b[i];
-    }
-  }
-  const Eigen::VectorXd rx = solver.solve(rb);
-  for (Eigen::Index i = 0; i < b.size(); ++i) {
-    if (reduced[i] >= 0) {
-      x[i] = rx[reduced[i]];
-    }
-  }
-  return x;
+  return mask;
 }
 
 /// Gives every tet with valid[t] == 0 a unit vector from its already-valid face neighbours
@@ -193,8 +197,12 @@ GeodesicDistanceFields::GeodesicDistanceFields(TetMesh mesh, const GeodesicField
       dirichletLaplacian_(options.backend) {
   validate(options_);
   auto start = Clock::now();
-  ops_ = buildTetOperators(mesh_);
-  topology_ = std::make_unique<TetMeshTopology>(mesh_);
+  ops_ = buildTetOperators(mesh_); // also checks the vertex indices the topology relies on
+  // The tet adjacency is needed only by solve() and by callers; build it on a second thread
+  // while this one assembles and factors. (If this constructor throws, the future's
+  // destructor waits for the thread before the members go.)
+  std::future<void> topologyDone =
+      std::async(std::launch::async, [this] { topology_ = std::make_unique<TetMeshTopology>(mesh_); });
   componentCount_ = vertexComponents(mesh_, component_);
   pinned_.assign(componentCount_, -1);
   for (size_t v = 0; v < component_.size(); ++v) {
@@ -203,22 +211,32 @@ GeodesicDistanceFields::GeodesicDistanceFields(TetMesh mesh, const GeodesicField
     }
   }
   heatTime_ = options_.timeFactor * ops_.meanEdgeLength * ops_.meanEdgeLength;
+  // All three matrices share the pattern of K's lower triangle (see lowerWithDiagonal).
+  SparseMatrix heatMatrix = lowerWithDiagonal(ops_.stiffness);
+  SparseMatrix pinnedK = heatMatrix;
+  fixRows(pinnedK, indexMask(mesh_.points.size(), pinned_));
   // Eq. 1 multiplied by V: (V + t K) u = V u0, symmetric positive definite.
-  SparseMatrix heatMatrix = heatTime_ * ops_.stiffness;
-  for (Eigen::Index i = 0; i < heatMatrix.rows(); ++i) {
-    heatMatrix.coeffRef(i, i) += ops_.vertexVolumes[i];
+  {
+    double* values = heatMatrix.valuePtr();
+    for (Eigen::Index k = 0; k < heatMatrix.nonZeros(); ++k) {
+      values[k] = heatTime_ * values[k];
+    }
+    for (Eigen::Index c = 0; c < heatMatrix.cols(); ++c) {
+      values[heatMatrix.outerIndexPtr()[c]] += ops_.vertexVolumes[c]; // diagonal: first in column
+    }
   }
-  std::vector<int> reduced;
-  const int n = freeIndexMap(mesh_.points.size(), pinned_, reduced);
-  const SparseMatrix pinnedK = restrictMatrix(ops_.stiffness, reduced, n);
   setupTimings_.assembly = secondsSince(start);
 
   start = Clock::now();
   heat_.factorize(heatMatrix, "heat (V + tK)");
-  if (n > 0) {
-    pinnedLaplacian_.factorize(pinnedK, "pinned Laplacian");
-  }
+  pinnedLaplacian_.shareAnalysis(heat_);
+  pinnedLaplacian_.factorize(pinnedK, "pinned Laplacian");
+  dirichletLaplacian_.shareAnalysis(heat_);
   setupTimings_.factorization = secondsSince(start);
+
+  start = Clock::now();
+  topologyDone.get();
+  setupTimings_.assembly += secondsSince(start);
 }
 
 GeodesicDistanceFields::~GeodesicDistanceFields() = default;
@@ -248,18 +266,16 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
   GeodesicFields out;
   out.timings = setupTimings_;
 
-  // Dirichlet Laplacian for γ: factor once per source set.
-  std::vector<int> dirichletReduced;
-  const int nd = freeIndexMap(nv, sources, dirichletReduced);
+  // Dirichlet Laplacian for γ: factor once per source set (the ordering is the heat matrix's).
+  const std::vector<char> isSource = indexMask(nv, sources);
   if (sources != dirichletSources_ || !dirichletLaplacian_.factorized()) {
     auto start = Clock::now();
-    const SparseMatrix K = restrictMatrix(ops_.stiffness, dirichletReduced, nd);
+    SparseMatrix K = lowerWithDiagonal(ops_.stiffness);
+    fixRows(K, isSource);
     const double t0 = secondsSince(start);
     start = Clock::now();
     dirichletSources_.clear();
-    if (nd > 0) {
-      dirichletLaplacian_.factorize(K, "Dirichlet Laplacian");
-    }
+    dirichletLaplacian_.factorize(K, "Dirichlet Laplacian");
     dirichletSources_ = sources;
     out.timings.assembly += t0;
     out.timings.factorization += secondsSince(start);
@@ -292,8 +308,16 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
   }
 
   // Eqs. 4-5 for γ: K γ = b with γ = 0 on the sources.
-  out.gamma = solveReduced(dirichletLaplacian_, dirichletReduced, nd,
-                           integratedDivergence(ops_, mesh_, out.gammaDirection));
+  {
+    Eigen::VectorXd b = integratedDivergence(ops_, mesh_, out.gammaDirection);
+    for (int s : sources) {
+      b[s] = 0;
+    }
+    out.gamma = dirichletLaplacian_.solve(b);
+    for (int s : sources) {
+      out.gamma[s] = 0; // exact already (decoupled identity rows); stated for the reader
+    }
+  }
 
   if (options_.directionsFromSolvedGamma) {
     // The layer normal is ∇γ of the solved field, not the raw heat gradient: near Neumann
@@ -346,10 +370,20 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
   }
 
   // Eqs. 4-5 for α and β with one pinned vertex per component.
-  std::vector<int> pinnedReduced;
-  const int np = freeIndexMap(nv, pinned_, pinnedReduced);
-  out.alpha = solveReduced(pinnedLaplacian_, pinnedReduced, np, integratedDivergence(ops_, mesh_, out.alphaDirection));
-  out.beta = solveReduced(pinnedLaplacian_, pinnedReduced, np, integratedDivergence(ops_, mesh_, out.betaDirection));
+  {
+    Eigen::MatrixXd b(static_cast<Eigen::Index>(nv), 2);
+    b.col(0) = integratedDivergence(ops_, mesh_, out.alphaDirection);
+    b.col(1) = integratedDivergence(ops_, mesh_, out.betaDirection);
+    for (int p : pinned_) {
+      b.row(p).setZero();
+    }
+    const Eigen::MatrixXd x = pinnedLaplacian_.solveColumns(b);
+    out.alpha = x.col(0);
+    out.beta = x.col(1);
+    for (int p : pinned_) {
+      out.alpha[p] = out.beta[p] = 0;
+    }
+  }
   // α and β are defined up to a constant per component: start each component at 0.
   for (Eigen::VectorXd* f : {&out.alpha, &out.beta}) {
     std::vector<double> minimum(componentCount_, std::numeric_limits<double>::infinity());

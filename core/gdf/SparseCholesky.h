@@ -2,7 +2,11 @@
 /// @file SparseCholesky.h
 /// @brief Factor-once, solve-many sparse symmetric positive-definite solver with a choice of
 /// back end, so the GDF stage factors each matrix once and reuses it (docs/performance.md has the
-/// measured comparison; CHOLMOD's supernodal factorization is the default).
+/// measured comparison; CHOLMOD is the default).
+///
+/// Data flow: A (lower triangle read) -> symbolic analysis (fill-reducing ordering + symbolic
+/// factor; CHOLMOD only: kept and shared between solvers whose matrices have the same pattern)
+/// -> numeric factorization -> solve(b) any number of times.
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
 
@@ -11,12 +15,18 @@
 namespace geolattice {
 
 enum class CholeskyBackend {
-  Cholmod,     ///< SuiteSparse CHOLMOD, supernodal LL^T (default)
+  Cholmod,     ///< SuiteSparse CHOLMOD LL^T, supernodal or simplicial (CHOLMOD's choice by flops/nnz)
   EigenLDLT,   ///< Eigen::SimplicialLDLT with AMD ordering (no external library)
 };
 
 /// @class SparseCholesky
 /// @brief Factorization of one SPD matrix A (only its lower triangle is read).
+///
+/// With CHOLMOD, the ordering (CHOLMOD's default strategy: AMD, and METIS too when AMD's fill is
+/// high, keeping the better) and the symbolic factor are computed once per sparsity pattern and
+/// reused: by later factorize() calls on a matrix with the same pattern, and by other solvers
+/// given it through shareAnalysis(). The Eigen back end analyses every matrix itself.
+/// Distinct SparseCholesky objects may factorize and solve concurrently.
 class SparseCholesky {
 public:
   explicit SparseCholesky(CholeskyBackend backend = CholeskyBackend::Cholmod);
@@ -24,14 +34,25 @@ public:
   SparseCholesky(SparseCholesky&&) noexcept;
   SparseCholesky& operator=(SparseCholesky&&) noexcept;
 
-  /// Factors A; throws GeoLatticeError (naming `what`) if A is not positive definite.
+  /// Factors A (square, #rows x #rows, compressed or not); throws GeoLatticeError (naming
+  /// `what`) if A is not positive definite or not square. Reuses the symbolic analysis if it
+  /// was made for exactly A's sparsity pattern, else analyses A first.
   void factorize(const Eigen::SparseMatrix<double>& A, const char* what);
-  /// x = A^{-1} b. Requires a successful factorize().
+  /// Makes this solver use `other`'s symbolic analysis (if it has one and both use CHOLMOD), so
+  /// factorize() of a matrix with the same pattern skips the ordering. Keeps any factorization.
+  void shareAnalysis(const SparseCholesky& other);
+  /// True if a symbolic analysis is held (CHOLMOD only).
+  bool hasAnalysis() const;
+  /// x = A^{-1} b (b has #rows entries). Requires a successful factorize(). Not reentrant:
+  /// one object solves in one thread at a time (CHOLMOD keeps its workspace per object).
   Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
+  /// X = A^{-1} B for all columns of B (#rows x k) at once, faster than k solve() calls.
+  Eigen::MatrixXd solveColumns(const Eigen::MatrixXd& B) const;
   bool factorized() const;
   CholeskyBackend backend() const { return backend_; }
 
 private:
+  struct Analysis;
   struct Impl;
   CholeskyBackend backend_;
   std::unique_ptr<Impl> impl_;

@@ -26,8 +26,7 @@ TetOperators buildTetOperators(const TetMesh& mesh) {
   ops.basisGradients.resize(nt);
   ops.tetVolumes.resize(nt);
   ops.vertexVolumes = Eigen::VectorXd::Zero(nv);
-  std::vector<Eigen::Triplet<double>> triplets;
-  triplets.reserve(16 * static_cast<size_t>(nt));
+  std::vector<int> incidenceStart(static_cast<size_t>(nv) + 1, 0); // vertex -> tets, counted here
   for (int t = 0; t < nt; ++t) {
     const auto& tet = mesh.tets[t];
     for (int k = 0; k < 4; ++k) {
@@ -56,14 +55,62 @@ TetOperators buildTetOperators(const TetMesh& mesh) {
     ops.tetVolumes[t] = volume;
     for (int i = 0; i < 4; ++i) {
       ops.vertexVolumes[tet[i]] += volume / 4.0;
-      for (int j = 0; j < 4; ++j) {
-        triplets.emplace_back(tet[i], tet[j], volume * g[i].dot(g[j]));
+      ++incidenceStart[tet[i] + 1];
+    }
+  }
+
+  // K column by column from the vertex -> tet incidence (tets in increasing order), straight
+  // into compressed storage: the same sums in the same order as assembling 16 triplets per tet
+  // with setFromTriplets, without the 16 #T triplets and the transposed copy.
+  for (int v = 0; v < nv; ++v) {
+    incidenceStart[v + 1] += incidenceStart[v];
+  }
+  std::vector<int> incidentTets(incidenceStart[nv]);
+  {
+    std::vector<int> fill(incidenceStart.begin(), incidenceStart.end() - 1);
+    for (int t = 0; t < nt; ++t) {
+      for (int k = 0; k < 4; ++k) {
+        incidentTets[fill[mesh.tets[t][k]]++] = t;
       }
     }
   }
-  ops.stiffness.resize(nv, nv);
-  ops.stiffness.setFromTriplets(triplets.begin(), triplets.end());
-  ops.stiffness.makeCompressed();
+  std::vector<int> outer(static_cast<size_t>(nv) + 1, 0);
+  std::vector<int> inner;
+  std::vector<double> values;
+  inner.reserve(15 * static_cast<size_t>(nv));
+  values.reserve(15 * static_cast<size_t>(nv));
+  std::vector<int> slot(nv, -1); // row -> position in the current column, -1 if absent
+  for (int c = 0; c < nv; ++c) {
+    const int begin = static_cast<int>(inner.size());
+    for (int k = incidenceStart[c]; k < incidenceStart[c + 1]; ++k) {
+      for (int r : mesh.tets[incidentTets[k]]) {
+        if (slot[r] < 0) {
+          slot[r] = 0;
+          inner.push_back(r);
+        }
+      }
+    }
+    std::sort(inner.begin() + begin, inner.end());
+    for (int k = begin; k < static_cast<int>(inner.size()); ++k) {
+      slot[inner[k]] = k;
+    }
+    values.resize(inner.size(), 0.0);
+    for (int k = incidenceStart[c]; k < incidenceStart[c + 1]; ++k) {
+      const int t = incidentTets[k];
+      const auto& tet = mesh.tets[t];
+      const auto& g = ops.basisGradients[t];
+      const int j = static_cast<int>(std::find(tet.begin(), tet.end(), c) - tet.begin());
+      for (int i = 0; i < 4; ++i) {
+        values[slot[tet[i]]] += ops.tetVolumes[t] * g[i].dot(g[j]);
+      }
+    }
+    for (int k = begin; k < static_cast<int>(inner.size()); ++k) {
+      slot[inner[k]] = -1;
+    }
+    outer[c + 1] = static_cast<int>(inner.size());
+  }
+  ops.stiffness = Eigen::Map<const SparseMatrix>(nv, nv, static_cast<Eigen::Index>(inner.size()), outer.data(),
+                                                 inner.data(), values.data());
 
   // Mean edge length over unique edges: the off-diagonal pattern of K holds each edge twice.
   double sum = 0;

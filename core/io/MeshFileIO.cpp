@@ -149,6 +149,8 @@ public:
   }
 
   const std::string& path() const { return path_; }
+  /// 1-based number of the line last returned by next().
+  int lineNumber() const { return line_; }
 
 private:
   static bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
@@ -241,6 +243,138 @@ TriangleSurface readOff(const std::string& path) {
   }
   lines.expectEnd(std::to_string(numPoints) + " vertices and " + std::to_string(numFaces) + " faces");
   return surface;
+}
+
+TriangleSurface readObj(const std::string& path) {
+  LineTokenizer lines(path, loadFile(path));
+  std::vector<std::string_view> tok;
+  TriangleSurface surface;
+  // Raw 1-based (resolved) indices with the line they came from; positive indices are checked
+  // against the vertex count once the whole file is read (forward references are legal).
+  struct PendingFace {
+    std::vector<long long> ids;
+    int line;
+  };
+  std::vector<PendingFace> faces;
+  while (lines.next(tok)) {
+    if (tok[0] == "v") {
+      if (tok.size() < 4) {
+        lines.fail("vertex " + std::to_string(surface.points.size() + 1) + ": expected 'v x y z', got " +
+                   std::to_string(tok.size() - 1) + " values");
+      }
+      surface.points.push_back(lines.point(tok, 1));
+    } else if (tok[0] == "f") {
+      if (tok.size() < 4) {
+        lines.fail("face with " + std::to_string(tok.size() - 1) + " vertices; at least 3 needed");
+      }
+      PendingFace face{{}, lines.lineNumber()};
+      face.ids.reserve(tok.size() - 1);
+      const long long numRead = static_cast<long long>(surface.points.size());
+      for (size_t k = 1; k < tok.size(); ++k) {
+        // "v", "v/vt", "v/vt/vn" or "v//vn": the vertex index is the part before the first '/'.
+        const std::string_view ref = tok[k];
+        const size_t slash = ref.find('/');
+        if (slash != std::string_view::npos &&
+            std::count(ref.begin(), ref.end(), '/') > 2) {
+          lines.fail("malformed vertex reference '" + std::string(ref) + "' (expected v, v/vt, v/vt/vn or v//vn)");
+        }
+        const long long raw = lines.integer(ref.substr(0, slash), "a vertex index");
+        if (raw == 0) {
+          lines.fail("vertex index 0 in '" + std::string(ref) + "' (OBJ indices start at 1; negative = relative)");
+        }
+        long long id = raw;
+        if (raw < 0) {
+          id = numRead + 1 + raw; // -1 = the last vertex read so far
+          if (id < 1) {
+            lines.fail("relative vertex index " + std::to_string(raw) + " reaches before the first vertex (" +
+                       std::to_string(numRead) + " vertices read so far)");
+          }
+        }
+        face.ids.push_back(id);
+      }
+      faces.push_back(std::move(face));
+    }
+    // Every other statement (vt, vn, vp, g, o, s, usemtl, mtllib, l, p, ...) is ignored.
+  }
+  checkNotEmpty(path, surface.points.size(), faces.size(), "faces");
+  const long long numPoints = static_cast<long long>(surface.points.size());
+  if (numPoints > std::numeric_limits<int>::max()) {
+    throw GeoLatticeError(path + ": too many vertices (" + std::to_string(numPoints) + ")");
+  }
+  surface.triangles.reserve(faces.size());
+  for (const PendingFace& face : faces) {
+    for (long long id : face.ids) {
+      if (id > numPoints) {
+        throw GeoLatticeError(path + ":" + std::to_string(face.line) + ": vertex index " + std::to_string(id) +
+                              " out of range [1, " + std::to_string(numPoints) + "]");
+      }
+    }
+    // Fan triangulation keeps the polygon's orientation; exact for convex polygons.
+    for (size_t k = 1; k + 1 < face.ids.size(); ++k) {
+      surface.triangles.push_back({static_cast<int>(face.ids[0] - 1), static_cast<int>(face.ids[k] - 1),
+                                   static_cast<int>(face.ids[k + 1] - 1)});
+    }
+  }
+  return surface;
+}
+
+void writeObj(const std::string& path, const TriangleSurface& surface, const std::string& comment) {
+  checkNotEmpty(path, surface.points.size(), surface.triangles.size(), "triangles");
+  const long long numPoints = static_cast<long long>(surface.points.size());
+  for (size_t t = 0; t < surface.triangles.size(); ++t) {
+    for (int id : surface.triangles[t]) {
+      if (id < 0 || id >= numPoints) {
+        throw GeoLatticeError("cannot write " + path + ": triangle " + std::to_string(t) + " has vertex index " +
+                              std::to_string(id) + " out of range [0, " + std::to_string(numPoints - 1) + "]");
+      }
+    }
+  }
+  for (size_t i = 0; i < surface.points.size(); ++i) {
+    if (!surface.points[i].allFinite()) {
+      throw GeoLatticeError("cannot write " + path + ": vertex " + std::to_string(i) + " is not finite");
+    }
+  }
+  const std::string tmpPath = path + ".tmp";
+  {
+    std::ofstream out(tmpPath, std::ios::binary | std::ios::trunc);
+    if (!out) {
+      throw GeoLatticeError("cannot write " + tmpPath + ": " + std::strerror(errno));
+    }
+    std::istringstream lines(comment);
+    for (std::string line; std::getline(lines, line);) {
+      out << "# " << line << '\n';
+    }
+    char buf[64];
+    auto put = [&](double v) {
+      const auto [ptr, ec] = std::to_chars(buf, buf + sizeof(buf), v);
+      out.write(buf, ptr - buf);
+    };
+    for (const Vec3& p : surface.points) {
+      out << "v ";
+      put(p.x());
+      out.put(' ');
+      put(p.y());
+      out.put(' ');
+      put(p.z());
+      out.put('\n');
+    }
+    for (const auto& t : surface.triangles) {
+      out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
+    }
+    out.close();
+    if (!out) {
+      std::error_code ignored;
+      fs::remove(tmpPath, ignored);
+      throw GeoLatticeError("cannot write " + tmpPath + ": I/O error (disk full?)");
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmpPath, path, ec);
+  if (ec) {
+    std::error_code ignored;
+    fs::remove(tmpPath, ignored);
+    throw GeoLatticeError("cannot rename " + tmpPath + " to " + path + ": " + ec.message());
+  }
 }
 
 TetMesh readTetFile(const std::string& path) {

@@ -1,7 +1,8 @@
 #pragma once
 /// @file MeshFileIO.h
-/// @brief Readers and a writer for the plain-text mesh formats VTK does not read:
-/// OFF surfaces, the research codes' `.tet` tet meshes and TetGen `.node`/`.ele` pairs.
+/// @brief Readers and writers for plain-text mesh formats: OFF and Wavefront OBJ surfaces
+/// (OBJ so that core-only code, tests and benchmarks read surfaces without VTK), the
+/// research codes' `.tet` tet meshes and TetGen `.node`/`.ele` pairs.
 ///
 /// Data flow: file -> TriangleSurface / TetMesh (core containers, coordinates as stored in the
 /// file, no unit conversion) -> filters/vtkGLMeshReader -> rest of the pipeline.
@@ -23,6 +24,27 @@ namespace geolattice {
 /// @throws GeoLatticeError on a missing/unreadable file, a malformed line, an index out of
 ///   range, fewer or more data lines than the header counts, or no vertices/faces.
 TriangleSurface readOff(const std::string& path);
+
+/// Read the triangles of a Wavefront OBJ surface. Only two kinds of lines are used:
+/// `v x y z [w | r g b]` (the first three values are the position) and
+/// `f i j k ...` where each vertex reference has the form `v`, `v/vt`, `v/vt/vn` or `v//vn`
+/// (only v is used). Indices are 1-based; a negative index is relative to the vertices read so
+/// far (-1 = the last `v` line before the face). Positive indices may refer to vertices defined
+/// later in the file. Polygons with n > 3 vertices are fan-triangulated (i_0, i_k, i_{k+1}),
+/// keeping their orientation. Every other line (vt, vn, g, o, s, usemtl, mtllib, l, ...) is
+/// ignored; '#' starts a comment. All vertices are kept, also those no face uses.
+/// @return #V points (file order) and #triangles 0-based vertex triples.
+/// @throws GeoLatticeError on a missing/unreadable file, a malformed `v` or `f` line, index 0,
+///   an index out of range (with the face's line), or a file without vertices or faces.
+TriangleSurface readObj(const std::string& path);
+
+/// Write `surface` as a Wavefront OBJ file: the lines of `comment` (may be empty) as '#'
+/// comments, then one `v x y z` line per point (shortest round-trip form, so readObj(path)
+/// gives back exactly the same points) and one `f i j k` line per triangle (1-based). Like
+/// writeTetFile, the data goes to `path + ".tmp"`, renamed to `path` after a successful write.
+/// @throws GeoLatticeError on an empty surface, an index out of range, a non-finite point, or
+///   an I/O failure.
+void writeObj(const std::string& path, const TriangleSurface& surface, const std::string& comment = "");
 
 /// Read a `.tet` file: line 1 `N vertices`, line 2 `M tets`, then N lines `x y z`, then M
 /// lines `4 a b c d` (0-based indices). The words after the counts are optional.

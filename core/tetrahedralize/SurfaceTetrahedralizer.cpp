@@ -3,14 +3,13 @@
 #include "common/Error.h"
 #include "mesh/SurfaceCheck.h"
 #include "mesh/TetMeshCheck.h"
-
-#include <tetgen.h>
+#include "tetrahedralize/TetGenRunner.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <new>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -19,32 +18,19 @@ namespace geolattice {
 
 namespace {
 
-// Calibration of the automatic edge length: TetGen's mean tet volume relative to the bound
-// "a" = L^3/(6 sqrt 2) (measured with q1.414 on a box and on the Stanford bunny at ~100 mm).
-constexpr double kMeanTetVolumeOverBound = 0.30;
+// Mean tet volume over the bound "a" = L^3/(6 sqrt 2) with q1.414: ~0.5 on a 40x40x60 box,
+// ~0.25 on the bunny at 100 mm (whose finely triangulated surface adds small tets). 0.4 is the
+// first guess of the automatic edge length; 0.55 (above every measured value) gives the
+// smallest plausible count for the size guard.
+constexpr double kGuessMeanTetVolumeOverBound = 0.4;
+constexpr double kLargestMeanTetVolumeOverBound = 0.55;
+// Largest accepted relative difference between the winding-weighted tet volume and the
+// enclosed (divergence-theorem) volume of the surface.
+constexpr double kVolumeTolerance = 1e-5;
+// The automatic search accepts a count within this factor of the target.
+constexpr double kAutoTolerance = 1.25;
 
 double regularTetVolume(double edge) { return edge * edge * edge / (6.0 * std::sqrt(2.0)); }
-
-// Messages of TetGen's terminatetetgen() codes (tetgen.h, TETLIBRARY build throws the code).
-std::string tetgenErrorMessage(int code) {
-  switch (code) {
-  case 1:
-    return "TetGen ran out of memory (try a larger target edge length)";
-  case 2:
-    return "TetGen internal error (code 2); the surface may have nearly coincident or degenerate features";
-  case 3:
-    return "self-intersecting surface: TetGen found intersecting facets";
-  case 4:
-    return "TetGen found a very small input feature (code 4): nearly coincident vertices or "
-           "extremely thin triangles on the surface";
-  case 5:
-    return "TetGen found two very close, nearly overlapping input facets (code 5)";
-  case 10:
-    return "TetGen rejected the input (code 10: input error)";
-  default:
-    return "TetGen failed with error code " + std::to_string(code);
-  }
-}
 
 std::string formatSwitchNumber(double value) {
   char buffer[64];
@@ -74,15 +60,115 @@ double meanUniqueEdgeLength(const TetMesh& mesh) {
   return sum / static_cast<double>(edges.size());
 }
 
+// Generalized winding number of a closed outward surface at q: 1 inside the solid, 0 outside
+// (and in cavities). Solid angle of each triangle by Van Oosterom & Strackee (1983).
+double windingNumber(const TriangleSurface& surface, const Vec3& q) {
+  double total = 0.0;
+  for (const auto& t : surface.triangles) {
+    const Vec3 a = surface.points[t[0]] - q, b = surface.points[t[1]] - q, c = surface.points[t[2]] - q;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    const double numerator = a.dot(b.cross(c));
+    const double denominator = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+    total += 2.0 * std::atan2(numerator, denominator);
+  }
+  return total / (4.0 * M_PI);
+}
+
+struct RegionSummary {
+  int removedRegions = 0;        // regions with winding number 0 (cavities), dropped
+  double windingVolume = 0.0;    // sum over all tets of winding number * volume (mm^3)
+};
+
+// TetGen meshes every bounded region enclosed by the facets, cavities of hollow parts
+// included; switch "A" numbers the regions. Each region gets the winding number of the
+// surface at one of its tet centroids (an integer: a centroid is never on the surface):
+//   0: cavity, dropped with the vertices no remaining tet uses;
+//   1: solid; >= 2: inside nested outward shells (e.g. an embedded interface surface), solid;
+//   < 0: an inward shell outside every other shell: inconsistent input, rejected.
+// The winding-weighted volume equals the divergence-theorem volume of the surface when the
+// regions match the surface; the caller checks that.
+RegionSummary classifyRegions(const TriangleSurface& surface, TetGenOutput& out) {
+  RegionSummary summary;
+  const bool numbered = out.regions.size() == out.mesh.tets.size();
+  std::map<int, long> windingOf; // region -> winding number
+  std::vector<long> tetWinding(out.mesh.tets.size());
+  for (size_t t = 0; t < out.mesh.tets.size(); ++t) {
+    const int region = numbered ? out.regions[t] : 0;
+    auto it = windingOf.find(region);
+    if (it == windingOf.end()) {
+      Vec3 centroid = Vec3::Zero();
+      for (int v : out.mesh.tets[t]) {
+        centroid += out.mesh.points[v] / 4.0;
+      }
+      it = windingOf.emplace(region, std::lround(windingNumber(surface, centroid))).first;
+      if (it->second < 0) {
+        throw GeoLatticeError("inconsistently oriented shells: a region has winding number " +
+                              std::to_string(it->second) +
+                              " (an inward-oriented shell lies outside every other shell; flip that shell)");
+      }
+      summary.removedRegions += it->second == 0 ? 1 : 0;
+    }
+    tetWinding[t] = it->second;
+    const auto& tet = out.mesh.tets[t];
+    summary.windingVolume += static_cast<double>(it->second) *
+                             signedTetVolume(out.mesh.points[tet[0]], out.mesh.points[tet[1]],
+                                             out.mesh.points[tet[2]], out.mesh.points[tet[3]]);
+  }
+  if (summary.removedRegions > 0) {
+    TetMesh kept;
+    std::vector<int> newId(out.mesh.points.size(), -1);
+    for (size_t t = 0; t < out.mesh.tets.size(); ++t) {
+      if (tetWinding[t] == 0) {
+        continue;
+      }
+      std::array<int, 4> tet;
+      for (int k = 0; k < 4; ++k) {
+        int& id = newId[out.mesh.tets[t][k]];
+        if (id < 0) {
+          id = static_cast<int>(kept.points.size());
+          kept.points.push_back(out.mesh.points[out.mesh.tets[t][k]]);
+        }
+        tet[k] = id;
+      }
+      kept.tets.push_back(tet);
+    }
+    out.mesh = std::move(kept);
+  }
+  out.regions.clear();
+  return summary;
+}
+
+TriangleSurface withoutUnusedPoints(const TriangleSurface& input) {
+  TriangleSurface out;
+  std::vector<int> newId(input.points.size(), -1);
+  out.triangles.reserve(input.triangles.size());
+  for (const auto& t : input.triangles) {
+    std::array<int, 3> tri;
+    for (int k = 0; k < 3; ++k) {
+      int& id = newId[t[k]];
+      if (id < 0) {
+        id = static_cast<int>(out.points.size());
+        out.points.push_back(input.points[t[k]]);
+      }
+      tri[k] = id;
+    }
+    out.triangles.push_back(tri);
+  }
+  return out;
+}
+
 } // namespace
 
-double automaticEdgeLength(double enclosedVolume) {
+double automaticEdgeLength(double enclosedVolume, int targetTets) {
   if (!(enclosedVolume > 0.0) || !std::isfinite(enclosedVolume)) {
     throw GeoLatticeError("automatic edge length needs a positive enclosed volume, got " +
                           std::to_string(enclosedVolume) + " mm^3");
   }
+  if (targetTets <= 0) {
+    throw GeoLatticeError("automatic edge length needs a positive tet count, got " + std::to_string(targetTets));
+  }
   // N = V / (k * L^3 / (6 sqrt 2))  =>  L = cbrt(6 sqrt 2 * V / (k * N)).
-  return std::cbrt(6.0 * std::sqrt(2.0) * enclosedVolume / (kMeanTetVolumeOverBound * kAutoTargetTets));
+  return std::cbrt(6.0 * std::sqrt(2.0) * enclosedVolume / (kGuessMeanTetVolumeOverBound * targetTets));
 }
 
 TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const TetrahedralizeOptions& options) {
@@ -91,96 +177,126 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const T
     throw GeoLatticeError("target edge length must be >= 0 mm (0 = automatic), got " +
                           std::to_string(options.targetEdgeLength));
   }
-  // TetGen's Delaunay refinement is proven to terminate for a ratio bound >= 2 and in practice
-  // works down to about 1.1; a regular tet has ratio sqrt(6)/4 = 0.61, so bounds near or
-  // below 1 make TetGen refine (nearly) forever. Above 10 the bound no longer shapes the mesh.
   if (!(options.radiusEdgeRatio >= kMinRadiusEdgeRatio && options.radiusEdgeRatio <= kMaxRadiusEdgeRatio)) {
     throw GeoLatticeError("radius-edge ratio must be in [" + formatSwitchNumber(kMinRadiusEdgeRatio) + ", " +
                           formatSwitchNumber(kMaxRadiusEdgeRatio) + "], got " +
                           std::to_string(options.radiusEdgeRatio));
   }
+  const bool automatic = options.targetEdgeLength == 0.0;
+  if (automatic && (options.autoTargetTets < kMinAutoTargetTets || options.autoTargetTets > kMaxAutoTargetTets)) {
+    throw GeoLatticeError("automatic target tet count must be in [" + std::to_string(kMinAutoTargetTets) + ", " +
+                          std::to_string(kMaxAutoTargetTets) + "], got " + std::to_string(options.autoTargetTets));
+  }
 
-  TriangleSurface surface = input;
-  requireClosedManifold(surface);
+  const SurfaceCheckReport report = requireClosedManifold(input);
+  // Only the vertices of triangles go to TetGen: a stray point inside the solid would become a
+  // mesh vertex.
+  TriangleSurface surface = withoutUnusedPoints(input);
   TetrahedralizeResult result;
-  // TetGen ignores facet orientation, but keep the documented contract (outward surface) so
-  // that the enclosed volume below is positive.
+  // TetGen ignores facet orientation, but the cavity test (winding number) needs an outward
+  // surface.
   result.flippedSurfaceTriangles = orientOutward(surface);
-  result.enclosedVolume = checkSurface(surface).signedVolume;
+  result.enclosedVolume = std::abs(report.signedVolume);
 
-  result.targetEdgeLength =
-      options.targetEdgeLength > 0.0 ? options.targetEdgeLength : automaticEdgeLength(result.enclosedVolume);
-  result.maxTetVolume = regularTetVolume(result.targetEdgeLength);
-  const double estimatedTets = result.enclosedVolume / (kMeanTetVolumeOverBound * result.maxTetVolume);
-  if (estimatedTets > kMaxEstimatedTets) {
-    throw GeoLatticeError("target edge length " + std::to_string(result.targetEdgeLength) +
-                          " mm is too small for a solid of " + std::to_string(result.enclosedVolume) +
-                          " mm^3: about " + std::to_string(static_cast<long long>(estimatedTets)) +
-                          " tets (limit " + std::to_string(static_cast<long long>(kMaxEstimatedTets)) + ")");
+  const double firstEdge =
+      automatic ? automaticEdgeLength(result.enclosedVolume, options.autoTargetTets) : options.targetEdgeLength;
+  const double smallestCount = result.enclosedVolume / (kLargestMeanTetVolumeOverBound * regularTetVolume(firstEdge));
+  if (!automatic && smallestCount > kMaxEstimatedTets) {
+    throw GeoLatticeError("target edge length " + std::to_string(firstEdge) + " mm is too small for a solid of " +
+                          std::to_string(result.enclosedVolume) + " mm^3: at least about " +
+                          std::to_string(static_cast<long long>(smallestCount)) + " tets (limit " +
+                          std::to_string(static_cast<long long>(kMaxEstimatedTets)) + ")");
   }
 
-  tetgenio in;
-  in.firstnumber = 0;
-  in.numberofpoints = static_cast<int>(surface.points.size());
-  in.pointlist = new REAL[3 * surface.points.size()];
-  for (size_t i = 0; i < surface.points.size(); ++i) {
-    for (int a = 0; a < 3; ++a) {
-      in.pointlist[3 * i + a] = surface.points[i][a];
+  // p: mesh the surface, q: radius-edge bound, a: volume bound, A: number the regions
+  // (cavities), Q: quiet. No "Y": boundary triangles may be split, so the boundary gets the
+  // target resolution too.
+  auto switchesFor = [&](double edge) {
+    return "pq" + formatSwitchNumber(options.radiusEdgeRatio) + "a" + formatSwitchNumber(regularTetVolume(edge)) +
+           "AQ";
+  };
+  int removedRegions = 0; // of the last run
+  auto run = [&](double edge) {
+    TetGenOutput out = runTetGen(surface, switchesFor(edge), options.shouldAbort);
+    if (out.mesh.tets.empty()) {
+      throw GeoLatticeError("TetGen produced no tetrahedra (switches " + switchesFor(edge) + ")");
+    }
+    const RegionSummary regions = classifyRegions(surface, out);
+    removedRegions = regions.removedRegions;
+    // TetGen keeps the boundary geometrically (Steiner points lie on the input facets), so the
+    // volumes agree to rounding (measured: <= 1e-7 relative on the test models). A larger gap
+    // means TetGen changed the geometry, e.g. merged nearly coincident vertices.
+    const double gap = std::abs(regions.windingVolume - result.enclosedVolume) / result.enclosedVolume;
+    if (gap > kVolumeTolerance) {
+      throw GeoLatticeError("the tet mesh volume (" + std::to_string(regions.windingVolume) +
+                            " mm^3, counted with the winding number) differs from the volume enclosed by the "
+                            "surface (" + std::to_string(result.enclosedVolume) + " mm^3) by " +
+                            formatSwitchNumber(100.0 * gap) +
+                            " %: the surface has overlapping parts or nearly coincident vertices");
+    }
+    return std::move(out.mesh);
+  };
+
+  TetMesh best = run(firstEdge);
+  double bestEdge = firstEdge;
+  result.removedCavityRegions = removedRegions;
+  result.attempts = 1;
+  if (automatic) {
+    // Secant search on log(count) = slope * log(edge) + c. A volume-filling mesh has slope -3;
+    // surface-driven refinement flattens it (and makes it jumpy near the surface's own edge
+    // length), so the measured slope is used from run 2 on, and a proposal outside the
+    // bracket (largest edge known to give too many tets, smallest known to give too few) is
+    // replaced by the bracket's geometric mean.
+    const double target = options.autoTargetTets;
+    auto miss = [&](size_t count) { return std::abs(std::log(static_cast<double>(count) / target)); };
+    double edge = firstEdge, count = static_cast<double>(best.tets.size());
+    double slope = -3.0;
+    double tooFine = 0.0, tooCoarse = 0.0; // largest edge with count > target, smallest with count < target
+    auto updateBracket = [&](double e, double n) {
+      if (n > target) {
+        tooFine = std::max(tooFine, e);
+      } else if (tooCoarse == 0.0 || e < tooCoarse) {
+        tooCoarse = e;
+      }
+    };
+    updateBracket(edge, count);
+    while (miss(best.tets.size()) > std::log(kAutoTolerance) && result.attempts < kMaxAutoAttempts) {
+      double next = edge * std::exp(std::log(count / target) / -slope);
+      next = std::max(edge / 4.0, std::min(next, std::min(edge * 4.0, report.bboxDiagonal)));
+      if (tooFine > 0.0 && tooCoarse > tooFine && !(next > tooFine && next < tooCoarse)) {
+        next = std::sqrt(tooFine * tooCoarse);
+      }
+      if (!(std::abs(next - edge) > 1e-9 * edge)) {
+        break; // no further change possible (the bound is the bounding-box diagonal)
+      }
+      TetMesh mesh = run(next);
+      ++result.attempts;
+      const double nextCount = static_cast<double>(mesh.tets.size());
+      // Keep the slope negative and not too flat, so the next step stays bounded.
+      slope = std::clamp(std::log(nextCount / count) / std::log(next / edge), -4.0, -0.5);
+      edge = next;
+      count = nextCount;
+      updateBracket(edge, count);
+      if (miss(mesh.tets.size()) < miss(best.tets.size())) {
+        best = std::move(mesh);
+        bestEdge = edge;
+        result.removedCavityRegions = removedRegions;
+      }
     }
   }
-  in.numberoffacets = static_cast<int>(surface.triangles.size());
-  in.facetlist = new tetgenio::facet[surface.triangles.size()];
-  for (size_t f = 0; f < surface.triangles.size(); ++f) {
-    tetgenio::facet& facet = in.facetlist[f];
-    tetgenio::init(&facet);
-    facet.numberofpolygons = 1;
-    facet.polygonlist = new tetgenio::polygon[1];
-    tetgenio::init(&facet.polygonlist[0]);
-    facet.polygonlist[0].numberofvertices = 3;
-    facet.polygonlist[0].vertexlist = new int[3];
-    for (int k = 0; k < 3; ++k) {
-      facet.polygonlist[0].vertexlist[k] = surface.triangles[f][k];
-    }
-  }
 
-  // p: mesh the PLC, q: radius-edge bound, a: volume bound, Q: quiet. No "Y": boundary
-  // triangles may be split so the boundary gets the target resolution too.
-  result.switches = "pq" + formatSwitchNumber(options.radiusEdgeRatio) + "a" +
-                    formatSwitchNumber(result.maxTetVolume) + "Q";
-  std::vector<char> switches(result.switches.begin(), result.switches.end());
-  switches.push_back('\0'); // tetrahedralize() needs a writable char*
-  tetgenio out;
-  try {
-    tetrahedralize(switches.data(), &in, &out);
-  } catch (int code) {
-    throw GeoLatticeError(tetgenErrorMessage(code));
-  } catch (const std::bad_alloc&) {
-    throw GeoLatticeError(tetgenErrorMessage(1));
-  }
-  if (out.numberoftetrahedra <= 0 || out.numberofcorners != 4) {
-    throw GeoLatticeError("TetGen produced no tetrahedra (" + std::to_string(out.numberoftetrahedra) +
-                          " tets, " + std::to_string(out.numberofcorners) + " corners)");
-  }
-
-  TetMesh& mesh = result.mesh;
-  mesh.points.resize(out.numberofpoints);
-  for (int i = 0; i < out.numberofpoints; ++i) {
-    mesh.points[i] = Vec3(out.pointlist[3 * i], out.pointlist[3 * i + 1], out.pointlist[3 * i + 2]);
-  }
-  mesh.tets.resize(out.numberoftetrahedra);
-  for (int t = 0; t < out.numberoftetrahedra; ++t) {
-    for (int k = 0; k < 4; ++k) {
-      mesh.tets[t][k] = out.tetrahedronlist[4 * t + k] - out.firstnumber;
-    }
-  }
-  // TetGen writes every tet with the fourth vertex below the plane of the first three, i.e.
-  // negative signed volume in our convention: flip all of them (checked, not assumed).
-  result.flippedTets = orientTetsPositively(mesh);
-  const TetMeshCheckReport check = requireValidTetMesh(mesh);
+  result.targetEdgeLength = bestEdge;
+  result.maxTetVolume = regularTetVolume(bestEdge);
+  result.switches = switchesFor(bestEdge);
+  result.mesh = std::move(best);
+  // TetGen 1.5 writes positively oriented tets (measured); flip only if a build ever wrote
+  // them all the other way, and let the validation below reject anything else.
+  result.flippedTets = orientTetsPositively(result.mesh);
+  const TetMeshCheckReport check = requireValidTetMesh(result.mesh);
 
   result.tetCount = check.tetCount;
   result.meshVolume = check.totalVolume;
-  result.meanEdgeLength = meanUniqueEdgeLength(mesh);
+  result.meanEdgeLength = meanUniqueEdgeLength(result.mesh);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return result;
 }

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -336,5 +337,122 @@ TEST_F(MeshFileIOTest, WriteRefusesBadMeshesAndLeavesNothing) {
   // Unwritable location: the error names the temporary file; nothing is created.
   const std::string q = path("no_such_dir/out.tet");
   EXPECT_CONTAINS(errorOf([&] { writeTetFile(q, readTetFile(path("two.tet"))); }), "cannot write " + q + ".tmp");
+  EXPECT_FALSE(fs::exists(q));
+}
+
+// ---------------------------------------------------------------- OBJ
+
+TEST_F(MeshFileIOTest, ObjFaceFormsNegativeIndicesAndPolygons) {
+  // All four vertex reference forms, relative indices, a quad, a pentagon, ignored statements,
+  // comments, CRLF and a forward reference (face before its last vertex).
+  const std::string p = write("forms.obj",
+                              "# comment\r\n"
+                              "mtllib none.mtl\n"
+                              "o part\n"
+                              "v 0 0 0\nv 1 0 0\nv 1 1 0 1.0\n" // optional w
+                              "vt 0 0\nvt 1 0\nvn 0 0 1\n"
+                              "g group\ns off\nusemtl red\n"
+                              "f 1 2 3\n"
+                              "f 1/1 2/2 3/1\n"
+                              "f 1/1/1 2/2/1 3/1/1   # trailing comment\n"
+                              "f 1//1 2//1 3//1\n"
+                              "f -3 -2 -1\n"           // = 1 2 3
+                              "v 0 1 0 0.5 0.5 0.5\n"  // vertex 4 with a colour
+                              "f 1 2 3 -1\n"           // quad 1 2 3 4
+                              "f 1 2 5 3 4\n"          // pentagon, vertex 5 defined below
+                              "l 1 2\n"
+                              "v -1 0.5 +2e0\n");
+  const TriangleSurface s = readObj(p);
+  ASSERT_EQ(s.points.size(), 5u);
+  EXPECT_EQ(s.points[4], Vec3(-1, 0.5, 2));
+  EXPECT_EQ(s.points[3], Vec3(0, 1, 0));
+  const std::vector<std::array<int, 3>> expected = {
+      {0, 1, 2}, {0, 1, 2}, {0, 1, 2}, {0, 1, 2}, {0, 1, 2}, {0, 1, 2}, {0, 2, 3}, {0, 1, 4}, {0, 4, 2}, {0, 2, 3}};
+  EXPECT_EQ(s.triangles, expected);
+}
+
+TEST_F(MeshFileIOTest, ObjBunny) {
+  const TriangleSurface s = readObj(kData + "/bunny.obj");
+  EXPECT_EQ(s.triangles.size(), 3674u);
+  EXPECT_EQ(s.points.size(), 1839u); // closed genus-0 surface: V = F/2 + 2
+  for (const auto& t : s.triangles) {
+    for (int id : t) {
+      ASSERT_TRUE(id >= 0 && id < static_cast<int>(s.points.size()));
+    }
+  }
+}
+
+TEST_F(MeshFileIOTest, ObjMalformedLinesNameFileAndLine) {
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const std::string a = write("a.obj", v + "v 1 2\nf 1 2 3\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(a); }), a + ":4: vertex 4: expected 'v x y z', got 2 values");
+  const std::string b = write("b.obj", v + "v 1 x 2\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(b); }), b + ":4: expected a number for y, got 'x'");
+  const std::string c = write("c.obj", v + "f 1 2\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(c); }), c + ":4: face with 2 vertices; at least 3 needed");
+  const std::string d = write("d.obj", v + "\nf 1 2 0\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(d); }), d + ":5: vertex index 0");
+  const std::string e = write("e.obj", v + "f 1 2 three\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(e); }), e + ":4: expected an integer for a vertex index, got 'three'");
+  const std::string f = write("f.obj", v + "f 1/1/1/1 2 3\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(f); }), f + ":4: malformed vertex reference '1/1/1/1'");
+  const std::string g = write("g.obj", v + "f /1 2 3\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(g); }), g + ":4: expected an integer for a vertex index, got ''");
+  const std::string h = write("h.obj", "v inf 0 0\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(h); }), h + ":1: non-finite value for x");
+}
+
+TEST_F(MeshFileIOTest, ObjIndexOutOfRange) {
+  const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+  const std::string a = write("a.obj", v + "f 1 2 3\nf 1 2 4\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(a); }), a + ":5: vertex index 4 out of range [1, 3]");
+  const std::string b = write("b.obj", v + "f -1 -2 -4\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(b); }), b + ":4: relative vertex index -4 reaches before the first vertex");
+  // A relative index counts only the vertices read before the face.
+  const std::string c = write("c.obj", "v 0 0 0\nf -1 -2 -3\nv 1 0 0\nv 0 1 0\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(c); }), c + ":2: relative vertex index -2");
+}
+
+TEST_F(MeshFileIOTest, ObjEmptyAndMissing) {
+  const std::string a = write("a.obj", "# nothing\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(a); }), "empty mesh: " + a + " has 0 vertices and 0 faces");
+  const std::string b = write("b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n");
+  EXPECT_CONTAINS(errorOf([&] { readObj(b); }), "empty mesh: " + b + " has 3 vertices and 0 faces");
+  EXPECT_CONTAINS(errorOf([&] { readObj(path("missing.obj")); }), "file not found: " + path("missing.obj"));
+}
+
+TEST_F(MeshFileIOTest, ObjWriteReadRoundTripIsExact) {
+  TriangleSurface s = readObj(kData + "/bunny.obj");
+  s.points[0] = Vec3(0.1, 1.0 / 3.0, -2.5e-17);
+  const std::string p = path("out.obj");
+  writeObj(p, s, "generated by a test\nsecond line");
+  EXPECT_FALSE(fs::exists(p + ".tmp"));
+  std::ifstream in(p);
+  std::string first;
+  std::getline(in, first);
+  EXPECT_EQ(first, "# generated by a test");
+  const TriangleSurface back = readObj(p);
+  ASSERT_EQ(back.points.size(), s.points.size());
+  for (size_t i = 0; i < s.points.size(); ++i) {
+    ASSERT_EQ(back.points[i], s.points[i]) << "vertex " << i;
+  }
+  EXPECT_EQ(back.triangles, s.triangles);
+}
+
+TEST_F(MeshFileIOTest, ObjWriteRefusesBadSurfacesAndLeavesNothing) {
+  const std::string p = path("bad.obj");
+  EXPECT_CONTAINS(errorOf([&] { writeObj(p, TriangleSurface{}); }), "empty mesh");
+  TriangleSurface s;
+  s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  s.triangles = {{0, 1, 3}};
+  EXPECT_CONTAINS(errorOf([&] { writeObj(p, s); }), "triangle 0 has vertex index 3 out of range [0, 2]");
+  s.triangles = {{0, 1, 2}};
+  s.points[1].y() = std::nan("");
+  EXPECT_CONTAINS(errorOf([&] { writeObj(p, s); }), "vertex 1 is not finite");
+  EXPECT_FALSE(fs::exists(p));
+  EXPECT_FALSE(fs::exists(p + ".tmp"));
+  s.points[1].y() = 0.0;
+  const std::string q = path("no_such_dir/out.obj");
+  EXPECT_CONTAINS(errorOf([&] { writeObj(q, s); }), "cannot write " + q + ".tmp");
   EXPECT_FALSE(fs::exists(q));
 }

@@ -1,0 +1,528 @@
+// geolattice: command-line front end. It builds the same VTK pipeline as the ParaView plugin and
+// the pvpython scripts (reader -> placement -> tetrahedralization -> geodesic fields -> ...)
+// and writes every stage's output plus report.json into the output directory.
+#include "JsonWriter.h"
+#include "OutputFiles.h"
+
+#include "common/Error.h"
+#include "vtkGLArrayNames.h"
+#include "vtkGLCurvedLayerSlicer.h"
+#include "vtkGLGeodesicDistanceFields.h"
+#include "vtkGLMeshReader.h"
+#include "vtkGLPlaceOnPlatform.h"
+#include "vtkGLTetrahedralizeSurface.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkObject.h>
+#include <vtkOutputWindow.h>
+#include <vtkPointData.h>
+#include <vtkPointSet.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+namespace gl = geolattice;
+using Clock = std::chrono::steady_clock;
+
+constexpr const char* kStages[] = { "mesh", "gdf", "layers" };
+
+const char* kUsage = R"(geolattice - multi-axis support-free printing with lattice infill (GeoLattice )" GEOLATTICE_VERSION R"()
+
+Usage:
+  geolattice run MODEL -o OUTDIR [options]
+  geolattice --help | --version
+
+MODEL is a closed triangle surface (.stl .obj .ply .vtp .off) or a tet mesh (.vtu .tet .node
+.ele; a tet mesh skips meshing). Outputs in OUTDIR: tets.vtu (the tet mesh), fields.vtu (tets
+with Gamma, Alpha, Beta), layers.vtp (curved layers, cell array LayerId), report.json (per
+stage: seconds, counts, results). Files are written to a temporary name first, so nothing
+partial is left behind on failure.
+
+Options:
+  -o, --output DIR        output directory (created if missing)                     [required]
+  --until STAGE           last stage to run: mesh | gdf | layers                     [layers]
+ Model placement (models come in arbitrary units; GeoLattice works in millimetres):
+  --scale F               uniform scale factor applied to the model                  [1]
+  --fit-size MM           scale so the largest bounding-box side is MM (replaces --scale) [off]
+  --no-center             keep x and y as they are (default: bounding box centred on x = y = 0)
+                          The base is always moved to the platform, z = 0.
+ Tetrahedral meshing (TetGen):
+  --edge-length MM        target tet edge length; 0 = automatic (~75k tets)          [0]
+  --radius-edge R         TetGen radius-edge ratio bound (quality; 1.414 = sqrt 2)   [1.414]
+ Geodesic distance fields (heat method, paper Eqs. 1-5):
+  --base MODE             base (heat source): lowest | faces                         [lowest]
+                          lowest: vertices within --base-tolerance of the lowest z;
+                          faces: vertices of boundary faces facing down within --base-angle
+  --base-tolerance MM     height band above the lowest point that is the base        [0.05]
+  --base-angle DEG        max angle between a base face's outward normal and -z      [10]
+  --time-factor F         heat time t = F * h^2 (h = mean edge length)               [4]
+  --reference X,Y,Z       reference vector r of Eq. 3 (sets the lattice directions)  [1,0,0]
+  --solver NAME           cholmod | eigen (sparse Cholesky back end)                 [cholmod]
+ Curved layers (iso-surfaces of Gamma):
+  --layer-interval MM     γ distance between layers (nominal layer thickness)        [0.6]
+  --first-layer MM        γ of the first layer                      [= --layer-interval]
+ Output:
+  -q, --quiet             no progress lines on stdout
+
+Progress goes to stdout. Exit status: 0 on success; 1 on an error (one line on stderr naming
+the problem); 2 on bad usage (one line on stderr).
+)";
+
+struct Options {
+  std::string model;
+  std::string outDir;
+  std::string until = "layers";
+  double scale = 1.0;
+  double fitSize = 0.0;
+  bool center = true;
+  double edgeLength = 0.0;
+  double radiusEdge = 1.414;
+  std::string base = "lowest";
+  double baseTolerance = 0.05;
+  double baseAngle = 10.0;
+  double timeFactor = 4.0;
+  double reference[3] = { 1, 0, 0 };
+  std::string solver = "cholmod";
+  double layerInterval = 0.6;
+  double firstLayer = -1; // < 0: equal to layerInterval
+  bool quiet = false;
+};
+
+struct UsageError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+double parseNumber(const std::string& flag, const std::string& text)
+{
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(v))
+  {
+    throw UsageError(flag + " expects a number, got '" + text + "'");
+  }
+  return v;
+}
+
+Options parseArguments(int argc, char** argv)
+{
+  Options o;
+  if (argc < 2)
+  {
+    throw UsageError("missing command (try --help)");
+  }
+  const std::string command = argv[1];
+  if (command != "run")
+  {
+    throw UsageError("unknown command '" + command + "' (try --help)");
+  }
+  for (int i = 2; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto value = [&]() -> std::string {
+      if (i + 1 >= argc)
+      {
+        throw UsageError(arg + " needs a value");
+      }
+      return argv[++i];
+    };
+    if (arg == "-o" || arg == "--output") o.outDir = value();
+    else if (arg == "--until") o.until = value();
+    else if (arg == "--scale") o.scale = parseNumber(arg, value());
+    else if (arg == "--fit-size") o.fitSize = parseNumber(arg, value());
+    else if (arg == "--no-center") o.center = false;
+    else if (arg == "--edge-length") o.edgeLength = parseNumber(arg, value());
+    else if (arg == "--radius-edge") o.radiusEdge = parseNumber(arg, value());
+    else if (arg == "--base") o.base = value();
+    else if (arg == "--base-tolerance") o.baseTolerance = parseNumber(arg, value());
+    else if (arg == "--base-angle") o.baseAngle = parseNumber(arg, value());
+    else if (arg == "--time-factor") o.timeFactor = parseNumber(arg, value());
+    else if (arg == "--reference")
+    {
+      std::stringstream ss(value());
+      std::string part;
+      int k = 0;
+      while (std::getline(ss, part, ','))
+      {
+        if (k == 3)
+        {
+          throw UsageError("--reference expects X,Y,Z");
+        }
+        o.reference[k++] = parseNumber("--reference", part);
+      }
+      if (k != 3)
+      {
+        throw UsageError("--reference expects X,Y,Z");
+      }
+    }
+    else if (arg == "--solver") o.solver = value();
+    else if (arg == "--layer-interval") o.layerInterval = parseNumber(arg, value());
+    else if (arg == "--first-layer") o.firstLayer = parseNumber(arg, value());
+    else if (arg == "-q" || arg == "--quiet") o.quiet = true;
+    else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
+    else if (o.model.empty()) o.model = arg;
+    else throw UsageError("unexpected argument '" + arg + "'");
+  }
+  if (o.model.empty())
+  {
+    throw UsageError("missing MODEL");
+  }
+  if (o.outDir.empty())
+  {
+    throw UsageError("missing -o OUTDIR");
+  }
+  if (std::find(std::begin(kStages), std::end(kStages), o.until) == std::end(kStages))
+  {
+    throw UsageError("--until must be one of: mesh, gdf, layers (got '" + o.until + "')");
+  }
+  if (o.base != "lowest" && o.base != "faces")
+  {
+    throw UsageError("--base must be lowest or faces (got '" + o.base + "')");
+  }
+  if (o.solver != "cholmod" && o.solver != "eigen")
+  {
+    throw UsageError("--solver must be cholmod or eigen (got '" + o.solver + "')");
+  }
+  if (o.firstLayer < 0)
+  {
+    o.firstLayer = o.layerInterval;
+  }
+  // Parameter ranges are checked by the filters themselves, with the same messages as in ParaView.
+  return o;
+}
+
+/// Captures the first error an algorithm reports (instead of VTK's multi-line console text).
+class ErrorCapture
+{
+public:
+  void Watch(vtkObject* object)
+  {
+    vtkNew<vtkCallbackCommand> cb;
+    cb->SetClientData(this);
+    cb->SetCallback([](vtkObject*, unsigned long, void* self, void* callData) {
+      auto* me = static_cast<ErrorCapture*>(self);
+      if (me->Message.empty() && callData)
+      {
+        me->Message = Clean(static_cast<const char*>(callData));
+      }
+    });
+    object->AddObserver(vtkCommand::ErrorEvent, cb);
+  }
+  std::string Message;
+
+private:
+  // "ERROR: In file, line N\nvtkClass (0x...): text\n\n" -> "text"
+  static std::string Clean(std::string text)
+  {
+    const size_t paren = text.find("): ");
+    if (paren != std::string::npos)
+    {
+      text = text.substr(paren + 3);
+    }
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+    {
+      text.pop_back();
+    }
+    for (char& c : text)
+    {
+      if (c == '\n')
+      {
+        c = ' ';
+      }
+    }
+    return text;
+  }
+};
+
+/// Swallows VTK's console output; the messages that matter reach the CLI through ErrorCapture.
+class SilentOutputWindow : public vtkOutputWindow
+{
+public:
+  static SilentOutputWindow* New() { return new SilentOutputWindow; }
+  vtkTypeMacro(SilentOutputWindow, vtkOutputWindow);
+  void DisplayText(const char*) override {}
+};
+
+double fieldValue(vtkDataObject* data, const char* name, int component = 0)
+{
+  vtkDataArray* a = vtkDataArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
+  return a && a->GetNumberOfTuples() > component ? a->GetTuple1(component) : 0.0;
+}
+
+class Pipeline
+{
+public:
+  explicit Pipeline(const Options& o)
+    : Opt(o)
+  {
+  }
+
+  int Run()
+  {
+    gl::prepareOutputDirectory(Opt.outDir);
+    gl::JsonObject report;
+    report.set("geolattice_version", GEOLATTICE_VERSION);
+    report.set("model", Opt.model);
+    const bool isTetMesh = vtkGLMeshReader::IsTetMeshFile(Opt.model.c_str());
+
+    // Stage: read + place on the platform.
+    vtkNew<vtkGLMeshReader> reader;
+    reader->SetFileName(Opt.model.c_str());
+    vtkNew<vtkGLPlaceOnPlatform> place;
+    place->SetInputConnection(reader->GetOutputPort());
+    place->SetScale(Opt.scale);
+    place->SetFitSize(Opt.fitSize);
+    place->SetCenterXY(Opt.center);
+    vtkDataObject* placed = this->Execute("input", { reader, place }, place);
+    {
+      auto& s = report.object("input");
+      s.set("seconds", this->LastSeconds);
+      s.set("file", Opt.model);
+      s.set("points", static_cast<long long>(vtkDataSet::SafeDownCast(placed)->GetNumberOfPoints()));
+      s.set(isTetMesh ? "tets" : "triangles", static_cast<long long>(vtkDataSet::SafeDownCast(placed)->GetNumberOfCells()));
+      s.set("scale", fieldValue(placed, gl::arrays::PlacementScale));
+      s.set("translation", std::vector<double>{ fieldValue(placed, gl::arrays::PlacementTranslation, 0),
+                             fieldValue(placed, gl::arrays::PlacementTranslation, 1),
+                             fieldValue(placed, gl::arrays::PlacementTranslation, 2) });
+      double b[6];
+      vtkDataSet::SafeDownCast(placed)->GetBounds(b);
+      s.set("size_mm", std::vector<double>{ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
+    }
+
+    // Stage: tetrahedral mesh (skipped for tet-mesh input).
+    vtkAlgorithm* tetSource = place;
+    vtkNew<vtkGLTetrahedralizeSurface> tetrahedralize;
+    {
+      auto& s = report.object("mesh");
+      vtkDataObject* tets = nullptr;
+      if (isTetMesh)
+      {
+        tets = placed;
+        s.set("seconds", 0.0);
+        s.set("meshed", false);
+      }
+      else
+      {
+        tetrahedralize->SetInputConnection(place->GetOutputPort());
+        tetrahedralize->SetTargetEdgeLength(Opt.edgeLength);
+        tetrahedralize->SetRadiusEdgeRatio(Opt.radiusEdge);
+        tets = this->Execute("mesh", { tetrahedralize }, tetrahedralize);
+        tetSource = tetrahedralize;
+        s.set("seconds", this->LastSeconds);
+        s.set("meshed", true);
+        s.set("target_edge_length_mm", fieldValue(tets, gl::arrays::TargetEdgeLength));
+        s.set("mean_edge_length_mm", fieldValue(tets, gl::arrays::MeanEdgeLength));
+      }
+      s.set("points", static_cast<long long>(vtkDataSet::SafeDownCast(tets)->GetNumberOfPoints()));
+      s.set("tets", static_cast<long long>(vtkDataSet::SafeDownCast(tets)->GetNumberOfCells()));
+      this->Write(tets, "tets.vtu");
+    }
+    if (Opt.until == "mesh")
+    {
+      return this->Finish(report);
+    }
+
+    // Stage: geodesic distance fields.
+    vtkNew<vtkGLGeodesicDistanceFields> gdf;
+    gdf->SetInputConnection(tetSource->GetOutputPort());
+    gdf->SetSourceMode(Opt.base == "faces" ? vtkGLGeodesicDistanceFields::DOWNWARD_FACES
+                                           : vtkGLGeodesicDistanceFields::LOWEST_Z);
+    gdf->SetBaseTolerance(Opt.baseTolerance);
+    gdf->SetBaseFaceAngle(Opt.baseAngle);
+    gdf->SetTimeFactor(Opt.timeFactor);
+    gdf->SetReferenceVector(Opt.reference);
+    gdf->SetUseCholmod(Opt.solver == "cholmod");
+    vtkDataObject* fields = this->Execute("gdf", { gdf }, gdf);
+    {
+      auto& s = report.object("gdf");
+      s.set("seconds", this->LastSeconds);
+      s.set("points", static_cast<long long>(vtkDataSet::SafeDownCast(fields)->GetNumberOfPoints()));
+      s.set("tets", static_cast<long long>(vtkDataSet::SafeDownCast(fields)->GetNumberOfCells()));
+      s.set("sources", static_cast<long long>(fieldValue(fields, gl::arrays::SourceCount)));
+      s.set("gamma_max", fieldValue(fields, gl::arrays::GammaRange, 1));
+      s.set("alpha_max", fieldValue(fields, gl::arrays::AlphaRange, 1));
+      s.set("beta_max", fieldValue(fields, gl::arrays::BetaRange, 1));
+      s.set("assembly_seconds", fieldValue(fields, gl::arrays::GdfTimings, 0));
+      s.set("factorization_seconds", fieldValue(fields, gl::arrays::GdfTimings, 1));
+      s.set("solve_seconds", fieldValue(fields, gl::arrays::GdfTimings, 2));
+      s.set("reference_fallback_tets", static_cast<long long>(fieldValue(fields, gl::arrays::ReferenceFallbackTets)));
+      auto& o = s.object("orthogonality_deviation_deg");
+      o.set("alpha_gamma_median", fieldValue(fields, gl::arrays::OrthogonalityDeg, 0));
+      o.set("alpha_gamma_p95", fieldValue(fields, gl::arrays::OrthogonalityDeg, 1));
+      o.set("beta_gamma_median", fieldValue(fields, gl::arrays::OrthogonalityDeg, 2));
+      o.set("beta_gamma_p95", fieldValue(fields, gl::arrays::OrthogonalityDeg, 3));
+      this->Write(fields, "fields.vtu");
+    }
+    if (Opt.until == "gdf")
+    {
+      return this->Finish(report);
+    }
+
+    // Stage: curved layers.
+    vtkNew<vtkGLCurvedLayerSlicer> slicer;
+    slicer->SetInputConnection(gdf->GetOutputPort());
+    slicer->SetLayerInterval(Opt.layerInterval);
+    slicer->SetFirstLayerOffset(Opt.firstLayer);
+    vtkDataObject* layers = this->Execute("layers", { slicer }, slicer);
+    {
+      auto& s = report.object("layers");
+      s.set("seconds", this->LastSeconds);
+      vtkFieldData* fd = layers->GetFieldData();
+      const vtkIdType count = fd->GetArray(gl::arrays::LayerValues)->GetNumberOfTuples();
+      s.set("count", static_cast<long long>(count));
+      s.set("interval", Opt.layerInterval);
+      s.set("first_layer", Opt.firstLayer);
+      s.set("points", static_cast<long long>(vtkDataSet::SafeDownCast(layers)->GetNumberOfPoints()));
+      s.set("triangles", static_cast<long long>(vtkDataSet::SafeDownCast(layers)->GetNumberOfCells()));
+      double range[2];
+      fd->GetArray(gl::arrays::LayerComponents)->GetRange(range);
+      s.set("components_max", static_cast<long long>(range[1]));
+      auto nanRange = [fd](const char* name, bool wantMin) {
+        vtkDataArray* a = fd->GetArray(name);
+        double best = wantMin ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
+        for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
+        {
+          const double v = a->GetTuple1(i);
+          if (!std::isnan(v))
+          {
+            best = wantMin ? std::min(best, v) : std::max(best, v);
+          }
+        }
+        return best;
+      };
+      auto& spacing = s.object("spacing_mm");
+      spacing.set("min", nanRange(gl::arrays::LayerSpacingMin, true));
+      spacing.set("mean_min", nanRange(gl::arrays::LayerSpacingMean, true));
+      spacing.set("mean_max", nanRange(gl::arrays::LayerSpacingMean, false));
+      spacing.set("max", nanRange(gl::arrays::LayerSpacingMax, false));
+      this->Write(layers, "layers.vtp");
+    }
+    return this->Finish(report);
+  }
+
+private:
+  /// Updates `last` (watching every algorithm of the stage for errors) and returns its output;
+  /// throws with the stage name if an error was reported or the output is empty.
+  vtkDataObject* Execute(const char* stage, std::initializer_list<vtkAlgorithm*> algorithms, vtkAlgorithm* last)
+  {
+    if (!Opt.quiet)
+    {
+      std::cout << "geolattice: " << stage << " ..." << std::flush;
+    }
+    ErrorCapture errors;
+    for (vtkAlgorithm* a : algorithms)
+    {
+      errors.Watch(a);
+    }
+    const auto start = Clock::now();
+    last->Update();
+    this->LastSeconds = std::chrono::duration<double>(Clock::now() - start).count();
+    vtkDataSet* out = vtkDataSet::SafeDownCast(last->GetOutputDataObject(0));
+    if (!Opt.quiet)
+    {
+      std::cout << (errors.Message.empty() ? " done" : " failed") << " (" << this->LastSeconds << " s)\n";
+    }
+    if (!errors.Message.empty())
+    {
+      throw gl::GeoLatticeError(std::string(stage) + ": " + errors.Message);
+    }
+    if (!out || out->GetNumberOfCells() == 0)
+    {
+      throw gl::GeoLatticeError(std::string(stage) + ": produced an empty output");
+    }
+    return out;
+  }
+
+  void Write(vtkDataObject* data, const char* name)
+  {
+    const std::string path = (std::filesystem::path(Opt.outDir) / name).string();
+    gl::writeVtkXml(data, path);
+    this->Written.push_back(path);
+  }
+
+  int Finish(gl::JsonObject& report)
+  {
+    const std::string path = (std::filesystem::path(Opt.outDir) / "report.json").string();
+    gl::writeAtomically(path, [&report](const std::string& tmp) {
+      std::ofstream out(tmp);
+      report.write(out);
+      out << "\n";
+      return static_cast<bool>(out);
+    });
+    this->Written.push_back(path);
+    if (!Opt.quiet)
+    {
+      std::cout << "geolattice: wrote";
+      for (const auto& w : this->Written)
+      {
+        std::cout << " " << w;
+      }
+      std::cout << "\ngeolattice: open them in ParaView (paraview " << Opt.outDir
+                << "/fields.vtu) or load the plugin for the filters.\n";
+    }
+    return 0;
+  }
+
+  const Options& Opt;
+  double LastSeconds = 0;
+  std::vector<std::string> Written;
+};
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  for (int i = 1; i < argc; ++i)
+  {
+    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h"))
+    {
+      std::cout << kUsage;
+      return 0;
+    }
+    if (!std::strcmp(argv[i], "--version"))
+    {
+      std::cout << "geolattice " << GEOLATTICE_VERSION << "\n";
+      return 0;
+    }
+  }
+  // Errors are captured per algorithm (ErrorEvent observers) and printed once; whatever else VTK
+  // would print (e.g. from readers inside a filter) goes to a silent output window.
+  vtkNew<SilentOutputWindow> silent;
+  vtkOutputWindow::SetInstance(silent);
+  try
+  {
+    const Options options = parseArguments(argc, argv);
+    return Pipeline(options).Run();
+  }
+  catch (const UsageError& e)
+  {
+    std::cerr << "geolattice: " << e.what() << "\n";
+    return 2;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "geolattice: error: " << e.what() << "\n";
+    return 1;
+  }
+}

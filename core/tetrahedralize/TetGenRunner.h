@@ -1,0 +1,45 @@
+#pragma once
+/// @file TetGenRunner.h
+/// @brief Runs TetGen 1.5 on a triangle surface in a child process, so that TetGen's failures
+/// become GeoLatticeErrors instead of crashing the caller (e.g. ParaView).
+///
+/// Why a child process: in Debian's TetGen 1.5.0 every error exit (terminatetetgen: self-
+/// intersections, tiny features, internal errors) frees the mesh and then throws; unwinding
+/// through tetrahedralize() destroys its local tetgenmesh, which frees the same memory again
+/// (double free -> SIGSEGV/SIGABRT). The child runs TetGen on a thread whose stack has no
+/// exception handler, so a thrown error code reaches std::terminate without unwinding; the
+/// terminate handler sends the code to the parent and exits. The child also silences TetGen's
+/// stdout, and the parent can kill it when the caller aborts.
+///
+/// Data flow: surface -> fork -> child: TetGen "pdQ" (self-intersection test), then the meshing
+/// switches -> pipe (points, tets, region attributes) -> parent.
+#include "mesh/TetMesh.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace geolattice {
+
+/// @brief TetGen output: points (mm), tets (TetGen's vertex order) and, with switch "A", one
+/// region number per tet (regions are the parts of space separated by the input facets).
+struct TetGenOutput {
+  TetMesh mesh;
+  std::vector<int> regions; ///< empty without "A"
+};
+
+/// @brief Mesh the PLC given by `surface` (one facet per triangle) with TetGen `switches`
+/// (e.g. "pq1.414a0.4AQ"; must contain "p"). Before meshing, the surface is tested for
+/// intersecting facets with TetGen's "d" switch.
+/// @param shouldAbort polled about every 50 ms while TetGen runs; returning true kills it.
+/// @throws GeoLatticeError "self-intersecting surface: ..." when facets intersect, a message
+/// per TetGen error code (1 memory, 2 internal, 3 intersections, 4 tiny feature, 5 close
+/// facets, 10 input), "tetrahedralization aborted" on abort, or when the child process cannot
+/// be started or dies (signal named).
+TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switches,
+                       const std::function<bool()>& shouldAbort = {});
+
+/// Message for a TetGen terminatetetgen() error code.
+std::string tetgenErrorMessage(int code);
+
+} // namespace geolattice

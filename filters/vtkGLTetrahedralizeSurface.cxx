@@ -1,0 +1,140 @@
+#include "vtkGLTetrahedralizeSurface.h"
+
+#include "vtkGLArrayNames.h"
+#include "vtkGLMeshConversion.h"
+
+#include "common/Error.h"
+#include "tetrahedralize/SurfaceTetrahedralizer.h"
+
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <Eigen/Dense>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+vtkStandardNewMacro(vtkGLTetrahedralizeSurface);
+
+namespace
+{
+// Circumradius / shortest edge of tet (a, b, c, d); infinity for a flat tet.
+double radiusEdgeRatio(const geolattice::Vec3& a, const geolattice::Vec3& b, const geolattice::Vec3& c,
+  const geolattice::Vec3& d)
+{
+  // Circumcentre x - a solves 2 (p - a) . (x - a) = |p - a|^2 for p = b, c, d.
+  Eigen::Matrix3d m;
+  m.row(0) = 2.0 * (b - a).transpose();
+  m.row(1) = 2.0 * (c - a).transpose();
+  m.row(2) = 2.0 * (d - a).transpose();
+  const Eigen::Vector3d rhs((b - a).squaredNorm(), (c - a).squaredNorm(), (d - a).squaredNorm());
+  const double det = m.determinant();
+  if (det == 0.0)
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  const double radius = m.partialPivLu().solve(rhs).norm();
+  const double shortest = std::sqrt(std::min({ (b - a).squaredNorm(), (c - a).squaredNorm(),
+    (d - a).squaredNorm(), (c - b).squaredNorm(), (d - b).squaredNorm(), (d - c).squaredNorm() }));
+  return radius / shortest;
+}
+
+void addValue(vtkFieldData* fd, const char* name, double value)
+{
+  vtkNew<vtkDoubleArray> array;
+  array->SetName(name);
+  array->InsertNextValue(value);
+  fd->AddArray(array);
+}
+} // namespace
+
+void vtkGLTetrahedralizeSurface::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "TargetEdgeLength: " << this->TargetEdgeLength << " mm (0 = automatic)\n";
+  os << indent << "TargetTetCount: " << this->TargetTetCount << "\n";
+  os << indent << "RadiusEdgeRatio: " << this->RadiusEdgeRatio << "\n";
+}
+
+int vtkGLTetrahedralizeSurface::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkGLTetrahedralizeSurface::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  if (!output)
+  {
+    vtkErrorMacro(<< "output must be a vtkUnstructuredGrid");
+    return 1;
+  }
+  output->Initialize();
+  try
+  {
+    if (!input)
+    {
+      throw geolattice::GeoLatticeError("input must be a vtkPolyData surface");
+    }
+    this->UpdateProgress(0.0);
+    const geolattice::TriangleSurface surface = geolattice::toTriangleSurface(input);
+
+    geolattice::TetrahedralizeOptions options;
+    options.targetEdgeLength = this->TargetEdgeLength;
+    options.autoTargetTets = this->TargetTetCount;
+    options.radiusEdgeRatio = this->RadiusEdgeRatio;
+    // Polled while TetGen runs in its child process; firing ProgressEvent lets ParaView's
+    // progress handler set AbortExecute.
+    options.shouldAbort = [this]() {
+      this->UpdateProgress(0.1);
+      return this->GetAbortExecute() != 0;
+    };
+    const geolattice::TetrahedralizeResult result = geolattice::tetrahedralizeSurface(surface, options);
+    this->UpdateProgress(0.8);
+
+    geolattice::fromTetMesh(result.mesh, output);
+    vtkNew<vtkDoubleArray> quality;
+    quality->SetName(geolattice::arrays::TetQuality);
+    quality->SetNumberOfValues(static_cast<vtkIdType>(result.mesh.tets.size()));
+    for (size_t t = 0; t < result.mesh.tets.size(); ++t)
+    {
+      const auto& tet = result.mesh.tets[t];
+      const auto& p = result.mesh.points;
+      quality->SetValue(
+        static_cast<vtkIdType>(t), radiusEdgeRatio(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]));
+    }
+    output->GetCellData()->AddArray(quality);
+
+    vtkFieldData* fd = output->GetFieldData();
+    addValue(fd, geolattice::arrays::TargetEdgeLength, result.targetEdgeLength);
+    addValue(fd, geolattice::arrays::MeanEdgeLength, result.meanEdgeLength);
+    vtkNew<vtkIntArray> count;
+    count->SetName(geolattice::arrays::TetCount);
+    count->InsertNextValue(result.tetCount);
+    fd->AddArray(count);
+    addValue(fd, geolattice::arrays::TetrahedralizeSeconds, result.seconds);
+    this->UpdateProgress(1.0);
+  }
+  catch (const std::exception& e)
+  {
+    output->Initialize();
+    // An abort requested by the user is not an error: empty output, no message.
+    if (!this->GetAbortExecute())
+    {
+      vtkErrorMacro(<< e.what());
+    }
+  }
+  return 1;
+}

@@ -1,0 +1,87 @@
+/**
+ * @class   vtkGLTetrahedralizeSurface
+ * @brief   Quality tetrahedral mesh of the solid bounded by a closed triangle surface (TetGen).
+ *
+ * The geodesic distance fields of the paper (Li et al., Sec. 3) are computed on a tet mesh of
+ * the part; this filter makes that mesh from the part's surface with TetGen 1.5 (constrained
+ * Delaunay + Delaunay refinement, core/tetrahedralize/SurfaceTetrahedralizer.h). TetGen runs
+ * in a child process, so a TetGen failure is reported instead of ending ParaView.
+ *
+ * Input:  vtkPolyData whose polygons are triangles forming a closed, edge-manifold,
+ *         consistently oriented surface (mm). Several shells are allowed: disjoint parts are all
+ *         meshed; an inner shell oriented inward is a cavity and stays empty. An inward-oriented
+ *         surface is flipped. Input arrays are not passed (the vertices change).
+ * Output: vtkUnstructuredGrid of linear, positively oriented VTK_TETRA cells;
+ *   - cell data `RadiusEdgeRatio` (arrays::TetQuality): circumradius / shortest edge per tet
+ *     (0.612 for a regular tet; TetGen bounds it by RadiusEdgeRatio except near small input
+ *     angles);
+ *   - field data `TargetEdgeLength` (mm, the value used: set or automatic), `MeanEdgeLength`
+ *     (mm), `TetCount`, `TetrahedralizeSeconds` (names in vtkGLArrayNames.h).
+ *
+ * Parameters:
+ *   - TargetEdgeLength: mm, default 0 = automatic (about TargetTetCount tets, see below);
+ *     TetGen's volume bound is the regular-tet volume L^3 / (6 sqrt 2). Must be >= 0.
+ *   - TargetTetCount: tet count the automatic edge length aims at (default 75000, must be in
+ *     [1000, 5000000]); TetGen runs up to 4 times to get within a factor 1.25 of it.
+ *   - RadiusEdgeRatio: TetGen's quality bound -q (default 1.414, must be in [1.1, 10]; TetGen
+ *     does not finish in practice below ~1.1).
+ *
+ * Errors (vtkErrorMacro, empty output): empty input, non-triangle polygons, an open /
+ * non-manifold / inconsistently oriented / degenerate surface (the message counts the bad
+ * edges or triangles), a self-intersecting surface, a TetGen failure, a parameter outside its
+ * domain (or NaN), an edge length so small that more than 2e7 tets would result. Abort (ParaView's stop button) kills
+ * TetGen and leaves the output empty.
+ */
+#ifndef vtkGLTetrahedralizeSurface_h
+#define vtkGLTetrahedralizeSurface_h
+
+#include "GeoLatticeFiltersModule.h"
+#include "vtkUnstructuredGridAlgorithm.h"
+
+class GEOLATTICEFILTERS_EXPORT vtkGLTetrahedralizeSurface : public vtkUnstructuredGridAlgorithm
+{
+public:
+  static vtkGLTetrahedralizeSurface* New();
+  vtkTypeMacro(vtkGLTetrahedralizeSurface, vtkUnstructuredGridAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  // The setters do not clamp: an out-of-domain value is reported by RequestData (a negative
+  // length is more likely a mistake than a request for "automatic"), like vtkGLPlaceOnPlatform.
+
+  ///@{
+  /// Target edge length (mm, default 0 = automatic from the enclosed volume and
+  /// TargetTetCount; must be >= 0).
+  vtkSetMacro(TargetEdgeLength, double);
+  vtkGetMacro(TargetEdgeLength, double);
+  ///@}
+
+  ///@{
+  /// Tet count aimed at when TargetEdgeLength is 0 (default 75000, must be in [1000, 5000000]).
+  vtkSetMacro(TargetTetCount, int);
+  vtkGetMacro(TargetTetCount, int);
+  ///@}
+
+  ///@{
+  /// Bound on circumradius / shortest edge of the tets, TetGen -q (default 1.414, must be in
+  /// [1.1, 10]).
+  vtkSetMacro(RadiusEdgeRatio, double);
+  vtkGetMacro(RadiusEdgeRatio, double);
+  ///@}
+
+protected:
+  vtkGLTetrahedralizeSurface() = default;
+  ~vtkGLTetrahedralizeSurface() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double TargetEdgeLength = 0.0;
+  int TargetTetCount = 75000;
+  double RadiusEdgeRatio = 1.414;
+
+private:
+  vtkGLTetrahedralizeSurface(const vtkGLTetrahedralizeSurface&) = delete;
+  void operator=(const vtkGLTetrahedralizeSurface&) = delete;
+};
+
+#endif

@@ -1,0 +1,117 @@
+"""The geolattice CLI on bad input: each case must exit non-zero with exactly one line on stderr
+that names the problem, and leave no partial or temporary file in the output directory."""
+import os
+import subprocess
+import sys
+import tempfile
+import unittest
+
+CLI = os.environ["GEOLATTICE_CLI"]
+TESTDATA = os.environ["GEOLATTICE_TESTDATA"]
+
+
+def write(path, text):
+    with open(path, "w") as f:
+        f.write(text)
+    return path
+
+
+CUBE_OBJ = """v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1
+f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8
+"""
+
+
+class CliErrorTest(unittest.TestCase):
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp(prefix="geolattice-cli-")
+        self.out = os.path.join(self.tmp, "out")
+
+    def run_cli(self, *args):
+        return subprocess.run([CLI, "run", *args], capture_output=True, text=True, timeout=300)
+
+    def expect_error(self, args, *words, out=None):
+        result = self.run_cli(*args, "-o", out or self.out)
+        self.assertNotEqual(result.returncode, 0, result.stdout)
+        lines = [l for l in result.stderr.splitlines() if l.strip()]
+        self.assertEqual(len(lines), 1, "stderr must be one line, got: %r" % result.stderr)
+        for w in words:
+            self.assertIn(w, lines[0])
+        if os.path.isdir(self.out):
+            leftovers = [n for n in os.listdir(self.out) if n.startswith(".") or n.endswith(".tmp")]
+            self.assertEqual(leftovers, [], "temporary files left behind")
+        return lines[0]
+
+    # Input files
+    def test_missing_file(self):
+        self.expect_error([os.path.join(self.tmp, "nope.stl")], "file not found")
+
+    def test_unknown_extension(self):
+        self.expect_error([write(os.path.join(self.tmp, "part.xyz"), "1 2 3\n")], "extension")
+
+    def test_empty_mesh(self):
+        self.expect_error([write(os.path.join(self.tmp, "empty.obj"), "")], "empty")
+
+    def test_open_surface(self):
+        open_box = "\n".join(CUBE_OBJ.splitlines()[:-2]) + "\n"  # drop two triangles
+        self.expect_error([write(os.path.join(self.tmp, "open.obj"), open_box)], "open surface")
+
+    def test_non_manifold_surface(self):
+        # The cube plus a fin: a third triangle on the edge (1,2).
+        fin = CUBE_OBJ + "v 0.5 -1 0\nf 1 2 9\nf 2 1 9\n"
+        self.expect_error([write(os.path.join(self.tmp, "fin.obj"), fin)], "non-manifold")
+
+    def test_self_intersecting_surface(self):
+        second = "".join("v %g %g %g\n" % (x + 0.5, y + 0.5, z + 0.5) for x, y, z in
+                         [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)])
+        faces = "".join("f %d %d %d\n" % tuple(int(i) + 8 for i in line.split()[1:])
+                        for line in CUBE_OBJ.splitlines() if line.startswith("f"))
+        self.expect_error([write(os.path.join(self.tmp, "two.obj"), CUBE_OBJ + second + faces)], "self-intersecting")
+
+    def test_inverted_tet(self):
+        tet = "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 2 1 3\n"
+        self.expect_error([write(os.path.join(self.tmp, "inverted.tet"), tet)], "inverted")
+
+    def test_zero_volume_tet(self):
+        tet = "5 vertices\n2 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 0\n4 0 1 2 3\n4 0 1 4 2\n"
+        self.expect_error([write(os.path.join(self.tmp, "flat.tet"), tet)], "zero-volume")
+
+    # Parameters
+    def test_empty_source_set(self):
+        # A tilted tet: no boundary face faces straight down.
+        tet = "4 vertices\n1 tets\n0 0 0\n1 0 0.3\n0 1 0.2\n0.2 0.2 1\n4 0 1 2 3\n"
+        self.expect_error([write(os.path.join(self.tmp, "tilted.tet"), tet), "--base", "faces", "--base-angle", "0.5"],
+                          "empty source set")
+
+    def test_negative_edge_length(self):
+        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--edge-length", "-1"], "edge length")
+
+    def test_zero_time_factor(self):
+        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--time-factor", "0"],
+                          "time factor")
+
+    def test_zero_layer_interval(self):
+        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--layer-interval", "0"],
+                          "interval")
+
+    def test_bad_option_value(self):
+        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--scale", "abc"], "--scale")
+
+    def test_unwritable_output_directory(self):
+        blocker = write(os.path.join(self.tmp, "a-file"), "x")
+        self.expect_error([os.path.join(TESTDATA, "cube.obj")], "output directory",
+                          out=os.path.join(blocker, "sub"))
+
+    def test_failure_keeps_earlier_results(self):
+        # A good run, then a failing one into the same directory: the earlier files stay intact.
+        good = self.run_cli(os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--until", "gdf", "-o", self.out)
+        self.assertEqual(good.returncode, 0, good.stderr)
+        before = {n: os.path.getsize(os.path.join(self.out, n)) for n in os.listdir(self.out)}
+        self.assertEqual(sorted(before), ["fields.vtu", "report.json", "tets.vtu"])
+        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--time-factor", "0"], "time factor")
+        after = {n: os.path.getsize(os.path.join(self.out, n)) for n in os.listdir(self.out)}
+        self.assertEqual(after["fields.vtu"], before["fields.vtu"])
+
+
+if __name__ == "__main__":
+    result = unittest.main(exit=False, verbosity=2).result
+    sys.exit(0 if result.wasSuccessful() else 1)

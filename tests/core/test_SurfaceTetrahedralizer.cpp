@@ -1,0 +1,367 @@
+#include "common/Error.h"
+#include "io/MeshFileIO.h"
+#include "mesh/AnalyticShapes.h"
+#include "mesh/SurfaceCheck.h"
+#include "mesh/TetMeshCheck.h"
+#include "mesh/TetMeshTopology.h"
+#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetGenRunner.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+using namespace geolattice;
+
+namespace {
+
+template <typename F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const GeoLatticeError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TriangleSurface append(TriangleSurface a, const TriangleSurface& b, const Eigen::Matrix3d& rotation,
+                       const Vec3& shift, bool flip) {
+  const int offset = static_cast<int>(a.points.size());
+  for (const Vec3& p : b.points) {
+    a.points.push_back(rotation * p + shift);
+  }
+  for (auto t : b.triangles) {
+    if (flip) {
+      std::swap(t[1], t[2]);
+    }
+    a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  }
+  return a;
+}
+
+std::string testModel(const std::string& name) {
+  for (const std::string& dir : {std::string(GEOLATTICE_TESTDATA), std::string("/work/shared/testdata")}) {
+    if (std::filesystem::exists(dir + "/" + name)) {
+      return dir + "/" + name;
+    }
+  }
+  return "";
+}
+
+TetrahedralizeOptions edge(double length) {
+  TetrahedralizeOptions o;
+  o.targetEdgeLength = length;
+  return o;
+}
+
+} // namespace
+
+TEST(SurfaceTetrahedralizer, BoxAt1p5mmFillsTheBoxExactly) {
+  const Vec3 size(40, 40, 60);
+  const TetrahedralizeResult r = tetrahedralizeSurface(boxSurface(size, 100.0), edge(1.5));
+  std::printf("[ box 40x40x60 @ 1.5 mm ] %d tets, %zu points, mean edge %.3f mm, %.2f s\n", r.tetCount,
+              r.mesh.points.size(), r.meanEdgeLength, r.seconds);
+  EXPECT_EQ(r.attempts, 1);
+  EXPECT_DOUBLE_EQ(r.targetEdgeLength, 1.5);
+  EXPECT_NEAR(r.maxTetVolume, 1.5 * 1.5 * 1.5 / (6 * std::sqrt(2.0)), 1e-12);
+  EXPECT_EQ(r.tetCount, static_cast<int>(r.mesh.tets.size()));
+  EXPECT_GT(r.tetCount, 96000.0 / r.maxTetVolume); // the volume bound holds on every tet
+  EXPECT_NEAR(r.meshVolume, 96000.0, 1e-6 * 96000.0);
+  EXPECT_NEAR(r.enclosedVolume, 96000.0, 1e-9 * 96000.0);
+  EXPECT_GT(r.meanEdgeLength, 0.7 * 1.5);
+  EXPECT_LT(r.meanEdgeLength, 1.2 * 1.5);
+  double total = 0.0;
+  int nonPositive = 0;
+  for (const auto& t : r.mesh.tets) {
+    const double v = signedTetVolume(r.mesh.points[t[0]], r.mesh.points[t[1]], r.mesh.points[t[2]], r.mesh.points[t[3]]);
+    nonPositive += v > 0 ? 0 : 1;
+    total += v;
+  }
+  EXPECT_EQ(nonPositive, 0);
+  EXPECT_NEAR(total, 96000.0, 1e-6 * 96000.0);
+  EXPECT_TRUE(checkTetMesh(r.mesh).isValid());
+
+  // The boundary is the box: every boundary vertex on a box face, each boundary triangle in
+  // one face plane with the outward axis normal, total area 2(ab + bc + ca), closed.
+  TetMeshTopology topo(r.mesh);
+  EXPECT_EQ(topo.nonManifoldFaceCount(), 0);
+  double area = 0.0;
+  int offFace = 0, wrongNormal = 0;
+  for (const BoundaryFace& f : topo.boundaryFaces()) {
+    const Vec3& a = r.mesh.points[f.vertices[0]];
+    const Vec3 n = (r.mesh.points[f.vertices[1]] - a).cross(r.mesh.points[f.vertices[2]] - a);
+    area += 0.5 * n.norm();
+    int axis;
+    n.cwiseAbs().maxCoeff(&axis);
+    const double side = n[axis] > 0 ? size[axis] : 0.0;
+    for (int v : f.vertices) {
+      offFace += std::abs(r.mesh.points[v][axis] - side) < 1e-9 ? 0 : 1;
+    }
+    wrongNormal += std::abs(std::abs(n[axis]) - n.norm()) < 1e-9 * n.norm() ? 0 : 1;
+  }
+  EXPECT_EQ(offFace, 0);
+  EXPECT_EQ(wrongNormal, 0);
+  EXPECT_NEAR(area, 2 * (40.0 * 40 + 40 * 60 + 40 * 60), 1e-6);
+  const TriangleSurface boundary = boundarySurface(r.mesh, topo);
+  const SurfaceCheckReport bc = checkSurface(boundary);
+  EXPECT_EQ(bc.boundaryEdges, 0);
+  EXPECT_EQ(bc.nonManifoldEdges, 0);
+  EXPECT_NEAR(bc.signedVolume, 96000.0, 1e-6 * 96000.0);
+}
+
+TEST(SurfaceTetrahedralizer, AutomaticEdgeLengthAimsAt75kTetsOnABox) {
+  const TetrahedralizeResult r = tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0));
+  std::printf("[ box 40x40x60 auto ] edge %.3f mm, %d tets, %d TetGen runs, %.2f s\n", r.targetEdgeLength,
+              r.tetCount, r.attempts, r.seconds);
+  EXPECT_GE(r.tetCount, 60000);
+  EXPECT_LE(r.tetCount, 94000);
+  EXPECT_LE(r.attempts, kMaxAutoAttempts);
+  EXPECT_NEAR(r.meshVolume, 96000.0, 1e-6 * 96000.0);
+}
+
+TEST(SurfaceTetrahedralizer, AutomaticEdgeLengthOnTheBunnyAt100mm) {
+  const std::string path = testModel("bunny.obj");
+  ASSERT_FALSE(path.empty()) << "bunny.obj not found in " << GEOLATTICE_TESTDATA;
+  TriangleSurface bunny = readObj(path);
+  Eigen::AlignedBox3d box;
+  for (const Vec3& p : bunny.points) {
+    box.extend(p);
+  }
+  const double scale = 100.0 / box.sizes().maxCoeff();
+  for (Vec3& p : bunny.points) {
+    p *= scale;
+  }
+  const double enclosed = checkSurface(bunny).signedVolume;
+  const TetrahedralizeResult r = tetrahedralizeSurface(bunny);
+  std::printf("[ bunny 100 mm auto ] edge %.3f mm, %d tets, mean edge %.3f mm, %d TetGen runs, %.2f s\n",
+              r.targetEdgeLength, r.tetCount, r.meanEdgeLength, r.attempts, r.seconds);
+  EXPECT_GE(r.tetCount, 50000);
+  EXPECT_LE(r.tetCount, 100000);
+  EXPECT_NEAR(r.meshVolume, enclosed, 1e-6 * enclosed);
+  EXPECT_TRUE(checkTetMesh(r.mesh).isValid());
+}
+
+TEST(SurfaceTetrahedralizer, AutomaticTargetTetCountIsHonoured) {
+  TetrahedralizeOptions o;
+  o.autoTargetTets = 5000;
+  const TetrahedralizeResult r = tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0), o);
+  EXPECT_GE(r.tetCount, 4000);
+  EXPECT_LE(r.tetCount, 6250);
+  // A surface-dominated case (1280-triangle sphere, count jumps near its 3 mm triangle size):
+  // the search still ends in the right range, at most kMaxAutoAttempts runs.
+  const TetrahedralizeResult s = tetrahedralizeSurface(sphereSurface(Vec3(1, 2, 3), 20.0, 3), o);
+  EXPECT_LE(s.attempts, kMaxAutoAttempts);
+  EXPECT_GE(s.tetCount, 2500);
+  EXPECT_LE(s.tetCount, 10000);
+}
+
+TEST(SurfaceTetrahedralizer, SphereMeshHasThePolyhedronVolume) {
+  const TriangleSurface sphere = sphereSurface(Vec3(-5, 0, 7), 10.0, 3);
+  const double enclosed = checkSurface(sphere).signedVolume;
+  const TetrahedralizeResult r = tetrahedralizeSurface(sphere, edge(2.0));
+  EXPECT_NEAR(r.meshVolume, enclosed, 1e-7 * enclosed);
+  EXPECT_EQ(r.flippedSurfaceTriangles, 0);
+  EXPECT_EQ(r.flippedTets, 0);
+  EXPECT_EQ(r.removedCavityRegions, 0);
+}
+
+TEST(SurfaceTetrahedralizer, InwardSurfaceIsFlippedFirst) {
+  TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
+  for (auto& t : box.triangles) {
+    std::swap(t[1], t[2]);
+  }
+  const TetrahedralizeResult r = tetrahedralizeSurface(box, edge(2.0));
+  EXPECT_EQ(r.flippedSurfaceTriangles, static_cast<int>(box.triangles.size()));
+  EXPECT_NEAR(r.meshVolume, 1000.0, 1e-6 * 1000.0);
+}
+
+TEST(SurfaceTetrahedralizer, CavityOfAHollowPartStaysEmpty) {
+  // Outer box 10^3 with an inward-oriented inner box 4^3: a hollow part of volume 936.
+  const TriangleSurface hollow = append(boxSurface(Vec3(10, 10, 10), 20.0), boxSurface(Vec3(4, 4, 4), 20.0),
+                                        Eigen::Matrix3d::Identity(), Vec3(3, 3, 3), true);
+  const TetrahedralizeResult r = tetrahedralizeSurface(hollow, edge(1.0));
+  EXPECT_EQ(r.removedCavityRegions, 1);
+  EXPECT_NEAR(r.meshVolume, 936.0, 1e-6 * 936.0);
+  for (const auto& t : r.mesh.tets) {
+    Vec3 c = Vec3::Zero();
+    for (int v : t) {
+      c += r.mesh.points[v] / 4.0;
+    }
+    EXPECT_FALSE((c.array() > 3.0).all() && (c.array() < 7.0).all()) << "tet inside the cavity";
+  }
+}
+
+TEST(SurfaceTetrahedralizer, DisjointPartsAreAllMeshed) {
+  const TriangleSurface two = append(boxSurface(Vec3(10, 10, 10), 20.0), boxSurface(Vec3(10, 10, 10), 20.0),
+                                     Eigen::Matrix3d::Identity(), Vec3(20, 0, 0), false);
+  const TetrahedralizeResult r = tetrahedralizeSurface(two, edge(1.5));
+  EXPECT_NEAR(r.meshVolume, 2000.0, 1e-6 * 2000.0);
+}
+
+TEST(SurfaceTetrahedralizer, OverlappingBoxesAreSelfIntersecting) {
+  const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 1.5);
+  // Two closed boxes (each valid on its own) that overlap: shifted and rotated copy.
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const TriangleSurface both = append(box, box, rotation, Vec3(3.3, 4.1, 2.7), false);
+  ASSERT_TRUE(checkSurface(both).isClosedManifold());
+  const std::string message = errorOf([&] { tetrahedralizeSurface(both, edge(1.0)); });
+  EXPECT_TRUE(contains(message, "self-intersecting surface: TetGen found")) << message;
+  EXPECT_TRUE(contains(message, "intersecting facets")) << message;
+  // The same with a plain shift (facets crossing at right angles).
+  const TriangleSurface shifted = append(box, box, Eigen::Matrix3d::Identity(), Vec3(5.3, 5.1, 4.9), false);
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(shifted, edge(1.0)); }), "self-intersecting surface"));
+}
+
+TEST(SurfaceTetrahedralizer, GridAlignedOverlapMeshesTheUnion) {
+  // Overlapping boxes whose vertices and facet lines coincide: TetGen's intersection test
+  // does not flag them; it meshes the union (1875 mm^3) with the common part (winding number
+  // 2) as a region of its own, which is a valid mesh of the solid {winding >= 1}.
+  const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 2.0);
+  const TriangleSurface both = append(box, box, Eigen::Matrix3d::Identity(), Vec3(5, 5, 5), false);
+  const TetrahedralizeResult r = tetrahedralizeSurface(both, edge(1.0));
+  EXPECT_NEAR(r.meshVolume, 1875.0, 1e-6 * 1875.0);
+  EXPECT_NEAR(r.enclosedVolume, 2000.0, 1e-9 * 2000.0);
+  EXPECT_TRUE(checkTetMesh(r.mesh).isValid());
+}
+
+TEST(SurfaceTetrahedralizer, EmbeddedOutwardShellIsAnInterface) {
+  // An outward inner sphere inside an outer one: both sides are meshed and the inner sphere's
+  // vertices are mesh vertices (the GDF tests use this to make a source region).
+  TriangleSurface surface = sphereSurface(Vec3::Zero(), 20, 2);
+  const TriangleSurface inner = sphereSurface(Vec3::Zero(), 5, 1);
+  surface = append(surface, inner, Eigen::Matrix3d::Identity(), Vec3::Zero(), false);
+  const double outerVolume = checkSurface(sphereSurface(Vec3::Zero(), 20, 2)).signedVolume;
+  const TetrahedralizeResult r = tetrahedralizeSurface(surface, edge(3.0));
+  EXPECT_EQ(r.removedCavityRegions, 0);
+  EXPECT_NEAR(r.meshVolume, outerVolume, 1e-6 * outerVolume);
+  int onInner = 0;
+  for (const Vec3& p : r.mesh.points) {
+    onInner += std::abs(p.norm() - 5.0) < 1e-9 ? 1 : 0;
+  }
+  EXPECT_GE(onInner, static_cast<int>(inner.points.size()));
+}
+
+TEST(SurfaceTetrahedralizer, InwardShellOutsideEverythingIsRejected) {
+  // Two disjoint boxes, the smaller one inward: total volume positive, but the small box's
+  // inside has winding number -1.
+  const TriangleSurface both = append(boxSurface(Vec3(10, 10, 10), 20.0), boxSurface(Vec3(2, 2, 2), 20.0),
+                                      Eigen::Matrix3d::Identity(), Vec3(20, 0, 0), true);
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(both, edge(1.0)); }),
+                       "inconsistently oriented shells: a region has winding number -1"));
+}
+
+TEST(SurfaceTetrahedralizer, UnusedInputPointsDoNotBecomeMeshVertices) {
+  TriangleSurface box = boxSurface(Vec3(10, 10, 10), 20.0);
+  const Vec3 stray(5.123, 4.321, 6.789);
+  box.points.push_back(stray);
+  const TetrahedralizeResult r = tetrahedralizeSurface(box, edge(5.0));
+  for (const Vec3& p : r.mesh.points) {
+    EXPECT_GT((p - stray).norm(), 1e-6);
+  }
+}
+
+TEST(SurfaceTetrahedralizer, OpenSurfaceIsRejected) {
+  TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
+  box.triangles.erase(box.triangles.begin() + 4);
+  EXPECT_EQ(errorOf([&] { tetrahedralizeSurface(box, edge(2.0)); }),
+            "open surface: 3 boundary edges (the surface must be closed / watertight)");
+}
+
+TEST(SurfaceTetrahedralizer, NonManifoldSurfaceIsRejected) {
+  // Two unit boxes sharing the edge x = 1, y = 1 (vertices welded by hand).
+  const TriangleSurface a = boxSurface(Vec3(1, 1, 1), 10.0);
+  TriangleSurface both = append(a, a, Eigen::Matrix3d::Identity(), Vec3(1, 1, 0), false);
+  // Weld: the second box's corners (0,0,z) land on the first box's corners (1,1,z).
+  for (auto& t : both.triangles) {
+    for (int& v : t) {
+      for (int j = 0; j < 8 && v >= 8; ++j) {
+        if ((both.points[v] - both.points[j]).norm() < 1e-12) {
+          v = j;
+        }
+      }
+    }
+  }
+  const std::string message = errorOf([&] { tetrahedralizeSurface(both, edge(0.5)); });
+  EXPECT_EQ(message, "non-manifold surface: 1 edges shared by more than two triangles");
+}
+
+TEST(SurfaceTetrahedralizer, EmptySurfaceIsRejected) {
+  EXPECT_EQ(errorOf([] { tetrahedralizeSurface(TriangleSurface{}); }), "empty surface: 0 points, 0 triangles");
+}
+
+TEST(SurfaceTetrahedralizer, BadEdgeLengthIsRejected) {
+  const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, edge(-1.0)); }),
+                       "target edge length must be >= 0 mm (0 = automatic), got -1"));
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, edge(NAN)); }), "target edge length must be >= 0"));
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, edge(INFINITY)); }), "target edge length"));
+  // 1000 mm^3 at 1e-3 mm would be billions of tets: refused before TetGen runs.
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, edge(1e-3)); }), "is too small for a solid of"));
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
+}
+
+TEST(SurfaceTetrahedralizer, RadiusEdgeRatioOutOfRangeIsRejected) {
+  const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
+  for (double ratio : {1.0, 0.5, 1.09, 10.5, -2.0, double(NAN)}) {
+    TetrahedralizeOptions o = edge(2.0);
+    o.radiusEdgeRatio = ratio;
+    EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, o); }), "radius-edge ratio must be in [1.1, 10]"))
+        << ratio;
+  }
+  TetrahedralizeOptions ok = edge(2.0);
+  ok.radiusEdgeRatio = kMinRadiusEdgeRatio;
+  EXPECT_NO_THROW(tetrahedralizeSurface(box, ok));
+}
+
+TEST(SurfaceTetrahedralizer, AutoTargetOutOfRangeIsRejected) {
+  const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
+  TetrahedralizeOptions o;
+  o.autoTargetTets = 10;
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, o); }), "automatic target tet count must be in"));
+  EXPECT_THROW(automaticEdgeLength(-1.0), GeoLatticeError);
+  EXPECT_THROW(automaticEdgeLength(1000.0, 0), GeoLatticeError);
+}
+
+TEST(SurfaceTetrahedralizer, AbortCallbackStopsTetGen) {
+  TetrahedralizeOptions o = edge(0.6); // ~1.5M tets, seconds of TetGen: long enough to interrupt
+  o.shouldAbort = [] { return true; };
+  const auto start = std::chrono::steady_clock::now();
+  EXPECT_EQ(errorOf([&] { tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0), o); }),
+            "tetrahedralization aborted");
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.0);
+}
+
+TEST(TetGenRunner, FlatInputCrashesTetGenButNotTheCaller) {
+  // TetGen 1.5.0 fails an assertion (abort) on a flat point set; the child process dies and
+  // the caller gets a message.
+  TriangleSurface flat;
+  flat.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
+  flat.triangles = {{0, 1, 2}, {0, 2, 1}};
+  const std::string message = errorOf([&] { runTetGen(flat, "pQ"); });
+  EXPECT_TRUE(contains(message, "TetGen crashed with signal")) << message;
+  EXPECT_TRUE(contains(errorOf([&] { runTetGen(flat, "Q"); }), "lack 'p'"));
+}
+
+TEST(TetGenRunner, ReturnsRegionsWithSwitchA) {
+  const TetGenOutput out = runTetGen(boxSurface(Vec3(1, 1, 1), 10.0), "pAQ");
+  EXPECT_EQ(out.mesh.points.size(), 8u);
+  EXPECT_GE(out.mesh.tets.size(), 5u);
+  EXPECT_EQ(out.regions.size(), out.mesh.tets.size());
+  EXPECT_TRUE(runTetGen(boxSurface(Vec3(1, 1, 1), 10.0), "pQ").regions.empty());
+}
+
+TEST(TetGenRunner, ErrorCodesHaveMessages) {
+  EXPECT_EQ(tetgenErrorMessage(3), "self-intersecting surface: TetGen found intersecting facets");
+  EXPECT_TRUE(contains(tetgenErrorMessage(1), "out of memory"));
+  EXPECT_TRUE(contains(tetgenErrorMessage(4), "very small input feature"));
+  EXPECT_TRUE(contains(tetgenErrorMessage(5), "very close"));
+  EXPECT_TRUE(contains(tetgenErrorMessage(10), "input error"));
+  EXPECT_TRUE(contains(tetgenErrorMessage(77), "error code 77"));
+}

@@ -1,0 +1,252 @@
+#include "vtkGLPlaceOnPlatform.h"
+
+#include "GLTestErrorObserver.h"
+#include "vtkGLArrayNames.h"
+#include "vtkGLMeshReader.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace
+{
+const std::string kData = GEOLATTICE_TESTDATA;
+
+vtkSmartPointer<vtkPointSet> readModel(const std::string& name)
+{
+  vtkNew<vtkGLMeshReader> reader;
+  reader->SetFileName((kData + "/" + name).c_str());
+  reader->Update();
+  return vtkPointSet::SafeDownCast(reader->GetOutputDataObject(0));
+}
+
+/// Bounds of all points.
+std::array<double, 6> pointBounds(vtkPointSet* ds)
+{
+  std::array<double, 6> b;
+  ds->GetPoints()->GetBounds(b.data());
+  return b;
+}
+
+double fieldValue(vtkPointSet* ds, const char* name, int i)
+{
+  vtkDataArray* a = ds->GetFieldData()->GetArray(name);
+  EXPECT_NE(a, nullptr) << name;
+  return a ? a->GetComponent(i, 0) : std::numeric_limits<double>::quiet_NaN();
+}
+
+struct Placed
+{
+  vtkSmartPointer<vtkPointSet> Output;
+  vtkSmartPointer<GLTestErrorObserver> Errors;
+};
+
+Placed place(vtkPointSet* input, double scale, double fitSize, bool centerXY)
+{
+  vtkNew<vtkGLPlaceOnPlatform> filter;
+  Placed p;
+  p.Errors = vtkSmartPointer<GLTestErrorObserver>::New();
+  p.Errors->Observe(filter);
+  filter->SetInputData(input);
+  filter->SetScale(scale);
+  filter->SetFitSize(fitSize);
+  filter->SetCenterXY(centerXY);
+  filter->Update();
+  p.Output = vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0));
+  return p;
+}
+} // namespace
+
+TEST(PlaceOnPlatform, DefaultsCentreAndSitOnPlatform)
+{
+  vtkNew<vtkGLPlaceOnPlatform> defaults;
+  EXPECT_EQ(defaults->GetScale(), 1.0);
+  EXPECT_EQ(defaults->GetFitSize(), 0.0);
+  EXPECT_TRUE(defaults->GetCenterXY());
+
+  vtkSmartPointer<vtkPointSet> bunny = readModel("bunny.obj");
+  ASSERT_TRUE(bunny && bunny->GetNumberOfPoints() > 0);
+  const auto in = pointBounds(bunny);
+  ASSERT_GT(std::abs(in[4]), 1e-3) << "the test needs a model not already on z = 0";
+  Placed p = place(bunny, 1.0, 0.0, true);
+  EXPECT_FALSE(p.Errors->HasError()) << p.Errors->Errors();
+  ASSERT_TRUE(vtkPolyData::SafeDownCast(p.Output));
+  EXPECT_EQ(p.Output->GetNumberOfPoints(), bunny->GetNumberOfPoints());
+  EXPECT_EQ(p.Output->GetNumberOfCells(), bunny->GetNumberOfCells());
+  const auto out = pointBounds(p.Output);
+  EXPECT_EQ(out[4], 0.0); // exactly: the base sits on the platform
+  EXPECT_NEAR(out[0] + out[1], 0.0, 1e-12);
+  EXPECT_NEAR(out[2] + out[3], 0.0, 1e-12);
+  for (int k = 0; k < 3; ++k)
+  {
+    EXPECT_NEAR(out[2 * k + 1] - out[2 * k], in[2 * k + 1] - in[2 * k], 1e-12) << "axis " << k;
+  }
+  EXPECT_EQ(fieldValue(p.Output, geolattice::arrays::PlacementScale, 0), 1.0);
+  EXPECT_EQ(p.Output->GetFieldData()->GetArray(geolattice::arrays::PlacementTranslation)->GetNumberOfTuples(), 3);
+  // Every point follows p_out = s p_in + t with the recorded s and t.
+  const double s = fieldValue(p.Output, geolattice::arrays::PlacementScale, 0);
+  double t[3];
+  for (int k = 0; k < 3; ++k)
+  {
+    t[k] = fieldValue(p.Output, geolattice::arrays::PlacementTranslation, k);
+  }
+  EXPECT_NEAR(t[2], -in[4], 1e-12);
+  for (vtkIdType i = 0; i < bunny->GetNumberOfPoints(); i += 97)
+  {
+    double a[3], b[3];
+    bunny->GetPoint(i, a);
+    p.Output->GetPoint(i, b);
+    for (int k = 0; k < 3; ++k)
+    {
+      ASSERT_NEAR(b[k], s * a[k] + t[k], 1e-12) << "point " << i;
+    }
+  }
+}
+
+TEST(PlaceOnPlatform, FitSizeGivesLargestSideOnTetMesh)
+{
+  vtkSmartPointer<vtkPointSet> ring = readModel("ring.tet");
+  ASSERT_TRUE(vtkUnstructuredGrid::SafeDownCast(ring));
+  const auto in = pointBounds(ring);
+  const double largestIn = std::max({ in[1] - in[0], in[3] - in[2], in[5] - in[4] });
+  Placed p = place(ring, /*scale ignored*/ 7.0, 50.0, true);
+  EXPECT_FALSE(p.Errors->HasError()) << p.Errors->Errors();
+  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(p.Output);
+  ASSERT_NE(grid, nullptr);
+  EXPECT_EQ(grid->GetNumberOfCells(), 40064);
+  const auto out = pointBounds(grid);
+  const double largestOut = std::max({ out[1] - out[0], out[3] - out[2], out[5] - out[4] });
+  EXPECT_NEAR(largestOut, 50.0, 1e-12);
+  EXPECT_EQ(out[4], 0.0);
+  EXPECT_DOUBLE_EQ(fieldValue(grid, geolattice::arrays::PlacementScale, 0), 50.0 / largestIn);
+}
+
+TEST(PlaceOnPlatform, ScaleWithoutCentringKeepsXY)
+{
+  vtkSmartPointer<vtkPointSet> knight = readModel("decimated-knight.off");
+  ASSERT_TRUE(knight);
+  const auto in = pointBounds(knight);
+  Placed p = place(knight, 10.0, 0.0, false);
+  EXPECT_FALSE(p.Errors->HasError()) << p.Errors->Errors();
+  const auto out = pointBounds(p.Output);
+  EXPECT_NEAR(out[0], 10.0 * in[0], 1e-12);
+  EXPECT_NEAR(out[3], 10.0 * in[3], 1e-12);
+  EXPECT_NEAR(out[5], 10.0 * (in[5] - in[4]), 1e-12);
+  EXPECT_EQ(out[4], 0.0);
+  EXPECT_EQ(fieldValue(p.Output, geolattice::arrays::PlacementTranslation, 0), 0.0);
+  EXPECT_EQ(fieldValue(p.Output, geolattice::arrays::PlacementTranslation, 1), 0.0);
+}
+
+TEST(PlaceOnPlatform, ArraysPassAndUnusedPointsCount)
+{
+  // Two triangles plus one point no cell uses, lowest of all: it must land on z = 0 too.
+  vtkNew<vtkPolyData> poly;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->InsertNextPoint(0.1, 0.2, 1.3);
+  points->InsertNextPoint(1.1, 0.2, 1.3);
+  points->InsertNextPoint(0.1, 1.2, 1.7);
+  points->InsertNextPoint(5.0, 5.0, 0.7); // unused
+  poly->SetPoints(points);
+  vtkNew<vtkCellArray> tris;
+  const vtkIdType tri[3] = { 0, 1, 2 };
+  tris->InsertNextCell(3, tri);
+  poly->SetPolys(tris);
+  vtkNew<vtkDoubleArray> tag;
+  tag->SetName("Tag");
+  for (int i = 0; i < 4; ++i)
+  {
+    tag->InsertNextValue(i * 2.0);
+  }
+  poly->GetPointData()->AddArray(tag);
+
+  Placed p = place(poly, 2.0, 0.0, true);
+  EXPECT_FALSE(p.Errors->HasError()) << p.Errors->Errors();
+  ASSERT_EQ(p.Output->GetNumberOfPoints(), 4);
+  EXPECT_EQ(p.Output->GetPoints()->GetDataType(), VTK_DOUBLE);
+  double q[3];
+  p.Output->GetPoint(3, q);
+  EXPECT_EQ(q[2], 0.0);
+  vtkDataArray* passed = p.Output->GetPointData()->GetArray("Tag");
+  ASSERT_NE(passed, nullptr);
+  EXPECT_EQ(passed->GetComponent(3, 0), 6.0);
+}
+
+TEST(PlaceOnPlatform, SinglePointWithScaleIsPlaced)
+{
+  vtkNew<vtkPolyData> poly;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(3, 4, 5);
+  poly->SetPoints(points);
+  Placed p = place(poly, 1.0, 0.0, true);
+  EXPECT_FALSE(p.Errors->HasError()) << p.Errors->Errors();
+  double q[3];
+  p.Output->GetPoint(0, q);
+  EXPECT_EQ(q[0], 0.0);
+  EXPECT_EQ(q[1], 0.0);
+  EXPECT_EQ(q[2], 0.0);
+}
+
+// ---------------------------------------------------------------- bad parameters
+
+TEST(PlaceOnPlatform, BadParametersGiveErrorAndEmptyOutput)
+{
+  vtkSmartPointer<vtkPointSet> cube = readModel("cube.obj");
+  ASSERT_TRUE(cube && cube->GetNumberOfPoints() == 8);
+  struct BadCase
+  {
+    double Scale;
+    double FitSize;
+    const char* Message;
+  };
+  const BadCase cases[] = { { 0.0, 0.0, "Scale must be > 0" }, { -2.0, 0.0, "Scale must be > 0" },
+    { std::nan(""), 0.0, "Scale must be > 0" }, { 1.0, -1.0, "FitSize must be >= 0" },
+    { -1.0, 10.0, "Scale must be > 0" } };
+  for (const BadCase& c : cases)
+  {
+    SCOPED_TRACE(c.Message);
+    Placed p = place(cube, c.Scale, c.FitSize, true);
+    EXPECT_EQ(p.Errors->GetErrorCount(), 1);
+    EXPECT_NE(p.Errors->Errors().find(c.Message), std::string::npos) << p.Errors->Errors();
+    ASSERT_NE(p.Output, nullptr);
+    EXPECT_EQ(p.Output->GetNumberOfPoints(), 0);
+    EXPECT_EQ(p.Output->GetNumberOfCells(), 0);
+  }
+}
+
+TEST(PlaceOnPlatform, EmptyInput)
+{
+  vtkNew<vtkUnstructuredGrid> empty;
+  Placed p = place(empty, 1.0, 0.0, true);
+  EXPECT_NE(p.Errors->Errors().find("empty input"), std::string::npos) << p.Errors->Errors();
+  ASSERT_TRUE(vtkUnstructuredGrid::SafeDownCast(p.Output));
+  EXPECT_EQ(p.Output->GetNumberOfPoints(), 0);
+}
+
+TEST(PlaceOnPlatform, FitSizeOfDegenerateModel)
+{
+  vtkNew<vtkPolyData> poly;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(1, 1, 1);
+  points->InsertNextPoint(1, 1, 1);
+  poly->SetPoints(points);
+  Placed p = place(poly, 1.0, 10.0, true);
+  EXPECT_NE(p.Errors->Errors().find("bounding box is a single point"), std::string::npos)
+    << p.Errors->Errors();
+  EXPECT_EQ(p.Output->GetNumberOfPoints(), 0);
+}

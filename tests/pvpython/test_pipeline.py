@@ -1,0 +1,96 @@
+"""pvpython end-to-end test: load the GeoLattice plugin, run reader -> placement -> meshing ->
+geodesic fields on a test model, check array names (taken from filters/vtkGLArrayNames.h, not
+retyped) and ranges, save with the pipeline script's writer and read the file back."""
+import os
+import re
+import shutil
+import sys
+import tempfile
+import unittest
+
+SOURCE_DIR = os.environ["GEOLATTICE_SOURCE_DIR"]
+sys.path.insert(0, os.path.join(SOURCE_DIR, "pvpython"))
+
+import geolattice_pipeline as pipeline  # noqa: E402
+from paraview import simple, servermanager  # noqa: E402
+
+
+def array_names():
+    """The constants of filters/vtkGLArrayNames.h as a dict: C++ name -> array name."""
+    with open(os.path.join(SOURCE_DIR, "filters", "vtkGLArrayNames.h")) as f:
+        return dict(re.findall(r'constexpr const char\* (\w+) = "([^"]+)"', f.read()))
+
+
+NAMES = array_names()
+
+
+class PipelineTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        pipeline.load_plugin()
+        cls.out = tempfile.mkdtemp(prefix="geolattice-pvpython-")
+        model = os.path.join(SOURCE_DIR, "testdata", "bunny.obj")
+        cls.proxies = pipeline.build_pipeline(model, fit_size=40.0, edge_length=2.5)
+        cls.proxies["fields"].UpdatePipeline()
+        cls.fields = servermanager.Fetch(cls.proxies["fields"])
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.out, ignore_errors=True)
+
+    def test_fields_have_named_arrays_and_sane_ranges(self):
+        f = self.fields
+        self.assertGreater(f.GetNumberOfCells(), 1000)
+        pd, cd = f.GetPointData(), f.GetCellData()
+        for key in ("Gamma", "Alpha", "Beta", "HeatSource"):
+            self.assertIsNotNone(pd.GetArray(NAMES[key]), key)
+        for key in ("GammaGradient", "AlphaDirection", "BetaDirection"):
+            a = cd.GetArray(NAMES[key])
+            self.assertIsNotNone(a, key)
+            self.assertEqual(a.GetNumberOfComponents(), 3)
+        gamma = pd.GetArray(NAMES["Gamma"]).GetRange()
+        bounds = f.GetBounds()
+        height = bounds[5] - bounds[4]
+        self.assertEqual(gamma[0], 0.0)
+        # Geodesic distance from the base is at least the height and not much more for a bunny.
+        self.assertGreater(gamma[1], 0.95 * height)
+        self.assertLess(gamma[1], 1.6 * height)
+        for key in ("Alpha", "Beta"):
+            lo, hi = pd.GetArray(NAMES[key]).GetRange()
+            self.assertAlmostEqual(lo, 0.0, places=9)
+            self.assertGreater(hi, 10.0)
+        self.assertAlmostEqual(bounds[4], 0.0, places=9)  # base on the platform
+        self.assertAlmostEqual(max(bounds[1] - bounds[0], bounds[3] - bounds[2], height), 40.0, places=6)
+        fd = f.GetFieldData()
+        for key in ("GammaRange", "GdfTimings", "OrthogonalityDeg", "SourceCount"):
+            self.assertIsNotNone(fd.GetArray(NAMES[key]), key)
+
+    def test_layers_follow_the_count_formula(self):
+        self.proxies["layers"].UpdatePipeline()
+        layers = servermanager.Fetch(self.proxies["layers"])
+        gamma_max = self.fields.GetPointData().GetArray(NAMES["Gamma"]).GetRange()[1]
+        expected = int((gamma_max - 0.6) // 0.6) + 1
+        self.assertEqual(layers.GetFieldData().GetArray(NAMES["LayerValues"]).GetNumberOfTuples(), expected)
+        ids = layers.GetCellData().GetArray(NAMES["LayerId"]).GetRange()
+        self.assertEqual(ids, (0.0, expected - 1.0))
+        self.assertIsNotNone(layers.GetPointData().GetArray(NAMES["Normals"]))
+
+    def test_saved_file_reads_back(self):
+        path = os.path.join(self.out, "fields.vtu")
+        pipeline.save_binary(self.proxies["fields"], path)
+        self.assertEqual([n for n in os.listdir(self.out) if n.startswith(".tmp")], [])
+        back = simple.XMLUnstructuredGridReader(FileName=[path])
+        back.UpdatePipeline()
+        data = servermanager.Fetch(back)
+        self.assertEqual(data.GetNumberOfCells(), self.fields.GetNumberOfCells())
+        self.assertIsNotNone(data.GetPointData().GetArray(NAMES["Gamma"]))
+
+    def test_bad_parameter_gives_empty_output(self):
+        bad = simple.GLGeodesicDistanceFields(Input=self.proxies["tets"], TimeFactor=0.0)
+        bad.UpdatePipeline()
+        self.assertEqual(servermanager.Fetch(bad).GetNumberOfCells(), 0)
+
+
+if __name__ == "__main__":
+    result = unittest.main(exit=False, verbosity=2).result
+    sys.exit(0 if result.wasSuccessful() else 1)
