@@ -9,6 +9,7 @@
 #include "vtkGLCurvedLayerSlicer.h"
 #include "vtkGLGeodesicDistanceFields.h"
 #include "vtkGLMeshReader.h"
+#include "vtkGLOverhangAnalysis.h"
 #include "vtkGLPlaceOnPlatform.h"
 #include "vtkGLTetrahedralizeSurface.h"
 
@@ -55,8 +56,9 @@ Usage:
 
 MODEL is a closed triangle surface (.stl .obj .ply .vtp .off) or a tet mesh (.vtu .tet .node
 .ele; a tet mesh skips meshing). Outputs in OUTDIR: tets.vtu (the tet mesh), fields.vtu (tets
-with Gamma, Alpha, Beta), layers.vtp (curved layers, cell array LayerId), report.json (per
-stage: seconds, counts, results). Files are written to a temporary name first, so nothing
+with Gamma, Alpha, Beta), layers.vtp (curved layers, cell array LayerId), overhang.vtp (the
+part's surface with the overhang angles of planar and curved slicing), report.json (per stage:
+seconds, counts, results). Files are written to a temporary name first, so nothing
 partial is left behind on failure.
 
 Options:
@@ -82,6 +84,7 @@ Options:
  Curved layers (iso-surfaces of Gamma):
   --layer-interval MM     γ distance between layers (nominal layer thickness)        [0.6]
   --first-layer MM        γ of the first layer                      [= --layer-interval]
+  --overhang-threshold DEG  overhang angle above which a surface needs support       [135]
  Output:
   -q, --quiet             no progress lines on stdout
 
@@ -106,6 +109,7 @@ struct Options {
   std::string solver = "cholmod";
   double layerInterval = 0.6;
   double firstLayer = -1; // < 0: equal to layerInterval
+  double overhangThreshold = 135.0;
   bool quiet = false;
 };
 
@@ -179,6 +183,7 @@ Options parseArguments(int argc, char** argv)
     else if (arg == "--solver") o.solver = value();
     else if (arg == "--layer-interval") o.layerInterval = parseNumber(arg, value());
     else if (arg == "--first-layer") o.firstLayer = parseNumber(arg, value());
+    else if (arg == "--overhang-threshold") o.overhangThreshold = parseNumber(arg, value());
     else if (arg == "-q" || arg == "--quiet") o.quiet = true;
     else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
     else if (o.model.empty()) o.model = arg;
@@ -417,6 +422,22 @@ public:
       spacing.set("mean_max", nanRange(gl::arrays::LayerSpacingMean, false));
       spacing.set("max", nanRange(gl::arrays::LayerSpacingMax, false));
       this->Write(layers, "layers.vtp");
+    }
+
+    // Overhang of the part's surface, planar (nozzle +z) against curved (nozzle ∇γ).
+    vtkNew<vtkGLOverhangAnalysis> overhang;
+    overhang->SetInputConnection(gdf->GetOutputPort());
+    overhang->SetThresholdAngle(Opt.overhangThreshold);
+    vtkDataObject* surface = this->Execute("overhang", { overhang }, overhang);
+    {
+      auto& s = report.object("overhang");
+      s.set("seconds", this->LastSeconds);
+      s.set("threshold_deg", fieldValue(surface, gl::arrays::OverhangThresholdDeg));
+      s.set("planar_fraction", fieldValue(surface, gl::arrays::OverhangPlanarFraction));
+      s.set("curved_fraction", fieldValue(surface, gl::arrays::OverhangCurvedFraction));
+      s.set("surface_area_mm2", fieldValue(surface, gl::arrays::OverhangTotalArea));
+      s.set("base_area_mm2", fieldValue(surface, gl::arrays::OverhangBaseArea));
+      this->Write(surface, "overhang.vtp");
     }
     return this->Finish(report);
   }

@@ -227,7 +227,7 @@ private:
       merged.clear();
       size_t i = 0, j = 0;
       while (i < list[0].size() || j < list[1].size()) {
-        if (j == list[1].size() || (i < list[0].size() && list[0][i].t <= list[1][j].t)) {
+        if (j == list[1].size() || (i < list[0].size() && list[0][i].t < list[1][j].t)) {
           merged.push_back(list[0][i++]);
         } else if (i == list[0].size() || list[1][j].t < list[0][i].t) {
           merged.push_back(list[1][j++]);
@@ -327,7 +327,7 @@ private:
           }
           const int nt = e.tri[0] == t ? e.tri[1] : e.tri[0];
           const int ns = e.tri[0] == t ? e.side[1] : e.side[0];
-          if (false && field(f, corner(nt, (ns + 2) % 3)) < level) {
+          if (field(f, corner(nt, (ns + 2) % 3)) < level) {
             ++g_.stats.ridgeSegments;  // emitted by both triangles: the field touches the level from below
             continue;
           }

@@ -4,9 +4,10 @@
 #include "mesh/AnalyticShapes.h"
 #include "slicer/CurvedLayerSlicer.h"
 
+#include "LayerChecks.h"
+
 #include <gtest/gtest.h>
 
-#include <map>
 
 using namespace geolattice;
 
@@ -35,24 +36,6 @@ ZField heightField(const TetMesh& mesh) {
 double triangleArea(const CurvedLayers& layers, const std::array<int, 3>& t) {
   const Vec3& a = layers.points[t[0]];
   return 0.5 * (layers.points[t[1]] - a).cross(layers.points[t[2]] - a).norm();
-}
-
-/// Every undirected edge of the layer's triangles is used at most twice, and interior edges
-/// are traversed in opposite directions (consistent orientation).
-void expectEdgeManifoldAndOriented(const CurvedLayers& layers, int layer) {
-  std::map<std::pair<int, int>, int> directed;
-  for (int k = layers.layerTriangleOffset[layer]; k < layers.layerTriangleOffset[layer + 1]; ++k) {
-    const auto& t = layers.triangles[k];
-    for (int e = 0; e < 3; ++e) {
-      ++directed[{t[e], t[(e + 1) % 3]}];
-    }
-  }
-  for (const auto& [edge, count] : directed) {
-    ASSERT_EQ(count, 1) << "directed edge used twice in layer " << layer;
-    const auto reverse = directed.find({edge.second, edge.first});
-    const int undirected = count + (reverse == directed.end() ? 0 : reverse->second);
-    ASSERT_LE(undirected, 2);
-  }
 }
 
 } // namespace
