@@ -70,7 +70,8 @@ Options:
   --no-center             keep x and y as they are (default: bounding box centred on x = y = 0)
                           The base is always moved to the platform, z = 0.
  Tetrahedral meshing (TetGen):
-  --edge-length MM        target tet edge length; 0 = automatic (~75k tets)          [0]
+  --edge-length MM        target tet edge length; 0 = automatic (see --target-tets)  [0]
+  --target-tets N         tet count the automatic edge length aims at                [75000]
   --radius-edge R         TetGen radius-edge ratio bound (quality; 1.414 = sqrt 2)   [1.414]
  Geodesic distance fields (heat method, paper Eqs. 1-5):
   --base MODE             base (heat source): lowest | faces                         [lowest]
@@ -100,6 +101,7 @@ struct Options {
   double fitSize = 0.0;
   bool center = true;
   double edgeLength = 0.0;
+  double targetTets = 75000;
   double radiusEdge = 1.414;
   std::string base = "lowest";
   double baseTolerance = 0.05;
@@ -157,6 +159,7 @@ Options parseArguments(int argc, char** argv)
     else if (arg == "--fit-size") o.fitSize = parseNumber(arg, value());
     else if (arg == "--no-center") o.center = false;
     else if (arg == "--edge-length") o.edgeLength = parseNumber(arg, value());
+    else if (arg == "--target-tets") o.targetTets = parseNumber(arg, value());
     else if (arg == "--radius-edge") o.radiusEdge = parseNumber(arg, value());
     else if (arg == "--base") o.base = value();
     else if (arg == "--base-tolerance") o.baseTolerance = parseNumber(arg, value());
@@ -332,6 +335,7 @@ public:
         tetrahedralize->SetInputConnection(place->GetOutputPort());
         tetrahedralize->SetTargetEdgeLength(Opt.edgeLength);
         tetrahedralize->SetRadiusEdgeRatio(Opt.radiusEdge);
+        tetrahedralize->SetTargetTetCount(static_cast<int>(std::min(Opt.targetTets, 2e9)));
         tets = this->Execute("mesh", { tetrahedralize }, tetrahedralize);
         tetSource = tetrahedralize;
         s.set("seconds", this->LastSeconds);

@@ -3,7 +3,7 @@
 Builds the same pipeline as the `geolattice` command-line tool from the plugin's proxies:
 
     GLMeshReader -> GLPlaceOnPlatform -> GLTetrahedralizeSurface -> GLGeodesicDistanceFields
-    -> GLCurvedLayerSlicer
+    -> GLCurvedLayerSlicer, and GLOverhangAnalysis on the fields
 
 and saves the tet mesh and the fields as VTK XML files (binary mode: ParaView 5.11 on Debian 12
 cannot read appended-mode files). Run it with pvpython (no X server needed):
@@ -48,7 +48,8 @@ def build_pipeline(model, scale=1.0, fit_size=0.0, center=True, edge_length=0.0,
                                              TimeFactor=time_factor, ReferenceVector=list(reference))
     layers = simple.GLCurvedLayerSlicer(Input=fields, LayerInterval=layer_interval,
                                         FirstLayerOffset=layer_interval if first_layer is None else first_layer)
-    return {"reader": reader, "place": place, "tets": tets, "fields": fields, "layers": layers}
+    overhang = simple.GLOverhangAnalysis(Input=fields)
+    return {"reader": reader, "place": place, "tets": tets, "fields": fields, "layers": layers, "overhang": overhang}
 
 
 def save_binary(proxy, path):
@@ -93,6 +94,7 @@ def main(argv=None):
     save_binary(p["tets"], os.path.join(args.output, "tets.vtu"))
     save_binary(p["fields"], os.path.join(args.output, "fields.vtu"))
     save_binary(p["layers"], os.path.join(args.output, "layers.vtp"))
+    save_binary(p["overhang"], os.path.join(args.output, "overhang.vtp"))
     gamma = fields.GetPointData().GetArray("Gamma").GetRange()
     print("geolattice_pipeline: %d points, %d tets, gamma max %.3f mm; wrote %s" %
           (fields.GetNumberOfPoints(), fields.GetNumberOfCells(), gamma[1], args.output))

@@ -1,0 +1,110 @@
+"""Renders the documentation pictures from the real pipeline output (needs an X server):
+
+    xvfb-run -a -s "-screen 0 1280x1024x24" pvpython pvpython/render_docs.py [OUTDIR]
+
+Writes into docs/images/ (or OUTDIR): gdf_<model>.png (γ on the part), layers_<model>.png
+(curved layers coloured by LayerId over the translucent part) and overhang_<model>.png (overhang
+angle of planar against curved slicing).
+"""
+import os
+import sys
+
+from paraview import simple
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, HERE)
+import geolattice_pipeline as pipeline  # noqa: E402
+
+MODELS = {"bunny": ("bunny.obj", 80.0), "y_shape": ("y_shape.obj", 0.0)}
+
+
+def view_for(size=(1000, 800)):
+    view = simple.CreateRenderView()
+    view.ViewSize = list(size)
+    view.Background = [1, 1, 1]
+    view.OrientationAxesVisibility = 1
+    try:
+        view.UseColorPaletteForBackground = 0
+    except AttributeError:
+        pass
+    return view
+
+
+def camera(view, azimuth=30, elevation=15):
+    view.ResetCamera()
+    cam = view.GetActiveCamera()
+    cam.SetFocalPoint(*cam.GetFocalPoint())
+    cam.SetViewUp(0, 0, 1)
+    pos = cam.GetFocalPoint()
+    dist = cam.GetDistance()
+    cam.SetPosition(pos[0], pos[1] - dist, pos[2])
+    cam.Azimuth(azimuth)
+    cam.Elevation(elevation)
+    view.ResetCamera()
+
+
+def show_colored(proxy, view, array, association, preset, bar_title):
+    rep = simple.Show(proxy, view)
+    simple.ColorBy(rep, (association, array))
+    lut = simple.GetColorTransferFunction(array)
+    lut.ApplyPreset(preset, True)
+    rep.RescaleTransferFunctionToDataRange(True, False)
+    rep.SetScalarBarVisibility(view, True)
+    bar = simple.GetScalarBar(lut, view)
+    bar.Title = bar_title
+    bar.ComponentTitle = ""
+    bar.TitleColor = [0, 0, 0]
+    bar.LabelColor = [0, 0, 0]
+    return rep
+
+
+def render_model(name, model, fit, outdir):
+    p = pipeline.build_pipeline(os.path.join(HERE, "..", "testdata", model), fit_size=fit, base_tolerance=0.5)
+    surface = simple.ExtractSurface(Input=p["fields"])
+
+    view = view_for()
+    show_colored(surface, view, "Gamma", "POINTS", "Viridis (matplotlib)", "Gamma (mm)")
+    camera(view)
+    simple.SaveScreenshot(os.path.join(outdir, "gdf_%s.png" % name), view, ImageResolution=[1000, 800])
+    simple.Delete(view)
+
+    view = view_for()
+    part = simple.Show(surface, view)
+    part.Opacity = 0.15
+    simple.ColorBy(part, None)
+    part.DiffuseColor = [0.6, 0.6, 0.6]
+    every_fourth = simple.Threshold(Input=simple.Calculator(
+        Input=p["layers"], AttributeType="Cell Data", ResultArrayName="Every4",
+        Function="LayerId - 4*floor(LayerId/4)"), Scalars=["CELLS", "Every4"])
+    try:
+        every_fourth.LowerThreshold = 0
+        every_fourth.UpperThreshold = 0
+    except AttributeError:
+        every_fourth.ThresholdRange = [0, 0]
+    show_colored(every_fourth, view, "LayerId", "CELLS", "Turbo", "LayerId")
+    camera(view)
+    simple.SaveScreenshot(os.path.join(outdir, "layers_%s.png" % name), view, ImageResolution=[1000, 800])
+    simple.Delete(view)
+
+    for mode in ("OverhangPlanar", "OverhangCurved"):
+        view = view_for((800, 800))
+        rep = show_colored(p["overhang"], view, mode, "CELLS", "Cool to Warm", "Overhang angle, " + mode[8:].lower() + " (deg)")
+        lut = simple.GetColorTransferFunction(mode)
+        lut.RescaleTransferFunction(0.0, 180.0)
+        camera(view, azimuth=30, elevation=-20)
+        simple.SaveScreenshot(os.path.join(outdir, "overhang_%s_%s.png" % (mode[8:].lower(), name)), view,
+                              ImageResolution=[800, 800])
+        simple.Delete(view)
+
+
+def main():
+    outdir = sys.argv[1] if len(sys.argv) > 1 else os.path.join(HERE, "..", "docs", "images")
+    os.makedirs(outdir, exist_ok=True)
+    pipeline.load_plugin()
+    for name, (model, fit) in MODELS.items():
+        render_model(name, model, fit, outdir)
+    print("render_docs: wrote pictures into %s" % os.path.abspath(outdir))
+
+
+if __name__ == "__main__":
+    main()
