@@ -30,7 +30,7 @@ class PipelineTest(unittest.TestCase):
         pipeline.load_plugin()
         cls.out = tempfile.mkdtemp(prefix="geolattice-pvpython-")
         model = os.path.join(SOURCE_DIR, "testdata", "bunny.obj")
-        cls.proxies = pipeline.build_pipeline(model, fit_size=40.0, edge_length=2.5)
+        cls.proxies = pipeline.build_pipeline(model, fit_size=40.0, edge_length=2.5, base_tolerance=0.5)
         cls.proxies["fields"].UpdatePipeline()
         cls.fields = servermanager.Fetch(cls.proxies["fields"])
 
@@ -74,6 +74,17 @@ class PipelineTest(unittest.TestCase):
         ids = layers.GetCellData().GetArray(NAMES["LayerId"]).GetRange()
         self.assertEqual(ids, (0.0, expected - 1.0))
         self.assertIsNotNone(layers.GetPointData().GetArray(NAMES["Normals"]))
+
+    def test_curved_layers_need_less_support_than_planar(self):
+        self.proxies["overhang"].UpdatePipeline()
+        surface = servermanager.Fetch(self.proxies["overhang"])
+        fd = surface.GetFieldData()
+        planar = fd.GetArray(NAMES["OverhangPlanarFraction"]).GetValue(0)
+        curved = fd.GetArray(NAMES["OverhangCurvedFraction"]).GetValue(0)
+        self.assertGreater(planar, 0.05)
+        self.assertLess(curved, 0.5 * planar)
+        for key in ("OverhangPlanar", "OverhangCurved"):
+            self.assertIsNotNone(surface.GetCellData().GetArray(NAMES[key]), key)
 
     def test_saved_file_reads_back(self):
         path = os.path.join(self.out, "fields.vtu")
