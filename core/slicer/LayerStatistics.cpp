@@ -1,5 +1,7 @@
 #include "slicer/LayerStatistics.h"
 
+#include "common/UnionFind.h"
+
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -7,7 +9,6 @@
 
 #include <cmath>
 #include <limits>
-#include <numeric>
 
 namespace geolattice {
 
@@ -23,30 +24,19 @@ Kernel::Point_3 toPoint(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 
 int layerComponents(const CurvedLayers& layers, int l, std::vector<int>& triangleComponent) {
   const int p0 = layers.layerPointOffset[l], np = layers.layerPointOffset[l + 1] - p0;
-  std::vector<int> parent(np);
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int v) {
-    while (parent[v] != v) {
-      parent[v] = parent[parent[v]];
-      v = parent[v];
-    }
-    return v;
-  };
+  UnionFind sets(np);
   const int t0 = layers.layerTriangleOffset[l], t1 = layers.layerTriangleOffset[l + 1];
   for (int k = t0; k < t1; ++k) {
     const auto& t = layers.triangles[k];
-    for (int e = 1; e < 3; ++e) {
-      const int a = find(t[0] - p0), b = find(t[e] - p0);
-      if (a != b) {
-        parent[std::max(a, b)] = std::min(a, b);
-      }
-    }
+    sets.unite(t[0] - p0, t[1] - p0);
+    sets.unite(t[0] - p0, t[2] - p0);
   }
+  // Number the components by first use in triangle order.
   std::vector<int> label(np, -1);
   int count = 0;
   triangleComponent.resize(t1 - t0);
   for (int k = t0; k < t1; ++k) {
-    const int r = find(layers.triangles[k][0] - p0);
+    const int r = sets.find(layers.triangles[k][0] - p0);
     if (label[r] < 0) {
       label[r] = count++;
     }
