@@ -58,6 +58,37 @@ constexpr const char* OverhangCurvedFraction = "OverhangCurvedFraction"; ///< ar
 constexpr const char* OverhangThresholdDeg = "OverhangThresholdDeg";     ///< threshold used (degrees)
 constexpr const char* OverhangBaseArea = "OverhangBaseArea";             ///< area of the on-base faces (mm^2)
 constexpr const char* OverhangTotalArea = "OverhangTotalArea";           ///< area of all boundary faces (mm^2)
+// Lattice infill output (vtkGLLatticeInfill): one line cell per graph edge.
+constexpr const char* VertexKind = "VertexKind";     ///< point data (int): a latticekind::Vertex* value
+constexpr const char* Degree = "Degree";             ///< point data (int): number of edges at the vertex
+constexpr const char* EdgeKind = "EdgeKind";         ///< cell data (int): a latticekind::Edge* value
+constexpr const char* SubgraphId = "SubgraphId";     ///< cell + point data (int): connected sub-graph G_{i,j}, numbered over all layers
+constexpr const char* IsolineLevel = "IsolineLevel"; ///< cell data: iso-value of an α/β edge (mm), NaN on boundary edges
+// Field data of vtkGLLatticeInfill (1 value each unless noted).
+constexpr const char* LatticeVertices = "LatticeVertices";
+constexpr const char* LatticeEdges = "LatticeEdges";
+constexpr const char* LatticeSubgraphs = "LatticeSubgraphs";
+constexpr const char* LatticeCrossings = "LatticeCrossings";
+constexpr const char* LatticeBoundaryHits = "LatticeBoundaryHits";
+constexpr const char* LatticeIsolineEdges = "LatticeIsolineEdges";         ///< α + β edges; 0 = empty lattice
+constexpr const char* LatticeDroppedSubgraphs = "LatticeDroppedSubgraphs"; ///< shorter than MinimumSubgraphLength
+constexpr const char* LatticeIrregularVertices = "LatticeIrregularVertices"; ///< degree != 4 / 3 / 2 (exact tangential touches)
+constexpr const char* LatticeAlphaLevels = "LatticeAlphaLevels";           ///< Ψ^α used (mm), one value per level
+constexpr const char* LatticeBetaLevels = "LatticeBetaLevels";             ///< Ψ^β used (mm), one value per level
+constexpr const char* SubgraphLayer = "SubgraphLayer";                     ///< per sub-graph: layer index i
+constexpr const char* SubgraphLength = "SubgraphLength";                   ///< per sub-graph: total edge length (mm)
+constexpr const char* SubgraphCentroid = "SubgraphCentroid";               ///< per sub-graph: 3 values, length-weighted (mm)
 } // namespace arrays
+
+/// Values of the VertexKind and EdgeKind arrays (= geolattice::LatticeVertexKind / LatticeEdgeKind).
+namespace latticekind {
+constexpr int VertexIsolinePoint = 0; ///< α- or β-isoline point on a layer-mesh edge or layer point (degree 2)
+constexpr int VertexCrossing = 1;     ///< α-isoline meets β-isoline (degree 4)
+constexpr int VertexBoundaryHit = 2;  ///< an isoline meets the layer boundary (degree 3)
+constexpr int VertexBoundary = 3;     ///< layer boundary point (degree 2)
+constexpr int EdgeAlpha = 0;          ///< piece of an α-isoline
+constexpr int EdgeBeta = 1;           ///< piece of a β-isoline
+constexpr int EdgeBoundary = 2;       ///< piece of the layer boundary
+} // namespace latticekind
 } // namespace geolattice
 #endif

@@ -53,6 +53,18 @@ cholmod_dense viewDense(const double* data, Eigen::Index rows, Eigen::Index cols
   return d;
 }
 
+/// Runs CHOLMOD's numeric factorization with its OpenMP loops on one thread. Debian's CHOLMOD
+/// asks for 4 OpenMP threads in the supernodal assembly loops whatever the core count; on this
+/// project's 2-core machines those threads (plus OpenBLAS's) oversubscribe the cores and spin,
+/// and one thread factors the 66k-tet bunny's matrices about twice as fast (docs/performance.md).
+/// A host `teams` region with thread_limit(1) caps the thread count of the parallel regions
+/// inside it for this call only (OpenMP 5.0); the BLAS keeps its own threads. The body is C
+/// code, so nothing is thrown out of the OpenMP region.
+void factorizeWithOneOpenMPThread(cholmod_sparse* A, cholmod_factor* L, cholmod_common* common) {
+#pragma omp teams num_teams(1) thread_limit(1)
+  cholmod_factorize(A, L, common);
+}
+
 std::string cholmodStatus(int status) {
   switch (status) {
   case CHOLMOD_OUT_OF_MEMORY:
@@ -160,7 +172,7 @@ void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& Ain, const cha
     throw GeoLatticeError(std::string("factorization of the ") + what +
                           " matrix failed: " + cholmodStatus(impl_->common.status));
   }
-  cholmod_factorize(&view, impl_->factor, &impl_->common);
+  factorizeWithOneOpenMPThread(&view, impl_->factor, &impl_->common);
   if (impl_->common.status == CHOLMOD_NOT_POSDEF || impl_->factor->minor < impl_->factor->n) {
     throw GeoLatticeError(notPositiveDefinite);
   }

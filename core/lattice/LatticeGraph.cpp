@@ -1,6 +1,7 @@
 #include "lattice/LatticeGraph.h"
 
 #include "common/Error.h"
+#include "common/UnionFind.h"
 #include "lattice/LatticeLevels.h"
 
 #include <algorithm>
@@ -591,32 +592,12 @@ private:
 
   void findSubgraphs() {
     const int nv = static_cast<int>(g_.points.size());
-    std::vector<int> parent(nv);
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](int v) {
-      while (parent[v] != v) {
-        parent[v] = parent[parent[v]];
-        v = parent[v];
-      }
-      return v;
-    };
+    UnionFind sets(nv);
     for (const auto& e : g_.edges) {
-      const int a = find(e[0]), b = find(e[1]);
-      if (a != b) {
-        parent[std::max(a, b)] = std::min(a, b);
-      }
+      sets.unite(e[0], e[1]);
     }
-    // Components numbered by their first vertex.
-    std::vector<int> compOfRoot(nv, -1);
-    std::vector<int> comp(nv);
-    int nc = 0;
-    for (int v = 0; v < nv; ++v) {
-      const int r = find(v);
-      if (compOfRoot[r] < 0) {
-        compOfRoot[r] = nc++;
-      }
-      comp[v] = compOfRoot[r];
-    }
+    std::vector<int> comp;  // components numbered by their first vertex
+    const int nc = sets.labels(comp);
     std::vector<double> length(nc, 0.0);
     for (const auto& e : g_.edges) {
       length[comp[e[0]]] += (g_.points[e[1]] - g_.points[e[0]]).norm();

@@ -141,7 +141,9 @@ struct LatticeGraph {
   std::vector<Vec3> normals;                ///< #V unit nozzle direction (interpolated)
   std::vector<double> gamma;                ///< #V γ = φ_i of the vertex's layer (mm)
   std::vector<double> alpha, beta;          ///< #V field values (exactly the level on an isoline)
-  std::vector<int> alphaLevel, betaLevel;   ///< #V level index of the α/β-isoline through it, -1 if none
+  /// #V index of the α- (β-) level equal to the vertex's α (β), -1 if none. Set on every isoline
+  /// point and crossing; also on an exact-hit layer point whose isoline was dropped there.
+  std::vector<int> alphaLevel, betaLevel;
   std::vector<LatticeVertexKind> vertexKind;  ///< #V
   std::vector<int> degree;                  ///< #V
   std::vector<int> vertexLayer;             ///< #V 0..L-1

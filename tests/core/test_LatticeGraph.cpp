@@ -332,6 +332,35 @@ TEST(LatticeGraph, RidgeAtALevelIsDropped) {
   EXPECT_EQ(g.stats.crossings, 8 * 9);
 }
 
+// A documented exception to the degree rules: α = 100 + ((x - 20)^2 - (y - 20)^2) / 100 equals
+// the level 100 on the two diagonals through the saddle point (20, 20), a layer point whose link
+// alternates above / below twice: that isoline point has degree 4 and is counted as irregular.
+// (With the saddle's zero lines along the axes instead, the (1,1)-split grid resolves it: the
+// isolines cut the corner along a mesh diagonal and every degree is regular.)
+TEST(LatticeGraph, LevelThroughASaddlePointIsCountedAsIrregular) {
+  const Field saddle = [](const Vec3& p) {
+    return 100 + 0.01 * ((p.x() - 20) * (p.x() - 20) - (p.y() - 20) * (p.y() - 20));
+  };
+  const CurvedLayers layers = gridLayers({{{0, 0, 40, 40, 20, 20}}}, saddle, kBetaOfBox);
+  const LatticeGraph g = buildLatticeGraph(layers, phases(0.0, 1.3));
+  const StructureReport s = checkStructure(g, 1e-9);
+  EXPECT_EQ(s.irregularVertices, 1);
+  EXPECT_EQ(g.stats.irregularVertices, 1);
+  EXPECT_EQ(s.duplicateVertices, 0);
+  EXPECT_EQ(s.oddBoundaryHitSubgraphs, 0);
+  int found = 0;
+  for (size_t v = 0; v < g.points.size(); ++v) {
+    if (g.vertexKind[v] == LatticeVertexKind::IsolinePoint && g.degree[v] == 4) {
+      ++found;
+      EXPECT_EQ(g.points[v], Vec3(20, 20, 0));
+    }
+  }
+  EXPECT_EQ(found, 1);
+  EXPECT_EQ(g.stats.crossings, 20);     // each β-line crosses both diagonals
+  EXPECT_EQ(g.stats.boundaryHits, 24);  // 4 arms of the α-cross + 2 x 10 β-ends
+  EXPECT_GT(g.stats.touchingSegments, 0);
+}
+
 // β-isolines at 0.057° to the α-isolines, on a mesh (37 x 37 squares) whose rows miss the levels: each β-line
 // crosses one α-line inside a thin sliver of a triangle; the crossing is found once, inside.
 TEST(LatticeGraph, NearlyParallelIsolinesCrossOnce) {

@@ -1,0 +1,113 @@
+/**
+ * @class   vtkGLLatticeInfill
+ * @brief   Lattice infill pattern G_i of every curved layer: α- and β-isolines, their crossings
+ *          and the layer boundary, as a graph of line cells.
+ *
+ * Paper Section 2.2, Algorithm 1 (Eqs. 6-13), on the layer triangle meshes
+ * (core/lattice/LatticeGraph.h): on each layer S_i the isolines α = j·AlphaWidth + AlphaPhase
+ * and β = k·BetaWidth + BetaPhase, their crossings, and the layer boundary (where the layer meets
+ * the part surface) split at the isoline hits; then the connected sub-graphs G_{i,j}. Iso-values
+ * that hit layer points or edges exactly never create duplicate vertices or broken edges.
+ *
+ * Input:  vtkPolyData of triangles (the output of vtkGLCurvedLayerSlicer) with cell array
+ *         `LayerId` and point arrays `Alpha`, `Beta` (required), `Gamma`, `Normals` and
+ *         `SourceEdge` (optional: without Normals the area-weighted triangle normals are used;
+ *         without Gamma the output has no Gamma array; with SourceEdge the isoline points on
+ *         the slicer's quad diagonals are removed, which gives exactly the paper's graph).
+ *         Vertex and line cells of the input are ignored; polygons must be triangles.
+ * Output: vtkPolyData, one line cell per graph edge, points shared within a layer, with
+ *   - point data `VertexKind` (int: 0 isoline point, 1 crossing, 2 boundary hit, 3 boundary;
+ *     see geolattice::latticekind), `Degree` (int: 4 at crossings, 3 at boundary hits, 2
+ *     elsewhere except at exact tangential touches), `Normals` (unit nozzle direction,
+ *     interpolated), `Gamma` (φ_i of the layer, mm), `Alpha`, `Beta` (mm), `SubgraphId`;
+ *   - cell data `EdgeKind` (int: 0 α, 1 β, 2 boundary), `LayerId` (layer index i),
+ *     `SubgraphId` (connected sub-graph, numbered over all layers), `IsolineLevel` (mm, NaN on
+ *     boundary edges);
+ *   - field data `LatticeVertices`, `LatticeEdges`, `LatticeSubgraphs`, `LatticeCrossings`,
+ *     `LatticeBoundaryHits`, `LatticeIsolineEdges`, `LatticeDroppedSubgraphs`,
+ *     `LatticeIrregularVertices`, the levels `LatticeAlphaLevels`, `LatticeBetaLevels` (mm) and
+ *     per sub-graph `SubgraphLayer`, `SubgraphLength` (mm), `SubgraphCentroid` (mm).
+ * Parameters: AlphaWidth, BetaWidth (lattice widths a, b in mm, default 4, > 0), AlphaPhase,
+ *   BetaPhase (offset of the levels in mm, default 0), MinimumSubgraphLength (mm, default 0 =
+ *   keep all; shorter sub-graphs are dropped and counted), NumberOfThreads (default 0 = all
+ *   cores), and optionally a point array chosen with SetInputArrayToProcess(0, 0, 0,
+ *   vtkDataObject::FIELD_ASSOCIATION_POINTS, name): a width scale per layer point (> 0; 0.5 =
+ *   twice as dense) for a graded lattice (levels remapped along α and β, see
+ *   core/lattice/LatticeLevels.h). No array or the name "None" gives the uniform lattice.
+ * Errors (missing LayerId/Alpha/Beta, a selected width-scale array that is missing, widths <= 0,
+ * non-triangle polygons, a layer mesh that is not edge-manifold) are reported with
+ * vtkErrorMacro and give an empty output. Widths larger than the part are not an error: no
+ * isoline crosses the layers, LatticeIsolineEdges is 0, a warning says so, and the output holds
+ * only the layer boundaries.
+ */
+#ifndef vtkGLLatticeInfill_h
+#define vtkGLLatticeInfill_h
+
+#include "GeoLatticeFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+
+class GEOLATTICEFILTERS_EXPORT vtkGLLatticeInfill : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkGLLatticeInfill* New();
+  vtkTypeMacro(vtkGLLatticeInfill, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Lattice widths a and b: distance between neighbouring α- (β-) isolines (mm, default 4,
+  /// must be > 0; checked in RequestData so that a bad value is reported, not clamped).
+  vtkSetMacro(AlphaWidth, double);
+  vtkGetMacro(AlphaWidth, double);
+  vtkSetMacro(BetaWidth, double);
+  vtkGetMacro(BetaWidth, double);
+  ///@}
+
+  ///@{
+  /// Offsets of the iso-values: α-levels are j·AlphaWidth + AlphaPhase (mm, default 0).
+  vtkSetMacro(AlphaPhase, double);
+  vtkGetMacro(AlphaPhase, double);
+  vtkSetMacro(BetaPhase, double);
+  vtkGetMacro(BetaPhase, double);
+  ///@}
+
+  ///@{
+  /// Sub-graphs with a smaller total edge length are dropped (mm, default 0 = keep all).
+  vtkSetClampMacro(MinimumSubgraphLength, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MinimumSubgraphLength, double);
+  ///@}
+
+  ///@{
+  /// Remove the isoline points on the slicer's quad diagonals (needs the SourceEdge array;
+  /// default on). The removed points are straight-through points of one isoline.
+  vtkSetMacro(MergeQuadDiagonalPoints, vtkTypeBool);
+  vtkGetMacro(MergeQuadDiagonalPoints, vtkTypeBool);
+  vtkBooleanMacro(MergeQuadDiagonalPoints, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// Worker threads over the layers (default 0 = hardware concurrency).
+  vtkSetClampMacro(NumberOfThreads, int, 0, 256);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+protected:
+  vtkGLLatticeInfill();
+  ~vtkGLLatticeInfill() override = default;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double AlphaWidth = 4.0;
+  double BetaWidth = 4.0;
+  double AlphaPhase = 0.0;
+  double BetaPhase = 0.0;
+  double MinimumSubgraphLength = 0.0;
+  vtkTypeBool MergeQuadDiagonalPoints = true;
+  int NumberOfThreads = 0;
+
+private:
+  vtkGLLatticeInfill(const vtkGLLatticeInfill&) = delete;
+  void operator=(const vtkGLLatticeInfill&) = delete;
+};
+
+#endif
