@@ -8,6 +8,7 @@
 #include "vtkGLArrayNames.h"
 #include "vtkGLCurvedLayerSlicer.h"
 #include "vtkGLGeodesicDistanceFields.h"
+#include "vtkGLLatticeInfill.h"
 #include "vtkGLMeshReader.h"
 #include "vtkGLOverhangAnalysis.h"
 #include "vtkGLPlaceOnPlatform.h"
@@ -46,7 +47,7 @@ namespace {
 namespace gl = geolattice;
 using Clock = std::chrono::steady_clock;
 
-constexpr const char* kStages[] = { "mesh", "gdf", "layers" };
+constexpr const char* kStages[] = { "mesh", "gdf", "layers", "lattice" };
 
 const char* kUsage = R"(geolattice - multi-axis support-free printing with lattice infill (GeoLattice )" GEOLATTICE_VERSION R"()
 
@@ -57,13 +58,14 @@ Usage:
 MODEL is a closed triangle surface (.stl .obj .ply .vtp .off) or a tet mesh (.vtu .tet .node
 .ele; a tet mesh skips meshing). Outputs in OUTDIR: tets.vtu (the tet mesh), fields.vtu (tets
 with Gamma, Alpha, Beta), layers.vtp (curved layers, cell array LayerId), overhang.vtp (the
-part's surface with the overhang angles of planar and curved slicing), report.json (per stage:
-seconds, counts, results). Files are written to a temporary name first, so nothing
+part's surface with the overhang angles of planar and curved slicing), lattice.vtp (the lattice
+infill graph of every layer: line cells with EdgeKind, LayerId, SubgraphId), report.json (per
+stage: seconds, counts, results). Files are written to a temporary name first, so nothing
 partial is left behind on failure.
 
 Options:
   -o, --output DIR        output directory (created if missing)                     [required]
-  --until STAGE           last stage to run: mesh | gdf | layers                     [layers]
+  --until STAGE           last stage to run: mesh | gdf | layers | lattice           [lattice]
  Model placement (models come in arbitrary units; GeoLattice works in millimetres):
   --scale F               uniform scale factor applied to the model                  [1]
   --fit-size MM           scale so the largest bounding-box side is MM (replaces --scale) [off]
@@ -86,6 +88,13 @@ Options:
   --layer-interval MM     γ distance between layers (nominal layer thickness)        [0.6]
   --first-layer MM        γ of the first layer                      [= --layer-interval]
   --overhang-threshold DEG  overhang angle above which a surface needs support       [135]
+ Lattice infill (iso-lines of Alpha and Beta on each layer, paper Algorithm 1):
+  --lattice-width MM      distance between lattice lines, both directions            [4]
+  --alpha-width MM        distance between α lines (overrides --lattice-width)
+  --beta-width MM         distance between β lines (overrides --lattice-width)
+  --alpha-phase MM        offset of the α levels                                     [0]
+  --beta-phase MM         offset of the β levels                                     [0]
+  --min-subgraph MM       drop connected lattice pieces shorter than this            [0]
  Output:
   -q, --quiet             no progress lines on stdout
 
@@ -96,7 +105,7 @@ the problem); 2 on bad usage (one line on stderr).
 struct Options {
   std::string model;
   std::string outDir;
-  std::string until = "layers";
+  std::string until = "lattice";
   double scale = 1.0;
   double fitSize = 0.0;
   bool center = true;
@@ -112,6 +121,12 @@ struct Options {
   double layerInterval = 0.6;
   double firstLayer = -1; // < 0: equal to layerInterval
   double overhangThreshold = 135.0;
+  double latticeWidth = 4.0;
+  double alphaWidth = -1; // < 0: latticeWidth
+  double betaWidth = -1;
+  double alphaPhase = 0;
+  double betaPhase = 0;
+  double minSubgraph = 0;
   bool quiet = false;
 };
 
@@ -187,6 +202,12 @@ Options parseArguments(int argc, char** argv)
     else if (arg == "--layer-interval") o.layerInterval = parseNumber(arg, value());
     else if (arg == "--first-layer") o.firstLayer = parseNumber(arg, value());
     else if (arg == "--overhang-threshold") o.overhangThreshold = parseNumber(arg, value());
+    else if (arg == "--lattice-width") o.latticeWidth = parseNumber(arg, value());
+    else if (arg == "--alpha-width") o.alphaWidth = parseNumber(arg, value());
+    else if (arg == "--beta-width") o.betaWidth = parseNumber(arg, value());
+    else if (arg == "--alpha-phase") o.alphaPhase = parseNumber(arg, value());
+    else if (arg == "--beta-phase") o.betaPhase = parseNumber(arg, value());
+    else if (arg == "--min-subgraph") o.minSubgraph = parseNumber(arg, value());
     else if (arg == "-q" || arg == "--quiet") o.quiet = true;
     else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
     else if (o.model.empty()) o.model = arg;
@@ -202,7 +223,7 @@ Options parseArguments(int argc, char** argv)
   }
   if (std::find(std::begin(kStages), std::end(kStages), o.until) == std::end(kStages))
   {
-    throw UsageError("--until must be one of: mesh, gdf, layers (got '" + o.until + "')");
+    throw UsageError("--until must be one of: mesh, gdf, layers, lattice (got '" + o.until + "')");
   }
   if (o.base != "lowest" && o.base != "faces")
   {
@@ -215,6 +236,14 @@ Options parseArguments(int argc, char** argv)
   if (o.firstLayer < 0)
   {
     o.firstLayer = o.layerInterval;
+  }
+  if (o.alphaWidth < 0)
+  {
+    o.alphaWidth = o.latticeWidth;
+  }
+  if (o.betaWidth < 0)
+  {
+    o.betaWidth = o.latticeWidth;
   }
   // Parameter ranges are checked by the filters themselves, with the same messages as in ParaView.
   return o;
@@ -443,13 +472,45 @@ public:
       s.set("base_area_mm2", fieldValue(surface, gl::arrays::OverhangBaseArea));
       this->Write(surface, "overhang.vtp");
     }
+    if (Opt.until == "layers")
+    {
+      return this->Finish(report);
+    }
+
+    // Stage: lattice infill on every layer.
+    vtkNew<vtkGLLatticeInfill> lattice;
+    lattice->SetInputConnection(slicer->GetOutputPort(0));
+    lattice->SetAlphaWidth(Opt.alphaWidth);
+    lattice->SetBetaWidth(Opt.betaWidth);
+    lattice->SetAlphaPhase(Opt.alphaPhase);
+    lattice->SetBetaPhase(Opt.betaPhase);
+    lattice->SetMinimumSubgraphLength(Opt.minSubgraph);
+    vtkDataObject* graph = this->Execute("lattice", { lattice }, lattice, /*allowEmpty=*/true);
+    {
+      auto& s = report.object("lattice");
+      s.set("seconds", this->LastSeconds);
+      s.set("alpha_width", Opt.alphaWidth);
+      s.set("beta_width", Opt.betaWidth);
+      auto count = [graph](const char* name) { return static_cast<long long>(fieldValue(graph, name)); };
+      s.set("vertices", count(gl::arrays::LatticeVertices));
+      s.set("edges", count(gl::arrays::LatticeEdges));
+      s.set("subgraphs", count(gl::arrays::LatticeSubgraphs));
+      s.set("crossings", count(gl::arrays::LatticeCrossings));
+      s.set("boundary_hits", count(gl::arrays::LatticeBoundaryHits));
+      s.set("isoline_edges", count(gl::arrays::LatticeIsolineEdges));
+      s.set("dropped_subgraphs", count(gl::arrays::LatticeDroppedSubgraphs));
+      s.set("irregular_vertices", count(gl::arrays::LatticeIrregularVertices));
+      this->Write(graph, "lattice.vtp");
+    }
     return this->Finish(report);
   }
 
 private:
   /// Updates `last` (watching every algorithm of the stage for errors) and returns its output;
-  /// throws with the stage name if an error was reported or the output is empty.
-  vtkDataObject* Execute(const char* stage, std::initializer_list<vtkAlgorithm*> algorithms, vtkAlgorithm* last)
+  /// throws with the stage name if an error was reported or the output is empty (unless
+  /// allowEmpty: a lattice wider than the part is a valid, empty result).
+  vtkDataObject* Execute(
+    const char* stage, std::initializer_list<vtkAlgorithm*> algorithms, vtkAlgorithm* last, bool allowEmpty = false)
   {
     if (!Opt.quiet)
     {
@@ -472,7 +533,7 @@ private:
     {
       throw gl::GeoLatticeError(std::string(stage) + ": " + errors.Message);
     }
-    if (!out || out->GetNumberOfCells() == 0)
+    if (!out || (!allowEmpty && out->GetNumberOfCells() == 0))
     {
       throw gl::GeoLatticeError(std::string(stage) + ": produced an empty output");
     }

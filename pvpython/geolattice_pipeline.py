@@ -3,7 +3,7 @@
 Builds the same pipeline as the `geolattice` command-line tool from the plugin's proxies:
 
     GLMeshReader -> GLPlaceOnPlatform -> GLTetrahedralizeSurface -> GLGeodesicDistanceFields
-    -> GLCurvedLayerSlicer, and GLOverhangAnalysis on the fields
+    -> GLCurvedLayerSlicer -> GLLatticeInfill, and GLOverhangAnalysis on the fields
 
 and saves the tet mesh and the fields as VTK XML files (binary mode: ParaView 5.11 on Debian 12
 cannot read appended-mode files). Run it with pvpython (no X server needed):
@@ -35,8 +35,8 @@ def load_plugin(path=None):
 
 def build_pipeline(model, scale=1.0, fit_size=0.0, center=True, edge_length=0.0, radius_edge=1.414,
                    base_tolerance=0.05, time_factor=4.0, reference=(1.0, 0.0, 0.0), layer_interval=0.6,
-                   first_layer=None):
-    """Returns a dict of the pipeline's proxies, in order: reader, place, tets, fields, layers."""
+                   first_layer=None, lattice_width=4.0):
+    """Returns a dict of the pipeline's proxies: reader, place, tets, fields, layers, lattice, overhang."""
     reader = simple.GLMeshReader(FileName=model)
     place = simple.GLPlaceOnPlatform(Input=reader, Scale=scale, FitSize=fit_size, CenterXY=int(center))
     if model.lower().endswith(TET_MESH_EXTENSIONS):
@@ -48,8 +48,10 @@ def build_pipeline(model, scale=1.0, fit_size=0.0, center=True, edge_length=0.0,
                                              TimeFactor=time_factor, ReferenceVector=list(reference))
     layers = simple.GLCurvedLayerSlicer(Input=fields, LayerInterval=layer_interval,
                                         FirstLayerOffset=layer_interval if first_layer is None else first_layer)
+    lattice = simple.GLLatticeInfill(Input=layers, AlphaWidth=lattice_width, BetaWidth=lattice_width)
     overhang = simple.GLOverhangAnalysis(Input=fields)
-    return {"reader": reader, "place": place, "tets": tets, "fields": fields, "layers": layers, "overhang": overhang}
+    return {"reader": reader, "place": place, "tets": tets, "fields": fields, "layers": layers,
+            "lattice": lattice, "overhang": overhang}
 
 
 def save_binary(proxy, path):
@@ -79,13 +81,14 @@ def main(argv=None):
                         help="vertices this far above the lowest point are the base, mm [0.05]")
     parser.add_argument("--time-factor", type=float, default=4.0, help="heat time factor [4]")
     parser.add_argument("--layer-interval", type=float, default=0.6, help="curved layer interval, mm [0.6]")
+    parser.add_argument("--lattice-width", type=float, default=4.0, help="lattice line spacing, mm [4]")
     args = parser.parse_args(argv)
 
     load_plugin(args.plugin)
     os.makedirs(args.output, exist_ok=True)
     p = build_pipeline(args.model, scale=args.scale, fit_size=args.fit_size, edge_length=args.edge_length,
                        base_tolerance=args.base_tolerance, time_factor=args.time_factor,
-                       layer_interval=args.layer_interval)
+                       layer_interval=args.layer_interval, lattice_width=args.lattice_width)
     p["fields"].UpdatePipeline()
     fields = simple.servermanager.Fetch(p["fields"])
     if fields is None or fields.GetNumberOfCells() == 0:
@@ -95,6 +98,7 @@ def main(argv=None):
     save_binary(p["fields"], os.path.join(args.output, "fields.vtu"))
     save_binary(p["layers"], os.path.join(args.output, "layers.vtp"))
     save_binary(p["overhang"], os.path.join(args.output, "overhang.vtp"))
+    save_binary(p["lattice"], os.path.join(args.output, "lattice.vtp"))
     gamma = fields.GetPointData().GetArray("Gamma").GetRange()
     print("geolattice_pipeline: %d points, %d tets, gamma max %.3f mm; wrote %s" %
           (fields.GetNumberOfPoints(), fields.GetNumberOfCells(), gamma[1], args.output))

@@ -3,8 +3,8 @@
     xvfb-run -a -s "-screen 0 1280x1024x24" pvpython pvpython/render_docs.py [OUTDIR]
 
 Writes into docs/images/ (or OUTDIR): gdf_<model>.png (γ on the part), layers_<model>.png
-(curved layers coloured by LayerId over the translucent part) and overhang_<model>.png (overhang
-angle of planar against curved slicing).
+(curved layers coloured by LayerId over the translucent part), lattice_layer_<model>.png (the
+lattice of one layer) and overhang_<kind>_<model>.png (overhang angle, planar and curved slicing).
 """
 import os
 import sys
@@ -84,6 +84,27 @@ def render_model(name, model, fit, outdir):
     show_colored(every_fourth, view, "LayerId", "CELLS", "Turbo", "LayerId")
     camera(view)
     simple.SaveScreenshot(os.path.join(outdir, "layers_%s.png" % name), view, ImageResolution=[1000, 800])
+    simple.Delete(view)
+
+    # Lattice of one mid-height layer over the translucent part, coloured by sub-graph.
+    view = view_for()
+    part = simple.Show(surface, view)
+    part.Opacity = 0.12
+    simple.ColorBy(part, None)
+    part.DiffuseColor = [0.6, 0.6, 0.6]
+    p["lattice"].UpdatePipeline()
+    ids = simple.servermanager.Fetch(p["lattice"]).GetCellData().GetArray("LayerId").GetRange()
+    middle = int((ids[0] + ids[1]) / 2)
+    one_layer = simple.Threshold(Input=p["lattice"], Scalars=["CELLS", "LayerId"])
+    try:
+        one_layer.LowerThreshold = middle
+        one_layer.UpperThreshold = middle
+    except AttributeError:
+        one_layer.ThresholdRange = [middle, middle]
+    rep = show_colored(one_layer, view, "EdgeKind", "CELLS", "Rainbow Uniform", "EdgeKind (0 α, 1 β, 2 boundary)")
+    rep.LineWidth = 3.0
+    camera(view, azimuth=20, elevation=35)
+    simple.SaveScreenshot(os.path.join(outdir, "lattice_layer_%s.png" % name), view, ImageResolution=[1000, 800])
     simple.Delete(view)
 
     for mode in ("OverhangPlanar", "OverhangCurved"):

@@ -93,6 +93,9 @@ class CliErrorTest(unittest.TestCase):
         self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--layer-interval", "0"],
                           "interval")
 
+    def test_zero_lattice_width(self):
+        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--lattice-width", "0"], "width")
+
     def test_bad_option_value(self):
         self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--scale", "abc"], "--scale")
 

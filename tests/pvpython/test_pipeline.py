@@ -86,6 +86,18 @@ class PipelineTest(unittest.TestCase):
         for key in ("OverhangPlanar", "OverhangCurved"):
             self.assertIsNotNone(surface.GetCellData().GetArray(NAMES[key]), key)
 
+    def test_lattice_has_documented_arrays(self):
+        self.proxies["lattice"].UpdatePipeline()
+        lattice = servermanager.Fetch(self.proxies["lattice"])
+        self.assertGreater(lattice.GetNumberOfCells(), 100)
+        for key in ("VertexKind", "Degree", "Normals", "Gamma"):
+            self.assertIsNotNone(lattice.GetPointData().GetArray(NAMES[key]), key)
+        for key in ("EdgeKind", "LayerId", "SubgraphId"):
+            self.assertIsNotNone(lattice.GetCellData().GetArray(NAMES[key]), key)
+        fd = lattice.GetFieldData()
+        self.assertGreater(fd.GetArray(NAMES["LatticeCrossings"]).GetValue(0), 0)
+        self.assertEqual(fd.GetArray(NAMES["LatticeEdges"]).GetValue(0), lattice.GetNumberOfCells())
+
     def test_saved_file_reads_back(self):
         path = os.path.join(self.out, "fields.vtu")
         pipeline.save_binary(self.proxies["fields"], path)
