@@ -151,6 +151,21 @@ TEST(LatticeGraphCurved, BunnyWithSeveralSubgraphsPerLayer) {
               dropped.stats.droppedSubgraphs, dropped.stats.droppedLength);
 }
 
+TEST(LatticeGraphCurved, BranchingYSplitsIntoSubgraphsPerBranch) {
+  const TriangleSurface y = readObj(kData + "/y_shape.obj"); // generated, base on z = 0, mm
+  SlicerOptions slicer;                                       // 0.6 mm layers
+  const Pipeline p = runPipeline(y, 2.0, 0.05, slicer);
+  const Timed t = timedLattice(p.layers, LatticeOptions{});
+  expectValidLattice("branching Y, width 4", p, t);
+  // Above the fork every layer has one piece per branch.
+  int split = 0;
+  for (size_t l = 0; l < t.graph.layerValues.size(); ++l) {
+    split += t.graph.layerSubgraphOffset[l + 1] - t.graph.layerSubgraphOffset[l] == 2;
+  }
+  std::printf("[lattice] branching Y: %d of %zu layers have two sub-graphs\n", split, t.graph.layerValues.size());
+  EXPECT_GT(split, 10);
+}
+
 // The analytic grid test with the solved fields of a TetGen box: α ≈ 40 - y, β ≈ 40 - x. Phase 2
 // keeps the lines 2 mm away from the walls, so each layer is the 10 x 10 grid.
 TEST(LatticeGraphCurved, TetGenBoxGivesTheGrid) {
