@@ -114,17 +114,6 @@ void buildPolyData(const gl::CurvedLayers& layers, const std::vector<int>& trian
   out->GetCellData()->AddArray(component);
 }
 
-void addLayerField(vtkFieldData* fd, const char* name, const std::vector<double>& values)
-{
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  for (size_t i = 0; i < values.size(); ++i)
-  {
-    a->SetValue(static_cast<vtkIdType>(i), values[i]);
-  }
-  fd->AddArray(a);
-}
 } // namespace
 
 vtkGLCurvedLayerSlicer::vtkGLCurvedLayerSlicer()
@@ -179,8 +168,8 @@ int vtkGLCurvedLayerSlicer::RequestData(
     buildPolyData(layers, triangleComponent, std::max(0, s), s >= 0 && s < L ? s + 1 : 0, selected);
 
     vtkNew<vtkFieldData> fd;
-    addLayerField(fd, gl::arrays::LayerValues, layers.layerValues);
-    addLayerField(fd, gl::arrays::LayerComponents, componentCount);
+    gl::addFieldArray(fd, gl::arrays::LayerValues, layers.layerValues);
+    gl::addFieldArray(fd, gl::arrays::LayerComponents, componentCount);
     if (this->ComputeStatistics)
     {
       const auto stats = gl::computeLayerStatistics(layers);
@@ -192,10 +181,10 @@ int vtkGLCurvedLayerSlicer::RequestData(
         smean[l] = stats[l].spacingMean;
         smax[l] = stats[l].spacingMax;
       }
-      addLayerField(fd, gl::arrays::LayerArea, area);
-      addLayerField(fd, gl::arrays::LayerSpacingMin, smin);
-      addLayerField(fd, gl::arrays::LayerSpacingMean, smean);
-      addLayerField(fd, gl::arrays::LayerSpacingMax, smax);
+      gl::addFieldArray(fd, gl::arrays::LayerArea, area);
+      gl::addFieldArray(fd, gl::arrays::LayerSpacingMin, smin);
+      gl::addFieldArray(fd, gl::arrays::LayerSpacingMean, smean);
+      gl::addFieldArray(fd, gl::arrays::LayerSpacingMax, smax);
     }
     all->SetFieldData(fd);
     selected->GetFieldData()->PassData(fd);

@@ -65,16 +65,6 @@ vtkNew<vtkDoubleArray> vectorArray(const char* name, const std::vector<geolattic
   return a;
 }
 
-void addField(vtkFieldData* fd, const char* name, std::initializer_list<double> values)
-{
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  for (double v : values)
-  {
-    a->InsertNextValue(v);
-  }
-  fd->AddArray(a);
-}
 } // namespace
 
 vtkGLGeodesicDistanceFields::vtkGLGeodesicDistanceFields()
@@ -176,16 +166,16 @@ int vtkGLGeodesicDistanceFields::RequestData(
 
     vtkNew<vtkFieldData> fd;
     fd->DeepCopy(input->GetFieldData());
-    addField(fd, gl::arrays::GammaRange, { fields.gamma.minCoeff(), fields.gamma.maxCoeff() });
-    addField(fd, gl::arrays::AlphaRange, { fields.alpha.minCoeff(), fields.alpha.maxCoeff() });
-    addField(fd, gl::arrays::BetaRange, { fields.beta.minCoeff(), fields.beta.maxCoeff() });
+    gl::addFieldArray(fd, gl::arrays::GammaRange, { fields.gamma.minCoeff(), fields.gamma.maxCoeff() });
+    gl::addFieldArray(fd, gl::arrays::AlphaRange, { fields.alpha.minCoeff(), fields.alpha.maxCoeff() });
+    gl::addFieldArray(fd, gl::arrays::BetaRange, { fields.beta.minCoeff(), fields.beta.maxCoeff() });
     const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    addField(fd, gl::arrays::GdfTimings,
+    gl::addFieldArray(fd, gl::arrays::GdfTimings,
       { fields.timings.assembly, fields.timings.factorization, fields.timings.solve, total });
     const auto& dev = fields.orthogonalityDeviationDeg;
-    addField(fd, gl::arrays::OrthogonalityDeg, { dev[0], dev[1], dev[2], dev[3] });
-    addField(fd, gl::arrays::ReferenceFallbackTets, { static_cast<double>(fields.referenceFallbackTets) });
-    addField(fd, gl::arrays::SourceCount, { static_cast<double>(sources.size()) });
+    gl::addFieldArray(fd, gl::arrays::OrthogonalityDeg, { dev[0], dev[1], dev[2], dev[3] });
+    gl::addFieldArray(fd, gl::arrays::ReferenceFallbackTets, { static_cast<double>(fields.referenceFallbackTets) });
+    gl::addFieldArray(fd, gl::arrays::SourceCount, { static_cast<double>(sources.size()) });
     output->SetFieldData(fd);
     this->UpdateProgress(1.0);
   }

@@ -1,6 +1,7 @@
 #include "vtkGLLatticeInfill.h"
 
 #include "vtkGLArrayNames.h"
+#include "vtkGLMeshConversion.h"
 
 #include "common/Error.h"
 #include "lattice/LatticeGraph.h"
@@ -191,19 +192,9 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n)
   return a;
 }
 
-void addField(vtkFieldData* fd, const char* name, const std::vector<double>& values, int components = 1)
-{
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->SetNumberOfComponents(components);
-  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / components));
-  std::copy(values.begin(), values.end(), a->GetPointer(0));
-  fd->AddArray(a);
-}
-
 void addCount(vtkFieldData* fd, const char* name, double value)
 {
-  addField(fd, name, { value });
+  gl::addFieldArray(fd, name, { value });
 }
 
 void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out)
@@ -287,8 +278,8 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out)
   addCount(fd, gl::arrays::LatticeIsolineEdges, g.stats.isolineEdges);
   addCount(fd, gl::arrays::LatticeDroppedSubgraphs, g.stats.droppedSubgraphs);
   addCount(fd, gl::arrays::LatticeIrregularVertices, g.stats.irregularVertices);
-  addField(fd, gl::arrays::LatticeAlphaLevels, g.alphaLevels);
-  addField(fd, gl::arrays::LatticeBetaLevels, g.betaLevels);
+  gl::addFieldArray(fd, gl::arrays::LatticeAlphaLevels, g.alphaLevels);
+  gl::addFieldArray(fd, gl::arrays::LatticeBetaLevels, g.betaLevels);
   std::vector<double> subLayer, subLength, subCentroid;
   for (const gl::LatticeSubgraph& s : g.subgraphs)
   {
@@ -296,9 +287,9 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out)
     subLength.push_back(s.length);
     subCentroid.insert(subCentroid.end(), s.centroid.data(), s.centroid.data() + 3);
   }
-  addField(fd, gl::arrays::SubgraphLayer, subLayer);
-  addField(fd, gl::arrays::SubgraphLength, subLength);
-  addField(fd, gl::arrays::SubgraphCentroid, subCentroid, 3);
+  gl::addFieldArray(fd, gl::arrays::SubgraphLayer, subLayer);
+  gl::addFieldArray(fd, gl::arrays::SubgraphLength, subLength);
+  gl::addFieldArray(fd, gl::arrays::SubgraphCentroid, subCentroid, 3);
 }
 } // namespace
 

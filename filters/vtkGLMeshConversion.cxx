@@ -4,6 +4,8 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellType.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
@@ -11,6 +13,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <algorithm>
 #include <string>
 
 namespace geolattice {
@@ -105,6 +108,19 @@ void fromTriangleSurface(const TriangleSurface& surface, vtkPolyData* poly) {
     cells->InsertNextCell(3, ids);
   }
   poly->SetPolys(cells);
+}
+
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / components));
+  std::copy(values.begin(), values.end(), a->GetPointer(0));
+  return a;
+}
+
+void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values, int components) {
+  fd->AddArray(doubleArray(name, values, components));
 }
 
 } // namespace geolattice

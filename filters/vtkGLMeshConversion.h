@@ -8,6 +8,12 @@
  */
 #include "mesh/TetMesh.h"
 
+#include <vtkSmartPointer.h>
+
+#include <vector>
+
+class vtkDoubleArray;
+class vtkFieldData;
 class vtkPolyData;
 class vtkUnstructuredGrid;
 class vtkPoints;
@@ -23,6 +29,11 @@ TetMesh toTetMesh(vtkUnstructuredGrid* grid);
 void fromTetMesh(const TetMesh& mesh, vtkUnstructuredGrid* grid);
 /// Points + triangle polys, no arrays.
 void fromTriangleSurface(const TriangleSurface& surface, vtkPolyData* poly);
+
+/// A named double array of values.size() / components tuples holding values.
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components = 1);
+/// Adds doubleArray(name, values, components) to the field data (replacing one of that name).
+void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values, int components = 1);
 
 } // namespace geolattice
 #endif

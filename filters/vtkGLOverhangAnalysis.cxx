@@ -61,13 +61,6 @@ vtkNew<vtkDoubleArray> cellArray(const char* name, const std::vector<double>& va
   return a;
 }
 
-void addField(vtkFieldData* fd, const char* name, double value)
-{
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->InsertNextValue(value);
-  fd->AddArray(a);
-}
 } // namespace
 
 int vtkGLOverhangAnalysis::FillInputPortInformation(int, vtkInformation* info)
@@ -184,11 +177,11 @@ int vtkGLOverhangAnalysis::RequestData(
 
     vtkNew<vtkFieldData> fd;
     fd->DeepCopy(input->GetFieldData());
-    addField(fd, gl::arrays::OverhangPlanarFraction, result.planarFraction);
-    addField(fd, gl::arrays::OverhangCurvedFraction, result.curvedFraction);
-    addField(fd, gl::arrays::OverhangThresholdDeg, result.thresholdDeg);
-    addField(fd, gl::arrays::OverhangBaseArea, result.baseArea);
-    addField(fd, gl::arrays::OverhangTotalArea, result.totalArea);
+    gl::addFieldArray(fd, gl::arrays::OverhangPlanarFraction, { result.planarFraction });
+    gl::addFieldArray(fd, gl::arrays::OverhangCurvedFraction, { result.curvedFraction });
+    gl::addFieldArray(fd, gl::arrays::OverhangThresholdDeg, { result.thresholdDeg });
+    gl::addFieldArray(fd, gl::arrays::OverhangBaseArea, { result.baseArea });
+    gl::addFieldArray(fd, gl::arrays::OverhangTotalArea, { result.totalArea });
     output->SetFieldData(fd);
     this->UpdateProgress(1.0);
   }
