@@ -1,6 +1,7 @@
 #include "gdf/GeodesicDistanceFields.h"
 
 #include "common/Error.h"
+#include "common/UnionFind.h"
 #include "mesh/TetMeshTopology.h"
 
 #include <algorithm>
@@ -23,34 +24,13 @@ double secondsSince(Clock::time_point start) {
 
 /// Vertex components of the mesh by union-find over tet vertices.
 int vertexComponents(const TetMesh& mesh, std::vector<int>& component) {
-  std::vector<int> parent(mesh.points.size());
-  std::iota(parent.begin(), parent.end(), 0);
-  auto find = [&](int v) {
-    while (parent[v] != v) {
-      parent[v] = parent[parent[v]];
-      v = parent[v];
-    }
-    return v;
-  };
+  UnionFind sets(static_cast<int>(mesh.points.size()));
   for (const auto& t : mesh.tets) {
     for (int k = 1; k < 4; ++k) {
-      const int a = find(t[0]), b = find(t[k]);
-      if (a != b) {
-        parent[std::max(a, b)] = std::min(a, b);
-      }
+      sets.unite(t[0], t[k]);
     }
   }
-  component.assign(mesh.points.size(), -1);
-  std::vector<int> label(mesh.points.size(), -1);
-  int count = 0;
-  for (size_t v = 0; v < mesh.points.size(); ++v) {
-    const int r = find(static_cast<int>(v));
-    if (label[r] < 0) {
-      label[r] = count++;
-    }
-    component[v] = label[r];
-  }
-  return count;
+  return sets.labels(component);
 }
 
 /// Lower triangle of the symmetric K with every diagonal entry stored (first in its column,
