@@ -96,6 +96,37 @@ TriangleSurface boxSurface(const Vec3& size, double maxEdge) {
   return surface;
 }
 
+TriangleSurface torusSurface(const Vec3& centre, double majorRadius, double minorRadius, int majorSegments,
+                             int minorSegments) {
+  if (!(minorRadius > 0.0) || !(majorRadius > minorRadius) || !std::isfinite(majorRadius)) {
+    throw GeoLatticeError("torusSurface: need 0 < minor radius < major radius, got " + std::to_string(minorRadius) +
+                          " and " + std::to_string(majorRadius) + " mm");
+  }
+  if (majorSegments < 3 || minorSegments < 3 || majorSegments > 4096 || minorSegments > 4096) {
+    throw GeoLatticeError("torusSurface: segment counts must be in 3..4096");
+  }
+  TriangleSurface s;
+  const int nu = majorSegments, nv = minorSegments;
+  for (int i = 0; i < nu; ++i) {
+    const double u = 2.0 * M_PI * i / nu;
+    const Vec3 radial(std::cos(u), 0.0, std::sin(u));
+    for (int j = 0; j < nv; ++j) {
+      const double v = 2.0 * M_PI * j / nv;
+      s.points.push_back(centre + (majorRadius + minorRadius * std::cos(v)) * radial +
+                         minorRadius * std::sin(v) * Vec3::UnitY());
+    }
+  }
+  auto id = [&](int i, int j) { return ((i + nu) % nu) * nv + (j + nv) % nv; };
+  for (int i = 0; i < nu; ++i) {
+    for (int j = 0; j < nv; ++j) {
+      // (d/du) x (d/dv) points inwards for this parametrisation, so the quads run (i, j+1, i+1).
+      s.triangles.push_back({id(i, j), id(i, j + 1), id(i + 1, j + 1)});
+      s.triangles.push_back({id(i, j), id(i + 1, j + 1), id(i + 1, j)});
+    }
+  }
+  return s;
+}
+
 TriangleSurface sphereSurface(const Vec3& centre, double radius, int subdivisionLevel) {
   if (!(radius > 0.0) || !std::isfinite(radius)) {
     throw GeoLatticeError("sphereSurface: radius must be positive and finite, got " + std::to_string(radius) +

@@ -28,6 +28,15 @@ TriangleSurface boxSurface(const Vec3& size, double maxEdge);
 /// @throws GeoLatticeError on a non-positive radius or a level outside 0..10.
 TriangleSurface sphereSurface(const Vec3& centre, double radius, int subdivisionLevel);
 
+/// @brief Torus lying on its side: the major circle (radius majorRadius about the centre) is in
+/// the xz-plane, the axis is +y, and the tube (radius minorRadius) touches z = centre.z -
+/// majorRadius - minorRadius at one point. A u-v grid of majorSegments x minorSegments quads,
+/// each split into two triangles, counter-clockwise seen from outside. Used as a part whose
+/// curved layers split into two arcs and merge again (a skeleton DAG).
+/// @throws GeoLatticeError unless 0 < minorRadius < majorRadius and both segment counts are in 3..4096.
+TriangleSurface torusSurface(const Vec3& centre, double majorRadius, double minorRadius, int majorSegments,
+                             int minorSegments);
+
 /// @brief Structured tet mesh of the box [0,sx] x [0,sy] x [0,sz] (mm) with nx*ny*nz cells,
 /// each cell split into 6 tets along its main diagonal (Kuhn / Freudenthal split). The split
 /// is the same in every cell, so the mesh is conforming. Every tet is positively oriented.

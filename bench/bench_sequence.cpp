@@ -1,0 +1,182 @@
+// Printing sequences on the three-branch tree (paper Section 3.1, Table 3, Figs. 26-27): the part
+// of testdata/three_branch_tree.obj scaled by 1.5 (81 mm tall, ~150 layers at 0.6 mm like the
+// paper's 151), tetrahedralized by TetGen (~75k tets), heat-method GDF, lattice width 4 mm.
+//  - `bench_sequence --table` prints the Table-3-style sweep (strategy x nozzle angle: retractions,
+//    air-move length, collision-free by the independent verifier, seconds) as Markdown.
+//  - Without --table: Google Benchmark timings of PCG (Algorithm 3) + A4 (Algorithm 4), of the
+//    rollout order, and of the verifier, per nozzle angle.
+#include "collision/CollisionVerifier.h"
+#include "gdf/GeodesicDistanceFields.h"
+#include "gdf/HeatSources.h"
+#include "io/MeshFileIO.h"
+#include "lattice/LatticeGraph.h"
+#include "sequence/PotentialCollisions.h"
+#include "sequence/PrintMaterial.h"
+#include "sequence/PrintSequencer.h"
+#include "sequence/SkeletonTree.h"
+#include "slicer/CurvedLayerSlicer.h"
+#include "tetrahedralize/SurfaceTetrahedralizer.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <string>
+
+using namespace geolattice;
+
+namespace {
+
+struct TreePart {
+  size_t tets = 0;
+  int layers = 0;
+  LatticeGraph lattice;
+  SkeletonTree tree;
+  MaterialSamples material;
+  double skeletonSeconds = 0;
+};
+
+const TreePart& threeBranchPart() {
+  static const TreePart part = [] {
+    TreePart p;
+    TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/three_branch_tree.obj");
+    for (Vec3& q : s.points) {
+      q *= 1.5;
+    }
+    const TetMesh mesh = tetrahedralizeSurface(s, TetrahedralizeOptions{}).mesh;
+    p.tets = mesh.tets.size();
+    const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
+    const CurvedLayers layers =
+        sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
+    p.layers = static_cast<int>(layers.layerValues.size());
+    LatticeOptions o;
+    o.alphaWidth = o.betaWidth = 4.0;
+    p.lattice = buildLatticeGraph(layers, o);
+    const auto t0 = std::chrono::steady_clock::now();
+    p.tree = buildSkeletonTree(mesh, f.gamma, p.lattice);
+    p.skeletonSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    p.material = sampleLatticeMaterial(p.lattice, 1.0);
+    return p;
+  }();
+  return part;
+}
+
+double nozzleLength() {
+  const char* e = std::getenv("GL_NOZZLE_LENGTH");
+  return e ? std::atof(e) : std::numeric_limits<double>::infinity();
+}
+
+NozzleModel cone(double deg) {
+  NozzleModel n;
+  n.halfAngleDeg = deg;
+  n.length = nozzleLength();
+  return n;
+}
+
+/// Verifies the order; obstacles from a skeleton ancestor of the station's sub-graph (printed
+/// first in every order) are reported as unavoidable.
+CollisionReport verify(const TreePart& p, const PrintSequence& s, const NozzleModel& n) {
+  std::vector<int> time(p.material.points.size());
+  for (size_t i = 0; i < time.size(); ++i) {
+    time[i] = s.printIndex[p.material.subgraph[i]];
+  }
+  static const SkeletonAncestry ancestry(p.tree);
+  CollisionExemption exemption;
+  exemption.group = p.material.subgraph;
+  exemption.unavoidable = [&](int station, int obstacle) { return ancestry.isAncestor(obstacle, station); };
+  return verifyNozzleClearance(p.material.points, p.material.normals, time, n, 20, &exemption);
+}
+
+void printTable() {
+  const TreePart& p = threeBranchPart();
+  std::printf("Three-branch tree x1.5: %zu tets, %d layers, %zu sub-graphs, %zu material samples (1 mm), "
+              "skeleton %zu edges (%d split, %d merge nodes) in %.3f s\n\n",
+              p.tets, p.layers, p.tree.nodes.size(), p.material.points.size(), p.tree.edges.size(),
+              p.tree.splitNodes, p.tree.mergeNodes, p.skeletonSeconds);
+  std::printf("| Strategy | NA | Retractions | Air-move length (mm) | Collision-free order (verifier) | Unavoidable stations | PCG pairs | Forced steps | Seconds |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
+  for (double na : {75.0, 60.0, 45.0, 30.0, 15.0, 1.0}) {
+    const NozzleModel n = cone(na);
+    const PotentialCollisions pcg = computePotentialCollisions(p.material, n);
+    for (SequenceStrategy st : {SequenceStrategy::LayerPriority, SequenceStrategy::DepthPriority,
+                                SequenceStrategy::Greedy, SequenceStrategy::Rollout}) {
+      SequenceOptions o;
+      o.strategy = st;
+      const bool usesPcg = st == SequenceStrategy::Greedy || st == SequenceStrategy::Rollout;
+      const PrintSequence s = sequencePrint(p.tree, p.material, usesPcg ? &pcg : nullptr, o);
+      const CollisionReport r = verify(p, s, n);
+      char pcgText[32] = "-";
+      if (usesPcg) {
+        std::snprintf(pcgText, sizeof pcgText, "%lld", pcg.pairs);
+      }
+      const long long orderStations = r.violatingStations - r.unavoidableStations;
+      std::printf("| %s | %.0f° | %d | %.0f | %s | %lld | %s | %d | %.3f |\n", sequenceStrategyName(st), na,
+                  s.retractions, s.airLength,
+                  r.orderCollisionFree ? "yes" : ("**no** (" + std::to_string(orderStations) + " stations)").c_str(),
+                  r.unavoidableStations, pcgText, s.forcedSteps, s.seconds + (usesPcg ? pcg.seconds : 0.0));
+    }
+  }
+}
+
+void BM_PcgAndA4(benchmark::State& state) {
+  const TreePart& p = threeBranchPart();
+  const NozzleModel n = cone(static_cast<double>(state.range(0)));
+  SequenceOptions o;
+  o.strategy = SequenceStrategy::Greedy;
+  PrintSequence s;
+  long long pairs = 0;
+  for (auto _ : state) {
+    const PotentialCollisions pcg = computePotentialCollisions(p.material, n, static_cast<int>(state.range(1)));
+    s = sequencePrint(p.tree, p.material, &pcg, o);
+    pairs = pcg.pairs;
+  }
+  state.counters["subgraphs"] = static_cast<double>(p.tree.nodes.size());
+  state.counters["pcg_pairs"] = static_cast<double>(pairs);
+  state.counters["retractions"] = s.retractions;
+}
+BENCHMARK(BM_PcgAndA4)->ArgNames({"NA", "threads"})->Args({75, 1})->Args({45, 1})->Args({15, 1})->Args({45, 2})
+    ->Unit(benchmark::kMillisecond);
+
+void BM_Rollout(benchmark::State& state) {
+  const TreePart& p = threeBranchPart();
+  const NozzleModel n = cone(static_cast<double>(state.range(0)));
+  const PotentialCollisions pcg = computePotentialCollisions(p.material, n);
+  SequenceOptions o;
+  o.strategy = SequenceStrategy::Rollout;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(sequencePrint(p.tree, p.material, &pcg, o).order.data());
+  }
+}
+BENCHMARK(BM_Rollout)->ArgName("NA")->Arg(75)->Arg(45)->Unit(benchmark::kMillisecond);
+
+void BM_Verifier(benchmark::State& state) {
+  const TreePart& p = threeBranchPart();
+  const NozzleModel n = cone(static_cast<double>(state.range(0)));
+  SequenceOptions o;
+  o.strategy = SequenceStrategy::LayerPriority;
+  const PrintSequence s = sequencePrint(p.tree, p.material, nullptr, o);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(verify(p, s, n).violatingStations);
+  }
+  state.counters["stations"] = static_cast<double>(p.material.points.size());
+}
+BENCHMARK(BM_Verifier)->ArgName("NA")->Arg(75)->Arg(45)->Unit(benchmark::kMillisecond);
+
+} // namespace
+
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], "--table") == 0) {
+      printTable();
+      return 0;
+    }
+  }
+  benchmark::Initialize(&argc, argv);
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}

@@ -1,0 +1,57 @@
+#pragma once
+/// @file CollisionVerifier.h
+/// @brief Independent check that a print never drives the nozzle into material already
+/// printed (issue: collision verifier). It shares nothing with the sequencer's envelope code:
+/// given every printed point with its nozzle axis and the time it is printed, it asks, for each
+/// point as a nozzle station, whether any point printed strictly earlier lies inside the nozzle
+/// volume of NozzleModel.h there. Exact point-in-nozzle test (dot products, no angles), points in
+/// a static kd-tree whose nodes store their bounding sphere and earliest print time, so a query
+/// skips material printed later and space outside a cone that bounds the nozzle.
+///
+/// For a sub-graph order, time = the sub-graph's position (all of its points share it, a
+/// sub-graph is not tested against itself); for a toolpath, time = the point's index on it.
+#include "sequence/NozzleModel.h"
+
+#include <Eigen/Core>
+#include <functional>
+#include <vector>
+
+namespace geolattice {
+
+struct CollisionViolation {
+  int station = 0;       ///< index of the point being printed
+  int obstacle = 0;      ///< index of the earlier point inside the nozzle there
+  Eigen::Vector3d stationPoint = Eigen::Vector3d::Zero();
+  Eigen::Vector3d obstaclePoint = Eigen::Vector3d::Zero();
+  double height = 0;     ///< obstacle height above the tip along the axis (mm)
+  double radial = 0;     ///< obstacle distance from the axis (mm)
+  bool unavoidable = false;  ///< every obstacle of this station is exempt (see CollisionExemption)
+};
+
+/// @brief Optional classification of obstacles that no printing order can avoid, e.g. material
+/// of a skeleton ancestor, which Criterion 1 forces to be printed first. The verifier still
+/// reports them (collisionFree stays strict); orderCollisionFree ignores them.
+struct CollisionExemption {
+  std::vector<int> group;  ///< per point: a group id (e.g. its sub-graph)
+  std::function<bool(int stationGroup, int obstacleGroup)> unavoidable;
+};
+
+struct CollisionReport {
+  bool collisionFree = true;
+  long long stations = 0;            ///< points checked
+  long long violatingStations = 0;   ///< stations with at least one obstacle inside the nozzle
+  long long unavoidableStations = 0; ///< of those, stations whose obstacles are all exempt
+  bool orderCollisionFree = true;    ///< no station with an obstacle that is not exempt
+  std::vector<CollisionViolation> violations;  ///< the first ones in print time order (at most maxReported)
+  double seconds = 0;
+};
+
+/// points, normals (unit axes; re-normalised) and time have one entry per printed point.
+/// Throws GeoLatticeError for mismatched sizes, a zero or non-finite normal, non-finite points,
+/// or a bad nozzle, or an exemption whose group size does not match.
+CollisionReport verifyNozzleClearance(const std::vector<Eigen::Vector3d>& points,
+                                      const std::vector<Eigen::Vector3d>& normals, const std::vector<int>& time,
+                                      const NozzleModel& nozzle, int maxReported = 20,
+                                      const CollisionExemption* exemption = nullptr);
+
+} // namespace geolattice

@@ -1,0 +1,47 @@
+#include "sequence/NozzleModel.h"
+
+#include "common/Error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace geolattice {
+
+void NozzleModel::validate() const {
+  auto fail = [](const char* what, double v) {
+    std::ostringstream s;
+    s << what << " (got " << v << ")";
+    throw GeoLatticeError(s.str());
+  };
+  if (!(halfAngleDeg > 0.0 && halfAngleDeg < 90.0)) {
+    fail("nozzle angle must be in (0, 90) degrees", halfAngleDeg);
+  }
+  if (!(length > 0.0)) {  // infinity is allowed
+    fail("nozzle length must be > 0 mm", length);
+  }
+  if (!(holderRadius >= 0.0) || !std::isfinite(holderRadius)) {
+    fail("holder radius must be finite and >= 0 mm", holderRadius);
+  }
+  if (!(tipClearance >= 0.0) || !std::isfinite(tipClearance)) {
+    fail("tip clearance must be finite and >= 0 mm", tipClearance);
+  }
+}
+
+double NozzleModel::boundingHalfAngleRad() const {
+  const double cone = halfAngleDeg * M_PI / 180.0;
+  if (!std::isfinite(length)) {
+    return cone;
+  }
+  return std::max(cone, std::atan2(holderRadius, length));
+}
+
+double NozzleModel::reach() const {
+  if (std::isfinite(length) && holderRadius == 0.0) {
+    return length / std::cos(halfAngleDeg * M_PI / 180.0);
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+} // namespace geolattice

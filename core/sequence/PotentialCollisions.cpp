@@ -1,0 +1,217 @@
+#include "sequence/PotentialCollisions.h"
+
+#include "common/Error.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <numeric>
+#include <thread>
+
+namespace geolattice {
+
+namespace {
+
+/// Bounding-sphere tree over the samples of one sub-graph. A node also bounds the nozzle axes
+/// of its samples: all lie within `spread` (radians) of `axis`.
+struct SampleTree {
+  struct Node {
+    Vec3 centre = Vec3::Zero();
+    double radius = 0;
+    Vec3 axis = Vec3::UnitZ();
+    double spread = 0;
+    int begin = 0, end = 0;
+    int left = -1, right = -1;
+  };
+  std::vector<int> order;  ///< sample ids
+  std::vector<Node> nodes;
+};
+
+constexpr int kLeafSize = 8;
+
+int buildNode(SampleTree& tree, const MaterialSamples& m, int begin, int end) {
+  const int id = static_cast<int>(tree.nodes.size());
+  tree.nodes.emplace_back();
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo, axisSum = Vec3::Zero();
+  for (int i = begin; i < end; ++i) {
+    const int s = tree.order[i];
+    lo = lo.cwiseMin(m.points[s]);
+    hi = hi.cwiseMax(m.points[s]);
+    axisSum += m.normals[s];
+  }
+  const Vec3 centre = 0.5 * (lo + hi);
+  const double axisNorm = axisSum.norm();
+  const Vec3 axis = axisNorm > 0 ? Vec3(axisSum / axisNorm) : Vec3::UnitZ();
+  double r2 = 0, minCos = 1;
+  for (int i = begin; i < end; ++i) {
+    const int s = tree.order[i];
+    r2 = std::max(r2, (m.points[s] - centre).squaredNorm());
+    minCos = std::min(minCos, axis.dot(m.normals[s]));
+  }
+  int left = -1, right = -1;
+  if (end - begin > kLeafSize) {
+    int dim = 0;
+    (hi - lo).maxCoeff(&dim);
+    const int mid = (begin + end) / 2;
+    std::nth_element(tree.order.begin() + begin, tree.order.begin() + mid, tree.order.begin() + end,
+                     [&](int a, int b) { return m.points[a][dim] < m.points[b][dim]; });
+    left = buildNode(tree, m, begin, mid);
+    right = buildNode(tree, m, mid, end);
+  }
+  SampleTree::Node& n = tree.nodes[id];
+  n.centre = centre;
+  n.radius = std::sqrt(r2);
+  n.axis = axis;
+  n.spread = axisNorm > 0 ? std::acos(std::clamp(minCos, -1.0, 1.0)) + 1e-12 : M_PI;
+  n.begin = begin;
+  n.end = end;
+  n.left = left;
+  n.right = right;
+  return id;
+}
+
+/// Distance from point v (relative to the apex) to the solid cone with unit axis a and
+/// half-angle phi in [0, π] (phi >= π/2 is a half-space or more).
+double distanceToCone(const Vec3& v, const Vec3& a, double phi) {
+  if (phi >= M_PI) {
+    return 0;
+  }
+  const double h = v.dot(a);
+  const double r = std::sqrt(std::max(0.0, v.squaredNorm() - h * h));
+  const double psi = std::atan2(r, h);  // angle of v from the axis
+  if (psi <= phi) {
+    return 0;
+  }
+  const double len = std::sqrt(r * r + h * h);
+  return psi - phi >= M_PI / 2 ? len : len * std::sin(psi - phi);
+}
+
+/// The exact nozzle volume at tip p with unit axis n (NozzleModel.h), in (h, r) form.
+struct ExactNozzle {
+  double tanAngle = 0, length = 0, holderRadius = 0, clearance = 0;
+  bool contains(const Vec3& p, const Vec3& n, const Vec3& x) const {
+    const Vec3 d = x - p;
+    const double h = d.dot(n);
+    if (h <= clearance) {
+      return false;
+    }
+    const double r = (d - h * n).norm();
+    return h <= length ? r < h * tanAngle : r < holderRadius;
+  }
+};
+
+struct PairSearch {
+  const MaterialSamples& m;
+  const ExactNozzle& nozzle;
+  double boundAngle;
+  double reach;  ///< nothing farther than this from a tip is inside the nozzle
+  double clearance;  ///< material with h <= clearance is ignored
+  long long leafTests = 0;
+
+  /// Does any station of tree A (sub-graph i) have material of tree B (sub-graph j) inside its
+  /// nozzle? Dual descent; the station cluster's nozzles lie in ball(c, ρ) ⊕ cone(n̄, NA* + δ).
+  bool collides(const SampleTree& A, const SampleTree& B, std::vector<std::pair<int, int>>& stack) {
+    stack.assign(1, {0, 0});
+    while (!stack.empty()) {
+      const auto [ia, ib] = stack.back();
+      stack.pop_back();
+      const auto& a = A.nodes[ia];
+      const auto& b = B.nodes[ib];
+      const Vec3 d = b.centre - a.centre;
+      const double dn = d.norm();
+      // Highest h = (x - p)·n over the clusters: the material lies below every tip plane.
+      const double hMax = d.dot(a.axis) + b.radius + (dn + b.radius) * 2 * std::sin(0.5 * std::min(a.spread, M_PI)) + a.radius;
+      if (hMax <= clearance || dn > a.radius + b.radius + reach ||
+          distanceToCone(d, a.axis, boundAngle + a.spread) > a.radius + b.radius) {
+        continue;
+      }
+      const bool leafA = a.left < 0, leafB = b.left < 0;
+      if (leafA && leafB) {
+        for (int i = a.begin; i < a.end; ++i) {
+          const int s = A.order[i];
+          for (int j = b.begin; j < b.end; ++j) {
+            ++leafTests;
+            if (nozzle.contains(m.points[s], m.normals[s], m.points[B.order[j]])) {
+              return true;
+            }
+          }
+        }
+        continue;
+      }
+      // Split the larger cluster (a leaf cannot be split).
+      if (leafB || (!leafA && a.radius >= b.radius)) {
+        stack.push_back({a.right, ib});
+        stack.push_back({a.left, ib});
+      } else {
+        stack.push_back({ia, b.right});
+        stack.push_back({ia, b.left});
+      }
+    }
+    return false;
+  }
+};
+
+} // namespace
+
+PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const NozzleModel& model, int threads) {
+  const auto t0 = std::chrono::steady_clock::now();
+  model.validate();
+  if (m.offset.empty()) {
+    throw GeoLatticeError("potential collisions: no sub-graph");
+  }
+  const int K = static_cast<int>(m.offset.size()) - 1;
+  std::vector<SampleTree> trees(K);
+  for (int k = 0; k < K; ++k) {
+    SampleTree& t = trees[k];
+    t.order.resize(m.offset[k + 1] - m.offset[k]);
+    std::iota(t.order.begin(), t.order.end(), m.offset[k]);
+    if (!t.order.empty()) {
+      buildNode(t, m, 0, static_cast<int>(t.order.size()));
+    }
+  }
+  ExactNozzle nozzle;
+  nozzle.tanAngle = std::tan(model.halfAngleDeg * M_PI / 180.0);
+  nozzle.length = model.length;
+  nozzle.holderRadius = model.holderRadius;
+  nozzle.clearance = model.tipClearance;
+  const double boundAngle = model.boundingHalfAngleRad();
+
+  PotentialCollisions out;
+  out.pcg.resize(K);
+  const int workers = std::max(1, std::min(K, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency())));
+  std::atomic<int> next{0};
+  std::vector<long long> tests(workers, 0);
+  auto work = [&](int w) {
+    PairSearch search{m, nozzle, boundAngle, model.reach(), model.tipClearance};
+    std::vector<std::pair<int, int>> stack;
+    for (int i = next++; i < K; i = next++) {
+      if (trees[i].nodes.empty()) {
+        continue;
+      }
+      for (int j = 0; j < K; ++j) {
+        if (j != i && !trees[j].nodes.empty() && search.collides(trees[i], trees[j], stack)) {
+          out.pcg[i].push_back(j);
+        }
+      }
+    }
+    tests[w] = search.leafTests;
+  };
+  std::vector<std::thread> pool;
+  for (int w = 1; w < workers; ++w) {
+    pool.emplace_back(work, w);
+  }
+  work(0);
+  for (auto& t : pool) {
+    t.join();
+  }
+  for (int i = 0; i < K; ++i) {
+    out.pairs += static_cast<long long>(out.pcg[i].size());
+  }
+  out.leafTests = std::accumulate(tests.begin(), tests.end(), 0LL);
+  out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return out;
+}
+
+} // namespace geolattice

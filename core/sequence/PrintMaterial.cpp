@@ -1,0 +1,88 @@
+#include "sequence/PrintMaterial.h"
+
+#include "common/Error.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace geolattice {
+
+namespace {
+Vec3 unitOr(const Vec3& v, const Vec3& fallback) {
+  const double n = v.norm();
+  return n > 0 ? Vec3(v / n) : fallback;
+}
+} // namespace
+
+MaterialSamples sampleLatticeMaterial(const LatticeGraph& g, double spacing) {
+  if (!(spacing > 0) || !std::isfinite(spacing)) {
+    std::ostringstream s;
+    s << "sample spacing must be > 0 mm (got " << spacing << ")";
+    throw GeoLatticeError(s.str());
+  }
+  const size_t V = g.points.size(), E = g.edges.size(), K = g.subgraphs.size();
+  if (g.normals.size() != V || g.vertexSubgraph.size() != V || g.edgeSubgraph.size() != E) {
+    throw GeoLatticeError("lattice arrays do not match its points and edges (normals, sub-graph ids)");
+  }
+  // Count per sub-graph, then fill in place (samples grouped by sub-graph).
+  std::vector<int> count(K + 1, 0);
+  auto checkSubgraph = [K](int s) {
+    if (s >= static_cast<int>(K)) {
+      throw GeoLatticeError("lattice sub-graph id out of range");
+    }
+  };
+  for (size_t v = 0; v < V; ++v) {
+    checkSubgraph(g.vertexSubgraph[v]);
+    if (g.vertexSubgraph[v] >= 0) {
+      ++count[g.vertexSubgraph[v] + 1];
+    }
+  }
+  std::vector<int> interior(E, 0);
+  for (size_t e = 0; e < E; ++e) {
+    const auto [a, b] = g.edges[e];
+    if (a < 0 || b < 0 || a >= static_cast<int>(V) || b >= static_cast<int>(V)) {
+      throw GeoLatticeError("lattice edge refers to a missing vertex");
+    }
+    checkSubgraph(g.edgeSubgraph[e]);
+    if (g.edgeSubgraph[e] < 0) {
+      continue;
+    }
+    const double len = (g.points[b] - g.points[a]).norm();
+    interior[e] = std::max(0, static_cast<int>(std::ceil(len / spacing)) - 1);
+    count[g.edgeSubgraph[e] + 1] += interior[e];
+  }
+  MaterialSamples m;
+  m.offset.assign(K + 1, 0);
+  for (size_t s = 0; s < K; ++s) {
+    m.offset[s + 1] = m.offset[s] + count[s + 1];
+  }
+  const size_t S = m.offset[K];
+  m.points.resize(S);
+  m.normals.resize(S);
+  m.subgraph.resize(S);
+  std::vector<int> next(m.offset.begin(), m.offset.end() - 1);
+  const Vec3 up(0, 0, 1);
+  for (size_t v = 0; v < V; ++v) {
+    const int s = g.vertexSubgraph[v];
+    if (s >= 0) {
+      const int k = next[s]++;
+      m.points[k] = g.points[v];
+      m.normals[k] = unitOr(g.normals[v], up);
+      m.subgraph[k] = s;
+    }
+  }
+  for (size_t e = 0; e < E; ++e) {
+    const int s = g.edgeSubgraph[e];
+    const auto [a, b] = g.edges[e];
+    for (int i = 1; i <= interior[e]; ++i) {
+      const double t = static_cast<double>(i) / (interior[e] + 1);
+      const int k = next[s]++;
+      m.points[k] = (1 - t) * g.points[a] + t * g.points[b];
+      m.normals[k] = unitOr((1 - t) * g.normals[a] + t * g.normals[b], unitOr(g.normals[a], up));
+      m.subgraph[k] = s;
+    }
+  }
+  return m;
+}
+
+} // namespace geolattice

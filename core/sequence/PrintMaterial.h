@@ -1,0 +1,26 @@
+#pragma once
+/// @file PrintMaterial.h
+/// @brief The printed material of each lattice sub-graph as sample points with nozzle
+/// directions: every lattice vertex plus evenly spaced points inside longer edges. The
+/// sequencer (potential collisions) and the collision verifier both test these points, so
+/// their verdicts refer to the same material; each computes its own geometry.
+#include "lattice/LatticeGraph.h"
+
+#include <vector>
+
+namespace geolattice {
+
+/// @brief Samples grouped by sub-graph: sub-graph s owns [offset[s], offset[s+1]).
+struct MaterialSamples {
+  std::vector<Vec3> points;     ///< #S positions (mm)
+  std::vector<Vec3> normals;    ///< #S unit nozzle axes (interpolated along edges)
+  std::vector<int> subgraph;    ///< #S sub-graph id
+  std::vector<int> offset;      ///< #subgraphs + 1
+};
+
+/// Samples the lattice: each vertex once, and ceil(len / spacing) - 1 interior points on an edge
+/// of length len. Throws GeoLatticeError for spacing <= 0 or a lattice whose per-vertex or
+/// per-edge arrays do not match its points. Vertices without a sub-graph (-1) are skipped.
+MaterialSamples sampleLatticeMaterial(const LatticeGraph& lattice, double spacing);
+
+} // namespace geolattice

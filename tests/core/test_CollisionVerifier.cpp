@@ -1,0 +1,159 @@
+// The independent collision verifier on hand-built cases: two towers printed in the wrong
+// order must collide, layer by layer must not; the holder, the tip clearance and bad input.
+#include "collision/CollisionVerifier.h"
+#include "common/Error.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+using namespace geolattice;
+using V = Eigen::Vector3d;
+
+namespace {
+
+/// Two vertical towers of points (x = 0 and x = gap), 0.6 mm apart in z, nozzle axis +z.
+/// towerFirst: tower A completely, then B; otherwise layer by layer (A, B at each height).
+struct Towers {
+  std::vector<V> points, normals;
+  std::vector<int> time;
+};
+
+Towers towers(double gap, int levels, bool towerFirst) {
+  Towers t;
+  for (int tower = 0; tower < 2; ++tower) {
+    for (int k = 0; k < levels; ++k) {
+      t.points.push_back(V(tower * gap, 0, 0.6 * k));
+      t.normals.push_back(V(0, 0, 1));
+      t.time.push_back(towerFirst ? tower * levels + k : 2 * k + tower);
+    }
+  }
+  return t;
+}
+
+NozzleModel cone(double deg) {
+  NozzleModel n;
+  n.halfAngleDeg = deg;
+  return n;
+}
+
+} // namespace
+
+TEST(CollisionVerifier, TowersInTheWrongOrderCollide) {
+  const Towers t = towers(3.0, 20, true);
+  const CollisionReport r = verifyNozzleClearance(t.points, t.normals, t.time, cone(60));
+  EXPECT_FALSE(r.collisionFree);
+  ASSERT_FALSE(r.violations.empty());
+  // The first violation: printing the bottom of tower B, tower A stands inside the cone.
+  const CollisionViolation& v = r.violations.front();
+  EXPECT_EQ(v.station, 20);  // B's first point
+  EXPECT_NEAR(v.stationPoint.x(), 3.0, 1e-12);
+  EXPECT_NEAR(v.obstaclePoint.x(), 0.0, 1e-12);
+  EXPECT_NEAR(v.radial, 3.0, 1e-12);
+  EXPECT_GT(v.height, 3.0 / std::tan(60 * M_PI / 180));
+  // Exactly the B points with A material higher than radial / tan(NA) above them collide:
+  // A's top is at 11.4 mm; B at height z collides iff 11.4 - z > 3 / tan 60° = 1.732.
+  int expected = 0;
+  for (int k = 0; k < 20; ++k) {
+    expected += 11.4 - 0.6 * k > 3.0 / std::tan(60 * M_PI / 180);
+  }
+  EXPECT_EQ(r.violatingStations, expected);
+  EXPECT_EQ(r.stations, 40);
+}
+
+TEST(CollisionVerifier, TowersLayerByLayerDoNotCollide) {
+  const Towers t = towers(3.0, 20, false);
+  EXPECT_TRUE(verifyNozzleClearance(t.points, t.normals, t.time, cone(60)).collisionFree);
+  EXPECT_TRUE(verifyNozzleClearance(t.points, t.normals, t.time, cone(89)).collisionFree);
+}
+
+TEST(CollisionVerifier, SlenderNozzleClearsTheOtherTower) {
+  // 3 mm away, 11.4 mm high: inside a cone only if tan NA > 3 / 11.4, NA > 14.7°.
+  const Towers t = towers(3.0, 20, true);
+  EXPECT_TRUE(verifyNozzleClearance(t.points, t.normals, t.time, cone(14.5)).collisionFree);
+  EXPECT_FALSE(verifyNozzleClearance(t.points, t.normals, t.time, cone(15.0)).collisionFree);
+}
+
+TEST(CollisionVerifier, HolderCollidesAboveTheNozzleLength) {
+  const Towers t = towers(3.0, 20, true);
+  NozzleModel n = cone(10);  // the cone alone clears tower A
+  EXPECT_TRUE(verifyNozzleClearance(t.points, t.normals, t.time, n).collisionFree);
+  n.length = 5.0;
+  n.holderRadius = 2.9;  // holder just misses
+  EXPECT_TRUE(verifyNozzleClearance(t.points, t.normals, t.time, n).collisionFree);
+  n.holderRadius = 3.1;  // holder reaches tower A, which stands more than 5 mm above B's bottom
+  const CollisionReport r = verifyNozzleClearance(t.points, t.normals, t.time, n);
+  EXPECT_FALSE(r.collisionFree);
+  EXPECT_GT(r.violations.front().height, 5.0);
+}
+
+TEST(CollisionVerifier, TiltedAxisAndTipClearance) {
+  // One earlier point 1 mm above the tip and 1 mm to the side: 45° from +z.
+  const std::vector<V> p = {V(1, 0, 1), V(0, 0, 0)};
+  const std::vector<int> time = {0, 1};
+  std::vector<V> n = {V(0, 0, 1), V(0, 0, 1)};
+  EXPECT_TRUE(verifyNozzleClearance(p, n, time, cone(44.9)).collisionFree);
+  EXPECT_FALSE(verifyNozzleClearance(p, n, time, cone(45.1)).collisionFree);
+  n[1] = V(1, 0, 1);  // axis points at it (re-normalised)
+  EXPECT_FALSE(verifyNozzleClearance(p, n, time, cone(1)).collisionFree);
+  n[1] = V(-1, 0, 1);  // axis tilted away: 90° off
+  EXPECT_TRUE(verifyNozzleClearance(p, n, time, cone(89)).collisionFree);
+  NozzleModel c = cone(60);
+  n[1] = V(0, 0, 1);
+  c.tipClearance = 1.0;  // material at h = 1 is level with the clearance: ignored
+  EXPECT_TRUE(verifyNozzleClearance(p, n, time, c).collisionFree);
+  // Same print time: not an obstacle (a sub-graph is not tested against itself).
+  EXPECT_TRUE(verifyNozzleClearance(p, n, {0, 0}, cone(60)).collisionFree);
+  // Material printed later is not an obstacle.
+  EXPECT_TRUE(verifyNozzleClearance(p, n, {1, 0}, cone(60)).collisionFree);
+}
+
+TEST(CollisionVerifier, ManyPointsMatchBruteForce) {
+  // Random cloud with random axes: the kd-tree query must agree with an all-pairs check.
+  std::srand(7);
+  auto rnd = [] { return std::rand() / double(RAND_MAX); };
+  std::vector<V> p, n;
+  std::vector<int> time;
+  for (int i = 0; i < 1500; ++i) {
+    p.push_back(V(20 * rnd(), 20 * rnd(), 20 * rnd()));
+    n.push_back(V(rnd() - 0.5, rnd() - 0.5, 1.0).normalized());
+    time.push_back(static_cast<int>(30 * rnd()));
+  }
+  NozzleModel nz = cone(20);
+  nz.length = 4;
+  nz.holderRadius = 3;
+  const CollisionReport r = verifyNozzleClearance(p, n, time, nz, 100000);
+  long long brute = 0;
+  const double c2 = std::pow(std::cos(20 * M_PI / 180), 2);
+  for (size_t k = 0; k < p.size(); ++k) {
+    bool hit = false;
+    for (size_t q = 0; q < p.size() && !hit; ++q) {
+      if (time[q] >= time[k]) continue;
+      const V d = p[q] - p[k];
+      const double h = d.dot(n[k]);
+      if (h <= 0) continue;
+      const double r2 = d.squaredNorm() - h * h;
+      hit = h <= 4 ? h * h > d.squaredNorm() * c2 : r2 < 9;
+    }
+    brute += hit;
+  }
+  EXPECT_EQ(r.violatingStations, brute);
+  EXPECT_GT(brute, 0);
+  EXPECT_LT(brute, static_cast<long long>(p.size()));
+}
+
+TEST(CollisionVerifier, BadInput) {
+  const std::vector<V> p = {V(0, 0, 0), V(0, 0, 1)};
+  const std::vector<V> n = {V(0, 0, 1), V(0, 0, 1)};
+  EXPECT_THROW(verifyNozzleClearance(p, n, {0}, cone(45)), GeoLatticeError);                     // sizes
+  EXPECT_THROW(verifyNozzleClearance(p, {V(0, 0, 1), V::Zero()}, {0, 1}, cone(45)), GeoLatticeError);  // zero axis
+  EXPECT_THROW(verifyNozzleClearance({V(0, 0, 0), V(0, 0, NAN)}, n, {0, 1}, cone(45)), GeoLatticeError);
+  EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, cone(0)), GeoLatticeError);   // NA outside (0, 90)
+  EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, cone(90)), GeoLatticeError);
+  EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, cone(-5)), GeoLatticeError);
+  NozzleModel bad = cone(45);
+  bad.length = 0;
+  EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, bad), GeoLatticeError);
+  EXPECT_TRUE(verifyNozzleClearance({}, {}, {}, cone(45)).collisionFree);  // nothing printed
+}
