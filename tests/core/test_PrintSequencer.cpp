@@ -3,6 +3,11 @@
 // the independent collision verifier.
 #include "collision/CollisionVerifier.h"
 #include "common/Error.h"
+#include "gdf/GeodesicDistanceFields.h"
+#include "gdf/HeatSources.h"
+#include "io/MeshFileIO.h"
+#include "slicer/CurvedLayerSlicer.h"
+#include "tetrahedralize/SurfaceTetrahedralizer.h"
 #include "sequence/PotentialCollisions.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
@@ -12,6 +17,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <string>
 
 using namespace geolattice;
 
@@ -182,6 +188,69 @@ TEST(PrintSequencer, StrategiesOnTwoTowers) {
       EXPECT_TRUE(verified(m, dpt, n));
     }
   }
+}
+
+TEST(PrintSequencer, ThreeBranchTreeAcceptance) {
+  // The acceptance on the real pipeline (coarser than bench_sequence for test time):
+  // A4 and best free of avoidable collisions at every NA, no worse than LPT, best no worse than
+  // A4, and DPT reported as colliding at a wide nozzle.
+  TriangleSurface surface = readObj(std::string(GEOLATTICE_TESTDATA) + "/three_branch_tree.obj");
+  TetrahedralizeOptions to;
+  to.targetEdgeLength = 2.0;
+  const TetMesh mesh = tetrahedralizeSurface(surface, to).mesh;
+  const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
+  const CurvedLayers layers =
+      sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
+  LatticeOptions lo;
+  lo.alphaWidth = lo.betaWidth = 4.0;
+  const LatticeGraph lattice = buildLatticeGraph(layers, lo);
+  const SkeletonTree tree = buildSkeletonTree(mesh, f.gamma, lattice);
+  EXPECT_GE(tree.splitNodes, 1);
+  const MaterialSamples m = sampleLatticeMaterial(lattice, 1.0);
+  const SkeletonAncestry ancestry(tree);
+  CollisionExemption exemption;
+  exemption.group = m.subgraph;
+  exemption.unavoidable = [&](int station, int obstacle) { return ancestry.isAncestor(obstacle, station); };
+  auto check = [&](const PrintSequence& s, const NozzleModel& n) {
+    std::vector<int> time(m.points.size());
+    for (size_t i = 0; i < time.size(); ++i) {
+      time[i] = s.printIndex[m.subgraph[i]];
+    }
+    return verifyNozzleClearance(m.points, m.normals, time, n, 5, &exemption);
+  };
+  bool dptCollided = false;
+  for (double na : {75.0, 45.0, 15.0}) {
+    const NozzleModel n = cone(na);
+    const PotentialCollisions pcg = computePotentialCollisions(m, n);
+    SequenceOptions o;
+    o.strategy = SequenceStrategy::LayerPriority;
+    const PrintSequence lpt = sequencePrint(tree, m, nullptr, o);
+    o.strategy = SequenceStrategy::DepthPriority;
+    const PrintSequence dpt = sequencePrint(tree, m, nullptr, o);
+    o.strategy = SequenceStrategy::Greedy;
+    const PrintSequence a4 = sequencePrint(tree, m, &pcg, o);
+    o.strategy = SequenceStrategy::Rollout;
+    const PrintSequence best = sequencePrint(tree, m, &pcg, o);
+    const CollisionReport rl = check(lpt, n), rd = check(dpt, n), ra = check(a4, n), rb = check(best, n);
+    std::printf("[sequence] tree %zu nodes NA %.0f: LPT %d/%.0f  DPT %d/%.0f %s  A4 %d/%.0f %s  best %d/%.0f %s; "
+                "unavoidable stations %lld\n",
+                tree.nodes.size(), na, lpt.retractions, lpt.airLength, dpt.retractions, dpt.airLength,
+                rd.orderCollisionFree ? "ok" : "collides", a4.retractions, a4.airLength,
+                ra.orderCollisionFree ? "ok" : "collides", best.retractions, best.airLength,
+                rb.orderCollisionFree ? "ok" : "collides", rl.unavoidableStations);
+    EXPECT_TRUE(rl.orderCollisionFree);
+    EXPECT_TRUE(ra.orderCollisionFree) << "A4 at NA " << na;
+    EXPECT_TRUE(rb.orderCollisionFree) << "best at NA " << na;
+    EXPECT_EQ(a4.forcedSteps, 0);
+    EXPECT_LE(a4.retractions, lpt.retractions);
+    EXPECT_LE(a4.airLength, lpt.airLength);
+    EXPECT_LE(best.retractions, a4.retractions);
+    EXPECT_LE(best.airLength, a4.airLength + 1e-9);
+    // The unavoidable part is the same whatever the order.
+    EXPECT_EQ(ra.unavoidableStations, rl.unavoidableStations);
+    dptCollided |= !rd.orderCollisionFree;
+  }
+  EXPECT_TRUE(dptCollided) << "depth first must collide with a wide nozzle on three leaning branches";
 }
 
 TEST(PrintSequencer, MutualBlockingIsForcedAndReported) {
