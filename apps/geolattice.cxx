@@ -5,13 +5,19 @@
 #include "OutputFiles.h"
 
 #include "common/Error.h"
+#include "CliOptions.h"
+#include "SequenceCsv.h"
+#include "VerifyCommand.h"
 #include "vtkGLArrayNames.h"
+#include "vtkGLCollisionVerifier.h"
 #include "vtkGLCurvedLayerSlicer.h"
 #include "vtkGLGeodesicDistanceFields.h"
 #include "vtkGLLatticeInfill.h"
 #include "vtkGLMeshReader.h"
 #include "vtkGLOverhangAnalysis.h"
 #include "vtkGLPlaceOnPlatform.h"
+#include "vtkGLPrintSequencer.h"
+#include "vtkGLSkeletonTree.h"
 #include "vtkGLTetrahedralizeSurface.h"
 
 #include <vtkAlgorithm.h>
@@ -47,25 +53,36 @@ namespace {
 namespace gl = geolattice;
 using Clock = std::chrono::steady_clock;
 
-constexpr const char* kStages[] = { "mesh", "gdf", "layers", "lattice" };
+constexpr const char* kStages[] = { "mesh", "gdf", "layers", "lattice", "sequence" };
+constexpr const char* kStrategies[] = { "lpt", "dpt", "a4", "best" }; // = vtkGLPrintSequencer::Strategy 0..3
 
 const char* kUsage = R"(geolattice - multi-axis support-free printing with lattice infill (GeoLattice )" GEOLATTICE_VERSION R"()
 
 Usage:
   geolattice run MODEL -o OUTDIR [options]
+  geolattice verify OUTDIR [nozzle options] [--allow-unavoidable]
   geolattice --help | --version
 
 MODEL is a closed triangle surface (.stl .obj .ply .vtp .off) or a tet mesh (.vtu .tet .node
 .ele; a tet mesh skips meshing). Outputs in OUTDIR: tets.vtu (the tet mesh), fields.vtu (tets
 with Gamma, Alpha, Beta), layers.vtp (curved layers, cell array LayerId), overhang.vtp (the
 part's surface with the overhang angles of planar and curved slicing), lattice.vtp (the lattice
-infill graph of every layer: line cells with EdgeKind, LayerId, SubgraphId), report.json (per
-stage: seconds, counts, results). Files are written to a temporary name first, so nothing
-partial is left behind on failure.
+infill graph of every layer: line cells with EdgeKind, LayerId, SubgraphId and, after the
+sequence stage, PrintOrder), skeleton.vtp (one node per connected sub-graph, tree edges, point
+array PrintOrder), sequence.vtp (the printing order as a polyline through the sub-graphs' start
+points), sequence.csv (order, sub-graph, layer, start and end point, retraction), collisions.vtp
+(the first nozzle collisions found by the verifier), report.json (per stage: seconds, counts,
+results). Files are written to a temporary name first, so nothing partial is left behind on
+failure.
+
+`verify OUTDIR` re-checks the printing order saved in OUTDIR (lattice.vtp with PrintOrder,
+nozzle from report.json unless given) with the independent collision verifier; exit status 0
+when collision-free, 3 when the nozzle hits earlier material (with --allow-unavoidable: only
+when an order could have avoided it).
 
 Options:
   -o, --output DIR        output directory (created if missing)                     [required]
-  --until STAGE           last stage to run: mesh | gdf | layers | lattice           [lattice]
+  --until STAGE           last stage: mesh | gdf | layers | lattice | sequence       [sequence]
  Model placement (models come in arbitrary units; GeoLattice works in millimetres):
   --scale F               uniform scale factor applied to the model                  [1]
   --fit-size MM           scale so the largest bounding-box side is MM (replaces --scale) [off]
@@ -95,17 +112,24 @@ Options:
   --alpha-phase MM        offset of the α levels                                     [0]
   --beta-phase MM         offset of the β levels                                     [0]
   --min-subgraph MM       drop connected lattice pieces shorter than this            [0]
+ Printing sequence (skeleton tree, paper Section 3.1) and collision check:
+  --strategy NAME         lpt | dpt | a4 | best (best = rollout of a4, never worse)  [best]
+  --nozzle-angle DEG      half-angle NA of the nozzle's bounding cone, in (0, 90)    [45]
+  --nozzle-length MM      cone length; above it the holder (0 = cone only)           [0]
+  --holder-radius MM      radius of the holder cylinder above the nozzle length      [0]
+  --tip-clearance MM      ignore material at most this high above the nozzle tip     [0]
+  --sample-spacing MM     spacing of the material samples tested for collisions      [1]
  Output:
   -q, --quiet             no progress lines on stdout
 
 Progress goes to stdout. Exit status: 0 on success; 1 on an error (one line on stderr naming
-the problem); 2 on bad usage (one line on stderr).
+the problem); 2 on bad usage (one line on stderr); 3 (verify only) on a collision.
 )";
 
 struct Options {
   std::string model;
   std::string outDir;
-  std::string until = "lattice";
+  std::string until = "sequence";
   double scale = 1.0;
   double fitSize = 0.0;
   bool center = true;
@@ -127,24 +151,14 @@ struct Options {
   double alphaPhase = 0;
   double betaPhase = 0;
   double minSubgraph = 0;
+  std::string strategy = "best";
+  geolattice::NozzleOptions nozzle;
   bool quiet = false;
 };
 
-struct UsageError : std::runtime_error
-{
-  using std::runtime_error::runtime_error;
-};
+using geolattice::UsageError;
+using geolattice::parseNumber;
 
-double parseNumber(const std::string& flag, const std::string& text)
-{
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || !std::isfinite(v))
-  {
-    throw UsageError(flag + " expects a number, got '" + text + "'");
-  }
-  return v;
-}
 
 Options parseArguments(int argc, char** argv)
 {
@@ -208,6 +222,8 @@ Options parseArguments(int argc, char** argv)
     else if (arg == "--alpha-phase") o.alphaPhase = parseNumber(arg, value());
     else if (arg == "--beta-phase") o.betaPhase = parseNumber(arg, value());
     else if (arg == "--min-subgraph") o.minSubgraph = parseNumber(arg, value());
+    else if (arg == "--strategy") o.strategy = value();
+    else if (o.nozzle.parse(arg, value)) {}
     else if (arg == "-q" || arg == "--quiet") o.quiet = true;
     else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
     else if (o.model.empty()) o.model = arg;
@@ -223,7 +239,11 @@ Options parseArguments(int argc, char** argv)
   }
   if (std::find(std::begin(kStages), std::end(kStages), o.until) == std::end(kStages))
   {
-    throw UsageError("--until must be one of: mesh, gdf, layers, lattice (got '" + o.until + "')");
+    throw UsageError("--until must be one of: mesh, gdf, layers, lattice, sequence (got '" + o.until + "')");
+  }
+  if (std::find(std::begin(kStrategies), std::end(kStrategies), o.strategy) == std::end(kStrategies))
+  {
+    throw UsageError("--strategy must be one of: lpt, dpt, a4, best (got '" + o.strategy + "')");
   }
   if (o.base != "lowest" && o.base != "faces")
   {
@@ -502,6 +522,61 @@ public:
       s.set("irregular_vertices", count(gl::arrays::LatticeIrregularVertices));
       this->Write(graph, "lattice.vtp");
     }
+    if (Opt.until == "lattice")
+    {
+      return this->Finish(report);
+    }
+
+    // Stage: skeleton tree, printing order, independent collision check.
+    vtkNew<vtkGLSkeletonTree> skeleton;
+    skeleton->SetInputConnection(0, lattice->GetOutputPort());
+    skeleton->SetInputConnection(1, gdf->GetOutputPort());
+    vtkDataObject* tree = this->Execute("skeleton", { skeleton }, skeleton);
+    {
+      auto& s = report.object("skeleton");
+      s.set("seconds", this->LastSeconds);
+      s.set("nodes", static_cast<long long>(vtkDataSet::SafeDownCast(tree)->GetNumberOfPoints()));
+      s.set("edges", static_cast<long long>(vtkDataSet::SafeDownCast(tree)->GetNumberOfCells()));
+      s.set("roots", static_cast<long long>(fieldValue(tree, gl::arrays::SkeletonRoots)));
+      s.set("split_nodes", static_cast<long long>(fieldValue(tree, gl::arrays::SkeletonSplitNodes)));
+      s.set("merge_nodes", static_cast<long long>(fieldValue(tree, gl::arrays::SkeletonMergeNodes)));
+      s.set("floating_nodes", static_cast<long long>(fieldValue(tree, gl::arrays::SkeletonFloatingNodes)));
+    }
+    vtkNew<vtkGLPrintSequencer> sequencer;
+    sequencer->SetInputConnection(0, lattice->GetOutputPort());
+    sequencer->SetInputConnection(1, skeleton->GetOutputPort());
+    sequencer->SetStrategy(static_cast<int>(
+      std::find(std::begin(kStrategies), std::end(kStrategies), Opt.strategy) - std::begin(kStrategies)));
+    Opt.nozzle.apply(sequencer.Get());
+    this->Execute("sequence", { sequencer }, sequencer);
+    const double sequenceSeconds = this->LastSeconds;
+    vtkDataObject* sequenced = sequencer->GetOutputDataObject(0);
+    vtkNew<vtkGLCollisionVerifier> verifier;
+    verifier->SetInputConnection(sequencer->GetOutputPort(0));
+    Opt.nozzle.apply(verifier.Get());
+    vtkDataObject* collisions = this->Execute("verify", { verifier }, verifier, /*allowEmpty=*/true);
+    {
+      auto& s = report.object("sequence");
+      s.set("seconds", sequenceSeconds);
+      s.set("verify_seconds", this->LastSeconds);
+      s.set("strategy", Opt.strategy);
+      Opt.nozzle.report(s);
+      s.set("subgraphs", static_cast<long long>(vtkDataSet::SafeDownCast(tree)->GetNumberOfPoints()));
+      s.set("retractions", static_cast<long long>(fieldValue(sequenced, gl::arrays::SequenceRetractions)));
+      s.set("air_length_mm", fieldValue(sequenced, gl::arrays::SequenceAirLength));
+      s.set("pcg_pairs", static_cast<long long>(fieldValue(sequenced, gl::arrays::SequencePcgPairs)));
+      s.set("pcg_seconds", fieldValue(sequenced, gl::arrays::SequencePcgSeconds));
+      s.set("unavoidable_pcg_pairs", static_cast<long long>(fieldValue(sequenced, gl::arrays::SequenceUnavoidablePairs)));
+      s.set("forced_steps", static_cast<long long>(fieldValue(sequenced, gl::arrays::SequenceForcedSteps)));
+      gl::reportCollisions(collisions, s);
+      this->Write(sequenced, "lattice.vtp");
+      this->Write(sequencer->GetOutputDataObject(1), "skeleton.vtp");
+      this->Write(sequencer->GetOutputDataObject(2), "sequence.vtp");
+      this->Write(collisions, "collisions.vtp");
+      const std::string csv = (std::filesystem::path(Opt.outDir) / "sequence.csv").string();
+      gl::writeSequenceCsv(vtkPolyData::SafeDownCast(sequenced), vtkPolyData::SafeDownCast(sequencer->GetOutputDataObject(2)), csv);
+      this->Written.push_back(csv);
+    }
     return this->Finish(report);
   }
 
@@ -544,7 +619,10 @@ private:
   {
     const std::string path = (std::filesystem::path(Opt.outDir) / name).string();
     gl::writeVtkXml(data, path);
-    this->Written.push_back(path);
+    if (std::find(this->Written.begin(), this->Written.end(), path) == this->Written.end())
+    {
+      this->Written.push_back(path);
+    }
   }
 
   int Finish(gl::JsonObject& report)
@@ -598,6 +676,10 @@ int main(int argc, char** argv)
   vtkOutputWindow::SetInstance(silent);
   try
   {
+    if (argc >= 2 && !std::strcmp(argv[1], "verify"))
+    {
+      return geolattice::runVerifyCommand(argc, argv);
+    }
     const Options options = parseArguments(argc, argv);
     return Pipeline(options).Run();
   }

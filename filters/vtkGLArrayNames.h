@@ -78,6 +78,53 @@ constexpr const char* LatticeBetaLevels = "LatticeBetaLevels";             ///< 
 constexpr const char* SubgraphLayer = "SubgraphLayer";                     ///< per sub-graph: layer index i
 constexpr const char* SubgraphLength = "SubgraphLength";                   ///< per sub-graph: total edge length (mm)
 constexpr const char* SubgraphCentroid = "SubgraphCentroid";               ///< per sub-graph: 3 values, length-weighted (mm)
+// Skeleton tree output (vtkGLSkeletonTree): one point per node = sub-graph G_{i,j} at its
+// centroid, one line cell (lower, upper) per edge. Its point data also holds LayerId (here the
+// lattice layer 0..L-1), SubgraphId (= NodeId), Gamma (φ of the layer, mm) and SubgraphLength (mm).
+constexpr const char* NodeId = "NodeId";             ///< point data (int): node index = sub-graph id
+constexpr const char* LowerCount = "LowerCount";     ///< point data (int): adjacent nodes on the layer below
+constexpr const char* UpperCount = "UpperCount";     ///< point data (int): adjacent nodes on the layer above
+// Field data of vtkGLSkeletonTree (1 value each; LayerValues above holds φ per lattice layer).
+constexpr const char* SkeletonRoots = "SkeletonRoots";                 ///< nodes without lower node
+constexpr const char* SkeletonFloatingNodes = "SkeletonFloatingNodes"; ///< roots above the lowest layer (support dropped)
+constexpr const char* SkeletonMergeNodes = "SkeletonMergeNodes";       ///< nodes with more than one lower node
+constexpr const char* SkeletonSplitNodes = "SkeletonSplitNodes";       ///< nodes with more than one upper node
+constexpr const char* SkeletonSeconds = "SkeletonSeconds";             ///< wall time (s)
+// Print sequencer (vtkGLPrintSequencer).
+constexpr const char* PrintOrder = "PrintOrder";     ///< cell + point data (int): position of the sub-graph in the printing order
+constexpr const char* Retraction = "Retraction";     ///< cell data of the order polyline (int): 1 = the transition retracts
+// Field data of vtkGLPrintSequencer, on all three outputs (1 value each unless noted).
+constexpr const char* SequenceStrategy = "SequenceStrategy";         ///< vtkStringArray: "lpt", "dpt", "a4" or "best"
+constexpr const char* SequenceRetractions = "SequenceRetractions";   ///< transitions that are not to an upper node
+constexpr const char* SequenceAirLength = "SequenceAirLength";       ///< straight air moves end -> start summed (mm)
+constexpr const char* SequenceForcedSteps = "SequenceForcedSteps";   ///< steps that violated Criterion 2 (mutual PCGs: a collision)
+constexpr const char* SequenceSeconds = "SequenceSeconds";           ///< wall time of the ordering (s)
+constexpr const char* SequencePcgPairs = "SequencePcgPairs";         ///< potential collision pairs (0 for LPT, DPT)
+constexpr const char* SequencePcgSeconds = "SequencePcgSeconds";     ///< wall time of the PCGs (s)
+/// PCG entries j of i where j is a skeleton ancestor of i: collisions no order avoids (Criterion 1
+/// prints j first), left out of Criterion 2.
+constexpr const char* SequenceUnavoidablePairs = "SequenceUnavoidablePairs";
+/// 2 values per skeleton edge: (lower, upper) sub-graph ids. The collision verifier uses it to
+/// recognise obstacles of a skeleton ancestor (unavoidable collisions).
+constexpr const char* SkeletonEdges = "SkeletonEdges";
+constexpr const char* NozzleAngleDeg = "NozzleAngleDeg";             ///< nozzle half-angle NA used (degrees)
+constexpr const char* SequenceOrder = "SequenceOrder";               ///< per position: sub-graph id
+constexpr const char* SequenceStart = "SequenceStart";               ///< per position: 3 values, first printed point (mm)
+constexpr const char* SequenceEnd = "SequenceEnd";                   ///< per position: 3 values, last printed point (mm)
+// Collision verifier (vtkGLCollisionVerifier): per reported violation a station and an
+// obstacle point joined by a line.
+constexpr const char* ViolationIndex = "ViolationIndex"; ///< point data (int): index of the violation (0 = first in print time)
+constexpr const char* Role = "Role";                     ///< point data (int): a collisionrole::* value
+constexpr const char* Height = "Height";                 ///< point data: obstacle height above the tip along the nozzle axis (mm)
+constexpr const char* Radial = "Radial";                 ///< point data: obstacle distance from the nozzle axis (mm)
+constexpr const char* Unavoidable = "Unavoidable";       ///< point data (int): 1 = all obstacles of the station are skeleton ancestors
+// Field data of vtkGLCollisionVerifier (1 value each).
+constexpr const char* CollisionFree = "CollisionFree";                         ///< int: 1 = no violation, 0 = collision
+constexpr const char* CollisionStations = "CollisionStations";                 ///< nozzle stations (sample points) checked
+constexpr const char* CollisionViolatingStations = "CollisionViolatingStations"; ///< stations with earlier material inside the nozzle
+constexpr const char* CollisionUnavoidableStations = "CollisionUnavoidableStations"; ///< of those, stations whose obstacles are all skeleton ancestors
+constexpr const char* CollisionOrderFree = "CollisionOrderFree";               ///< int: 1 = no violation except unavoidable ones
+constexpr const char* CollisionSeconds = "CollisionSeconds";                   ///< wall time (s)
 } // namespace arrays
 
 /// Values of the VertexKind and EdgeKind arrays (= geolattice::LatticeVertexKind / LatticeEdgeKind).
@@ -90,5 +137,11 @@ constexpr int EdgeAlpha = 0;          ///< piece of an α-isoline
 constexpr int EdgeBeta = 1;           ///< piece of a β-isoline
 constexpr int EdgeBoundary = 2;       ///< piece of the layer boundary
 } // namespace latticekind
+
+/// Values of the Role array of vtkGLCollisionVerifier.
+namespace collisionrole {
+constexpr int Station = 0;  ///< the nozzle tip (the point being printed)
+constexpr int Obstacle = 1; ///< earlier material inside the nozzle volume there
+} // namespace collisionrole
 } // namespace geolattice
 #endif

@@ -1,19 +1,26 @@
 #include "vtkGLMeshConversion.h"
 
+#include "vtkGLArrayNames.h"
+
 #include "common/Error.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <string>
 
 namespace geolattice {
@@ -108,6 +115,319 @@ void fromTriangleSurface(const TriangleSurface& surface, vtkPolyData* poly) {
     cells->InsertNextCell(3, ids);
   }
   poly->SetPolys(cells);
+}
+
+namespace {
+/// An integer-valued array entry: throws unless it is finite and integral.
+int integerValue(vtkDataArray* a, vtkIdType tuple, const char* what) {
+  const double v = a->GetComponent(tuple, 0);
+  if (!std::isfinite(v) || v != std::floor(v) || std::abs(v) > 1e9) {
+    throw GeoLatticeError(std::string(what) + " " + std::to_string(tuple) + " has " + a->GetName() + " " +
+                          std::to_string(v) + ", which is not an integer");
+  }
+  return static_cast<int>(v);
+}
+
+/// True if values is non-decreasing; then offset gets #groups + 1 entries.
+bool groupOffsets(const std::vector<int>& values, int groups, std::vector<int>& offset) {
+  offset.assign(groups + 1, 0);
+  for (size_t i = 0; i < values.size(); ++i) {
+    if (i > 0 && values[i] < values[i - 1]) {
+      offset.clear();
+      return false;
+    }
+    ++offset[values[i] + 1];
+  }
+  for (int l = 0; l < groups; ++l) {
+    offset[l + 1] += offset[l];
+  }
+  return true;
+}
+} // namespace
+
+LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
+  if (!lattice || lattice->GetNumberOfLines() == 0 || lattice->GetNumberOfPoints() == 0) {
+    throw GeoLatticeError("empty lattice: the input has no line cells (apply GL Lattice Infill first)");
+  }
+  vtkPointData* pd = lattice->GetPointData();
+  vtkCellData* cd = lattice->GetCellData();
+  vtkDataArray* cellSubgraph = cd->GetArray(arrays::SubgraphId);
+  if (!cellSubgraph) {
+    throw GeoLatticeError("lattice has no SubgraphId cell array (apply GL Lattice Infill first)");
+  }
+  vtkDataArray* cellLayer = cd->GetArray(arrays::LayerId);
+  if (!cellLayer) {
+    throw GeoLatticeError("lattice has no LayerId cell array (apply GL Lattice Infill first)");
+  }
+  vtkDataArray* normals = pd->GetArray(arrays::Normals);
+  if (!normals) {
+    normals = pd->GetNormals();
+  }
+  if (!normals || normals->GetNumberOfComponents() != 3) {
+    throw GeoLatticeError("lattice has no Normals point array with 3 components (the nozzle directions)");
+  }
+  vtkDataArray* gamma = pd->GetArray(arrays::Gamma);
+  if (!gamma) {
+    throw GeoLatticeError("lattice has no Gamma point array (the layer values; slice with GL Curved Layer Slicer, "
+                          "which writes Gamma, before GL Lattice Infill)");
+  }
+  vtkDataArray* pointSubgraph = pd->GetArray(arrays::SubgraphId);
+
+  LatticeGraph g;
+  const vtkIdType V = lattice->GetNumberOfPoints();
+  g.points = readPoints(lattice->GetPoints());
+  g.normals.resize(V);
+  g.gamma.resize(V);
+  for (vtkIdType v = 0; v < V; ++v) {
+    Vec3 n(normals->GetComponent(v, 0), normals->GetComponent(v, 1), normals->GetComponent(v, 2));
+    const double len = n.norm();
+    g.normals[v] = len > 0 && std::isfinite(len) ? Vec3(n / len) : n;
+    g.gamma[v] = gamma->GetComponent(v, 0);
+  }
+
+  // Edges: line cells (cell ids of lines follow the vertex cells), polylines split.
+  const vtkIdType firstLine = lattice->GetNumberOfVerts();
+  std::vector<int> rawLayer; // LayerId value per edge
+  auto it = vtk::TakeSmartPointer(lattice->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    const vtkIdType cell = firstLine + it->GetCurrentCellId();
+    if (n < 2) {
+      throw GeoLatticeError("lattice line cell " + std::to_string(cell) + " has " + std::to_string(n) +
+                            " point(s); a line needs at least 2");
+    }
+    const int s = integerValue(cellSubgraph, cell, "lattice line cell");
+    if (s < 0) {
+      throw GeoLatticeError("lattice line cell " + std::to_string(cell) + " has SubgraphId " + std::to_string(s) +
+                            "; sub-graph ids must be 0..K-1");
+    }
+    const int layer = integerValue(cellLayer, cell, "lattice line cell");
+    for (vtkIdType k = 0; k + 1 < n; ++k) {
+      g.edges.push_back({static_cast<int>(ids[k]), static_cast<int>(ids[k + 1])});
+      g.edgeSubgraph.push_back(s);
+      rawLayer.push_back(layer);
+    }
+  }
+
+  // Layers: the distinct LayerId values, ascending.
+  g.layerIndex = rawLayer;
+  std::sort(g.layerIndex.begin(), g.layerIndex.end());
+  g.layerIndex.erase(std::unique(g.layerIndex.begin(), g.layerIndex.end()), g.layerIndex.end());
+  const int L = static_cast<int>(g.layerIndex.size());
+  g.edgeLayer.resize(g.edges.size());
+  for (size_t e = 0; e < g.edges.size(); ++e) {
+    const auto l = std::lower_bound(g.layerIndex.begin(), g.layerIndex.end(), rawLayer[e]);
+    g.edgeLayer[e] = static_cast<int>(l - g.layerIndex.begin());
+  }
+
+  // Sub-graphs: ids 0..K-1, each on one layer.
+  const int K = *std::max_element(g.edgeSubgraph.begin(), g.edgeSubgraph.end()) + 1;
+  g.subgraphs.resize(K);
+  std::vector<int> subgraphLayer(K, -1);
+  std::vector<double> centroidWeight(K, 0.0);
+  for (size_t e = 0; e < g.edges.size(); ++e) {
+    const int s = g.edgeSubgraph[e];
+    if (subgraphLayer[s] < 0) {
+      subgraphLayer[s] = g.edgeLayer[e];
+    } else if (subgraphLayer[s] != g.edgeLayer[e]) {
+      throw GeoLatticeError("sub-graph " + std::to_string(s) + " has line cells on two layers (LayerId " +
+                            std::to_string(g.layerIndex[subgraphLayer[s]]) + " and " +
+                            std::to_string(g.layerIndex[g.edgeLayer[e]]) + ")");
+    }
+    LatticeSubgraph& sub = g.subgraphs[s];
+    const Vec3& a = g.points[g.edges[e][0]];
+    const Vec3& b = g.points[g.edges[e][1]];
+    const double len = (b - a).norm();
+    ++sub.edgeCount;
+    sub.length += len;
+    sub.centroid += len * 0.5 * (a + b);
+    centroidWeight[s] += len;
+  }
+  for (int s = 0; s < K; ++s) {
+    if (subgraphLayer[s] < 0) {
+      throw GeoLatticeError("sub-graph ids must be 0..K-1 without gaps: no line cell has SubgraphId " +
+                            std::to_string(s) + " (largest id " + std::to_string(K - 1) + ")");
+    }
+  }
+
+  // Vertices: sub-graph and layer from their edges.
+  g.vertexSubgraph.assign(V, -1);
+  g.vertexLayer.assign(V, -1);
+  g.degree.assign(V, 0);
+  for (size_t e = 0; e < g.edges.size(); ++e) {
+    for (int v : g.edges[e]) {
+      ++g.degree[v];
+      if (g.vertexSubgraph[v] < 0) {
+        g.vertexSubgraph[v] = g.edgeSubgraph[e];
+        g.vertexLayer[v] = g.edgeLayer[e];
+      } else if (g.vertexSubgraph[v] != g.edgeSubgraph[e]) {
+        throw GeoLatticeError("lattice point " + std::to_string(v) + " is shared by sub-graphs " +
+                              std::to_string(g.vertexSubgraph[v]) + " and " + std::to_string(g.edgeSubgraph[e]));
+      }
+    }
+  }
+  for (vtkIdType v = 0; v < V; ++v) {
+    const int own = pointSubgraph ? integerValue(pointSubgraph, v, "lattice point") : -1;
+    if (g.degree[v] > 0) {
+      if (pointSubgraph && own != g.vertexSubgraph[v]) {
+        throw GeoLatticeError("lattice point " + std::to_string(v) + " has SubgraphId " + std::to_string(own) +
+                              " but its line cells belong to sub-graph " + std::to_string(g.vertexSubgraph[v]));
+      }
+      continue;
+    }
+    if (own >= 0 && own < K) { // an isolated point of a sub-graph
+      g.vertexSubgraph[v] = own;
+      g.vertexLayer[v] = subgraphLayer[own];
+    }
+  }
+
+  // φ_i: mean point Gamma of each layer.
+  g.layerValues.assign(L, 0.0);
+  std::vector<int> layerCount(L, 0);
+  for (vtkIdType v = 0; v < V; ++v) {
+    if (g.vertexLayer[v] >= 0) {
+      if (!std::isfinite(g.gamma[v])) {
+        throw GeoLatticeError("lattice point " + std::to_string(v) + " has a non-finite Gamma");
+      }
+      g.layerValues[g.vertexLayer[v]] += g.gamma[v];
+      ++layerCount[g.vertexLayer[v]];
+    }
+  }
+  for (int l = 0; l < L; ++l) {
+    g.layerValues[l] /= layerCount[l];
+  }
+  for (vtkIdType v = 0; v < V; ++v) { // points without a sub-graph: the layer of the nearest φ
+    if (g.vertexLayer[v] < 0) {
+      int best = 0;
+      for (int l = 1; l < L; ++l) {
+        if (std::abs(g.layerValues[l] - g.gamma[v]) < std::abs(g.layerValues[best] - g.gamma[v])) {
+          best = l;
+        }
+      }
+      g.vertexLayer[v] = best;
+    }
+    if (g.vertexSubgraph[v] >= 0) {
+      ++g.subgraphs[g.vertexSubgraph[v]].vertexCount;
+    }
+  }
+
+  // Sub-graph records; j of G_{i,j} by id within the layer.
+  std::vector<int> nextInLayer(L, 0);
+  for (int s = 0; s < K; ++s) {
+    LatticeSubgraph& sub = g.subgraphs[s];
+    sub.id = s;
+    sub.layer = subgraphLayer[s];
+    sub.indexInLayer = nextInLayer[sub.layer]++;
+    if (centroidWeight[s] > 0) {
+      sub.centroid /= centroidWeight[s];
+    } else { // only zero-length edges: their mean point
+      sub.centroid = Vec3::Zero();
+      for (size_t e = 0; e < g.edges.size(); ++e) {
+        if (g.edgeSubgraph[e] == s) {
+          sub.centroid += g.points[g.edges[e][0]] / sub.edgeCount;
+        }
+      }
+    }
+  }
+
+  // Layer offsets, when everything is grouped by layer (as the lattice filter writes it).
+  if (!groupOffsets(g.vertexLayer, L, g.layerVertexOffset) || !groupOffsets(g.edgeLayer, L, g.layerEdgeOffset) ||
+      !groupOffsets(subgraphLayer, L, g.layerSubgraphOffset)) {
+    g.layerVertexOffset.clear();
+    g.layerEdgeOffset.clear();
+    g.layerSubgraphOffset.clear();
+  }
+  return g;
+}
+
+SkeletonTree toSkeletonTree(vtkPolyData* skeleton) {
+  if (!skeleton || skeleton->GetNumberOfPoints() == 0) {
+    throw GeoLatticeError("empty skeleton: the input has no nodes (apply GL Skeleton Tree first)");
+  }
+  vtkPointData* pd = skeleton->GetPointData();
+  vtkDataArray* layer = pd->GetArray(arrays::LayerId);
+  if (!layer) {
+    throw GeoLatticeError("skeleton has no LayerId point array (apply GL Skeleton Tree first)");
+  }
+  vtkDataArray* nodeId = pd->GetArray(arrays::NodeId);
+  vtkDataArray* length = pd->GetArray(arrays::SubgraphLength);
+  const vtkIdType N = skeleton->GetNumberOfPoints();
+  SkeletonTree tree;
+  tree.nodes.resize(N);
+  std::vector<int> node(N); // point -> node
+  std::vector<char> seen(N, 0);
+  for (vtkIdType p = 0; p < N; ++p) {
+    const int id = nodeId ? integerValue(nodeId, p, "skeleton point") : static_cast<int>(p);
+    if (id < 0 || id >= N || seen[id]) {
+      throw GeoLatticeError("skeleton NodeId is not a permutation of 0.." + std::to_string(N - 1) + " (point " +
+                            std::to_string(p) + " has " + std::to_string(id) + ")");
+    }
+    seen[id] = 1;
+    node[p] = id;
+    SkeletonNode& n = tree.nodes[id];
+    n.layer = integerValue(layer, p, "skeleton point");
+    if (n.layer < 0) {
+      throw GeoLatticeError("skeleton point " + std::to_string(p) + " has LayerId " + std::to_string(n.layer) +
+                            "; lattice layers are 0..L-1");
+    }
+    double x[3];
+    skeleton->GetPoint(p, x);
+    n.centroid = Vec3(x[0], x[1], x[2]);
+    n.length = length ? length->GetComponent(p, 0) : 0.0;
+  }
+  std::vector<int> count;
+  for (SkeletonNode& n : tree.nodes) {
+    if (n.layer >= static_cast<int>(count.size())) {
+      count.resize(n.layer + 1, 0);
+    }
+    n.indexInLayer = count[n.layer]++;
+  }
+
+  const vtkIdType firstLine = skeleton->GetNumberOfVerts();
+  auto it = vtk::TakeSmartPointer(skeleton->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    if (n != 2) {
+      throw GeoLatticeError("skeleton line cell " + std::to_string(firstLine + it->GetCurrentCellId()) + " has " +
+                            std::to_string(n) + " points; each edge must be a 2-point line (lower, upper)");
+    }
+    if (ids[0] < 0 || ids[0] >= N || ids[1] < 0 || ids[1] >= N) {
+      throw GeoLatticeError("skeleton line cell " + std::to_string(firstLine + it->GetCurrentCellId()) +
+                            " uses a point id out of range");
+    }
+    int a = node[ids[0]], b = node[ids[1]];
+    if (tree.nodes[a].layer == tree.nodes[b].layer + 1) {
+      std::swap(a, b);
+    }
+    tree.edges.push_back({a, b});
+  }
+  std::sort(tree.edges.begin(), tree.edges.end());
+  tree.edges.erase(std::unique(tree.edges.begin(), tree.edges.end()), tree.edges.end());
+  for (const auto& e : tree.edges) {
+    tree.nodes[e[0]].upper.push_back(e[1]);
+    tree.nodes[e[1]].lower.push_back(e[0]);
+  }
+  const int firstLayer = static_cast<int>(std::find_if(count.begin(), count.end(), [](int c) { return c > 0; }) -
+                                          count.begin()); // as buildSkeletonTree: the lowest layer with a node
+  for (SkeletonNode& n : tree.nodes) {
+    std::sort(n.lower.begin(), n.lower.end());
+    std::sort(n.upper.begin(), n.upper.end());
+    tree.roots += n.lower.empty();
+    tree.floatingNodes += n.lower.empty() && n.layer > firstLayer;
+    tree.mergeNodes += n.lower.size() > 1;
+    tree.splitNodes += n.upper.size() > 1;
+  }
+  if (vtkDataArray* values = skeleton->GetFieldData()->GetArray(arrays::LayerValues)) {
+    for (vtkIdType l = 0; l < values->GetNumberOfTuples(); ++l) {
+      tree.layerValues.push_back(values->GetComponent(l, 0));
+    }
+  }
+  validateSkeletonTree(tree);
+  return tree;
 }
 
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components) {

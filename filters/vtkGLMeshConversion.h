@@ -6,7 +6,9 @@
  * Each function throws geolattice::GeoLatticeError with a message that names the problem
  * (e.g. a non-tetrahedral cell) so that filters can report it with vtkErrorMacro.
  */
+#include "lattice/LatticeGraph.h"
 #include "mesh/TetMesh.h"
+#include "sequence/SkeletonTree.h"
 
 #include <vtkSmartPointer.h>
 
@@ -29,6 +31,31 @@ TetMesh toTetMesh(vtkUnstructuredGrid* grid);
 void fromTetMesh(const TetMesh& mesh, vtkUnstructuredGrid* grid);
 /// Points + triangle polys, no arrays.
 void fromTriangleSurface(const TriangleSurface& surface, vtkPolyData* poly);
+
+/// The lattice graph as the sequencing code needs it, rebuilt from the output of
+/// vtkGLLatticeInfill: points; normals (point array Normals, 3 components); one edge per line
+/// cell (a polyline of n points gives n - 1 edges, vertex and polygon cells are ignored) with
+/// edgeSubgraph from cell array SubgraphId; layers = the distinct cell LayerId values sorted
+/// ascending, mapped to 0..L-1 (layerIndex holds the LayerId values, layerValues the mean point
+/// Gamma of each layer); vertexLayer and vertexSubgraph from the edges (a point without edges:
+/// its point SubgraphId, if any, else -1 and the layer with the nearest Gamma); subgraphs
+/// (id = SubgraphId, which must be 0..K-1 without gaps, each on one layer; indexInLayer by id
+/// within the layer; length, length-weighted centroid, vertex and edge counts); degree; the
+/// layer offsets when points, edges and sub-graph ids are grouped by layer as the lattice filter
+/// writes them (else they are left empty). Kinds, α, β and levels are not restored. Throws
+/// GeoLatticeError naming the problem ("lattice has no SubgraphId cell array", ...).
+LatticeGraph toLatticeGraph(vtkPolyData* lattice);
+
+/// The skeleton tree from the output of vtkGLSkeletonTree: one node per point (node index =
+/// point data NodeId if present, which must then be a permutation of 0..N-1, else the point
+/// index) with layer = point data LayerId (lattice layer 0..L-1), length = SubgraphLength (0 if
+/// absent), centroid = the point; one edge per line cell between consecutive layers (stored as
+/// (lower, upper) whatever the cell's point order); layerValues from the field data LayerValues
+/// (empty if absent); lower/upper lists, roots, floating (roots above the lowest layer with a
+/// node), merge and split counts recomputed;
+/// then validateSkeletonTree. Throws GeoLatticeError naming the problem (missing LayerId, a line
+/// cell that is not a 2-point line, "cyclic or missing adjacency", ...).
+SkeletonTree toSkeletonTree(vtkPolyData* skeleton);
 
 /// A named double array of values.size() / components tuples holding values.
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components = 1);

@@ -3,7 +3,8 @@
 Builds the same pipeline as the `geolattice` command-line tool from the plugin's proxies:
 
     GLMeshReader -> GLPlaceOnPlatform -> GLTetrahedralizeSurface -> GLGeodesicDistanceFields
-    -> GLCurvedLayerSlicer -> GLLatticeInfill, and GLOverhangAnalysis on the fields
+    -> GLCurvedLayerSlicer -> GLLatticeInfill -> GLSkeletonTree (with the fields)
+    -> GLPrintSequencer -> GLCollisionVerifier, and GLOverhangAnalysis on the fields
 
 and saves the tet mesh and the fields as VTK XML files (binary mode: ParaView 5.11 on Debian 12
 cannot read appended-mode files). Run it with pvpython (no X server needed):
@@ -33,10 +34,15 @@ def load_plugin(path=None):
     return path
 
 
+STRATEGIES = ("LPT", "DPT", "A4", "Best")  # GLPrintSequencer's Strategy values, in the order of its enumeration
+
+
 def build_pipeline(model, scale=1.0, fit_size=0.0, center=True, edge_length=0.0, radius_edge=1.414,
                    base_tolerance=0.05, time_factor=4.0, reference=(1.0, 0.0, 0.0), layer_interval=0.6,
-                   first_layer=None, lattice_width=4.0):
-    """Returns a dict of the pipeline's proxies: reader, place, tets, fields, layers, lattice, overhang."""
+                   first_layer=None, lattice_width=4.0, strategy="A4", nozzle_angle=45.0, sample_spacing=1.0):
+    """Returns a dict of the pipeline's proxies: reader, place, tets, fields, layers, lattice, skeleton,
+    sequencer (output ports 0 Sequenced Lattice, 1 Sequenced Skeleton, 2 Print Order), verifier (checks
+    the sequenced lattice with the same nozzle and sample spacing) and overhang."""
     reader = simple.GLMeshReader(FileName=model)
     place = simple.GLPlaceOnPlatform(Input=reader, Scale=scale, FitSize=fit_size, CenterXY=int(center))
     if model.lower().endswith(TET_MESH_EXTENSIONS):
@@ -49,9 +55,15 @@ def build_pipeline(model, scale=1.0, fit_size=0.0, center=True, edge_length=0.0,
     layers = simple.GLCurvedLayerSlicer(Input=fields, LayerInterval=layer_interval,
                                         FirstLayerOffset=layer_interval if first_layer is None else first_layer)
     lattice = simple.GLLatticeInfill(Input=layers, AlphaWidth=lattice_width, BetaWidth=lattice_width)
+    skeleton = simple.GLSkeletonTree(Input=lattice, TetMesh=fields)
+    sequencer = simple.GLPrintSequencer(Input=lattice, Skeleton=skeleton, Strategy=strategy,
+                                        NozzleAngle=nozzle_angle, SampleSpacing=sample_spacing)
+    verifier = simple.GLCollisionVerifier(Input=simple.OutputPort(sequencer, 0), TimeArrayName="PrintOrder",
+                                          NozzleAngle=nozzle_angle, SampleSpacing=sample_spacing)
     overhang = simple.GLOverhangAnalysis(Input=fields)
     return {"reader": reader, "place": place, "tets": tets, "fields": fields, "layers": layers,
-            "lattice": lattice, "overhang": overhang}
+            "lattice": lattice, "skeleton": skeleton, "sequencer": sequencer, "verifier": verifier,
+            "overhang": overhang}
 
 
 def save_binary(proxy, path):
@@ -82,13 +94,16 @@ def main(argv=None):
     parser.add_argument("--time-factor", type=float, default=4.0, help="heat time factor [4]")
     parser.add_argument("--layer-interval", type=float, default=0.6, help="curved layer interval, mm [0.6]")
     parser.add_argument("--lattice-width", type=float, default=4.0, help="lattice line spacing, mm [4]")
+    parser.add_argument("--strategy", choices=STRATEGIES, default="A4", help="printing order strategy [A4]")
+    parser.add_argument("--nozzle-angle", type=float, default=45.0, help="nozzle cone half-angle, degrees [45]")
     args = parser.parse_args(argv)
 
     load_plugin(args.plugin)
     os.makedirs(args.output, exist_ok=True)
     p = build_pipeline(args.model, scale=args.scale, fit_size=args.fit_size, edge_length=args.edge_length,
                        base_tolerance=args.base_tolerance, time_factor=args.time_factor,
-                       layer_interval=args.layer_interval, lattice_width=args.lattice_width)
+                       layer_interval=args.layer_interval, lattice_width=args.lattice_width,
+                       strategy=args.strategy, nozzle_angle=args.nozzle_angle)
     p["fields"].UpdatePipeline()
     fields = simple.servermanager.Fetch(p["fields"])
     if fields is None or fields.GetNumberOfCells() == 0:
@@ -99,9 +114,24 @@ def main(argv=None):
     save_binary(p["layers"], os.path.join(args.output, "layers.vtp"))
     save_binary(p["overhang"], os.path.join(args.output, "overhang.vtp"))
     save_binary(p["lattice"], os.path.join(args.output, "lattice.vtp"))
+    save_binary(p["skeleton"], os.path.join(args.output, "skeleton.vtp"))
+    save_binary(simple.OutputPort(p["sequencer"], 0), os.path.join(args.output, "sequenced_lattice.vtp"))
+    save_binary(simple.OutputPort(p["sequencer"], 2), os.path.join(args.output, "print_order.vtp"))
+    save_binary(p["verifier"], os.path.join(args.output, "collisions.vtp"))
     gamma = fields.GetPointData().GetArray("Gamma").GetRange()
     print("geolattice_pipeline: %d points, %d tets, gamma max %.3f mm; wrote %s" %
           (fields.GetNumberOfPoints(), fields.GetNumberOfCells(), gamma[1], args.output))
+    fd = simple.servermanager.Fetch(p["verifier"]).GetFieldData()
+    free, order_free = fd.GetArray("CollisionFree"), fd.GetArray("CollisionOrderFree")
+    if free is None or order_free is None:
+        verdict = "no verdict (see the errors above)"
+    elif free.GetValue(0) == 1:
+        verdict = "collision-free"
+    elif order_free.GetValue(0) == 1:
+        verdict = "only unavoidable collisions (with material of skeleton ancestors, see collisions.vtp)"
+    else:
+        verdict = "COLLISIONS (see collisions.vtp)"
+    print("geolattice_pipeline: %s printing order at nozzle angle %g: %s" % (args.strategy, args.nozzle_angle, verdict))
     return 0
 
 

@@ -96,6 +96,26 @@ class CliErrorTest(unittest.TestCase):
     def test_zero_lattice_width(self):
         self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--lattice-width", "0"], "width")
 
+    def test_nozzle_angle_outside_range(self):
+        for angle in ("0", "90", "-10"):
+            self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--nozzle-angle", angle],
+                              "nozzle angle")
+
+    def test_unknown_strategy(self):
+        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--strategy", "fastest"], "--strategy")
+
+    def test_lattice_wider_than_the_part_still_sequences(self):
+        # No isoline crosses the layers: the sub-graphs are the layer boundaries, still printed in order.
+        result = self.run_cli(os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--lattice-width", "1000",
+                              "-o", self.out, "-q")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        import json
+        with open(os.path.join(self.out, "report.json")) as f:
+            report = json.load(f)
+        self.assertEqual(report["lattice"]["isoline_edges"], 0)
+        self.assertEqual(report["sequence"]["subgraphs"], report["lattice"]["subgraphs"])
+        self.assertTrue(report["sequence"]["collision_free"])
+
     def test_bad_option_value(self):
         self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--scale", "abc"], "--scale")
 
@@ -113,6 +133,65 @@ class CliErrorTest(unittest.TestCase):
         self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--time-factor", "0"], "time factor")
         after = {n: os.path.getsize(os.path.join(self.out, n)) for n in os.listdir(self.out)}
         self.assertEqual(after["fields.vtu"], before["fields.vtu"])
+
+
+class CliVerifyTest(unittest.TestCase):
+    """`geolattice verify OUTDIR`: exit 0 when collision-free, 3 on a collision, 1 on an error."""
+
+    @classmethod
+    def setUpClass(cls):
+        cls.tmp = tempfile.mkdtemp(prefix="geolattice-verify-")
+        cls.out = os.path.join(cls.tmp, "y")
+        run = subprocess.run([CLI, "run", os.path.join(TESTDATA, "y_shape.obj"), "-o", cls.out, "--edge-length", "2",
+                              "--strategy", "dpt", "--nozzle-angle", "75", "-q"], capture_output=True, text=True,
+                             timeout=600)
+        assert run.returncode == 0, run.stderr
+
+    def verify(self, *args):
+        return subprocess.run([CLI, "verify", *args], capture_output=True, text=True, timeout=300)
+
+    def test_outputs_of_the_sequence_stage(self):
+        for name in ("skeleton.vtp", "sequence.vtp", "sequence.csv", "collisions.vtp", "lattice.vtp"):
+            self.assertTrue(os.path.isfile(os.path.join(self.out, name)), name)
+        with open(os.path.join(self.out, "sequence.csv")) as f:
+            rows = f.read().splitlines()
+        self.assertEqual(rows[0].split(",")[:3], ["order", "subgraph", "layer"])
+        import json
+        with open(os.path.join(self.out, "report.json")) as f:
+            seq = json.load(f)["sequence"]
+        self.assertEqual(len(rows) - 1, seq["subgraphs"])
+        self.assertIsInstance(seq["collision_free"], bool)
+        for key in ("strategy", "nozzle_angle_deg", "retractions", "air_length_mm", "seconds"):
+            self.assertIn(key, seq)
+
+    def test_depth_first_collides_and_slender_nozzle_does_not(self):
+        # Depth first on the Y: one branch is finished before the other starts; a 75° nozzle on
+        # the second branch reaches the first one.
+        wide = self.verify(self.out)
+        self.assertEqual(wide.returncode, 3, wide.stdout + wide.stderr)
+        self.assertIn("stations with earlier material inside the nozzle", wide.stdout)
+        slim = self.verify(self.out, "--nozzle-angle", "5")
+        self.assertEqual(slim.returncode, 0, slim.stdout + slim.stderr)
+        self.assertIn("collision-free", slim.stdout)
+
+    def test_errors(self):
+        missing = self.verify(os.path.join(self.tmp, "nowhere"))
+        self.assertEqual(missing.returncode, 1)
+        self.assertIn("not found", missing.stderr)
+        bad = self.verify(self.out, "--nozzle-angle", "90")
+        self.assertEqual(bad.returncode, 1)
+        self.assertEqual(len(bad.stderr.strip().splitlines()), 1)
+        self.assertIn("nozzle angle", bad.stderr)
+        usage = self.verify()
+        self.assertEqual(usage.returncode, 2)
+        # A lattice without PrintOrder (the lattice stage only).
+        early = os.path.join(self.tmp, "early")
+        run = subprocess.run([CLI, "run", os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--until",
+                              "lattice", "-o", early, "-q"], capture_output=True, text=True, timeout=300)
+        self.assertEqual(run.returncode, 0, run.stderr)
+        no_order = self.verify(early)
+        self.assertEqual(no_order.returncode, 1)
+        self.assertIn("PrintOrder", no_order.stderr)
 
 
 if __name__ == "__main__":

@@ -1,0 +1,276 @@
+#include "vtkGLPrintSequencer.h"
+
+#include "vtkGLArrayNames.h"
+#include "vtkGLMeshConversion.h"
+
+#include "common/Error.h"
+#include "lattice/LatticeGraph.h"
+#include "sequence/NozzleModel.h"
+#include "sequence/PotentialCollisions.h"
+#include "sequence/PrintMaterial.h"
+#include "sequence/PrintSequencer.h"
+#include "sequence/SkeletonTree.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+
+vtkStandardNewMacro(vtkGLPrintSequencer);
+
+namespace
+{
+namespace gl = geolattice;
+
+static_assert(static_cast<int>(gl::SequenceStrategy::LayerPriority) == vtkGLPrintSequencer::LPT &&
+    static_cast<int>(gl::SequenceStrategy::DepthPriority) == vtkGLPrintSequencer::DPT &&
+    static_cast<int>(gl::SequenceStrategy::Greedy) == vtkGLPrintSequencer::A4 &&
+    static_cast<int>(gl::SequenceStrategy::Rollout) == vtkGLPrintSequencer::BEST,
+  "vtkGLPrintSequencer::Strategies must match core/sequence/PrintSequencer.h");
+
+vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n)
+{
+  auto a = vtkSmartPointer<vtkIntArray>::New();
+  a->SetName(name);
+  a->SetNumberOfTuples(n);
+  return a;
+}
+
+/// Position of sub-graph `value` in the order, -1 when it is no sub-graph.
+int positionOf(double value, const std::vector<int>& printIndex)
+{
+  if (!std::isfinite(value) || value < 0 || value >= static_cast<double>(printIndex.size()))
+  {
+    return -1;
+  }
+  return printIndex[static_cast<size_t>(value)];
+}
+
+/// The field data shared by the three outputs.
+void addSequenceFieldData(const gl::SkeletonTree& tree, const gl::PrintSequence& seq,
+  const gl::PotentialCollisions& pcg, double nozzleAngle, vtkFieldData* fd)
+{
+  vtkNew<vtkStringArray> strategy;
+  strategy->SetName(gl::arrays::SequenceStrategy);
+  strategy->InsertNextValue(gl::sequenceStrategyName(seq.strategy));
+  fd->AddArray(strategy);
+  gl::addFieldArray(fd, gl::arrays::SequenceRetractions, { static_cast<double>(seq.retractions) });
+  gl::addFieldArray(fd, gl::arrays::SequenceAirLength, { seq.airLength });
+  gl::addFieldArray(fd, gl::arrays::SequenceForcedSteps, { static_cast<double>(seq.forcedSteps) });
+  gl::addFieldArray(fd, gl::arrays::SequenceSeconds, { seq.seconds });
+  gl::addFieldArray(fd, gl::arrays::SequencePcgPairs, { static_cast<double>(pcg.pairs) });
+  gl::addFieldArray(fd, gl::arrays::SequencePcgSeconds, { pcg.seconds });
+  gl::addFieldArray(fd, gl::arrays::SequenceUnavoidablePairs, { static_cast<double>(seq.unavoidablePairs) });
+  gl::addFieldArray(fd, gl::arrays::NozzleAngleDeg, { nozzleAngle });
+  std::vector<double> order(seq.order.begin(), seq.order.end()), start, end;
+  for (size_t k = 0; k < seq.order.size(); ++k)
+  {
+    start.insert(start.end(), seq.start[k].data(), seq.start[k].data() + 3);
+    end.insert(end.end(), seq.end[k].data(), seq.end[k].data() + 3);
+  }
+  gl::addFieldArray(fd, gl::arrays::SequenceOrder, order);
+  gl::addFieldArray(fd, gl::arrays::SequenceStart, start, 3);
+  gl::addFieldArray(fd, gl::arrays::SequenceEnd, end, 3);
+  std::vector<double> edges;
+  for (const auto& e : tree.edges)
+  {
+    edges.push_back(e[0]);
+    edges.push_back(e[1]);
+  }
+  gl::addFieldArray(fd, gl::arrays::SkeletonEdges, edges, 2);
+}
+
+/// Output 0: the lattice with PrintOrder per cell (from its SubgraphId) and per point.
+void sequencedLattice(vtkPolyData* input, const gl::LatticeGraph& graph, const gl::PrintSequence& seq,
+  vtkPolyData* out)
+{
+  out->ShallowCopy(input);
+  vtkDataArray* cellSubgraph = input->GetCellData()->GetArray(gl::arrays::SubgraphId);
+  const vtkIdType C = input->GetNumberOfCells();
+  auto cellOrder = intArray(gl::arrays::PrintOrder, C);
+  for (vtkIdType c = 0; c < C; ++c)
+  {
+    cellOrder->SetValue(c, positionOf(cellSubgraph->GetComponent(c, 0), seq.printIndex));
+  }
+  const vtkIdType V = input->GetNumberOfPoints();
+  auto pointOrder = intArray(gl::arrays::PrintOrder, V);
+  for (vtkIdType v = 0; v < V; ++v)
+  {
+    const int s = graph.vertexSubgraph[v];
+    pointOrder->SetValue(v, s >= 0 ? seq.printIndex[s] : -1);
+  }
+  out->GetCellData()->AddArray(cellOrder);
+  out->GetPointData()->AddArray(pointOrder);
+}
+
+/// Output 1: the skeleton with PrintOrder per node.
+void sequencedSkeleton(vtkPolyData* input, const gl::PrintSequence& seq, vtkPolyData* out)
+{
+  out->ShallowCopy(input);
+  vtkDataArray* nodeId = input->GetPointData()->GetArray(gl::arrays::NodeId);
+  const vtkIdType N = input->GetNumberOfPoints();
+  auto order = intArray(gl::arrays::PrintOrder, N);
+  for (vtkIdType p = 0; p < N; ++p)
+  {
+    order->SetValue(p, positionOf(nodeId ? nodeId->GetComponent(p, 0) : static_cast<double>(p), seq.printIndex));
+  }
+  out->GetPointData()->AddArray(order);
+}
+
+/// Output 2: the order as a polyline through the start points, one line cell per transition.
+void printOrderPolyline(const gl::SkeletonTree& tree, const gl::PrintSequence& seq, vtkPolyData* out)
+{
+  const vtkIdType K = static_cast<vtkIdType>(seq.order.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(K);
+  auto position = intArray(gl::arrays::PrintOrder, K);
+  auto subgraph = intArray(gl::arrays::SubgraphId, K);
+  for (vtkIdType k = 0; k < K; ++k)
+  {
+    points->SetPoint(k, seq.start[k].data());
+    position->SetValue(k, static_cast<int>(k));
+    subgraph->SetValue(k, seq.order[k]);
+  }
+  out->SetPoints(points);
+  const vtkIdType T = std::max<vtkIdType>(K - 1, 0);
+  vtkNew<vtkCellArray> lines;
+  lines->AllocateExact(T, 2 * T);
+  auto from = intArray(gl::arrays::PrintOrder, T);
+  auto retraction = intArray(gl::arrays::Retraction, T);
+  for (vtkIdType k = 0; k < T; ++k)
+  {
+    const vtkIdType ids[2] = { k, k + 1 };
+    lines->InsertNextCell(2, ids);
+    from->SetValue(k, static_cast<int>(k));
+    const std::vector<int>& upper = tree.nodes[seq.order[k]].upper;
+    retraction->SetValue(k, std::binary_search(upper.begin(), upper.end(), seq.order[k + 1]) ? 0 : 1);
+  }
+  out->SetLines(lines);
+  out->GetPointData()->AddArray(position);
+  out->GetPointData()->AddArray(subgraph);
+  out->GetPointData()->SetActiveScalars(gl::arrays::PrintOrder);
+  out->GetCellData()->AddArray(from);
+  out->GetCellData()->AddArray(retraction);
+  out->GetCellData()->SetActiveScalars(gl::arrays::Retraction);
+}
+} // namespace
+
+vtkGLPrintSequencer::vtkGLPrintSequencer()
+{
+  this->SetNumberOfInputPorts(2);
+  this->SetNumberOfOutputPorts(3);
+}
+
+int vtkGLPrintSequencer::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkGLPrintSequencer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* lattice = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* skeleton = vtkPolyData::GetData(inputVector[1], 0);
+  vtkPolyData* outputs[3];
+  for (int port = 0; port < 3; ++port)
+  {
+    outputs[port] = vtkPolyData::GetData(outputVector, port);
+    outputs[port]->Initialize();
+  }
+  try
+  {
+    gl::NozzleModel nozzle;
+    nozzle.halfAngleDeg = this->NozzleAngle;
+    nozzle.length = this->NozzleLength == 0 ? std::numeric_limits<double>::infinity() : this->NozzleLength;
+    nozzle.holderRadius = this->HolderRadius;
+    nozzle.tipClearance = this->TipClearance;
+    nozzle.validate();
+
+    const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
+    gl::SkeletonTree tree = gl::toSkeletonTree(skeleton);
+    if (tree.nodes.size() != graph.subgraphs.size())
+    {
+      throw gl::GeoLatticeError("the skeleton has " + std::to_string(tree.nodes.size()) +
+        " nodes but the lattice has " + std::to_string(graph.subgraphs.size()) +
+        " sub-graphs (connect the GL Skeleton Tree of this lattice)");
+    }
+    for (size_t i = 0; i < tree.nodes.size(); ++i)
+    {
+      if (tree.nodes[i].layer != graph.subgraphs[i].layer)
+      {
+        throw gl::GeoLatticeError("skeleton node " + std::to_string(i) + " is on lattice layer " +
+          std::to_string(tree.nodes[i].layer) + " but sub-graph " + std::to_string(i) + " of the lattice is on layer " +
+          std::to_string(graph.subgraphs[i].layer) + " (connect the GL Skeleton Tree of this lattice)");
+      }
+    }
+    if (tree.layerValues.empty())
+    {
+      tree.layerValues = graph.layerValues;
+    }
+    const gl::MaterialSamples material = gl::sampleLatticeMaterial(graph, this->SampleSpacing);
+    this->UpdateProgress(0.1);
+
+    gl::SequenceOptions options;
+    options.strategy = static_cast<gl::SequenceStrategy>(this->Strategy);
+    options.rolloutCandidates = this->RolloutCandidates;
+    options.retractionCost = this->RetractionCost;
+    const bool needPcg =
+      options.strategy == gl::SequenceStrategy::Greedy || options.strategy == gl::SequenceStrategy::Rollout;
+    gl::PotentialCollisions pcg;
+    if (needPcg)
+    {
+      pcg = gl::computePotentialCollisions(material, nozzle, this->NumberOfThreads);
+    }
+    this->UpdateProgress(0.6);
+    const gl::PrintSequence seq = gl::sequencePrint(tree, material, needPcg ? &pcg : nullptr, options);
+
+    sequencedLattice(lattice, graph, seq, outputs[0]);
+    sequencedSkeleton(skeleton, seq, outputs[1]);
+    printOrderPolyline(tree, seq, outputs[2]);
+    for (vtkPolyData* out : outputs)
+    {
+      addSequenceFieldData(tree, seq, pcg, this->NozzleAngle, out->GetFieldData());
+    }
+    this->UpdateProgress(1.0);
+  }
+  catch (const std::exception& e)
+  {
+    for (vtkPolyData* out : outputs)
+    {
+      out->Initialize();
+    }
+    vtkErrorMacro(<< e.what());
+  }
+  return 1;
+}
+
+void vtkGLPrintSequencer::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Strategy: " << this->Strategy << "\n";
+  os << indent << "NozzleAngle: " << this->NozzleAngle << " deg\n";
+  os << indent << "NozzleLength: " << this->NozzleLength << " mm\n";
+  os << indent << "HolderRadius: " << this->HolderRadius << " mm\n";
+  os << indent << "TipClearance: " << this->TipClearance << " mm\n";
+  os << indent << "SampleSpacing: " << this->SampleSpacing << " mm\n";
+  os << indent << "RolloutCandidates: " << this->RolloutCandidates << "\n";
+  os << indent << "RetractionCost: " << this->RetractionCost << " mm\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+}
