@@ -140,7 +140,7 @@ struct NozzleAt {
 
 CollisionReport verifyNozzleClearance(const std::vector<Vec>& points, const std::vector<Vec>& normals,
                                       const std::vector<int>& time, const NozzleModel& nozzle, int maxReported,
-                                      const CollisionExemption* exemption) {
+                                      const CollisionExemption* exemption, const std::vector<char>* material) {
   const auto t0 = std::chrono::steady_clock::now();
   nozzle.validate();
   const size_t N = points.size();
@@ -149,6 +149,9 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points, const std:
   }
   if (exemption && (exemption->group.size() != N || !exemption->unavoidable)) {
     throw GeoLatticeError("collision verifier: the exemption needs one group per point and a predicate");
+  }
+  if (material && material->size() != N) {
+    throw GeoLatticeError("collision verifier: the material mask needs one flag per point");
   }
   std::vector<Vec> axis(N);
   for (size_t i = 0; i < N; ++i) {
@@ -166,7 +169,17 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points, const std:
     axis[i] = normals[i] / len;
   }
 
-  const TimedPointTree tree(points, time);
+  // Obstacles: the material points (all points without a mask). Non-material points get a time
+  // no station can exceed, so the tree never reports them.
+  std::vector<int> obstacleTime(time);
+  if (material) {
+    for (size_t i = 0; i < N; ++i) {
+      if (!(*material)[i]) {
+        obstacleTime[i] = std::numeric_limits<int>::max();
+      }
+    }
+  }
+  const TimedPointTree tree(points, obstacleTime);
   const double na = nozzle.halfAngleDeg * M_PI / 180.0;
   // Bounding half-angle: the holder (h > L, r < R) lies inside the cone of angle atan(R / L).
   const double bound = std::isfinite(nozzle.length) ? std::max(na, std::atan2(nozzle.holderRadius, nozzle.length)) : na;
@@ -207,7 +220,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points, const std:
       if (node.left < 0) {
         for (int i = node.begin; i < node.end; ++i) {
           const int q = order[i];
-          if (time[q] < now && at.contains(points[q], height, radial)) {
+          if (obstacleTime[q] < now && at.contains(points[q], height, radial)) {
             if (exemption && exemption->unavoidable(exemption->group[k], exemption->group[q])) {
               if (exemptHit < 0) {  // keep looking for an obstacle an order could have avoided
                 exemptHit = q;

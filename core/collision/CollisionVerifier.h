@@ -48,10 +48,13 @@ struct CollisionReport {
 
 /// points, normals (unit axes; re-normalised) and time have one entry per printed point.
 /// Throws GeoLatticeError for mismatched sizes, a zero or non-finite normal, non-finite points,
-/// or a bad nozzle, or an exemption whose group size does not match.
+/// or a bad nozzle, or an exemption or material mask whose size does not match. material
+/// (optional, one flag per point): only points with a non-zero flag are obstacles, e.g. the
+/// print points of a toolpath but not its air moves; every point is still a station.
 CollisionReport verifyNozzleClearance(const std::vector<Eigen::Vector3d>& points,
                                       const std::vector<Eigen::Vector3d>& normals, const std::vector<int>& time,
                                       const NozzleModel& nozzle, int maxReported = 20,
-                                      const CollisionExemption* exemption = nullptr);
+                                      const CollisionExemption* exemption = nullptr,
+                                      const std::vector<char>* material = nullptr);
 
 } // namespace geolattice

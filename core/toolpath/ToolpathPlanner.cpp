@@ -1,0 +1,241 @@
+#include "toolpath/ToolpathPlanner.h"
+
+#include "common/Error.h"
+#include "toolpath/EulerTour.h"
+#include "toolpath/EulerianTrimming.h"
+#include "toolpath/SafeBoxAirMove.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+namespace geolattice {
+
+namespace {
+
+void validate(const ToolpathOptions& o) {
+  auto positive = [](double v, const char* what) {
+    if (!(v > 0) || !std::isfinite(v)) {
+      std::ostringstream s;
+      s << "toolpath: " << what << " must be > 0 (got " << v << ")";
+      throw GeoLatticeError(s.str());
+    }
+  };
+  positive(o.pathWidth, "path width");
+  positive(o.filamentRadius, "filament radius");
+  positive(o.printFeedRate, "print feed rate");
+  positive(o.airFeedRate, "air feed rate");
+  positive(o.thicknessCap, "thickness cap lambda");
+  positive(o.maxTurnDeg, "maximum turn angle");
+  positive(o.lift, "lift");
+  if (!(o.flowCorrection > 0 && o.flowCorrection <= 1)) {
+    throw GeoLatticeError("toolpath: flow correction mu must be in (0, 1]");
+  }
+  if (!(o.safeMargin >= 0) || !(o.retraction >= 0)) {
+    throw GeoLatticeError("toolpath: safe margin and retraction must be >= 0");
+  }
+}
+
+Vec3 slerp(const Vec3& a, const Vec3& b, double t) {
+  const double angle = std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+  if (angle < 1e-12) {
+    return a;
+  }
+  if (angle > M_PI - 1e-9) {  // opposite: turn about any perpendicular
+    const Vec3 p = a.unitOrthogonal();
+    return (std::cos(t * M_PI) * a + std::sin(t * M_PI) * p).normalized();
+  }
+  return ((std::sin((1 - t) * angle) * a + std::sin(t * angle) * b) / std::sin(angle)).normalized();
+}
+
+class PathBuilder {
+public:
+  PathBuilder(Toolpath& path, const ToolpathOptions& o) : p_(path), o_(o), maxTurn_(o.maxTurnDeg * M_PI / 180.0) {}
+
+  bool empty() const { return p_.points.empty(); }
+  const Vec3& position() const { return p_.points.back(); }
+  const Vec3& axis() const { return p_.normals.back(); }
+
+  /// Appends a point reached by a move of `kind`; inserts rotation steps so the axis never turns
+  /// by more than maxTurn between consecutive points (positions and thickness interpolated).
+  void add(const Vec3& x, const Vec3& n, MoveKind kind, double h, int layer, int subgraph, int tour) {
+    if (!empty()) {
+      const Vec3 x0 = position(), n0 = axis();
+      const double h0 = p_.kind.back() == MoveKind::Air ? h : p_.thickness.back();
+      const double angle = std::acos(std::clamp(n0.dot(n), -1.0, 1.0));
+      const int steps = static_cast<int>(std::ceil(angle / maxTurn_ - 1e-9));
+      for (int i = 1; i < steps; ++i) {
+        const double t = static_cast<double>(i) / steps;
+        push((1 - t) * x0 + t * x, slerp(n0, n, t), kind, kind == MoveKind::Air ? 0.0 : (1 - t) * h0 + t * h, layer,
+             subgraph, tour);
+        ++p_.rotationSteps;
+      }
+    }
+    push(x, n, kind, h, layer, subgraph, tour);
+  }
+
+  void retract(double amount) { e_ -= amount; }
+  void prime(double amount) { e_ += amount; }
+
+private:
+  void push(const Vec3& x, const Vec3& n, MoveKind kind, double h, int layer, int subgraph, int tour) {
+    const bool print = kind != MoveKind::Air;
+    if (!empty()) {
+      const double len = (x - position()).norm();
+      if (print) {
+        // Arriving by air, the segment starts at this tour's first vertex: use h at both ends.
+        const double h0 = p_.kind.back() == MoveKind::Air ? h : p_.thickness.back();
+        const double hm = 0.5 * (h + h0);
+        const double volume = o_.flowCorrection * o_.pathWidth * hm * len;  // Eq. 14: μ w h L
+        const double de = volume / (M_PI * o_.filamentRadius * o_.filamentRadius);
+        e_ += de;
+        p_.filamentLength += de;
+        p_.depositedVolume += volume;
+        p_.printLength += len;
+      } else {
+        p_.airLength += len;
+      }
+    }
+    p_.points.push_back(x);
+    p_.normals.push_back(n);
+    p_.kind.push_back(kind);
+    p_.thickness.push_back(print ? h : 0.0);
+    p_.width.push_back(print ? o_.pathWidth : 0.0);
+    p_.extrusion.push_back(e_);
+    p_.feedRate.push_back(print ? o_.printFeedRate : o_.airFeedRate);
+    p_.layer.push_back(print ? layer : -1);
+    p_.subgraph.push_back(print ? subgraph : -1);
+    p_.pathIndex.push_back(tour);
+  }
+
+  Toolpath& p_;
+  const ToolpathOptions& o_;
+  double maxTurn_;
+  double e_ = 0;
+};
+
+} // namespace
+
+Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const std::vector<int>& order,
+                      const ToolpathOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  validate(o);
+  const int K = static_cast<int>(input.subgraphs.size());
+  if (K == 0) {
+    throw GeoLatticeError("toolpath: the lattice has no sub-graph");
+  }
+  if (static_cast<int>(tree.nodes.size()) != K) {
+    throw GeoLatticeError("toolpath: the skeleton does not match the lattice's sub-graphs");
+  }
+  if (input.normals.size() != input.points.size()) {
+    throw GeoLatticeError("toolpath: the lattice has no nozzle direction (Normals) per vertex");
+  }
+  std::vector<char> seen(K, 0);
+  if (static_cast<int>(order.size()) != K) {
+    throw GeoLatticeError("toolpath: the print order must list every sub-graph exactly once");
+  }
+  for (int k : order) {
+    if (k < 0 || k >= K || seen[k]) {
+      throw GeoLatticeError("toolpath: the print order must list every sub-graph exactly once");
+    }
+    seen[k] = 1;
+  }
+  for (size_t v = 0; v < input.normals.size(); ++v) {
+    if (input.vertexSubgraph[v] >= 0 && !(input.normals[v].norm() > 0)) {
+      std::ostringstream s;
+      s << "toolpath: lattice vertex " << v << " has a zero normal (missing nozzle direction)";
+      throw GeoLatticeError(s.str());
+    }
+  }
+
+  Toolpath path;
+  LatticeGraph g = input;  // contraction edits the edge arrays
+  Eigen::AlignedBox3d all;
+  for (const Vec3& x : g.points) {
+    all.extend(x);
+  }
+  path.contractedEdges = contractShortEdges(g, 1e-9 * std::max(1.0, all.diagonal().norm()));
+  const TrimResult trim = trimToEulerian(g);
+  const EulerTours tours = nonCrossingEulerTours(g, trim.kept);
+  path.crossings = countTourCrossovers(g, tours);
+  path.trimmedEdges = trim.trimmedEdges;
+  path.trimmedLength = trim.trimmedLength;
+  path.splitSubgraphs = trim.splitSubgraphs;
+  path.thicknessStats = computeLayerThickness(g, tree, o.thicknessCap);
+  const std::vector<double>& h = path.thicknessStats.thickness;
+
+  std::vector<std::vector<int>> toursOf(K);
+  for (size_t t = 0; t < tours.subgraph.size(); ++t) {
+    toursOf[tours.subgraph[t]].push_back(static_cast<int>(t));
+  }
+
+  PathBuilder b(path, o);
+  Eigen::AlignedBox3d printed;  // everything printed so far
+  int previous = -1, tourIndex = 0;
+  for (int k : order) {
+    std::vector<int> remaining = toursOf[k];
+    while (!remaining.empty()) {
+      // The tour of this sub-graph with the vertex nearest to the nozzle; start there.
+      size_t bestTour = 0, bestAt = 0;
+      double bestDistance = std::numeric_limits<double>::infinity();
+      for (size_t r = 0; r < remaining.size(); ++r) {
+        const auto& vs = tours.vertices[remaining[r]];
+        for (size_t i = 0; i + 1 < vs.size(); ++i) {
+          const double d = b.empty() ? static_cast<double>(i) : (g.points[vs[i]] - b.position()).squaredNorm();
+          if (d < bestDistance) {
+            bestDistance = d;
+            bestTour = r;
+            bestAt = i;
+          }
+        }
+      }
+      const auto& vs = tours.vertices[remaining[bestTour]];
+      remaining.erase(remaining.begin() + static_cast<long>(bestTour));
+      const size_t n = vs.size() - 1;  // closed: vs[n] == vs[0]
+      const int start = vs[bestAt];
+      const Vec3 startAxis = g.normals[start].normalized();
+      if (!b.empty()) {
+        b.retract(o.retraction);
+        const bool upper = previous >= 0 &&
+                           std::binary_search(tree.nodes[previous].upper.begin(), tree.nodes[previous].upper.end(), k);
+        std::vector<AirWaypoint> air;
+        if (upper) {
+          air = liftAirMove(b.position(), b.axis(), g.points[start], startAxis, o.lift);
+        } else {
+          Eigen::AlignedBox3d box = printed;
+          box.extend(b.position());
+          box.extend(g.points[start]);
+          box.min().array() -= o.safeMargin;
+          box.max().array() += o.safeMargin;
+          air = safeBoxAirMove(b.position(), b.axis(), g.points[start], startAxis, box);
+        }
+        for (size_t i = 0; i + 1 < air.size(); ++i) {
+          b.add(air[i].point, air[i].axis, MoveKind::Air, 0.0, -1, -1, tourIndex);
+        }
+        // Prime during the approach, so E at the tour's start already holds it and every print
+        // segment's ΔE is its deposited filament only.
+        b.prime(o.retraction);
+        b.add(air.back().point, air.back().axis, MoveKind::Air, 0.0, -1, -1, tourIndex);
+        ++path.retractions;
+      }
+      const int layer = g.subgraphs[k].layer;
+      if (b.empty()) {  // the very first point: the nozzle starts there
+        b.add(g.points[start], startAxis, MoveKind::Air, 0.0, -1, -1, tourIndex);
+      }
+      for (size_t j = 1; j <= n; ++j) {
+        const int v = vs[(bestAt + j) % n];
+        b.add(g.points[v], g.normals[v].normalized(), MoveKind::Print, h[v], layer, k, tourIndex);
+        printed.extend(g.points[v]);
+      }
+      printed.extend(g.points[start]);
+      ++tourIndex;
+    }
+    previous = k;
+  }
+  path.tours = tourIndex;
+  path.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return path;
+}
+
+} // namespace geolattice

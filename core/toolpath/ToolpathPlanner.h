@@ -1,0 +1,76 @@
+#pragma once
+/// @file ToolpathPlanner.h
+/// @brief The printing path of the whole part (paper Section 3.2): sub-graphs in printing
+/// order, each printed as closed crossover-free Euler tours of its trimmed lattice, with the
+/// local layer thickness (Eq. 15), extrusion by mass conservation (Eq. 14), the nozzle axis
+/// (∇γ, with rotation steps where it turns faster than a set angle) and safe air moves
+/// between sub-graphs (Fig. 18).
+///
+/// Steps: contract zero-length lattice edges (EulerianTrimming.h) -> trim to Eulerian ->
+/// non-crossing tours -> thickness per vertex -> for each sub-graph in order: air move from
+/// the nozzle's position (a short lift when continuing onto an upper node of the current
+/// sub-graph, else the safe box around everything printed so far plus the next start, grown by
+/// safeMargin), retract before and prime after it; each tour starts at its vertex nearest to the
+/// nozzle. Extrusion per print segment (Eq. 14): π r_m² ΔE = μ w h̄ L, with h̄ the mean
+/// thickness of its ends; Extrusion holds the cumulative filament length E (mm).
+#include "lattice/LatticeGraph.h"
+#include "sequence/PrintSequencer.h"
+#include "sequence/SkeletonTree.h"
+#include "toolpath/LayerThickness.h"
+
+#include <vector>
+
+namespace geolattice {
+
+enum class MoveKind : int { Print = 0, Perimeter = 1, Air = 2 };
+
+struct ToolpathOptions {
+  double pathWidth = 0.6;          ///< w (mm, > 0)
+  double filamentRadius = 0.875;   ///< r_m (mm, > 0): 1.75 mm filament
+  double flowCorrection = 0.95;    ///< μ in (0, 1]
+  double printFeedRate = 10.0;     ///< f_p (mm/s, > 0)
+  double airFeedRate = 50.0;       ///< feed rate of air moves (mm/s, > 0)
+  double thicknessCap = 1.5;       ///< λ of Eq. 15 (> 0)
+  double maxTurnDeg = 5.0;         ///< largest axis change between consecutive points (deg, > 0)
+  double safeMargin = 5.0;         ///< margin of the safe box around the in-process part (mm, >= 0)
+  double lift = 2.0;               ///< lift for hops onto an upper node (mm, > 0)
+  double retraction = 1.0;         ///< filament retracted before an air move and primed after (mm, >= 0)
+};
+
+struct Toolpath {
+  std::vector<Vec3> points;          ///< tip positions in printing order (mm)
+  std::vector<Vec3> normals;         ///< unit nozzle axes
+  std::vector<MoveKind> kind;        ///< kind of the move that ends at the point (first: Air)
+  std::vector<double> thickness;     ///< h (mm), 0 on air moves
+  std::vector<double> width;         ///< w (mm), 0 on air moves
+  std::vector<double> extrusion;     ///< cumulative filament E (mm), after retraction/prime
+  std::vector<double> feedRate;      ///< mm/s of the move that ends at the point
+  std::vector<int> layer;            ///< lattice layer (-1 on air moves)
+  std::vector<int> subgraph;         ///< sub-graph (-1 on air moves)
+  std::vector<int> pathIndex;        ///< index of the continuous print path (tour) the point belongs to; air points carry the next one
+  // Report.
+  double printLength = 0;            ///< mm
+  double airLength = 0;              ///< mm
+  int retractions = 0;               ///< air moves
+  int tours = 0;
+  int crossings = 0;                 ///< self-crossings of the tours (countTourCrossovers; 0 expected)
+  int splitSubgraphs = 0;            ///< sub-graphs printed as more than one tour
+  int contractedEdges = 0;           ///< zero-length lattice edges contracted
+  int trimmedEdges = 0;
+  double trimmedLength = 0;          ///< mm of boundary left unprinted by the trimming
+  int rotationSteps = 0;             ///< points inserted to limit the axis turn
+  double filamentLength = 0;         ///< Σ ΔE over print moves (mm)
+  double depositedVolume = 0;        ///< Σ μ w h̄ L over print moves (mm³)
+  LayerThicknessResult thicknessStats;
+  double seconds = 0;
+};
+
+/// Plans the path. lattice: from buildLatticeGraph or the VTK conversion (points, normals,
+/// edges, edgeKind, edgeSubgraph, vertexSubgraph, subgraphs, layerValues); tree: its skeleton;
+/// order: sub-graph ids in printing order (a permutation, e.g. PrintSequence::order). Throws
+/// GeoLatticeError for bad options, mismatched inputs, an order that is not a permutation, or
+/// what trimming and tours reject (odd vertices left, missing normals).
+Toolpath planToolpath(const LatticeGraph& lattice, const SkeletonTree& tree, const std::vector<int>& order,
+                      const ToolpathOptions& options = {});
+
+} // namespace geolattice

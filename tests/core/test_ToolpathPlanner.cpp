@@ -1,0 +1,155 @@
+// The toolpath of whole parts (paper Section 3.2): every trimmed lattice edge printed once in
+// one closed tour per sub-graph, no self-crossing, thickness capped (Eq. 15), extrusion by
+// mass conservation (Eq. 14), safe air moves, and the independent collision verifier on the
+// full path including the air moves.
+#include "collision/CollisionVerifier.h"
+#include "common/Error.h"
+#include "gdf/GeodesicDistanceFields.h"
+#include "gdf/HeatSources.h"
+#include "io/MeshFileIO.h"
+#include "sequence/PotentialCollisions.h"
+#include "sequence/PrintMaterial.h"
+#include "sequence/PrintSequencer.h"
+#include "sequence/SkeletonTree.h"
+#include "slicer/CurvedLayerSlicer.h"
+#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "toolpath/ToolpathPlanner.h"
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <string>
+
+using namespace geolattice;
+
+namespace {
+
+struct Part {
+  LatticeGraph lattice;
+  SkeletonTree tree;
+  PrintSequence sequence;
+};
+
+Part buildPart(const std::string& file, double size, double edge, double width, double nozzleAngle) {
+  TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/" + file);
+  Eigen::AlignedBox3d box;
+  for (const Vec3& p : s.points) box.extend(p);
+  const double scale = size / box.sizes().maxCoeff();
+  for (Vec3& p : s.points) p = Vec3((p.x() - box.center().x()) * scale, (p.y() - box.center().y()) * scale,
+                                    (p.z() - box.min().z()) * scale);
+  TetrahedralizeOptions t;
+  t.targetEdgeLength = edge;
+  const TetMesh mesh = tetrahedralizeSurface(s, t).mesh;
+  const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
+  const CurvedLayers layers =
+      sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
+  LatticeOptions lo;
+  lo.alphaWidth = lo.betaWidth = width;
+  Part p;
+  p.lattice = buildLatticeGraph(layers, lo);
+  p.tree = buildSkeletonTree(mesh, f.gamma, p.lattice);
+  const MaterialSamples m = sampleLatticeMaterial(p.lattice, 1.0);
+  NozzleModel n;
+  n.halfAngleDeg = nozzleAngle;
+  const PotentialCollisions pcg = computePotentialCollisions(m, n);
+  SequenceOptions so;
+  so.strategy = SequenceStrategy::Rollout;
+  p.sequence = sequencePrint(p.tree, m, &pcg, so);
+  return p;
+}
+
+void expectGoodToolpath(const char* name, const Part& part, double nozzleAngle) {
+  ToolpathOptions o;
+  const Toolpath path = planToolpath(part.lattice, part.tree, part.sequence.order, o);
+  const size_t N = path.points.size();
+  ASSERT_GT(N, 0u);
+  for (const auto* a : {&path.thickness, &path.width, &path.extrusion, &path.feedRate}) {
+    ASSERT_EQ(a->size(), N);
+  }
+  // Every edge left after trimming printed exactly once: the print length is the lattice length
+  // minus the trimmed boundary (rotation steps subdivide segments without changing length).
+  double latticeLength = 0;
+  for (const auto& e : part.lattice.edges) latticeLength += (part.lattice.points[e[0]] - part.lattice.points[e[1]]).norm();
+  EXPECT_NEAR(path.printLength, latticeLength - path.trimmedLength, 1e-9 * latticeLength) << name;
+  // One continuous path per sub-graph: retractions = tours - 1 = sub-graphs - 1 + extra pieces.
+  EXPECT_EQ(path.retractions, path.tours - 1);
+  EXPECT_GE(path.tours, static_cast<int>(part.lattice.subgraphs.size()));
+  EXPECT_EQ(path.crossings, 0);
+  // Thickness never above λφ.
+  for (size_t i = 0; i < N; ++i) {
+    if (path.kind[i] == MoveKind::Air) continue;
+    const int l = path.layer[i];
+    const double phi = l > 0 ? part.lattice.layerValues[l] - part.lattice.layerValues[l - 1] : part.lattice.layerValues[0];
+    ASSERT_LE(path.thickness[i], o.thicknessCap * phi * (1 + 1e-12)) << name << " point " << i;
+    ASSERT_GT(path.thickness[i], 0.0);
+  }
+  // Mass conservation (Eq. 14) recomputed from the output arrays.
+  double volume = 0, filament = 0;
+  for (size_t i = 1; i < N; ++i) {
+    if (path.kind[i] == MoveKind::Air) continue;
+    const double h0 = path.kind[i - 1] == MoveKind::Air ? path.thickness[i] : path.thickness[i - 1];
+    volume += o.flowCorrection * path.width[i] * 0.5 * (h0 + path.thickness[i]) * (path.points[i] - path.points[i - 1]).norm();
+    filament += path.extrusion[i] - path.extrusion[i - 1];
+  }
+  EXPECT_NEAR(M_PI * o.filamentRadius * o.filamentRadius * filament, volume, 1e-9 * volume) << name;
+  // Net extrusion over the whole path: retractions and primes cancel.
+  EXPECT_NEAR(path.extrusion.back(), path.filamentLength, 1e-9 * path.filamentLength);
+  // Consecutive axes never turn more than the limit.
+  for (size_t i = 1; i < N; ++i) {
+    ASSERT_LE(std::acos(std::clamp(path.normals[i].dot(path.normals[i - 1]), -1.0, 1.0)), o.maxTurnDeg * M_PI / 180 + 1e-9)
+        << name << " point " << i;
+  }
+  // Independent collision check of the whole path, air moves included: time = index, only
+  // print points are material; obstacles of a skeleton ancestor are unavoidable.
+  std::vector<int> time(N);
+  std::vector<char> material(N);
+  CollisionExemption ex;
+  ex.group.resize(N);
+  for (size_t i = 0; i < N; ++i) {
+    time[i] = static_cast<int>(i);
+    material[i] = path.kind[i] != MoveKind::Air;
+    ex.group[i] = path.subgraph[i];
+  }
+  const SkeletonAncestry ancestry(part.tree);
+  ex.unavoidable = [&](int station, int obstacle) {
+    return station >= 0 && obstacle >= 0 && (station == obstacle || ancestry.isAncestor(obstacle, station));
+  };
+  NozzleModel nozzle;
+  nozzle.halfAngleDeg = nozzleAngle;
+  const CollisionReport r = verifyNozzleClearance(path.points, path.normals, time, nozzle, 5, &ex, &material);
+  std::printf("[toolpath] %s: %zu points, print %.0f mm, air %.0f mm, %d retractions, %d tours, %d split, "
+              "%d rotation steps, filament %.0f mm, thickness deviation %.2f..%.2f (capped %d), verifier NA %.0f: "
+              "%lld/%lld stations collide (%lld unavoidable), %.3f s plan, %.3f s verify\n",
+              name, N, path.printLength, path.airLength, path.retractions, path.tours, path.splitSubgraphs,
+              path.rotationSteps, path.filamentLength, path.thicknessStats.deviationMin, path.thicknessStats.deviationMax,
+              path.thicknessStats.cappedVertices, nozzleAngle, r.violatingStations, r.stations, r.unavoidableStations,
+              path.seconds, r.seconds);
+  for (const auto& v : r.violations) {
+    if (!v.unavoidable) {
+      std::printf("  station %d (%s, sub-graph %d) obstacle %d (sub-graph %d) h %.2f r %.2f\n", v.station,
+                  path.kind[v.station] == MoveKind::Air ? "air" : "print", path.subgraph[v.station], v.obstacle,
+                  path.subgraph[v.obstacle], v.height, v.radial);
+    }
+  }
+  EXPECT_TRUE(r.orderCollisionFree) << name;
+}
+
+} // namespace
+
+TEST(ToolpathPlanner, YShape) { expectGoodToolpath("Y", buildPart("y_shape.obj", 52, 2.0, 4.0, 45), 45); }
+
+TEST(ToolpathPlanner, ThreeBranchTree) {
+  expectGoodToolpath("three-branch tree", buildPart("three_branch_tree.obj", 50, 2.0, 4.0, 30), 30);
+}
+
+TEST(ToolpathPlanner, BadInput) {
+  LatticeGraph g;
+  SkeletonTree tree;
+  EXPECT_THROW(planToolpath(g, tree, {}), GeoLatticeError);  // empty lattice
+  ToolpathOptions o;
+  o.flowCorrection = 1.5;
+  EXPECT_THROW(planToolpath(g, tree, {}, o), GeoLatticeError);
+  o = ToolpathOptions{};
+  o.pathWidth = 0;
+  EXPECT_THROW(planToolpath(g, tree, {}, o), GeoLatticeError);
+}
