@@ -4,6 +4,7 @@
 #include "toolpath/EulerTour.h"
 #include "toolpath/EulerianTrimming.h"
 #include "toolpath/SafeBoxAirMove.h"
+#include "toolpath/SupportPerimeter.h"
 
 #include <algorithm>
 #include <chrono>
@@ -29,6 +30,9 @@ void validate(const ToolpathOptions& o) {
   positive(o.thicknessCap, "thickness cap lambda");
   positive(o.maxTurnDeg, "maximum turn angle");
   positive(o.lift, "lift");
+  if (!(o.toothLength >= 0) || !std::isfinite(o.toothLength)) {
+    throw GeoLatticeError("toolpath: tooth length must be >= 0 mm (0 = twice the path width)");
+  }
   if (!(o.flowCorrection > 0 && o.flowCorrection <= 1)) {
     throw GeoLatticeError("toolpath: flow correction mu must be in (0, 1]");
   }
@@ -59,7 +63,8 @@ public:
 
   /// Appends a point reached by a move of `kind`; inserts rotation steps so the axis never turns
   /// by more than maxTurn between consecutive points (positions and thickness interpolated).
-  void add(const Vec3& x, const Vec3& n, MoveKind kind, double h, int layer, int subgraph, int tour) {
+  void add(const Vec3& x, const Vec3& n, MoveKind kind, double h, int layer, int subgraph, int tour,
+           bool extrude = true) {
     if (!empty()) {
       const Vec3 x0 = position(), n0 = axis();
       const double h0 = p_.kind.back() == MoveKind::Air ? h : p_.thickness.back();
@@ -68,31 +73,32 @@ public:
       for (int i = 1; i < steps; ++i) {
         const double t = static_cast<double>(i) / steps;
         push((1 - t) * x0 + t * x, slerp(n0, n, t), kind, kind == MoveKind::Air ? 0.0 : (1 - t) * h0 + t * h, layer,
-             subgraph, tour);
+             subgraph, tour, extrude);
         ++p_.rotationSteps;
       }
     }
-    push(x, n, kind, h, layer, subgraph, tour);
+    push(x, n, kind, h, layer, subgraph, tour, extrude);
   }
 
   void retract(double amount) { e_ -= amount; }
   void prime(double amount) { e_ += amount; }
 
 private:
-  void push(const Vec3& x, const Vec3& n, MoveKind kind, double h, int layer, int subgraph, int tour) {
+  void push(const Vec3& x, const Vec3& n, MoveKind kind, double h, int layer, int subgraph, int tour, bool extrude) {
     const bool print = kind != MoveKind::Air;
+    const double w = print && extrude ? o_.pathWidth : 0.0;
     if (!empty()) {
       const double len = (x - position()).norm();
       if (print) {
         // Arriving by air, the segment starts at this tour's first vertex: use h at both ends.
         const double h0 = p_.kind.back() == MoveKind::Air ? h : p_.thickness.back();
         const double hm = 0.5 * (h + h0);
-        const double volume = o_.flowCorrection * o_.pathWidth * hm * len;  // Eq. 14: μ w h L
+        const double volume = o_.flowCorrection * w * hm * len;  // Eq. 14: μ w h L
         const double de = volume / (M_PI * o_.filamentRadius * o_.filamentRadius);
         e_ += de;
         p_.filamentLength += de;
         p_.depositedVolume += volume;
-        p_.printLength += len;
+        (kind == MoveKind::Print ? p_.printLength : p_.perimeterLength) += len;
       } else {
         p_.airLength += len;
       }
@@ -101,7 +107,7 @@ private:
     p_.normals.push_back(n);
     p_.kind.push_back(kind);
     p_.thickness.push_back(print ? h : 0.0);
-    p_.width.push_back(print ? o_.pathWidth : 0.0);
+    p_.width.push_back(w);
     p_.extrusion.push_back(e_);
     p_.feedRate.push_back(print ? o_.printFeedRate : o_.airFeedRate);
     p_.layer.push_back(print ? layer : -1);
@@ -163,6 +169,16 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const
   path.trimmedLength = trim.trimmedLength;
   path.splitSubgraphs = trim.splitSubgraphs;
   path.thicknessStats = computeLayerThickness(g, tree, o.thicknessCap);
+  PerimeterResult perimeters;
+  if (o.supportPerimeter) {
+    perimeters = supportPerimeters(g, trim.kept, o.pathWidth, o.toothLength > 0 ? o.toothLength : 2 * o.pathWidth);
+  }
+  path.perimeterLoops = static_cast<int>(perimeters.loops.size());
+  path.perimeterTeeth = perimeters.teeth;
+  std::vector<std::vector<int>> loopsAt(g.points.size());  // anchor vertex -> perimeter loops
+  for (size_t i = 0; i < perimeters.loops.size(); ++i) {
+    loopsAt[perimeters.loops[i].anchorVertex].push_back(static_cast<int>(i));
+  }
   const std::vector<double>& h = path.thicknessStats.thickness;
 
   std::vector<std::vector<int>> toursOf(K);
@@ -223,10 +239,24 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const
       if (b.empty()) {  // the very first point: the nozzle starts there
         b.add(g.points[start], startAxis, MoveKind::Air, 0.0, -1, -1, tourIndex);
       }
+      // Perimeter loops anchored at v: out along the connector, around, back without extrusion.
+      auto splicePerimeters = [&](int v) {
+        for (int li : loopsAt[v]) {
+          const PerimeterLoop& loop = perimeters.loops[li];
+          for (size_t q = 0; q < loop.points.size(); ++q) {
+            b.add(loop.points[q], loop.normals[q], MoveKind::Perimeter, h[loop.nearVertex[q]], layer, k, tourIndex);
+            printed.extend(loop.points[q]);
+          }
+          b.add(g.points[v], g.normals[v].normalized(), MoveKind::Perimeter, h[v], layer, k, tourIndex, false);
+        }
+        loopsAt[v].clear();
+      };
+      splicePerimeters(start);
       for (size_t j = 1; j <= n; ++j) {
         const int v = vs[(bestAt + j) % n];
         b.add(g.points[v], g.normals[v].normalized(), MoveKind::Print, h[v], layer, k, tourIndex);
         printed.extend(g.points[v]);
+        splicePerimeters(v);
       }
       printed.extend(g.points[start]);
       ++tourIndex;

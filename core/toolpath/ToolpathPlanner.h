@@ -7,11 +7,15 @@
 /// between sub-graphs (Fig. 18).
 ///
 /// Steps: contract zero-length lattice edges (EulerianTrimming.h) -> trim to Eulerian ->
-/// non-crossing tours -> thickness per vertex -> for each sub-graph in order: air move from
+/// non-crossing tours -> support perimeters -> thickness per vertex -> for each sub-graph in
+/// order: air move from
 /// the nozzle's position (a short lift when continuing onto an upper node of the current
 /// sub-graph, else the safe box around everything printed so far plus the next start, grown by
 /// safeMargin), retract before and prime after it; each tour starts at its vertex nearest to the
-/// nozzle. Extrusion per print segment (Eq. 14): π r_m² ΔE = μ w h̄ L, with h̄ the mean
+/// nozzle. A support perimeter loop is spliced into the tour where the tour first reaches the
+/// loop's anchor vertex: a connector of length w out to the perimeter, the loop, and the way
+/// back without extrusion (width 0), so the sub-graph stays one continuous path. Extrusion per
+/// print segment (Eq. 14): π r_m² ΔE = μ w h̄ L, with h̄ the mean
 /// thickness of its ends; Extrusion holds the cumulative filament length E (mm).
 #include "lattice/LatticeGraph.h"
 #include "sequence/PrintSequencer.h"
@@ -35,6 +39,8 @@ struct ToolpathOptions {
   double safeMargin = 5.0;         ///< margin of the safe box around the in-process part (mm, >= 0)
   double lift = 2.0;               ///< lift for hops onto an upper node (mm, > 0)
   double retraction = 1.0;         ///< filament retracted before an air move and primed after (mm, >= 0)
+  bool supportPerimeter = true;    ///< add the jagged support perimeter (SupportPerimeter.h)
+  double toothLength = 0.0;        ///< l (mm); 0 = 2 w
 };
 
 struct Toolpath {
@@ -49,7 +55,10 @@ struct Toolpath {
   std::vector<int> subgraph;         ///< sub-graph (-1 on air moves)
   std::vector<int> pathIndex;        ///< index of the continuous print path (tour) the point belongs to; air points carry the next one
   // Report.
-  double printLength = 0;            ///< mm
+  double printLength = 0;            ///< mm of lattice (MoveKind::Print)
+  double perimeterLength = 0;        ///< mm of support perimeter incl. its connectors (MoveKind::Perimeter)
+  int perimeterLoops = 0;
+  int perimeterTeeth = 0;
   double airLength = 0;              ///< mm
   int retractions = 0;               ///< air moves
   int tours = 0;

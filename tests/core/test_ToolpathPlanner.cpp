@@ -87,7 +87,7 @@ void expectGoodToolpath(const char* name, const Part& part, double nozzleAngle) 
   double volume = 0, filament = 0;
   for (size_t i = 1; i < N; ++i) {
     if (path.kind[i] == MoveKind::Air) continue;
-    const double h0 = path.kind[i - 1] == MoveKind::Air ? path.thickness[i] : path.thickness[i - 1];
+    const double h0 = path.kind[i - 1] == MoveKind::Air ? path.thickness[i] : path.thickness[i - 1];  // as the planner
     volume += o.flowCorrection * path.width[i] * 0.5 * (h0 + path.thickness[i]) * (path.points[i] - path.points[i - 1]).norm();
     filament += path.extrusion[i] - path.extrusion[i - 1];
   }
@@ -117,6 +117,10 @@ void expectGoodToolpath(const char* name, const Part& part, double nozzleAngle) 
   NozzleModel nozzle;
   nozzle.halfAngleDeg = nozzleAngle;
   const CollisionReport r = verifyNozzleClearance(path.points, path.normals, time, nozzle, 5, &ex, &material);
+  EXPECT_GT(path.perimeterLoops, 0);
+  EXPECT_GT(path.perimeterLength, 0.0);
+  std::printf("[toolpath] %s: perimeter %d loops %.0f mm %d teeth\n", name, path.perimeterLoops, path.perimeterLength,
+              path.perimeterTeeth);
   std::printf("[toolpath] %s: %zu points, print %.0f mm, air %.0f mm, %d retractions, %d tours, %d split, "
               "%d rotation steps, filament %.0f mm, thickness deviation %.2f..%.2f (capped %d), verifier NA %.0f: "
               "%lld/%lld stations collide (%lld unavoidable), %.3f s plan, %.3f s verify\n",
