@@ -1,0 +1,94 @@
+// Toolpath planning (paper Section 3.2) on the bunny scaled to 100 mm, ~66k tets, 0.6 mm layers,
+// lattice width 6 mm (the paper's bunny: Fleury 77 s + thickness 36 s). Timed separately:
+// trimming + crossover-free Euler tours + layer thickness (the paper's steps), and the whole
+// planner (with support perimeters, rotation steps, air moves, extrusion).
+// Run: build/bin/bench_toolpath
+#include "gdf/GeodesicDistanceFields.h"
+#include "gdf/HeatSources.h"
+#include "io/MeshFileIO.h"
+#include "lattice/LatticeGraph.h"
+#include "sequence/PrintMaterial.h"
+#include "sequence/PrintSequencer.h"
+#include "sequence/SkeletonTree.h"
+#include "slicer/CurvedLayerSlicer.h"
+#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "toolpath/EulerTour.h"
+#include "toolpath/EulerianTrimming.h"
+#include "toolpath/LayerThickness.h"
+#include "toolpath/ToolpathPlanner.h"
+
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+using namespace geolattice;
+
+namespace {
+
+struct Bunny {
+  LatticeGraph lattice;
+  SkeletonTree tree;
+  std::vector<int> order;
+};
+
+const Bunny& bunny() {
+  static const Bunny b = [] {
+    Bunny r;
+    TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/bunny.obj");
+    Eigen::AlignedBox3d box;
+    for (const Vec3& p : s.points) box.extend(p);
+    const double scale = 100.0 / box.sizes().maxCoeff();
+    for (Vec3& p : s.points) p = (p - box.min()) * scale;
+    TetrahedralizeOptions options;
+    options.autoTargetTets = 66000;
+    const TetMesh mesh = tetrahedralizeSurface(s, options).mesh;
+    const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 1.0));
+    const CurvedLayers layers =
+        sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
+    LatticeOptions lo;
+    lo.alphaWidth = lo.betaWidth = 6.0;
+    r.lattice = buildLatticeGraph(layers, lo);
+    r.tree = buildSkeletonTree(mesh, f.gamma, r.lattice);
+    SequenceOptions so;
+    so.strategy = SequenceStrategy::LayerPriority;
+    r.order = sequencePrint(r.tree, sampleLatticeMaterial(r.lattice, 1.0), nullptr, so).order;
+    return r;
+  }();
+  return b;
+}
+
+void BM_TrimToursThickness(benchmark::State& state) {
+  const Bunny& b = bunny();
+  EulerTours tours;
+  for (auto _ : state) {
+    LatticeGraph g = b.lattice;
+    contractShortEdges(g, 1e-9);
+    const TrimResult trim = trimToEulerian(g);
+    tours = nonCrossingEulerTours(g, trim.kept);
+    const LayerThicknessResult h = computeLayerThickness(g, b.tree, 1.5);
+    benchmark::DoNotOptimize(h.thickness.data());
+  }
+  state.counters["edges"] = static_cast<double>(b.lattice.edges.size());
+  state.counters["subgraphs"] = static_cast<double>(b.lattice.subgraphs.size());
+  state.counters["tours"] = static_cast<double>(tours.edges.size());
+}
+BENCHMARK(BM_TrimToursThickness)->Unit(benchmark::kMillisecond);
+
+void BM_PlanToolpath(benchmark::State& state) {
+  const Bunny& b = bunny();
+  Toolpath p;
+  for (auto _ : state) {
+    p = planToolpath(b.lattice, b.tree, b.order, ToolpathOptions{});
+    benchmark::DoNotOptimize(p.points.data());
+  }
+  state.counters["points"] = static_cast<double>(p.points.size());
+  state.counters["print_mm"] = p.printLength;
+  state.counters["perimeter_mm"] = p.perimeterLength;
+  state.counters["air_mm"] = p.airLength;
+  state.counters["retractions"] = p.retractions;
+}
+BENCHMARK(BM_PlanToolpath)->Unit(benchmark::kMillisecond);
+
+} // namespace
+
+BENCHMARK_MAIN();
