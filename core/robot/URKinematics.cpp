@@ -2,6 +2,7 @@
 
 #include "common/Error.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace geolattice {
@@ -57,66 +58,75 @@ Isometry forwardKinematics(const RobotModel& r, const JointVector& q) {
   return t;
 }
 
-std::vector<JointVector> inverseKinematics(const RobotModel& r, const Isometry& flange, double wristFreeAngle) {
-  std::vector<JointVector> out;
+bool inverseKinematicsBranch(const RobotModel& r, const Isometry& flange, int branch, JointVector& q,
+                             double wristFreeAngle) {
+  const int shoulder = (branch >> 2) & 1, wrist = (branch >> 1) & 1, elbow = branch & 1;
   const double d1 = r.d[0], a2 = r.a[1], a3 = r.a[2], d4 = r.d[3], d5 = r.d[4], d6 = r.d[5];
   const Eigen::Vector3d p06 = flange.translation();
   const Eigen::Matrix3d r06 = flange.linear();
   const Eigen::Vector3d p05 = p06 - d6 * r06.col(2);
   const double rxy = std::hypot(p05.x(), p05.y());
   if (rxy < std::abs(d4)) {
-    return out;  // wrist centre inside the shoulder cylinder: unreachable
+    return false;  // wrist centre inside the shoulder cylinder: unreachable
   }
   const double psi = std::atan2(p05.y(), p05.x());
   const double phi = std::asin(std::clamp(d4 / rxy, -1.0, 1.0));
-  for (double theta1 : {psi + phi, psi + M_PI - phi}) {
-    const double s1 = std::sin(theta1), c1 = std::cos(theta1);
-    const double c5 = (p06.x() * s1 - p06.y() * c1 - d4) / d6;
-    if (std::abs(c5) > 1.0 + 1e-12) {
+  const double theta1 = shoulder == 0 ? psi + phi : psi + M_PI - phi;
+  const double s1 = std::sin(theta1), c1 = std::cos(theta1);
+  const double c5 = (p06.x() * s1 - p06.y() * c1 - d4) / d6;
+  if (std::abs(c5) > 1.0 + 1e-12) {
+    return false;
+  }
+  const double theta5 = (wrist == 0 ? 1.0 : -1.0) * std::acos(std::clamp(c5, -1.0, 1.0));
+  const double s5 = std::sin(theta5);
+  // z1 in flange coordinates: (s5 c6, -s5 s6, c5).
+  const Eigen::Vector3d u = r06.transpose() * Eigen::Vector3d(s1, -c1, 0);
+  const double theta6 = std::abs(s5) < 1e-12 ? wristFreeAngle : std::atan2(-u.y() / s5, u.x() / s5);
+  // Planar 3R chain in frame 1.
+  const Isometry t01 = dhTransform(theta1, d1, 0, r.alpha[0]);
+  const Isometry t45 = dhTransform(theta5, d5, 0, r.alpha[4]);
+  const Isometry t56 = dhTransform(theta6, d6, 0, r.alpha[5]);
+  const Isometry t14 = t01.inverse() * flange * (t45 * t56).inverse();
+  const double x = t14.translation().x(), y = t14.translation().y();
+  const double c3 = (x * x + y * y - a2 * a2 - a3 * a3) / (2 * a2 * a3);
+  if (std::abs(c3) > 1.0 + 1e-12) {
+    return false;
+  }
+  const double theta3 = (elbow == 0 ? 1.0 : -1.0) * std::acos(std::clamp(c3, -1.0, 1.0));
+  const double theta2 = std::atan2(y, x) - std::atan2(a3 * std::sin(theta3), a2 + a3 * std::cos(theta3));
+  // R14 = Rz(θ2 + θ3 + θ4) Rx(π/2): the total angle from its first column.
+  const Eigen::Matrix3d r14 = t14.linear();
+  const double theta4 = std::atan2(r14(1, 0), r14(0, 0)) - theta2 - theta3;
+  q = {wrapAngle(theta1), wrapAngle(theta2), wrapAngle(theta3), wrapAngle(theta4), wrapAngle(theta5), wrapAngle(theta6)};
+  return true;
+}
+
+std::vector<JointVector> inverseKinematics(const RobotModel& r, const Isometry& flange, double wristFreeAngle) {
+  std::vector<JointVector> out;
+  for (int branch = 0; branch < 8; ++branch) {
+    JointVector q;
+    if (!inverseKinematicsBranch(r, flange, branch, q, wristFreeAngle)) {
       continue;
     }
-    const double theta5a = std::acos(std::clamp(c5, -1.0, 1.0));
-    for (double theta5 : {theta5a, -theta5a}) {
-      const double s5 = std::sin(theta5);
-      // z1 in flange coordinates: (s5 c6, -s5 s6, c5).
-      const Eigen::Vector3d u = r06.transpose() * Eigen::Vector3d(s1, -c1, 0);
-      const double theta6 = std::abs(s5) < 1e-12 ? wristFreeAngle : std::atan2(-u.y() / s5, u.x() / s5);
-      // Planar 3R chain in frame 1.
-      const Isometry t01 = dhTransform(theta1, d1, 0, r.alpha[0]);
-      const Isometry t45 = dhTransform(theta5, d5, 0, r.alpha[4]);
-      const Isometry t56 = dhTransform(theta6, d6, 0, r.alpha[5]);
-      const Isometry t14 = t01.inverse() * flange * (t45 * t56).inverse();
-      const double x = t14.translation().x(), y = t14.translation().y();
-      const double c3 = (x * x + y * y - a2 * a2 - a3 * a3) / (2 * a2 * a3);
-      if (std::abs(c3) > 1.0 + 1e-12) {
-        continue;
-      }
-      const double theta3a = std::acos(std::clamp(c3, -1.0, 1.0));
-      for (double theta3 : {theta3a, -theta3a}) {
-        const double theta2 = std::atan2(y, x) - std::atan2(a3 * std::sin(theta3), a2 + a3 * std::cos(theta3));
-        // R14 = Rz(θ2 + θ3 + θ4) Rx(π/2): the total angle from its first column.
-        const Eigen::Matrix3d r14 = t14.linear();
-        const double total = std::atan2(r14(1, 0), r14(0, 0));
-        const double theta4 = total - theta2 - theta3;
-        out.push_back({wrapAngle(theta1), wrapAngle(theta2), wrapAngle(theta3), wrapAngle(theta4), wrapAngle(theta5),
-                       wrapAngle(theta6)});
-        if (theta3a == 0) {
-          break;  // elbow straight: one solution
-        }
-      }
-      if (theta5a == 0) {
-        break;
-      }
+    // Degenerate branches (straight elbow, wrist singular, shoulder on the cylinder) repeat a solution.
+    bool duplicate = false;
+    for (const JointVector& o : out) {
+      double d = 0;
+      for (int i = 0; i < 6; ++i) d = std::max(d, std::abs(std::remainder(o[i] - q[i], 2 * M_PI)));
+      duplicate |= d < 1e-12;
     }
-    if (phi == M_PI / 2) {
-      break;
+    if (!duplicate) {
+      out.push_back(q);
     }
   }
   return out;
 }
 
 SingularityDistance singularityDistance(const RobotModel& r, const JointVector& q) {
-  const Isometry t = forwardKinematics(r, q);
+  return singularityDistance(r, q, forwardKinematics(r, q));
+}
+
+SingularityDistance singularityDistance(const RobotModel& r, const JointVector& q, const Isometry& t) {
   const Eigen::Vector3d p05 = t.translation() - r.d[5] * t.linear().col(2);
   SingularityDistance s;
   s.shoulder = std::hypot(p05.x(), p05.y()) - std::abs(r.d[3]);

@@ -40,6 +40,12 @@ RobotModel robotModelByName(const std::string& name);
 /// Base -> flange transform.
 Isometry forwardKinematics(const RobotModel& robot, const JointVector& q);
 
+/// One IK branch: shoulder (0/1: θ1 = ψ + asin(d4/r) or ψ + π − asin(d4/r)), wrist (0/1:
+/// θ5 = +acos or −acos), elbow (0/1: θ3 = +acos or −acos); branch = 4·shoulder + 2·wrist + elbow.
+/// Returns false when that branch cannot reach the pose. Joints in (-π, π].
+bool inverseKinematicsBranch(const RobotModel& robot, const Isometry& flange, int branch, JointVector& q,
+                             double wristFreeAngle = 0.0);
+
 /// All real solutions for the flange pose (0 to 8), each joint in (-π, π]. wristFreeAngle is
 /// used for θ6 at the wrist singularity. Unreachable poses give an empty list.
 std::vector<JointVector> inverseKinematics(const RobotModel& robot, const Isometry& flange, double wristFreeAngle = 0.0);
@@ -50,5 +56,7 @@ struct SingularityDistance {
   double shoulder = 0, elbow = 0, wrist = 0;
 };
 SingularityDistance singularityDistance(const RobotModel& robot, const JointVector& q);
+/// Same, when the flange pose of q is already known (no forward kinematics).
+SingularityDistance singularityDistance(const RobotModel& robot, const JointVector& q, const Isometry& flange);
 
 } // namespace geolattice

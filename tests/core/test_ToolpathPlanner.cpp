@@ -13,6 +13,7 @@
 #include "sequence/SkeletonTree.h"
 #include "slicer/CurvedLayerSlicer.h"
 #include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "robot/RobotPathSolver.h"
 #include "toolpath/ToolpathPlanner.h"
 
 #include <gtest/gtest.h>
@@ -117,6 +118,14 @@ void expectGoodToolpath(const char* name, const Part& part, double nozzleAngle) 
   NozzleModel nozzle;
   nozzle.halfAngleDeg = nozzleAngle;
   const CollisionReport r = verifyNozzleClearance(path.points, path.normals, time, nozzle, 5, &ex, &material);
+  double devSum = 0;
+  int devCount = 0;
+  for (const auto& l : path.thicknessStats.perLayer) {
+    devSum += l.mean * l.vertices;
+    devCount += l.vertices;
+  }
+  std::printf("[toolpath] %s: thickness deviation e = (h - phi) / phi: min %.3f mean %.3f max %.3f over %d vertices\n",
+              name, path.thicknessStats.deviationMin, devSum / devCount, path.thicknessStats.deviationMax, devCount);
   EXPECT_GT(path.perimeterLoops, 0);
   EXPECT_GT(path.perimeterLength, 0.0);
   std::printf("[toolpath] %s: perimeter %d loops %.0f mm %d teeth\n", name, path.perimeterLoops, path.perimeterLength,
@@ -144,6 +153,38 @@ TEST(ToolpathPlanner, YShape) { expectGoodToolpath("Y", buildPart("y_shape.obj",
 
 TEST(ToolpathPlanner, ThreeBranchTree) {
   expectGoodToolpath("three-branch tree", buildPart("three_branch_tree.obj", 50, 2.0, 4.0, 30), 30);
+}
+
+TEST(RobotPath, YShapeInTheUr5Cell) {
+  // Every toolpath point of the Y at the nozzle tip with its axis along the nozzle, joints
+  // continuous, within speed limits at the planner's feed rates.
+  const Part part = buildPart("y_shape.obj", 52, 2.0, 4.0, 45);
+  const Toolpath path = planToolpath(part.lattice, part.tree, part.sequence.order, ToolpathOptions{});
+  for (const RobotModel& robot : {ur5Model(), ur5eModel()}) {
+    RobotCell cell;
+    cell.robot = robot;
+    const RobotPath rp = solveRobotPath(cell, path.points, path.normals);
+    EXPECT_TRUE(rp.unreachable.empty()) << robot.name << ": " << rp.unreachable.size() << " unreachable";
+    double worstPosition = 0, worstAxisDeg = 0;
+    for (size_t i = 0; i < path.points.size(); ++i) {
+      const Isometry part = forwardKinematics(robot, rp.joints[i]) * cell.partOnFlange;
+      const Eigen::Vector3d tip = part * (cell.partScale * path.points[i]);
+      worstPosition = std::max(worstPosition, (tip - cell.nozzleTip).norm());
+      const Eigen::Vector3d axis = part.linear() * path.normals[i].normalized();
+      worstAxisDeg = std::max(worstAxisDeg, std::acos(std::clamp(axis.dot(cell.nozzleAxis), -1.0, 1.0)) * 180 / M_PI);
+    }
+    double speedDeg = 0;
+    const double ratio = jointSpeedRatio(cell, rp, path.points, path.feedRate, speedDeg);
+    std::printf("[robot] %s, Y: %zu points, branch %d, max joint step %.2f deg, max joint speed %.1f deg/s (ratio %.2f), "
+                "min singularity distances shoulder %.3f m elbow %.3f wrist %.3f, tip error %.2e m, axis error %.2e deg, "
+                "%.3f s\n",
+                robot.name.c_str(), path.points.size(), rp.branch, rp.maxJointStepDeg, speedDeg, ratio,
+                rp.minSingularity.shoulder, rp.minSingularity.elbow, rp.minSingularity.wrist, worstPosition,
+                worstAxisDeg, rp.seconds);
+    EXPECT_LT(worstPosition, 1e-6);
+    EXPECT_LT(worstAxisDeg, 0.01);
+    EXPECT_LT(rp.maxJointStepDeg, 20.0);
+  }
 }
 
 TEST(ToolpathPlanner, BadInput) {

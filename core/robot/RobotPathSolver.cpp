@@ -1,0 +1,235 @@
+#include "robot/RobotPathSolver.h"
+
+#include "common/Error.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace geolattice {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+bool withinLimits(const RobotModel& r, const JointVector& q) {
+  for (int i = 0; i < 6; ++i) {
+    if (q[i] < r.lowerLimit[i] || q[i] > r.upperLimit[i]) return false;
+  }
+  return true;
+}
+
+/// q (each joint in (-π, π]) shifted by multiples of 2π to be nearest to `near`, inside limits.
+JointVector unwrapNear(const RobotModel& r, JointVector q, const JointVector& near) {
+  for (int i = 0; i < 6; ++i) {
+    double v = near[i] + std::remainder(q[i] - near[i], 2 * M_PI);
+    if (v > r.upperLimit[i]) v -= 2 * M_PI;
+    if (v < r.lowerLimit[i]) v += 2 * M_PI;
+    q[i] = v;
+  }
+  return q;
+}
+
+double jointStep(const JointVector& a, const JointVector& b) {
+  double d = 0;
+  for (int i = 0; i < 6; ++i) d = std::max(d, std::abs(std::remainder(a[i] - b[i], 2 * M_PI)));
+  return d;
+}
+
+double singularityPenalty(const RobotModel& r, const JointVector& q, const Isometry& flange, double margin) {
+  const SingularityDistance s = singularityDistance(r, q, flange);
+  double p = 0;
+  for (double d : {s.shoulder, s.elbow, s.wrist}) {
+    if (d < margin) p += (margin - d) / margin * 10.0;  // up to 10 rad-equivalents per singularity
+  }
+  return p;
+}
+
+} // namespace
+
+RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+                         const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  cell.validate();
+  const size_t N = points.size();
+  if (N == 0) {
+    throw GeoLatticeError("robot path: the toolpath is empty");
+  }
+  if (normals.size() != N) {
+    throw GeoLatticeError("robot path: one normal per toolpath point is needed");
+  }
+  for (size_t i = 0; i < N; ++i) {
+    if (!points[i].allFinite() || !normals[i].allFinite() || !(normals[i].norm() > 0)) {
+      std::ostringstream s;
+      s << "robot path: toolpath point " << i << " has a NaN position or a NaN/zero normal";
+      throw GeoLatticeError(s.str());
+    }
+  }
+  if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2) {
+    throw GeoLatticeError("robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2)");
+  }
+  const RobotModel& robot = cell.robot;
+  const int P = o.psiSamples;
+  const double dpsi = 2 * M_PI / P;
+  const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
+  std::vector<size_t> coarse;
+  for (size_t i = 0; i < N; i += stride) coarse.push_back(i);
+  if (coarse.back() != N - 1) coarse.push_back(N - 1);
+  const size_t S = coarse.size();
+
+  // Flange poses of the coarse samples on the ψ grid (shared by the branches).
+  std::vector<Isometry> flange(S * P);
+  for (size_t s = 0; s < S; ++s) {
+    for (int k = 0; k < P; ++k) {
+      flange[s * P + k] = cell.flangePose(points[coarse[s]], normals[coarse[s]], k * dpsi);
+    }
+  }
+  // Branches that reach a subsample of the coarse path at some ψ everywhere are candidates.
+  std::vector<int> branches;
+  for (int branch = 0; branch < 8; ++branch) {
+    bool reaches = true;
+    for (size_t s = 0; s < S && reaches; s += std::max<size_t>(1, S / 50)) {
+      bool any = false;
+      for (int k = 0; k < P && !any; k += 3) {
+        JointVector qq;
+        any = inverseKinematicsBranch(robot, flange[s * P + k], branch, qq) && withinLimits(robot, qq);
+      }
+      reaches = any;
+    }
+    if (reaches) branches.push_back(branch);
+  }
+  // Coarse DP per candidate branch.
+  double bestCost = kInf;
+  int bestBranch = -1;
+  std::vector<int> bestPsi;
+  std::vector<JointVector> q(S * P);
+  std::vector<char> ok(S * P);
+  std::vector<double> cost(S * P), penalty(S * P);
+  std::vector<int> from(S * P);
+  for (int branch : branches) {
+    for (size_t s = 0; s < S; ++s) {
+      for (int k = 0; k < P; ++k) {
+        const size_t id = s * P + k;
+        ok[id] = inverseKinematicsBranch(robot, flange[id], branch, q[id]);
+        penalty[id] = ok[id] ? singularityPenalty(robot, q[id], flange[id], o.singularityMargin) : kInf;
+      }
+    }
+    for (int k = 0; k < P; ++k) {
+      cost[k] = penalty[k];
+      from[k] = -1;
+    }
+    for (size_t s = 1; s < S; ++s) {
+      for (int k = 0; k < P; ++k) {
+        const size_t id = s * P + k;
+        cost[id] = kInf;
+        from[id] = -1;
+        if (!ok[id]) continue;
+        for (int dk = -o.maxPsiStep; dk <= o.maxPsiStep; ++dk) {
+          const int j = ((k + dk) % P + P) % P;
+          const size_t pid = (s - 1) * P + j;
+          if (!std::isfinite(cost[pid])) continue;
+          const double c = cost[pid] + jointStep(q[pid], q[id]) + penalty[id];
+          if (c < cost[id]) {
+            cost[id] = c;
+            from[id] = j;
+          }
+        }
+      }
+    }
+    int end = -1;
+    for (int k = 0; k < P; ++k) {
+      if (std::isfinite(cost[(S - 1) * P + k]) && (end < 0 || cost[(S - 1) * P + k] < cost[(S - 1) * P + end])) end = k;
+    }
+    if (end >= 0 && cost[(S - 1) * P + end] < bestCost) {
+      bestCost = cost[(S - 1) * P + end];
+      bestBranch = branch;
+      bestPsi.assign(S, 0);
+      int k = end;
+      for (size_t s = S; s-- > 0;) {
+        bestPsi[s] = k;
+        k = from[s * P + k];
+      }
+    }
+  }
+  if (bestBranch < 0) {
+    throw GeoLatticeError(
+        "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously (check the nozzle "
+        "position, the part-on-flange transform and the part size)");
+  }
+
+  // Fine pass.
+  RobotPath path;
+  path.branch = bestBranch;
+  path.joints.resize(N);
+  path.psi.resize(N);
+  path.minSingularity = {kInf, kInf, kInf};
+  JointVector previous{};
+  bool havePrevious = false;
+  size_t seg = 0;
+  for (size_t i = 0; i < N; ++i) {
+    while (seg + 1 < S - 1 && coarse[seg + 1] <= i) ++seg;
+    const size_t a = coarse[seg], b = coarse[std::min(seg + 1, S - 1)];
+    double pa = bestPsi[seg] * dpsi, pb = bestPsi[std::min(seg + 1, S - 1)] * dpsi;
+    pb = pa + std::remainder(pb - pa, 2 * M_PI);
+    const double t = b > a ? static_cast<double>(i - a) / static_cast<double>(b - a) : 0.0;
+    double psi = (1 - t) * pa + t * pb;
+    JointVector qi;
+    Isometry f = cell.flangePose(points[i], normals[i], psi);
+    bool found = inverseKinematicsBranch(robot, f, bestBranch, qi, havePrevious ? previous[5] : 0.0);
+    for (int retry = 1; !found && retry <= 3; ++retry) {
+      for (double sign : {1.0, -1.0}) {
+        const double p2 = psi + sign * retry * dpsi;
+        f = cell.flangePose(points[i], normals[i], p2);
+        if (inverseKinematicsBranch(robot, f, bestBranch, qi, havePrevious ? previous[5] : 0.0)) {
+          found = true;
+          psi = p2;
+          break;
+        }
+      }
+    }
+    if (found && havePrevious) {
+      qi = unwrapNear(robot, qi, previous);
+    }
+    if (!found || !withinLimits(robot, qi)) {
+      path.unreachable.push_back(static_cast<int>(i));
+      qi = havePrevious ? previous : JointVector{};
+    } else {
+      const SingularityDistance sd = singularityDistance(robot, qi, f);
+      path.minSingularity.shoulder = std::min(path.minSingularity.shoulder, sd.shoulder);
+      path.minSingularity.elbow = std::min(path.minSingularity.elbow, sd.elbow);
+      path.minSingularity.wrist = std::min(path.minSingularity.wrist, sd.wrist);
+    }
+    if (havePrevious) {
+      double step = 0;
+      for (int j = 0; j < 6; ++j) step = std::max(step, std::abs(qi[j] - previous[j]));
+      path.maxJointStepDeg = std::max(path.maxJointStepDeg, step * 180.0 / M_PI);
+    }
+    path.joints[i] = qi;
+    path.psi[i] = psi;
+    previous = qi;
+    havePrevious = havePrevious || found;
+  }
+  path.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return path;
+}
+
+double jointSpeedRatio(const RobotCell& cell, const RobotPath& path, const std::vector<Eigen::Vector3d>& points,
+                       const std::vector<double>& feedRate, double& maxSpeedDegS) {
+  double ratio = 0;
+  maxSpeedDegS = 0;
+  for (size_t i = 1; i < path.joints.size() && i < points.size() && i < feedRate.size(); ++i) {
+    const double len = (points[i] - points[i - 1]).norm();
+    if (!(feedRate[i] > 0) || len == 0) continue;
+    const double dt = len / feedRate[i];
+    for (int j = 0; j < 6; ++j) {
+      const double speed = std::abs(path.joints[i][j] - path.joints[i - 1][j]) / dt;
+      maxSpeedDegS = std::max(maxSpeedDegS, speed * 180.0 / M_PI);
+      ratio = std::max(ratio, speed / cell.robot.maxSpeed[j]);
+    }
+  }
+  return ratio;
+}
+
+} // namespace geolattice
