@@ -1,0 +1,160 @@
+#include "program/URScriptProgram.h"
+
+#include "common/Error.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+namespace geolattice {
+
+std::string urNumber(double v) {
+  if (std::abs(v) < 5e-7) {
+    return "0";
+  }
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.6f", v);
+  std::string s = buf;
+  while (!s.empty() && s.back() == '0') s.pop_back();
+  if (!s.empty() && s.back() == '.') s.pop_back();
+  return s;
+}
+
+namespace {
+
+std::string poseLiteral(const Isometry& t) {
+  const UrPose p = toUrPose(t);
+  std::string s = "p[";
+  for (int i = 0; i < 6; ++i) {
+    s += urNumber(p[i]);
+    s += i < 5 ? ", " : "]";
+  }
+  return s;
+}
+
+} // namespace
+
+ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const ProgramInput& in, const URScriptOptions& o,
+                           const std::function<std::ostream&(size_t)>& openFile) {
+  if (!in.points || !in.extrusion || !in.feedRate || !in.kind) {
+    throw GeoLatticeError("URScript: toolpath arrays missing");
+  }
+  const size_t N = in.points->size();
+  if (N == 0) {
+    throw GeoLatticeError("URScript: the toolpath is empty");
+  }
+  if (rp.joints.size() != N || in.extrusion->size() != N || in.feedRate->size() != N || in.kind->size() != N) {
+    throw GeoLatticeError("URScript: toolpath arrays and joint solutions differ in length");
+  }
+  if (!(o.speedFactor > 0 && o.speedFactor <= 1) || !(o.maxFilamentRate > 0) || !(o.blendFraction >= 0) ||
+      o.maxFileBytes < 10000) {
+    throw GeoLatticeError("URScript: bad options (speed factor in (0, 1], max filament rate > 0, file size >= 10 kB)");
+  }
+  const auto& pts = *in.points;
+  const auto& kind = *in.kind;
+  const RobotModel& robot = cell.robot;
+  // TCP (part frame) poses and segment times.
+  std::vector<Isometry> tcp(N);
+  for (size_t i = 0; i < N; ++i) {
+    tcp[i] = forwardKinematics(robot, rp.joints[i]) * cell.partOnFlange;
+  }
+  ProgramStats stats;
+  std::vector<double> time(N, 0.0);
+  for (size_t i = 1; i < N; ++i) {
+    const double len = (pts[i] - pts[i - 1]).norm();
+    double t = (*in.feedRate)[i] > 0 ? len / (*in.feedRate)[i] : 0.0;
+    for (int j = 0; j < 6; ++j) {
+      t = std::max(t, std::abs(rp.joints[i][j] - rp.joints[i - 1][j]) / (o.speedFactor * robot.maxSpeed[j]));
+    }
+    time[i] = std::max(t, 0.002);  // one controller cycle at least
+    for (int j = 0; j < 6; ++j) {
+      stats.maxJointSpeedDegS =
+          std::max(stats.maxJointSpeedDegS, std::abs(rp.joints[i][j] - rp.joints[i - 1][j]) / time[i] * 180 / M_PI);
+    }
+    stats.duration += time[i];
+  }
+
+  // Moves as chunks that start at an air move (the only places a program may end), packed into
+  // files below the size limit.
+  std::vector<std::string> chunks;
+  std::ostringstream chunk;
+  double previousRate = 0;
+  for (size_t i = 1; i < N; ++i) {
+    const bool air = kind[i] == 2;
+    if (air && kind[i - 1] != 2 && chunk.tellp() > 0) {
+      chunks.push_back(chunk.str());
+      chunk.str("");
+      chunk.clear();
+      // A new program may start here: restate the joints and the analog output.
+      chunk << "  movej([";
+      for (int j = 0; j < 6; ++j) chunk << urNumber(rp.joints[i - 1][j]) << (j < 5 ? ", " : "]");
+      chunk << ", a=0.5, v=0.2)\n";
+      previousRate = -1;
+    }
+    const double de = (*in.extrusion)[i] - (*in.extrusion)[i - 1];
+    const double rate = air ? 0.0 : de / time[i];
+    if (air && de != 0) {  // retraction / prime: an extruder move while the robot waits
+      chunk << "  set_standard_analog_out(0, 0)\n";
+      chunk << "  # " << (de < 0 ? "retract " : "prime ") << urNumber(std::abs(de)) << " mm of filament\n";
+      chunk << "  sleep(" << urNumber(std::abs(de) / o.retractionRate) << ")\n";
+      previousRate = 0;
+    }
+    const double volts = std::clamp(rate / o.maxFilamentRate, 0.0, 1.0);
+    if (std::abs(volts - previousRate) > 1e-6) {
+      chunk << "  set_standard_analog_out(0, " << urNumber(volts) << ")\n";  // relative level 0..1
+      previousRate = volts;
+    }
+    // Blend: 0 where the kind changes or at the path's ends.
+    double blend = 0;
+    if (i + 1 < N && kind[i + 1] == kind[i] && kind[i - 1] == kind[i]) {
+      const double la = (tcp[i].translation() - tcp[i - 1].translation()).norm();
+      const double lb = (tcp[i + 1].translation() - tcp[i].translation()).norm();
+      blend = std::min(o.maxBlend, o.blendFraction * std::min(la, lb));
+    }
+    chunk << "  movel(" << poseLiteral(tcp[i]) << ", t=" << urNumber(time[i]) << ", r=" << urNumber(blend) << ")\n";
+    ++stats.moves;
+  }
+  chunks.push_back(chunk.str());
+
+  size_t file = 0;
+  std::string body;
+  auto flush = [&]() {
+    std::ostringstream head;
+    head << "def " << o.programName << (file > 0 ? "_" + std::to_string(file) : std::string()) << "():\n";
+    head << "  # GeoLattice multi-axis print, program " << file + 1 << "; the robot holds the part under a fixed nozzle\n";
+    head << "  set_tcp(" << poseLiteral(cell.partOnFlange) << ")\n";
+    head << "  # analog out 0 drives the extruder: level 0..1 (0-10 V) = 0-" << urNumber(o.maxFilamentRate) << " mm/s of filament\n";
+    head << "  set_standard_analog_out(0, 0)\n";
+    if (file == 0) {
+      head << "  movej([";
+      for (int j = 0; j < 6; ++j) head << urNumber(rp.joints[0][j]) << (j < 5 ? ", " : "]");
+      head << ", a=0.5, v=0.2)\n";
+    }
+    const std::string text = head.str() + body + "  set_standard_analog_out(0, 0)\nend\n";
+    openFile(file) << text;
+    std::istringstream lines(text);
+    std::string line;
+    while (std::getline(lines, line)) stats.maxLineLength = std::max(stats.maxLineLength, line.size());
+    body.clear();
+    ++file;
+  };
+  constexpr size_t kFrame = 600;  // header and footer
+  for (const std::string& c : chunks) {
+    if (c.size() + kFrame > o.maxFileBytes) {
+      std::ostringstream m;
+      m << "URScript: one print run between air moves needs " << c.size() << " bytes, more than the file size limit "
+        << o.maxFileBytes << "; raise the limit";
+      throw GeoLatticeError(m.str());
+    }
+    if (!body.empty() && body.size() + c.size() + kFrame > o.maxFileBytes) {
+      flush();
+    }
+    body += c;
+  }
+  flush();
+  stats.files = file;
+  return stats;
+}
+
+} // namespace geolattice

@@ -1,0 +1,134 @@
+// URScript programs for a real toolpath (the Y part in the UR5 cell): syntax check of every
+// file (balanced def/end, valid pose literals, numbers with at most 6 decimals, line length),
+// splitting at air moves, segment times within the joint speed limits.
+#include "common/Error.h"
+#include "gdf/GeodesicDistanceFields.h"
+#include "gdf/HeatSources.h"
+#include "io/MeshFileIO.h"
+#include "program/URScriptProgram.h"
+#include "sequence/PrintMaterial.h"
+#include "sequence/PrintSequencer.h"
+#include "sequence/SkeletonTree.h"
+#include "slicer/CurvedLayerSlicer.h"
+#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "toolpath/ToolpathPlanner.h"
+
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <sstream>
+
+using namespace geolattice;
+
+namespace {
+
+const Toolpath& yToolpath() {
+  static const Toolpath path = [] {
+    const TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/y_shape.obj");
+    TetrahedralizeOptions t;
+    t.targetEdgeLength = 2.5;
+    const TetMesh mesh = tetrahedralizeSurface(s, t).mesh;
+    const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
+    const CurvedLayers layers =
+        sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
+    LatticeOptions lo;
+    lo.alphaWidth = lo.betaWidth = 4.0;
+    const LatticeGraph g = buildLatticeGraph(layers, lo);
+    const SkeletonTree tree = buildSkeletonTree(mesh, f.gamma, g);
+    SequenceOptions so;
+    so.strategy = SequenceStrategy::LayerPriority;
+    const PrintSequence seq = sequencePrint(tree, sampleLatticeMaterial(g, 1.0), nullptr, so);
+    return planToolpath(g, tree, seq.order, ToolpathOptions{});
+  }();
+  return path;
+}
+
+/// The syntax rules every generated file must satisfy.
+void checkSyntax(const std::string& text, size_t maxLine) {
+  std::istringstream in(text);
+  std::string line;
+  int depth = 0, defs = 0;
+  const std::regex number("-?[0-9]+(\\.[0-9]{1,6})?");
+  const std::regex pose("p\\[([^\\]]*)\\]");
+  while (std::getline(in, line)) {
+    ASSERT_LE(line.size(), maxLine) << line;
+    if (line.rfind("def ", 0) == 0) {
+      ++depth;
+      ++defs;
+      ASSERT_TRUE(std::regex_match(line, std::regex("def [a-z_0-9]+\\(\\):"))) << line;
+    } else if (line == "end") {
+      --depth;
+      ASSERT_GE(depth, 0);
+    } else if (!line.empty()) {
+      ASSERT_EQ(line.rfind("  ", 0), 0u) << "statements are inside the def: " << line;
+    }
+    for (std::sregex_iterator it(line.begin(), line.end(), pose), end; it != end; ++it) {
+      std::stringstream parts((*it)[1].str());
+      std::string part;
+      int count = 0;
+      while (std::getline(parts, part, ',')) {
+        part.erase(0, part.find_first_not_of(' '));
+        ASSERT_TRUE(std::regex_match(part, number)) << "bad number '" << part << "' in " << line;
+        ++count;
+      }
+      ASSERT_EQ(count, 6) << line;
+    }
+    for (const char* key : {"t=", "r="}) {
+      const size_t at = line.find(key);
+      if (at != std::string::npos) {
+        std::string v = line.substr(at + 2);
+        v = v.substr(0, v.find_first_of(",)"));
+        ASSERT_TRUE(std::regex_match(v, number)) << line;
+      }
+    }
+  }
+  EXPECT_EQ(depth, 0);
+  EXPECT_EQ(defs, 1);
+}
+
+} // namespace
+
+TEST(URScriptProgram, YPartInTheUr5Cell) {
+  const Toolpath& path = yToolpath();
+  RobotCell cell;
+  const RobotPath rp = solveRobotPath(cell, path.points, path.normals);
+  ASSERT_TRUE(rp.unreachable.empty());
+  std::vector<int> kind(path.kind.size());
+  for (size_t i = 0; i < kind.size(); ++i) kind[i] = static_cast<int>(path.kind[i]);
+  ProgramInput in{&path.points, &path.extrusion, &path.feedRate, &kind};
+  URScriptOptions o;
+  o.maxFileBytes = 200000;  // force several files
+  std::vector<std::ostringstream> files(64);
+  const ProgramStats stats = writeURScript(cell, rp, in, o, [&](size_t k) -> std::ostream& { return files.at(k); });
+  std::printf("[urscript] Y: %zu waypoints, %zu moves, %zu files, duration %.0f s, max joint speed %.1f deg/s, "
+              "longest line %zu\n",
+              path.points.size(), stats.moves, stats.files, stats.duration, stats.maxJointSpeedDegS, stats.maxLineLength);
+  EXPECT_GT(stats.files, 1u);
+  EXPECT_EQ(stats.moves, path.points.size() - 1);
+  EXPECT_LE(stats.maxJointSpeedDegS, 0.5 * 180.0 + 1e-6);  // speedFactor of the 180°/s limit
+  size_t movels = 0;
+  for (size_t k = 0; k < stats.files; ++k) {
+    const std::string text = files[k].str();
+    EXPECT_LE(text.size(), o.maxFileBytes);
+    checkSyntax(text, 1000);
+    // A file other than the first starts right after an air move's first point.
+    for (size_t at = text.find("movel("); at != std::string::npos; at = text.find("movel(", at + 1)) ++movels;
+  }
+  EXPECT_EQ(movels, stats.moves);
+}
+
+TEST(URScriptProgram, NumbersAndBadInput) {
+  EXPECT_EQ(urNumber(0.1234564), "0.123456");
+  EXPECT_EQ(urNumber(-1e-9), "0");
+  EXPECT_EQ(urNumber(2.0), "2");
+  EXPECT_EQ(urNumber(-0.5), "-0.5");
+  RobotCell cell;
+  RobotPath rp;
+  std::vector<Eigen::Vector3d> pts;
+  std::vector<double> e, f;
+  std::vector<int> k;
+  ProgramInput in{&pts, &e, &f, &k};
+  std::ostringstream os;
+  EXPECT_THROW(writeURScript(cell, rp, in, URScriptOptions{}, [&](size_t) -> std::ostream& { return os; }),
+               GeoLatticeError);  // empty toolpath
+}
