@@ -1,0 +1,57 @@
+#pragma once
+/// @file FiveAxisGCode.h
+/// @brief 5-axis G-code for tilting-rotary table machines with a fixed vertical nozzle (tool
+/// axis +Z): A–C (tilt about X, then rotary C about the table normal) or B–C (tilt about Y).
+///
+/// For a toolpath point p (part frame, mm) with nozzle axis n, the table angles turn n onto +Z:
+/// n' = R_C(c)·n must lie in the tilt plane (A–C: n'x = 0, c = atan2(nx, ny); B–C: n'y = 0,
+/// c = atan2(-ny, nx)), then the tilt brings it up (A–C: a = atan2(ρ, nz); B–C: b = atan2(-ρ, nz),
+/// ρ = |n_xy|). The second branch is (c + π, −tilt). The branch is chosen once per path segment
+/// by continuity and the tilt limits; C is unwrapped (no ±180° jumps). Near the pole (ρ below
+/// poleTolerance) C is undefined: it keeps its previous value, so the table never spins when the
+/// tilt is ~0. Machine position: X Y Z = pivot + R_tilt·R_C·(p + partOffset), where partOffset
+/// is the part frame origin relative to the rotary centre on the table and pivot the machine
+/// position of the intersection of the two rotary axes. Feed in inverse time (G93): F = 1 / t
+/// per move with t the toolpath segment time, so rotary moves keep the planned timing.
+#include <Eigen/Core>
+
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace geolattice {
+
+enum class TableKinematics { AC = 0, BC = 1 };
+
+struct GCodeOptions {
+  TableKinematics kinematics = TableKinematics::AC;
+  Eigen::Vector3d pivot = Eigen::Vector3d::Zero();       ///< mm, machine coordinates
+  Eigen::Vector3d partOffset = Eigen::Vector3d::Zero();  ///< mm, in the table (C) frame
+  double tiltMinDeg = -120.0, tiltMaxDeg = 120.0;        ///< A or B limits
+  double poleToleranceDeg = 0.01;                        ///< |tilt| below this: C is kept
+};
+
+struct GCodeStats {
+  size_t moves = 0;
+  size_t outOfLimits = 0;     ///< points whose tilt exceeds the limits on both branches
+  double maxRotaryStepDeg = 0;
+  size_t branchFlips = 0;
+};
+
+/// Rotary angles (degrees) for one axis direction: (tilt, c) of the branch nearest to
+/// previousC (two branches: see the file comment).
+void tableAngles(TableKinematics k, const Eigen::Vector3d& n, double previousC, double poleToleranceDeg, double& tilt,
+                 double& c);
+
+/// Writes the program. points/normals/extrusion/feedRate/kind as in Toolpath (kind 2 = air,
+/// rapid G0 without E). Throws GeoLatticeError for mismatched sizes, an empty path or NaN data.
+GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
+                              const std::vector<double>& extrusion, const std::vector<double>& feedRate,
+                              const std::vector<int>& kind, const GCodeOptions& options, std::ostream& out);
+
+/// Waypoint CSV: header "x,y,z,nx,ny,nz,e,kind,layer" and one row per point (mm, unit axis, E mm).
+void writeWaypointCsv(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
+                      const std::vector<double>& extrusion, const std::vector<int>& kind, const std::vector<int>& layer,
+                      std::ostream& out);
+
+} // namespace geolattice

@@ -1,0 +1,101 @@
+// 5-axis G-code for A-C and B-C tables: the table angles turn every nozzle axis onto +Z, C is
+// continuous and does not spin near the pole, machine positions follow the table kinematics,
+// and the waypoint CSV has one row per point.
+#include "common/Error.h"
+#include "program/FiveAxisGCode.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+using namespace geolattice;
+
+namespace {
+
+Eigen::Matrix3d tableRotation(TableKinematics k, double tilt, double c) {
+  const Eigen::Vector3d axis = k == TableKinematics::AC ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  return (Eigen::AngleAxisd(tilt * M_PI / 180, axis) * Eigen::AngleAxisd(c * M_PI / 180, Eigen::Vector3d::UnitZ()))
+      .toRotationMatrix();
+}
+
+} // namespace
+
+TEST(FiveAxisGCode, AnglesTurnTheAxisUp) {
+  std::mt19937 rng(3);
+  std::normal_distribution<double> g;
+  for (TableKinematics k : {TableKinematics::AC, TableKinematics::BC}) {
+    double previous = 0;
+    for (int i = 0; i < 2000; ++i) {
+      Eigen::Vector3d n(g(rng), g(rng), g(rng));
+      n.normalize();
+      double tilt, c;
+      tableAngles(k, n, previous, 0.01, tilt, c);
+      EXPECT_LT((tableRotation(k, tilt, c) * n - Eigen::Vector3d::UnitZ()).norm(), 1e-12);
+      EXPECT_LE(std::abs(c - previous), 180.0 + 1e-9);  // unwrapped next to the previous C
+      previous = c;
+    }
+  }
+}
+
+TEST(FiveAxisGCode, NoSpinNearThePole) {
+  // Axes wobbling around +Z by 1e-5 rad: C must stay put.
+  double c = 37.0, tilt = 0;
+  for (int i = 0; i < 100; ++i) {
+    const double a = i * 0.7;
+    const Eigen::Vector3d n(1e-7 * std::cos(a), 1e-7 * std::sin(a), 1.0);
+    tableAngles(TableKinematics::AC, n, c, 0.01, tilt, c);
+    EXPECT_EQ(c, 37.0);
+    EXPECT_LT(std::abs(tilt), 0.01);
+  }
+}
+
+TEST(FiveAxisGCode, ProgramAndCsv) {
+  std::vector<Eigen::Vector3d> p, n;
+  std::vector<double> e, f;
+  std::vector<int> kind, layer;
+  for (int i = 0; i < 50; ++i) {
+    const double a = i * 0.1;
+    p.push_back(Eigen::Vector3d(10 * std::cos(a), 10 * std::sin(a), 0.6 + 0.01 * i));
+    n.push_back(Eigen::Vector3d(0.3 * std::cos(a), 0.3 * std::sin(a), 1).normalized());
+    e.push_back(0.05 * i);
+    f.push_back(10);
+    kind.push_back(i == 25 ? 2 : 0);
+    layer.push_back(0);
+  }
+  GCodeOptions o;
+  o.pivot = Eigen::Vector3d(0, 0, 100);
+  o.partOffset = Eigen::Vector3d(0, 0, 5);
+  std::ostringstream g;
+  const GCodeStats s = writeFiveAxisGCode(p, n, e, f, kind, o, g);
+  EXPECT_EQ(s.moves, p.size());
+  EXPECT_EQ(s.outOfLimits, 0u);
+  EXPECT_LT(s.maxRotaryStepDeg, 10.0);
+  const std::string text = g.str();
+  EXPECT_NE(text.find("G93"), std::string::npos);
+  // First move: the machine position is pivot + R (p + offset).
+  double tilt, c;
+  tableAngles(TableKinematics::AC, n[0], 0, 0.01, tilt, c);
+  const Eigen::Vector3d x = o.pivot + tableRotation(TableKinematics::AC, tilt, c) * (p[0] + o.partOffset);
+  std::istringstream lines(text);
+  std::string line;
+  while (std::getline(lines, line) && line.rfind("G0 X", 0) != 0) {
+  }
+  double gx, gy, gz;
+  ASSERT_EQ(std::sscanf(line.c_str(), "G0 X%lf Y%lf Z%lf", &gx, &gy, &gz), 3) << line;
+  EXPECT_NEAR(gx, x.x(), 1e-6);
+  EXPECT_NEAR(gy, x.y(), 1e-6);
+  EXPECT_NEAR(gz, x.z(), 1e-6);
+  std::ostringstream csv;
+  writeWaypointCsv(p, n, e, kind, layer, csv);
+  const std::string c2 = csv.str();
+  EXPECT_EQ(std::count(c2.begin(), c2.end(), '\n'), 51);
+  EXPECT_EQ(c2.substr(0, c2.find('\n')), "x,y,z,nx,ny,nz,e,kind,layer");
+  // Bad input.
+  std::ostringstream sink;
+  EXPECT_THROW(writeFiveAxisGCode({}, {}, {}, {}, {}, o, sink), GeoLatticeError);
+  n[3] = Eigen::Vector3d(NAN, 0, 1);
+  EXPECT_THROW(writeFiveAxisGCode(p, n, e, f, kind, o, sink), GeoLatticeError);
+}
