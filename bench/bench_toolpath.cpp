@@ -86,6 +86,18 @@ void BM_PlanToolpath(benchmark::State& state) {
   state.counters["perimeter_mm"] = p.perimeterLength;
   state.counters["air_mm"] = p.airLength;
   state.counters["retractions"] = p.retractions;
+  state.counters["split"] = p.splitSubgraphs;
+  state.counters["crossings"] = p.crossings;
+  double sum = 0;
+  int n = 0;
+  for (const auto& l : p.thicknessStats.perLayer) {
+    sum += l.mean * l.vertices;
+    n += l.vertices;
+  }
+  state.counters["dev_min"] = p.thicknessStats.deviationMin;
+  state.counters["dev_mean"] = n ? sum / n : 0.0;
+  state.counters["dev_max"] = p.thicknessStats.deviationMax;
+  state.counters["capped"] = p.thicknessStats.cappedVertices;
 }
 BENCHMARK(BM_PlanToolpath)->Unit(benchmark::kMillisecond);
 
