@@ -1,0 +1,84 @@
+// Robot program generation at scale: 1 million toolpath waypoints (a 40 mm part's worth of
+// raster layers with tilting nozzle axes) through the UR5 cell's path solver (free rotation
+// optimised along the path, IK at every point) and the URScript writer (split files), plus the
+// 5-axis G-code writer. Run: build/bin/bench_program
+#include "program/FiveAxisGCode.h"
+#include "program/URScriptProgram.h"
+#include "robot/RobotPathSolver.h"
+
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+#include <sstream>
+
+using namespace geolattice;
+
+namespace {
+
+struct Path {
+  std::vector<Eigen::Vector3d> points, normals;
+  std::vector<double> extrusion, feed;
+  std::vector<int> kind, layer;
+};
+
+const Path& spiral() {
+  static const Path p = [] {
+    Path r;
+    const int n = 1000000;
+    double e = 0;
+    for (int i = 0; i < n; ++i) {
+      const double z = 0.6 + 40.0 * i / n;
+      const double tilt = 0.5 * std::sin(z / 10);  // up to ~27° of nozzle tilt, turning slowly with z
+      // Raster: 0.2 mm steps back and forth along x, rows 1 mm apart, ~33 layers of 30 000 points.
+      r.points.push_back(Eigen::Vector3d(20 * std::sin(0.01 * i), std::fmod(0.0005 * i, 40.0) - 20.0, z));
+      r.normals.push_back(Eigen::Vector3d(tilt * std::cos(z / 7), tilt * std::sin(z / 7), 1).normalized());
+      const bool air = i % 5000 == 0;
+      e += air ? 0 : 0.01;
+      r.extrusion.push_back(e);
+      r.feed.push_back(air ? 50 : 10);
+      r.kind.push_back(air ? 2 : 0);
+      r.layer.push_back(static_cast<int>(z / 0.6));
+    }
+    return r;
+  }();
+  return p;
+}
+
+class NullBuffer : public std::streambuf {
+protected:
+  int overflow(int c) override { return c; }
+  std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
+};
+
+void BM_IkAndURScript(benchmark::State& state) {
+  const Path& p = spiral();
+  RobotCell cell;
+  NullBuffer nb;
+  std::ostream sink(&nb);
+  ProgramStats stats;
+  RobotPath rp;
+  for (auto _ : state) {
+    rp = solveRobotPath(cell, p.points, p.normals);
+    ProgramInput in{&p.points, &p.extrusion, &p.feed, &p.kind};
+    stats = writeURScript(cell, rp, in, URScriptOptions{}, [&](size_t) -> std::ostream& { return sink; });
+  }
+  state.counters["waypoints"] = static_cast<double>(p.points.size());
+  state.counters["unreachable"] = static_cast<double>(rp.unreachable.size());
+  state.counters["files"] = static_cast<double>(stats.files);
+  state.counters["max_joint_step_deg"] = rp.maxJointStepDeg;
+}
+BENCHMARK(BM_IkAndURScript)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+void BM_FiveAxisGCode(benchmark::State& state) {
+  const Path& p = spiral();
+  NullBuffer nb;
+  std::ostream sink(&nb);
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(writeFiveAxisGCode(p.points, p.normals, p.extrusion, p.feed, p.kind, GCodeOptions{}, sink).moves);
+  }
+}
+BENCHMARK(BM_FiveAxisGCode)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+} // namespace
+
+BENCHMARK_MAIN();
