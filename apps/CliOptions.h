@@ -1,7 +1,8 @@
 #pragma once
 /// @file CliOptions.h
 /// @brief Command-line pieces shared by `geolattice run` and `geolattice verify`: usage errors,
-/// number parsing and the nozzle options that both the sequencer and the verifier take.
+/// number parsing, the nozzle options that both the sequencer and the verifier take, and the
+/// toolpath options.
 #include "JsonWriter.h"
 
 #include <functional>
@@ -23,7 +24,7 @@ struct NozzleOptions {
   double angle = 45.0;
   double length = 0.0;
   double holderRadius = 0.0;
-  double tipClearance = 0.0;
+  double tipClearance = 0.1;
   double sampleSpacing = 1.0;
 
   /// Consumes --nozzle-angle, --nozzle-length, --holder-radius, --tip-clearance and
@@ -42,6 +43,50 @@ struct NozzleOptions {
 
   /// Writes nozzle_angle_deg, nozzle_length_mm, holder_radius_mm, tip_clearance_mm and
   /// sample_spacing_mm into a report section.
+  void report(JsonObject& section) const;
+};
+
+/// @brief Toolpath parameters (core/toolpath/ToolpathPlanner.h) as command-line options.
+struct ToolpathCliOptions {
+  double pathWidth = 0.6;
+  double filamentDiameter = 1.75;
+  double flow = 0.95;
+  double printSpeed = 10.0;
+  double airSpeed = 50.0;
+  double thicknessCap = 1.5;
+  double maxTurn = 5.0;
+  double safeMargin = 5.0;
+  double lift = 2.0;
+  double retraction = 1.0;
+  double toothLength = 0.0;
+  bool perimeter = true;
+  int replaySteps = 50;
+
+  /// Consumes --path-width, --filament-diameter, --flow, --print-speed, --air-speed,
+  /// --thickness-cap, --max-turn, --safe-margin, --lift, --retraction, --tooth-length,
+  /// --no-perimeter and --replay-steps (an integer >= 0, else UsageError); false for any other flag.
+  bool parse(const std::string& flag, const std::function<std::string()>& value);
+
+  /// Sets the properties of vtkGLToolpathPlanner.
+  template <class Filter>
+  void apply(Filter* f) const {
+    f->SetPathWidth(pathWidth);
+    f->SetFilamentDiameter(filamentDiameter);
+    f->SetFlowCorrection(flow);
+    f->SetPrintFeedRate(printSpeed);
+    f->SetAirFeedRate(airSpeed);
+    f->SetThicknessCap(thicknessCap);
+    f->SetMaxTurnAngle(maxTurn);
+    f->SetSafeMargin(safeMargin);
+    f->SetLift(lift);
+    f->SetRetraction(retraction);
+    f->SetToothLength(toothLength);
+    f->SetSupportPerimeter(perimeter);
+  }
+
+  /// Writes the parameters (path_width_mm, filament_diameter_mm, flow, print_speed_mm_s,
+  /// air_speed_mm_s, thickness_cap, max_turn_deg, safe_margin_mm, lift_mm, retraction_mm,
+  /// tooth_length_mm, support_perimeter) into a report section.
   void report(JsonObject& section) const;
 };
 

@@ -94,11 +94,22 @@ int runVerifyCommand(int argc, char** argv)
   {
     throw UsageError("verify: missing OUTDIR");
   }
-  const std::filesystem::path lattice = std::filesystem::path(dir) / "lattice.vtp";
-  if (!std::filesystem::is_regular_file(lattice))
+  // The newer of toolpath.vtp (a toolpath: every point a station at its own time) and lattice.vtp
+  // (sub-graphs at their PrintOrder): a later `run --until sequence` makes lattice.vtp newer.
+  const std::filesystem::path latticePath = std::filesystem::path(dir) / "lattice.vtp";
+  const std::filesystem::path toolpathPath = std::filesystem::path(dir) / "toolpath.vtp";
+  std::error_code ec;
+  const bool haveLattice = std::filesystem::is_regular_file(latticePath, ec);
+  const bool haveToolpath = std::filesystem::is_regular_file(toolpathPath, ec);
+  if (!haveLattice && !haveToolpath)
   {
-    throw GeoLatticeError("verify: " + lattice.string() + " not found (run `geolattice run MODEL -o " + dir + "` first)");
+    throw GeoLatticeError("verify: " + toolpathPath.string() + " and " + latticePath.string() +
+      " not found (run `geolattice run MODEL -o " + dir + "` first)");
   }
+  const bool toolpath = haveToolpath &&
+    (!haveLattice ||
+      std::filesystem::last_write_time(toolpathPath, ec) >= std::filesystem::last_write_time(latticePath, ec));
+  const std::filesystem::path checked = toolpath ? toolpathPath : latticePath;
   readNozzleFromReport(std::filesystem::path(dir) / "report.json", nozzle);
   for (const std::string& flag : given)
   {
@@ -110,19 +121,24 @@ int runVerifyCommand(int argc, char** argv)
   }
 
   vtkNew<vtkXMLPolyDataReader> reader;
-  reader->SetFileName(lattice.string().c_str());
+  reader->SetFileName(checked.string().c_str());
   reader->Update();
   vtkPolyData* data = reader->GetOutput();
   if (!data || data->GetNumberOfCells() == 0)
   {
-    throw GeoLatticeError("verify: " + lattice.string() + " is empty or not a VTK polydata file");
+    throw GeoLatticeError("verify: " + checked.string() + " is empty or not a VTK polydata file");
   }
-  if (!data->GetCellData()->GetArray(arrays::PrintOrder))
+  if (toolpath && !data->GetPointData()->GetArray(arrays::PointIndex))
   {
-    throw GeoLatticeError("verify: " + lattice.string() + " has no PrintOrder (run with --until sequence)");
+    throw GeoLatticeError("verify: " + checked.string() + " has no PointIndex point array (not a GeoLattice toolpath)");
+  }
+  if (!toolpath && !data->GetCellData()->GetArray(arrays::PrintOrder))
+  {
+    throw GeoLatticeError("verify: " + checked.string() + " has no PrintOrder (run with --until sequence)");
   }
   vtkNew<vtkGLCollisionVerifier> verifier;
   verifier->SetInputData(data);
+  verifier->SetTimeArrayName(toolpath ? arrays::PointIndex : arrays::PrintOrder);
   nozzle.apply(verifier.Get());
   std::string error;
   vtkNew<vtkCallbackCommand> onError;
@@ -152,7 +168,11 @@ int runVerifyCommand(int argc, char** argv)
   const long long unavoidable = static_cast<long long>(fieldNumber(out, arrays::CollisionUnavoidableStations));
   if (!quiet)
   {
-    std::cout << "geolattice: verify: " << stations << " nozzle stations, nozzle angle " << nozzle.angle << " deg";
+    std::cout << "geolattice: verify: " << checked.filename().string()
+              << (toolpath ? " (the toolpath; every point at its own time, air points no material)"
+                           : " (the printing order of the sub-graphs)")
+              << (haveLattice && haveToolpath ? ", the newer of toolpath.vtp and lattice.vtp" : "") << ": "
+              << stations << " nozzle stations, nozzle angle " << nozzle.angle << " deg";
     if (nozzle.length > 0)
     {
       std::cout << ", length " << nozzle.length << " mm, holder radius " << nozzle.holderRadius << " mm";

@@ -1,7 +1,9 @@
 #pragma once
 /// @file VerifyCommand.h
-/// @brief `geolattice verify OUTDIR`: re-checks the printing order saved by `geolattice run`
-/// with the independent collision verifier (vtkGLCollisionVerifier).
+/// @brief `geolattice verify OUTDIR`: re-checks what `geolattice run` saved with the independent
+/// collision verifier (vtkGLCollisionVerifier): the newer (by modification time) of toolpath.vtp
+/// (time = PointIndex, air points are stations but not material) and lattice.vtp (time =
+/// PrintOrder per sub-graph), and says which one it checked.
 namespace geolattice {
 
 /// argv[1] == "verify". Returns the exit status: 0 collision-free, 3 collision, 1 error (throws

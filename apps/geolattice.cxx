@@ -7,6 +7,7 @@
 #include "common/Error.h"
 #include "CliOptions.h"
 #include "SequenceCsv.h"
+#include "ToolpathOutput.h"
 #include "VerifyCommand.h"
 #include "vtkGLArrayNames.h"
 #include "vtkGLCollisionVerifier.h"
@@ -19,6 +20,7 @@
 #include "vtkGLPrintSequencer.h"
 #include "vtkGLSkeletonTree.h"
 #include "vtkGLTetrahedralizeSurface.h"
+#include "vtkGLToolpathPlanner.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -53,7 +55,7 @@ namespace {
 namespace gl = geolattice;
 using Clock = std::chrono::steady_clock;
 
-constexpr const char* kStages[] = { "mesh", "gdf", "layers", "lattice", "sequence" };
+constexpr const char* kStages[] = { "mesh", "gdf", "layers", "lattice", "sequence", "toolpath" };
 constexpr const char* kStrategies[] = { "lpt", "dpt", "a4", "best" }; // = vtkGLPrintSequencer::Strategy 0..3
 
 const char* kUsage = R"(geolattice - multi-axis support-free printing with lattice infill (GeoLattice )" GEOLATTICE_VERSION R"()
@@ -71,18 +73,24 @@ infill graph of every layer: line cells with EdgeKind, LayerId, SubgraphId and, 
 sequence stage, PrintOrder), skeleton.vtp (one node per connected sub-graph, tree edges, point
 array PrintOrder), sequence.vtp (the printing order as a polyline through the sub-graphs' start
 points), sequence.csv (order, sub-graph, layer, start and end point, retraction), collisions.vtp
-(the first nozzle collisions found by the verifier), report.json (per stage: seconds, counts,
-results). Files are written to a temporary name first, so nothing partial is left behind on
-failure.
+(the first nozzle collisions found by the verifier), toolpath.vtp (the printing path: points in
+printing order with Normals = nozzle axis, Thickness, Width, Extrusion, FeedRate, MoveKind
+(0 print, 1 support perimeter, 2 air), LayerId, SubgraphId, PathIndex, PointIndex; one polyline
+per run of one kind), toolpath.pvd with toolpath/step_NNNN.vtp (the print replay: open
+toolpath.pvd in ParaView and press Play; step k holds everything printed up to progress
+k/steps), toolpath_collisions.vtp (the verifier on the toolpath, every point a nozzle station,
+only printed points as material), report.json (per stage: seconds, counts, results). Files are
+written to a temporary name first, so nothing partial is left behind on failure.
 
-`verify OUTDIR` re-checks the printing order saved in OUTDIR (lattice.vtp with PrintOrder,
-nozzle from report.json unless given) with the independent collision verifier; exit status 0
-when collision-free, 3 when the nozzle hits earlier material (with --allow-unavoidable: only
-when an order could have avoided it).
+`verify OUTDIR` re-checks with the independent collision verifier the newer of toolpath.vtp
+(every point at its own time) and lattice.vtp (sub-graphs at their PrintOrder), nozzle from
+report.json unless given; exit status 0 when collision-free, 3 when the nozzle hits earlier
+material (with --allow-unavoidable: only when an order could have avoided it).
 
 Options:
   -o, --output DIR        output directory (created if missing)                     [required]
-  --until STAGE           last stage: mesh | gdf | layers | lattice | sequence       [sequence]
+  --until STAGE           last stage: mesh | gdf | layers | lattice | sequence | toolpath
+                                                                                     [toolpath]
  Model placement (models come in arbitrary units; GeoLattice works in millimetres):
   --scale F               uniform scale factor applied to the model                  [1]
   --fit-size MM           scale so the largest bounding-box side is MM (replaces --scale) [off]
@@ -117,8 +125,24 @@ Options:
   --nozzle-angle DEG      half-angle NA of the nozzle's bounding cone, in (0, 90)    [45]
   --nozzle-length MM      cone length; above it the holder (0 = cone only)           [0]
   --holder-radius MM      radius of the holder cylinder above the nozzle length      [0]
-  --tip-clearance MM      ignore material at most this high above the nozzle tip     [0]
+  --tip-clearance MM      ignore material at most this high above the nozzle tip     [0.1]
   --sample-spacing MM     spacing of the material samples tested for collisions      [1]
+ Toolpath (paper Section 3.2: Euler tours, thickness Eq. 15, extrusion Eq. 14, air moves):
+  --path-width MM         path (bead) width w                                        [0.6]
+  --filament-diameter MM  raw filament diameter; Eq. 14 uses the radius r_m = MM / 2 [1.75]
+  --flow MU               flow correction mu of Eq. 14, in (0, 1]                    [0.95]
+  --print-speed MM/S      nozzle feed rate of print moves                            [10]
+  --air-speed MM/S        nozzle feed rate of air moves                              [50]
+  --thickness-cap L       layer thickness capped at L x the layer interval (Eq. 15)  [1.5]
+  --max-turn DEG          largest nozzle axis change between points (rotation steps) [5]
+  --safe-margin MM        margin of the safe box air moves travel on (Fig. 18)       [5]
+  --lift MM               lift along the axis for a hop onto an upper sub-graph      [2]
+  --retraction MM         filament retracted before each air move, primed after it   [1]
+  --tooth-length MM       support perimeter tooth length along trimmed edges, 0 = 2w [0]
+  --no-perimeter          no support perimeter where boundary edges were trimmed
+  --replay-steps N        step files of the print replay (toolpath.pvd); fewer for
+                          long paths (all steps together <= ~2 million points);
+                          0 = no replay files                                        [50]
  Output:
   -q, --quiet             no progress lines on stdout
 
@@ -129,7 +153,7 @@ the problem); 2 on bad usage (one line on stderr); 3 (verify only) on a collisio
 struct Options {
   std::string model;
   std::string outDir;
-  std::string until = "sequence";
+  std::string until = "toolpath";
   double scale = 1.0;
   double fitSize = 0.0;
   bool center = true;
@@ -153,6 +177,7 @@ struct Options {
   double minSubgraph = 0;
   std::string strategy = "best";
   geolattice::NozzleOptions nozzle;
+  geolattice::ToolpathCliOptions toolpath;
   bool quiet = false;
 };
 
@@ -224,6 +249,7 @@ Options parseArguments(int argc, char** argv)
     else if (arg == "--min-subgraph") o.minSubgraph = parseNumber(arg, value());
     else if (arg == "--strategy") o.strategy = value();
     else if (o.nozzle.parse(arg, value)) {}
+    else if (o.toolpath.parse(arg, value)) {}
     else if (arg == "-q" || arg == "--quiet") o.quiet = true;
     else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
     else if (o.model.empty()) o.model = arg;
@@ -239,7 +265,8 @@ Options parseArguments(int argc, char** argv)
   }
   if (std::find(std::begin(kStages), std::end(kStages), o.until) == std::end(kStages))
   {
-    throw UsageError("--until must be one of: mesh, gdf, layers, lattice, sequence (got '" + o.until + "')");
+    throw UsageError(
+      "--until must be one of: mesh, gdf, layers, lattice, sequence, toolpath (got '" + o.until + "')");
   }
   if (std::find(std::begin(kStrategies), std::end(kStrategies), o.strategy) == std::end(kStrategies))
   {
@@ -576,6 +603,42 @@ public:
       const std::string csv = (std::filesystem::path(Opt.outDir) / "sequence.csv").string();
       gl::writeSequenceCsv(vtkPolyData::SafeDownCast(sequenced), vtkPolyData::SafeDownCast(sequencer->GetOutputDataObject(2)), csv);
       this->Written.push_back(csv);
+    }
+    if (Opt.until == "sequence")
+    {
+      return this->Finish(report);
+    }
+
+    // Stage: toolpath (Section 3.2), its collision check (every point a station at its own time,
+    // air points no material) and the print replay.
+    vtkNew<vtkGLToolpathPlanner> planner;
+    planner->SetInputConnection(0, sequencer->GetOutputPort(0));
+    planner->SetInputConnection(1, sequencer->GetOutputPort(1));
+    Opt.toolpath.apply(planner.Get());
+    vtkDataObject* toolpath = this->Execute("toolpath", { planner }, planner);
+    const double toolpathSeconds = this->LastSeconds;
+    vtkNew<vtkGLCollisionVerifier> toolpathVerifier;
+    toolpathVerifier->SetInputConnection(planner->GetOutputPort());
+    toolpathVerifier->SetTimeArrayName(gl::arrays::PointIndex);
+    Opt.nozzle.apply(toolpathVerifier.Get());
+    vtkDataObject* toolpathCollisions =
+      this->Execute("verify toolpath", { toolpathVerifier }, toolpathVerifier, /*allowEmpty=*/true);
+    {
+      auto& s = report.object("toolpath");
+      s.set("seconds", toolpathSeconds);
+      s.set("verify_seconds", this->LastSeconds);
+      Opt.toolpath.report(s);
+      gl::reportToolpath(toolpath, s);
+      gl::reportCollisions(toolpathCollisions, s);
+      this->Write(toolpath, "toolpath.vtp");
+      this->Write(toolpathCollisions, "toolpath_collisions.vtp");
+      const int steps =
+        gl::replayStepCount(vtkDataSet::SafeDownCast(toolpath)->GetNumberOfPoints(), Opt.toolpath.replaySteps);
+      s.set("replay_steps", steps);
+      for (const std::string& path : gl::writeToolpathReplay(planner, Opt.outDir, steps))
+      {
+        this->Written.push_back(path);
+      }
     }
     return this->Finish(report);
   }

@@ -125,6 +125,39 @@ constexpr const char* CollisionViolatingStations = "CollisionViolatingStations";
 constexpr const char* CollisionUnavoidableStations = "CollisionUnavoidableStations"; ///< of those, stations whose obstacles are all skeleton ancestors
 constexpr const char* CollisionOrderFree = "CollisionOrderFree";               ///< int: 1 = no violation except unavoidable ones
 constexpr const char* CollisionSeconds = "CollisionSeconds";                   ///< wall time (s)
+// Toolpath planner (vtkGLToolpathPlanner): the points in printing order, one polyline cell per
+// run of moves of the same kind on the same path. Its point data also holds Normals (nozzle
+// axis), LayerId (the lattice's LayerId, -1 on air moves) and SubgraphId (-1 on air moves); its
+// cell data MoveKind, PathIndex, LayerId and SubgraphId of the run.
+constexpr const char* Thickness = "Thickness";   ///< point data: layer thickness h of the move ending there (mm), 0 on air moves
+constexpr const char* Width = "Width";           ///< point data: path width w (mm), 0 on air moves
+constexpr const char* Extrusion = "Extrusion";   ///< point data: cumulative filament length E (mm), after retractions and primes
+constexpr const char* FeedRate = "FeedRate";     ///< point data: nozzle feed rate of the move ending there (mm/s)
+constexpr const char* MoveKind = "MoveKind";     ///< point + cell data (int): a movekind::* value
+constexpr const char* PathIndex = "PathIndex";   ///< point + cell data (int): continuous print path (tour); air moves carry the next one
+constexpr const char* PointIndex = "PointIndex"; ///< point data (int): position along the toolpath (print time for the verifier)
+// Field data of vtkGLToolpathPlanner (1 value each unless noted).
+constexpr const char* ToolpathPrintLength = "ToolpathPrintLength";       ///< mm of lattice print moves (MoveKind 0)
+constexpr const char* ToolpathPerimeterLength = "ToolpathPerimeterLength"; ///< mm of support perimeter moves incl. connectors (MoveKind 1)
+constexpr const char* ToolpathPerimeterLoops = "ToolpathPerimeterLoops";   ///< support perimeter loops
+constexpr const char* ToolpathPerimeterTeeth = "ToolpathPerimeterTeeth";   ///< teeth of the jagged perimeters along trimmed edges
+constexpr const char* ToolpathAirLength = "ToolpathAirLength";           ///< mm of air moves
+constexpr const char* ToolpathRetractions = "ToolpathRetractions";       ///< air moves (each retracts and primes)
+constexpr const char* ToolpathTours = "ToolpathTours";                   ///< continuous print paths (closed Euler tours)
+constexpr const char* ToolpathCrossings = "ToolpathCrossings";           ///< self-crossings of the tours (0 expected)
+constexpr const char* ToolpathSplitSubgraphs = "ToolpathSplitSubgraphs"; ///< sub-graphs printed as more than one tour
+constexpr const char* ToolpathContractedEdges = "ToolpathContractedEdges"; ///< zero-length lattice edges contracted
+constexpr const char* ToolpathTrimmedEdges = "ToolpathTrimmedEdges";     ///< boundary edges left out to make the sub-graphs Eulerian
+constexpr const char* ToolpathTrimmedLength = "ToolpathTrimmedLength";   ///< mm of those edges
+constexpr const char* ToolpathFilament = "ToolpathFilament";             ///< filament length extruded (mm, Eq. 14)
+constexpr const char* ToolpathVolume = "ToolpathVolume";                 ///< deposited volume (mm^3)
+constexpr const char* ToolpathThicknessDeviation = "ToolpathThicknessDeviation"; ///< 2 values: min, max of e = (h - φ)/φ (Eq. 15)
+/// 3 components (min, mean, max of e) per lattice layer 0..L-1 (the lattice's LayerId values ascending).
+constexpr const char* ToolpathThicknessDeviationPerLayer = "ToolpathThicknessDeviationPerLayer";
+constexpr const char* ToolpathCappedVertices = "ToolpathCappedVertices"; ///< vertices whose h was capped at λφ
+constexpr const char* ToolpathUnsupportedVertices = "ToolpathUnsupportedVertices"; ///< vertices without a lower node above the first layer
+constexpr const char* ToolpathRotationSteps = "ToolpathRotationSteps";   ///< points inserted to limit the nozzle axis turn
+constexpr const char* ToolpathSeconds = "ToolpathSeconds";               ///< wall time of the planning (s)
 } // namespace arrays
 
 /// Values of the VertexKind and EdgeKind arrays (= geolattice::LatticeVertexKind / LatticeEdgeKind).
@@ -143,5 +176,12 @@ namespace collisionrole {
 constexpr int Station = 0;  ///< the nozzle tip (the point being printed)
 constexpr int Obstacle = 1; ///< earlier material inside the nozzle volume there
 } // namespace collisionrole
+
+/// Values of the MoveKind array of vtkGLToolpathPlanner (= geolattice::MoveKind).
+namespace movekind {
+constexpr int Print = 0;     ///< printing a lattice edge
+constexpr int Perimeter = 1; ///< printing the support perimeter
+constexpr int Air = 2;       ///< air move (no extrusion; not material for the collision verifier)
+} // namespace movekind
 } // namespace geolattice
 #endif

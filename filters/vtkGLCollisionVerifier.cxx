@@ -49,6 +49,7 @@ struct Stations
   std::vector<Eigen::Vector3d> normals;
   std::vector<int> time;
   std::vector<int> group;
+  std::vector<char> material; ///< per point: 1 = printed material; empty = all are
 };
 
 /// A non-negative integer id, else -1.
@@ -391,6 +392,7 @@ int vtkGLCollisionVerifier::RequestData(
     else
     {
       vtkDataArray* pointGroup = pd->GetArray(gl::arrays::SubgraphId);
+      vtkDataArray* moveKind = pd->GetArray(gl::arrays::MoveKind); // a toolpath: air points are no material
       const vtkIdType V = input->GetNumberOfPoints();
       for (vtkIdType v = 0; v < V; ++v)
       {
@@ -400,6 +402,10 @@ int vtkGLCollisionVerifier::RequestData(
         stations.normals.push_back(tupleOf(normals, v));
         stations.time.push_back(timeValue(pointTime, v, "point"));
         stations.group.push_back(idOf(pointGroup, v));
+        if (moveKind)
+        {
+          stations.material.push_back(moveKind->GetComponent(v, 0) != gl::movekind::Air ? 1 : 0);
+        }
       }
     }
     // Obstacles of a skeleton ancestor of the station's sub-graph are unavoidable (Criterion 1
@@ -417,7 +423,8 @@ int vtkGLCollisionVerifier::RequestData(
     }
     this->UpdateProgress(0.2);
     const gl::CollisionReport report = gl::verifyNozzleClearance(stations.points, stations.normals, stations.time,
-      nozzle, this->MaxReported, ancestry ? &exemption : nullptr);
+      nozzle, this->MaxReported, ancestry ? &exemption : nullptr,
+      stations.material.empty() ? nullptr : &stations.material);
     buildOutput(report, this->NozzleAngle, output);
     this->UpdateProgress(1.0);
   }

@@ -28,7 +28,9 @@
  *     LayerId, point array Gamma, one time per sub-graph) is sampled by the same code as the
  *     sequencer (core/sequence/PrintMaterial.h), so both test the same points.
  *   - If it is a point array, every point of the input is one station with that time (a
- *     toolpath: time = index along the path).
+ *     toolpath: time = index along the path, e.g. `PointIndex` of vtkGLToolpathPlanner). If the
+ *     input also has a point array `MoveKind` (a toolpath), points with MoveKind 2 (air moves)
+ *     are stations but not material: only print and perimeter points are obstacles.
  * Output: vtkPolyData, per reported violation (at most MaxReported, the first in print time) two
  *   points, the station (the tip) and the obstacle, joined by a line cell, with point data
  *   `ViolationIndex` (int), `Role` (int: 0 station, 1 obstacle; geolattice::collisionrole),
@@ -40,7 +42,7 @@
  *   `CollisionUnavoidableStations`, `CollisionSeconds` and `NozzleAngleDeg`.
  * Parameters: TimeArrayName (default "PrintOrder"), NozzleAngle (degrees, default 45, in
  *   (0, 90)), NozzleLength (mm, default 0 = cone only), HolderRadius (mm, default 0),
- *   TipClearance (mm, default 0), SampleSpacing (mm, default 1, > 0), MaxReported (default 20).
+ *   TipClearance (mm, default 0.1), SampleSpacing (mm, default 1, > 0), MaxReported (default 20).
  * Errors (an empty input, missing Normals or time array, a non-integer or non-finite time, a zero
  * normal, NozzleAngle outside (0, 90) or another bad nozzle, SampleSpacing <= 0, SkeletonEdges
  * without 2 components, with a negative id or a cycle) are reported with vtkErrorMacro and give
@@ -112,7 +114,7 @@ protected:
   double NozzleAngle = 45.0;
   double NozzleLength = 0.0;
   double HolderRadius = 0.0;
-  double TipClearance = 0.0;
+  double TipClearance = 0.1;
   double SampleSpacing = 1.0;
   int MaxReported = 20;
 

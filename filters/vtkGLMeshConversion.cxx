@@ -172,13 +172,26 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
                           "which writes Gamma, before GL Lattice Infill)");
   }
   vtkDataArray* pointSubgraph = pd->GetArray(arrays::SubgraphId);
+  vtkDataArray* cellKind = cd->GetArray(arrays::EdgeKind);    // optional
+  vtkDataArray* pointKind = pd->GetArray(arrays::VertexKind); // optional
 
   LatticeGraph g;
   const vtkIdType V = lattice->GetNumberOfPoints();
   g.points = readPoints(lattice->GetPoints());
   g.normals.resize(V);
   g.gamma.resize(V);
+  if (pointKind) {
+    g.vertexKind.resize(V);
+  }
   for (vtkIdType v = 0; v < V; ++v) {
+    if (pointKind) {
+      const int kind = integerValue(pointKind, v, "lattice point");
+      if (kind < latticekind::VertexIsolinePoint || kind > latticekind::VertexBoundary) {
+        throw GeoLatticeError("lattice point " + std::to_string(v) + " has VertexKind " + std::to_string(kind) +
+                              "; vertex kinds are 0..3");
+      }
+      g.vertexKind[v] = static_cast<LatticeVertexKind>(kind);
+    }
     Vec3 n(normals->GetComponent(v, 0), normals->GetComponent(v, 1), normals->GetComponent(v, 2));
     const double len = n.norm();
     g.normals[v] = len > 0 && std::isfinite(len) ? Vec3(n / len) : n;
@@ -204,10 +217,18 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
                             "; sub-graph ids must be 0..K-1");
     }
     const int layer = integerValue(cellLayer, cell, "lattice line cell");
+    const int kind = cellKind ? integerValue(cellKind, cell, "lattice line cell") : 0;
+    if (kind < latticekind::EdgeAlpha || kind > latticekind::EdgeBoundary) {
+      throw GeoLatticeError("lattice line cell " + std::to_string(cell) + " has EdgeKind " + std::to_string(kind) +
+                            "; edge kinds are 0 (alpha), 1 (beta) and 2 (boundary)");
+    }
     for (vtkIdType k = 0; k + 1 < n; ++k) {
       g.edges.push_back({static_cast<int>(ids[k]), static_cast<int>(ids[k + 1])});
       g.edgeSubgraph.push_back(s);
       rawLayer.push_back(layer);
+      if (cellKind) {
+        g.edgeKind.push_back(static_cast<LatticeEdgeKind>(kind));
+      }
     }
   }
 
@@ -428,6 +449,25 @@ SkeletonTree toSkeletonTree(vtkPolyData* skeleton) {
   }
   validateSkeletonTree(tree);
   return tree;
+}
+
+void matchSkeletonToLattice(SkeletonTree& tree, const LatticeGraph& graph) {
+  if (tree.nodes.size() != graph.subgraphs.size()) {
+    throw GeoLatticeError("the skeleton has " + std::to_string(tree.nodes.size()) + " nodes but the lattice has " +
+                          std::to_string(graph.subgraphs.size()) +
+                          " sub-graphs (connect the GL Skeleton Tree of this lattice)");
+  }
+  for (size_t i = 0; i < tree.nodes.size(); ++i) {
+    if (tree.nodes[i].layer != graph.subgraphs[i].layer) {
+      throw GeoLatticeError("skeleton node " + std::to_string(i) + " is on lattice layer " +
+                            std::to_string(tree.nodes[i].layer) + " but sub-graph " + std::to_string(i) +
+                            " of the lattice is on layer " + std::to_string(graph.subgraphs[i].layer) +
+                            " (connect the GL Skeleton Tree of this lattice)");
+    }
+  }
+  if (tree.layerValues.empty()) {
+    tree.layerValues = graph.layerValues;
+  }
 }
 
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components) {

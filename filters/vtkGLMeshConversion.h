@@ -42,7 +42,9 @@ void fromTriangleSurface(const TriangleSurface& surface, vtkPolyData* poly);
 /// (id = SubgraphId, which must be 0..K-1 without gaps, each on one layer; indexInLayer by id
 /// within the layer; length, length-weighted centroid, vertex and edge counts); degree; the
 /// layer offsets when points, edges and sub-graph ids are grouped by layer as the lattice filter
-/// writes them (else they are left empty). Kinds, α, β and levels are not restored. Throws
+/// writes them (else they are left empty); edgeKind from the cell array EdgeKind and vertexKind
+/// from the point array VertexKind when present (values checked; else left empty: the toolpath
+/// needs edgeKind, the sequencing does not). α, β and levels are not restored. Throws
 /// GeoLatticeError naming the problem ("lattice has no SubgraphId cell array", ...).
 LatticeGraph toLatticeGraph(vtkPolyData* lattice);
 
@@ -56,6 +58,11 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice);
 /// then validateSkeletonTree. Throws GeoLatticeError naming the problem (missing LayerId, a line
 /// cell that is not a 2-point line, "cyclic or missing adjacency", ...).
 SkeletonTree toSkeletonTree(vtkPolyData* skeleton);
+
+/// Checks that `tree` (from toSkeletonTree) is the skeleton of `graph` (from toLatticeGraph): one
+/// node per sub-graph, node i on the layer of sub-graph i. Fills tree.layerValues from the
+/// lattice when the skeleton has none. Throws GeoLatticeError naming the mismatch.
+void matchSkeletonToLattice(SkeletonTree& tree, const LatticeGraph& graph);
 
 /// A named double array of values.size() / components tuples holding values.
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components = 1);

@@ -205,25 +205,7 @@ int vtkGLPrintSequencer::RequestData(
 
     const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
     gl::SkeletonTree tree = gl::toSkeletonTree(skeleton);
-    if (tree.nodes.size() != graph.subgraphs.size())
-    {
-      throw gl::GeoLatticeError("the skeleton has " + std::to_string(tree.nodes.size()) +
-        " nodes but the lattice has " + std::to_string(graph.subgraphs.size()) +
-        " sub-graphs (connect the GL Skeleton Tree of this lattice)");
-    }
-    for (size_t i = 0; i < tree.nodes.size(); ++i)
-    {
-      if (tree.nodes[i].layer != graph.subgraphs[i].layer)
-      {
-        throw gl::GeoLatticeError("skeleton node " + std::to_string(i) + " is on lattice layer " +
-          std::to_string(tree.nodes[i].layer) + " but sub-graph " + std::to_string(i) + " of the lattice is on layer " +
-          std::to_string(graph.subgraphs[i].layer) + " (connect the GL Skeleton Tree of this lattice)");
-      }
-    }
-    if (tree.layerValues.empty())
-    {
-      tree.layerValues = graph.layerValues;
-    }
+    gl::matchSkeletonToLattice(tree, graph);
     const gl::MaterialSamples material = gl::sampleLatticeMaterial(graph, this->SampleSpacing);
     this->UpdateProgress(0.1);
 

@@ -43,7 +43,7 @@
  *   collisions from avoidable ones).
  * Parameters: Strategy (default 2 = A4), NozzleAngle (NA, degrees, default 45, in (0, 90)),
  *   NozzleLength (mm, default 0 = cone only), HolderRadius (mm, default 0), TipClearance (mm,
- *   default 0: material with height <= this above the tip is ignored), SampleSpacing (mm,
+ *   default 0.1: material with height <= this above the tip is ignored), SampleSpacing (mm,
  *   default 1, > 0), RolloutCandidates (default 6, >= 1), RetractionCost (mm, default 20,
  *   >= 0), NumberOfThreads (PCG, default 0 = all cores).
  * Errors (an empty lattice, missing arrays, a skeleton that does not match the lattice (node
@@ -137,7 +137,7 @@ protected:
   double NozzleAngle = 45.0;
   double NozzleLength = 0.0;
   double HolderRadius = 0.0;
-  double TipClearance = 0.0;
+  double TipClearance = 0.1;
   double SampleSpacing = 1.0;
   int RolloutCandidates = 6;
   double RetractionCost = 20.0;

@@ -4,7 +4,8 @@ Builds the same pipeline as the `geolattice` command-line tool from the plugin's
 
     GLMeshReader -> GLPlaceOnPlatform -> GLTetrahedralizeSurface -> GLGeodesicDistanceFields
     -> GLCurvedLayerSlicer -> GLLatticeInfill -> GLSkeletonTree (with the fields)
-    -> GLPrintSequencer -> GLCollisionVerifier, and GLOverhangAnalysis on the fields
+    -> GLPrintSequencer -> GLCollisionVerifier, GLPrintSequencer -> GLToolpathPlanner ->
+    GLCollisionVerifier (time = PointIndex), and GLOverhangAnalysis on the fields
 
 and saves the tet mesh and the fields as VTK XML files (binary mode: ParaView 5.11 on Debian 12
 cannot read appended-mode files). Run it with pvpython (no X server needed):
@@ -39,10 +40,16 @@ STRATEGIES = ("LPT", "DPT", "A4", "Best")  # GLPrintSequencer's Strategy values,
 
 def build_pipeline(model, scale=1.0, fit_size=0.0, center=True, edge_length=0.0, radius_edge=1.414,
                    base_tolerance=0.05, time_factor=4.0, reference=(1.0, 0.0, 0.0), layer_interval=0.6,
-                   first_layer=None, lattice_width=4.0, strategy="A4", nozzle_angle=45.0, sample_spacing=1.0):
+                   first_layer=None, lattice_width=4.0, strategy="A4", nozzle_angle=45.0, sample_spacing=1.0,
+                   path_width=0.6, filament_diameter=1.75, flow_correction=0.95, support_perimeter=True,
+                   time_steps=200):
     """Returns a dict of the pipeline's proxies: reader, place, tets, fields, layers, lattice, skeleton,
     sequencer (output ports 0 Sequenced Lattice, 1 Sequenced Skeleton, 2 Print Order), verifier (checks
-    the sequenced lattice with the same nozzle and sample spacing) and overhang."""
+    the sequenced lattice with the same nozzle and sample spacing), toolpath (GLToolpathPlanner on the
+    sequencer's outputs 0 and 1; it has `time_steps` time steps 0..1 of print progress, so the animation
+    controls replay the print; update it with a time, e.g. toolpath.UpdatePipeline(0.5), for the part
+    printed by then), toolpath_verifier (the verifier on the toolpath: time = PointIndex, air points are no
+    material) and overhang."""
     reader = simple.GLMeshReader(FileName=model)
     place = simple.GLPlaceOnPlatform(Input=reader, Scale=scale, FitSize=fit_size, CenterXY=int(center))
     if model.lower().endswith(TET_MESH_EXTENSIONS):
@@ -60,10 +67,16 @@ def build_pipeline(model, scale=1.0, fit_size=0.0, center=True, edge_length=0.0,
                                         NozzleAngle=nozzle_angle, SampleSpacing=sample_spacing)
     verifier = simple.GLCollisionVerifier(Input=simple.OutputPort(sequencer, 0), TimeArrayName="PrintOrder",
                                           NozzleAngle=nozzle_angle, SampleSpacing=sample_spacing)
+    toolpath = simple.GLToolpathPlanner(Input=simple.OutputPort(sequencer, 0),
+                                        Skeleton=simple.OutputPort(sequencer, 1), PathWidth=path_width,
+                                        FilamentDiameter=filament_diameter, FlowCorrection=flow_correction,
+                                        SupportPerimeter=int(support_perimeter), NumberOfTimeSteps=time_steps)
+    toolpath_verifier = simple.GLCollisionVerifier(Input=toolpath, TimeArrayName="PointIndex",
+                                                   NozzleAngle=nozzle_angle)
     overhang = simple.GLOverhangAnalysis(Input=fields)
     return {"reader": reader, "place": place, "tets": tets, "fields": fields, "layers": layers,
             "lattice": lattice, "skeleton": skeleton, "sequencer": sequencer, "verifier": verifier,
-            "overhang": overhang}
+            "toolpath": toolpath, "toolpath_verifier": toolpath_verifier, "overhang": overhang}
 
 
 def save_binary(proxy, path):
@@ -118,6 +131,9 @@ def main(argv=None):
     save_binary(simple.OutputPort(p["sequencer"], 0), os.path.join(args.output, "sequenced_lattice.vtp"))
     save_binary(simple.OutputPort(p["sequencer"], 2), os.path.join(args.output, "print_order.vtp"))
     save_binary(p["verifier"], os.path.join(args.output, "collisions.vtp"))
+    p["toolpath"].UpdatePipeline(1.0)  # the whole path (time 1 = print progress 100 %)
+    save_binary(p["toolpath"], os.path.join(args.output, "toolpath.vtp"))
+    save_binary(p["toolpath_verifier"], os.path.join(args.output, "toolpath_collisions.vtp"))
     gamma = fields.GetPointData().GetArray("Gamma").GetRange()
     print("geolattice_pipeline: %d points, %d tets, gamma max %.3f mm; wrote %s" %
           (fields.GetNumberOfPoints(), fields.GetNumberOfCells(), gamma[1], args.output))
@@ -132,6 +148,11 @@ def main(argv=None):
     else:
         verdict = "COLLISIONS (see collisions.vtp)"
     print("geolattice_pipeline: %s printing order at nozzle angle %g: %s" % (args.strategy, args.nozzle_angle, verdict))
+    tfd = simple.servermanager.Fetch(p["toolpath"]).GetFieldData()
+    if tfd.GetArray("ToolpathPrintLength") is not None:
+        print("geolattice_pipeline: toolpath %.1f mm printed, %.1f mm air, %d retractions, filament %.1f mm" %
+              (tfd.GetArray("ToolpathPrintLength").GetValue(0), tfd.GetArray("ToolpathAirLength").GetValue(0),
+               tfd.GetArray("ToolpathRetractions").GetValue(0), tfd.GetArray("ToolpathFilament").GetValue(0)))
     return 0
 
 

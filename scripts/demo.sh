@@ -9,10 +9,14 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 cat <<MSG
 
 Done. Outputs are in $root/out:
-  tets.vtu     the tetrahedral mesh of the part
-  fields.vtu   the mesh with the geodesic fields Gamma, Alpha, Beta (point data)
-  report.json  per-stage timings and counts
-Open them in ParaView:  paraview $root/out/fields.vtu
+  tets.vtu       the tetrahedral mesh of the part
+  fields.vtu     the mesh with the geodesic fields Gamma, Alpha, Beta (point data)
+  layers.vtp     the curved layers (colour by LayerId)
+  lattice.vtp    the lattice infill of every layer (colour by SubgraphId or PrintOrder)
+  skeleton.vtp   the skeleton tree of the lattice pieces, sequence.csv the printing order
+  toolpath.vtp   the printing path (colour by MoveKind); toolpath.pvd replays the print
+  report.json    per-stage timings, counts and the collision check
+Open them in ParaView:  paraview $root/out/toolpath.pvd   (press Play)
 or load the filters into ParaView (Tools > Manage Plugins > Load New):
   $root/build/lib/paraview-5.11/plugins/GeoLattice/GeoLattice.so
 MSG

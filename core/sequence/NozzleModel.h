@@ -8,7 +8,10 @@
 /// In coordinates of a tip p and unit axis n, a point x with h = (x - p)·n and
 /// r = |x - p - h n| is inside iff h > tipClearance and
 ///   (h <= L and r < h tan NA)  or  (h > L and r < R).
-/// tipClearance (>= 0) ignores material level with the tip (the bead being laid down).
+/// tipClearance (>= 0, default 0.1 mm) ignores material level with the tip: the nozzle's flat
+/// face rides on the layer being printed, so beads of the same layer next to the tip (their tops
+/// within a fraction of a layer of the tip, e.g. where the path passes a crossing the second
+/// time) are not obstacles. 0 makes every point above the tip plane count.
 #include <cmath>
 #include <limits>
 
@@ -18,7 +21,7 @@ struct NozzleModel {
   double halfAngleDeg = 45.0;   ///< NA, in (0, 90) degrees
   double length = std::numeric_limits<double>::infinity();  ///< L (mm, > 0), ∞ = cone only
   double holderRadius = 0.0;    ///< R (mm, >= 0), used when length is finite; 0 = no holder
-  double tipClearance = 0.0;    ///< material with h <= this is ignored (mm, >= 0)
+  double tipClearance = 0.1;    ///< material with h <= this is ignored (mm, >= 0)
 
   /// Throws GeoLatticeError naming the bad parameter.
   void validate() const;

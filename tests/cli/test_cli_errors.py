@@ -1,6 +1,9 @@
 """The geolattice CLI on bad input: each case must exit non-zero with exactly one line on stderr
 that names the problem, and leave no partial or temporary file in the output directory."""
+import json
 import os
+import re
+import shutil
 import subprocess
 import sys
 import tempfile
@@ -104,17 +107,54 @@ class CliErrorTest(unittest.TestCase):
     def test_unknown_strategy(self):
         self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--strategy", "fastest"], "--strategy")
 
+    def test_unknown_stage(self):
+        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--until", "gcode"], "--until", "toolpath")
+
+    def test_bad_toolpath_option_values(self):
+        cube = [os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10"]
+        # Not numbers, or not a whole number of steps: usage errors before anything runs.
+        for flag in ("--path-width", "--filament-diameter", "--flow", "--print-speed", "--air-speed",
+                     "--thickness-cap", "--max-turn", "--safe-margin", "--lift", "--retraction", "--tooth-length"):
+            self.expect_error(cube + [flag, "abc"], flag)
+        for steps in ("-1", "2.5", "abc"):
+            self.expect_error(cube + ["--replay-steps", steps], "--replay-steps")
+        # Out of range: the planner's messages (as in ParaView), at the toolpath stage.
+        self.expect_error(cube + ["--path-width", "0"], "toolpath", "path width must be > 0")
+        self.expect_error(cube + ["--flow", "1.5"], "toolpath", "flow correction mu must be in (0, 1]")
+        self.expect_error(cube + ["--filament-diameter", "-1"], "toolpath", "filament diameter must be > 0")
+        self.expect_error(cube + ["--max-turn", "0"], "toolpath", "maximum turn angle must be > 0")
+        self.expect_error(cube + ["--retraction", "-1"], "toolpath", "retraction must be >= 0")
+        # The stages before the toolpath were written completely.
+        self.assertTrue(os.path.isfile(os.path.join(self.out, "lattice.vtp")))
+        self.assertFalse(os.path.exists(os.path.join(self.out, "toolpath.vtp")))
+
+    def test_replay_steps_replace_earlier_ones(self):
+        cube = [os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "-o", self.out, "-q"]
+        steps_dir = os.path.join(self.out, "toolpath")
+        for steps in ("7", "3", "0"):
+            result = self.run_cli(*cube, "--replay-steps", steps)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            with open(os.path.join(self.out, "report.json")) as f:
+                self.assertEqual(json.load(f)["toolpath"]["replay_steps"], int(steps))
+            files = sorted(os.listdir(steps_dir)) if os.path.isdir(steps_dir) else []
+            self.assertEqual(files, ["step_%04d.vtp" % k for k in range(1, int(steps) + 1)])
+            self.assertEqual(os.path.isfile(os.path.join(self.out, "toolpath.pvd")), steps != "0")
+
     def test_lattice_wider_than_the_part_still_sequences(self):
         # No isoline crosses the layers: the sub-graphs are the layer boundaries, still printed in order.
         result = self.run_cli(os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--lattice-width", "1000",
                               "-o", self.out, "-q")
         self.assertEqual(result.returncode, 0, result.stderr)
-        import json
         with open(os.path.join(self.out, "report.json")) as f:
             report = json.load(f)
         self.assertEqual(report["lattice"]["isoline_edges"], 0)
         self.assertEqual(report["sequence"]["subgraphs"], report["lattice"]["subgraphs"])
         self.assertTrue(report["sequence"]["collision_free"])
+        # Each sub-graph is a closed boundary loop: one tour each, nothing trimmed, no perimeter.
+        self.assertEqual(report["toolpath"]["tours"], report["lattice"]["subgraphs"])
+        self.assertEqual(report["toolpath"]["trimmed_edges"], 0)
+        self.assertEqual(report["toolpath"]["perimeter_loops"], 0)
+        self.assertEqual(report["toolpath"]["retractions"], report["lattice"]["subgraphs"] - 1)
 
     def test_bad_option_value(self):
         self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--scale", "abc"], "--scale")
@@ -156,13 +196,75 @@ class CliVerifyTest(unittest.TestCase):
         with open(os.path.join(self.out, "sequence.csv")) as f:
             rows = f.read().splitlines()
         self.assertEqual(rows[0].split(",")[:3], ["order", "subgraph", "layer"])
-        import json
         with open(os.path.join(self.out, "report.json")) as f:
             seq = json.load(f)["sequence"]
         self.assertEqual(len(rows) - 1, seq["subgraphs"])
         self.assertIsInstance(seq["collision_free"], bool)
         for key in ("strategy", "nozzle_angle_deg", "retractions", "air_length_mm", "seconds"):
             self.assertIn(key, seq)
+
+    def test_outputs_of_the_toolpath_stage(self):
+        with open(os.path.join(self.out, "report.json")) as f:
+            report = json.load(f)
+        tp = report["toolpath"]
+        for key in ("print_length_mm", "perimeter_length_mm", "air_length_mm", "retractions", "tours", "crossings",
+                    "split_subgraphs", "thickness_dev_min", "thickness_dev_max", "filament_mm", "volume_mm3",
+                    "seconds", "verify_seconds", "points", "path_width_mm", "replay_steps", "stations",
+                    "violating_stations", "unavoidable_stations"):
+            self.assertIn(key, tp)
+        self.assertIsInstance(tp["collision_free"], bool)
+        self.assertIsInstance(tp["order_collision_free"], bool)
+        self.assertGreater(tp["print_length_mm"], 0)
+        self.assertGreater(tp["filament_mm"], 0)
+        self.assertEqual(tp["crossings"], 0)
+        self.assertGreaterEqual(tp["tours"], report["sequence"]["subgraphs"])
+        self.assertEqual(tp["stations"], tp["points"])  # every toolpath point is a nozzle station
+        self.assertLessEqual(tp["thickness_dev_min"], tp["thickness_dev_max"])
+        for name in ("toolpath.vtp", "toolpath.pvd", "toolpath_collisions.vtp"):
+            self.assertTrue(os.path.isfile(os.path.join(self.out, name)), name)
+
+        def points_in(path):
+            with open(path, "rb") as f:
+                head = f.read(100000).decode("latin-1")
+            return int(re.search(r'<Piece NumberOfPoints="(\d+)"', head).group(1))
+
+        self.assertEqual(points_in(os.path.join(self.out, "toolpath.vtp")), tp["points"])
+        # The replay: cumulative steps at progress k / S, the last one the whole path.
+        import xml.etree.ElementTree as ET
+        sets = ET.parse(os.path.join(self.out, "toolpath.pvd")).getroot().findall("./Collection/DataSet")
+        steps = tp["replay_steps"]
+        self.assertTrue(1 <= steps <= 50)
+        self.assertEqual(len(sets), steps)
+        times = [float(d.get("timestep")) for d in sets]
+        self.assertEqual(times, sorted(times))
+        self.assertEqual(times[-1], 1.0)
+        self.assertEqual(sorted(os.listdir(os.path.join(self.out, "toolpath"))),
+                         ["step_%04d.vtp" % k for k in range(1, steps + 1)])
+        counts = [points_in(os.path.join(self.out, d.get("file"))) for d in sets]
+        for t, n in zip(times, counts):
+            self.assertEqual(n, round(t * (tp["points"] - 1)) + 1)
+        self.assertEqual(counts[-1], tp["points"])
+
+    def test_verify_checks_the_newer_of_toolpath_and_lattice(self):
+        toolpath = self.verify(self.out, "--nozzle-angle", "5")
+        self.assertEqual(toolpath.returncode, 0, toolpath.stdout + toolpath.stderr)
+        self.assertIn("verify: toolpath.vtp", toolpath.stdout)
+        stations = int(re.search(r"(\d+) nozzle stations", toolpath.stdout).group(1))
+        with open(os.path.join(self.out, "report.json")) as f:
+            self.assertEqual(stations, json.load(f)["toolpath"]["points"])
+        # A copy whose lattice.vtp is newer (as after a later `run --until sequence`).
+        copy = os.path.join(self.tmp, "lattice-newer")
+        shutil.copytree(self.out, copy)
+        later = os.path.getmtime(os.path.join(copy, "toolpath.vtp")) + 10
+        os.utime(os.path.join(copy, "lattice.vtp"), (later, later))
+        lattice = self.verify(copy, "--nozzle-angle", "5")
+        self.assertEqual(lattice.returncode, 0, lattice.stdout + lattice.stderr)
+        self.assertIn("verify: lattice.vtp", lattice.stdout)
+        # Only a toolpath: it is checked.
+        os.remove(os.path.join(copy, "lattice.vtp"))
+        only = self.verify(copy, "--nozzle-angle", "5")
+        self.assertEqual(only.returncode, 0, only.stdout + only.stderr)
+        self.assertIn("verify: toolpath.vtp", only.stdout)
 
     def test_depth_first_collides_and_slender_nozzle_does_not(self):
         # Depth first on the Y: one branch is finished before the other starts; a 75° nozzle on
@@ -178,6 +280,7 @@ class CliVerifyTest(unittest.TestCase):
         missing = self.verify(os.path.join(self.tmp, "nowhere"))
         self.assertEqual(missing.returncode, 1)
         self.assertIn("not found", missing.stderr)
+        self.assertIn("toolpath.vtp", missing.stderr)
         bad = self.verify(self.out, "--nozzle-angle", "90")
         self.assertEqual(bad.returncode, 1)
         self.assertEqual(len(bad.stderr.strip().splitlines()), 1)

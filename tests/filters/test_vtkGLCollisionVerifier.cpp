@@ -197,6 +197,34 @@ TEST(vtkGLCollisionVerifier, PointTimeArrayAndInteriorSamples) {
   EXPECT_EQ(field(cell.output, arrays::CollisionFree), 0.0);
 }
 
+TEST(vtkGLCollisionVerifier, PointMoveKindAirIsNoMaterial) {
+  // A toolpath-like input: per-point times, tower A printed first. With tower A's points marked as
+  // air moves (MoveKind 2) nothing is printed before tower B: no collision; every point is still a
+  // station. Print (0) and perimeter (1) points are material.
+  auto input = towers(towerByTower);
+  input->GetCellData()->RemoveArray(arrays::PrintOrder);
+  vtkNew<vtkIntArray> kind;
+  kind->SetName(arrays::MoveKind);
+  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p) {
+    kind->InsertNextValue(p < 2 * kLayers ? geolattice::movekind::Air : geolattice::movekind::Print);
+  }
+  input->GetPointData()->AddArray(kind);
+  auto pointTime = [](vtkGLCollisionVerifier* f) { f->SetTimeArrayName("PointTime"); };
+  Verified v = verify(input, 60.0, pointTime);
+  ASSERT_TRUE(v.errors.empty()) << v.errors;
+  EXPECT_EQ(field(v.output, arrays::CollisionStations), 4.0 * kLayers);
+  EXPECT_EQ(field(v.output, arrays::CollisionFree), 1.0);
+  for (int k : {geolattice::movekind::Print, geolattice::movekind::Perimeter}) {
+    for (vtkIdType p = 0; p < 2 * kLayers; ++p) {
+      kind->SetValue(p, k);
+    }
+    kind->Modified();
+    v = verify(input, 60.0, pointTime);
+    ASSERT_TRUE(v.errors.empty()) << v.errors;
+    EXPECT_EQ(field(v.output, arrays::CollisionFree), 0.0) << "MoveKind " << k;
+  }
+}
+
 TEST(vtkGLCollisionVerifier, SkeletonEdgesMakeAncestorObstaclesUnavoidable) {
   // Each segment is a sub-graph (id = cell index: A's layers 0..9, B's 10..19). With the two
   // towers as separate chains, A is no ancestor of B: the tower-by-tower order is at fault.
@@ -246,7 +274,7 @@ TEST(vtkGLCollisionVerifier, DefaultsAndPrintSelf) {
   EXPECT_EQ(f->GetNozzleAngle(), 45.0);
   EXPECT_EQ(f->GetNozzleLength(), 0.0);
   EXPECT_EQ(f->GetHolderRadius(), 0.0);
-  EXPECT_EQ(f->GetTipClearance(), 0.0);
+  EXPECT_EQ(f->GetTipClearance(), 0.1);
   EXPECT_EQ(f->GetSampleSpacing(), 1.0);
   EXPECT_EQ(f->GetMaxReported(), 20);
   std::ostringstream os;

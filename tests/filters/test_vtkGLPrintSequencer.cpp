@@ -399,7 +399,7 @@ TEST(vtkGLPrintSequencer, DefaultsAndPrintSelf) {
   EXPECT_EQ(s->GetNozzleAngle(), 45.0);
   EXPECT_EQ(s->GetNozzleLength(), 0.0);
   EXPECT_EQ(s->GetHolderRadius(), 0.0);
-  EXPECT_EQ(s->GetTipClearance(), 0.0);
+  EXPECT_EQ(s->GetTipClearance(), 0.1);
   EXPECT_EQ(s->GetSampleSpacing(), 1.0);
   EXPECT_EQ(s->GetRolloutCandidates(), 6);
   EXPECT_EQ(s->GetRetractionCost(), 20.0);

@@ -178,6 +178,64 @@ class PipelineTest(unittest.TestCase):
         bad.UpdatePipeline()
         self.assertEqual(servermanager.Fetch(bad, idx=0).GetNumberOfCells(), 0)
 
+    def test_toolpath_and_its_replay(self):
+        toolpath = self.proxies["toolpath"]
+        toolpath.UpdatePipeline(1.0)
+        path = servermanager.Fetch(toolpath)
+        n = path.GetNumberOfPoints()
+        self.assertGreater(n, 1000)
+        self.assertGreater(path.GetNumberOfCells(), 10)
+        pd, cd, fd = path.GetPointData(), path.GetCellData(), path.GetFieldData()
+        for key in ("Normals", "Thickness", "Width", "Extrusion", "FeedRate", "MoveKind", "LayerId", "SubgraphId",
+                    "PathIndex", "PointIndex"):
+            self.assertIsNotNone(pd.GetArray(NAMES[key]), key)
+            self.assertEqual(pd.GetArray(NAMES[key]).GetNumberOfTuples(), n, key)
+        for key in ("MoveKind", "PathIndex", "LayerId", "SubgraphId"):
+            self.assertIsNotNone(cd.GetArray(NAMES[key]), key)
+        for key in ("ToolpathPrintLength", "ToolpathPerimeterLength", "ToolpathAirLength", "ToolpathRetractions",
+                    "ToolpathTours", "ToolpathCrossings", "ToolpathSplitSubgraphs", "ToolpathFilament",
+                    "ToolpathVolume", "ToolpathThicknessDeviation", "ToolpathThicknessDeviationPerLayer",
+                    "ToolpathRotationSteps", "ToolpathSeconds", "SkeletonEdges"):
+            self.assertIsNotNone(fd.GetArray(NAMES[key]), key)
+        kinds = pd.GetArray(NAMES["MoveKind"]).GetRange()
+        self.assertEqual(kinds[0], 0)  # print moves
+        self.assertEqual(kinds[1], 2)  # air moves
+        self.assertEqual(pd.GetArray(NAMES["PointIndex"]).GetRange(), (0.0, n - 1.0))
+        self.assertEqual(fd.GetArray(NAMES["ToolpathCrossings"]).GetValue(0), 0)
+        self.assertGreater(fd.GetArray(NAMES["ToolpathPrintLength"]).GetValue(0), 100)
+        self.assertEqual(fd.GetArray(NAMES["ToolpathThicknessDeviationPerLayer"]).GetNumberOfComponents(), 3)
+        # Time steps 0..1 of print progress (the TimestepValues information property); a time gives the
+        # part printed by then, from the same (cached) plan.
+        steps = list(toolpath.TimestepValues)
+        self.assertEqual(len(steps), 200)
+        self.assertEqual((steps[0], steps[-1]), (0.0, 1.0))
+        time_range = toolpath.GetProperty("TimeRange")  # information only, not a Python attribute
+        self.assertEqual([time_range[0], time_range[1]], [0.0, 1.0])
+        toolpath.UpdatePipeline(0.5)
+        half = servermanager.Fetch(toolpath)
+        self.assertEqual(half.GetNumberOfPoints(), round(0.5 * (n - 1)) + 1)
+        self.assertLess(half.GetNumberOfCells(), path.GetNumberOfCells())
+        self.assertEqual(half.GetFieldData().GetArray(NAMES["ToolpathSeconds"]).GetValue(0),
+                         fd.GetArray(NAMES["ToolpathSeconds"]).GetValue(0))
+        toolpath.UpdatePipeline(0.0)
+        self.assertEqual(servermanager.Fetch(toolpath).GetNumberOfPoints(), 1)
+        # Saved at time 1: the whole path.
+        toolpath.UpdatePipeline(1.0)
+        saved = os.path.join(self.out, "toolpath.vtp")
+        pipeline.save_binary(toolpath, saved)
+        back = simple.XMLPolyDataReader(FileName=[saved])
+        back.UpdatePipeline()
+        self.assertEqual(servermanager.Fetch(back).GetNumberOfPoints(), n)
+        # The verifier on the toolpath: every point a station.
+        self.proxies["toolpath_verifier"].UpdatePipeline(1.0)
+        cfd = servermanager.Fetch(self.proxies["toolpath_verifier"]).GetFieldData()
+        self.assertEqual(cfd.GetArray(NAMES["CollisionStations"]).GetValue(0), n)
+        # Bad parameter: empty output.
+        bad = simple.GLToolpathPlanner(Input=simple.OutputPort(self.proxies["sequencer"], 0),
+                                       Skeleton=self.proxies["skeleton"], FlowCorrection=1.5)
+        bad.UpdatePipeline(1.0)
+        self.assertEqual(servermanager.Fetch(bad).GetNumberOfPoints(), 0)
+
     def test_saved_file_reads_back(self):
         path = os.path.join(self.out, "fields.vtu")
         pipeline.save_binary(self.proxies["fields"], path)

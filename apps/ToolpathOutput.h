@@ -1,0 +1,47 @@
+#pragma once
+/// @file ToolpathOutput.h
+/// @brief The toolpath stage's files: the print replay (toolpath.pvd with cumulative step files)
+/// and the toolpath part of report.json, from vtkGLToolpathPlanner's output.
+///
+/// Why cumulative step files: a .pvd time series shows the data set(s) listed for the current
+/// time, so replaying a growing print needs, per step, everything printed so far. Each step file
+/// is a complete, standalone toolpath (vtkPolyData with the arrays of toolpath.vtp) that any VTK
+/// reader opens. Alternatives: one toolpath.vtp referenced by every step shows the whole path at
+/// every time; per-step pieces listed as parts 0..k do not work with ParaView 5.11's PVD reader
+/// (it takes the output type from the first time step, one part = vtkPolyData, and then reads only
+/// part 0), and padding every step to the same number of parts with placeholder files works but
+/// gives a multiblock of `steps` blocks and steps² entries. The price of cumulative files is disk
+/// space, about steps / 2 times toolpath.vtp, so their number is capped (replayStepCount).
+#include "JsonWriter.h"
+
+#include <string>
+#include <vector>
+
+class vtkDataObject;
+class vtkGLToolpathPlanner;
+
+namespace geolattice {
+
+/// Number of replay steps for a toolpath of `points` points: maxSteps, but fewer when the
+/// cumulative files would hold more than about 2 million points in total (at least 1);
+/// 0 when maxSteps is 0.
+int replayStepCount(long long points, int maxSteps);
+
+/// Writes OUTDIR/toolpath/step_0001.vtp .. step_NNNN.vtp, step k holding the toolpath printed up
+/// to progress k / steps (the planner's output at that time, vtkGLToolpathPlanner's replay), and
+/// OUTDIR/toolpath.pvd listing them with timestep = k / steps (the same times as the filter's in
+/// ParaView; the last step is the whole path). Every file is written atomically, the .pvd last;
+/// step files of an earlier run beyond the new count are removed, and with steps == 0 the .pvd
+/// and all step files. The planner must have been updated without a time (whole path) before;
+/// it is left at time 1 (the whole path). Returns the paths written (the steps as one pattern).
+/// Throws GeoLatticeError on a write failure or an empty step.
+std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner, const std::string& outDir, int steps);
+
+/// Adds points, cells and the planner's field data to the report section: print_length_mm,
+/// perimeter_length_mm, air_length_mm, retractions, tours, crossings, split_subgraphs,
+/// contracted_edges, trimmed_edges, trimmed_length_mm, perimeter_loops, perimeter_teeth,
+/// rotation_steps, thickness_dev_min, thickness_dev_max, capped_vertices, unsupported_vertices,
+/// filament_mm, volume_mm3, planning_seconds.
+void reportToolpath(vtkDataObject* toolpath, JsonObject& section);
+
+} // namespace geolattice

@@ -1,0 +1,404 @@
+#include "vtkGLToolpathPlanner.h"
+
+#include "vtkGLArrayNames.h"
+#include "vtkGLMeshConversion.h"
+
+#include "common/Error.h"
+#include "lattice/LatticeGraph.h"
+#include "sequence/SkeletonTree.h"
+#include "toolpath/ToolpathPlanner.h"
+
+#include <vtkAbstractArray.h>
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+vtkStandardNewMacro(vtkGLToolpathPlanner);
+
+namespace
+{
+namespace gl = geolattice;
+
+static_assert(static_cast<int>(gl::MoveKind::Print) == gl::movekind::Print &&
+    static_cast<int>(gl::MoveKind::Perimeter) == gl::movekind::Perimeter &&
+    static_cast<int>(gl::MoveKind::Air) == gl::movekind::Air,
+  "geolattice::movekind must match core/toolpath/ToolpathPlanner.h");
+
+vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n)
+{
+  auto a = vtkSmartPointer<vtkIntArray>::New();
+  a->SetName(name);
+  a->SetNumberOfTuples(n);
+  return a;
+}
+
+vtkSmartPointer<vtkDoubleArray> pointDoubles(const char* name, const std::vector<double>& values)
+{
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  std::copy(values.begin(), values.end(), a->GetPointer(0));
+  return a;
+}
+
+/// The printing order: the field array SequenceOrder of the sequencer's outputs.
+std::vector<int> printOrderOf(vtkPolyData* lattice)
+{
+  vtkDataArray* order = lattice->GetFieldData()->GetArray(gl::arrays::SequenceOrder);
+  if (!order)
+  {
+    throw gl::GeoLatticeError(std::string("the lattice has no field array ") + gl::arrays::SequenceOrder +
+      " (the printing order): run GL Print Sequencer first and connect its Sequenced Lattice output");
+  }
+  std::vector<int> out;
+  out.reserve(static_cast<size_t>(order->GetNumberOfTuples()));
+  for (vtkIdType k = 0; k < order->GetNumberOfTuples(); ++k)
+  {
+    const double v = order->GetComponent(k, 0);
+    if (!std::isfinite(v) || v < 0 || v != std::floor(v) || v > 1e9)
+    {
+      throw gl::GeoLatticeError(std::string("the field array ") + gl::arrays::SequenceOrder + " has the value " +
+        std::to_string(v) + " at position " + std::to_string(k) + "; sub-graph ids must be integers >= 0");
+    }
+    out.push_back(static_cast<int>(v));
+  }
+  return out;
+}
+
+/// The whole toolpath as polydata (see the class documentation).
+void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkPolyData* out)
+{
+  const vtkIdType N = static_cast<vtkIdType>(path.points.size());
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(N);
+  vtkNew<vtkDoubleArray> normals;
+  normals->SetName(gl::arrays::Normals);
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(N);
+  auto kind = intArray(gl::arrays::MoveKind, N);
+  auto layer = intArray(gl::arrays::LayerId, N);
+  auto subgraph = intArray(gl::arrays::SubgraphId, N);
+  auto pathIndex = intArray(gl::arrays::PathIndex, N);
+  auto pointIndex = intArray(gl::arrays::PointIndex, N);
+  auto latticeLayerId = [&graph](int l) {
+    return l >= 0 && l < static_cast<int>(graph.layerIndex.size()) ? graph.layerIndex[l] : l;
+  };
+  for (vtkIdType i = 0; i < N; ++i)
+  {
+    points->SetPoint(i, path.points[i].data());
+    normals->SetTuple(i, path.normals[i].data());
+    kind->SetValue(i, static_cast<int>(path.kind[i]));
+    layer->SetValue(i, latticeLayerId(path.layer[i]));
+    subgraph->SetValue(i, path.subgraph[i]);
+    pathIndex->SetValue(i, path.pathIndex[i]);
+    pointIndex->SetValue(i, static_cast<int>(i));
+  }
+  out->SetPoints(points);
+  vtkPointData* pd = out->GetPointData();
+  pd->SetNormals(normals);
+  pd->AddArray(pointDoubles(gl::arrays::Thickness, path.thickness));
+  pd->AddArray(pointDoubles(gl::arrays::Width, path.width));
+  pd->AddArray(pointDoubles(gl::arrays::Extrusion, path.extrusion));
+  pd->AddArray(pointDoubles(gl::arrays::FeedRate, path.feedRate));
+  pd->AddArray(kind);
+  pd->AddArray(layer);
+  pd->AddArray(subgraph);
+  pd->AddArray(pathIndex);
+  pd->AddArray(pointIndex);
+  pd->SetActiveScalars(gl::arrays::MoveKind);
+
+  // One polyline per run of moves (i - 1 -> i) with the same kind, path and sub-graph.
+  vtkNew<vtkCellArray> lines;
+  vtkNew<vtkIntArray> cellKind, cellPath, cellLayer, cellSubgraph;
+  cellKind->SetName(gl::arrays::MoveKind);
+  cellPath->SetName(gl::arrays::PathIndex);
+  cellLayer->SetName(gl::arrays::LayerId);
+  cellSubgraph->SetName(gl::arrays::SubgraphId);
+  auto sameRun = [&path](vtkIdType a, vtkIdType b) {
+    return path.kind[a] == path.kind[b] && path.pathIndex[a] == path.pathIndex[b] &&
+      path.subgraph[a] == path.subgraph[b] && path.layer[a] == path.layer[b];
+  };
+  std::vector<vtkIdType> ids;
+  for (vtkIdType first = 1; first < N;)
+  {
+    vtkIdType last = first;
+    while (last + 1 < N && sameRun(last + 1, first))
+    {
+      ++last;
+    }
+    ids.clear();
+    for (vtkIdType i = first - 1; i <= last; ++i)
+    {
+      ids.push_back(i);
+    }
+    lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+    cellKind->InsertNextValue(static_cast<int>(path.kind[first]));
+    cellPath->InsertNextValue(path.pathIndex[first]);
+    cellLayer->InsertNextValue(latticeLayerId(path.layer[first]));
+    cellSubgraph->InsertNextValue(path.subgraph[first]);
+    first = last + 1;
+  }
+  out->SetLines(lines);
+  vtkCellData* cd = out->GetCellData();
+  cd->AddArray(cellKind);
+  cd->AddArray(cellPath);
+  cd->AddArray(cellLayer);
+  cd->AddArray(cellSubgraph);
+  cd->SetActiveScalars(gl::arrays::MoveKind);
+
+  vtkFieldData* fd = out->GetFieldData();
+  auto count = [fd](const char* name, double value) { gl::addFieldArray(fd, name, { value }); };
+  count(gl::arrays::ToolpathPrintLength, path.printLength);
+  count(gl::arrays::ToolpathPerimeterLength, path.perimeterLength);
+  count(gl::arrays::ToolpathAirLength, path.airLength);
+  count(gl::arrays::ToolpathPerimeterLoops, path.perimeterLoops);
+  count(gl::arrays::ToolpathPerimeterTeeth, path.perimeterTeeth);
+  count(gl::arrays::ToolpathRetractions, path.retractions);
+  count(gl::arrays::ToolpathTours, path.tours);
+  count(gl::arrays::ToolpathCrossings, path.crossings);
+  count(gl::arrays::ToolpathSplitSubgraphs, path.splitSubgraphs);
+  count(gl::arrays::ToolpathContractedEdges, path.contractedEdges);
+  count(gl::arrays::ToolpathTrimmedEdges, path.trimmedEdges);
+  count(gl::arrays::ToolpathTrimmedLength, path.trimmedLength);
+  count(gl::arrays::ToolpathFilament, path.filamentLength);
+  count(gl::arrays::ToolpathVolume, path.depositedVolume);
+  const gl::LayerThicknessResult& t = path.thicknessStats;
+  gl::addFieldArray(fd, gl::arrays::ToolpathThicknessDeviation, { t.deviationMin, t.deviationMax });
+  std::vector<double> perLayer;
+  for (const gl::LayerThicknessDeviation& d : t.perLayer)
+  {
+    perLayer.insert(perLayer.end(), { d.min, d.mean, d.max });
+  }
+  gl::addFieldArray(fd, gl::arrays::ToolpathThicknessDeviationPerLayer, perLayer, 3);
+  count(gl::arrays::ToolpathCappedVertices, t.cappedVertices);
+  count(gl::arrays::ToolpathUnsupportedVertices, t.unsupportedVertices);
+  count(gl::arrays::ToolpathRotationSteps, path.rotationSteps);
+  count(gl::arrays::ToolpathSeconds, path.seconds);
+}
+
+/// The first `n` tuples of `a` in a new array of the same type and name.
+vtkSmartPointer<vtkAbstractArray> prefixOf(vtkAbstractArray* a, vtkIdType n)
+{
+  auto b = vtkSmartPointer<vtkAbstractArray>::Take(a->NewInstance());
+  b->SetName(a->GetName());
+  b->SetNumberOfComponents(a->GetNumberOfComponents());
+  b->InsertTuples(0, n, 0, a);
+  return b;
+}
+
+/// The toolpath printed up to point `last` (inclusive): points 0..last, the cells that start
+/// before it, the last of them cut there; all field data.
+void cutToolpath(vtkPolyData* full, vtkIdType last, vtkPolyData* out)
+{
+  const vtkIdType n = last + 1;
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->GetData()->InsertTuples(0, n, 0, full->GetPoints()->GetData());
+  out->SetPoints(points);
+  vtkPointData* from = full->GetPointData();
+  vtkPointData* pd = out->GetPointData();
+  for (int i = 0; i < from->GetNumberOfArrays(); ++i)
+  {
+    pd->AddArray(prefixOf(from->GetAbstractArray(i), n));
+  }
+  pd->SetNormals(vtkDataArray::SafeDownCast(pd->GetAbstractArray(geolattice::arrays::Normals)));
+  pd->SetActiveScalars(geolattice::arrays::MoveKind);
+
+  vtkNew<vtkCellArray> lines;
+  vtkIdType cells = 0;
+  vtkIdType count;
+  const vtkIdType* ids;
+  vtkCellArray* fullLines = full->GetLines();
+  for (vtkIdType c = 0; c < fullLines->GetNumberOfCells(); ++c)
+  {
+    fullLines->GetCellAtId(c, count, ids);
+    if (count == 0 || ids[0] >= last)
+    {
+      break; // cells are in printing order
+    }
+    const vtkIdType kept = std::min(count, last - ids[0] + 1);
+    lines->InsertNextCell(kept, ids);
+    ++cells;
+  }
+  out->SetLines(lines);
+  vtkCellData* fromCells = full->GetCellData();
+  vtkCellData* cd = out->GetCellData();
+  for (int i = 0; i < fromCells->GetNumberOfArrays(); ++i)
+  {
+    cd->AddArray(prefixOf(fromCells->GetAbstractArray(i), cells));
+  }
+  cd->SetActiveScalars(geolattice::arrays::MoveKind);
+  out->GetFieldData()->ShallowCopy(full->GetFieldData());
+}
+} // namespace
+
+vtkGLToolpathPlanner::vtkGLToolpathPlanner()
+{
+  this->SetNumberOfInputPorts(2);
+}
+
+vtkGLToolpathPlanner::~vtkGLToolpathPlanner() = default;
+
+int vtkGLToolpathPlanner::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+std::array<double, 12> vtkGLToolpathPlanner::Parameters() const
+{
+  return { this->PathWidth, this->FilamentDiameter, this->FlowCorrection, this->PrintFeedRate, this->AirFeedRate,
+    this->ThicknessCap, this->MaxTurnAngle, this->SafeMargin, this->Lift, this->Retraction,
+    static_cast<double>(this->SupportPerimeter), this->ToothLength };
+}
+
+int vtkGLToolpathPlanner::RequestInformation(
+  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  // The toolpath's time is the print progress p in [0, 1]: the point count is unknown until the
+  // path is planned in RequestData.
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  if (this->NumberOfTimeSteps > 0)
+  {
+    const int n = std::max(this->NumberOfTimeSteps, 2);
+    std::vector<double> steps(static_cast<size_t>(n));
+    for (int k = 0; k < n; ++k)
+    {
+      steps[k] = static_cast<double>(k) / (n - 1);
+    }
+    const double range[2] = { 0.0, 1.0 };
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), n);
+    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
+  }
+  return 1;
+}
+
+int vtkGLToolpathPlanner::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* lattice = vtkPolyData::GetData(inputVector[0], 0);
+  vtkPolyData* skeleton = vtkPolyData::GetData(inputVector[1], 0);
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize();
+  try
+  {
+    const bool cached = this->Planned && lattice && skeleton && lattice->GetMTime() == this->PlannedLatticeTime &&
+      skeleton->GetMTime() == this->PlannedSkeletonTime && this->Parameters() == this->PlannedParameters;
+    if (!cached)
+    {
+      this->Planned = nullptr;
+      if (!(this->FilamentDiameter > 0) || !std::isfinite(this->FilamentDiameter))
+      {
+        throw gl::GeoLatticeError("toolpath: filament diameter must be > 0 (got " +
+          std::to_string(this->FilamentDiameter) + ")");
+      }
+      const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
+      if (graph.edgeKind.size() != graph.edges.size())
+      {
+        throw gl::GeoLatticeError(std::string("the lattice has no ") + gl::arrays::EdgeKind +
+          " cell array (alpha, beta or boundary edge, written by GL Lattice Infill; the trimming needs it)");
+      }
+      const std::vector<int> order = printOrderOf(lattice);
+      gl::SkeletonTree tree = gl::toSkeletonTree(skeleton);
+      gl::matchSkeletonToLattice(tree, graph);
+      this->UpdateProgress(0.1);
+
+      gl::ToolpathOptions options;
+      options.pathWidth = this->PathWidth;
+      options.filamentRadius = 0.5 * this->FilamentDiameter;
+      options.flowCorrection = this->FlowCorrection;
+      options.printFeedRate = this->PrintFeedRate;
+      options.airFeedRate = this->AirFeedRate;
+      options.thicknessCap = this->ThicknessCap;
+      options.maxTurnDeg = this->MaxTurnAngle;
+      options.safeMargin = this->SafeMargin;
+      options.lift = this->Lift;
+      options.retraction = this->Retraction;
+      options.supportPerimeter = this->SupportPerimeter != 0;
+      options.toothLength = this->ToothLength;
+      const gl::Toolpath path = gl::planToolpath(graph, tree, order, options);
+      this->UpdateProgress(0.8);
+
+      auto planned = vtkSmartPointer<vtkPolyData>::New();
+      buildToolpath(path, graph, planned);
+      if (vtkDataArray* edges = lattice->GetFieldData()->GetArray(gl::arrays::SkeletonEdges))
+      {
+        planned->GetFieldData()->AddArray(edges);
+      }
+      this->Planned = planned;
+      this->PlannedLatticeTime = lattice->GetMTime();
+      this->PlannedSkeletonTime = skeleton->GetMTime();
+      this->PlannedParameters = this->Parameters();
+    }
+
+    // The print replay: at time p the points 0 .. round(p (N - 1)).
+    const vtkIdType N = this->Planned->GetNumberOfPoints();
+    vtkIdType last = N - 1;
+    const bool timed =
+      this->NumberOfTimeSteps > 0 && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    const double p = timed ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) : 1.0;
+    if (std::isfinite(p) && p < 1)
+    {
+      last = static_cast<vtkIdType>(std::llround(std::max(p, 0.0) * static_cast<double>(N - 1)));
+    }
+    if (last >= N - 1)
+    {
+      output->ShallowCopy(this->Planned);
+    }
+    else
+    {
+      cutToolpath(this->Planned, last, output);
+    }
+    if (timed)
+    {
+      output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), p);
+    }
+    this->UpdateProgress(1.0);
+  }
+  catch (const std::exception& e)
+  {
+    this->Planned = nullptr;
+    output->Initialize();
+    vtkErrorMacro(<< e.what());
+  }
+  return 1;
+}
+
+void vtkGLToolpathPlanner::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "PathWidth: " << this->PathWidth << " mm\n";
+  os << indent << "FilamentDiameter: " << this->FilamentDiameter << " mm\n";
+  os << indent << "FlowCorrection: " << this->FlowCorrection << "\n";
+  os << indent << "PrintFeedRate: " << this->PrintFeedRate << " mm/s\n";
+  os << indent << "AirFeedRate: " << this->AirFeedRate << " mm/s\n";
+  os << indent << "ThicknessCap: " << this->ThicknessCap << "\n";
+  os << indent << "MaxTurnAngle: " << this->MaxTurnAngle << " deg\n";
+  os << indent << "SafeMargin: " << this->SafeMargin << " mm\n";
+  os << indent << "Lift: " << this->Lift << " mm\n";
+  os << indent << "Retraction: " << this->Retraction << " mm\n";
+  os << indent << "SupportPerimeter: " << this->SupportPerimeter << "\n";
+  os << indent << "ToothLength: " << this->ToothLength << " mm\n";
+  os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
+}

@@ -1,0 +1,205 @@
+/**
+ * @class   vtkGLToolpathPlanner
+ * @brief   The printing path of the whole part: the sub-graphs in printing order, each printed
+ *          as closed crossover-free Euler tours, with layer thickness, extrusion, nozzle axes
+ *          and safe air moves between them; a time-dependent output replays the print.
+ *
+ * Paper Section 3.2 (Figs. 14-18, Eqs. 14-15), core/toolpath/ToolpathPlanner.h: zero-length
+ * lattice edges are contracted, each sub-graph is trimmed to an Eulerian graph and printed as
+ * closed tours that turn at every α/β crossing (no crossover); where the trimming deleted
+ * boundary edges a support perimeter (offset PathWidth inside the boundary loop, jagged with
+ * teeth of ToothLength along the trimmed edges, Fig. 14d) is spliced into the tour (out along a
+ * connector, around, back without extrusion); the layer thickness h of a vertex is its distance
+ * to the lattice of its lower skeleton node(s), capped at ThicknessCap × φ_i (Eq. 15; the height
+ * above the platform on the first layer); the extrusion follows the mass conservation
+ * π r_m² ΔE = μ w h̄ L (Eq. 14, r_m = FilamentDiameter / 2, μ = FlowCorrection, w = PathWidth,
+ * h̄ the mean thickness of the segment's ends); the nozzle axis is the layer normal (∇γ), with
+ * rotation steps inserted where it would turn by more than MaxTurnAngle between points; between
+ * sub-graphs the nozzle retracts by Retraction mm of filament, moves by air (a hop of Lift mm
+ * onto an upper node of the current sub-graph, else over the safe box around everything printed
+ * so far grown by SafeMargin, Fig. 18) and primes again.
+ *
+ * Input port 0: vtkPolyData, the Sequenced Lattice output of vtkGLPrintSequencer: the lattice
+ *         (line cells with cell arrays `SubgraphId`, `LayerId`, `EdgeKind` (the trimming keeps
+ *         or drops boundary edges), point arrays `Normals`, `Gamma`) with field data
+ *         `SequenceOrder` (sub-graph id per position), which is the printing order used. Its
+ *         field data `SkeletonEdges` is passed to the output.
+ * Input port 1: vtkPolyData, the skeleton of the same lattice: the output of vtkGLSkeletonTree or
+ *         the Sequenced Skeleton output of vtkGLPrintSequencer (point data `LayerId`, `NodeId`).
+ * Output: vtkPolyData with one point per toolpath point in printing order and one polyline cell
+ *   per continuous run of moves of the same kind on the same path and sub-graph (a piece of a
+ *   tour, a support perimeter, an air move), consecutive cells sharing their end point: renders
+ *   with few cells and can be tubed, thresholded and coloured by cell MoveKind without
+ *   interpolation across kinds.
+ *   - point data (the move that ends at the point; the first point is the start, MoveKind Air):
+ *     `Normals` (3 components: unit nozzle axis; the active normals), `Thickness` (h, mm, 0 on air
+ *     moves), `Width` (w, mm, 0 on air moves and on the way back from a perimeter, which does
+ *     not extrude), `Extrusion` (cumulative filament E, mm, after the retractions and primes),
+ *     `FeedRate` (mm/s), `MoveKind` (int: 0 print, 1 perimeter, 2 air; geolattice::movekind),
+ *     `LayerId` (the lattice's LayerId, -1 on air moves), `SubgraphId` (-1 on air moves),
+ *     `PathIndex` (int: the tour; air moves carry the next one), `PointIndex` (int: 0..N-1, the
+ *     print time for vtkGLCollisionVerifier with TimeArrayName PointIndex);
+ *   - cell data of each run: `MoveKind`, `PathIndex`, `LayerId`, `SubgraphId`;
+ *   - field data: `ToolpathPrintLength` (lattice), `ToolpathPerimeterLength`, `ToolpathAirLength`
+ *     (mm), `ToolpathPerimeterLoops`, `ToolpathPerimeterTeeth`, `ToolpathRetractions`,
+ *     `ToolpathTours`, `ToolpathCrossings` (self-crossings of the tours, 0 expected),
+ *     `ToolpathSplitSubgraphs` (sub-graphs printed as more than one tour),
+ *     `ToolpathContractedEdges`, `ToolpathTrimmedEdges`, `ToolpathTrimmedLength` (mm),
+ *     `ToolpathFilament` (mm), `ToolpathVolume` (mm³), `ToolpathThicknessDeviation` (2 values:
+ *     min and max of e = (h - φ)/φ), `ToolpathThicknessDeviationPerLayer` (3 components min,
+ *     mean, max per lattice layer 0..L-1), `ToolpathCappedVertices`,
+ *     `ToolpathUnsupportedVertices`, `ToolpathRotationSteps`, `ToolpathSeconds` (planning wall
+ *     time) and `SkeletonEdges` from input 0; always of the whole toolpath.
+ * Time (print replay): unless NumberOfTimeSteps is 0 the output advertises NumberOfTimeSteps
+ *   time steps p = k / (NumberOfTimeSteps - 1) in [0, 1] (TIME_STEPS, TIME_RANGE): the print
+ *   progress by point count. (The point count is only known after planning, so the steps cannot
+ *   be point indices.) When a time p is requested (UPDATE_TIME_STEP) the output holds the points
+ *   0 .. round(p (N - 1)) and the cells printed up to there (the last one cut), with
+ *   DATA_TIME_STEP = p; with no time requested, or p >= 1, the whole toolpath. The planned path
+ *   is cached: a new time only re-cuts it; the planner runs again when an input or a parameter
+ *   changes.
+ * Parameters: PathWidth (w, mm, default 0.6, > 0), FilamentDiameter (mm, default 1.75, > 0; the
+ *   core takes the radius r_m = diameter / 2), FlowCorrection (μ, default 0.95, in (0, 1]),
+ *   PrintFeedRate (f_p, mm/s, default 10, > 0), AirFeedRate (mm/s, default 50, > 0),
+ *   ThicknessCap (λ of Eq. 15, default 1.5, > 0), MaxTurnAngle (degrees, default 5, > 0),
+ *   SafeMargin (mm, default 5, >= 0), Lift (mm, default 2, > 0), Retraction (mm of filament,
+ *   default 1, >= 0), SupportPerimeter (default on), ToothLength (l, mm, default 0 = 2 PathWidth,
+ *   >= 0), NumberOfTimeSteps (default 200; 0 = no time steps, always the whole path).
+ * Errors (an empty lattice or skeleton, missing arrays (EdgeKind included), no SequenceOrder
+ * ("run GL Print Sequencer first"), an order that is not a permutation of the sub-graphs, a
+ * skeleton that does not match the lattice, a bad parameter, or what the core rejects, e.g. odd
+ * vertices left after trimming) are reported with vtkErrorMacro and give an empty output.
+ */
+#ifndef vtkGLToolpathPlanner_h
+#define vtkGLToolpathPlanner_h
+
+#include "GeoLatticeFiltersModule.h"
+#include "vtkPolyDataAlgorithm.h"
+#include "vtkSmartPointer.h" // for the cached toolpath
+
+#include <array> // for the cached parameters
+
+class GEOLATTICEFILTERS_EXPORT vtkGLToolpathPlanner : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkGLToolpathPlanner* New();
+  vtkTypeMacro(vtkGLToolpathPlanner, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Path width w (mm, default 0.6, > 0).
+  vtkSetMacro(PathWidth, double);
+  vtkGetMacro(PathWidth, double);
+  ///@}
+
+  ///@{
+  /// Filament diameter (mm, default 1.75, > 0); Eq. 14 uses the radius r_m = diameter / 2.
+  vtkSetMacro(FilamentDiameter, double);
+  vtkGetMacro(FilamentDiameter, double);
+  ///@}
+
+  ///@{
+  /// Flow correction μ of Eq. 14 (default 0.95, in (0, 1]).
+  vtkSetMacro(FlowCorrection, double);
+  vtkGetMacro(FlowCorrection, double);
+  ///@}
+
+  ///@{
+  /// Nozzle feed rate f_p of print moves (mm/s, default 10, > 0).
+  vtkSetMacro(PrintFeedRate, double);
+  vtkGetMacro(PrintFeedRate, double);
+  ///@}
+
+  ///@{
+  /// Nozzle feed rate of air moves (mm/s, default 50, > 0).
+  vtkSetMacro(AirFeedRate, double);
+  vtkGetMacro(AirFeedRate, double);
+  ///@}
+
+  ///@{
+  /// λ of Eq. 15: the layer thickness is capped at λ φ_i (default 1.5, > 0).
+  vtkSetMacro(ThicknessCap, double);
+  vtkGetMacro(ThicknessCap, double);
+  ///@}
+
+  ///@{
+  /// Largest change of the nozzle axis between consecutive points (degrees, default 5, > 0).
+  vtkSetMacro(MaxTurnAngle, double);
+  vtkGetMacro(MaxTurnAngle, double);
+  ///@}
+
+  ///@{
+  /// Margin of the safe box around the in-process part for air moves (mm, default 5, >= 0).
+  vtkSetMacro(SafeMargin, double);
+  vtkGetMacro(SafeMargin, double);
+  ///@}
+
+  ///@{
+  /// Lift along the axis for a hop onto an upper node of the current sub-graph (mm, default 2, > 0).
+  vtkSetMacro(Lift, double);
+  vtkGetMacro(Lift, double);
+  ///@}
+
+  ///@{
+  /// Filament retracted before each air move and primed after it (mm, default 1, >= 0).
+  vtkSetMacro(Retraction, double);
+  vtkGetMacro(Retraction, double);
+  ///@}
+
+  ///@{
+  /// Add the jagged support perimeter where boundary edges were trimmed (default on).
+  vtkSetMacro(SupportPerimeter, vtkTypeBool);
+  vtkGetMacro(SupportPerimeter, vtkTypeBool);
+  vtkBooleanMacro(SupportPerimeter, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// Tooth length l of the support perimeter along trimmed edges (mm, default 0 = 2 PathWidth, >= 0).
+  vtkSetMacro(ToothLength, double);
+  vtkGetMacro(ToothLength, double);
+  ///@}
+
+  ///@{
+  /// Time steps advertised for the print replay (default 200; 0 = none, always the whole path;
+  /// 1 is taken as 2).
+  vtkSetClampMacro(NumberOfTimeSteps, int, 0, 100000);
+  vtkGetMacro(NumberOfTimeSteps, int);
+  ///@}
+
+protected:
+  vtkGLToolpathPlanner();
+  ~vtkGLToolpathPlanner() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  double PathWidth = 0.6;
+  double FilamentDiameter = 1.75;
+  double FlowCorrection = 0.95;
+  double PrintFeedRate = 10.0;
+  double AirFeedRate = 50.0;
+  double ThicknessCap = 1.5;
+  double MaxTurnAngle = 5.0;
+  double SafeMargin = 5.0;
+  double Lift = 2.0;
+  double Retraction = 1.0;
+  vtkTypeBool SupportPerimeter = 1;
+  double ToothLength = 0.0;
+  int NumberOfTimeSteps = 200;
+
+private:
+  vtkGLToolpathPlanner(const vtkGLToolpathPlanner&) = delete;
+  void operator=(const vtkGLToolpathPlanner&) = delete;
+
+  /// The parameters as the cache compares them.
+  std::array<double, 12> Parameters() const;
+
+  // Cache of the last successful planning: a new requested time only re-cuts it.
+  vtkSmartPointer<vtkPolyData> Planned;   ///< the whole toolpath
+  vtkMTimeType PlannedLatticeTime = 0;    ///< MTime of input 0 it was planned from
+  vtkMTimeType PlannedSkeletonTime = 0;   ///< MTime of input 1
+  std::array<double, 12> PlannedParameters{};
+};
+
+#endif

@@ -1,0 +1,684 @@
+// vtkGLToolpathPlanner: the documented arrays and field data on hand-built towers of unit squares
+// (exact lengths) and on the branching Y (reader -> ... -> sequencer -> planner -> verifier),
+// the print replay over time (a prefix per requested time, planned once), and bad input.
+#include "GLTestErrorObserver.h"
+
+#include "vtkGLArrayNames.h"
+#include "vtkGLCollisionVerifier.h"
+#include "vtkGLCurvedLayerSlicer.h"
+#include "vtkGLGeodesicDistanceFields.h"
+#include "vtkGLLatticeInfill.h"
+#include "vtkGLMeshReader.h"
+#include "vtkGLPlaceOnPlatform.h"
+#include "vtkGLPrintSequencer.h"
+#include "vtkGLSkeletonTree.h"
+#include "vtkGLTetrahedralizeSurface.h"
+#include "vtkGLToolpathPlanner.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkExecutive.h>
+#include <vtkFieldData.h>
+#include <vtkIdList.h>
+#include <vtkInformation.h>
+#include <vtkIntArray.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace arrays = geolattice::arrays;
+namespace movekind = geolattice::movekind;
+
+namespace {
+
+double field(vtkDataObject* d, const char* name, int i = 0) {
+  vtkDataArray* a = d->GetFieldData()->GetArray(name);
+  EXPECT_NE(a, nullptr) << name;
+  return a ? a->GetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents()) : std::nan("");
+}
+
+vtkSmartPointer<vtkIntArray> intArray(const char* name) {
+  auto a = vtkSmartPointer<vtkIntArray>::New();
+  a->SetName(name);
+  return a;
+}
+
+/// Two towers of unit squares (one closed loop of 4 line cells = one sub-graph per tower and
+/// layer), 2 mm apart, layers at z = 1, 2, .., Normals +z, Gamma = z, LayerId = 10 + layer (not
+/// 0-based, to see the lattice's LayerId pass through). Sub-graph id = layer * 2 + tower. No
+/// isoline ends on the squares: nothing is trimmed and there is no support perimeter.
+vtkSmartPointer<vtkPolyData> towerLattice(int layers) {
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkDoubleArray> normals, gamma;
+  normals->SetName(arrays::Normals);
+  normals->SetNumberOfComponents(3);
+  gamma->SetName(arrays::Gamma);
+  auto pointSubgraph = intArray(arrays::SubgraphId);
+  auto cellSubgraph = intArray(arrays::SubgraphId);
+  auto layerId = intArray(arrays::LayerId);
+  auto edgeKind = intArray(arrays::EdgeKind);
+  vtkNew<vtkCellArray> lines;
+  for (int l = 0; l < layers; ++l) {
+    for (int t = 0; t < 2; ++t) {
+      const int s = l * 2 + t;
+      const vtkIdType first = points->GetNumberOfPoints();
+      for (const auto& [dx, dy] : {std::pair<double, double>{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
+        points->InsertNextPoint(3.0 * t + dx, dy, 1.0 + l);
+        normals->InsertNextTuple3(0, 0, 1);
+        gamma->InsertNextValue(1.0 + l);
+        pointSubgraph->InsertNextValue(s);
+      }
+      for (int k = 0; k < 4; ++k) {
+        const vtkIdType ids[2] = {first + k, first + (k + 1) % 4};
+        lines->InsertNextCell(2, ids);
+        cellSubgraph->InsertNextValue(s);
+        layerId->InsertNextValue(10 + l);
+        edgeKind->InsertNextValue(geolattice::latticekind::EdgeBoundary);
+      }
+    }
+  }
+  pd->SetPoints(points);
+  pd->SetLines(lines);
+  pd->GetPointData()->SetNormals(normals);
+  pd->GetPointData()->AddArray(gamma);
+  pd->GetPointData()->AddArray(pointSubgraph);
+  pd->GetCellData()->AddArray(layerId);
+  pd->GetCellData()->AddArray(cellSubgraph);
+  pd->GetCellData()->AddArray(edgeKind);
+  return pd;
+}
+
+/// The skeleton of towerLattice: one chain per tower.
+vtkSmartPointer<vtkPolyData> towerSkeleton(int layers) {
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  auto nodeId = intArray(arrays::NodeId);
+  auto layerId = intArray(arrays::LayerId);
+  vtkNew<vtkCellArray> lines;
+  for (int l = 0; l < layers; ++l) {
+    for (int t = 0; t < 2; ++t) {
+      const int s = l * 2 + t;
+      points->InsertNextPoint(3.0 * t + 0.5, 0.5, 1.0 + l);
+      nodeId->InsertNextValue(s);
+      layerId->InsertNextValue(l);
+      if (l > 0) {
+        const vtkIdType ids[2] = {s - 2, s};
+        lines->InsertNextCell(2, ids);
+      }
+    }
+  }
+  pd->SetPoints(points);
+  pd->SetLines(lines);
+  pd->GetPointData()->AddArray(nodeId);
+  pd->GetPointData()->AddArray(layerId);
+  return pd;
+}
+
+/// Sequencer (A4) + planner on given inputs; the planner reads the sequencer's outputs 0 and 1.
+struct PlannerRun {
+  vtkNew<vtkGLPrintSequencer> sequencer;
+  vtkNew<vtkGLToolpathPlanner> planner;
+  vtkNew<GLTestErrorObserver> errors;
+  PlannerRun(vtkPolyData* lattice, vtkPolyData* skeleton) {
+    sequencer->SetInputData(0, lattice);
+    sequencer->SetInputData(1, skeleton);
+    sequencer->SetNozzleAngle(60.0);
+    planner->SetInputConnection(0, sequencer->GetOutputPort(0));
+    planner->SetInputConnection(1, sequencer->GetOutputPort(1));
+    errors->Observe(sequencer);
+    errors->Observe(planner);
+  }
+  vtkPolyData* output() {
+    planner->Update();
+    return planner->GetOutput();
+  }
+};
+
+/// Every documented array and the consistency between the points, the cells and the field data.
+void expectConsistentToolpath(vtkPolyData* path, vtkGLToolpathPlanner* planner) {
+  const vtkIdType N = path->GetNumberOfPoints();
+  ASSERT_GT(N, 2);
+  vtkPointData* pd = path->GetPointData();
+  for (const char* name : {arrays::Normals, arrays::Thickness, arrays::Width, arrays::Extrusion, arrays::FeedRate,
+                           arrays::MoveKind, arrays::LayerId, arrays::SubgraphId, arrays::PathIndex,
+                           arrays::PointIndex}) {
+    ASSERT_NE(pd->GetArray(name), nullptr) << name;
+    EXPECT_EQ(pd->GetArray(name)->GetNumberOfTuples(), N) << name;
+  }
+  EXPECT_EQ(pd->GetNormals(), pd->GetArray(arrays::Normals));
+  for (const char* name : {arrays::MoveKind, arrays::PathIndex, arrays::LayerId, arrays::SubgraphId}) {
+    ASSERT_NE(path->GetCellData()->GetArray(name), nullptr) << name;
+  }
+  for (const char* name :
+       {arrays::ToolpathPrintLength, arrays::ToolpathPerimeterLength, arrays::ToolpathPerimeterLoops,
+        arrays::ToolpathPerimeterTeeth, arrays::ToolpathAirLength, arrays::ToolpathRetractions, arrays::ToolpathTours,
+        arrays::ToolpathCrossings, arrays::ToolpathSplitSubgraphs, arrays::ToolpathContractedEdges,
+        arrays::ToolpathTrimmedEdges, arrays::ToolpathTrimmedLength, arrays::ToolpathFilament, arrays::ToolpathVolume,
+        arrays::ToolpathThicknessDeviation, arrays::ToolpathThicknessDeviationPerLayer,
+        arrays::ToolpathCappedVertices, arrays::ToolpathUnsupportedVertices, arrays::ToolpathRotationSteps,
+        arrays::ToolpathSeconds, arrays::SkeletonEdges}) {
+    ASSERT_NE(path->GetFieldData()->GetArray(name), nullptr) << name;
+  }
+  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathThicknessDeviation)->GetNumberOfTuples(), 2);
+  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathThicknessDeviationPerLayer)->GetNumberOfComponents(), 3);
+
+  vtkDataArray* kind = pd->GetArray(arrays::MoveKind);
+  vtkDataArray* extrusion = pd->GetArray(arrays::Extrusion);
+  vtkDataArray* thickness = pd->GetArray(arrays::Thickness);
+  vtkDataArray* width = pd->GetArray(arrays::Width);
+  vtkDataArray* feed = pd->GetArray(arrays::FeedRate);
+  vtkDataArray* layer = pd->GetArray(arrays::LayerId);
+  vtkDataArray* subgraph = pd->GetArray(arrays::SubgraphId);
+  vtkDataArray* tour = pd->GetArray(arrays::PathIndex);
+  EXPECT_EQ(kind->GetTuple1(0), movekind::Air); // the start
+  double print = 0, perimeter = 0, air = 0, filament = 0;
+  std::set<int> tours;
+  for (vtkIdType i = 0; i < N; ++i) {
+    EXPECT_EQ(pd->GetArray(arrays::PointIndex)->GetTuple1(i), i);
+    double n[3];
+    pd->GetNormals()->GetTuple(i, n);
+    EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-9) << i;
+    const int k = static_cast<int>(kind->GetTuple1(i));
+    ASSERT_TRUE(k == movekind::Print || k == movekind::Perimeter || k == movekind::Air) << k;
+    if (k == movekind::Air) {
+      EXPECT_EQ(thickness->GetTuple1(i), 0.0);
+      EXPECT_EQ(width->GetTuple1(i), 0.0);
+      EXPECT_EQ(feed->GetTuple1(i), planner->GetAirFeedRate());
+      EXPECT_EQ(layer->GetTuple1(i), -1.0);
+      EXPECT_EQ(subgraph->GetTuple1(i), -1.0);
+    } else {
+      EXPECT_GT(thickness->GetTuple1(i), 0.0);
+      if (k == movekind::Print || width->GetTuple1(i) != 0) { // a perimeter's way back does not extrude
+        EXPECT_EQ(width->GetTuple1(i), planner->GetPathWidth());
+      }
+      EXPECT_EQ(feed->GetTuple1(i), planner->GetPrintFeedRate());
+      EXPECT_GE(subgraph->GetTuple1(i), 0.0);
+      tours.insert(static_cast<int>(tour->GetTuple1(i)));
+    }
+    if (i > 0) {
+      double a[3], b[3];
+      path->GetPoint(i - 1, a);
+      path->GetPoint(i, b);
+      const double len = std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+      const double dE = extrusion->GetTuple1(i) - extrusion->GetTuple1(i - 1);
+      if (k == movekind::Air) {
+        air += len;
+      } else {
+        (k == movekind::Print ? print : perimeter) += len;
+        filament += dE;
+        EXPECT_GE(dE, 0.0) << i;
+      }
+      EXPECT_GE(tour->GetTuple1(i), tour->GetTuple1(i - 1)) << i;
+    }
+  }
+  EXPECT_NEAR(print, field(path, arrays::ToolpathPrintLength), 1e-6 * (1 + print));
+  EXPECT_NEAR(perimeter, field(path, arrays::ToolpathPerimeterLength), 1e-6 * (1 + perimeter));
+  EXPECT_NEAR(air, field(path, arrays::ToolpathAirLength), 1e-6 * (1 + air));
+  EXPECT_NEAR(filament, field(path, arrays::ToolpathFilament), 1e-6 * (1 + filament));
+  const double r = 0.5 * planner->GetFilamentDiameter();
+  EXPECT_NEAR(field(path, arrays::ToolpathVolume), filament * M_PI * r * r, 1e-6 * (1 + filament));
+  EXPECT_EQ(static_cast<double>(tours.size()), field(path, arrays::ToolpathTours));
+  EXPECT_EQ(field(path, arrays::ToolpathCrossings), 0.0);
+
+  // Cells: runs in printing order that share their end points and cover every move once; the cell
+  // arrays are those of their moves; one air run per retraction.
+  vtkNew<vtkIdList> ids;
+  vtkIdType next = 0, airRuns = 0;
+  for (vtkIdType c = 0; c < path->GetNumberOfCells(); ++c) {
+    path->GetCellPoints(c, ids);
+    ASSERT_GE(ids->GetNumberOfIds(), 2);
+    EXPECT_EQ(ids->GetId(0), next) << "cell " << c;
+    for (vtkIdType j = 1; j < ids->GetNumberOfIds(); ++j) {
+      ASSERT_EQ(ids->GetId(j), ids->GetId(0) + j);
+      for (const char* name : {arrays::MoveKind, arrays::PathIndex, arrays::LayerId, arrays::SubgraphId}) {
+        EXPECT_EQ(path->GetCellData()->GetArray(name)->GetTuple1(c), pd->GetArray(name)->GetTuple1(ids->GetId(j)))
+            << name << " cell " << c;
+      }
+    }
+    next = ids->GetId(ids->GetNumberOfIds() - 1);
+    airRuns += path->GetCellData()->GetArray(arrays::MoveKind)->GetTuple1(c) == movekind::Air;
+  }
+  EXPECT_EQ(next, N - 1);
+  EXPECT_EQ(static_cast<double>(airRuns), field(path, arrays::ToolpathRetractions));
+}
+
+} // namespace
+
+TEST(vtkGLToolpathPlanner, TowersGiveTheDocumentedOutputs) {
+  const int layers = 6;
+  PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+  vtkPolyData* path = run.output();
+  ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
+  expectConsistentToolpath(path, run.planner);
+
+  // Every square is an Eulerian loop: printed whole as one tour, 4 mm each.
+  EXPECT_NEAR(field(path, arrays::ToolpathPrintLength), 4.0 * 2 * layers, 1e-9);
+  EXPECT_EQ(field(path, arrays::ToolpathPerimeterLength), 0.0);
+  EXPECT_EQ(field(path, arrays::ToolpathPerimeterLoops), 0.0);
+  EXPECT_EQ(field(path, arrays::ToolpathTours), 2.0 * layers);
+  EXPECT_EQ(field(path, arrays::ToolpathTrimmedEdges), 0.0);
+  EXPECT_EQ(field(path, arrays::ToolpathSplitSubgraphs), 0.0);
+  EXPECT_EQ(field(path, arrays::ToolpathRetractions), 2.0 * layers - 1);
+  EXPECT_GT(field(path, arrays::ToolpathAirLength), 0.0);
+  EXPECT_EQ(field(path, arrays::ToolpathRotationSteps), 0.0); // the axis is +z everywhere
+  // Layers 1 mm apart at z = 1, 2, ..: h = 1 everywhere, no deviation.
+  EXPECT_NEAR(field(path, arrays::ToolpathThicknessDeviation, 0), 0.0, 1e-9);
+  EXPECT_NEAR(field(path, arrays::ToolpathThicknessDeviation, 1), 0.0, 1e-9);
+  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathThicknessDeviationPerLayer)->GetNumberOfTuples(), layers);
+  // Eq. 14: E = μ w h L / (π r²) with h = 1.
+  const double r = 0.875;
+  EXPECT_NEAR(field(path, arrays::ToolpathFilament), 0.95 * 0.6 * 1.0 * 8.0 * layers / (M_PI * r * r), 1e-9);
+  // LayerId is the lattice's (10 + layer); the sub-graphs are printed in the sequencer's order.
+  vtkPointData* pd = path->GetPointData();
+  std::vector<int> firstSeen;
+  for (vtkIdType i = 0; i < path->GetNumberOfPoints(); ++i) {
+    const int s = static_cast<int>(pd->GetArray(arrays::SubgraphId)->GetTuple1(i));
+    if (s >= 0) {
+      EXPECT_EQ(pd->GetArray(arrays::LayerId)->GetTuple1(i), 10 + s / 2);
+      double x[3];
+      path->GetPoint(i, x);
+      EXPECT_EQ(x[2], 1.0 + s / 2);
+      if (firstSeen.empty() || firstSeen.back() != s) {
+        firstSeen.push_back(s);
+      }
+    }
+  }
+  ASSERT_EQ(firstSeen.size(), 2u * layers);
+  for (size_t k = 0; k < firstSeen.size(); ++k) {
+    EXPECT_EQ(firstSeen[k], field(run.sequencer->GetOutput(0), arrays::SequenceOrder, static_cast<int>(k)));
+  }
+  // Cells: a print run per tour and an air run per retraction.
+  EXPECT_EQ(path->GetNumberOfCells(), 2 * (2 * layers) - 1);
+
+  // The filament diameter enters as the radius d / 2.
+  run.planner->SetFilamentDiameter(3.5);
+  path = run.output();
+  ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
+  EXPECT_NEAR(field(path, arrays::ToolpathFilament), 0.95 * 0.6 * 8.0 * layers / (M_PI * 1.75 * 1.75), 1e-9);
+}
+
+TEST(vtkGLToolpathPlanner, DefaultsAndPrintSelf) {
+  vtkNew<vtkGLToolpathPlanner> f;
+  EXPECT_EQ(f->GetPathWidth(), 0.6);
+  EXPECT_EQ(f->GetFilamentDiameter(), 1.75);
+  EXPECT_EQ(f->GetFlowCorrection(), 0.95);
+  EXPECT_EQ(f->GetPrintFeedRate(), 10.0);
+  EXPECT_EQ(f->GetAirFeedRate(), 50.0);
+  EXPECT_EQ(f->GetThicknessCap(), 1.5);
+  EXPECT_EQ(f->GetMaxTurnAngle(), 5.0);
+  EXPECT_EQ(f->GetSafeMargin(), 5.0);
+  EXPECT_EQ(f->GetLift(), 2.0);
+  EXPECT_EQ(f->GetRetraction(), 1.0);
+  EXPECT_EQ(f->GetSupportPerimeter(), 1);
+  EXPECT_EQ(f->GetToothLength(), 0.0);
+  EXPECT_EQ(f->GetNumberOfTimeSteps(), 200);
+  std::ostringstream os;
+  f->Print(os);
+  for (const char* text :
+       {"PathWidth: 0.6", "FilamentDiameter: 1.75", "SupportPerimeter: 1", "NumberOfTimeSteps: 200"}) {
+    EXPECT_NE(os.str().find(text), std::string::npos) << text;
+  }
+}
+
+TEST(vtkGLToolpathPlanner, TimeStepsReplayThePrint) {
+  const int layers = 5;
+  PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+  run.planner->UpdateInformation();
+  vtkInformation* info = run.planner->GetOutputInformation(0);
+  ASSERT_TRUE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  ASSERT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 200);
+  const double* steps = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+  EXPECT_EQ(steps[0], 0.0);
+  EXPECT_EQ(steps[199], 1.0);
+  const double* range = info->Get(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
+  EXPECT_EQ(range[0], 0.0);
+  EXPECT_EQ(range[1], 1.0);
+
+  // Without a requested time: everything. Keep a copy to compare the prefixes with.
+  vtkNew<vtkPolyData> full;
+  full->DeepCopy(run.output());
+  ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
+  const vtkIdType N = full->GetNumberOfPoints();
+  ASSERT_GT(N, 10);
+  vtkDataArray* seconds = run.planner->GetOutput()->GetFieldData()->GetArray(arrays::ToolpathSeconds);
+
+  vtkIdType previousPoints = 0, previousCells = 0;
+  for (double p : {0.0, 0.25, 0.5, 0.999, 1.0}) {
+    run.planner->UpdateTimeStep(p);
+    vtkPolyData* part = run.planner->GetOutput();
+    ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
+    const vtkIdType n = std::llround(p * (N - 1)) + 1;
+    ASSERT_EQ(part->GetNumberOfPoints(), n) << p;
+    EXPECT_EQ(part->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), p);
+    EXPECT_GE(part->GetNumberOfPoints(), previousPoints);
+    EXPECT_GE(part->GetNumberOfCells(), previousCells);
+    previousPoints = part->GetNumberOfPoints();
+    previousCells = part->GetNumberOfCells();
+    // The same points and point data as the whole path, cells cut at the last point.
+    for (vtkIdType i = 0; i < n; ++i) {
+      double a[3], b[3];
+      part->GetPoint(i, a);
+      full->GetPoint(i, b);
+      ASSERT_EQ(a[0], b[0]);
+      ASSERT_EQ(a[2], b[2]);
+      for (const char* name : {arrays::Extrusion, arrays::MoveKind, arrays::PointIndex}) {
+        ASSERT_EQ(part->GetPointData()->GetArray(name)->GetTuple1(i),
+                  full->GetPointData()->GetArray(name)->GetTuple1(i));
+      }
+    }
+    EXPECT_EQ(part->GetPointData()->GetNormals(), part->GetPointData()->GetArray(arrays::Normals));
+    vtkNew<vtkIdList> ids, fullIds;
+    for (vtkIdType c = 0; c < part->GetNumberOfCells(); ++c) {
+      part->GetCellPoints(c, ids);
+      full->GetCellPoints(c, fullIds);
+      EXPECT_EQ(ids->GetId(0), fullIds->GetId(0));
+      EXPECT_LE(ids->GetId(ids->GetNumberOfIds() - 1), n - 1);
+      EXPECT_EQ(part->GetCellData()->GetArray(arrays::MoveKind)->GetTuple1(c),
+                full->GetCellData()->GetArray(arrays::MoveKind)->GetTuple1(c));
+    }
+    if (part->GetNumberOfCells() > 0) {
+      part->GetCellPoints(part->GetNumberOfCells() - 1, ids);
+      EXPECT_EQ(ids->GetId(ids->GetNumberOfIds() - 1), n - 1) << "the last cell ends at the last point";
+    }
+    // The field data describe the whole path, from the same (cached) planning.
+    EXPECT_EQ(part->GetFieldData()->GetArray(arrays::ToolpathSeconds), seconds) << "planned again at " << p;
+    EXPECT_EQ(field(part, arrays::ToolpathTours), field(full, arrays::ToolpathTours));
+  }
+  EXPECT_EQ(previousPoints, N);
+  EXPECT_EQ(previousCells, full->GetNumberOfCells());
+
+  // A parameter change plans again; NumberOfTimeSteps 0: no time steps, always the whole path.
+  run.planner->SetNumberOfTimeSteps(0);
+  run.planner->UpdateInformation();
+  EXPECT_FALSE(run.planner->GetOutputInformation(0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  run.planner->SetPathWidth(0.5);
+  run.planner->UpdateTimeStep(0.3);
+  ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
+  EXPECT_EQ(run.planner->GetOutput()->GetNumberOfPoints(), N);
+  EXPECT_NE(run.planner->GetOutput()->GetFieldData()->GetArray(arrays::ToolpathSeconds), seconds);
+}
+
+TEST(vtkGLToolpathPlanner, BadInputIsReported) {
+  const int layers = 3;
+  auto expectError = [](PlannerRun& run, const std::string& text) {
+    vtkPolyData* out = run.output();
+    EXPECT_EQ(out->GetNumberOfPoints(), 0) << text;
+    EXPECT_EQ(out->GetNumberOfCells(), 0) << text;
+    EXPECT_EQ(out->GetFieldData()->GetArray(arrays::ToolpathTours), nullptr) << text;
+    EXPECT_TRUE(run.errors->HasError()) << text;
+    EXPECT_NE(run.errors->Errors().find(text), std::string::npos) << run.errors->Errors();
+  };
+  {
+    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    run.planner->SetPathWidth(0);
+    expectError(run, "path width must be > 0");
+  }
+  {
+    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    run.planner->SetFlowCorrection(1.5);
+    expectError(run, "flow correction mu must be in (0, 1]");
+  }
+  {
+    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    run.planner->SetFilamentDiameter(0);
+    expectError(run, "filament diameter must be > 0");
+  }
+  {
+    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    run.planner->SetMaxTurnAngle(-1);
+    expectError(run, "maximum turn angle must be > 0");
+  }
+  {
+    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    run.planner->SetRetraction(-1);
+    expectError(run, "retraction must be >= 0");
+  }
+  {
+    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    run.planner->SetToothLength(-1);
+    expectError(run, "tooth length must be >= 0");
+  }
+  {
+    auto lattice = towerLattice(layers);
+    lattice->GetCellData()->RemoveArray(arrays::EdgeKind);
+    PlannerRun run(lattice, towerSkeleton(layers));
+    expectError(run, "the lattice has no EdgeKind cell array");
+  }
+  {
+    auto lattice = towerLattice(layers);
+    lattice->GetCellData()->GetArray(arrays::EdgeKind)->SetTuple1(5, 7);
+    PlannerRun run(lattice, towerSkeleton(layers));
+    expectError(run, "lattice line cell 5 has EdgeKind 7");
+  }
+  {
+    // The lattice itself instead of the sequencer's output: no SequenceOrder.
+    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    run.planner->SetInputData(0, towerLattice(layers));
+    expectError(run, "no field array SequenceOrder (the printing order): run GL Print Sequencer first");
+  }
+  {
+    // An order that is not a permutation of the sub-graphs.
+    auto lattice = towerLattice(layers);
+    vtkNew<vtkDoubleArray> order;
+    order->SetName(arrays::SequenceOrder);
+    for (int k = 0; k < 2 * layers; ++k) {
+      order->InsertNextValue(0);
+    }
+    lattice->GetFieldData()->AddArray(order);
+    PlannerRun run(lattice, towerSkeleton(layers));
+    run.planner->SetInputData(0, lattice);
+    run.planner->SetInputData(1, towerSkeleton(layers));
+    expectError(run, "the print order must list every sub-graph exactly once");
+  }
+  {
+    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    vtkNew<vtkPolyData> empty;
+    run.planner->SetInputData(1, empty);
+    expectError(run, "empty skeleton");
+  }
+  {
+    // The skeleton of another lattice.
+    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    run.planner->SetInputData(1, towerSkeleton(layers + 1));
+    expectError(run, "the skeleton has 8 nodes but the lattice has 6 sub-graphs");
+  }
+  {
+    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    vtkNew<vtkPolyData> empty;
+    run.planner->SetInputData(0, empty);
+    expectError(run, "empty lattice");
+  }
+  {
+    // No skeleton connected at all: the pipeline refuses to run the filter.
+    vtkNew<vtkGLToolpathPlanner> planner;
+    vtkNew<GLTestErrorObserver> errors;
+    errors->Observe(planner);
+    errors->Observe(planner->GetExecutive());
+    planner->SetInputData(0, towerLattice(layers));
+    planner->Update();
+    EXPECT_EQ(planner->GetOutput()->GetNumberOfPoints(), 0);
+    EXPECT_TRUE(errors->HasError());
+  }
+  {
+    // A recovered error: the next update with good parameters has a toolpath and no new error.
+    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    run.planner->SetPathWidth(0);
+    run.output();
+    EXPECT_TRUE(run.errors->HasError());
+    run.errors->Clear();
+    run.planner->SetPathWidth(0.6);
+    EXPECT_GT(run.output()->GetNumberOfPoints(), 0);
+    EXPECT_FALSE(run.errors->HasError()) << run.errors->Errors();
+  }
+}
+
+// ---------------------------------------------------------------------------------------------
+// End to end on the branching Y: reader -> place -> tets -> GDF -> slicer -> lattice -> skeleton
+// -> sequencer -> toolpath -> verifier. Built once for the suite (coarse, like the sequencer test).
+
+class BranchingYToolpath : public ::testing::Test {
+protected:
+  struct Pipeline {
+    vtkNew<vtkGLMeshReader> reader;
+    vtkNew<vtkGLPlaceOnPlatform> place;
+    vtkNew<vtkGLTetrahedralizeSurface> tets;
+    vtkNew<vtkGLGeodesicDistanceFields> gdf;
+    vtkNew<vtkGLCurvedLayerSlicer> slicer;
+    vtkNew<vtkGLLatticeInfill> lattice;
+    vtkNew<vtkGLSkeletonTree> skeleton;
+    vtkNew<vtkGLPrintSequencer> sequencer;
+    vtkNew<vtkGLToolpathPlanner> planner;
+    vtkNew<GLTestErrorObserver> errors;
+  };
+  static std::unique_ptr<Pipeline> p;
+
+  static void SetUpTestSuite() {
+    p = std::make_unique<Pipeline>();
+    p->reader->SetFileName((std::string(GEOLATTICE_TESTDATA) + "/y_shape.obj").c_str());
+    p->place->SetInputConnection(p->reader->GetOutputPort());
+    p->tets->SetInputConnection(p->place->GetOutputPort());
+    p->tets->SetTargetEdgeLength(2.0); // coarse
+    p->gdf->SetInputConnection(p->tets->GetOutputPort());
+    p->slicer->SetInputConnection(p->gdf->GetOutputPort());
+    p->slicer->SetLayerInterval(1.0);
+    p->slicer->SetFirstLayerOffset(0.5);
+    p->lattice->SetInputConnection(p->slicer->GetOutputPort(0));
+    p->lattice->SetAlphaWidth(4.0);
+    p->lattice->SetBetaWidth(4.0);
+    p->skeleton->SetInputConnection(0, p->lattice->GetOutputPort());
+    p->skeleton->SetInputConnection(1, p->gdf->GetOutputPort());
+    p->sequencer->SetInputConnection(0, p->lattice->GetOutputPort());
+    p->sequencer->SetInputConnection(1, p->skeleton->GetOutputPort());
+    p->sequencer->SetNozzleAngle(45.0);
+    p->planner->SetInputConnection(0, p->sequencer->GetOutputPort(0));
+    p->planner->SetInputConnection(1, p->skeleton->GetOutputPort()); // the skeleton tree itself
+    for (vtkAlgorithm* a : std::initializer_list<vtkAlgorithm*>{p->reader, p->place, p->tets, p->gdf, p->slicer,
+                                                                 p->lattice, p->skeleton, p->sequencer, p->planner}) {
+      p->errors->Observe(a);
+    }
+    p->planner->Update();
+  }
+  static void TearDownTestSuite() { p.reset(); }
+};
+std::unique_ptr<BranchingYToolpath::Pipeline> BranchingYToolpath::p;
+
+TEST_F(BranchingYToolpath, ToolpathIsConsistent) {
+  ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
+  vtkPolyData* path = p->planner->GetOutput();
+  expectConsistentToolpath(path, p->planner);
+  vtkPolyData* lattice = p->lattice->GetOutput();
+  // Every sub-graph printed, on its own layer: the lattice's LayerId of the sub-graph.
+  std::map<int, int> layerOf;
+  std::set<int> layerIds;
+  for (vtkIdType c = 0; c < lattice->GetNumberOfCells(); ++c) {
+    const int layer = static_cast<int>(lattice->GetCellData()->GetArray(arrays::LayerId)->GetTuple1(c));
+    layerOf[static_cast<int>(lattice->GetCellData()->GetArray(arrays::SubgraphId)->GetTuple1(c))] = layer;
+    layerIds.insert(layer);
+  }
+  std::set<int> printed;
+  for (vtkIdType i = 0; i < path->GetNumberOfPoints(); ++i) {
+    const int s = static_cast<int>(path->GetPointData()->GetArray(arrays::SubgraphId)->GetTuple1(i));
+    if (s >= 0) {
+      printed.insert(s);
+      ASSERT_EQ(path->GetPointData()->GetArray(arrays::LayerId)->GetTuple1(i), layerOf.at(s)) << i;
+    }
+  }
+  EXPECT_EQ(static_cast<double>(printed.size()), field(lattice, arrays::LatticeSubgraphs));
+  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathThicknessDeviationPerLayer)->GetNumberOfTuples(),
+            static_cast<vtkIdType>(layerIds.size()));
+  EXPECT_GE(field(path, arrays::ToolpathTours), field(lattice, arrays::LatticeSubgraphs));
+  // The lattice printed is the lattice minus what the trimming left out (contracted edges have
+  // no length).
+  double latticeLength = 0;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < lattice->GetNumberOfCells(); ++c) {
+    lattice->GetCellPoints(c, ids);
+    for (vtkIdType j = 0; j + 1 < ids->GetNumberOfIds(); ++j) {
+      double a[3], b[3];
+      lattice->GetPoint(ids->GetId(j), a);
+      lattice->GetPoint(ids->GetId(j + 1), b);
+      latticeLength += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
+    }
+  }
+  EXPECT_NEAR(field(path, arrays::ToolpathPrintLength) + field(path, arrays::ToolpathTrimmedLength), latticeLength,
+              1e-6 * latticeLength);
+  // Trimmed boundaries get a support perimeter.
+  if (field(path, arrays::ToolpathTrimmedEdges) > 0) {
+    EXPECT_GT(field(path, arrays::ToolpathPerimeterLoops), 0.0);
+    EXPECT_GT(field(path, arrays::ToolpathPerimeterLength), 0.0);
+  }
+  std::printf("[toolpath filter] Y: %lld points, %lld cells, print %.1f mm, perimeter %.1f mm (%g loops), air %.1f mm, "
+              "%g retractions, %g tours, %g split, %g trimmed edges (%.1f mm), %g rotation steps, filament %.1f mm, "
+              "thickness deviation %.3f .. %.3f, %.3f s\n",
+              static_cast<long long>(path->GetNumberOfPoints()), static_cast<long long>(path->GetNumberOfCells()),
+              field(path, arrays::ToolpathPrintLength), field(path, arrays::ToolpathPerimeterLength),
+              field(path, arrays::ToolpathPerimeterLoops), field(path, arrays::ToolpathAirLength),
+              field(path, arrays::ToolpathRetractions), field(path, arrays::ToolpathTours),
+              field(path, arrays::ToolpathSplitSubgraphs), field(path, arrays::ToolpathTrimmedEdges),
+              field(path, arrays::ToolpathTrimmedLength), field(path, arrays::ToolpathRotationSteps),
+              field(path, arrays::ToolpathFilament), field(path, arrays::ToolpathThicknessDeviation, 0),
+              field(path, arrays::ToolpathThicknessDeviation, 1), field(path, arrays::ToolpathSeconds));
+}
+
+TEST_F(BranchingYToolpath, SequencedSkeletonGivesTheSamePath) {
+  ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
+  vtkNew<vtkGLToolpathPlanner> planner;
+  planner->SetInputConnection(0, p->sequencer->GetOutputPort(0));
+  planner->SetInputConnection(1, p->sequencer->GetOutputPort(1));
+  p->errors->Observe(planner);
+  planner->Update();
+  ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
+  EXPECT_EQ(planner->GetOutput()->GetNumberOfPoints(), p->planner->GetOutput()->GetNumberOfPoints());
+  EXPECT_EQ(field(planner->GetOutput(), arrays::ToolpathAirLength),
+            field(p->planner->GetOutput(), arrays::ToolpathAirLength));
+}
+
+TEST_F(BranchingYToolpath, VerifierUsesOnlyPrintedPointsAsMaterial) {
+  ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
+  vtkPolyData* path = p->planner->GetOutput();
+  auto verify = [](vtkPolyData* input) {
+    vtkNew<vtkGLCollisionVerifier> verifier;
+    verifier->SetInputData(input);
+    verifier->SetTimeArrayName(arrays::PointIndex);
+    verifier->SetNozzleAngle(45.0);
+    vtkNew<GLTestErrorObserver> errors;
+    errors->Observe(verifier);
+    verifier->Update();
+    EXPECT_FALSE(errors->HasError()) << errors->Errors();
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->ShallowCopy(verifier->GetOutput());
+    return out;
+  };
+  vtkSmartPointer<vtkPolyData> masked = verify(path);
+  EXPECT_EQ(field(masked, arrays::CollisionStations), static_cast<double>(path->GetNumberOfPoints()));
+  // The same points with every air point as material: at least as many violations.
+  auto copy = vtkSmartPointer<vtkPolyData>::New();
+  copy->ShallowCopy(path);
+  copy->GetPointData()->RemoveArray(arrays::MoveKind);
+  vtkSmartPointer<vtkPolyData> unmasked = verify(copy);
+  EXPECT_GE(field(unmasked, arrays::CollisionViolatingStations), field(masked, arrays::CollisionViolatingStations));
+  std::printf("[toolpath filter] Y, NA 45, verifier on the toolpath: %g stations, %g violating (%g unavoidable), "
+              "collision-free %g; air points as material: %g violating\n",
+              field(masked, arrays::CollisionStations), field(masked, arrays::CollisionViolatingStations),
+              field(masked, arrays::CollisionUnavoidableStations), field(masked, arrays::CollisionFree),
+              field(unmasked, arrays::CollisionViolatingStations));
+}
