@@ -1,0 +1,125 @@
+"""Runs inside the ParaView GUI's Python shell, last event of run_gui_test.py's playback (the plan is the
+JSON file named by $GEOLATTICE_GUI_PLAN), after every GeoLattice filter was created from the
+Filters > GeoLattice menu and applied with the Apply button. Checks for each filter: it exists under its
+default GUI name (<Filter>1), its second input is the one picked in the Select Input dialog, the GUI
+shows it in the render view (Apply happened), its "no array" array selections (XML default = the
+none string) are still unset after Apply, and every output port is non-empty (GL Collision Verifier:
+its output carries the verdict in field data; its geometry is empty when nothing collides). Then colours
+the part by Gamma and the sequenced lattice by PrintOrder, saves the screenshot and reads it back.
+Writes {"failures": [...], "outputs": {...}} to plan["check_result"]."""
+import json
+import os
+import traceback
+
+from paraview import servermanager, simple
+
+
+def _geolattice_port_summary(data):
+    n_arrays = sum(data.GetAttributes(a).GetNumberOfArrays() for a in (0, 1)) + data.GetFieldData().GetNumberOfArrays()
+    return {"class": data.GetClassName(), "points": data.GetNumberOfPoints(), "cells": data.GetNumberOfCells(),
+            "arrays": n_arrays}
+
+
+def _geolattice_gui_check():
+    with open(os.environ["GEOLATTICE_GUI_PLAN"]) as f:
+        plan = json.load(f)
+    failures, outputs = [], {}
+    try:
+        view = simple.GetActiveViewOrCreate("RenderView")
+        scene = simple.GetAnimationScene()
+        scene.UpdateAnimationUsingDataTimeSteps()
+        scene.AnimationTime = scene.EndTime  # the toolpath replay: last frame = the whole path
+
+        reader = simple.FindSource(plan["reader"])
+        reader.UpdatePipeline()
+        outputs[plan["reader"]] = [_geolattice_port_summary(servermanager.Fetch(reader))]
+        if outputs[plan["reader"]][0]["cells"] == 0:
+            failures.append("GLMeshReader read nothing from %s" % plan["model"])
+
+        for name, extra in plan["chain"]:
+            src = simple.FindSource(name + "1")
+            if src is None or src.GetXMLName() != name:
+                failures.append("%s1 was not created from Filters > GeoLattice > %s" % (name, name))
+                continue
+            for prop, target in extra.items():
+                got = getattr(src, prop)
+                got_proxy = getattr(got, "SMProxy", None)
+                want = simple.FindSource(target)
+                if got_proxy is None or want is None or got_proxy != want.SMProxy:
+                    failures.append("%s1.%s is %s, not %s (Select Input dialog)" % (
+                        name, prop, got_proxy.GetXMLName() if got_proxy else None, target))
+            for prop, none in plan["none_arrays"].get(name, {}).items():
+                # Array selections whose XML default is "no array" must still be so after Apply: the GUI
+                # must not pick the first array of the domain on its own (element 4 is the array name).
+                chosen = src.SMProxy.GetProperty(prop).GetElement(4)
+                if chosen not in ("", none):
+                    failures.append(
+                        "%s1.%s is %r after Apply in the GUI, but its XML default is %r: the GUI picked the first "
+                        "array of the domain, so a GUI user gets a different result than pvpython. Fix in the "
+                        "plugin XML: <Hints><NoDefault/></Hints> in that property" % (name, prop, chosen, none))
+            if servermanager.GetRepresentation(src, view) is None:
+                failures.append("%s1 has no representation in the render view (was Apply pressed?)" % name)
+            src.UpdatePipeline(scene.AnimationTime)
+            ports = []
+            for port in range(src.SMProxy.GetNumberOfOutputPorts()):
+                data = servermanager.Fetch(src, idx=port)
+                summary = _geolattice_port_summary(data)
+                ports.append(summary)
+                if name == "GLCollisionVerifier":
+                    stations = data.GetFieldData().GetArray("CollisionStations")
+                    if stations is None or stations.GetValue(0) <= 0:
+                        failures.append("GLCollisionVerifier1 gave no verdict (no CollisionStations)")
+                elif summary["points"] == 0 or summary["cells"] == 0:
+                    failures.append("%s1 output port %d is empty: %s" % (name, port, summary))
+            outputs[name] = ports
+
+        # The picture: the part (surface of the fields' tet mesh) by Gamma, translucent, over the
+        # sequenced lattice by PrintOrder.
+        for src in simple.GetSources().values():
+            simple.Hide(src, view)
+        for rep in view.Representations:  # the colour legends the GUI added on Apply
+            if rep.GetXMLName() == "ScalarBarWidgetRepresentation":
+                rep.Visibility = 0
+        part = simple.ExtractSurface(registrationName="PartSurface", Input=simple.FindSource("GLGeodesicDistanceFields1"))
+        rep = simple.Show(part, view)
+        simple.ColorBy(rep, ("POINTS", "Gamma"))
+        rep.RescaleTransferFunctionToDataRange(True, False)
+        rep.Opacity = 0.3
+        rep.SetScalarBarVisibility(view, True)
+        lattice = simple.OutputPort(simple.FindSource("GLPrintSequencer1"), 0)
+        rep = simple.Show(lattice, view)
+        simple.ColorBy(rep, ("CELLS", "PrintOrder"))
+        rep.RescaleTransferFunctionToDataRange(True, False)
+        simple.GetColorTransferFunction("PrintOrder").ApplyPreset("Turbo", True)
+        rep.SetScalarBarVisibility(view, True)
+        view.ResetCamera()
+        camera = view.GetActiveCamera()
+        camera.SetViewUp(0, 0, 1)
+        focal, distance = camera.GetFocalPoint(), camera.GetDistance()
+        camera.SetPosition(focal[0], focal[1] - distance, focal[2])
+        camera.Azimuth(30)
+        camera.Elevation(20)
+        view.ResetCamera()
+        simple.Render(view)
+        simple.SaveScreenshot(plan["screenshot"], view, ImageResolution=[1200, 900])
+
+        from paraview.vtk.vtkIOImage import vtkPNGReader
+        png = vtkPNGReader()
+        png.SetFileName(plan["screenshot"])
+        png.Update()
+        image = png.GetOutput()
+        dims = image.GetDimensions()
+        scalars = image.GetPointData().GetScalars()
+        spread = [scalars.GetRange(c) for c in range(min(3, scalars.GetNumberOfComponents()))] if scalars else []
+        outputs["screenshot"] = {"size": list(dims[:2]), "channel_ranges": spread}
+        if list(dims[:2]) != [1200, 900]:
+            failures.append("screenshot %s is %s, not 1200 x 900" % (plan["screenshot"], dims[:2]))
+        elif not spread or all(hi - lo < 32 for lo, hi in spread):
+            failures.append("screenshot %s looks blank (channel ranges %s)" % (plan["screenshot"], spread))
+    except Exception:
+        failures.append(traceback.format_exc())
+    with open(plan["check_result"], "w") as f:
+        json.dump({"failures": failures, "outputs": outputs}, f, indent=1)
+
+
+_geolattice_gui_check()
