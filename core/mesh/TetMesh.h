@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <array>
+#include <limits>
 #include <vector>
 
 namespace geolattice {
@@ -23,6 +24,12 @@ struct TetMesh {
   std::vector<Vec3> points;
   std::vector<std::array<int, 4>> tets;
 };
+
+/// v / |v|, or `fallback` for a zero (or non-finite length) vector.
+inline Vec3 unitOr(const Vec3& v, const Vec3& fallback) {
+  const double n = v.norm();
+  return n > 0 && n < std::numeric_limits<double>::infinity() ? Vec3(v / n) : fallback;
+}
 
 /// @brief Signed volume of tet (a, b, c, d): positive for positive orientation.
 inline double signedTetVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {

@@ -7,13 +7,6 @@
 
 namespace geolattice {
 
-namespace {
-Vec3 unitOr(const Vec3& v, const Vec3& fallback) {
-  const double n = v.norm();
-  return n > 0 ? Vec3(v / n) : fallback;
-}
-} // namespace
-
 MaterialSamples sampleLatticeMaterial(const LatticeGraph& g, double spacing) {
   if (!(spacing > 0) || !std::isfinite(spacing)) {
     std::ostringstream s;

@@ -7,15 +7,6 @@
 
 namespace geolattice {
 
-namespace {
-
-Vec3 unitOr(const Vec3& v, const Vec3& fallback) {
-  const double n = v.norm();
-  return n > 0 ? Vec3(v / n) : fallback;
-}
-
-} // namespace
-
 PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>& kept, double offset,
                                   double toothLength) {
   if (!(offset > 0) || !(toothLength > 0) || !std::isfinite(offset) || !std::isfinite(toothLength)) {
