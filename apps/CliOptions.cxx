@@ -1,5 +1,6 @@
 #include "CliOptions.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 
@@ -14,6 +15,34 @@ double parseNumber(const std::string& flag, const std::string& text)
     throw UsageError(flag + " expects a number, got '" + text + "'");
   }
   return v;
+}
+
+std::vector<double> parseNumbers(const std::string& flag, const std::string& text, size_t count, const char* form)
+{
+  std::vector<double> out;
+  size_t start = 0;
+  while (true)
+  {
+    const size_t comma = text.find(',', start);
+    const std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    char* end = nullptr;
+    const double v = std::strtod(part.c_str(), &end);
+    if (part.empty() || *end != '\0' || !std::isfinite(v) || out.size() == count)
+    {
+      throw UsageError(flag + " expects " + form + ", got '" + text + "'");
+    }
+    out.push_back(v);
+    if (comma == std::string::npos)
+    {
+      break;
+    }
+    start = comma + 1;
+  }
+  if (out.size() != count)
+  {
+    throw UsageError(flag + " expects " + form + ", got '" + text + "'");
+  }
+  return out;
 }
 
 bool NozzleOptions::parse(const std::string& flag, const std::function<std::string()>& value)
@@ -95,6 +124,82 @@ void ToolpathCliOptions::report(JsonObject& s) const
   s.set("retraction_mm", retraction);
   s.set("tooth_length_mm", toothLength);
   s.set("support_perimeter", perimeter);
+}
+
+bool ProgramCliOptions::parse(const std::string& flag, const std::function<std::string()>& value)
+{
+  auto copy = [](const std::vector<double>& from, double* to) { std::copy(from.begin(), from.end(), to); };
+  if (flag == "--robot")
+  {
+    robot = value();
+    if (robot != "ur5" && robot != "ur5e")
+    {
+      throw UsageError("--robot must be ur5 or ur5e (got '" + robot + "')");
+    }
+  }
+  else if (flag == "--nozzle-tip") copy(parseNumbers(flag, value(), 3, "X,Y,Z (m)"), nozzleTip);
+  else if (flag == "--nozzle-axis") copy(parseNumbers(flag, value(), 3, "X,Y,Z"), nozzleAxis);
+  else if (flag == "--part-offset" || flag == "--part-on-flange")
+  {
+    const bool offset = flag == "--part-offset";
+    if (offset ? partOnFlangeGiven : partOffsetGiven)
+    {
+      throw UsageError("--part-offset and --part-on-flange exclude each other");
+    }
+    if (offset)
+    {
+      const double z = parseNumber(flag, value());
+      const double pose[6] = {0.0, 0.0, z, 0.0, 0.0, 0.0};
+      std::copy(pose, pose + 6, partOnFlange);
+      partOffsetGiven = true;
+    }
+    else
+    {
+      copy(parseNumbers(flag, value(), 6, "X,Y,Z,RX,RY,RZ (m, rad)"), partOnFlange);
+      partOnFlangeGiven = true;
+    }
+  }
+  else if (flag == "--max-script-bytes")
+  {
+    const std::string text = value();
+    const double v = parseNumber(flag, text);
+    if (v < 10000 || v != std::floor(v) || v > 1e12)
+    {
+      throw UsageError(flag + " expects a whole number of bytes >= 10000, got '" + text + "'");
+    }
+    maxScriptBytes = v;
+  }
+  else if (flag == "--speed-factor") speedFactor = parseNumber(flag, value());
+  else if (flag == "--max-filament-rate") maxFilamentRate = parseNumber(flag, value());
+  else if (flag == "--max-blend") maxBlend = parseNumber(flag, value());
+  else if (flag == "--allow-unreachable") allowUnreachable = true;
+  else if (flag == "--gcode")
+  {
+    gcode = value();
+    if (gcode != "ac" && gcode != "bc" && gcode != "none")
+    {
+      throw UsageError("--gcode must be ac, bc or none (got '" + gcode + "')");
+    }
+  }
+  else if (flag == "--gcode-pivot") copy(parseNumbers(flag, value(), 3, "X,Y,Z (mm)"), gcodePivot);
+  else if (flag == "--gcode-offset") copy(parseNumbers(flag, value(), 3, "X,Y,Z (mm)"), gcodeOffset);
+  else if (flag == "--tilt-limits") copy(parseNumbers(flag, value(), 2, "MIN,MAX (degrees)"), tiltLimits);
+  else return false;
+  // Ranges are checked by the writers (same messages as in ParaView).
+  return true;
+}
+
+void ProgramCliOptions::report(JsonObject& s) const
+{
+  s.set("robot", robot);
+  s.set("nozzle_tip_m", std::vector<double>(nozzleTip, nozzleTip + 3));
+  s.set("nozzle_axis", std::vector<double>(nozzleAxis, nozzleAxis + 3));
+  s.set("part_on_flange", std::vector<double>(partOnFlange, partOnFlange + 6));
+  s.set("max_script_bytes", static_cast<long long>(maxScriptBytes));
+  s.set("speed_factor", speedFactor);
+  s.set("max_filament_rate_mm_s", maxFilamentRate);
+  s.set("max_blend_m", maxBlend);
+  s.set("allow_unreachable", allowUnreachable);
 }
 
 } // namespace geolattice

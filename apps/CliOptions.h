@@ -1,13 +1,14 @@
 #pragma once
 /// @file CliOptions.h
 /// @brief Command-line pieces shared by `geolattice run` and `geolattice verify`: usage errors,
-/// number parsing, the nozzle options that both the sequencer and the verifier take, and the
-/// toolpath options.
+/// number parsing, the nozzle options that both the sequencer and the verifier take, the
+/// toolpath options and the robot program options.
 #include "JsonWriter.h"
 
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace geolattice {
 
@@ -18,6 +19,10 @@ struct UsageError : std::runtime_error {
 
 /// Parses a finite number or throws UsageError naming the flag.
 double parseNumber(const std::string& flag, const std::string& text);
+
+/// Parses `count` comma-separated finite numbers (e.g. X,Y,Z) or throws UsageError naming the
+/// flag and `form` ("X,Y,Z").
+std::vector<double> parseNumbers(const std::string& flag, const std::string& text, size_t count, const char* form);
 
 /// @brief Nozzle model and material sampling (core/sequence/NozzleModel.h); 0 length = cone only.
 struct NozzleOptions {
@@ -88,6 +93,61 @@ struct ToolpathCliOptions {
   /// air_speed_mm_s, thickness_cap, max_turn_deg, safe_margin_mm, lift_mm, retraction_mm,
   /// tooth_length_mm, support_perimeter) into a report section.
   void report(JsonObject& section) const;
+};
+
+/// @brief The program stage (core/robot, core/program): the UR robot cell and the URScript
+/// options (vtkGLURScriptWriter), the 5-axis G-code (vtkGLGCodeWriter) and its machine.
+struct ProgramCliOptions {
+  std::string robot = "ur5";
+  double nozzleTip[3] = {0.0, -0.40, 0.30};        ///< m, robot base frame
+  double nozzleAxis[3] = {0.0, 0.0, 1.0};
+  double partOnFlange[6] = {0.0, 0.0, 0.04, 0.0, 0.0, 0.0};  ///< URScript pose (m, rad)
+  double maxScriptBytes = 4000000;
+  double speedFactor = 0.5;
+  double maxFilamentRate = 5.0;                    ///< mm/s of filament at 10 V
+  double maxBlend = 0.0005;                        ///< m
+  bool allowUnreachable = false;
+  std::string gcode = "ac";                        ///< ac | bc | none
+  double gcodePivot[3] = {0.0, 0.0, 0.0};          ///< mm
+  double gcodeOffset[3] = {0.0, 0.0, 0.0};         ///< mm
+  double tiltLimits[2] = {-120.0, 120.0};          ///< degrees
+
+  /// Consumes --robot (ur5 | ur5e), --nozzle-tip X,Y,Z, --nozzle-axis X,Y,Z, --part-offset Z,
+  /// --part-on-flange X,Y,Z,RX,RY,RZ (not both of these two), --max-script-bytes (a whole number
+  /// >= 10000), --speed-factor, --max-filament-rate, --max-blend, --allow-unreachable, --gcode
+  /// (ac | bc | none), --gcode-pivot X,Y,Z, --gcode-offset X,Y,Z and --tilt-limits MIN,MAX;
+  /// UsageError for a malformed value; false for any other flag.
+  bool parse(const std::string& flag, const std::function<std::string()>& value);
+
+  /// Sets the properties of vtkGLURScriptWriter (not the file name).
+  template <class Writer>
+  void applyScript(Writer* w) const {
+    w->SetRobot(robot.c_str());
+    w->SetNozzleTip(nozzleTip);
+    w->SetNozzleAxis(nozzleAxis);
+    w->SetPartOnFlange(partOnFlange);
+    w->SetMaxFileBytes(static_cast<long long>(maxScriptBytes));
+    w->SetSpeedFactor(speedFactor);
+    w->SetMaxFilamentRate(maxFilamentRate);
+    w->SetMaxBlend(maxBlend);
+    w->SetAllowUnreachable(allowUnreachable);
+  }
+
+  /// Sets the properties of vtkGLGCodeWriter (not the file name); gcode must not be "none".
+  template <class Writer>
+  void applyGCode(Writer* w) const {
+    w->SetKinematics(gcode == "bc" ? 1 : 0);
+    w->SetPivot(gcodePivot);
+    w->SetPartOffset(gcodeOffset);
+    w->SetTiltLimits(tiltLimits);
+  }
+
+  /// Writes robot, nozzle_tip_m, nozzle_axis, part_on_flange, max_script_bytes, speed_factor,
+  /// max_filament_rate_mm_s, max_blend_m and allow_unreachable into a report section.
+  void report(JsonObject& section) const;
+
+private:
+  bool partOffsetGiven = false, partOnFlangeGiven = false;
 };
 
 } // namespace geolattice

@@ -73,6 +73,14 @@ JsonObject& JsonObject::set(const std::string& key, const std::vector<double>& v
   slot(key) = Value{text + "]", nullptr};
   return *this;
 }
+JsonObject& JsonObject::set(const std::string& key, const std::vector<std::string>& values) {
+  std::string text = "[";
+  for (size_t i = 0; i < values.size(); ++i) {
+    text += (i ? ", " : "") + jsonQuote(values[i]);
+  }
+  slot(key) = Value{text + "]", nullptr};
+  return *this;
+}
 JsonObject& JsonObject::object(const std::string& key) {
   Value& v = slot(key);
   if (!v.object) {

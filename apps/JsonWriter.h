@@ -1,7 +1,7 @@
 #pragma once
 /// @file JsonWriter.h
 /// @brief A tiny ordered JSON object model for report.json (numbers, strings, booleans,
-/// arrays of numbers, nested objects), printed with stable key order.
+/// arrays of numbers or strings, nested objects), printed with stable key order.
 #include <map>
 #include <memory>
 #include <ostream>
@@ -22,6 +22,7 @@ public:
   JsonObject& set(const std::string& key, const std::string& value);
   JsonObject& set(const std::string& key, const char* value) { return set(key, std::string(value)); }
   JsonObject& set(const std::string& key, const std::vector<double>& values);
+  JsonObject& set(const std::string& key, const std::vector<std::string>& values);
   /// The nested object under key (created if missing).
   JsonObject& object(const std::string& key);
 

@@ -21,6 +21,9 @@
 #include "vtkGLSkeletonTree.h"
 #include "vtkGLTetrahedralizeSurface.h"
 #include "vtkGLToolpathPlanner.h"
+#include "vtkGLGCodeWriter.h"
+#include "vtkGLURScriptWriter.h"
+#include "vtkGLWaypointCsvWriter.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -36,6 +39,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkWriter.h>
 
 #include <algorithm>
 #include <chrono>
@@ -55,7 +59,10 @@ namespace {
 namespace gl = geolattice;
 using Clock = std::chrono::steady_clock;
 
-constexpr const char* kStages[] = { "mesh", "gdf", "layers", "lattice", "sequence", "toolpath" };
+constexpr const char* kStages[] = { "mesh", "gdf", "layers", "lattice", "sequence", "toolpath", "program" };
+constexpr const char* kScriptFile = "print_part.script"; // + print_part_1.script, ... when split
+constexpr const char* kGCodeFile = "toolpath.gcode";
+constexpr const char* kWaypointFile = "waypoints.csv";
 constexpr const char* kStrategies[] = { "lpt", "dpt", "a4", "best" }; // = vtkGLPrintSequencer::Strategy 0..3
 
 const char* kUsage = R"(geolattice - multi-axis support-free printing with lattice infill (GeoLattice )" GEOLATTICE_VERSION R"()
@@ -79,8 +86,12 @@ printing order with Normals = nozzle axis, Thickness, Width, Extrusion, FeedRate
 per run of one kind), toolpath.pvd with toolpath/step_NNNN.vtp (the print replay: open
 toolpath.pvd in ParaView and press Play; step k holds everything printed up to progress
 k/steps), toolpath_collisions.vtp (the verifier on the toolpath, every point a nozzle station,
-only printed points as material), report.json (per stage: seconds, counts, results). Files are
-written to a temporary name first, so nothing partial is left behind on failure.
+only printed points as material), print_part.script (the URScript program of the robot cell: a
+UR5/UR5e holds the part under a fixed nozzle; split at air moves into print_part_1.script,
+print_part_2.script, ... below --max-script-bytes, run one after the other), toolpath.gcode
+(5-axis G-code for an A-C or B-C tilting-rotary table), waypoints.csv (x,y,z,nx,ny,nz,e,kind,layer
+per toolpath point), report.json (per stage: seconds, counts, results). Files are written to a
+temporary name first, so nothing partial is left behind on failure.
 
 `verify OUTDIR` re-checks with the independent collision verifier the newer of toolpath.vtp
 (every point at its own time) and lattice.vtp (sub-graphs at their PrintOrder), nozzle from
@@ -89,8 +100,8 @@ material (with --allow-unavoidable: only when an order could have avoided it).
 
 Options:
   -o, --output DIR        output directory (created if missing)                     [required]
-  --until STAGE           last stage: mesh | gdf | layers | lattice | sequence | toolpath
-                                                                                     [toolpath]
+  --until STAGE           last stage: mesh | gdf | layers | lattice | sequence | toolpath |
+                          program                                                    [program]
  Model placement (models come in arbitrary units; GeoLattice works in millimetres):
   --scale F               uniform scale factor applied to the model                  [1]
   --fit-size MM           scale so the largest bounding-box side is MM (replaces --scale) [off]
@@ -143,6 +154,26 @@ Options:
   --replay-steps N        step files of the print replay (toolpath.pvd); fewer for
                           long paths (all steps together <= ~2 million points);
                           0 = no replay files                                        [50]
+ Programs (paper Section 4: the robot holds the part, the nozzle is fixed; robot cell in metres
+ in the robot base frame, toolpath mm scaled by 0.001):
+  --robot NAME            ur5 | ur5e                                                 [ur5]
+  --nozzle-tip X,Y,Z      nozzle tip position (m)                           [0,-0.4,0.3]
+  --nozzle-axis X,Y,Z     nozzle body direction from the tip into the nozzle    [0,0,1]
+  --part-offset M         the platform plate M metres in front of the flange, part z
+                          along the flange z (TCP = p[0,0,M,0,0,0])                  [0.04]
+  --part-on-flange X,Y,Z,RX,RY,RZ  the part (platform) frame on the flange as a URScript
+                          pose (m, rotation vector in rad); replaces --part-offset
+  --max-script-bytes N    split the program into files below N bytes, at air moves
+                          (UR controllers reject very large scripts)              [4000000]
+  --speed-factor F        fraction of the joint speed limits used, in (0, 1]         [0.5]
+  --max-filament-rate MM/S  filament rate at analog output 0 level 1 (10 V)          [5]
+  --max-blend M           largest movel blend radius (m)                          [0.0005]
+  --allow-unreachable     write the program even if points are unreachable (the robot
+                          holds still there; for simulation). Default: error, no program
+  --gcode KIN             5-axis G-code table kinematics: ac | bc | none              [ac]
+  --gcode-pivot X,Y,Z     machine position of the rotary axes' intersection (mm)  [0,0,0]
+  --gcode-offset X,Y,Z    part frame origin relative to the rotary centre (mm)    [0,0,0]
+  --tilt-limits MIN,MAX   limits of the tilt axis A or B (degrees)             [-120,120]
  Output:
   -q, --quiet             no progress lines on stdout
 
@@ -153,7 +184,7 @@ the problem); 2 on bad usage (one line on stderr); 3 (verify only) on a collisio
 struct Options {
   std::string model;
   std::string outDir;
-  std::string until = "toolpath";
+  std::string until = "program";
   double scale = 1.0;
   double fitSize = 0.0;
   bool center = true;
@@ -178,6 +209,7 @@ struct Options {
   std::string strategy = "best";
   geolattice::NozzleOptions nozzle;
   geolattice::ToolpathCliOptions toolpath;
+  geolattice::ProgramCliOptions program;
   bool quiet = false;
 };
 
@@ -250,6 +282,7 @@ Options parseArguments(int argc, char** argv)
     else if (arg == "--strategy") o.strategy = value();
     else if (o.nozzle.parse(arg, value)) {}
     else if (o.toolpath.parse(arg, value)) {}
+    else if (o.program.parse(arg, value)) {}
     else if (arg == "-q" || arg == "--quiet") o.quiet = true;
     else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
     else if (o.model.empty()) o.model = arg;
@@ -266,7 +299,7 @@ Options parseArguments(int argc, char** argv)
   if (std::find(std::begin(kStages), std::end(kStages), o.until) == std::end(kStages))
   {
     throw UsageError(
-      "--until must be one of: mesh, gdf, layers, lattice, sequence, toolpath (got '" + o.until + "')");
+      "--until must be one of: mesh, gdf, layers, lattice, sequence, toolpath, program (got '" + o.until + "')");
   }
   if (std::find(std::begin(kStrategies), std::end(kStrategies), o.strategy) == std::end(kStrategies))
   {
@@ -640,6 +673,152 @@ public:
         this->Written.push_back(path);
       }
     }
+    if (Opt.until == "toolpath")
+    {
+      return this->Finish(report);
+    }
+
+    // Stage: programs (paper Section 4). The URScript program of the UR cell first (when a point
+    // is unreachable nothing of this stage is written), then the 5-axis G-code and the waypoints;
+    // if one of those fails, the files already written by this stage are removed again.
+    {
+      if (!Opt.quiet)
+      {
+        std::cout << "geolattice: program ..." << std::flush;
+      }
+      const auto start = Clock::now();
+      const std::filesystem::path dir(Opt.outDir);
+      auto& s = report.object("program");
+      s.set("seconds", 0.0); // set below; first like in the other sections
+      Opt.program.report(s);
+
+      vtkNew<vtkGLURScriptWriter> script;
+      script->SetInputConnection(planner->GetOutputPort());
+      Opt.program.applyScript(script.Get());
+      script->SetFileName((dir / kScriptFile).string().c_str());
+      const std::string scriptError = RunWriter(script);
+      const vtkIdType unreachable = script->GetUnreachableCount();
+      std::vector<double> firstUnreachable;
+      for (vtkIdType i = 0; i < std::min<vtkIdType>(unreachable, 10); ++i)
+      {
+        firstUnreachable.push_back(static_cast<double>(script->GetUnreachablePoint(i)));
+      }
+      std::ostringstream unreachableText;
+      if (unreachable > 0)
+      {
+        unreachableText << unreachable << " of " << script->GetNumberOfWaypoints()
+                        << " toolpath points are unreachable for the " << Opt.program.robot << " (first:";
+        for (size_t i = 0; i < firstUnreachable.size(); ++i)
+        {
+          unreachableText << (i ? ", " : " ") << static_cast<long long>(firstUnreachable[i]);
+        }
+        unreachableText << (unreachable > 10 ? ", ...)" : ")");
+      }
+      if (!scriptError.empty())
+      {
+        if (!Opt.quiet)
+        {
+          std::cout << " failed\n";
+        }
+        if (unreachable > 0 && !Opt.program.allowUnreachable)
+        {
+          throw gl::GeoLatticeError("program: " + unreachableText.str() +
+            "; nothing written: move --nozzle-tip, --part-offset or --part-on-flange (or --allow-unreachable)");
+        }
+        throw gl::GeoLatticeError("program: " + scriptError);
+      }
+      if (unreachable > 0)
+      {
+        std::cerr << "geolattice: warning: " << unreachableText.str()
+                  << ": the program was written anyway (--allow-unreachable)\n";
+      }
+      std::vector<std::string> files;
+      for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k)
+      {
+        files.push_back(std::filesystem::path(script->GetFileWritten(k)).filename().string());
+      }
+      s.set("waypoints", static_cast<long long>(script->GetNumberOfWaypoints()));
+      s.set("moves", static_cast<long long>(script->GetNumberOfMoves()));
+      s.set("unreachable", static_cast<long long>(unreachable));
+      s.set("unreachable_first", firstUnreachable);
+      s.set("files", files);
+      s.set("ik_branch", script->GetIKBranch());
+      s.set("max_joint_step_deg", script->GetMaxJointStepDeg());
+      auto& singularity = s.object("min_singularity");
+      singularity.set("shoulder_m", script->GetMinShoulderSingularity());
+      singularity.set("elbow", script->GetMinElbowSingularity());
+      singularity.set("wrist", script->GetMinWristSingularity());
+      s.set("max_joint_speed_deg_s", script->GetMaxJointSpeedDegS());
+      s.set("duration_s", script->GetDuration());
+      s.set("max_line_length", static_cast<long long>(script->GetMaxLineLength()));
+      s.set("solve_seconds", script->GetSolveSeconds());
+
+      auto& g = s.object("gcode");
+      g.set("kinematics", Opt.program.gcode);
+      const std::filesystem::path gcodePath = dir / kGCodeFile;
+      if (Opt.program.gcode == "none")
+      {
+        std::error_code ec;
+        std::filesystem::remove(gcodePath, ec); // of an earlier run: it would not match this toolpath
+      }
+      else
+      {
+        vtkNew<vtkGLGCodeWriter> gcode;
+        gcode->SetInputConnection(planner->GetOutputPort());
+        Opt.program.applyGCode(gcode.Get());
+        gcode->SetFileName(gcodePath.string().c_str());
+        const std::string error = RunWriter(gcode);
+        if (!error.empty())
+        {
+          RemoveFiles(script, {});
+          if (!Opt.quiet)
+          {
+            std::cout << " failed\n";
+          }
+          throw gl::GeoLatticeError("program: " + error + " (--tilt-limits, or --gcode none)");
+        }
+        g.set("file", kGCodeFile);
+        g.set("pivot_mm", std::vector<double>(Opt.program.gcodePivot, Opt.program.gcodePivot + 3));
+        g.set("part_offset_mm", std::vector<double>(Opt.program.gcodeOffset, Opt.program.gcodeOffset + 3));
+        g.set("tilt_limits_deg", std::vector<double>(Opt.program.tiltLimits, Opt.program.tiltLimits + 2));
+        g.set("moves", static_cast<long long>(gcode->GetNumberOfMoves()));
+        g.set("max_rotary_step_deg", gcode->GetMaxRotaryStepDeg());
+        g.set("branch_flips", static_cast<long long>(gcode->GetBranchFlips()));
+      }
+
+      vtkNew<vtkGLWaypointCsvWriter> csv;
+      csv->SetInputConnection(planner->GetOutputPort());
+      const std::filesystem::path csvPath = dir / kWaypointFile;
+      csv->SetFileName(csvPath.string().c_str());
+      const std::string csvError = RunWriter(csv);
+      if (!csvError.empty())
+      {
+        RemoveFiles(script, Opt.program.gcode == "none" ? std::string() : gcodePath.string());
+        if (!Opt.quiet)
+        {
+          std::cout << " failed\n";
+        }
+        throw gl::GeoLatticeError("program: " + csvError);
+      }
+      for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k)
+      {
+        this->Written.push_back(script->GetFileWritten(k));
+      }
+      if (Opt.program.gcode != "none")
+      {
+        this->Written.push_back(gcodePath.string());
+      }
+      this->Written.push_back(csvPath.string());
+      s.set("csv", kWaypointFile);
+      s.set("csv_rows", static_cast<long long>(csv->GetNumberOfRows()));
+
+      const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
+      s.set("seconds", seconds);
+      if (!Opt.quiet)
+      {
+        std::cout << " done (" << seconds << " s)\n";
+      }
+    }
     return this->Finish(report);
   }
 
@@ -676,6 +855,35 @@ private:
       throw gl::GeoLatticeError(std::string(stage) + ": produced an empty output");
     }
     return out;
+  }
+
+  /// Removes the program files `script` wrote (and `also`, if not empty): a later writer of the
+  /// program stage failed, and the stage leaves all its files or none.
+  static void RemoveFiles(vtkGLURScriptWriter* script, const std::string& also)
+  {
+    std::error_code ec;
+    for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k)
+    {
+      std::filesystem::remove(script->GetFileWritten(k), ec);
+    }
+    if (!also.empty())
+    {
+      std::filesystem::remove(also, ec);
+    }
+  }
+
+  /// Writes with `writer` (errors captured as in Execute) and returns the first error reported,
+  /// empty on success.
+  static std::string RunWriter(vtkWriter* writer)
+  {
+    ErrorCapture errors;
+    errors.Watch(writer);
+    const int ok = writer->Write();
+    if (errors.Message.empty() && !ok)
+    {
+      errors.Message = std::string(writer->GetClassName()) + " failed";
+    }
+    return errors.Message;
   }
 
   void Write(vtkDataObject* data, const char* name)

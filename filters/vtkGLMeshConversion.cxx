@@ -470,6 +470,69 @@ void matchSkeletonToLattice(SkeletonTree& tree, const LatticeGraph& graph) {
   }
 }
 
+ToolpathArrays toToolpathArrays(vtkPolyData* toolpath) {
+  const vtkIdType n = toolpath && toolpath->GetPoints() ? toolpath->GetNumberOfPoints() : 0;
+  if (n == 0) {
+    throw GeoLatticeError("empty toolpath: the input has no points (connect the output of GL Toolpath Planner)");
+  }
+  vtkPointData* pd = toolpath->GetPointData();
+  auto array = [pd](const char* name, int components) {
+    vtkDataArray* a = pd->GetArray(name);
+    if (!a) {
+      throw GeoLatticeError(std::string("the toolpath has no point array ") + name +
+                            ": connect the output of GL Toolpath Planner");
+    }
+    if (a->GetNumberOfComponents() != components) {
+      throw GeoLatticeError(std::string("the toolpath's point array ") + name + " has " +
+                            std::to_string(a->GetNumberOfComponents()) + " components, expected " +
+                            std::to_string(components));
+    }
+    return a;
+  };
+  vtkDataArray* normals = array(arrays::Normals, 3);
+  vtkDataArray* extrusion = array(arrays::Extrusion, 1);
+  vtkDataArray* feedRate = array(arrays::FeedRate, 1);
+  vtkDataArray* kind = array(arrays::MoveKind, 1);
+  vtkDataArray* layer = array(arrays::LayerId, 1);
+  ToolpathArrays t;
+  t.points = readPoints(toolpath->GetPoints());
+  t.normals.resize(n);
+  t.extrusion.resize(n);
+  t.feedRate.resize(n);
+  t.kind.resize(n);
+  t.layer.resize(n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    const std::string at = "toolpath point " + std::to_string(i);
+    if (!t.points[i].allFinite()) {
+      throw GeoLatticeError(at + " has a NaN or infinite coordinate");
+    }
+    double v[3];
+    normals->GetTuple(i, v);
+    const Vec3 axis(v[0], v[1], v[2]);
+    const double length = axis.norm();
+    if (!std::isfinite(length) || !(length > 1e-12)) {
+      throw GeoLatticeError(at + " has a NaN or zero normal (" + arrays::Normals + ")");
+    }
+    t.normals[i] = axis / length;
+    t.extrusion[i] = extrusion->GetComponent(i, 0);
+    if (!std::isfinite(t.extrusion[i])) {
+      throw GeoLatticeError(at + " has a non-finite " + arrays::Extrusion);
+    }
+    t.feedRate[i] = feedRate->GetComponent(i, 0);
+    if (i > 0 && !(std::isfinite(t.feedRate[i]) && t.feedRate[i] > 0)) {
+      throw GeoLatticeError(at + " has " + arrays::FeedRate + " " + std::to_string(t.feedRate[i]) +
+                            "; feed rates must be > 0 mm/s");
+    }
+    t.kind[i] = integerValue(kind, i, "toolpath point");
+    if (t.kind[i] != movekind::Print && t.kind[i] != movekind::Perimeter && t.kind[i] != movekind::Air) {
+      throw GeoLatticeError(at + " has " + arrays::MoveKind + " " + std::to_string(t.kind[i]) +
+                            " (0 print, 1 perimeter, 2 air)");
+    }
+    t.layer[i] = integerValue(layer, i, "toolpath point");
+  }
+  return t;
+}
+
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components) {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
   a->SetName(name);

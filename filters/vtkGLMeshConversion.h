@@ -64,6 +64,24 @@ SkeletonTree toSkeletonTree(vtkPolyData* skeleton);
 /// lattice when the skeleton has none. Throws GeoLatticeError naming the mismatch.
 void matchSkeletonToLattice(SkeletonTree& tree, const LatticeGraph& graph);
 
+/// A toolpath as the program writers (core/program/) need it, per point in point order.
+struct ToolpathArrays {
+  std::vector<Vec3> points;      ///< mm, part (platform) frame
+  std::vector<Vec3> normals;     ///< unit nozzle axes (normalized here)
+  std::vector<double> extrusion; ///< cumulative filament E (mm)
+  std::vector<double> feedRate;  ///< mm/s
+  std::vector<int> kind;         ///< movekind: 0 print, 1 perimeter, 2 air
+  std::vector<int> layer;        ///< the lattice's LayerId, -1 on air moves
+};
+
+/// The toolpath from the output of vtkGLToolpathPlanner: its points in point order (the printing
+/// order; cells are not used) with the point arrays Normals (3 components), Extrusion, FeedRate,
+/// MoveKind and LayerId. Throws GeoLatticeError naming the problem: an empty toolpath, a missing
+/// array or one with the wrong number of components ("run GL Toolpath Planner first"), a point
+/// with a NaN coordinate or a NaN or zero normal (naming its index), non-finite extrusion, a
+/// feed rate that is not finite and > 0 after the first point, a MoveKind other than 0, 1 or 2.
+ToolpathArrays toToolpathArrays(vtkPolyData* toolpath);
+
 /// A named double array of values.size() / components tuples holding values.
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components = 1);
 /// Adds doubleArray(name, values, components) to the field data (replacing one of that name).

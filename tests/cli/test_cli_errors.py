@@ -19,6 +19,32 @@ def write(path, text):
     return path
 
 
+def check_urscript(test, text, def_name, max_bytes):
+    """The URScript rules of every program file: one def NAME(): ... end, statements indented inside
+    it, pose literals p[...] of 6 numbers with at most 6 decimals, t= and r= numbers, short lines."""
+    number = re.compile(r"-?[0-9]+(\.[0-9]{1,6})?$")
+    test.assertLessEqual(len(text.encode()), max_bytes)
+    lines = text.splitlines()
+    test.assertEqual(lines[0], "def %s():" % def_name)
+    test.assertEqual(lines[-1], "end")
+    test.assertEqual(sum(1 for l in lines if l.startswith("def ")), 1)
+    test.assertEqual(sum(1 for l in lines if l == "end"), 1)
+    movels = 0
+    for line in lines[1:-1]:
+        test.assertTrue(line.startswith("  "), line)
+        test.assertLessEqual(len(line), 200, line)
+        for pose in re.findall(r"p\[([^\]]*)\]", line):
+            parts = [x.strip() for x in pose.split(",")]
+            test.assertEqual(len(parts), 6, line)
+            for x in parts:
+                test.assertRegex(x, number, line)
+        for key in ("t=", "r="):
+            if key in line:
+                test.assertRegex(re.split(r"[,)]", line.split(key, 1)[1])[0], number, line)
+        movels += line.startswith("  movel(")
+    return movels
+
+
 CUBE_OBJ = """v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1
 f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8
 """
@@ -108,7 +134,7 @@ class CliErrorTest(unittest.TestCase):
         self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--strategy", "fastest"], "--strategy")
 
     def test_unknown_stage(self):
-        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--until", "gcode"], "--until", "toolpath")
+        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--until", "gcode"], "--until", "toolpath", "program")
 
     def test_bad_toolpath_option_values(self):
         cube = [os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10"]
@@ -155,6 +181,79 @@ class CliErrorTest(unittest.TestCase):
         self.assertEqual(report["toolpath"]["trimmed_edges"], 0)
         self.assertEqual(report["toolpath"]["perimeter_loops"], 0)
         self.assertEqual(report["toolpath"]["retractions"], report["lattice"]["subgraphs"] - 1)
+
+    # Programs (the default last stage)
+    def program_files(self):
+        return sorted(n for n in os.listdir(self.out)
+                      if n.endswith(".script") or n in ("toolpath.gcode", "waypoints.csv"))
+
+    def test_unreachable_cell(self):
+        # The nozzle 5 m from the robot: one line, exit 1, no program file (nor temporary file).
+        line = self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--replay-steps", "0",
+                                  "--nozzle-tip", "5,0,0"], "program", "unreachable cell set-up")
+        self.assertTrue(line.startswith("geolattice: error: program: "), line)
+        self.assertEqual(self.program_files(), [])
+        self.assertTrue(os.path.isfile(os.path.join(self.out, "toolpath.vtp")))  # the stages before
+
+    def test_bad_program_options(self):
+        cube = [os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--replay-steps", "0"]
+        # Usage errors before anything runs.
+        self.expect_error(cube + ["--robot", "ur10"], "--robot", "ur5 or ur5e")
+        self.expect_error(cube + ["--nozzle-tip", "1,2"], "--nozzle-tip", "X,Y,Z")
+        self.expect_error(cube + ["--nozzle-tip", "1,2,x"], "--nozzle-tip")
+        self.expect_error(cube + ["--part-on-flange", "0,0,0.1"], "--part-on-flange", "X,Y,Z,RX,RY,RZ")
+        self.expect_error(cube + ["--part-offset", "0.1", "--part-on-flange", "0,0,0.1,0,0,0"],
+                          "--part-offset and --part-on-flange")
+        self.expect_error(cube + ["--max-script-bytes", "5000"], "--max-script-bytes")
+        self.expect_error(cube + ["--gcode", "xyz"], "--gcode", "ac, bc or none")
+        self.expect_error(cube + ["--tilt-limits", "10"], "--tilt-limits", "MIN,MAX")
+        self.assertFalse(os.path.exists(self.out))
+        # Out of range: the writers' messages, at the program stage.
+        self.expect_error(cube + ["--speed-factor", "0"], "program", "speed factor must be in (0, 1]")
+        self.expect_error(cube + ["--max-filament-rate", "0"], "program", "maximum filament rate must be > 0")
+        self.expect_error(cube + ["--nozzle-axis", "0,0,0"], "program", "nozzle axis")
+        self.expect_error(cube + ["--tilt-limits", "30,-30"], "program", "tilt limits", "--gcode none")
+        self.assertEqual([n for n in self.program_files() if n.endswith(".script")], [])
+
+    def test_program_files_split_and_replaced(self):
+        cube = [os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--replay-steps", "0", "-o", self.out, "-q"]
+
+        def report():
+            with open(os.path.join(self.out, "report.json")) as f:
+                return json.load(f)
+
+        # Split below 200 kB: print_part.script, print_part_1.script, ... each with its def.
+        result = self.run_cli(*cube, "--max-script-bytes", "200000", "--robot", "ur5e", "--part-offset", "0.05")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        program = report()["program"]
+        files = program["files"]
+        self.assertGreater(len(files), 2)
+        self.assertEqual(files, ["print_part.script"] + ["print_part_%d.script" % k for k in range(1, len(files))])
+        self.assertEqual(self.program_files(), sorted(files + ["toolpath.gcode", "waypoints.csv"]))
+        movels = 0
+        for k, name in enumerate(files):
+            with open(os.path.join(self.out, name)) as f:
+                text = f.read()
+            movels += check_urscript(self, text, name[:-len(".script")], 200000)
+            self.assertIn("set_tcp(p[0, 0, 0.05, 0, 0, 0])", text)
+        self.assertEqual(movels, program["moves"])
+        self.assertEqual(program["moves"], program["waypoints"] - 1)
+        self.assertEqual(program["robot"], "ur5e")
+        self.assertEqual(program["part_on_flange"], [0, 0, 0.05, 0, 0, 0])
+        # One file again: the numbered files of the longer program are gone; no G-code wanted: the
+        # earlier toolpath.gcode is removed too.
+        result = self.run_cli(*cube, "--gcode", "none")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        program = report()["program"]
+        self.assertEqual(program["files"], ["print_part.script"])
+        self.assertEqual(program["gcode"], {"kinematics": "none"})
+        self.assertEqual(self.program_files(), ["print_part.script", "waypoints.csv"])
+        # --until toolpath: no program stage, no report section.
+        shutil.rmtree(self.out)
+        result = self.run_cli(*cube, "--until", "toolpath")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertNotIn("program", report())
+        self.assertEqual(self.program_files(), [])
 
     def test_bad_option_value(self):
         self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--scale", "abc"], "--scale")
@@ -244,6 +343,41 @@ class CliVerifyTest(unittest.TestCase):
         for t, n in zip(times, counts):
             self.assertEqual(n, round(t * (tp["points"] - 1)) + 1)
         self.assertEqual(counts[-1], tp["points"])
+
+    def test_outputs_of_the_program_stage(self):
+        with open(os.path.join(self.out, "report.json")) as f:
+            report = json.load(f)
+        program = report["program"]
+        for key in ("waypoints", "unreachable", "unreachable_first", "files", "max_joint_step_deg",
+                    "min_singularity", "max_joint_speed_deg_s", "duration_s", "seconds", "robot", "nozzle_tip_m",
+                    "part_on_flange", "gcode", "csv"):
+            self.assertIn(key, program)
+        self.assertEqual(program["waypoints"], report["toolpath"]["points"])
+        self.assertEqual(program["unreachable"], 0)
+        self.assertEqual(program["unreachable_first"], [])
+        self.assertEqual(sorted(program["min_singularity"]), ["elbow", "shoulder_m", "wrist"])
+        self.assertGreater(program["min_singularity"]["wrist"], 0)
+        self.assertGreater(program["max_joint_step_deg"], 0)
+        self.assertLessEqual(program["max_joint_speed_deg_s"], 90 + 1e-6)  # half the 180 deg/s limits
+        self.assertGreater(program["duration_s"], 0)
+        self.assertEqual(program["files"][0], "print_part.script")
+        movels = 0
+        for name in program["files"]:
+            with open(os.path.join(self.out, name)) as f:
+                movels += check_urscript(self, f.read(), name[:-len(".script")], program["max_script_bytes"])
+        self.assertEqual(movels, program["waypoints"] - 1)
+        with open(os.path.join(self.out, "waypoints.csv")) as f:
+            rows = f.read().splitlines()
+        self.assertEqual(rows[0], "x,y,z,nx,ny,nz,e,kind,layer")
+        self.assertEqual(len(rows) - 1, program["waypoints"])
+        self.assertEqual(program["gcode"]["file"], "toolpath.gcode")
+        with open(os.path.join(self.out, "toolpath.gcode")) as f:
+            gcode = f.read().splitlines()
+        self.assertEqual(sum(1 for l in gcode if re.match(r"G[01] X", l)), program["waypoints"])
+        self.assertEqual(gcode[-2:], ["G94", "M2"])
+        print("\n[cli program] Y: %d waypoints, %d file(s), max joint step %.2f deg, unreachable %d, "
+              "%.0f s of printing" % (program["waypoints"], len(program["files"]), program["max_joint_step_deg"],
+                                     program["unreachable"], program["duration_s"]))
 
     def test_verify_checks_the_newer_of_toolpath_and_lattice(self):
         toolpath = self.verify(self.out, "--nozzle-angle", "5")

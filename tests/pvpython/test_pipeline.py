@@ -236,6 +236,44 @@ class PipelineTest(unittest.TestCase):
         bad.UpdatePipeline(1.0)
         self.assertEqual(servermanager.Fetch(bad).GetNumberOfPoints(), 0)
 
+    def test_programs_saved_with_the_writer_proxies(self):
+        toolpath = self.proxies["toolpath"]
+        toolpath.UpdatePipeline(1.0)
+        n = servermanager.Fetch(toolpath).GetNumberOfPoints()
+        # The animation time in the middle of the replay: the writers still write the whole path.
+        toolpath.UpdatePipeline(0.5)
+        out = os.path.join(self.out, "program")
+        os.makedirs(out)
+        # .script -> GL URScript Writer (the writer factory picks it by extension).
+        simple.SaveData(os.path.join(out, "bunny.script"), toolpath, MaxFileBytes=500000, Robot="ur5e")
+        scripts = sorted(f for f in os.listdir(out) if f.endswith(".script"))
+        self.assertGreater(len(scripts), 1)
+        self.assertEqual(scripts, sorted(["bunny.script"] + ["bunny_%d.script" % k for k in range(1, len(scripts))]))
+        movels = 0
+        for name in scripts:
+            with open(os.path.join(out, name)) as f:
+                text = f.read()
+            self.assertLessEqual(len(text), 500000)
+            self.assertTrue(text.startswith("def %s():\n" % name[:-len(".script")]), text[:40])
+            self.assertTrue(text.endswith("\nend\n"))
+            movels += text.count("\n  movel(p[")
+        self.assertEqual(movels, n - 1)
+        # .gcode -> GL GCode Writer; the waypoint CSV writer by name (ParaView's CSV writer owns .csv).
+        simple.SaveData(os.path.join(out, "bunny.gcode"), toolpath, Kinematics=1)
+        with open(os.path.join(out, "bunny.gcode")) as f:
+            gcode = f.read()
+        self.assertIn("B-C tilting-rotary table", gcode)
+        self.assertEqual(len(re.findall(r"^G[01] X", gcode, re.M)), n)
+        csv = servermanager.writers.GLWaypointCSVWriter(Input=toolpath, FileName=os.path.join(out, "bunny.csv"))
+        csv.UpdatePipeline()
+        with open(os.path.join(out, "bunny.csv")) as f:
+            rows = f.read().splitlines()
+        self.assertEqual(rows[0], "x,y,z,nx,ny,nz,e,kind,layer")
+        self.assertEqual(len(rows), n + 1)
+        # A cell that cannot reach: an error, nothing written.
+        simple.SaveData(os.path.join(out, "far.script"), toolpath, NozzleTip=[5.0, 0.0, 0.0])
+        self.assertEqual(sorted(f for f in os.listdir(out) if f.startswith("far") or f.startswith(".")), [])
+
     def test_saved_file_reads_back(self):
         path = os.path.join(self.out, "fields.vtu")
         pipeline.save_binary(self.proxies["fields"], path)

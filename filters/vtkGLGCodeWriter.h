@@ -1,0 +1,118 @@
+/**
+ * @class   vtkGLGCodeWriter
+ * @brief   Writes a toolpath as 5-axis G-code for a tilting-rotary table machine (A-C or B-C)
+ *          with a fixed vertical nozzle.
+ *
+ * core/program/FiveAxisGCode.h: for each toolpath point p with nozzle axis n the table angles
+ * turn n onto +Z (rotary C about the table normal, then the tilt A about X or B about Y; of the
+ * two solutions (c, tilt) and (c + 180°, -tilt) the one nearest to the previous C, C unwrapped,
+ * C kept near the pole); the machine position is X Y Z = Pivot + R_tilt R_C (p + PartOffset).
+ * Header G21 G90 M83 G93: millimetres, absolute axes, relative extrusion E, inverse-time feed
+ * (F = 60 / t per minute, t the toolpath segment time L / FeedRate); print and perimeter moves
+ * are G1 with E, air moves G0 without E, with retraction and prime as separate G1 E moves;
+ * footer G94 M2. Numbers have at most 6 decimals.
+ *
+ * Input: vtkPolyData, the output of vtkGLToolpathPlanner (points in point order = printing
+ *   order, mm, point arrays `Normals`, `Extrusion`, `FeedRate`, `MoveKind`, `LayerId`; see
+ *   vtkGLURScriptWriter). A time-dependent input is requested at the end of its time range:
+ *   the whole toolpath.
+ * Output: FileName (e.g. toolpath.gcode or .nc), written to a temporary name first and renamed
+ *   when complete: on an error no file (nor partial file) is left and an earlier file of that
+ *   name is untouched.
+ * Results of the last Write() (reset at its start): GetNumberOfMoves, GetMaxRotaryStepDeg
+ *   (largest change of C or the tilt between consecutive points), GetBranchFlips (points where
+ *   the other solution was taken to stay inside the tilt limits), GetOutOfLimitsCount.
+ * Parameters: Kinematics (0 = AC (default): tilt A about X; 1 = BC: tilt B about Y), Pivot (mm,
+ *   machine position of the intersection of the rotary axes, default 0 0 0), PartOffset (mm,
+ *   the part frame origin relative to the rotary centre on the table, default 0 0 0),
+ *   TiltLimits (degrees, min < max, default -120 120).
+ * Errors (no FileName, an empty toolpath, missing arrays, a NaN point or a NaN / zero normal,
+ *   bad parameters, points whose nozzle axis needs a tilt outside TiltLimits on both solutions
+ *   (naming the count and the first indices), a file that cannot be written) are reported with
+ *   vtkErrorMacro; Write() then returns 0 and nothing is written.
+ */
+#ifndef vtkGLGCodeWriter_h
+#define vtkGLGCodeWriter_h
+
+#include "GeoLatticeFiltersModule.h"
+#include "vtkWriter.h"
+
+class GEOLATTICEFILTERS_EXPORT vtkGLGCodeWriter : public vtkWriter
+{
+public:
+  static vtkGLGCodeWriter* New();
+  vtkTypeMacro(vtkGLGCodeWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum KinematicsType
+  {
+    AC = 0, ///< tilt A about X, then rotary C
+    BC = 1  ///< tilt B about Y, then rotary C
+  };
+
+  ///@{
+  /// The G-code file (e.g. toolpath.gcode).
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /// Table kinematics: AC (0, default) or BC (1).
+  vtkSetClampMacro(Kinematics, int, AC, BC);
+  vtkGetMacro(Kinematics, int);
+  void SetKinematicsToAC() { this->SetKinematics(AC); }
+  void SetKinematicsToBC() { this->SetKinematics(BC); }
+  ///@}
+
+  ///@{
+  /// Machine position of the intersection of the two rotary axes (mm, default 0 0 0).
+  vtkSetVector3Macro(Pivot, double);
+  vtkGetVector3Macro(Pivot, double);
+  ///@}
+
+  ///@{
+  /// The part frame origin relative to the rotary centre, in the table frame (mm, default 0 0 0).
+  vtkSetVector3Macro(PartOffset, double);
+  vtkGetVector3Macro(PartOffset, double);
+  ///@}
+
+  ///@{
+  /// Limits of the tilt axis A or B (degrees, min < max, default -120 120).
+  vtkSetVector2Macro(TiltLimits, double);
+  vtkGetVector2Macro(TiltLimits, double);
+  ///@}
+
+  ///@{
+  /// Results of the last Write() (see the class documentation).
+  vtkIdType GetNumberOfMoves() const { return this->NumberOfMoves; }
+  double GetMaxRotaryStepDeg() const { return this->MaxRotaryStepDeg; }
+  vtkIdType GetBranchFlips() const { return this->BranchFlips; }
+  vtkIdType GetOutOfLimitsCount() const { return this->OutOfLimitsCount; }
+  ///@}
+
+protected:
+  vtkGLGCodeWriter();
+  ~vtkGLGCodeWriter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  void WriteData() override;
+
+  char* FileName = nullptr;
+  int Kinematics = AC;
+  double Pivot[3] = { 0, 0, 0 };
+  double PartOffset[3] = { 0, 0, 0 };
+  double TiltLimits[2] = { -120.0, 120.0 };
+
+private:
+  vtkGLGCodeWriter(const vtkGLGCodeWriter&) = delete;
+  void operator=(const vtkGLGCodeWriter&) = delete;
+
+  vtkIdType NumberOfMoves = 0;
+  double MaxRotaryStepDeg = 0;
+  vtkIdType BranchFlips = 0;
+  vtkIdType OutOfLimitsCount = 0;
+};
+
+#endif

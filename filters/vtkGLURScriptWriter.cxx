@@ -1,0 +1,274 @@
+#include "vtkGLURScriptWriter.h"
+
+#include "vtkGLMeshConversion.h"
+#include "vtkGLOutputFiles.h"
+
+#include "common/Error.h"
+#include "program/URScriptProgram.h"
+#include "robot/RobotPathSolver.h"
+
+#include <vtkDemandDrivenPipeline.h>
+#include <vtkErrorCode.h>
+#include <vtkInformation.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+vtkStandardNewMacro(vtkGLURScriptWriter);
+
+namespace
+{
+namespace gl = geolattice;
+
+bool allFinite(const double* v, int n)
+{
+  return std::all_of(v, v + n, [](double x) { return std::isfinite(x); });
+}
+
+/// "N of M toolpath points are unreachable … (first: a, b, …)".
+std::string describeUnreachable(const std::vector<vtkIdType>& unreachable, size_t points, const std::string& robot)
+{
+  std::ostringstream s;
+  s << unreachable.size() << " of " << points << " toolpath points are unreachable for the " << robot
+    << " in this cell (first: ";
+  const size_t shown = std::min<size_t>(unreachable.size(), 10);
+  for (size_t i = 0; i < shown; ++i)
+  {
+    s << (i ? ", " : "") << unreachable[i];
+  }
+  s << (unreachable.size() > shown ? ", ...)" : ")");
+  return s.str();
+}
+} // namespace
+
+vtkGLURScriptWriter::vtkGLURScriptWriter()
+{
+  this->SetRobot("ur5");
+}
+
+vtkGLURScriptWriter::~vtkGLURScriptWriter()
+{
+  this->SetFileName(nullptr);
+  this->SetRobot(nullptr);
+}
+
+int vtkGLURScriptWriter::FillInputPortInformation(int, vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+vtkTypeBool vtkGLURScriptWriter::ProcessRequest(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
+  {
+    gl::requestEndOfTimeRange(inputVector);
+  }
+  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+}
+
+std::string vtkGLURScriptWriter::ProgramFileName(const std::string& fileName, int k)
+{
+  if (k <= 0)
+  {
+    return fileName;
+  }
+  const std::filesystem::path p(fileName);
+  return (p.parent_path() / (p.stem().string() + "_" + std::to_string(k) + p.extension().string())).string();
+}
+
+std::string vtkGLURScriptWriter::ProgramName(const std::string& fileName)
+{
+  std::string name = std::filesystem::path(fileName).stem().string();
+  for (char& c : name)
+  {
+    const unsigned char u = static_cast<unsigned char>(c);
+    c = std::isalnum(u) && u < 128 ? static_cast<char>(std::tolower(u)) : '_';
+  }
+  if (name.empty() || !(name[0] >= 'a' && name[0] <= 'z'))
+  {
+    name = "p_" + name;
+  }
+  return name;
+}
+
+std::string vtkGLURScriptWriter::GetFileWritten(int k) const
+{
+  return k >= 0 && k < this->GetNumberOfFilesWritten() ? this->FilesWritten[k] : std::string();
+}
+
+vtkIdType vtkGLURScriptWriter::GetUnreachablePoint(vtkIdType i) const
+{
+  return i >= 0 && i < this->GetUnreachableCount() ? this->Unreachable[i] : -1;
+}
+
+void vtkGLURScriptWriter::ResetResults()
+{
+  this->FilesWritten.clear();
+  this->Unreachable.clear();
+  this->NumberOfWaypoints = 0;
+  this->NumberOfMoves = 0;
+  this->MaxJointStepDeg = 0;
+  this->MaxJointSpeedDegS = 0;
+  std::fill(this->MinSingularity, this->MinSingularity + 3, 0.0);
+  this->Duration = 0;
+  this->MaxLineLength = 0;
+  this->IKBranch = -1;
+  this->SolveSeconds = 0;
+}
+
+void vtkGLURScriptWriter::WriteData()
+{
+  this->ResetResults();
+  try
+  {
+    if (!this->FileName || !*this->FileName)
+    {
+      throw gl::GeoLatticeError("URScript writer: no FileName given");
+    }
+    const gl::ToolpathArrays path = gl::toToolpathArrays(vtkPolyData::SafeDownCast(this->GetInput()));
+    this->NumberOfWaypoints = static_cast<vtkIdType>(path.points.size());
+
+    // The cell.
+    gl::RobotCell cell;
+    cell.robot = gl::robotModelByName(this->Robot ? this->Robot : "");
+    if (!allFinite(this->NozzleTip, 3))
+    {
+      throw gl::GeoLatticeError("URScript writer: the nozzle tip must be finite");
+    }
+    cell.nozzleTip = Eigen::Vector3d(this->NozzleTip[0], this->NozzleTip[1], this->NozzleTip[2]);
+    const Eigen::Vector3d axis(this->NozzleAxis[0], this->NozzleAxis[1], this->NozzleAxis[2]);
+    if (!axis.allFinite() || !(axis.norm() > 1e-12))
+    {
+      throw gl::GeoLatticeError("URScript writer: the nozzle axis must be a finite, non-zero vector");
+    }
+    cell.nozzleAxis = axis.normalized();
+    if (!allFinite(this->PartOnFlange, 6))
+    {
+      throw gl::GeoLatticeError("URScript writer: the part-on-flange pose must be finite");
+    }
+    cell.partOnFlange = gl::toIsometry({ this->PartOnFlange[0], this->PartOnFlange[1], this->PartOnFlange[2],
+      this->PartOnFlange[3], this->PartOnFlange[4], this->PartOnFlange[5] });
+    cell.partScale = 0.001; // toolpath mm -> m
+
+    // The program options (checked here with the property names; the core checks them again).
+    if (this->MaxFileBytes < 10000)
+    {
+      throw gl::GeoLatticeError(
+        "URScript writer: the maximum file size must be >= 10000 bytes (got " + std::to_string(this->MaxFileBytes) + ")");
+    }
+    if (!(this->SpeedFactor > 0 && this->SpeedFactor <= 1))
+    {
+      throw gl::GeoLatticeError(
+        "URScript writer: the speed factor must be in (0, 1] (got " + std::to_string(this->SpeedFactor) + ")");
+    }
+    if (!(this->MaxFilamentRate > 0) || !std::isfinite(this->MaxFilamentRate))
+    {
+      throw gl::GeoLatticeError("URScript writer: the maximum filament rate must be > 0 mm/s (got " +
+        std::to_string(this->MaxFilamentRate) + ")");
+    }
+    if (!(this->MaxBlend >= 0) || !std::isfinite(this->MaxBlend))
+    {
+      throw gl::GeoLatticeError(
+        "URScript writer: the maximum blend radius must be >= 0 m (got " + std::to_string(this->MaxBlend) + ")");
+    }
+    gl::URScriptOptions options;
+    options.maxFileBytes = static_cast<size_t>(this->MaxFileBytes);
+    options.speedFactor = this->SpeedFactor;
+    options.maxFilamentRate = this->MaxFilamentRate;
+    options.maxBlend = this->MaxBlend;
+    options.programName = ProgramName(this->FileName);
+
+    // Joints along the path.
+    const gl::RobotPath robotPath = gl::solveRobotPath(cell, path.points, path.normals);
+    this->UpdateProgress(0.5);
+    this->Unreachable.assign(robotPath.unreachable.begin(), robotPath.unreachable.end());
+    std::sort(this->Unreachable.begin(), this->Unreachable.end());
+    this->IKBranch = robotPath.branch;
+    this->MaxJointStepDeg = robotPath.maxJointStepDeg;
+    this->MinSingularity[0] = robotPath.minSingularity.shoulder;
+    this->MinSingularity[1] = robotPath.minSingularity.elbow;
+    this->MinSingularity[2] = robotPath.minSingularity.wrist;
+    this->SolveSeconds = robotPath.seconds;
+    if (!this->Unreachable.empty())
+    {
+      const std::string text = describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name);
+      if (!this->AllowUnreachable)
+      {
+        throw gl::GeoLatticeError(text +
+          ": nothing written; move the nozzle tip or the part on the flange (AllowUnreachable writes it anyway)");
+      }
+      vtkWarningMacro(<< text << ": written anyway (AllowUnreachable); the robot holds still at those points");
+    }
+
+    // The program files, all-or-nothing.
+    std::vector<std::string> names;
+    gl::AtomicFileSet files;
+    const gl::ProgramInput input{ &path.points, &path.extrusion, &path.feedRate, &path.kind };
+    const gl::ProgramStats stats = gl::writeURScript(cell, robotPath, input, options, [&](size_t k) -> std::ostream& {
+      names.push_back(ProgramFileName(this->FileName, static_cast<int>(k)));
+      return files.open(names.back());
+    });
+    files.commit();
+    this->FilesWritten = names;
+    this->NumberOfMoves = static_cast<vtkIdType>(stats.moves);
+    this->MaxJointSpeedDegS = stats.maxJointSpeedDegS;
+    this->Duration = stats.duration;
+    this->MaxLineLength = static_cast<vtkIdType>(stats.maxLineLength);
+
+    // Numbered files of an earlier, longer program.
+    std::error_code ec;
+    for (int k = static_cast<int>(names.size());; ++k)
+    {
+      const std::string stale = ProgramFileName(this->FileName, k);
+      if (!std::filesystem::is_regular_file(stale, ec) || !std::filesystem::remove(stale, ec))
+      {
+        break;
+      }
+    }
+    this->UpdateProgress(1.0);
+  }
+  catch (const gl::FileWriteError& e)
+  {
+    this->FilesWritten.clear();
+    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
+    vtkErrorMacro(<< e.what());
+  }
+  catch (const std::exception& e)
+  {
+    this->FilesWritten.clear();
+    this->SetErrorCode(vtkErrorCode::UserError);
+    vtkErrorMacro(<< e.what());
+  }
+}
+
+void vtkGLURScriptWriter::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
+  os << indent << "Robot: " << (this->Robot ? this->Robot : "(none)") << "\n";
+  os << indent << "NozzleTip: " << this->NozzleTip[0] << " " << this->NozzleTip[1] << " " << this->NozzleTip[2]
+     << " m\n";
+  os << indent << "NozzleAxis: " << this->NozzleAxis[0] << " " << this->NozzleAxis[1] << " " << this->NozzleAxis[2]
+     << "\n";
+  os << indent << "PartOnFlange:";
+  for (double v : this->PartOnFlange)
+  {
+    os << " " << v;
+  }
+  os << "\n";
+  os << indent << "MaxFileBytes: " << this->MaxFileBytes << "\n";
+  os << indent << "SpeedFactor: " << this->SpeedFactor << "\n";
+  os << indent << "MaxFilamentRate: " << this->MaxFilamentRate << " mm/s\n";
+  os << indent << "MaxBlend: " << this->MaxBlend << " m\n";
+  os << indent << "AllowUnreachable: " << this->AllowUnreachable << "\n";
+  os << indent << "FilesWritten: " << this->FilesWritten.size() << "\n";
+  os << indent << "UnreachableCount: " << this->Unreachable.size() << "\n";
+}

@@ -1,0 +1,205 @@
+/**
+ * @class   vtkGLURScriptWriter
+ * @brief   Writes the URScript program that prints a toolpath in the robot cell of the paper (a
+ *          UR5 / UR5e holds the part under a fixed nozzle), split into numbered files below a
+ *          size limit.
+ *
+ * Paper Section 4 (Fig. 19), core/robot/RobotPathSolver.h and core/program/URScriptProgram.h:
+ * for every toolpath point the robot puts the part so that the point is at the nozzle tip with
+ * its nozzle axis along the nozzle body; the free rotation ψ about the nozzle axis is chosen
+ * along the path (dynamic programming over the 8 IK branches), joints stay continuous. The
+ * program is `def NAME(): … end` with set_tcp (the part frame on the flange), one time-based
+ * movel per toolpath segment (its time keeps every joint within SpeedFactor × its speed limit),
+ * blending up to MaxBlend, and the extrusion rate on standard analog output 0 (level 0..1 =
+ * 0..MaxFilamentRate mm/s of filament; 0 on air moves; retractions and primes as waits).
+ *
+ * Input: vtkPolyData, the output of vtkGLToolpathPlanner: its points in point order (the
+ *   printing order; cells are not used), in mm in the platform (part) frame, with the point
+ *   arrays `Normals` (3 components, nozzle axis), `Extrusion` (cumulative filament, mm),
+ *   `FeedRate` (mm/s), `MoveKind` (0 print, 1 perimeter, 2 air) and `LayerId`. A time-dependent
+ *   input (the planner's print replay) is requested at the end of its time range, i.e. the
+ *   whole toolpath, whatever time the pipeline asks for: a program is always of the whole path.
+ * Output files (FileName = DIR/STEM.EXT, e.g. part.script):
+ *   - program file 0 is FileName itself, program file k >= 1 is DIR/STEM_k.EXT (part_1.script,
+ *     part_2.script, …), so that file STEM_k.EXT holds `def NAME_k():` (the core numbers the
+ *     programs the same way); NAME is the file stem made a URScript identifier (lower case,
+ *     characters other than a-z 0-9 _ replaced by _, prefixed by p_ if it does not start with a
+ *     letter). A program is split only at air moves, each file below MaxFileBytes; each file
+ *     restates set_tcp and the analog output and starts with a movej to its first pose, so the
+ *     files are run one after the other.
+ *   - every file is written to a temporary name in the same directory first and renamed only
+ *     when all of them are complete: on an error nothing (no partial file) is left and earlier
+ *     files of that name are untouched. After a successful write, numbered files STEM_k.EXT of an
+ *     earlier, longer program (k = the new file count, k + 1, … as long as they exist) are
+ *     removed, so the directory holds exactly the new program.
+ * Unreachable points: a point at which no IK solution is found (after retrying nearby ψ) is
+ *   reported with vtkErrorMacro naming the count and the first (up to 10) point indices, and
+ *   nothing is written, unless AllowUnreachable is on: then the program is written with a
+ *   vtkWarningMacro of the same text (the robot keeps the previous joints at those points: for
+ *   simulation only). A cell in which no IK branch reaches the path at all ("unreachable cell
+ *   set-up") is always an error.
+ * Results of the last Write() (reset at its start; kept on an error as far as computed):
+ *   GetNumberOfFilesWritten / GetFileWritten(k) (full paths), GetNumberOfWaypoints,
+ *   GetNumberOfMoves (movel), GetUnreachableCount / GetUnreachablePoint(i) (all indices,
+ *   ascending), GetMaxJointStepDeg (largest change of a joint between consecutive points),
+ *   GetMaxJointSpeedDegS (with the segment times), GetMinShoulderSingularity (distance of
+ *   the wrist centre from the shoulder singularity cylinder, m), GetMinElbowSingularity (|sin θ3|),
+ *   GetMinWristSingularity (|sin θ5|), the smallest along the path, GetDuration (s, sum of
+ *   segment times), GetMaxLineLength (characters), GetIKBranch, GetSolveSeconds.
+ * Parameters: Robot ("ur5" default, or "ur5e"), NozzleTip (m, robot base frame, default
+ *   (0, -0.40, 0.30)), NozzleAxis (from the tip into the nozzle, base frame, default (0, 0, 1),
+ *   normalized), PartOnFlange (URScript pose x y z rx ry rz in m and rad of the part (platform)
+ *   frame in the flange frame = the TCP, default (0, 0, 0.04, 0, 0, 0): the platform plate 40 mm
+ *   in front of the flange), MaxFileBytes (default 4000000, >= 10000), SpeedFactor (fraction of
+ *   the joint speed limits used, default 0.5, in (0, 1]), MaxFilamentRate (mm/s of filament at
+ *   analog level 1 (10 V), default 5, > 0), MaxBlend (blend radius limit, m, default 0.0005,
+ *   >= 0), AllowUnreachable (default off). The toolpath's mm are scaled by 0.001 to metres.
+ * Errors (no FileName, an empty toolpath, missing arrays, a NaN point or a NaN / zero normal,
+ *   a bad parameter (unknown robot, zero nozzle axis, …), an unreachable cell set-up or
+ *   unreachable points, one print run longer than MaxFileBytes, a file that cannot be written)
+ *   are reported with vtkErrorMacro; Write() then returns 0 and no file is left behind.
+ */
+#ifndef vtkGLURScriptWriter_h
+#define vtkGLURScriptWriter_h
+
+#include "GeoLatticeFiltersModule.h"
+#include "vtkWriter.h"
+
+#include <string> // for the file names
+#include <vector> // for the results
+
+class vtkPolyData;
+
+class GEOLATTICEFILTERS_EXPORT vtkGLURScriptWriter : public vtkWriter
+{
+public:
+  static vtkGLURScriptWriter* New();
+  vtkTypeMacro(vtkGLURScriptWriter, vtkWriter);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// The first program file (e.g. part.script); further files are STEM_1.EXT, STEM_2.EXT, ….
+  vtkSetStringMacro(FileName);
+  vtkGetStringMacro(FileName);
+  ///@}
+
+  ///@{
+  /// Robot model: "ur5" (CB3, default) or "ur5e".
+  vtkSetStringMacro(Robot);
+  vtkGetStringMacro(Robot);
+  ///@}
+
+  ///@{
+  /// Nozzle tip in the robot base frame (m, default (0, -0.40, 0.30)).
+  vtkSetVector3Macro(NozzleTip, double);
+  vtkGetVector3Macro(NozzleTip, double);
+  ///@}
+
+  ///@{
+  /// Nozzle body axis from the tip into the nozzle, base frame (default (0, 0, 1); normalized).
+  vtkSetVector3Macro(NozzleAxis, double);
+  vtkGetVector3Macro(NozzleAxis, double);
+  ///@}
+
+  ///@{
+  /// The part (platform) frame in the flange frame as a URScript pose x, y, z (m), rx, ry, rz
+  /// (rotation vector, rad); the TCP of the program. Default (0, 0, 0.04, 0, 0, 0).
+  vtkSetVector6Macro(PartOnFlange, double);
+  vtkGetVector6Macro(PartOnFlange, double);
+  ///@}
+
+  ///@{
+  /// Largest size of one program file (bytes, default 4000000, >= 10000).
+  vtkSetMacro(MaxFileBytes, vtkIdType);
+  vtkGetMacro(MaxFileBytes, vtkIdType);
+  ///@}
+
+  ///@{
+  /// Fraction of the joint speed limits the motion may use (default 0.5, in (0, 1]).
+  vtkSetMacro(SpeedFactor, double);
+  vtkGetMacro(SpeedFactor, double);
+  ///@}
+
+  ///@{
+  /// Filament feed rate at analog output level 1 (10 V), mm/s (default 5, > 0).
+  vtkSetMacro(MaxFilamentRate, double);
+  vtkGetMacro(MaxFilamentRate, double);
+  ///@}
+
+  ///@{
+  /// Largest blend radius (m, default 0.0005, >= 0).
+  vtkSetMacro(MaxBlend, double);
+  vtkGetMacro(MaxBlend, double);
+  ///@}
+
+  ///@{
+  /// Write the program even if some points are unreachable (default off: error, nothing written).
+  vtkSetMacro(AllowUnreachable, vtkTypeBool);
+  vtkGetMacro(AllowUnreachable, vtkTypeBool);
+  vtkBooleanMacro(AllowUnreachable, vtkTypeBool);
+  ///@}
+
+  /// File name of program file k: FileName for k = 0, else STEM_k.EXT next to it.
+  static std::string ProgramFileName(const std::string& fileName, int k);
+  /// The def name used for FileName: its stem as a URScript identifier.
+  static std::string ProgramName(const std::string& fileName);
+
+  ///@{
+  /// Results of the last Write() (see the class documentation).
+  int GetNumberOfFilesWritten() const { return static_cast<int>(this->FilesWritten.size()); }
+  std::string GetFileWritten(int k) const;
+  vtkIdType GetNumberOfWaypoints() const { return this->NumberOfWaypoints; }
+  vtkIdType GetNumberOfMoves() const { return this->NumberOfMoves; }
+  vtkIdType GetUnreachableCount() const { return static_cast<vtkIdType>(this->Unreachable.size()); }
+  vtkIdType GetUnreachablePoint(vtkIdType i) const;
+  double GetMaxJointStepDeg() const { return this->MaxJointStepDeg; }
+  double GetMaxJointSpeedDegS() const { return this->MaxJointSpeedDegS; }
+  double GetMinShoulderSingularity() const { return this->MinSingularity[0]; }
+  double GetMinElbowSingularity() const { return this->MinSingularity[1]; }
+  double GetMinWristSingularity() const { return this->MinSingularity[2]; }
+  double GetDuration() const { return this->Duration; }
+  vtkIdType GetMaxLineLength() const { return this->MaxLineLength; }
+  int GetIKBranch() const { return this->IKBranch; }
+  double GetSolveSeconds() const { return this->SolveSeconds; }
+  ///@}
+
+protected:
+  vtkGLURScriptWriter();
+  ~vtkGLURScriptWriter() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  void WriteData() override;
+
+  char* FileName = nullptr;
+  char* Robot = nullptr;
+  double NozzleTip[3] = { 0.0, -0.40, 0.30 };
+  double NozzleAxis[3] = { 0.0, 0.0, 1.0 };
+  double PartOnFlange[6] = { 0.0, 0.0, 0.04, 0.0, 0.0, 0.0 };
+  vtkIdType MaxFileBytes = 4000000;
+  double SpeedFactor = 0.5;
+  double MaxFilamentRate = 5.0;
+  double MaxBlend = 0.0005;
+  vtkTypeBool AllowUnreachable = 0;
+
+private:
+  vtkGLURScriptWriter(const vtkGLURScriptWriter&) = delete;
+  void operator=(const vtkGLURScriptWriter&) = delete;
+
+  void ResetResults();
+
+  std::vector<std::string> FilesWritten;
+  std::vector<vtkIdType> Unreachable;
+  vtkIdType NumberOfWaypoints = 0;
+  vtkIdType NumberOfMoves = 0;
+  double MaxJointStepDeg = 0;
+  double MaxJointSpeedDegS = 0;
+  double MinSingularity[3] = { 0, 0, 0 };
+  double Duration = 0;
+  vtkIdType MaxLineLength = 0;
+  int IKBranch = -1;
+  double SolveSeconds = 0;
+};
+
+#endif

@@ -1,0 +1,454 @@
+// vtkGLURScriptWriter: the Y part's program (reader -> ... -> planner -> writer) split into
+// numbered files, each syntax-checked (balanced def/end, def names matching the file names, pose
+// literals of 6 numbers with at most 6 decimals, t= and r= numbers, line length, file size);
+// the whole toolpath whatever the pipeline time; stale numbered files removed; the results;
+// and errors (unwritable path, NaN normals, empty toolpath, missing arrays, bad parameters,
+// unreachable points and cells) with nothing written.
+#include "GLTestErrorObserver.h"
+#include "GLTestFiles.h"
+#include "GLTestToolpath.h"
+
+#include "vtkGLArrayNames.h"
+#include "vtkGLCurvedLayerSlicer.h"
+#include "vtkGLGeodesicDistanceFields.h"
+#include "vtkGLLatticeInfill.h"
+#include "vtkGLMeshReader.h"
+#include "vtkGLPlaceOnPlatform.h"
+#include "vtkGLPrintSequencer.h"
+#include "vtkGLSkeletonTree.h"
+#include "vtkGLTetrahedralizeSurface.h"
+#include "vtkGLToolpathPlanner.h"
+#include "vtkGLURScriptWriter.h"
+
+#include <vtkDataArray.h>
+#include <vtkErrorCode.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The URScript rules every file must satisfy; returns the number of movel commands.
+size_t checkSyntax(const std::string& text, const std::string& defName, size_t maxLine) {
+  std::istringstream in(text);
+  std::string line;
+  int depth = 0, defs = 0;
+  size_t movels = 0;
+  const std::regex number("-?[0-9]+(\\.[0-9]{1,6})?");
+  const std::regex pose("p\\[([^\\]]*)\\]");
+  bool first = true;
+  while (std::getline(in, line)) {
+    EXPECT_LE(line.size(), maxLine) << line;
+    if (first) {
+      EXPECT_EQ(line, "def " + defName + "():");
+      first = false;
+    }
+    if (line.rfind("def ", 0) == 0) {
+      ++depth;
+      ++defs;
+      EXPECT_TRUE(std::regex_match(line, std::regex("def [a-z][a-z_0-9]*\\(\\):"))) << line;
+    } else if (line == "end") {
+      --depth;
+      EXPECT_GE(depth, 0);
+    } else if (!line.empty()) {
+      EXPECT_EQ(line.rfind("  ", 0), 0u) << "statements are inside the def: " << line;
+      EXPECT_EQ(depth, 1) << line;
+    }
+    for (std::sregex_iterator it(line.begin(), line.end(), pose), end; it != end; ++it) {
+      std::stringstream parts((*it)[1].str());
+      std::string part;
+      int count = 0;
+      while (std::getline(parts, part, ',')) {
+        part.erase(0, part.find_first_not_of(' '));
+        EXPECT_TRUE(std::regex_match(part, number)) << "bad number '" << part << "' in " << line;
+        ++count;
+      }
+      EXPECT_EQ(count, 6) << line;
+    }
+    for (const char* key : {"t=", "r="}) {
+      const size_t at = line.find(key);
+      if (at != std::string::npos) {
+        std::string v = line.substr(at + 2);
+        v = v.substr(0, v.find_first_of(",)"));
+        EXPECT_TRUE(std::regex_match(v, number)) << line;
+      }
+    }
+    movels += line.rfind("  movel(", 0) == 0;
+  }
+  EXPECT_EQ(depth, 0);
+  EXPECT_EQ(defs, 1);
+  EXPECT_EQ(text.substr(text.size() - 4), "end\n");
+  return movels;
+}
+
+} // namespace
+
+TEST(vtkGLURScriptWriter, FileAndProgramNames) {
+  EXPECT_EQ(vtkGLURScriptWriter::ProgramFileName("/a/b/part.script", 0), "/a/b/part.script");
+  EXPECT_EQ(vtkGLURScriptWriter::ProgramFileName("/a/b/part.script", 1), "/a/b/part_1.script");
+  EXPECT_EQ(vtkGLURScriptWriter::ProgramFileName("/a/b/part.script", 12), "/a/b/part_12.script");
+  EXPECT_EQ(vtkGLURScriptWriter::ProgramFileName("part", 2), "part_2");
+  EXPECT_EQ(vtkGLURScriptWriter::ProgramName("/a/b/print_part.script"), "print_part");
+  EXPECT_EQ(vtkGLURScriptWriter::ProgramName("My Part-2.script"), "my_part_2");
+  EXPECT_EQ(vtkGLURScriptWriter::ProgramName("3d.script"), "p_3d");
+}
+
+TEST(vtkGLURScriptWriter, DefaultsAndPrintSelf) {
+  vtkNew<vtkGLURScriptWriter> w;
+  EXPECT_STREQ(w->GetRobot(), "ur5");
+  EXPECT_EQ(w->GetNozzleTip()[1], -0.40);
+  EXPECT_EQ(w->GetNozzleTip()[2], 0.30);
+  EXPECT_EQ(w->GetNozzleAxis()[2], 1.0);
+  EXPECT_EQ(w->GetPartOnFlange()[2], 0.04);
+  EXPECT_EQ(w->GetMaxFileBytes(), 4000000);
+  EXPECT_EQ(w->GetSpeedFactor(), 0.5);
+  EXPECT_EQ(w->GetMaxFilamentRate(), 5.0);
+  EXPECT_EQ(w->GetMaxBlend(), 0.0005);
+  EXPECT_EQ(w->GetAllowUnreachable(), 0);
+  EXPECT_EQ(w->GetNumberOfFilesWritten(), 0);
+  std::ostringstream os;
+  w->Print(os);
+  for (const char* text : {"Robot: ur5", "MaxFileBytes: 4000000", "SpeedFactor: 0.5", "AllowUnreachable: 0"}) {
+    EXPECT_NE(os.str().find(text), std::string::npos) << text;
+  }
+}
+
+TEST(vtkGLURScriptWriter, SmallToolpathInOneFile) {
+  const fs::path dir = glFreshDirectory("urscript-small");
+  vtkNew<vtkGLURScriptWriter> w;
+  vtkNew<GLTestErrorObserver> errors;
+  errors->Observe(w);
+  auto path = makeTestToolpath();
+  w->SetInputData(path);
+  const std::string file = (dir / "small.script").string();
+  w->SetFileName(file.c_str());
+  w->SetRobot("ur5e");
+  ASSERT_EQ(w->Write(), 1) << errors->Errors();
+  EXPECT_FALSE(errors->HasError()) << errors->Errors();
+  ASSERT_EQ(w->GetNumberOfFilesWritten(), 1);
+  EXPECT_EQ(w->GetFileWritten(0), file);
+  EXPECT_EQ(w->GetFileWritten(1), "");
+  EXPECT_EQ(glListDirectory(dir), std::vector<std::string>{"small.script"});
+  EXPECT_EQ(w->GetNumberOfWaypoints(), path->GetNumberOfPoints());
+  EXPECT_EQ(w->GetNumberOfMoves(), path->GetNumberOfPoints() - 1);
+  EXPECT_EQ(w->GetUnreachableCount(), 0);
+  EXPECT_EQ(w->GetUnreachablePoint(0), -1);
+  EXPECT_GE(w->GetIKBranch(), 0);
+  EXPECT_GT(w->GetDuration(), 0.0);
+  const std::string text = glReadFile(file);
+  EXPECT_EQ(checkSyntax(text, "small", 1000), static_cast<size_t>(w->GetNumberOfMoves()));
+  EXPECT_NE(text.find("set_tcp(p[0, 0, 0.04, 0, 0, 0])"), std::string::npos);
+  EXPECT_NE(text.find("set_standard_analog_out(0, "), std::string::npos);
+}
+
+// ---------------------------------------------------------------------------------------------
+// The Y part: reader -> place -> tets -> GDF -> slicer -> lattice -> skeleton -> sequencer ->
+// planner -> URScript writer (coarse, like the toolpath filter test).
+
+class BranchingYProgram : public ::testing::Test {
+protected:
+  struct Pipeline {
+    vtkNew<vtkGLMeshReader> reader;
+    vtkNew<vtkGLPlaceOnPlatform> place;
+    vtkNew<vtkGLTetrahedralizeSurface> tets;
+    vtkNew<vtkGLGeodesicDistanceFields> gdf;
+    vtkNew<vtkGLCurvedLayerSlicer> slicer;
+    vtkNew<vtkGLLatticeInfill> lattice;
+    vtkNew<vtkGLSkeletonTree> skeleton;
+    vtkNew<vtkGLPrintSequencer> sequencer;
+    vtkNew<vtkGLToolpathPlanner> planner;
+    vtkNew<GLTestErrorObserver> errors;
+  };
+  static std::unique_ptr<Pipeline> p;
+
+  static void SetUpTestSuite() {
+    p = std::make_unique<Pipeline>();
+    p->reader->SetFileName((std::string(GEOLATTICE_TESTDATA) + "/y_shape.obj").c_str());
+    p->place->SetInputConnection(p->reader->GetOutputPort());
+    p->tets->SetInputConnection(p->place->GetOutputPort());
+    p->tets->SetTargetEdgeLength(2.0); // coarse
+    p->gdf->SetInputConnection(p->tets->GetOutputPort());
+    p->slicer->SetInputConnection(p->gdf->GetOutputPort());
+    p->slicer->SetLayerInterval(1.0);
+    p->slicer->SetFirstLayerOffset(0.5);
+    p->lattice->SetInputConnection(p->slicer->GetOutputPort(0));
+    p->lattice->SetAlphaWidth(4.0);
+    p->lattice->SetBetaWidth(4.0);
+    p->skeleton->SetInputConnection(0, p->lattice->GetOutputPort());
+    p->skeleton->SetInputConnection(1, p->gdf->GetOutputPort());
+    p->sequencer->SetInputConnection(0, p->lattice->GetOutputPort());
+    p->sequencer->SetInputConnection(1, p->skeleton->GetOutputPort());
+    p->sequencer->SetNozzleAngle(45.0);
+    p->planner->SetInputConnection(0, p->sequencer->GetOutputPort(0));
+    p->planner->SetInputConnection(1, p->skeleton->GetOutputPort());
+    for (vtkAlgorithm* a : std::initializer_list<vtkAlgorithm*>{p->reader, p->place, p->tets, p->gdf, p->slicer,
+                                                                 p->lattice, p->skeleton, p->sequencer, p->planner}) {
+      p->errors->Observe(a);
+    }
+    p->planner->Update();
+  }
+  static void TearDownTestSuite() { p.reset(); }
+};
+std::unique_ptr<BranchingYProgram::Pipeline> BranchingYProgram::p;
+
+TEST_F(BranchingYProgram, SplitProgramPassesTheSyntaxCheck) {
+  ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
+  const vtkIdType N = p->planner->GetOutput()->GetNumberOfPoints();
+  ASSERT_GT(N, 1000);
+  const fs::path dir = glFreshDirectory("urscript-y");
+
+  vtkNew<vtkGLURScriptWriter> w;
+  vtkNew<GLTestErrorObserver> errors;
+  errors->Observe(w);
+  w->SetInputConnection(p->planner->GetOutputPort());
+  const std::string file = (dir / "y_part.script").string();
+  w->SetFileName(file.c_str());
+  w->SetMaxFileBytes(100000); // force several files
+  // The pipeline asks for the middle of the print replay: the program is still the whole path.
+  p->planner->UpdateTimeStep(0.5);
+  ASSERT_LT(p->planner->GetOutput()->GetNumberOfPoints(), N);
+  ASSERT_EQ(w->Write(), 1) << errors->Errors();
+  EXPECT_FALSE(errors->HasError()) << errors->Errors();
+  EXPECT_EQ(w->GetNumberOfWaypoints(), N);
+  EXPECT_EQ(w->GetNumberOfMoves(), N - 1);
+  EXPECT_EQ(w->GetUnreachableCount(), 0);
+  const int files = w->GetNumberOfFilesWritten();
+  std::printf("[urscript writer] Y: %lld waypoints, %d files (<= 100 kB), max joint step %.2f deg, max joint speed "
+              "%.1f deg/s, min singularity shoulder %.3f m elbow %.3f wrist %.3f, duration %.0f s, unreachable %lld, "
+              "IK branch %d, longest line %lld\n",
+              static_cast<long long>(N), files, w->GetMaxJointStepDeg(), w->GetMaxJointSpeedDegS(),
+              w->GetMinShoulderSingularity(), w->GetMinElbowSingularity(), w->GetMinWristSingularity(),
+              w->GetDuration(), static_cast<long long>(w->GetUnreachableCount()), w->GetIKBranch(),
+              static_cast<long long>(w->GetMaxLineLength()));
+  ASSERT_GT(files, 1);
+  EXPECT_LE(w->GetMaxJointSpeedDegS(), 0.5 * 180.0 + 1e-6); // SpeedFactor of the 180 deg/s limits
+  EXPECT_GT(w->GetMaxJointStepDeg(), 0.0);
+  EXPECT_LT(w->GetMaxJointStepDeg(), 90.0);
+  EXPECT_GT(w->GetMinWristSingularity(), 0.0);
+  EXPECT_LE(w->GetMaxLineLength(), 200);
+
+  std::vector<std::string> expected;
+  size_t movels = 0;
+  for (int k = 0; k < files; ++k) {
+    const std::string name = k == 0 ? "y_part.script" : "y_part_" + std::to_string(k) + ".script";
+    EXPECT_EQ(w->GetFileWritten(k), (dir / name).string());
+    expected.push_back(name);
+    const std::string text = glReadFile(w->GetFileWritten(k));
+    EXPECT_LE(text.size(), 100000u) << name;
+    movels += checkSyntax(text, k == 0 ? "y_part" : "y_part_" + std::to_string(k),
+                          static_cast<size_t>(w->GetMaxLineLength()));
+    // Every file sets the TCP and the analog output, and starts from a joint position.
+    EXPECT_NE(text.find("  set_tcp(p[0, 0, 0.04, 0, 0, 0])\n"), std::string::npos) << name;
+    EXPECT_NE(text.find("  movej(["), std::string::npos) << name;
+  }
+  EXPECT_EQ(movels, static_cast<size_t>(N - 1));
+  std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(glListDirectory(dir), expected) << "no temporary or other files";
+
+  // A larger limit: fewer files; the numbered files of the longer program are removed. A file
+  // of another name pattern stays.
+  std::ofstream(dir / "y_part_notes.txt") << "keep\n";
+  w->SetMaxFileBytes(4000000);
+  ASSERT_EQ(w->Write(), 1) << errors->Errors();
+  EXPECT_EQ(w->GetNumberOfFilesWritten(), 1);
+  EXPECT_EQ(glListDirectory(dir), (std::vector<std::string>{"y_part.script", "y_part_notes.txt"}));
+  EXPECT_EQ(checkSyntax(glReadFile(file), "y_part", 1000), static_cast<size_t>(N - 1));
+
+  // A cell that does not reach: an error, the earlier program stays as it was.
+  const std::string before = glReadFile(file);
+  w->SetNozzleTip(5.0, 0.0, 0.0);
+  EXPECT_EQ(w->Write(), 0);
+  EXPECT_NE(errors->Errors().find("unreachable cell set-up"), std::string::npos) << errors->Errors();
+  EXPECT_EQ(w->GetNumberOfFilesWritten(), 0);
+  EXPECT_EQ(glReadFile(file), before);
+  EXPECT_EQ(glListDirectory(dir), (std::vector<std::string>{"y_part.script", "y_part_notes.txt"}));
+  fs::remove_all(dir);
+}
+
+TEST_F(BranchingYProgram, Ur5eAndAnotherCell) {
+  ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
+  const fs::path dir = glFreshDirectory("urscript-y-ur5e");
+  vtkNew<vtkGLURScriptWriter> w;
+  vtkNew<GLTestErrorObserver> errors;
+  errors->Observe(w);
+  w->SetInputConnection(p->planner->GetOutputPort());
+  w->SetFileName((dir / "ur5e.script").string().c_str());
+  w->SetRobot("ur5e");
+  w->SetNozzleTip(0.1, -0.45, 0.25);
+  w->SetPartOnFlange(0, 0, 0.05, 0, 0, 0.3);
+  w->SetSpeedFactor(0.3);
+  ASSERT_EQ(w->Write(), 1) << errors->Errors();
+  EXPECT_EQ(w->GetUnreachableCount(), 0);
+  EXPECT_LE(w->GetMaxJointSpeedDegS(), 0.3 * 180.0 + 1e-6);
+  const std::string text = glReadFile(w->GetFileWritten(0));
+  EXPECT_NE(text.find("set_tcp(p[0, 0, 0.05, 0, 0, 0.3])"), std::string::npos);
+  fs::remove_all(dir);
+}
+
+// ---------------------------------------------------------------------------------------------
+// Errors: reported, Write() returns 0, no file (nor temporary file) left.
+
+namespace {
+struct ErrorCase {
+  vtkNew<vtkGLURScriptWriter> writer;
+  vtkNew<GLTestErrorObserver> errors;
+  fs::path dir;
+  explicit ErrorCase(const std::string& name, vtkPolyData* input) : dir(glFreshDirectory("urscript-" + name)) {
+    errors->Observe(writer);
+    writer->SetInputData(input);
+    writer->SetFileName((dir / "part.script").string().c_str());
+  }
+  ~ErrorCase() { fs::remove_all(dir); }
+  void expectError(const std::string& text) {
+    EXPECT_EQ(writer->Write(), 0) << text;
+    EXPECT_TRUE(errors->HasError()) << text;
+    EXPECT_NE(errors->Errors().find(text), std::string::npos) << errors->Errors();
+    EXPECT_EQ(writer->GetNumberOfFilesWritten(), 0);
+    EXPECT_TRUE(glListDirectory(dir).empty()) << "files left behind for: " << text;
+  }
+};
+} // namespace
+
+TEST(vtkGLURScriptWriter, BadInputIsReported) {
+  {
+    auto path = makeTestToolpath();
+    path->GetPointData()->GetArray(geolattice::arrays::Normals)->SetTuple3(7, std::nan(""), 0, 1);
+    ErrorCase c("nan", path);
+    c.expectError("toolpath point 7 has a NaN or zero normal");
+    EXPECT_EQ(c.writer->GetErrorCode(), vtkErrorCode::UserError);
+  }
+  {
+    auto path = makeTestToolpath();
+    path->GetPointData()->GetArray(geolattice::arrays::Normals)->SetTuple3(3, 0, 0, 0);
+    ErrorCase c("zero", path);
+    c.expectError("toolpath point 3 has a NaN or zero normal");
+  }
+  {
+    vtkNew<vtkPolyData> empty;
+    ErrorCase c("empty", empty);
+    c.expectError("empty toolpath");
+  }
+  {
+    auto path = makeTestToolpath();
+    path->GetPointData()->RemoveArray(geolattice::arrays::Extrusion);
+    ErrorCase c("noextrusion", path);
+    c.expectError("the toolpath has no point array Extrusion");
+  }
+  {
+    auto path = makeTestToolpath();
+    path->GetPointData()->GetArray(geolattice::arrays::MoveKind)->SetTuple1(4, 7);
+    ErrorCase c("kind", path);
+    c.expectError("toolpath point 4 has MoveKind 7");
+  }
+  {
+    ErrorCase c("robot", makeTestToolpath());
+    c.writer->SetRobot("ur6");
+    c.expectError("unknown robot 'ur6'");
+  }
+  {
+    ErrorCase c("axis", makeTestToolpath());
+    c.writer->SetNozzleAxis(0, 0, 0);
+    c.expectError("the nozzle axis must be a finite, non-zero vector");
+  }
+  {
+    ErrorCase c("speed", makeTestToolpath());
+    c.writer->SetSpeedFactor(0);
+    c.expectError("the speed factor must be in (0, 1]");
+  }
+  {
+    ErrorCase c("bytes", makeTestToolpath());
+    c.writer->SetMaxFileBytes(100);
+    c.expectError("the maximum file size must be >= 10000 bytes");
+  }
+  {
+    ErrorCase c("rate", makeTestToolpath());
+    c.writer->SetMaxFilamentRate(-1);
+    c.expectError("the maximum filament rate must be > 0");
+  }
+  {
+    ErrorCase c("blend", makeTestToolpath());
+    c.writer->SetMaxBlend(-0.1);
+    c.expectError("the maximum blend radius must be >= 0");
+  }
+  {
+    ErrorCase c("cell", makeTestToolpath());
+    c.writer->SetNozzleTip(5, 0, 0);
+    c.expectError("unreachable cell set-up");
+  }
+  {
+    ErrorCase c("nofile", makeTestToolpath());
+    c.writer->SetFileName(nullptr);
+    c.expectError("no FileName given");
+  }
+  {
+    // Unwritable: a directory that does not exist.
+    ErrorCase c("unwritable", makeTestToolpath());
+    const std::string missing = (c.dir / "no-such-dir" / "part.script").string();
+    c.writer->SetFileName(missing.c_str());
+    c.expectError("cannot create " + missing);
+    EXPECT_EQ(c.writer->GetErrorCode(), vtkErrorCode::CannotOpenFileError);
+  }
+}
+
+TEST(vtkGLURScriptWriter, UnreachablePointsAreReportedNotSkipped) {
+  // 2000 points: the solver's coarse samples are every 4th point, so a single far point (3 m
+  // away, beyond the UR5's 0.85 m reach) between two samples is unreachable while the rest of
+  // the path is reachable.
+  auto path = vtkSmartPointer<vtkPolyData>::New();
+  {
+    auto base = makeTestToolpath(1, 0.0);
+    const vtkIdType n = 2000;
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkPointData* from = base->GetPointData();
+    vtkPointData* to = path->GetPointData();
+    to->CopyAllocate(from, n);
+    for (vtkIdType i = 0; i < n; ++i) {
+      const vtkIdType j = 1 + i % (base->GetNumberOfPoints() - 1);
+      double x[3];
+      base->GetPoint(j, x);
+      if (i == 6 || i == 1001) {
+        x[0] = 3000.0;
+      }
+      points->InsertNextPoint(x);
+      to->CopyData(from, j, i);
+    }
+    path->SetPoints(points);
+  }
+  {
+    ErrorCase c("unreachable", path);
+    c.expectError("2 of 2000 toolpath points are unreachable for the ur5 in this cell (first: 6, 1001)");
+    EXPECT_EQ(c.writer->GetUnreachableCount(), 2);
+    EXPECT_EQ(c.writer->GetUnreachablePoint(0), 6);
+    EXPECT_EQ(c.writer->GetUnreachablePoint(1), 1001);
+  }
+  {
+    // AllowUnreachable: written, with a warning naming them.
+    ErrorCase c("allowed", path);
+    c.writer->AllowUnreachableOn();
+    EXPECT_EQ(c.writer->Write(), 1) << c.errors->Errors();
+    EXPECT_FALSE(c.errors->HasError()) << c.errors->Errors();
+    EXPECT_EQ(c.errors->GetWarningCount(), 1);
+    EXPECT_NE(c.errors->Warnings().find("2 of 2000 toolpath points are unreachable"), std::string::npos);
+    EXPECT_EQ(c.writer->GetUnreachableCount(), 2);
+    ASSERT_EQ(c.writer->GetNumberOfFilesWritten(), 1);
+    EXPECT_EQ(checkSyntax(glReadFile(c.writer->GetFileWritten(0)), "part", 1000), 1999u);
+  }
+}
