@@ -784,6 +784,7 @@ public:
         g.set("moves", static_cast<long long>(gcode->GetNumberOfMoves()));
         g.set("max_rotary_step_deg", gcode->GetMaxRotaryStepDeg());
         g.set("branch_flips", static_cast<long long>(gcode->GetBranchFlips()));
+        g.set("max_axis_error_deg", gcode->GetMaxAxisErrorDeg());
       }
 
       vtkNew<vtkGLWaypointCsvWriter> csv;

@@ -75,6 +75,7 @@ void vtkGLGCodeWriter::WriteData()
   this->NumberOfMoves = 0;
   this->MaxRotaryStepDeg = 0;
   this->BranchFlips = 0;
+  this->MaxAxisErrorDeg = 0;
   this->OutOfLimitsCount = 0;
   try
   {
@@ -130,6 +131,7 @@ void vtkGLGCodeWriter::WriteData()
     this->NumberOfMoves = static_cast<vtkIdType>(stats.moves);
     this->MaxRotaryStepDeg = stats.maxRotaryStepDeg;
     this->BranchFlips = static_cast<vtkIdType>(stats.branchFlips);
+    this->MaxAxisErrorDeg = stats.maxAxisErrorDeg;
   }
   catch (const gl::FileWriteError& e)
   {

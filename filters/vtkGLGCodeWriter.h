@@ -87,6 +87,8 @@ public:
   vtkIdType GetNumberOfMoves() const { return this->NumberOfMoves; }
   double GetMaxRotaryStepDeg() const { return this->MaxRotaryStepDeg; }
   vtkIdType GetBranchFlips() const { return this->BranchFlips; }
+  /// Largest nozzle-axis error introduced near the pole, where C is interpolated (degrees, < 1).
+  double GetMaxAxisErrorDeg() const { return this->MaxAxisErrorDeg; }
   vtkIdType GetOutOfLimitsCount() const { return this->OutOfLimitsCount; }
   ///@}
 
@@ -112,6 +114,7 @@ private:
   vtkIdType NumberOfMoves = 0;
   double MaxRotaryStepDeg = 0;
   vtkIdType BranchFlips = 0;
+  double MaxAxisErrorDeg = 0;
   vtkIdType OutOfLimitsCount = 0;
 };
 

@@ -4,6 +4,7 @@
 #include "program/URScriptProgram.h"
 
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cmath>
 
 namespace geolattice {
@@ -59,13 +60,17 @@ GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const 
       << " tilting-rotary table, fixed vertical nozzle\n";
   out << "G21 ; mm\nG90 ; absolute\nM83 ; relative extrusion\nG93 ; inverse-time feed\n";
   GCodeStats stats;
-  double previousC = 0, previousTilt = 0, previousE = extrusion[0];
+  // Pass 1: angles per point; points at the pole (C undefined) are marked.
+  std::vector<double> tilts(N), cs(N);
+  std::vector<char> pole(N, 0);
+  double previousC = 0;
   for (size_t i = 0; i < N; ++i) {
     if (!points[i].allFinite() || !normals[i].allFinite() || !(normals[i].norm() > 0)) {
       throw GeoLatticeError("G-code: toolpath point " + std::to_string(i) + " has a NaN position or normal");
     }
     double tilt = 0, c = 0;
     tableAngles(o.kinematics, normals[i], previousC, o.poleToleranceDeg, tilt, c);
+    pole[i] = std::abs(tilt) < o.poleToleranceDeg;
     if (tilt < o.tiltMinDeg || tilt > o.tiltMaxDeg) {
       // The other branch (c + 180, -tilt) may be inside the limits.
       const double c2 = unwrapNear(c + 180.0, previousC), t2 = -tilt;
@@ -77,6 +82,47 @@ GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const 
         ++stats.outOfLimits;
       }
     }
+    tilts[i] = tilt;
+    cs[i] = c;
+    previousC = c;
+  }
+  // Near the pole C is ill-conditioned: over each run of points within the pole band, C moves
+  // linearly from the C before the run to the C after it, and the tilt is the best one for that
+  // C (the axis is then off by at most about the band), so the table turns smoothly while it is
+  // almost flat instead of spinning between neighbouring points.
+  std::vector<char> band(N, 0);
+  for (size_t i = 0; i < N; ++i) band[i] = std::abs(tilts[i]) < o.poleBandDeg;
+  for (size_t i = 0; i < N;) {
+    if (!band[i]) {
+      ++i;
+      continue;
+    }
+    size_t j = i;
+    while (j < N && band[j]) ++j;
+    const double before = i > 0 ? cs[i - 1] : (j < N ? cs[j] : cs[i]);
+    const double after = j < N ? unwrapNear(cs[j], before) : before;
+    for (size_t k = i; k < j; ++k) {
+      const double c = before + (after - before) * static_cast<double>(k - i + 1) / static_cast<double>(j - i + 1);
+      // Best tilt for this C: rotate R_C(c)·n within the tilt plane as close to +Z as possible.
+      const Eigen::Vector3d m = Eigen::AngleAxisd(c / kDeg, Eigen::Vector3d::UnitZ()) * normals[k].normalized();
+      const double tilt = o.kinematics == TableKinematics::AC ? std::atan2(m.y(), m.z()) * kDeg
+                                                              : std::atan2(-m.x(), m.z()) * kDeg;
+      const Eigen::Vector3d up = tiltMatrix(o.kinematics, tilt) * m;
+      stats.maxAxisErrorDeg = std::max(stats.maxAxisErrorDeg, std::acos(std::clamp(up.z(), -1.0, 1.0)) * kDeg);
+      cs[k] = c;
+      tilts[k] = tilt;
+    }
+    if (j < N) {
+      const double shift = after - cs[j];  // C after the run continues from the interpolated value
+      for (size_t k = j; k < N; ++k) cs[k] += shift;
+    }
+    i = j;
+  }
+  // Pass 2: machine positions and moves.
+  double previousTilt = 0, previousE = extrusion[0];
+  previousC = cs[0];
+  for (size_t i = 0; i < N; ++i) {
+    const double tilt = tilts[i], c = cs[i];
     const Eigen::Matrix3d r = tiltMatrix(o.kinematics, tilt) *
                               Eigen::AngleAxisd(c / kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     const Eigen::Vector3d x = o.pivot + r * (points[i] + o.partOffset);

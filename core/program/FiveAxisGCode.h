@@ -9,7 +9,8 @@
 /// ρ = |n_xy|). The second branch is (c + π, −tilt). The branch is chosen once per path segment
 /// by continuity and the tilt limits; C is unwrapped (no ±180° jumps). Near the pole (ρ below
 /// poleTolerance) C is undefined: it keeps its previous value, so the table never spins when the
-/// tilt is ~0. Machine position: X Y Z = pivot + R_tilt·R_C·(p + partOffset), where partOffset
+/// tilt is ~0, and within poleBandDeg of the pole C is interpolated over the run (the axis is then
+/// off by less than the band, reported as maxAxisErrorDeg). Machine position: X Y Z = pivot + R_tilt·R_C·(p + partOffset), where partOffset
 /// is the part frame origin relative to the rotary centre on the table and pivot the machine
 /// position of the intersection of the two rotary axes. Feed in inverse time (G93): F = 1 / t
 /// per move with t the toolpath segment time, so rotary moves keep the planned timing.
@@ -29,6 +30,10 @@ struct GCodeOptions {
   Eigen::Vector3d partOffset = Eigen::Vector3d::Zero();  ///< mm, in the table (C) frame
   double tiltMinDeg = -120.0, tiltMaxDeg = 120.0;        ///< A or B limits
   double poleToleranceDeg = 0.01;                        ///< |tilt| below this: C is kept
+  /// Near the pole C is ill-conditioned (a 0.5° tilt in a random direction asks for any C).
+  /// Within this band C is interpolated between the C before and after the run of such points
+  /// and the tilt is chosen for that C, which leaves an axis error below the band.
+  double poleBandDeg = 1.0;
 };
 
 struct GCodeStats {
@@ -36,6 +41,7 @@ struct GCodeStats {
   size_t outOfLimits = 0;     ///< points whose tilt exceeds the limits on both branches
   double maxRotaryStepDeg = 0;
   size_t branchFlips = 0;
+  double maxAxisErrorDeg = 0;  ///< from the pole band (0 outside it)
 };
 
 /// Rotary angles (degrees) for one axis direction: (tilt, c) of the branch nearest to

@@ -52,6 +52,29 @@ TEST(FiveAxisGCode, NoSpinNearThePole) {
   }
 }
 
+TEST(FiveAxisGCode, TableTurnsSmoothlyNearThePole) {
+  // Nearly vertical axes (tilt 0.3° in random directions), as on a flat first layer: C would
+  // jump by up to 180° between neighbours; within the pole band it is interpolated instead.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(0, 2 * M_PI);
+  std::vector<Eigen::Vector3d> p, n;
+  std::vector<double> e, f;
+  std::vector<int> kind;
+  for (int i = 0; i < 200; ++i) {
+    const double a = u(rng), t = (i < 100 ? 0.3 : 0.3 + 0.2 * (i - 100)) * M_PI / 180;  // then a tilt ramp
+    p.push_back(Eigen::Vector3d(i * 0.5, 0, 0.6));
+    n.push_back(Eigen::Vector3d(std::sin(t) * std::cos(i < 100 ? a : 0.3), std::sin(t) * std::sin(i < 100 ? a : 0.3), std::cos(t)));
+    e.push_back(0.01 * i);
+    f.push_back(10);
+    kind.push_back(0);
+  }
+  std::ostringstream g;
+  GCodeOptions o;
+  const GCodeStats s = writeFiveAxisGCode(p, n, e, f, kind, o, g);
+  EXPECT_LT(s.maxAxisErrorDeg, o.poleBandDeg);
+  EXPECT_LT(s.maxRotaryStepDeg, 5.0);  // spread over the 100 flat points
+}
+
 TEST(FiveAxisGCode, ProgramAndCsv) {
   std::vector<Eigen::Vector3d> p, n;
   std::vector<double> e, f;
