@@ -1,6 +1,7 @@
 #include "VerifyCommand.h"
 
 #include "CliOptions.h"
+#include "ErrorCapture.h"
 #include "common/Error.h"
 #include "vtkGLArrayNames.h"
 #include "vtkGLCollisionVerifier.h"
@@ -140,27 +141,12 @@ int runVerifyCommand(int argc, char** argv)
   verifier->SetInputData(data);
   verifier->SetTimeArrayName(toolpath ? arrays::PointIndex : arrays::PrintOrder);
   nozzle.apply(verifier.Get());
-  std::string error;
-  vtkNew<vtkCallbackCommand> onError;
-  onError->SetClientData(&error);
-  onError->SetCallback([](vtkObject*, unsigned long, void* self, void* callData) {
-    auto* message = static_cast<std::string*>(self);
-    if (message->empty() && callData)
-    {
-      std::string text = static_cast<const char*>(callData);
-      const size_t paren = text.find("): ");
-      *message = paren == std::string::npos ? text : text.substr(paren + 3);
-      while (!message->empty() && (message->back() == '\n' || message->back() == ' '))
-      {
-        message->pop_back();
-      }
-    }
-  });
-  verifier->AddObserver(vtkCommand::ErrorEvent, onError);
+  ErrorCapture errors;
+  errors.Watch(verifier);
   verifier->Update();
-  if (!error.empty())
+  if (!errors.Message.empty())
   {
-    throw GeoLatticeError("verify: " + error);
+    throw GeoLatticeError("verify: " + errors.Message);
   }
   vtkPolyData* out = verifier->GetOutput();
   const long long stations = static_cast<long long>(fieldNumber(out, arrays::CollisionStations));

@@ -6,6 +6,7 @@
 
 #include "common/Error.h"
 #include "CliOptions.h"
+#include "ErrorCapture.h"
 #include "SequenceCsv.h"
 #include "ToolpathOutput.h"
 #include "VerifyCommand.h"
@@ -328,49 +329,6 @@ Options parseArguments(int argc, char** argv)
   // Parameter ranges are checked by the filters themselves, with the same messages as in ParaView.
   return o;
 }
-
-/// Captures the first error an algorithm reports (instead of VTK's multi-line console text).
-class ErrorCapture
-{
-public:
-  void Watch(vtkObject* object)
-  {
-    vtkNew<vtkCallbackCommand> cb;
-    cb->SetClientData(this);
-    cb->SetCallback([](vtkObject*, unsigned long, void* self, void* callData) {
-      auto* me = static_cast<ErrorCapture*>(self);
-      if (me->Message.empty() && callData)
-      {
-        me->Message = Clean(static_cast<const char*>(callData));
-      }
-    });
-    object->AddObserver(vtkCommand::ErrorEvent, cb);
-  }
-  std::string Message;
-
-private:
-  // "ERROR: In file, line N\nvtkClass (0x...): text\n\n" -> "text"
-  static std::string Clean(std::string text)
-  {
-    const size_t paren = text.find("): ");
-    if (paren != std::string::npos)
-    {
-      text = text.substr(paren + 3);
-    }
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    {
-      text.pop_back();
-    }
-    for (char& c : text)
-    {
-      if (c == '\n')
-      {
-        c = ' ';
-      }
-    }
-    return text;
-  }
-};
 
 /// Swallows VTK's console output; the messages that matter reach the CLI through ErrorCapture.
 class SilentOutputWindow : public vtkOutputWindow
@@ -834,7 +792,7 @@ private:
     {
       std::cout << "geolattice: " << stage << " ..." << std::flush;
     }
-    ErrorCapture errors;
+    geolattice::ErrorCapture errors;
     for (vtkAlgorithm* a : algorithms)
     {
       errors.Watch(a);
@@ -877,7 +835,7 @@ private:
   /// empty on success.
   static std::string RunWriter(vtkWriter* writer)
   {
-    ErrorCapture errors;
+    geolattice::ErrorCapture errors;
     errors.Watch(writer);
     const int ok = writer->Write();
     if (errors.Message.empty() && !ok)
