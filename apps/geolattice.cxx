@@ -726,7 +726,17 @@ public:
         Opt.program.applyGCode(gcode.Get());
         gcode->SetFileName(gcodePath.string().c_str());
         const std::string error = RunWriter(gcode);
-        if (!error.empty())
+        if (!error.empty() && gcode->GetOutOfLimitsCount() > 0)
+        {
+          // The table cannot tilt far enough for some points (axes pointing down, e.g. under an
+          // overhang the curved layers print sideways): no G-code, but the robot program and the
+          // rest stay valid; the report names the points.
+          g.set("written", false);
+          g.set("error", error);
+          g.set("out_of_limits", static_cast<long long>(gcode->GetOutOfLimitsCount()));
+          GCodeSkipped = error;
+        }
+        else if (!error.empty())
         {
           RemoveFiles(script, {});
           if (!Opt.quiet)
@@ -735,14 +745,18 @@ public:
           }
           throw gl::GeoLatticeError("program: " + error + " (--tilt-limits, or --gcode none)");
         }
-        g.set("file", kGCodeFile);
-        g.set("pivot_mm", std::vector<double>(Opt.program.gcodePivot, Opt.program.gcodePivot + 3));
-        g.set("part_offset_mm", std::vector<double>(Opt.program.gcodeOffset, Opt.program.gcodeOffset + 3));
-        g.set("tilt_limits_deg", std::vector<double>(Opt.program.tiltLimits, Opt.program.tiltLimits + 2));
-        g.set("moves", static_cast<long long>(gcode->GetNumberOfMoves()));
-        g.set("max_rotary_step_deg", gcode->GetMaxRotaryStepDeg());
-        g.set("branch_flips", static_cast<long long>(gcode->GetBranchFlips()));
-        g.set("max_axis_error_deg", gcode->GetMaxAxisErrorDeg());
+        else
+        {
+          g.set("written", true);
+          g.set("file", kGCodeFile);
+          g.set("pivot_mm", std::vector<double>(Opt.program.gcodePivot, Opt.program.gcodePivot + 3));
+          g.set("part_offset_mm", std::vector<double>(Opt.program.gcodeOffset, Opt.program.gcodeOffset + 3));
+          g.set("tilt_limits_deg", std::vector<double>(Opt.program.tiltLimits, Opt.program.tiltLimits + 2));
+          g.set("moves", static_cast<long long>(gcode->GetNumberOfMoves()));
+          g.set("max_rotary_step_deg", gcode->GetMaxRotaryStepDeg());
+          g.set("branch_flips", static_cast<long long>(gcode->GetBranchFlips()));
+          g.set("max_axis_error_deg", gcode->GetMaxAxisErrorDeg());
+        }
       }
 
       vtkNew<vtkGLWaypointCsvWriter> csv;
@@ -763,9 +777,15 @@ public:
       {
         this->Written.push_back(script->GetFileWritten(k));
       }
-      if (Opt.program.gcode != "none")
+      if (Opt.program.gcode != "none" && GCodeSkipped.empty())
       {
         this->Written.push_back(gcodePath.string());
+      }
+      if (!GCodeSkipped.empty())
+      {
+        std::error_code ec;
+        std::filesystem::remove(gcodePath, ec);  // of an earlier run: it would not match this toolpath
+        std::cout << "geolattice: warning: no G-code written: " << GCodeSkipped << "\n";
       }
       this->Written.push_back(csvPath.string());
       s.set("csv", kWaypointFile);
@@ -880,6 +900,7 @@ private:
 
   const Options& Opt;
   double LastSeconds = 0;
+  std::string GCodeSkipped;  ///< why the optional G-code was not written (empty: written or not asked for)
   std::vector<std::string> Written;
 };
 

@@ -215,6 +215,22 @@ class CliErrorTest(unittest.TestCase):
         self.expect_error(cube + ["--tilt-limits", "30,-30"], "program", "tilt limits", "--gcode none")
         self.assertEqual([n for n in self.program_files() if n.endswith(".script")], [])
 
+    def test_gcode_out_of_tilt_limits_is_reported_not_fatal(self):
+        # Flat layers need tilt 0; a table limited to 5..10 degrees cannot do it. The G-code is
+        # an optional output: the run succeeds, writes no G-code and names the points.
+        result = self.run_cli(os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--replay-steps", "0",
+                              "--tilt-limits", "5,10", "-o", self.out, "-q")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("no G-code written", result.stdout)
+        import json
+        with open(os.path.join(self.out, "report.json")) as f:
+            gcode = json.load(f)["program"]["gcode"]
+        self.assertFalse(gcode["written"])
+        self.assertGreater(gcode["out_of_limits"], 0)
+        self.assertIn("first:", gcode["error"])
+        self.assertFalse(os.path.exists(os.path.join(self.out, "toolpath.gcode")))
+        self.assertTrue(any(n.endswith(".script") for n in os.listdir(self.out)))
+
     def test_program_files_split_and_replaced(self):
         cube = [os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--replay-steps", "0", "-o", self.out, "-q"]
 
