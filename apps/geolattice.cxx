@@ -702,6 +702,8 @@ public:
       s.set("files", files);
       s.set("ik_branch", script->GetIKBranch());
       s.set("max_joint_step_deg", script->GetMaxJointStepDeg());
+      s.set("max_tip_error_m", script->GetMaxTipError());
+      s.set("max_axis_error_deg", script->GetMaxAxisErrorDeg());
       auto& singularity = s.object("min_singularity");
       singularity.set("shoulder_m", script->GetMinShoulderSingularity());
       singularity.set("elbow", script->GetMinElbowSingularity());

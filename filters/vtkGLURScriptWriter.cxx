@@ -116,6 +116,8 @@ void vtkGLURScriptWriter::ResetResults()
   this->NumberOfWaypoints = 0;
   this->NumberOfMoves = 0;
   this->MaxJointStepDeg = 0;
+  this->MaxTipError = 0;
+  this->MaxAxisErrorDeg = 0;
   this->MaxJointSpeedDegS = 0;
   std::fill(this->MinSingularity, this->MinSingularity + 3, 0.0);
   this->Duration = 0;
@@ -193,6 +195,8 @@ void vtkGLURScriptWriter::WriteData()
     std::sort(this->Unreachable.begin(), this->Unreachable.end());
     this->IKBranch = robotPath.branch;
     this->MaxJointStepDeg = robotPath.maxJointStepDeg;
+    this->MaxTipError = robotPath.maxTipError;
+    this->MaxAxisErrorDeg = robotPath.maxAxisErrorDeg;
     this->MinSingularity[0] = robotPath.minSingularity.shoulder;
     this->MinSingularity[1] = robotPath.minSingularity.elbow;
     this->MinSingularity[2] = robotPath.minSingularity.wrist;

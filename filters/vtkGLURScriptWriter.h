@@ -153,6 +153,10 @@ public:
   vtkIdType GetUnreachableCount() const { return static_cast<vtkIdType>(this->Unreachable.size()); }
   vtkIdType GetUnreachablePoint(vtkIdType i) const;
   double GetMaxJointStepDeg() const { return this->MaxJointStepDeg; }
+  /// Forward-kinematics check of the written joints: largest distance of a toolpath point from
+  /// the nozzle tip (m) and largest angle between its axis and the nozzle axis (degrees).
+  double GetMaxTipError() const { return this->MaxTipError; }
+  double GetMaxAxisErrorDeg() const { return this->MaxAxisErrorDeg; }
   double GetMaxJointSpeedDegS() const { return this->MaxJointSpeedDegS; }
   double GetMinShoulderSingularity() const { return this->MinSingularity[0]; }
   double GetMinElbowSingularity() const { return this->MinSingularity[1]; }
@@ -194,6 +198,8 @@ private:
   vtkIdType NumberOfWaypoints = 0;
   vtkIdType NumberOfMoves = 0;
   double MaxJointStepDeg = 0;
+  double MaxTipError = 0;
+  double MaxAxisErrorDeg = 0;
   double MaxJointSpeedDegS = 0;
   double MinSingularity[3] = { 0, 0, 0 };
   double Duration = 0;

@@ -197,6 +197,11 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
       qi = havePrevious ? previous : JointVector{};
     } else {
       const SingularityDistance sd = singularityDistance(robot, qi, f);
+      // Independent check of the emitted joints: forward kinematics puts p at the tip, n along the nozzle.
+      const Isometry part = forwardKinematics(robot, qi) * cell.partOnFlange;
+      path.maxTipError = std::max(path.maxTipError, (part * (cell.partScale * points[i]) - cell.nozzleTip).norm());
+      const double c = (part.linear() * normals[i].normalized()).dot(cell.nozzleAxis);
+      path.maxAxisErrorDeg = std::max(path.maxAxisErrorDeg, std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI);
       path.minSingularity.shoulder = std::min(path.minSingularity.shoulder, sd.shoulder);
       path.minSingularity.elbow = std::min(path.minSingularity.elbow, sd.elbow);
       path.minSingularity.wrist = std::min(path.minSingularity.wrist, sd.wrist);

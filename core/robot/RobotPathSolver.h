@@ -34,6 +34,8 @@ struct RobotPath {
   int branch = -1;                   ///< IK branch used (inverseKinematicsBranch)
   double maxJointStepDeg = 0;        ///< largest change of any joint between consecutive points
   SingularityDistance minSingularity;  ///< smallest distances along the path
+  double maxTipError = 0;            ///< m: |FK(q)·partOnFlange·p − nozzle tip| over reachable points
+  double maxAxisErrorDeg = 0;        ///< angle between the placed axis n and the nozzle axis
   double seconds = 0;
 };
 
