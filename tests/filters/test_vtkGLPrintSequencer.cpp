@@ -2,6 +2,7 @@
 // collides, A4 does not, as the collision verifier confirms), the end-to-end pipeline on the
 // branching Y (reader -> ... -> lattice -> skeleton -> sequencer -> verifier), and bad input.
 #include "GLTestErrorObserver.h"
+#include "GLTestYPipeline.h"
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLCollisionVerifier.h"
@@ -533,37 +534,12 @@ TEST(vtkGLPrintSequencer, BadInputIsReported) {
 
 class BranchingYPipeline : public ::testing::Test {
 protected:
-  struct Pipeline {
-    vtkNew<vtkGLMeshReader> reader;
-    vtkNew<vtkGLPlaceOnPlatform> place;
-    vtkNew<vtkGLTetrahedralizeSurface> tets;
-    vtkNew<vtkGLGeodesicDistanceFields> gdf;
-    vtkNew<vtkGLCurvedLayerSlicer> slicer;
-    vtkNew<vtkGLLatticeInfill> lattice;
-    vtkNew<vtkGLSkeletonTree> skeleton;
-    vtkNew<GLTestErrorObserver> errors;
-  };
+  using Pipeline = GLTestYPipeline;
+
   static std::unique_ptr<Pipeline> p;
 
   static void SetUpTestSuite() {
     p = std::make_unique<Pipeline>();
-    p->reader->SetFileName((std::string(GEOLATTICE_TESTDATA) + "/y_shape.obj").c_str());
-    p->place->SetInputConnection(p->reader->GetOutputPort());
-    p->tets->SetInputConnection(p->place->GetOutputPort());
-    p->tets->SetTargetEdgeLength(2.0); // coarse
-    p->gdf->SetInputConnection(p->tets->GetOutputPort());
-    p->slicer->SetInputConnection(p->gdf->GetOutputPort());
-    p->slicer->SetLayerInterval(1.0);
-    p->slicer->SetFirstLayerOffset(0.5);
-    p->lattice->SetInputConnection(p->slicer->GetOutputPort(0));
-    p->lattice->SetAlphaWidth(4.0);
-    p->lattice->SetBetaWidth(4.0);
-    p->skeleton->SetInputConnection(0, p->lattice->GetOutputPort());
-    p->skeleton->SetInputConnection(1, p->gdf->GetOutputPort());
-    for (vtkAlgorithm* a : std::initializer_list<vtkAlgorithm*>{p->reader, p->place, p->tets, p->gdf, p->slicer,
-                                                                 p->lattice, p->skeleton}) {
-      p->errors->Observe(a);
-    }
     p->skeleton->Update();
   }
   static void TearDownTestSuite() { p.reset(); }

@@ -5,6 +5,7 @@
 // and errors (unwritable path, NaN normals, empty toolpath, missing arrays, bad parameters,
 // unreachable points and cells) with nothing written.
 #include "GLTestErrorObserver.h"
+#include "GLTestYPipeline.h"
 #include "GLTestFiles.h"
 #include "GLTestToolpath.h"
 
@@ -164,44 +165,12 @@ TEST(vtkGLURScriptWriter, SmallToolpathInOneFile) {
 
 class BranchingYProgram : public ::testing::Test {
 protected:
-  struct Pipeline {
-    vtkNew<vtkGLMeshReader> reader;
-    vtkNew<vtkGLPlaceOnPlatform> place;
-    vtkNew<vtkGLTetrahedralizeSurface> tets;
-    vtkNew<vtkGLGeodesicDistanceFields> gdf;
-    vtkNew<vtkGLCurvedLayerSlicer> slicer;
-    vtkNew<vtkGLLatticeInfill> lattice;
-    vtkNew<vtkGLSkeletonTree> skeleton;
-    vtkNew<vtkGLPrintSequencer> sequencer;
-    vtkNew<vtkGLToolpathPlanner> planner;
-    vtkNew<GLTestErrorObserver> errors;
-  };
+  using Pipeline = GLTestYPipeline;
+
   static std::unique_ptr<Pipeline> p;
 
   static void SetUpTestSuite() {
     p = std::make_unique<Pipeline>();
-    p->reader->SetFileName((std::string(GEOLATTICE_TESTDATA) + "/y_shape.obj").c_str());
-    p->place->SetInputConnection(p->reader->GetOutputPort());
-    p->tets->SetInputConnection(p->place->GetOutputPort());
-    p->tets->SetTargetEdgeLength(2.0); // coarse
-    p->gdf->SetInputConnection(p->tets->GetOutputPort());
-    p->slicer->SetInputConnection(p->gdf->GetOutputPort());
-    p->slicer->SetLayerInterval(1.0);
-    p->slicer->SetFirstLayerOffset(0.5);
-    p->lattice->SetInputConnection(p->slicer->GetOutputPort(0));
-    p->lattice->SetAlphaWidth(4.0);
-    p->lattice->SetBetaWidth(4.0);
-    p->skeleton->SetInputConnection(0, p->lattice->GetOutputPort());
-    p->skeleton->SetInputConnection(1, p->gdf->GetOutputPort());
-    p->sequencer->SetInputConnection(0, p->lattice->GetOutputPort());
-    p->sequencer->SetInputConnection(1, p->skeleton->GetOutputPort());
-    p->sequencer->SetNozzleAngle(45.0);
-    p->planner->SetInputConnection(0, p->sequencer->GetOutputPort(0));
-    p->planner->SetInputConnection(1, p->skeleton->GetOutputPort());
-    for (vtkAlgorithm* a : std::initializer_list<vtkAlgorithm*>{p->reader, p->place, p->tets, p->gdf, p->slicer,
-                                                                 p->lattice, p->skeleton, p->sequencer, p->planner}) {
-      p->errors->Observe(a);
-    }
     p->planner->Update();
   }
   static void TearDownTestSuite() { p.reset(); }
