@@ -51,6 +51,7 @@ bool NozzleOptions::parse(const std::string& flag, const std::function<std::stri
     : flag == "--nozzle-length"            ? &length
     : flag == "--holder-radius"            ? &holderRadius
     : flag == "--tip-clearance"            ? &tipClearance
+    : flag == "--tip-face-radius"          ? &tipFaceRadius
     : flag == "--sample-spacing"           ? &sampleSpacing
                                            : nullptr;
   if (!target)
@@ -68,6 +69,7 @@ void NozzleOptions::report(JsonObject& s) const
   s.set("nozzle_length_mm", length);
   s.set("holder_radius_mm", holderRadius);
   s.set("tip_clearance_mm", tipClearance);
+  s.set("tip_face_radius_mm", tipFaceRadius);
   s.set("sample_spacing_mm", sampleSpacing);
 }
 
@@ -100,6 +102,9 @@ bool ToolpathCliOptions::parse(const std::string& flag, const std::function<std:
     : flag == "--lift"                      ? &lift
     : flag == "--retraction"                ? &retraction
     : flag == "--tooth-length"              ? &toothLength
+    : flag == "--max-segment"               ? &maxSegment
+    : flag == "--max-tilt"                  ? &maxTilt
+    : flag == "--tilt-blend"                ? &tiltBlend
                                             : nullptr;
   if (!target)
   {
@@ -123,6 +128,9 @@ void ToolpathCliOptions::report(JsonObject& s) const
   s.set("lift_mm", lift);
   s.set("retraction_mm", retraction);
   s.set("tooth_length_mm", toothLength);
+  s.set("max_segment_mm", maxSegment);
+  s.set("max_tilt_deg", maxTilt);
+  s.set("tilt_blend_mm", tiltBlend);
   s.set("support_perimeter", perimeter);
 }
 
@@ -172,6 +180,7 @@ bool ProgramCliOptions::parse(const std::string& flag, const std::function<std::
   else if (flag == "--speed-factor") speedFactor = parseNumber(flag, value());
   else if (flag == "--max-filament-rate") maxFilamentRate = parseNumber(flag, value());
   else if (flag == "--max-blend") maxBlend = parseNumber(flag, value());
+  else if (flag == "--max-joint-step") maxJointStep = parseNumber(flag, value());
   else if (flag == "--allow-unreachable") allowUnreachable = true;
   else if (flag == "--gcode")
   {
@@ -199,6 +208,7 @@ void ProgramCliOptions::report(JsonObject& s) const
   s.set("speed_factor", speedFactor);
   s.set("max_filament_rate_mm_s", maxFilamentRate);
   s.set("max_blend_m", maxBlend);
+  s.set("max_joint_step_limit_deg", maxJointStep);
   s.set("allow_unreachable", allowUnreachable);
 }
 

@@ -30,24 +30,34 @@ struct NozzleOptions {
   double length = 0.0;
   double holderRadius = 0.0;
   double tipClearance = 0.1;
+  double tipFaceRadius = 0.3;
   double sampleSpacing = 1.0;
 
-  /// Consumes --nozzle-angle, --nozzle-length, --holder-radius, --tip-clearance and
-  /// --sample-spacing (value() returns the option's argument); false for any other flag.
+  /// Consumes --nozzle-angle, --nozzle-length, --holder-radius, --tip-clearance,
+  /// --tip-face-radius and --sample-spacing (value() returns the option's argument); false for
+  /// any other flag.
   bool parse(const std::string& flag, const std::function<std::string()>& value);
 
-  /// Sets the same-named properties of vtkGLPrintSequencer or vtkGLCollisionVerifier.
+  /// Sets the nozzle properties of vtkGLPrintSequencer, vtkGLCollisionVerifier or
+  /// vtkGLToolpathPlanner.
   template <class Filter>
-  void apply(Filter* f) const {
+  void applyNozzle(Filter* f) const {
     f->SetNozzleAngle(angle);
     f->SetNozzleLength(length);
     f->SetHolderRadius(holderRadius);
     f->SetTipClearance(tipClearance);
+    f->SetTipFaceRadius(tipFaceRadius);
+  }
+
+  /// The nozzle and the sample spacing of vtkGLPrintSequencer or vtkGLCollisionVerifier.
+  template <class Filter>
+  void apply(Filter* f) const {
+    applyNozzle(f);
     f->SetSampleSpacing(sampleSpacing);
   }
 
-  /// Writes nozzle_angle_deg, nozzle_length_mm, holder_radius_mm, tip_clearance_mm and
-  /// sample_spacing_mm into a report section.
+  /// Writes nozzle_angle_deg, nozzle_length_mm, holder_radius_mm, tip_clearance_mm,
+  /// tip_face_radius_mm and sample_spacing_mm into a report section.
   void report(JsonObject& section) const;
 };
 
@@ -64,12 +74,15 @@ struct ToolpathCliOptions {
   double lift = 2.0;
   double retraction = 1.0;
   double toothLength = 0.0;
+  double maxSegment = 1.0;
+  double maxTilt = 15.0;
+  double tiltBlend = 5.0;
   bool perimeter = true;
   int replaySteps = 50;
 
   /// Consumes --path-width, --filament-diameter, --flow, --print-speed, --air-speed,
   /// --thickness-cap, --max-turn, --safe-margin, --lift, --retraction, --tooth-length,
-  /// --no-perimeter and --replay-steps (an integer >= 0, else UsageError); false for any other flag.
+  /// --max-segment, --max-tilt, --tilt-blend, --no-perimeter and --replay-steps (an integer >= 0, else UsageError); false for any other flag.
   bool parse(const std::string& flag, const std::function<std::string()>& value);
 
   /// Sets the properties of vtkGLToolpathPlanner.
@@ -86,12 +99,16 @@ struct ToolpathCliOptions {
     f->SetLift(lift);
     f->SetRetraction(retraction);
     f->SetToothLength(toothLength);
+    f->SetMaxSegmentLength(maxSegment);
+    f->SetMaxAxisTilt(maxTilt);
+    f->SetTiltBlendLength(tiltBlend);
     f->SetSupportPerimeter(perimeter);
   }
 
   /// Writes the parameters (path_width_mm, filament_diameter_mm, flow, print_speed_mm_s,
   /// air_speed_mm_s, thickness_cap, max_turn_deg, safe_margin_mm, lift_mm, retraction_mm,
-  /// tooth_length_mm, support_perimeter) into a report section.
+  /// tooth_length_mm, max_segment_mm, max_tilt_deg, tilt_blend_mm, support_perimeter) into a
+  /// report section.
   void report(JsonObject& section) const;
 };
 
@@ -106,6 +123,7 @@ struct ProgramCliOptions {
   double speedFactor = 0.5;
   double maxFilamentRate = 5.0;                    ///< mm/s of filament at 10 V
   double maxBlend = 0.0005;                        ///< m
+  double maxJointStep = 20.0;                      ///< degrees
   bool allowUnreachable = false;
   std::string gcode = "ac";                        ///< ac | bc | none
   double gcodePivot[3] = {0.0, 0.0, 0.0};          ///< mm
@@ -114,7 +132,7 @@ struct ProgramCliOptions {
 
   /// Consumes --robot (ur5 | ur5e), --nozzle-tip X,Y,Z, --nozzle-axis X,Y,Z, --part-offset Z,
   /// --part-on-flange X,Y,Z,RX,RY,RZ (not both of these two), --max-script-bytes (a whole number
-  /// >= 10000), --speed-factor, --max-filament-rate, --max-blend, --allow-unreachable, --gcode
+  /// >= 10000), --speed-factor, --max-filament-rate, --max-blend, --max-joint-step, --allow-unreachable, --gcode
   /// (ac | bc | none), --gcode-pivot X,Y,Z, --gcode-offset X,Y,Z and --tilt-limits MIN,MAX;
   /// UsageError for a malformed value; false for any other flag.
   bool parse(const std::string& flag, const std::function<std::string()>& value);
@@ -130,6 +148,7 @@ struct ProgramCliOptions {
     w->SetSpeedFactor(speedFactor);
     w->SetMaxFilamentRate(maxFilamentRate);
     w->SetMaxBlend(maxBlend);
+    w->SetMaxJointStep(maxJointStep);
     w->SetAllowUnreachable(allowUnreachable);
   }
 
@@ -143,7 +162,8 @@ struct ProgramCliOptions {
   }
 
   /// Writes robot, nozzle_tip_m, nozzle_axis, part_on_flange, max_script_bytes, speed_factor,
-  /// max_filament_rate_mm_s, max_blend_m and allow_unreachable into a report section.
+  /// max_filament_rate_mm_s, max_blend_m, max_joint_step_limit_deg and allow_unreachable into a
+  /// report section.
   void report(JsonObject& section) const;
 
 private:

@@ -61,6 +61,7 @@ void writeVtkXml(vtkDataObject* data, const std::string& path) {
       vtkNew<vtkXMLUnstructuredGridWriter> writer;
       writer->SetInputData(grid);
       writer->SetDataModeToBinary();
+      writer->SetCompressorTypeToLZ4();
       writer->SetFileName(tmp.c_str());
       return writer->Write() == 1;
     }
@@ -68,6 +69,7 @@ void writeVtkXml(vtkDataObject* data, const std::string& path) {
       vtkNew<vtkXMLPolyDataWriter> writer;
       writer->SetInputData(poly);
       writer->SetDataModeToBinary();
+      writer->SetCompressorTypeToLZ4();
       writer->SetFileName(tmp.c_str());
       return writer->Write() == 1;
     }

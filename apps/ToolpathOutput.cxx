@@ -146,6 +146,11 @@ void reportToolpath(vtkDataObject* toolpath, JsonObject& s)
   s.set("perimeter_loops", count(arrays::ToolpathPerimeterLoops));
   s.set("perimeter_teeth", count(arrays::ToolpathPerimeterTeeth));
   s.set("rotation_steps", count(arrays::ToolpathRotationSteps));
+  s.set("subdivision_points", count(arrays::ToolpathSubdivisionPoints));
+  s.set("colliding_stations_along_normal", count(arrays::ToolpathCollidingStations));
+  s.set("tilted_stations", count(arrays::ToolpathTiltedStations));
+  s.set("uncleared_stations", count(arrays::ToolpathUnclearedStations));
+  s.set("max_axis_tilt_deg", fieldNumber(toolpath, arrays::ToolpathMaxAxisTilt));
   s.set("thickness_dev_min", fieldNumber(toolpath, arrays::ToolpathThicknessDeviation, 0));
   s.set("thickness_dev_max", fieldNumber(toolpath, arrays::ToolpathThicknessDeviation, 1));
   s.set("capped_vertices", count(arrays::ToolpathCappedVertices));

@@ -57,6 +57,7 @@ void readNozzleFromReport(const std::filesystem::path& report, NozzleOptions& n)
   read("nozzle_length_mm", n.length);
   read("holder_radius_mm", n.holderRadius);
   read("tip_clearance_mm", n.tipClearance);
+  read("tip_face_radius_mm", n.tipFaceRadius);
   read("sample_spacing_mm", n.sampleSpacing);
 }
 
@@ -118,6 +119,7 @@ int runVerifyCommand(int argc, char** argv)
     if (flag == "--nozzle-length") nozzle.length = cli.length;
     if (flag == "--holder-radius") nozzle.holderRadius = cli.holderRadius;
     if (flag == "--tip-clearance") nozzle.tipClearance = cli.tipClearance;
+    if (flag == "--tip-face-radius") nozzle.tipFaceRadius = cli.tipFaceRadius;
     if (flag == "--sample-spacing") nozzle.sampleSpacing = cli.sampleSpacing;
   }
 

@@ -138,6 +138,8 @@ Options:
   --nozzle-length MM      cone length; above it the holder (0 = cone only)           [0]
   --holder-radius MM      radius of the holder cylinder above the nozzle length      [0]
   --tip-clearance MM      ignore material at most this high above the nozzle tip     [0.1]
+  --tip-face-radius MM    ignore material this close to the tip (under the nozzle's
+                          flat face, which presses the bead)                          [0.3]
   --sample-spacing MM     spacing of the material samples tested for collisions      [1]
  Toolpath (paper Section 3.2: Euler tours, thickness Eq. 15, extrusion Eq. 14, air moves):
   --path-width MM         path (bead) width w                                        [0.6]
@@ -147,6 +149,10 @@ Options:
   --air-speed MM/S        nozzle feed rate of air moves                              [50]
   --thickness-cap L       layer thickness capped at L x the layer interval (Eq. 15)  [1.5]
   --max-turn DEG          largest nozzle axis change between points (rotation steps) [5]
+  --max-segment MM        subdivide longer path segments (0 = never)                 [1]
+  --max-tilt DEG          largest tilt of the nozzle axis off the layer normal where
+                          the normal would hit earlier material (0 = never tilt)     [15]
+  --tilt-blend MM         path length over which such a tilt fades out               [5]
   --safe-margin MM        margin of the safe box air moves travel on (Fig. 18)       [5]
   --lift MM               lift along the axis for a hop onto an upper sub-graph      [2]
   --retraction MM         filament retracted before each air move, primed after it   [1]
@@ -169,6 +175,8 @@ Options:
   --speed-factor F        fraction of the joint speed limits used, in (0, 1]         [0.5]
   --max-filament-rate MM/S  filament rate at analog output 0 level 1 (10 V)          [5]
   --max-blend M           largest movel blend radius (m)                          [0.0005]
+  --max-joint-step DEG    largest joint change between points; the joint path is
+                          re-planned around larger ones, any left is an error        [20]
   --allow-unreachable     write the program even if points are unreachable (the robot
                           holds still there; for simulation). Default: error, no program
   --gcode KIN             5-axis G-code table kinematics: ac | bc | none              [ac]
@@ -338,6 +346,51 @@ public:
   vtkTypeMacro(SilentOutputWindow, vtkOutputWindow);
   void DisplayText(const char*) override {}
 };
+
+/// While alive, prints " 25%", " 50%", " 75%" on the current stage line as the progress events of
+/// `algorithm` pass them (the long stages; nothing when disabled, e.g. with -q).
+class ProgressPrinter
+{
+public:
+  ProgressPrinter(vtkAlgorithm* algorithm, bool enabled)
+    : Algorithm(enabled ? algorithm : nullptr)
+  {
+    if (this->Algorithm)
+    {
+      this->Command->SetClientData(&this->Next);
+      this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
+        int& next = *static_cast<int*>(client);
+        const double p = call ? *static_cast<double*>(call) : 0.0;
+        for (; next <= 3 && p >= 0.25 * next; ++next)
+        {
+          std::cout << " " << 25 * next << "%" << std::flush;
+        }
+      });
+      this->Tag = this->Algorithm->AddObserver(vtkCommand::ProgressEvent, this->Command);
+    }
+  }
+  ~ProgressPrinter()
+  {
+    if (this->Algorithm)
+    {
+      this->Algorithm->RemoveObserver(this->Tag);
+    }
+  }
+  ProgressPrinter(const ProgressPrinter&) = delete;
+  ProgressPrinter& operator=(const ProgressPrinter&) = delete;
+
+private:
+  vtkAlgorithm* Algorithm;
+  vtkNew<vtkCallbackCommand> Command;
+  unsigned long Tag = 0;
+  int Next = 1; ///< the next quarter to print
+};
+
+/// The stages that can take long enough for a percentage on their line.
+bool isLongStage(const std::string& stage)
+{
+  return stage == "mesh" || stage == "gdf" || stage == "lattice" || stage == "sequence" || stage == "toolpath";
+}
 
 double fieldValue(vtkDataObject* data, const char* name, int component = 0)
 {
@@ -606,6 +659,7 @@ public:
     planner->SetInputConnection(0, sequencer->GetOutputPort(0));
     planner->SetInputConnection(1, sequencer->GetOutputPort(1));
     Opt.toolpath.apply(planner.Get());
+    Opt.nozzle.applyNozzle(planner.Get());
     vtkDataObject* toolpath = this->Execute("toolpath", { planner }, planner);
     const double toolpathSeconds = this->LastSeconds;
     vtkNew<vtkGLCollisionVerifier> toolpathVerifier;
@@ -654,7 +708,7 @@ public:
       script->SetInputConnection(planner->GetOutputPort());
       Opt.program.applyScript(script.Get());
       script->SetFileName((dir / kScriptFile).string().c_str());
-      const std::string scriptError = RunWriter(script);
+      const std::string scriptError = RunWriter(script, !Opt.quiet); // the long writer: joints along the path
       const vtkIdType unreachable = script->GetUnreachableCount();
       std::vector<double> firstUnreachable;
       for (vtkIdType i = 0; i < std::min<vtkIdType>(unreachable, 10); ++i)
@@ -758,6 +812,7 @@ public:
           g.set("max_rotary_step_deg", gcode->GetMaxRotaryStepDeg());
           g.set("branch_flips", static_cast<long long>(gcode->GetBranchFlips()));
           g.set("max_axis_error_deg", gcode->GetMaxAxisErrorDeg());
+          g.set("forced_rotary_steps", static_cast<long long>(gcode->GetForcedRotarySteps()));
         }
       }
 
@@ -820,7 +875,10 @@ private:
       errors.Watch(a);
     }
     const auto start = Clock::now();
-    last->Update();
+    {
+      const ProgressPrinter percent(last, !Opt.quiet && isLongStage(stage));
+      last->Update();
+    }
     this->LastSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     vtkDataSet* out = vtkDataSet::SafeDownCast(last->GetOutputDataObject(0));
     if (!Opt.quiet)
@@ -854,11 +912,12 @@ private:
   }
 
   /// Writes with `writer` (errors captured as in Execute) and returns the first error reported,
-  /// empty on success.
-  static std::string RunWriter(vtkWriter* writer)
+  /// empty on success. percent: print its progress on the stage line.
+  static std::string RunWriter(vtkWriter* writer, bool percent = false)
   {
     geolattice::ErrorCapture errors;
     errors.Watch(writer);
+    const ProgressPrinter printer(writer, percent);
     const int ok = writer->Write();
     if (errors.Message.empty() && !ok)
     {

@@ -98,6 +98,11 @@ void BM_PlanToolpath(benchmark::State& state) {
   state.counters["dev_mean"] = n ? sum / n : 0.0;
   state.counters["dev_max"] = p.thicknessStats.deviationMax;
   state.counters["capped"] = p.thicknessStats.cappedVertices;
+  state.counters["colliding_along_normal"] = p.collidingStations;
+  state.counters["tilted"] = p.tiltedStations;
+  state.counters["uncleared"] = p.unclearedStations;
+  state.counters["max_tilt_deg"] = p.maxAxisTiltDeg;
+  state.counters["inserted"] = p.subdivisionPoints;
 }
 BENCHMARK(BM_PlanToolpath)->Unit(benchmark::kMillisecond);
 

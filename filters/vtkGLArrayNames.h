@@ -136,6 +136,7 @@ constexpr const char* FeedRate = "FeedRate";     ///< point data: nozzle feed ra
 constexpr const char* MoveKind = "MoveKind";     ///< point + cell data (int): a movekind::* value
 constexpr const char* PathIndex = "PathIndex";   ///< point + cell data (int): continuous print path (tour); air moves carry the next one
 constexpr const char* PointIndex = "PointIndex"; ///< point data (int): position along the toolpath (print time for the verifier)
+constexpr const char* AxisTilt = "AxisTilt";     ///< point data: angle between the nozzle axis and the layer normal ∇γ (degrees)
 // Field data of vtkGLToolpathPlanner (1 value each unless noted).
 constexpr const char* ToolpathPrintLength = "ToolpathPrintLength";       ///< mm of lattice print moves (MoveKind 0)
 constexpr const char* ToolpathPerimeterLength = "ToolpathPerimeterLength"; ///< mm of support perimeter moves incl. connectors (MoveKind 1)
@@ -157,6 +158,11 @@ constexpr const char* ToolpathThicknessDeviationPerLayer = "ToolpathThicknessDev
 constexpr const char* ToolpathCappedVertices = "ToolpathCappedVertices"; ///< vertices whose h was capped at λφ
 constexpr const char* ToolpathUnsupportedVertices = "ToolpathUnsupportedVertices"; ///< vertices without a lower node above the first layer
 constexpr const char* ToolpathRotationSteps = "ToolpathRotationSteps";   ///< points inserted to limit the nozzle axis turn
+constexpr const char* ToolpathSubdivisionPoints = "ToolpathSubdivisionPoints"; ///< all inserted points (axis turn and segment length)
+constexpr const char* ToolpathCollidingStations = "ToolpathCollidingStations"; ///< stations where the nozzle along ∇γ hits earlier material
+constexpr const char* ToolpathTiltedStations = "ToolpathTiltedStations";   ///< of those, cleared by tilting the axis
+constexpr const char* ToolpathUnclearedStations = "ToolpathUnclearedStations"; ///< stations still colliding after tilting
+constexpr const char* ToolpathMaxAxisTilt = "ToolpathMaxAxisTilt";       ///< largest AxisTilt (degrees)
 constexpr const char* ToolpathSeconds = "ToolpathSeconds";               ///< wall time of the planning (s)
 } // namespace arrays
 

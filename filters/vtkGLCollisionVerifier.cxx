@@ -2,6 +2,8 @@
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshConversion.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "collision/CollisionVerifier.h"
 #include "common/Error.h"
@@ -338,17 +340,19 @@ int vtkGLCollisionVerifier::FillInputPortInformation(int, vtkInformation* info)
 int vtkGLCollisionVerifier::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  // Collective in an MPI run: all the printed points on one process (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
+  if (!inputs.Computes())
+  {
+    return 1; // another process has the points
+  }
+  vtkPolyData* input = inputs.Get<vtkPolyData>(0);
   try
   {
-    gl::NozzleModel nozzle;
-    nozzle.halfAngleDeg = this->NozzleAngle;
-    nozzle.length = this->NozzleLength == 0 ? std::numeric_limits<double>::infinity() : this->NozzleLength;
-    nozzle.holderRadius = this->HolderRadius;
-    nozzle.tipClearance = this->TipClearance;
-    nozzle.validate();
+    const gl::NozzleModel nozzle = gl::nozzleModel(
+      this->NozzleAngle, this->NozzleLength, this->HolderRadius, this->TipClearance, this->TipFaceRadius);
 
     if (!input || input->GetNumberOfPoints() == 0)
     {
@@ -373,6 +377,10 @@ int vtkGLCollisionVerifier::RequestData(
         "' (the print time, e.g. PrintOrder of GL Print Sequencer; set TimeArrayName)");
     }
 
+    if (gl::progressAborts(this, 0.05))
+    {
+      return 1;
+    }
     Stations stations;
     if (cellTime)
     {
@@ -421,17 +429,28 @@ int vtkGLCollisionVerifier::RequestData(
         return station >= 0 && obstacle >= 0 && station < K && obstacle < K && ancestry->isAncestor(obstacle, station);
       };
     }
-    this->UpdateProgress(0.2);
+    // The check itself is one core call: progress before and after it.
+    if (gl::progressAborts(this, 0.2))
+    {
+      return 1;
+    }
     const gl::CollisionReport report = gl::verifyNozzleClearance(stations.points, stations.normals, stations.time,
       nozzle, this->MaxReported, ancestry ? &exemption : nullptr,
       stations.material.empty() ? nullptr : &stations.material);
+    if (gl::progressAborts(this, 0.9))
+    {
+      return 1;
+    }
     buildOutput(report, this->NozzleAngle, output);
     this->UpdateProgress(1.0);
   }
   catch (const std::exception& e)
   {
     output->Initialize();
-    vtkErrorMacro(<< e.what());
+    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    {
+      vtkErrorMacro(<< e.what());
+    }
   }
   return 1;
 }
@@ -444,6 +463,7 @@ void vtkGLCollisionVerifier::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NozzleLength: " << this->NozzleLength << " mm\n";
   os << indent << "HolderRadius: " << this->HolderRadius << " mm\n";
   os << indent << "TipClearance: " << this->TipClearance << " mm\n";
+  os << indent << "TipFaceRadius: " << this->TipFaceRadius << " mm\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << " mm\n";
   os << indent << "MaxReported: " << this->MaxReported << "\n";
 }

@@ -42,7 +42,8 @@
  *   `CollisionUnavoidableStations`, `CollisionSeconds` and `NozzleAngleDeg`.
  * Parameters: TimeArrayName (default "PrintOrder"), NozzleAngle (degrees, default 45, in
  *   (0, 90)), NozzleLength (mm, default 0 = cone only), HolderRadius (mm, default 0),
- *   TipClearance (mm, default 0.1), SampleSpacing (mm, default 1, > 0), MaxReported (default 20).
+ *   TipClearance (mm, default 0.1), TipFaceRadius (mm, default 0.3: material that near the tip is
+ *   under the nozzle face), SampleSpacing (mm, default 1, > 0), MaxReported (default 20).
  * Errors (an empty input, missing Normals or time array, a non-integer or non-finite time, a zero
  * normal, NozzleAngle outside (0, 90) or another bad nozzle, SampleSpacing <= 0, SkeletonEdges
  * without 2 components, with a negative id or a cycle) are reported with vtkErrorMacro and give
@@ -92,6 +93,13 @@ public:
   ///@}
 
   ///@{
+  /// Material within this distance of the tip lies under the nozzle's flat face (the bead being
+  /// pressed), not inside the nozzle (mm, default 0.3, >= 0).
+  vtkSetMacro(TipFaceRadius, double);
+  vtkGetMacro(TipFaceRadius, double);
+  ///@}
+
+  ///@{
   /// Spacing of the samples along the line cells (mm, default 1, > 0; cell time arrays only).
   vtkSetMacro(SampleSpacing, double);
   vtkGetMacro(SampleSpacing, double);
@@ -115,6 +123,7 @@ protected:
   double NozzleLength = 0.0;
   double HolderRadius = 0.0;
   double TipClearance = 0.1;
+  double TipFaceRadius = 0.3;
   double SampleSpacing = 1.0;
   int MaxReported = 20;
 

@@ -2,6 +2,8 @@
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshConversion.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "common/Error.h"
 #include "slicer/CurvedLayerSlicer.h"
@@ -21,6 +23,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
+
+#include <algorithm>
 
 vtkStandardNewMacro(vtkGLCurvedLayerSlicer);
 
@@ -130,42 +134,71 @@ int vtkGLCurvedLayerSlicer::FillInputPortInformation(int, vtkInformation* info)
 int vtkGLCurvedLayerSlicer::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  // Collective in an MPI run: the whole tet mesh on one process (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkPolyData* all = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* selected = vtkPolyData::GetData(outputVector, 1);
+  all->Initialize();
+  selected->Initialize();
+  if (!inputs.Computes())
+  {
+    return 1; // another process has the mesh
+  }
+  vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
   try
   {
     const gl::TetMesh mesh = gl::toTetMesh(input);
     const Eigen::VectorXd gamma = requirePointArray(input, gl::arrays::Gamma);
     const Eigen::VectorXd alpha = requirePointArray(input, gl::arrays::Alpha);
     const Eigen::VectorXd beta = requirePointArray(input, gl::arrays::Beta);
-    this->UpdateProgress(0.1);
+    if (gl::progressAborts(this, 0.05))
+    {
+      return 1;
+    }
+    const std::vector<gl::Vec3> normals = gl::vertexGradientDirections(mesh, gamma);
+    if (gl::progressAborts(this, 0.1))
+    {
+      return 1;
+    }
     gl::SlicerOptions options;
     options.interval = this->LayerInterval;
     options.firstLayerOffset = this->FirstLayerOffset;
     options.firstLayer = this->FirstLayer;
     options.lastLayer = this->LastLayer;
-    const gl::CurvedLayers layers =
-      gl::sliceCurvedLayers(mesh, gamma, alpha, beta, gl::vertexGradientDirections(mesh, gamma), options);
-    this->UpdateProgress(0.5);
-    if (this->GetAbortExecute())
+    options.progress = gl::progressRange(this, 0.1, 0.6);
+    options.shouldAbort = gl::abortFlag(this);
+    const gl::CurvedLayers layers = gl::sliceCurvedLayers(mesh, gamma, alpha, beta, normals, options);
+    if (gl::progressAborts(this, 0.6))
     {
-      all->Initialize();
-      selected->Initialize();
       return 1;
     }
     const int L = static_cast<int>(layers.layerValues.size());
     std::vector<int> triangleComponent(layers.triangles.size());
     std::vector<double> componentCount(L);
     std::vector<int> local;
+    const int stride = std::max(1, L / 16);
     for (int l = 0; l < L; ++l)
     {
+      if (l % stride == 0 && gl::progressAborts(this, 0.6 + 0.15 * l / L))
+      {
+        return 1;
+      }
       componentCount[l] = gl::layerComponents(layers, l, local);
       std::copy(local.begin(), local.end(), triangleComponent.begin() + layers.layerTriangleOffset[l]);
+    }
+    if (gl::progressAborts(this, 0.75))
+    {
+      return 1;
     }
     buildPolyData(layers, triangleComponent, 0, L, all);
     const int s = this->SelectedLayer - layers.layerIndex.front();
     buildPolyData(layers, triangleComponent, std::max(0, s), s >= 0 && s < L ? s + 1 : 0, selected);
+    if (gl::progressAborts(this, 0.85))
+    {
+      all->Initialize();
+      selected->Initialize();
+      return 1;
+    }
 
     vtkNew<vtkFieldData> fd;
     gl::addFieldArray(fd, gl::arrays::LayerValues, layers.layerValues);
@@ -185,6 +218,12 @@ int vtkGLCurvedLayerSlicer::RequestData(
       gl::addFieldArray(fd, gl::arrays::LayerSpacingMin, smin);
       gl::addFieldArray(fd, gl::arrays::LayerSpacingMean, smean);
       gl::addFieldArray(fd, gl::arrays::LayerSpacingMax, smax);
+      if (gl::progressAborts(this, 0.95))
+      {
+        all->Initialize();
+        selected->Initialize();
+        return 1;
+      }
     }
     all->SetFieldData(fd);
     selected->GetFieldData()->PassData(fd);
@@ -192,9 +231,12 @@ int vtkGLCurvedLayerSlicer::RequestData(
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< e.what());
     all->Initialize();
     selected->Initialize();
+    if (!this->GetAbortExecute()) // an abort is not an error: empty outputs, no message
+    {
+      vtkErrorMacro(<< e.what());
+    }
   }
   return 1;
 }

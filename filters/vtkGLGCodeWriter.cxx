@@ -2,6 +2,8 @@
 
 #include "vtkGLMeshConversion.h"
 #include "vtkGLOutputFiles.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "common/Error.h"
 #include "program/FiveAxisGCode.h"
@@ -76,14 +78,25 @@ void vtkGLGCodeWriter::WriteData()
   this->MaxRotaryStepDeg = 0;
   this->BranchFlips = 0;
   this->MaxAxisErrorDeg = 0;
+  this->ForcedRotarySteps = 0;
   this->OutOfLimitsCount = 0;
+  // In an MPI run one process writes: the one with the toolpath (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(this);
+  if (!inputs.Computes())
+  {
+    return; // another process writes the G-code
+  }
   try
   {
     if (!this->FileName || !*this->FileName)
     {
       throw gl::GeoLatticeError("G-code writer: no FileName given");
     }
-    const gl::ToolpathArrays path = gl::toToolpathArrays(vtkPolyData::SafeDownCast(this->GetInput()));
+    const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
+    if (gl::progressAborts(this, 0.1))
+    {
+      return;
+    }
     const double lo = this->TiltLimits[0], hi = this->TiltLimits[1];
     if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi))
     {
@@ -98,6 +111,10 @@ void vtkGLGCodeWriter::WriteData()
       }
     }
     const std::vector<vtkIdType> out = outOfLimits(path.normals, lo, hi);
+    if (gl::progressAborts(this, 0.2))
+    {
+      return;
+    }
     this->OutOfLimitsCount = static_cast<vtkIdType>(out.size());
     if (!out.empty())
     {
@@ -127,11 +144,16 @@ void vtkGLGCodeWriter::WriteData()
       throw gl::GeoLatticeError("G-code writer: " + std::to_string(stats.outOfLimits) +
         " toolpath points need a tilt outside the limits; nothing written");
     }
+    if (gl::progressAborts(this, 0.9))
+    {
+      return; // the temporary file goes with `files`: nothing written
+    }
     files.commit();
     this->NumberOfMoves = static_cast<vtkIdType>(stats.moves);
     this->MaxRotaryStepDeg = stats.maxRotaryStepDeg;
     this->BranchFlips = static_cast<vtkIdType>(stats.branchFlips);
     this->MaxAxisErrorDeg = stats.maxAxisErrorDeg;
+    this->ForcedRotarySteps = static_cast<vtkIdType>(stats.forcedRotarySteps);
   }
   catch (const gl::FileWriteError& e)
   {
@@ -142,6 +164,10 @@ void vtkGLGCodeWriter::WriteData()
   catch (const std::exception& e)
   {
     this->NumberOfMoves = 0;
+    if (this->GetAbortExecute())
+    {
+      return; // an abort is not an error: nothing written, no message
+    }
     this->SetErrorCode(vtkErrorCode::UserError);
     vtkErrorMacro(<< e.what());
   }

@@ -21,7 +21,10 @@
  *   name is untouched.
  * Results of the last Write() (reset at its start): GetNumberOfMoves, GetMaxRotaryStepDeg
  *   (largest change of C or the tilt between consecutive points), GetBranchFlips (points where
- *   the other solution was taken to stay inside the tilt limits), GetOutOfLimitsCount.
+ *   the other solution was taken to stay inside the tilt limits), GetOutOfLimitsCount,
+ *   GetMaxAxisErrorDeg (C may deviate near the pole while the axis stays within 1°, so the
+ *   table turns at most 5° per point where possible), GetForcedRotarySteps (points where C had
+ *   to turn faster than that).
  * Parameters: Kinematics (0 = AC (default): tilt A about X; 1 = BC: tilt B about Y), Pivot (mm,
  *   machine position of the intersection of the rotary axes, default 0 0 0), PartOffset (mm,
  *   the part frame origin relative to the rotary centre on the table, default 0 0 0),
@@ -87,8 +90,9 @@ public:
   vtkIdType GetNumberOfMoves() const { return this->NumberOfMoves; }
   double GetMaxRotaryStepDeg() const { return this->MaxRotaryStepDeg; }
   vtkIdType GetBranchFlips() const { return this->BranchFlips; }
-  /// Largest nozzle-axis error introduced near the pole, where C is interpolated (degrees, < 1).
+  /// Largest nozzle-axis error introduced near the pole, where C may deviate (degrees, <= 1).
   double GetMaxAxisErrorDeg() const { return this->MaxAxisErrorDeg; }
+  vtkIdType GetForcedRotarySteps() const { return this->ForcedRotarySteps; }
   vtkIdType GetOutOfLimitsCount() const { return this->OutOfLimitsCount; }
   ///@}
 
@@ -115,6 +119,7 @@ private:
   double MaxRotaryStepDeg = 0;
   vtkIdType BranchFlips = 0;
   double MaxAxisErrorDeg = 0;
+  vtkIdType ForcedRotarySteps = 0;
   vtkIdType OutOfLimitsCount = 0;
 };
 

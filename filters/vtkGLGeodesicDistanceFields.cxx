@@ -2,6 +2,8 @@
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshConversion.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
@@ -30,6 +32,8 @@ struct vtkGLGeodesicDistanceFields::SolverCache
   std::unique_ptr<geolattice::GeodesicDistanceFields> Solver;
   vtkMTimeType MeshTime = 0;
   geolattice::GeodesicFieldOptions Options;
+  /// Where the solver's progress (0..1 of its set-up, then of each solve) goes in the filter's.
+  double ProgressLo = 0, ProgressHi = 1;
 };
 
 namespace
@@ -86,9 +90,16 @@ int vtkGLGeodesicDistanceFields::FillInputPortInformation(int, vtkInformation* i
 int vtkGLGeodesicDistanceFields::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
-  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   namespace gl = geolattice;
+  // Collective in an MPI run: the whole tet mesh on one process (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
+  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+  output->Initialize();
+  if (!inputs.Computes())
+  {
+    return 1; // another process has the mesh
+  }
+  vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
   const auto start = std::chrono::steady_clock::now();
   try
   {
@@ -97,22 +108,32 @@ int vtkGLGeodesicDistanceFields::RequestData(
     options.reference = gl::Vec3(this->ReferenceVector[0], this->ReferenceVector[1], this->ReferenceVector[2]);
     options.referenceParallelDeg = this->ReferenceParallelAngle;
     options.backend = this->UseCholmod ? gl::CholeskyBackend::Cholmod : gl::CholeskyBackend::EigenLDLT;
-
     SolverCache& cache = *this->Cache;
+    // The cached solver keeps these callbacks: they read the range of the current step.
+    options.progress = [this](double f) {
+      const SolverCache& c = *this->Cache;
+      this->UpdateProgress(c.ProgressLo + (c.ProgressHi - c.ProgressLo) * f);
+    };
+    options.shouldAbort = gl::abortFlag(this);
+
     const vtkMTimeType meshTime = input ? input->GetMTime() : 0;
-    if (!cache.Solver || cache.MeshTime != meshTime || !sameSetUp(cache.Options, options))
+    // A gathered mesh (parts from several processes) is a new object on every call.
+    if (!cache.Solver || inputs.Gathered() || cache.MeshTime != meshTime || !sameSetUp(cache.Options, options))
     {
       cache.Solver.reset();
       const gl::TetMesh mesh = gl::toTetMesh(input);
-      this->UpdateProgress(0.05);
+      if (gl::progressAborts(this, 0.05))
+      {
+        return 1;
+      }
+      cache.ProgressLo = 0.05;
+      cache.ProgressHi = 0.6;
       cache.Solver = std::make_unique<gl::GeodesicDistanceFields>(mesh, options);
       cache.MeshTime = meshTime;
       cache.Options = options;
     }
-    this->UpdateProgress(0.5);
-    if (this->GetAbortExecute())
+    if (gl::progressAborts(this, 0.6))
     {
-      output->Initialize();
       return 1;
     }
 
@@ -122,7 +143,7 @@ int vtkGLGeodesicDistanceFields::RequestData(
     {
       case MASK_ARRAY:
       {
-        vtkDataArray* mask = this->GetInputArrayToProcess(0, inputVector);
+        vtkDataArray* mask = this->GetInputArrayToProcess(0, input);
         if (!mask)
         {
           throw gl::GeoLatticeError("source mode is MASK_ARRAY but the selected point array is missing");
@@ -141,8 +162,13 @@ int vtkGLGeodesicDistanceFields::RequestData(
       default:
         sources = gl::sourcesNearLowestZ(mesh, this->BaseTolerance);
     }
+    cache.ProgressLo = 0.6;
+    cache.ProgressHi = 0.95;
     const gl::GeodesicFields fields = cache.Solver->solve(sources);
-    this->UpdateProgress(0.95);
+    if (gl::progressAborts(this, 0.95))
+    {
+      return 1;
+    }
 
     output->ShallowCopy(input);
     vtkPointData* pd = output->GetPointData();
@@ -181,8 +207,11 @@ int vtkGLGeodesicDistanceFields::RequestData(
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< e.what());
     output->Initialize();
+    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    {
+      vtkErrorMacro(<< e.what());
+    }
   }
   return 1;
 }

@@ -2,6 +2,8 @@
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshConversion.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "common/Error.h"
 #include "lattice/LatticeGraph.h"
@@ -304,9 +306,15 @@ int vtkGLLatticeInfill::FillInputPortInformation(int, vtkInformation* info)
 int vtkGLLatticeInfill::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  // Collective in an MPI run: all the layers on one process (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
+  if (!inputs.Computes())
+  {
+    return 1; // another process has the layers
+  }
+  vtkPolyData* input = inputs.Get<vtkPolyData>(0);
   try
   {
     if (!(this->AlphaWidth > 0) || !(this->BetaWidth > 0))
@@ -346,11 +354,18 @@ int vtkGLLatticeInfill::RequestData(
         options.widthScale[p] = scale->GetComponent(inputPoint[p], 0);
       }
     }
-    options.progress = [this](double f) { this->UpdateProgress(0.1 + 0.8 * f); };
-    options.shouldAbort = [this] { return this->GetAbortExecute() != 0; };
-    this->UpdateProgress(0.1);
+    options.progress = gl::progressRange(this, 0.1, 0.9);
+    options.shouldAbort = gl::abortFlag(this);
+    if (gl::progressAborts(this, 0.1))
+    {
+      return 1;
+    }
 
     const gl::LatticeGraph graph = gl::buildLatticeGraph(layers, options);
+    if (gl::progressAborts(this, 0.9))
+    {
+      return 1;
+    }
     buildOutput(graph, hasGamma, output);
     if (graph.stats.isolineEdges == 0)
     {

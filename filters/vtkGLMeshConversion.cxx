@@ -533,6 +533,17 @@ ToolpathArrays toToolpathArrays(vtkPolyData* toolpath) {
   return t;
 }
 
+NozzleModel nozzleModel(double angleDeg, double length, double holderRadius, double tipClearance, double tipFaceRadius) {
+  NozzleModel nozzle;
+  nozzle.halfAngleDeg = angleDeg;
+  nozzle.length = length == 0 ? std::numeric_limits<double>::infinity() : length;
+  nozzle.holderRadius = holderRadius;
+  nozzle.tipClearance = tipClearance;
+  nozzle.tipFaceRadius = tipFaceRadius;
+  nozzle.validate();
+  return nozzle;
+}
+
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components) {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
   a->SetName(name);

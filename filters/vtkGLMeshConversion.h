@@ -8,6 +8,7 @@
  */
 #include "lattice/LatticeGraph.h"
 #include "mesh/TetMesh.h"
+#include "sequence/NozzleModel.h"
 #include "sequence/SkeletonTree.h"
 
 #include <vtkSmartPointer.h>
@@ -83,6 +84,10 @@ struct ToolpathArrays {
 ToolpathArrays toToolpathArrays(vtkPolyData* toolpath);
 
 /// A named double array of values.size() / components tuples holding values.
+/// The nozzle of the filters' properties (NozzleLength 0 = cone only); validated, throws
+/// GeoLatticeError naming a bad parameter.
+NozzleModel nozzleModel(double angleDeg, double length, double holderRadius, double tipClearance, double tipFaceRadius);
+
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components = 1);
 /// Adds doubleArray(name, values, components) to the field data (replacing one of that name).
 void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values, int components = 1);

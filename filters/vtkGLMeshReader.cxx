@@ -6,6 +6,7 @@
 #include "io/MeshFileIO.h"
 
 #include <vtkCellArray.h>
+#include <vtkCallbackCommand.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellType.h>
 #include <vtkCleanPolyData.h>
@@ -124,12 +125,24 @@ public:
   std::string FirstWarning;
 };
 
+/// Progress of this reader (UpdateProgress(f)); throws "reading aborted" if the user asked to
+/// abort (the reader's catch keeps that quiet).
+void progressOrAbort(vtkAlgorithm* reader, double f)
+{
+  reader->UpdateProgress(f);
+  if (reader->GetAbortExecute())
+  {
+    throw geolattice::GeoLatticeError("reading aborted");
+  }
+}
+
 /// Runs a VTK algorithm, turning any error it reports into a GeoLatticeError. Errors are seen
 /// through ErrorEvents (only emitted while vtkObject::GlobalWarningDisplay is on), the error
 /// code, and for the XML readers their parser's errors. Warnings of a failing reader (e.g.
 /// "Could not open PLY file") go into the error message; the first warning of a successful
-/// one is passed on as a warning of `reporter` (this reader).
-void runChecked(vtkAlgorithm* algorithm, const std::string& path, vtkObject* reporter)
+/// one is passed on as a warning of `reporter` (this reader). The algorithm's progress is
+/// forwarded as [lo, hi] of the reporter's, and the reporter's abort flag to the algorithm.
+void runChecked(vtkAlgorithm* algorithm, const std::string& path, vtkAlgorithm* reporter, double lo, double hi)
 {
   vtkNew<ErrorCollector> errors;
   const auto tags = errors->Watch(algorithm);
@@ -139,7 +152,28 @@ void runChecked(vtkAlgorithm* algorithm, const std::string& path, vtkObject* rep
     xml->SetReaderErrorObserver(errors);
     xml->SetParserErrorObserver(errors);
   }
+  struct Forward
+  {
+    vtkAlgorithm* Reporter;
+    double Lo, Hi;
+  } forward{ reporter, lo, hi };
+  vtkNew<vtkCallbackCommand> progress;
+  progress->SetClientData(&forward);
+  progress->SetCallback([](vtkObject* caller, unsigned long, void* client, void* call) {
+    const Forward& f = *static_cast<Forward*>(client);
+    const double p = call ? *static_cast<double*>(call) : 0.0;
+    if (!f.Reporter->GetAbortExecute()) // after an abort, nothing more to report
+    {
+      f.Reporter->UpdateProgress(f.Lo + (f.Hi - f.Lo) * std::clamp(p, 0.0, 1.0));
+    }
+    if (f.Reporter->GetAbortExecute())
+    {
+      static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
+    }
+  });
+  const unsigned long progressTag = algorithm->AddObserver(vtkCommand::ProgressEvent, progress);
   algorithm->Update();
+  algorithm->RemoveObserver(progressTag);
   algorithm->RemoveObserver(tags.first);
   algorithm->RemoveObserver(tags.second);
   algorithm->GetExecutive()->RemoveObserver(executiveTags.first);
@@ -148,6 +182,10 @@ void runChecked(vtkAlgorithm* algorithm, const std::string& path, vtkObject* rep
   {
     xml->SetReaderErrorObserver(nullptr);
     xml->SetParserErrorObserver(nullptr);
+  }
+  if (reporter->GetAbortExecute())
+  {
+    throw geolattice::GeoLatticeError("reading aborted"); // the inner reader may have stopped early
   }
   if (errors->ErrorCount > 0 || algorithm->GetErrorCode() != vtkErrorCode::NoError)
   {
@@ -223,7 +261,7 @@ void checkPointIds(vtkCellArray* cells, vtkIdType numPoints, const char* cellNam
 
 /// Surface formats -> triangles only, coincident points merged.
 void readSurface(
-  const std::string& path, const std::string& ext, vtkPolyData* output, vtkObject* reporter)
+  const std::string& path, const std::string& ext, vtkPolyData* output, vtkAlgorithm* reporter)
 {
   vtkNew<vtkPolyData> raw;
   if (ext == ".off")
@@ -259,7 +297,7 @@ void readSurface(
       vtp->SetFileName(path.c_str());
       reader = vtp;
     }
-    runChecked(reader, path, reporter);
+    runChecked(reader, path, reporter, 0.02, 0.6);
     vtkPolyData* read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
     if (!read)
     {
@@ -271,6 +309,7 @@ void readSurface(
     checkPointIds(raw->GetStrips(), raw->GetNumberOfPoints(), "triangle strip", path);
   }
   dropCornerAttributes(raw);
+  progressOrAbort(reporter, 0.6);
 
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputData(raw);
@@ -284,7 +323,7 @@ void readSurface(
   clean->ConvertPolysToLinesOff();
   clean->ConvertLinesToPointsOff();
   clean->ConvertStripsToPolysOff();
-  runChecked(clean, path, reporter);
+  runChecked(clean, path, reporter, 0.6, 0.95);
   vtkPolyData* cleaned = clean->GetOutput();
   if (cleaned->GetNumberOfPolys() == 0)
   {
@@ -295,21 +334,20 @@ void readSurface(
 
 /// Tet formats -> VTK_TETRA cells only.
 void readTetMesh(const std::string& path, const std::string& ext, vtkUnstructuredGrid* output,
-  vtkObject* reporter)
+  vtkAlgorithm* reporter)
 {
-  if (ext == ".tet")
+  if (ext == ".tet" || ext == ".node" || ext == ".ele")
   {
-    geolattice::fromTetMesh(geolattice::readTetFile(path), output);
-    return;
-  }
-  if (ext == ".node" || ext == ".ele")
-  {
-    geolattice::fromTetMesh(geolattice::readTetGenMesh(path), output);
+    const geolattice::TetMesh mesh =
+      ext == ".tet" ? geolattice::readTetFile(path) : geolattice::readTetGenMesh(path);
+    progressOrAbort(reporter, 0.8);
+    geolattice::fromTetMesh(mesh, output);
     return;
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(path.c_str());
-  runChecked(reader, path, reporter);
+  runChecked(reader, path, reporter, 0.02, 0.8);
+  progressOrAbort(reporter, 0.8);
   vtkUnstructuredGrid* grid = reader->GetOutput();
   if (grid->GetNumberOfCells() == 0 || grid->GetNumberOfPoints() == 0)
   {
@@ -416,7 +454,7 @@ int vtkGLMeshReader::RequestData(
     {
       throw geolattice::GeoLatticeError("not a regular file: " + path);
     }
-    this->UpdateProgress(0.0);
+    progressOrAbort(this, 0.01);
     if (IsTetMeshFile(this->FileName))
     {
       vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(output);
@@ -441,7 +479,10 @@ int vtkGLMeshReader::RequestData(
   {
     // GeoLatticeError from core and the conversions, or std errors (bad_alloc, filesystem).
     output->Initialize();
-    vtkErrorMacro(<< e.what());
+    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    {
+      vtkErrorMacro(<< e.what());
+    }
   }
   return 1;
 }

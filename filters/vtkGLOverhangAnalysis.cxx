@@ -2,6 +2,8 @@
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshConversion.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "common/Error.h"
 #include "mesh/TetMeshTopology.h"
@@ -72,8 +74,15 @@ int vtkGLOverhangAnalysis::FillInputPortInformation(int, vtkInformation* info)
 int vtkGLOverhangAnalysis::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkUnstructuredGrid* input = vtkUnstructuredGrid::GetData(inputVector[0], 0);
+  // Collective in an MPI run: the whole tet mesh on one process (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+  output->Initialize();
+  if (!inputs.Computes())
+  {
+    return 1; // another process has the mesh
+  }
+  vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
   try
   {
     if (!input || input->GetNumberOfCells() == 0)
@@ -99,16 +108,20 @@ int vtkGLOverhangAnalysis::RequestData(
     {
       onPlatform[i] = base->GetComponent(i, 0) != 0.0;
     }
-    this->UpdateProgress(0.2);
-    const gl::TetMeshTopology topology(mesh);
-    this->UpdateProgress(0.5);
-    if (this->GetAbortExecute())
+    if (gl::progressAborts(this, 0.2))
     {
-      output->Initialize();
+      return 1;
+    }
+    const gl::TetMeshTopology topology(mesh);
+    if (gl::progressAborts(this, 0.5))
+    {
       return 1;
     }
     const gl::OverhangResult result = gl::analyzeOverhang(mesh, topology, directions, onPlatform, options);
-    this->UpdateProgress(0.7);
+    if (gl::progressAborts(this, 0.7))
+    {
+      return 1;
+    }
 
     // Boundary surface with its own, compact point numbering (first use order).
     const std::vector<gl::BoundaryFace>& faces = topology.boundaryFaces();
@@ -150,7 +163,11 @@ int vtkGLOverhangAnalysis::RequestData(
     {
       outPD->CopyData(inPD, oldId[i], i);
     }
-    this->UpdateProgress(0.8);
+    if (gl::progressAborts(this, 0.8))
+    {
+      output->Initialize();
+      return 1;
+    }
     vtkCellData* inCD = input->GetCellData();
     vtkCellData* outCD = output->GetCellData();
     outCD->CopyAllocate(inCD, numFaces);
@@ -187,8 +204,11 @@ int vtkGLOverhangAnalysis::RequestData(
   }
   catch (const std::exception& e)
   {
-    vtkErrorMacro(<< e.what());
     output->Initialize();
+    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    {
+      vtkErrorMacro(<< e.what());
+    }
   }
   return 1;
 }

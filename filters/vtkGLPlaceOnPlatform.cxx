@@ -1,6 +1,7 @@
 #include "vtkGLPlaceOnPlatform.h"
 
 #include "vtkGLArrayNames.h"
+#include "vtkGLParallel.h"
 
 #include "common/Error.h"
 
@@ -32,8 +33,16 @@ void vtkGLPlaceOnPlatform::PrintSelf(ostream& os, vtkIndent indent)
 int vtkGLPlaceOnPlatform::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPointSet* input = vtkPointSet::GetData(inputVector[0], 0);
+  // Collective in an MPI run: the whole model on one process (vtkGLParallel.h), because the
+  // placement depends on the bounds of all points.
+  const geolattice::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkPointSet* output = vtkPointSet::GetData(outputVector, 0);
+  if (output && !inputs.Computes())
+  {
+    output->Initialize();
+    return 1; // another process has the model
+  }
+  vtkPointSet* input = inputs.Get<vtkPointSet>(0);
   if (!input || !output)
   {
     vtkErrorMacro(<< "input and output must be vtkPointSet");
@@ -123,7 +132,10 @@ int vtkGLPlaceOnPlatform::RequestData(
   catch (const std::exception& e)
   {
     output->Initialize();
-    vtkErrorMacro(<< e.what());
+    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    {
+      vtkErrorMacro(<< e.what());
+    }
   }
   return 1;
 }

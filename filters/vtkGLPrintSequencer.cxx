@@ -2,6 +2,8 @@
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshConversion.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "common/Error.h"
 #include "lattice/LatticeGraph.h"
@@ -186,28 +188,48 @@ int vtkGLPrintSequencer::FillInputPortInformation(int, vtkInformation* info)
 int vtkGLPrintSequencer::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* lattice = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* skeleton = vtkPolyData::GetData(inputVector[1], 0);
+  // Collective in an MPI run: the lattice and the skeleton on one process (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(inputVector, 2, outputVector);
   vtkPolyData* outputs[3];
   for (int port = 0; port < 3; ++port)
   {
     outputs[port] = vtkPolyData::GetData(outputVector, port);
     outputs[port]->Initialize();
   }
+  if (!inputs.Computes())
+  {
+    return 1; // another process has the inputs
+  }
+  vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
+  vtkPolyData* skeleton = inputs.Get<vtkPolyData>(1);
+  auto aborted = [this, &outputs](double progress) {
+    if (!gl::progressAborts(this, progress))
+    {
+      return false;
+    }
+    for (vtkPolyData* out : outputs)
+    {
+      out->Initialize();
+    }
+    return true;
+  };
   try
   {
-    gl::NozzleModel nozzle;
-    nozzle.halfAngleDeg = this->NozzleAngle;
-    nozzle.length = this->NozzleLength == 0 ? std::numeric_limits<double>::infinity() : this->NozzleLength;
-    nozzle.holderRadius = this->HolderRadius;
-    nozzle.tipClearance = this->TipClearance;
-    nozzle.validate();
+    const gl::NozzleModel nozzle = gl::nozzleModel(
+      this->NozzleAngle, this->NozzleLength, this->HolderRadius, this->TipClearance, this->TipFaceRadius);
 
     const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
     gl::SkeletonTree tree = gl::toSkeletonTree(skeleton);
     gl::matchSkeletonToLattice(tree, graph);
+    if (aborted(0.05))
+    {
+      return 1;
+    }
     const gl::MaterialSamples material = gl::sampleLatticeMaterial(graph, this->SampleSpacing);
-    this->UpdateProgress(0.1);
+    if (aborted(0.1))
+    {
+      return 1;
+    }
 
     gl::SequenceOptions options;
     options.strategy = static_cast<gl::SequenceStrategy>(this->Strategy);
@@ -215,13 +237,26 @@ int vtkGLPrintSequencer::RequestData(
     options.retractionCost = this->RetractionCost;
     const bool needPcg =
       options.strategy == gl::SequenceStrategy::Greedy || options.strategy == gl::SequenceStrategy::Rollout;
+    options.progress = gl::progressRange(this, needPcg ? 0.6 : 0.1, 0.95);
+    options.shouldAbort = gl::abortFlag(this);
     gl::PotentialCollisions pcg;
     if (needPcg)
     {
-      pcg = gl::computePotentialCollisions(material, nozzle, this->NumberOfThreads);
+      gl::PotentialCollisionOptions pcgOptions;
+      pcgOptions.threads = this->NumberOfThreads;
+      pcgOptions.progress = gl::progressRange(this, 0.1, 0.6);
+      pcgOptions.shouldAbort = gl::abortFlag(this);
+      pcg = gl::computePotentialCollisions(material, nozzle, pcgOptions);
+      if (aborted(0.6))
+      {
+        return 1;
+      }
     }
-    this->UpdateProgress(0.6);
     const gl::PrintSequence seq = gl::sequencePrint(tree, material, needPcg ? &pcg : nullptr, options);
+    if (aborted(0.95))
+    {
+      return 1;
+    }
 
     sequencedLattice(lattice, graph, seq, outputs[0]);
     sequencedSkeleton(skeleton, seq, outputs[1]);
@@ -238,7 +273,10 @@ int vtkGLPrintSequencer::RequestData(
     {
       out->Initialize();
     }
-    vtkErrorMacro(<< e.what());
+    if (!this->GetAbortExecute()) // an abort is not an error: empty outputs, no message
+    {
+      vtkErrorMacro(<< e.what());
+    }
   }
   return 1;
 }
@@ -251,6 +289,7 @@ void vtkGLPrintSequencer::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NozzleLength: " << this->NozzleLength << " mm\n";
   os << indent << "HolderRadius: " << this->HolderRadius << " mm\n";
   os << indent << "TipClearance: " << this->TipClearance << " mm\n";
+  os << indent << "TipFaceRadius: " << this->TipFaceRadius << " mm\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << " mm\n";
   os << indent << "RolloutCandidates: " << this->RolloutCandidates << "\n";
   os << indent << "RetractionCost: " << this->RetractionCost << " mm\n";

@@ -2,6 +2,8 @@
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshConversion.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "common/Error.h"
 #include "lattice/LatticeGraph.h"
@@ -111,10 +113,16 @@ int vtkGLSkeletonTree::FillInputPortInformation(int port, vtkInformation* info)
 int vtkGLSkeletonTree::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* lattice = vtkPolyData::GetData(inputVector[0], 0);
-  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::GetData(inputVector[1], 0);
+  // Collective in an MPI run: the lattice and the tet mesh on one process (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(inputVector, 2, outputVector);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
+  if (!inputs.Computes())
+  {
+    return 1; // another process has the inputs
+  }
+  vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
+  vtkUnstructuredGrid* grid = inputs.Get<vtkUnstructuredGrid>(1);
   try
   {
     const auto t0 = std::chrono::steady_clock::now();
@@ -134,8 +142,18 @@ int vtkGLSkeletonTree::RequestData(
     {
       gamma[i] = gammaArray->GetComponent(i, 0);
     }
-    this->UpdateProgress(0.2);
-    const gl::SkeletonTree tree = gl::buildSkeletonTree(mesh, gamma, graph);
+    if (gl::progressAborts(this, 0.2))
+    {
+      return 1;
+    }
+    gl::SkeletonTreeOptions options;
+    options.progress = gl::progressRange(this, 0.2, 0.95);
+    options.shouldAbort = gl::abortFlag(this);
+    const gl::SkeletonTree tree = gl::buildSkeletonTree(mesh, gamma, graph, options);
+    if (gl::progressAborts(this, 0.95))
+    {
+      return 1;
+    }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     buildOutput(tree, seconds, output);
     this->UpdateProgress(1.0);
@@ -143,7 +161,10 @@ int vtkGLSkeletonTree::RequestData(
   catch (const std::exception& e)
   {
     output->Initialize();
-    vtkErrorMacro(<< e.what());
+    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    {
+      vtkErrorMacro(<< e.what());
+    }
   }
   return 1;
 }

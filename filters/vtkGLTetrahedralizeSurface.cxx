@@ -2,6 +2,8 @@
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshConversion.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "common/Error.h"
 #include "tetrahedralize/SurfaceTetrahedralizer.h"
@@ -74,7 +76,8 @@ int vtkGLTetrahedralizeSurface::FillInputPortInformation(int, vtkInformation* in
 int vtkGLTetrahedralizeSurface::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  // Collective in an MPI run: the whole surface on one process (vtkGLParallel.h).
+  const geolattice::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   if (!output)
   {
@@ -82,34 +85,62 @@ int vtkGLTetrahedralizeSurface::RequestData(
     return 1;
   }
   output->Initialize();
+  if (!inputs.Computes())
+  {
+    return 1; // another process has the surface
+  }
+  vtkPolyData* input = inputs.Get<vtkPolyData>(0);
   try
   {
     if (!input)
     {
       throw geolattice::GeoLatticeError("input must be a vtkPolyData surface");
     }
-    this->UpdateProgress(0.0);
     const geolattice::TriangleSurface surface = geolattice::toTriangleSurface(input);
+    if (geolattice::progressAborts(this, 0.05))
+    {
+      return 1;
+    }
 
     geolattice::TetrahedralizeOptions options;
     options.targetEdgeLength = this->TargetEdgeLength;
     options.autoTargetTets = this->TargetTetCount;
     options.radiusEdgeRatio = this->RadiusEdgeRatio;
-    // Polled while TetGen runs in its child process; firing ProgressEvent lets ParaView's
-    // progress handler set AbortExecute.
-    options.shouldAbort = [this]() {
-      this->UpdateProgress(0.1);
+    // After each TetGen run (the automatic edge length may need several) and at the end.
+    double reported = 0.05;
+    options.progress = [this, &reported](double f) {
+      reported = 0.05 + 0.75 * f;
+      this->UpdateProgress(reported);
+    };
+    // Polled about every 50 ms while TetGen runs in its child process; firing ProgressEvent
+    // (with the last fraction, so progress never goes back) lets ParaView's progress handler
+    // set AbortExecute.
+    options.shouldAbort = [this, &reported]() {
+      if (!this->GetAbortExecute())
+      {
+        this->UpdateProgress(reported);
+      }
       return this->GetAbortExecute() != 0;
     };
     const geolattice::TetrahedralizeResult result = geolattice::tetrahedralizeSurface(surface, options);
-    this->UpdateProgress(0.8);
+    if (geolattice::progressAborts(this, 0.8))
+    {
+      return 1;
+    }
 
     geolattice::fromTetMesh(result.mesh, output);
     vtkNew<vtkDoubleArray> quality;
     quality->SetName(geolattice::arrays::TetQuality);
     quality->SetNumberOfValues(static_cast<vtkIdType>(result.mesh.tets.size()));
-    for (size_t t = 0; t < result.mesh.tets.size(); ++t)
+    const size_t tetCount = result.mesh.tets.size();
+    const size_t stride = std::max<size_t>(1, tetCount / 16);
+    for (size_t t = 0; t < tetCount; ++t)
     {
+      if (t % stride == 0 && geolattice::progressAborts(this, 0.8 + 0.15 * static_cast<double>(t) / tetCount))
+      {
+        output->Initialize();
+        return 1;
+      }
       const auto& tet = result.mesh.tets[t];
       const auto& p = result.mesh.points;
       quality->SetValue(

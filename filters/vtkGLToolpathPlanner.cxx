@@ -2,6 +2,8 @@
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshConversion.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "common/Error.h"
 #include "lattice/LatticeGraph.h"
@@ -118,6 +120,7 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   pd->AddArray(pointDoubles(gl::arrays::Width, path.width));
   pd->AddArray(pointDoubles(gl::arrays::Extrusion, path.extrusion));
   pd->AddArray(pointDoubles(gl::arrays::FeedRate, path.feedRate));
+  pd->AddArray(pointDoubles(gl::arrays::AxisTilt, path.axisTilt));
   pd->AddArray(kind);
   pd->AddArray(layer);
   pd->AddArray(subgraph);
@@ -191,6 +194,11 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   count(gl::arrays::ToolpathCappedVertices, t.cappedVertices);
   count(gl::arrays::ToolpathUnsupportedVertices, t.unsupportedVertices);
   count(gl::arrays::ToolpathRotationSteps, path.rotationSteps);
+  count(gl::arrays::ToolpathSubdivisionPoints, path.subdivisionPoints);
+  count(gl::arrays::ToolpathCollidingStations, path.collidingStations);
+  count(gl::arrays::ToolpathTiltedStations, path.tiltedStations);
+  count(gl::arrays::ToolpathUnclearedStations, path.unclearedStations);
+  count(gl::arrays::ToolpathMaxAxisTilt, path.maxAxisTiltDeg);
   count(gl::arrays::ToolpathSeconds, path.seconds);
 }
 
@@ -263,11 +271,13 @@ int vtkGLToolpathPlanner::FillInputPortInformation(int, vtkInformation* info)
   return 1;
 }
 
-std::array<double, 12> vtkGLToolpathPlanner::Parameters() const
+std::array<double, 20> vtkGLToolpathPlanner::Parameters() const
 {
   return { this->PathWidth, this->FilamentDiameter, this->FlowCorrection, this->PrintFeedRate, this->AirFeedRate,
     this->ThicknessCap, this->MaxTurnAngle, this->SafeMargin, this->Lift, this->Retraction,
-    static_cast<double>(this->SupportPerimeter), this->ToothLength };
+    static_cast<double>(this->SupportPerimeter), this->ToothLength, this->MaxSegmentLength, this->NozzleAngle,
+    this->NozzleLength, this->HolderRadius, this->TipClearance, this->TipFaceRadius, this->MaxAxisTilt,
+    this->TiltBlendLength };
 }
 
 int vtkGLToolpathPlanner::RequestInformation(
@@ -296,11 +306,17 @@ int vtkGLToolpathPlanner::RequestInformation(
 int vtkGLToolpathPlanner::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  vtkPolyData* lattice = vtkPolyData::GetData(inputVector[0], 0);
-  vtkPolyData* skeleton = vtkPolyData::GetData(inputVector[1], 0);
+  // Collective in an MPI run: the lattice and the skeleton on one process (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(inputVector, 2, outputVector);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
+  if (!inputs.Computes())
+  {
+    return 1; // another process has the inputs
+  }
+  vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
+  vtkPolyData* skeleton = inputs.Get<vtkPolyData>(1);
   try
   {
     const bool cached = this->Planned && lattice && skeleton && lattice->GetMTime() == this->PlannedLatticeTime &&
@@ -322,7 +338,10 @@ int vtkGLToolpathPlanner::RequestData(
       const std::vector<int> order = printOrderOf(lattice);
       gl::SkeletonTree tree = gl::toSkeletonTree(skeleton);
       gl::matchSkeletonToLattice(tree, graph);
-      this->UpdateProgress(0.1);
+      if (gl::progressAborts(this, 0.1))
+      {
+        return 1;
+      }
 
       gl::ToolpathOptions options;
       options.pathWidth = this->PathWidth;
@@ -337,11 +356,24 @@ int vtkGLToolpathPlanner::RequestData(
       options.retraction = this->Retraction;
       options.supportPerimeter = this->SupportPerimeter != 0;
       options.toothLength = this->ToothLength;
+      options.maxSegmentLength = this->MaxSegmentLength;
+      options.nozzle = gl::nozzleModel(
+        this->NozzleAngle, this->NozzleLength, this->HolderRadius, this->TipClearance, this->TipFaceRadius);
+      options.clearance.maxTiltDeg = this->MaxAxisTilt;
+      options.clearance.blendLength = this->TiltBlendLength;
+      // The planning is one core call (core/toolpath): progress before and after it.
       const gl::Toolpath path = gl::planToolpath(graph, tree, order, options);
-      this->UpdateProgress(0.8);
+      if (gl::progressAborts(this, 0.8))
+      {
+        return 1; // nothing cached: the next update plans again
+      }
 
       auto planned = vtkSmartPointer<vtkPolyData>::New();
       buildToolpath(path, graph, planned);
+      if (gl::progressAborts(this, 0.95))
+      {
+        return 1;
+      }
       if (vtkDataArray* edges = lattice->GetFieldData()->GetArray(gl::arrays::SkeletonEdges))
       {
         planned->GetFieldData()->AddArray(edges);
@@ -380,7 +412,10 @@ int vtkGLToolpathPlanner::RequestData(
   {
     this->Planned = nullptr;
     output->Initialize();
-    vtkErrorMacro(<< e.what());
+    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    {
+      vtkErrorMacro(<< e.what());
+    }
   }
   return 1;
 }
@@ -400,5 +435,13 @@ void vtkGLToolpathPlanner::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Retraction: " << this->Retraction << " mm\n";
   os << indent << "SupportPerimeter: " << this->SupportPerimeter << "\n";
   os << indent << "ToothLength: " << this->ToothLength << " mm\n";
+  os << indent << "MaxSegmentLength: " << this->MaxSegmentLength << " mm\n";
+  os << indent << "NozzleAngle: " << this->NozzleAngle << " deg\n";
+  os << indent << "NozzleLength: " << this->NozzleLength << " mm\n";
+  os << indent << "HolderRadius: " << this->HolderRadius << " mm\n";
+  os << indent << "TipClearance: " << this->TipClearance << " mm\n";
+  os << indent << "TipFaceRadius: " << this->TipFaceRadius << " mm\n";
+  os << indent << "MaxAxisTilt: " << this->MaxAxisTilt << " deg\n";
+  os << indent << "TiltBlendLength: " << this->TiltBlendLength << " mm\n";
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
 }

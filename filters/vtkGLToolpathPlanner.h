@@ -14,7 +14,11 @@
  * above the platform on the first layer); the extrusion follows the mass conservation
  * π r_m² ΔE = μ w h̄ L (Eq. 14, r_m = FilamentDiameter / 2, μ = FlowCorrection, w = PathWidth,
  * h̄ the mean thickness of the segment's ends); the nozzle axis is the layer normal (∇γ), with
- * rotation steps inserted where it would turn by more than MaxTurnAngle between points; between
+ * rotation steps inserted where it would turn by more than MaxTurnAngle between points and
+ * segments subdivided to at most MaxSegmentLength; where the nozzle along ∇γ would hit material
+ * printed earlier on the path (a strongly curved layer inside one sub-graph), the axis is tilted
+ * by the least angle that clears it (at most MaxAxisTilt, faded over TiltBlendLength of path;
+ * core/toolpath/NozzleAxisClearance.h); between
  * sub-graphs the nozzle retracts by Retraction mm of filament, moves by air (a hop of Lift mm
  * onto an upper node of the current sub-graph, else over the safe box around everything printed
  * so far grown by SafeMargin, Fig. 18) and primes again.
@@ -38,7 +42,8 @@
  *     `FeedRate` (mm/s), `MoveKind` (int: 0 print, 1 perimeter, 2 air; geolattice::movekind),
  *     `LayerId` (the lattice's LayerId, -1 on air moves), `SubgraphId` (-1 on air moves),
  *     `PathIndex` (int: the tour; air moves carry the next one), `PointIndex` (int: 0..N-1, the
- *     print time for vtkGLCollisionVerifier with TimeArrayName PointIndex);
+ *     print time for vtkGLCollisionVerifier with TimeArrayName PointIndex), `AxisTilt` (degrees
+ *     between the nozzle axis and the layer normal ∇γ);
  *   - cell data of each run: `MoveKind`, `PathIndex`, `LayerId`, `SubgraphId`;
  *   - field data: `ToolpathPrintLength` (lattice), `ToolpathPerimeterLength`, `ToolpathAirLength`
  *     (mm), `ToolpathPerimeterLoops`, `ToolpathPerimeterTeeth`, `ToolpathRetractions`,
@@ -48,7 +53,9 @@
  *     `ToolpathFilament` (mm), `ToolpathVolume` (mm³), `ToolpathThicknessDeviation` (2 values:
  *     min and max of e = (h - φ)/φ), `ToolpathThicknessDeviationPerLayer` (3 components min,
  *     mean, max per lattice layer 0..L-1), `ToolpathCappedVertices`,
- *     `ToolpathUnsupportedVertices`, `ToolpathRotationSteps`, `ToolpathSeconds` (planning wall
+ *     `ToolpathUnsupportedVertices`, `ToolpathRotationSteps`, `ToolpathSubdivisionPoints`,
+ *     `ToolpathCollidingStations` (along ∇γ), `ToolpathTiltedStations`,
+ *     `ToolpathUnclearedStations`, `ToolpathMaxAxisTilt` (degrees), `ToolpathSeconds` (planning wall
  *     time) and `SkeletonEdges` from input 0; always of the whole toolpath.
  * Time (print replay): unless NumberOfTimeSteps is 0 the output advertises NumberOfTimeSteps
  *   time steps p = k / (NumberOfTimeSteps - 1) in [0, 1] (TIME_STEPS, TIME_RANGE): the print
@@ -64,7 +71,10 @@
  *   ThicknessCap (λ of Eq. 15, default 1.5, > 0), MaxTurnAngle (degrees, default 5, > 0),
  *   SafeMargin (mm, default 5, >= 0), Lift (mm, default 2, > 0), Retraction (mm of filament,
  *   default 1, >= 0), SupportPerimeter (default on), ToothLength (l, mm, default 0 = 2 PathWidth,
- *   >= 0), NumberOfTimeSteps (default 200; 0 = no time steps, always the whole path).
+ *   >= 0), MaxSegmentLength (mm, default 1, >= 0; 0 = no subdivision), the nozzle NozzleAngle,
+ *   NozzleLength, HolderRadius, TipClearance, TipFaceRadius (as vtkGLCollisionVerifier),
+ *   MaxAxisTilt (degrees, default 15, in [0, 60]; 0 = axis ∇γ everywhere), TiltBlendLength (mm,
+ *   default 5, >= 0), NumberOfTimeSteps (default 200; 0 = no time steps, always the whole path).
  * Errors (an empty lattice or skeleton, missing arrays (EdgeKind included), no SequenceOrder
  * ("run GL Print Sequencer first"), an order that is not a permutation of the sub-graphs, a
  * skeleton that does not match the lattice, a bad parameter, or what the core rejects, e.g. odd
@@ -160,6 +170,41 @@ public:
   ///@}
 
   ///@{
+  /// Longest segment of the path: longer ones are subdivided (mm, default 1, >= 0; 0 = never), so
+  /// that a collision check of the path's points samples it this finely.
+  vtkSetMacro(MaxSegmentLength, double);
+  vtkGetMacro(MaxSegmentLength, double);
+  ///@}
+
+  ///@{
+  /// The nozzle kept clear of earlier material by tilting the axis (the same parameters as
+  /// vtkGLPrintSequencer and vtkGLCollisionVerifier): half-angle NA (degrees, default 45, in
+  /// (0, 90)), length (mm, default 0 = cone only), holder radius (mm, default 0), tip clearance
+  /// (mm, default 0.1), tip face radius (mm, default 0.3).
+  vtkSetMacro(NozzleAngle, double);
+  vtkGetMacro(NozzleAngle, double);
+  vtkSetMacro(NozzleLength, double);
+  vtkGetMacro(NozzleLength, double);
+  vtkSetMacro(HolderRadius, double);
+  vtkGetMacro(HolderRadius, double);
+  vtkSetMacro(TipClearance, double);
+  vtkGetMacro(TipClearance, double);
+  vtkSetMacro(TipFaceRadius, double);
+  vtkGetMacro(TipFaceRadius, double);
+  ///@}
+
+  ///@{
+  /// Largest tilt of the nozzle axis away from the layer normal where the normal would drive the
+  /// nozzle into earlier material of the path (degrees, default 15, in [0, 60]; 0 = the paper's
+  /// axis ∇γ everywhere). The tilt fades out over TiltBlendLength mm of path on each side
+  /// (default 5, >= 0).
+  vtkSetMacro(MaxAxisTilt, double);
+  vtkGetMacro(MaxAxisTilt, double);
+  vtkSetMacro(TiltBlendLength, double);
+  vtkGetMacro(TiltBlendLength, double);
+  ///@}
+
+  ///@{
   /// Time steps advertised for the print replay (default 200; 0 = none, always the whole path;
   /// 1 is taken as 2).
   vtkSetClampMacro(NumberOfTimeSteps, int, 0, 100000);
@@ -186,6 +231,14 @@ protected:
   double Retraction = 1.0;
   vtkTypeBool SupportPerimeter = 1;
   double ToothLength = 0.0;
+  double MaxSegmentLength = 1.0;
+  double NozzleAngle = 45.0;
+  double NozzleLength = 0.0;
+  double HolderRadius = 0.0;
+  double TipClearance = 0.1;
+  double TipFaceRadius = 0.3;
+  double MaxAxisTilt = 15.0;
+  double TiltBlendLength = 5.0;
   int NumberOfTimeSteps = 200;
 
 private:
@@ -193,13 +246,13 @@ private:
   void operator=(const vtkGLToolpathPlanner&) = delete;
 
   /// The parameters as the cache compares them.
-  std::array<double, 12> Parameters() const;
+  std::array<double, 20> Parameters() const;
 
   // Cache of the last successful planning: a new requested time only re-cuts it.
   vtkSmartPointer<vtkPolyData> Planned;   ///< the whole toolpath
   vtkMTimeType PlannedLatticeTime = 0;    ///< MTime of input 0 it was planned from
   vtkMTimeType PlannedSkeletonTime = 0;   ///< MTime of input 1
-  std::array<double, 12> PlannedParameters{};
+  std::array<double, 20> PlannedParameters{};
 };
 
 #endif

@@ -2,6 +2,8 @@
 
 #include "vtkGLMeshConversion.h"
 #include "vtkGLOutputFiles.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "common/Error.h"
 #include "program/URScriptProgram.h"
@@ -129,14 +131,25 @@ void vtkGLURScriptWriter::ResetResults()
 void vtkGLURScriptWriter::WriteData()
 {
   this->ResetResults();
+  // In an MPI run one process writes: the one with the toolpath (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(this);
+  if (!inputs.Computes())
+  {
+    return; // another process writes the program
+  }
   try
   {
     if (!this->FileName || !*this->FileName)
     {
       throw gl::GeoLatticeError("URScript writer: no FileName given");
     }
-    const gl::ToolpathArrays path = gl::toToolpathArrays(vtkPolyData::SafeDownCast(this->GetInput()));
+    const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
     this->NumberOfWaypoints = static_cast<vtkIdType>(path.points.size());
+    if (gl::progressAborts(this, 0.1))
+    {
+      this->ResetResults();
+      return;
+    }
 
     // The cell.
     gl::RobotCell cell;
@@ -188,9 +201,20 @@ void vtkGLURScriptWriter::WriteData()
     options.maxBlend = this->MaxBlend;
     options.programName = ProgramName(this->FileName);
 
-    // Joints along the path.
-    const gl::RobotPath robotPath = gl::solveRobotPath(cell, path.points, path.normals);
-    this->UpdateProgress(0.5);
+    // Joints along the path (one core call: progress before and after it).
+    if (!(this->MaxJointStep > 0) || !std::isfinite(this->MaxJointStep))
+    {
+      throw gl::GeoLatticeError(
+        "URScript writer: the maximum joint step must be > 0 degrees (got " + std::to_string(this->MaxJointStep) + ")");
+    }
+    gl::RobotPathOptions pathOptions;
+    pathOptions.maxJointStepDeg = this->MaxJointStep;
+    const gl::RobotPath robotPath = gl::solveRobotPath(cell, path.points, path.normals, pathOptions);
+    if (gl::progressAborts(this, 0.5))
+    {
+      this->ResetResults();
+      return;
+    }
     this->Unreachable.assign(robotPath.unreachable.begin(), robotPath.unreachable.end());
     std::sort(this->Unreachable.begin(), this->Unreachable.end());
     this->IKBranch = robotPath.branch;
@@ -201,6 +225,16 @@ void vtkGLURScriptWriter::WriteData()
     this->MinSingularity[1] = robotPath.minSingularity.elbow;
     this->MinSingularity[2] = robotPath.minSingularity.wrist;
     this->SolveSeconds = robotPath.seconds;
+    if (!robotPath.largeSteps.empty())
+    {
+      std::ostringstream text;
+      text << "URScript writer: a joint of the " << cell.robot.name << " jumps by " << robotPath.maxJointStepDeg
+           << " degrees at toolpath point " << robotPath.maxJointStepAt << " (" << robotPath.largeSteps.size()
+           << " steps above MaxJointStep " << this->MaxJointStep
+           << " degrees; a wrist flip or a joint limit): nothing written; move the nozzle tip or the part on the "
+              "flange, or raise MaxJointStep";
+      throw gl::GeoLatticeError(text.str());
+    }
     if (!this->Unreachable.empty())
     {
       const std::string text = describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name);
@@ -220,6 +254,11 @@ void vtkGLURScriptWriter::WriteData()
       names.push_back(ProgramFileName(this->FileName, static_cast<int>(k)));
       return files.open(names.back());
     });
+    if (gl::progressAborts(this, 0.9))
+    {
+      this->ResetResults();
+      return; // the temporary files go with `files`: nothing written
+    }
     files.commit();
     this->FilesWritten = names;
     this->NumberOfMoves = static_cast<vtkIdType>(stats.moves);
@@ -248,6 +287,11 @@ void vtkGLURScriptWriter::WriteData()
   catch (const std::exception& e)
   {
     this->FilesWritten.clear();
+    if (this->GetAbortExecute())
+    {
+      this->ResetResults(); // an abort is not an error: nothing written, no message
+      return;
+    }
     this->SetErrorCode(vtkErrorCode::UserError);
     vtkErrorMacro(<< e.what());
   }
@@ -272,6 +316,7 @@ void vtkGLURScriptWriter::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "SpeedFactor: " << this->SpeedFactor << "\n";
   os << indent << "MaxFilamentRate: " << this->MaxFilamentRate << " mm/s\n";
   os << indent << "MaxBlend: " << this->MaxBlend << " m\n";
+  os << indent << "MaxJointStep: " << this->MaxJointStep << " deg\n";
   os << indent << "AllowUnreachable: " << this->AllowUnreachable << "\n";
   os << indent << "FilesWritten: " << this->FilesWritten.size() << "\n";
   os << indent << "UnreachableCount: " << this->Unreachable.size() << "\n";

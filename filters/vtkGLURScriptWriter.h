@@ -53,10 +53,13 @@
  *   in front of the flange), MaxFileBytes (default 4000000, >= 10000), SpeedFactor (fraction of
  *   the joint speed limits used, default 0.5, in (0, 1]), MaxFilamentRate (mm/s of filament at
  *   analog level 1 (10 V), default 5, > 0), MaxBlend (blend radius limit, m, default 0.0005,
- *   >= 0), AllowUnreachable (default off). The toolpath's mm are scaled by 0.001 to metres.
+ *   >= 0), MaxJointStep (degrees, default 20, > 0: a larger jump of a joint between consecutive
+ *   points is refined away or refused), AllowUnreachable (default off). The toolpath's mm are
+ *   scaled by 0.001 to metres.
  * Errors (no FileName, an empty toolpath, missing arrays, a NaN point or a NaN / zero normal,
  *   a bad parameter (unknown robot, zero nozzle axis, …), an unreachable cell set-up or
- *   unreachable points, one print run longer than MaxFileBytes, a file that cannot be written)
+ *   unreachable points, a joint jump above MaxJointStep, one print run longer than MaxFileBytes,
+ *   a file that cannot be written)
  *   are reported with vtkErrorMacro; Write() then returns 0 and no file is left behind.
  */
 #ifndef vtkGLURScriptWriter_h
@@ -133,6 +136,14 @@ public:
   ///@}
 
   ///@{
+  /// Largest change of any joint between consecutive toolpath points (degrees, default 20, > 0).
+  /// The joint path is refined where a step is larger (RobotPathSolver.h); a step left above it
+  /// is an error naming the point, and nothing is written.
+  vtkSetMacro(MaxJointStep, double);
+  vtkGetMacro(MaxJointStep, double);
+  ///@}
+
+  ///@{
   /// Write the program even if some points are unreachable (default off: error, nothing written).
   vtkSetMacro(AllowUnreachable, vtkTypeBool);
   vtkGetMacro(AllowUnreachable, vtkTypeBool);
@@ -185,6 +196,7 @@ protected:
   double SpeedFactor = 0.5;
   double MaxFilamentRate = 5.0;
   double MaxBlend = 0.0005;
+  double MaxJointStep = 20.0;
   vtkTypeBool AllowUnreachable = 0;
 
 private:

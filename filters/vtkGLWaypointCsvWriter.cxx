@@ -2,6 +2,8 @@
 
 #include "vtkGLMeshConversion.h"
 #include "vtkGLOutputFiles.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
 
 #include "common/Error.h"
 #include "program/FiveAxisGCode.h"
@@ -42,15 +44,29 @@ vtkTypeBool vtkGLWaypointCsvWriter::ProcessRequest(
 void vtkGLWaypointCsvWriter::WriteData()
 {
   this->NumberOfRows = 0;
+  // In an MPI run one process writes: the one with the toolpath (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(this);
+  if (!inputs.Computes())
+  {
+    return; // another process writes the waypoints
+  }
   try
   {
     if (!this->FileName || !*this->FileName)
     {
       throw gl::GeoLatticeError("waypoint CSV writer: no FileName given");
     }
-    const gl::ToolpathArrays path = gl::toToolpathArrays(vtkPolyData::SafeDownCast(this->GetInput()));
+    const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
+    if (gl::progressAborts(this, 0.2))
+    {
+      return;
+    }
     gl::AtomicFileSet files;
     gl::writeWaypointCsv(path.points, path.normals, path.extrusion, path.kind, path.layer, files.open(this->FileName));
+    if (gl::progressAborts(this, 0.9))
+    {
+      return; // the temporary file goes with `files`: nothing written
+    }
     files.commit();
     this->NumberOfRows = static_cast<vtkIdType>(path.points.size());
   }
@@ -61,6 +77,10 @@ void vtkGLWaypointCsvWriter::WriteData()
   }
   catch (const std::exception& e)
   {
+    if (this->GetAbortExecute())
+    {
+      return; // an abort is not an error: nothing written, no message
+    }
     this->SetErrorCode(vtkErrorCode::UserError);
     vtkErrorMacro(<< e.what());
   }

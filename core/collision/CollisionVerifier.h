@@ -1,12 +1,13 @@
 #pragma once
 /// @file CollisionVerifier.h
 /// @brief Independent check that a print never drives the nozzle into material already
-/// printed (issue: collision verifier). It shares nothing with the sequencer's envelope code:
-/// given every printed point with its nozzle axis and the time it is printed, it asks, for each
-/// point as a nozzle station, whether any point printed strictly earlier lies inside the nozzle
-/// volume of NozzleModel.h there. Exact point-in-nozzle test (dot products, no angles), points in
-/// a static kd-tree whose nodes store their bounding sphere and earliest print time, so a query
-/// skips material printed later and space outside a cone that bounds the nozzle.
+/// printed (issue: collision verifier). It shares nothing with the sequencer's envelope code
+/// but the definition of the nozzle volume (NozzleVolume in NozzleModel.h): given every printed
+/// point with its nozzle axis and the time it is printed, it asks, for each point as a nozzle
+/// station, whether any point printed strictly earlier lies inside the nozzle volume there. Exact point-in-nozzle test (dot products, no angles), points in
+/// a static kd-tree whose nodes store their bounding sphere and earliest print time
+/// (TimedPointTree.h), so a query skips material printed later and space outside a cone that
+/// bounds the nozzle.
 ///
 /// For a sub-graph order, time = the sub-graph's position (all of its points share it, a
 /// sub-graph is not tested against itself); for a toolpath, time = the point's index on it.

@@ -1,6 +1,7 @@
 #include "gdf/GeodesicDistanceFields.h"
 
 #include "common/Error.h"
+#include "common/Progress.h"
 #include "common/UnionFind.h"
 #include "mesh/TetMeshTopology.h"
 
@@ -176,6 +177,8 @@ GeodesicDistanceFields::GeodesicDistanceFields(TetMesh mesh, const GeodesicField
     : mesh_(std::move(mesh)), options_(options), heat_(options.backend), pinnedLaplacian_(options.backend),
       dirichletLaplacian_(options.backend) {
   validate(options_);
+  const ProgressReporter progress(options_.progress, options_.shouldAbort, "geodesic distance fields");
+  progress.report(0.0);
   auto start = Clock::now();
   ops_ = buildTetOperators(mesh_); // also checks the vertex indices the topology relies on
   // The tet adjacency is needed only by solve() and by callers; build it on a second thread
@@ -206,17 +209,23 @@ GeodesicDistanceFields::GeodesicDistanceFields(TetMesh mesh, const GeodesicField
     }
   }
   setupTimings_.assembly = secondsSince(start);
+  progress.report(0.15);
 
   start = Clock::now();
   heat_.factorize(heatMatrix, "heat (V + tK)");
+  setupTimings_.factorization = secondsSince(start);
+  progress.report(0.55);
+  start = Clock::now();
   pinnedLaplacian_.shareAnalysis(heat_);
   pinnedLaplacian_.factorize(pinnedK, "pinned Laplacian");
   dirichletLaplacian_.shareAnalysis(heat_);
-  setupTimings_.factorization = secondsSince(start);
+  setupTimings_.factorization += secondsSince(start);
+  progress.report(0.95);
 
   start = Clock::now();
   topologyDone.get();
   setupTimings_.assembly += secondsSince(start);
+  progress.report(1.0);
 }
 
 GeodesicDistanceFields::~GeodesicDistanceFields() = default;
@@ -243,6 +252,8 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
                           std::to_string(without) + " of them contain no source vertex (γ is undefined there)");
   }
 
+  const ProgressReporter progress(options_.progress, options_.shouldAbort, "geodesic distance fields");
+  progress.report(0.0);
   GeodesicFields out;
   out.timings = setupTimings_;
 
@@ -260,6 +271,7 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
     out.timings.assembly += t0;
     out.timings.factorization += secondsSince(start);
   }
+  progress.report(0.4);
 
   const auto start = Clock::now();
   // Eq. 1: heat step from the sources.
@@ -268,6 +280,7 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
     rhs[s] = ops_.vertexVolumes[s];
   }
   const Eigen::VectorXd u = heat_.solve(rhs);
+  progress.report(0.5);
 
   // Eq. 2: g_γ = -∇u / |∇u| (heat decreases away from the base, γ increases).
   out.gammaDirection.resize(nt);
@@ -298,6 +311,7 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
       out.gamma[s] = 0; // exact already (decoupled identity rows); stated for the reader
     }
   }
+  progress.report(0.65);
 
   if (options_.directionsFromSolvedGamma) {
     // The layer normal is ∇γ of the solved field, not the raw heat gradient: near Neumann
@@ -349,6 +363,8 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
     out.betaDirection[t] = a.cross(g);
   }
 
+  progress.report(0.75);
+
   // Eqs. 4-5 for α and β with one pinned vertex per component.
   {
     Eigen::MatrixXd b(static_cast<Eigen::Index>(nv), 2);
@@ -375,6 +391,8 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
     }
   }
 
+  progress.report(0.9);
+
   // How orthogonal the solved fields are (the per-tet targets are orthogonal by construction).
   // Tets whose four vertices are all sources have ∇γ = 0 and are left out.
   std::vector<double> devAlpha, devBeta;
@@ -390,6 +408,7 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
   out.orthogonalityDeviationDeg = {percentile(devAlpha, 0.5), percentile(devAlpha, 0.95), percentile(devBeta, 0.5),
                                    percentile(devBeta, 0.95)};
   out.timings.solve = secondsSince(start);
+  progress.report(1.0);
   return out;
 }
 

@@ -15,6 +15,7 @@
 #include "gdf/TetLaplacian.h"
 #include "mesh/TetMesh.h"
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -33,6 +34,13 @@ struct GeodesicFieldOptions {
   /// solved γ, so the lattice lines are orthogonal to the actual layer normals. false: the
   /// paper's choice, the normalised heat gradient of Eq. 2.
   bool directionsFromSolvedGamma = true;
+  /// Called on the calling thread with the fraction done: the constructor reports its set-up
+  /// (assembly, factorizations) from 0 to 1, each solve() its own work again from 0 to 1.
+  /// Optional; not part of the set-up (changing it needs no new factorization).
+  std::function<void(double)> progress;
+  /// Polled between those steps; true stops with a GeoLatticeError "geodesic distance fields
+  /// aborted" (an aborted solve() leaves the solver usable). Optional.
+  std::function<bool()> shouldAbort;
 };
 
 /// @brief Seconds spent in each part of the computation.

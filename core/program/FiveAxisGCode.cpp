@@ -86,37 +86,65 @@ GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const 
     cs[i] = c;
     previousC = c;
   }
-  // Near the pole C is ill-conditioned: over each run of points within the pole band, C moves
-  // linearly from the C before the run to the C after it, and the tilt is the best one for that
-  // C (the axis is then off by at most about the band), so the table turns smoothly while it is
-  // almost flat instead of spinning between neighbouring points.
-  std::vector<char> band(N, 0);
-  for (size_t i = 0; i < N; ++i) band[i] = std::abs(tilts[i]) < o.poleBandDeg;
-  for (size_t i = 0; i < N;) {
-    if (!band[i]) {
-      ++i;
+  // Near the pole C is ill-conditioned: a 1° tilt in a new direction asks for any C. C may
+  // deviate from the exact value by δ_i as long as the axis error stays within the tolerance
+  // (a C off by δ leaves the axis asin(sin θ · sin δ) out of the tilt plane, θ = |tilt|; the tilt
+  // is then re-optimised for that C). Among the C sequences inside these tubes, a forward pass
+  // of reachable intervals with the rotary step bound r and a backward pass that moves C as
+  // little as possible pick one that turns at most r per point wherever that is possible at all.
+  const double tol = o.axisToleranceDeg / kDeg, r = o.maxRotaryStepDeg;
+  const double any = 1e12;  // a tube that allows every C
+  std::vector<double> lo(N), hi(N), ref(N);  // reachable C interval, a C inside it near the exact one
+  std::vector<char> forced(N, 0);            // the tube is beyond r: C turns faster here
+  for (size_t i = 0; i < N; ++i) {
+    const double sinTheta = std::sin(std::min(std::abs(tilts[i]), 180.0 - std::abs(tilts[i])) / kDeg);
+    const double delta = sinTheta <= std::sin(tol) ? 180.0 : std::asin(std::sin(tol) / sinTheta) * kDeg;
+    const double previous = i > 0 ? ref[i - 1] : cs[i];
+    const double reachLo = i > 0 ? lo[i - 1] - r : -any, reachHi = i > 0 ? hi[i - 1] + r : any;
+    if (delta >= 180.0) {
+      lo[i] = std::max(reachLo, -any);
+      hi[i] = std::min(reachHi, any);
+      ref[i] = previous;
       continue;
     }
-    size_t j = i;
-    while (j < N && band[j]) ++j;
-    const double before = i > 0 ? cs[i - 1] : (j < N ? cs[j] : cs[i]);
-    const double after = j < N ? unwrapNear(cs[j], before) : before;
-    for (size_t k = i; k < j; ++k) {
-      const double c = before + (after - before) * static_cast<double>(k - i + 1) / static_cast<double>(j - i + 1);
-      // Best tilt for this C: rotate R_C(c)·n within the tilt plane as close to +Z as possible.
-      const Eigen::Vector3d m = Eigen::AngleAxisd(c / kDeg, Eigen::Vector3d::UnitZ()) * normals[k].normalized();
-      const double tilt = o.kinematics == TableKinematics::AC ? std::atan2(m.y(), m.z()) * kDeg
-                                                              : std::atan2(-m.x(), m.z()) * kDeg;
-      const Eigen::Vector3d up = tiltMatrix(o.kinematics, tilt) * m;
-      stats.maxAxisErrorDeg = std::max(stats.maxAxisErrorDeg, std::acos(std::clamp(up.z(), -1.0, 1.0)) * kDeg);
-      cs[k] = c;
-      tilts[k] = tilt;
+    // The tube of the branch nearer to the C so far (the other branch: C + 180°, tilt negated,
+    // if the tilt limits allow it).
+    double centre = unwrapNear(cs[i], previous);
+    const double other = unwrapNear(cs[i] + 180.0, previous);
+    if (-tilts[i] >= o.tiltMinDeg && -tilts[i] <= o.tiltMaxDeg && std::abs(other - previous) < std::abs(centre - previous)) {
+      centre = other;
     }
-    if (j < N) {
-      const double shift = after - cs[j];  // C after the run continues from the interpolated value
-      for (size_t k = j; k < N; ++k) cs[k] += shift;
+    lo[i] = centre - delta;
+    hi[i] = centre + delta;
+    if (reachHi < lo[i]) {  // C must turn faster than r here: by the least step that reaches the tube
+      forced[i] = 1;
+      hi[i] = lo[i];
+    } else if (reachLo > hi[i]) {
+      forced[i] = 1;
+      lo[i] = hi[i];
+    } else {
+      lo[i] = std::max(lo[i], reachLo);
+      hi[i] = std::min(hi[i], reachHi);
     }
-    i = j;
+    ref[i] = std::clamp(centre, lo[i], hi[i]);
+  }
+  // Backward: stay where the next point is (least motion); inside the reachable intervals that
+  // is at most r away except after a forced jump.
+  std::vector<double> chosen(N);
+  chosen[N - 1] = ref[N - 1];
+  for (size_t i = N - 1; i-- > 0;) {
+    chosen[i] = std::clamp(chosen[i + 1], lo[i], hi[i]);
+  }
+  for (size_t k = 0; k < N; ++k) {
+    const double c = chosen[k];
+    // Best tilt for this C: rotate R_C(c)·n within the tilt plane as close to +Z as possible.
+    const Eigen::Vector3d m = Eigen::AngleAxisd(c / kDeg, Eigen::Vector3d::UnitZ()) * normals[k].normalized();
+    const double tilt = o.kinematics == TableKinematics::AC ? std::atan2(m.y(), m.z()) * kDeg : std::atan2(-m.x(), m.z()) * kDeg;
+    const Eigen::Vector3d up = tiltMatrix(o.kinematics, tilt) * m;
+    stats.maxAxisErrorDeg = std::max(stats.maxAxisErrorDeg, std::acos(std::clamp(up.z(), -1.0, 1.0)) * kDeg);
+    stats.forcedRotarySteps += forced[k];
+    cs[k] = c;
+    tilts[k] = tilt;
   }
   // Pass 2: machine positions and moves.
   double previousTilt = 0, previousE = extrusion[0];

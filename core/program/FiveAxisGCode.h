@@ -7,10 +7,12 @@
 /// n' = R_C(c)·n must lie in the tilt plane (A–C: n'x = 0, c = atan2(nx, ny); B–C: n'y = 0,
 /// c = atan2(-ny, nx)), then the tilt brings it up (A–C: a = atan2(ρ, nz); B–C: b = atan2(-ρ, nz),
 /// ρ = |n_xy|). The second branch is (c + π, −tilt). The branch is chosen once per path segment
-/// by continuity and the tilt limits; C is unwrapped (no ±180° jumps). Near the pole (ρ below
-/// poleTolerance) C is undefined: it keeps its previous value, so the table never spins when the
-/// tilt is ~0, and within poleBandDeg of the pole C is interpolated over the run (the axis is then
-/// off by less than the band, reported as maxAxisErrorDeg). Machine position: X Y Z = pivot + R_tilt·R_C·(p + partOffset), where partOffset
+/// by continuity and the tilt limits; C is unwrapped (no ±180° jumps). Near the pole C is
+/// ill-conditioned: C may deviate from its exact value while the axis stays within
+/// axisToleranceDeg (reported as maxAxisErrorDeg), and within those tubes C is chosen to turn by
+/// at most maxRotaryStepDeg per point wherever possible (forward pass of reachable intervals,
+/// backward pass of least motion; points where C must turn faster are counted), so the table
+/// does not spin while it is almost flat. Machine position: X Y Z = pivot + R_tilt·R_C·(p + partOffset), where partOffset
 /// is the part frame origin relative to the rotary centre on the table and pivot the machine
 /// position of the intersection of the two rotary axes. Feed in inverse time (G93): F = 1 / t
 /// per move with t the toolpath segment time, so rotary moves keep the planned timing.
@@ -30,10 +32,12 @@ struct GCodeOptions {
   Eigen::Vector3d partOffset = Eigen::Vector3d::Zero();  ///< mm, in the table (C) frame
   double tiltMinDeg = -120.0, tiltMaxDeg = 120.0;        ///< A or B limits
   double poleToleranceDeg = 0.01;                        ///< |tilt| below this: C is kept
-  /// Near the pole C is ill-conditioned (a 0.5° tilt in a random direction asks for any C).
-  /// Within this band C is interpolated between the C before and after the run of such points
-  /// and the tilt is chosen for that C, which leaves an axis error below the band.
-  double poleBandDeg = 1.0;
+  /// Near the pole C is ill-conditioned (a 0.5° tilt in a random direction asks for any C). C
+  /// may then deviate from its exact value as long as the tool axis stays within this angle of
+  /// the nozzle axis (the tilt is re-optimised for that C).
+  double axisToleranceDeg = 1.0;
+  /// Largest change of C between consecutive points wherever the axis tolerance allows it.
+  double maxRotaryStepDeg = 5.0;
 };
 
 struct GCodeStats {
@@ -41,7 +45,8 @@ struct GCodeStats {
   size_t outOfLimits = 0;     ///< points whose tilt exceeds the limits on both branches
   double maxRotaryStepDeg = 0;
   size_t branchFlips = 0;
-  double maxAxisErrorDeg = 0;  ///< from the pole band (0 outside it)
+  double maxAxisErrorDeg = 0;  ///< from the C deviations near the pole (at most axisToleranceDeg)
+  size_t forcedRotarySteps = 0;  ///< points where C had to turn by more than maxRotaryStepDeg
 };
 
 /// Rotary angles (degrees) for one axis direction: (tilt, c) of the branch nearest to

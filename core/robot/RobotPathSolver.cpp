@@ -47,38 +47,21 @@ double singularityPenalty(const RobotModel& r, const JointVector& q, const Isome
   return p;
 }
 
-} // namespace
+/// The coarse plan: one IK branch and a ψ grid index per coarse sample.
+struct CoarsePlan {
+  int branch = -1;
+  std::vector<int> psi;
+};
 
-RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
-                         const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
-  cell.validate();
-  const size_t N = points.size();
-  if (N == 0) {
-    throw GeoLatticeError("robot path: the toolpath is empty");
-  }
-  if (normals.size() != N) {
-    throw GeoLatticeError("robot path: one normal per toolpath point is needed");
-  }
-  for (size_t i = 0; i < N; ++i) {
-    if (!points[i].allFinite() || !normals[i].allFinite() || !(normals[i].norm() > 0)) {
-      std::ostringstream s;
-      s << "robot path: toolpath point " << i << " has a NaN position or a NaN/zero normal";
-      throw GeoLatticeError(s.str());
-    }
-  }
-  if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2) {
-    throw GeoLatticeError("robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2)");
-  }
+/// Dynamic programming over the ψ grid at the coarse samples, for every branch that reaches a
+/// subsample of them; the cheapest branch wins (module comment). branch -1: none reaches.
+CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+                      const std::vector<Eigen::Vector3d>& normals, const std::vector<size_t>& coarse,
+                      const RobotPathOptions& o) {
   const RobotModel& robot = cell.robot;
   const int P = o.psiSamples;
   const double dpsi = 2 * M_PI / P;
-  const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
-  std::vector<size_t> coarse;
-  for (size_t i = 0; i < N; i += stride) coarse.push_back(i);
-  if (coarse.back() != N - 1) coarse.push_back(N - 1);
   const size_t S = coarse.size();
-
   // Flange poses of the coarse samples on the ψ grid (shared by the branches).
   std::vector<Isometry> flange(S * P);
   for (size_t s = 0; s < S; ++s) {
@@ -100,10 +83,8 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
     }
     if (reaches) branches.push_back(branch);
   }
-  // Coarse DP per candidate branch.
+  CoarsePlan best;
   double bestCost = kInf;
-  int bestBranch = -1;
-  std::vector<int> bestPsi;
   std::vector<JointVector> q(S * P);
   std::vector<char> ok(S * P);
   std::vector<double> cost(S * P), penalty(S * P);
@@ -144,24 +125,28 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
     }
     if (end >= 0 && cost[(S - 1) * P + end] < bestCost) {
       bestCost = cost[(S - 1) * P + end];
-      bestBranch = branch;
-      bestPsi.assign(S, 0);
+      best.branch = branch;
+      best.psi.assign(S, 0);
       int k = end;
       for (size_t s = S; s-- > 0;) {
-        bestPsi[s] = k;
+        best.psi[s] = k;
         k = from[s * P + k];
       }
     }
   }
-  if (bestBranch < 0) {
-    throw GeoLatticeError(
-        "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously (check the nozzle "
-        "position, the part-on-flange transform and the part size)");
-  }
+  return best;
+}
 
-  // Fine pass.
+/// Joints at every point: ψ interpolated between the coarse samples, IK of the plan's branch,
+/// unwrapped next to the previous joints; FK check and singularity distances.
+RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<Eigen::Vector3d>& normals, const std::vector<size_t>& coarse,
+                    const CoarsePlan& plan, const RobotPathOptions& o) {
+  const RobotModel& robot = cell.robot;
+  const size_t N = points.size(), S = coarse.size();
+  const double dpsi = 2 * M_PI / o.psiSamples;
   RobotPath path;
-  path.branch = bestBranch;
+  path.branch = plan.branch;
   path.joints.resize(N);
   path.psi.resize(N);
   path.minSingularity = {kInf, kInf, kInf};
@@ -171,18 +156,18 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
   for (size_t i = 0; i < N; ++i) {
     while (seg + 1 < S - 1 && coarse[seg + 1] <= i) ++seg;
     const size_t a = coarse[seg], b = coarse[std::min(seg + 1, S - 1)];
-    double pa = bestPsi[seg] * dpsi, pb = bestPsi[std::min(seg + 1, S - 1)] * dpsi;
+    double pa = plan.psi[seg] * dpsi, pb = plan.psi[std::min(seg + 1, S - 1)] * dpsi;
     pb = pa + std::remainder(pb - pa, 2 * M_PI);
     const double t = b > a ? static_cast<double>(i - a) / static_cast<double>(b - a) : 0.0;
     double psi = (1 - t) * pa + t * pb;
     JointVector qi;
     Isometry f = cell.flangePose(points[i], normals[i], psi);
-    bool found = inverseKinematicsBranch(robot, f, bestBranch, qi, havePrevious ? previous[5] : 0.0);
+    bool found = inverseKinematicsBranch(robot, f, plan.branch, qi, havePrevious ? previous[5] : 0.0);
     for (int retry = 1; !found && retry <= 3; ++retry) {
       for (double sign : {1.0, -1.0}) {
         const double p2 = psi + sign * retry * dpsi;
         f = cell.flangePose(points[i], normals[i], p2);
-        if (inverseKinematicsBranch(robot, f, bestBranch, qi, havePrevious ? previous[5] : 0.0)) {
+        if (inverseKinematicsBranch(robot, f, plan.branch, qi, havePrevious ? previous[5] : 0.0)) {
           found = true;
           psi = p2;
           break;
@@ -209,13 +194,83 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
     if (havePrevious) {
       double step = 0;
       for (int j = 0; j < 6; ++j) step = std::max(step, std::abs(qi[j] - previous[j]));
-      path.maxJointStepDeg = std::max(path.maxJointStepDeg, step * 180.0 / M_PI);
+      if (step * 180.0 / M_PI > path.maxJointStepDeg) {
+        path.maxJointStepDeg = step * 180.0 / M_PI;
+        path.maxJointStepAt = static_cast<int>(i);
+      }
+      if (step * 180.0 / M_PI > o.maxJointStepDeg) {
+        path.largeSteps.push_back(static_cast<int>(i));
+      }
     }
     path.joints[i] = qi;
     path.psi[i] = psi;
     previous = qi;
     havePrevious = havePrevious || found;
   }
+  return path;
+}
+
+} // namespace
+
+RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+                         const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  cell.validate();
+  const size_t N = points.size();
+  if (N == 0) {
+    throw GeoLatticeError("robot path: the toolpath is empty");
+  }
+  if (normals.size() != N) {
+    throw GeoLatticeError("robot path: one normal per toolpath point is needed");
+  }
+  for (size_t i = 0; i < N; ++i) {
+    if (!points[i].allFinite() || !normals[i].allFinite() || !(normals[i].norm() > 0)) {
+      std::ostringstream s;
+      s << "robot path: toolpath point " << i << " has a NaN position or a NaN/zero normal";
+      throw GeoLatticeError(s.str());
+    }
+  }
+  if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2 || !(o.maxJointStepDeg > 0) ||
+      o.refinements < 0) {
+    throw GeoLatticeError("robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2, "
+                          "max joint step > 0, refinements >= 0)");
+  }
+  const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
+  std::vector<size_t> coarse;
+  for (size_t i = 0; i < N; i += stride) coarse.push_back(i);
+  if (coarse.back() != N - 1) coarse.push_back(N - 1);
+
+  RobotPath path;
+  for (int pass = 0;; ++pass) {
+    const CoarsePlan plan = planCoarse(cell, points, normals, coarse, o);
+    if (plan.branch < 0) {
+      throw GeoLatticeError(
+          "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously (check the nozzle "
+          "position, the part-on-flange transform and the part size)");
+    }
+    path = solveFine(cell, points, normals, coarse, plan, o);
+    path.refinements = pass;
+    if (path.largeSteps.empty() || pass == o.refinements) {
+      break;
+    }
+    // Between two coarse samples ψ was only interpolated, and the joints jumped (a wrist flip
+    // near a singularity, or a joint reaching its limit): sample the path densely there
+    // (stride / 64 apart over the coarse interval around each jump) and plan again.
+    const size_t fine = std::max<size_t>(1, stride / 64);
+    std::vector<size_t> added;
+    for (int i : path.largeSteps) {
+      const auto hi = std::upper_bound(coarse.begin(), coarse.end(), static_cast<size_t>(i));
+      const size_t from = hi == coarse.begin() ? 0 : *(hi - 1);
+      const size_t to = hi == coarse.end() ? N - 1 : *hi;
+      for (size_t j = from; j <= to; j += fine) added.push_back(j);
+      added.push_back(static_cast<size_t>(i - 1));
+      added.push_back(static_cast<size_t>(i));
+    }
+    coarse.insert(coarse.end(), added.begin(), added.end());
+    std::sort(coarse.begin(), coarse.end());
+    coarse.erase(std::unique(coarse.begin(), coarse.end()), coarse.end());
+  }
+  path.coarseSamples = static_cast<int>(coarse.size());
   path.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return path;
 }

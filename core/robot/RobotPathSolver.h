@@ -13,6 +13,11 @@
 ///    (multiples of 2π inside the ±2π limits), so joints stay continuous. A point whose IK
 ///    fails is retried at nearby ψ; if that fails too it is reported in `unreachable` (never
 ///    skipped silently) and keeps the previous joints.
+/// 3. Refinement: where a joint still steps by more than maxJointStepDeg between consecutive
+///    points (ψ was only interpolated between two coarse samples, and the wrist flipped near a
+///    singularity or a joint ran into its limit), the coarse interval around the step is sampled
+///    64 times more densely and the plan is made again (up to `refinements` passes). Steps left
+///    are listed in `largeSteps` for the caller to refuse.
 /// Cost O(samples · ψ² · 8 + N) IK solutions; 1M points ≈ 1 s.
 #include "robot/RobotCell.h"
 
@@ -25,6 +30,8 @@ struct RobotPathOptions {
   int maxPsiStep = 2;             ///< grid cells ψ may move between coarse samples
   int coarseSamples = 500;        ///< about this many coarse samples
   double singularityMargin = 0.05;  ///< below this (|sin θ5|, |sin θ3|, shoulder distance in m) a penalty applies
+  double maxJointStepDeg = 20.0;  ///< a larger step of any joint between consecutive points triggers refinement
+  int refinements = 3;            ///< passes that densify the coarse samples around such steps
 };
 
 struct RobotPath {
@@ -33,6 +40,10 @@ struct RobotPath {
   std::vector<int> unreachable;      ///< point indices without a valid IK solution
   int branch = -1;                   ///< IK branch used (inverseKinematicsBranch)
   double maxJointStepDeg = 0;        ///< largest change of any joint between consecutive points
+  int maxJointStepAt = -1;           ///< the point where it happens (the step from the point before)
+  std::vector<int> largeSteps;       ///< points reached by a step above RobotPathOptions::maxJointStepDeg
+  int coarseSamples = 0;             ///< coarse samples after refinement
+  int refinements = 0;               ///< refinement passes used
   SingularityDistance minSingularity;  ///< smallest distances along the path
   double maxTipError = 0;            ///< m: |FK(q)·partOnFlange·p − nozzle tip| over reachable points
   double maxAxisErrorDeg = 0;        ///< angle between the placed axis n and the nozzle axis

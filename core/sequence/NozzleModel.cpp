@@ -27,6 +27,9 @@ void NozzleModel::validate() const {
   if (!(tipClearance >= 0.0) || !std::isfinite(tipClearance)) {
     fail("tip clearance must be finite and >= 0 mm", tipClearance);
   }
+  if (!(tipFaceRadius >= 0.0) || !std::isfinite(tipFaceRadius)) {
+    fail("nozzle tip face radius must be finite and >= 0 mm", tipFaceRadius);
+  }
 }
 
 double NozzleModel::boundingHalfAngleRad() const {

@@ -12,6 +12,12 @@
 /// face rides on the layer being printed, so beads of the same layer next to the tip (their tops
 /// within a fraction of a layer of the tip, e.g. where the path passes a crossing the second
 /// time) are not obstacles. 0 makes every point above the tip plane count.
+/// tipFaceRadius (>= 0, default 0.3 mm) ignores material within that distance of the tip: it
+/// lies under the nozzle's flat face around the orifice (a 0.4-0.6 mm nozzle's face is about
+/// 1 mm across), which presses the bead being printed and its overlapping neighbours; it is
+/// not inside the nozzle body. 0 makes the cone start at the tip point.
+#include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -22,6 +28,7 @@ struct NozzleModel {
   double length = std::numeric_limits<double>::infinity();  ///< L (mm, > 0), ∞ = cone only
   double holderRadius = 0.0;    ///< R (mm, >= 0), used when length is finite; 0 = no holder
   double tipClearance = 0.1;    ///< material with h <= this is ignored (mm, >= 0)
+  double tipFaceRadius = 0.3;   ///< material within this distance of the tip is ignored (mm, >= 0)
 
   /// Throws GeoLatticeError naming the bad parameter.
   void validate() const;
@@ -31,6 +38,42 @@ struct NozzleModel {
   /// Distance from the tip beyond which nothing is inside: L / cos NA for a finite nozzle
   /// without holder (holderRadius 0), else ∞.
   double reach() const;
+};
+
+/// The exact point-in-nozzle test of NozzleModel in dot products (no angles), with the
+/// trigonometry done once; shared by the sequencer's collision graph, the verifier and the
+/// toolpath's axis clearance so that all three judge the same volume.
+struct NozzleVolume {
+  explicit NozzleVolume(const NozzleModel& m)
+    : cos2(std::cos(m.halfAngleDeg * M_PI / 180.0) * std::cos(m.halfAngleDeg * M_PI / 180.0)),
+      length(m.length), holder2(m.holderRadius * m.holderRadius), clearance(m.tipClearance),
+      face2(m.tipFaceRadius * m.tipFaceRadius) {}
+
+  /// Is x inside the nozzle with its tip at p and unit axis n? Sets height (along n) and radial
+  /// distance when it is.
+  bool contains(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const Eigen::Vector3d& x, double* height = nullptr,
+                double* radial = nullptr) const {
+    const Eigen::Vector3d d = x - p;
+    const double h = d.dot(n);
+    if (!(h > clearance)) {
+      return false;
+    }
+    const double d2 = d.squaredNorm();
+    if (d2 <= face2) {
+      return false;
+    }
+    const double r2 = std::max(0.0, d2 - h * h);
+    const bool inside = h <= length ? h * h > d2 * cos2 : r2 < holder2;  // angle(d, n) < NA, h > 0
+    if (inside && height) {
+      *height = h;
+    }
+    if (inside && radial) {
+      *radial = std::sqrt(r2);
+    }
+    return inside;
+  }
+
+  double cos2, length, holder2, clearance, face2;
 };
 
 } // namespace geolattice

@@ -1,6 +1,7 @@
 #include "sequence/PotentialCollisions.h"
 
 #include "common/Error.h"
+#include "common/Progress.h"
 
 #include <algorithm>
 #include <atomic>
@@ -88,23 +89,9 @@ double distanceToCone(const Vec3& v, const Vec3& a, double phi) {
   return psi - phi >= M_PI / 2 ? len : len * std::sin(psi - phi);
 }
 
-/// The exact nozzle volume at tip p with unit axis n (NozzleModel.h), in (h, r) form.
-struct ExactNozzle {
-  double tanAngle = 0, length = 0, holderRadius = 0, clearance = 0;
-  bool contains(const Vec3& p, const Vec3& n, const Vec3& x) const {
-    const Vec3 d = x - p;
-    const double h = d.dot(n);
-    if (h <= clearance) {
-      return false;
-    }
-    const double r = (d - h * n).norm();
-    return h <= length ? r < h * tanAngle : r < holderRadius;
-  }
-};
-
 struct PairSearch {
   const MaterialSamples& m;
-  const ExactNozzle& nozzle;
+  const NozzleVolume& nozzle;
   double boundAngle;
   double reach;  ///< nothing farther than this from a tip is inside the nozzle
   double clearance;  ///< material with h <= clearance is ignored
@@ -156,7 +143,16 @@ struct PairSearch {
 } // namespace
 
 PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const NozzleModel& model, int threads) {
+  PotentialCollisionOptions options;
+  options.threads = threads;
+  return computePotentialCollisions(m, model, options);
+}
+
+PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const NozzleModel& model,
+                                               const PotentialCollisionOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
+  const int threads = options.threads;
+  const ProgressReporter progress(options.progress, options.shouldAbort, "potential collisions");
   model.validate();
   if (m.offset.empty()) {
     throw GeoLatticeError("potential collisions: no sub-graph");
@@ -171,33 +167,44 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
       buildNode(t, m, 0, static_cast<int>(t.order.size()));
     }
   }
-  ExactNozzle nozzle;
-  nozzle.tanAngle = std::tan(model.halfAngleDeg * M_PI / 180.0);
-  nozzle.length = model.length;
-  nozzle.holderRadius = model.holderRadius;
-  nozzle.clearance = model.tipClearance;
+  const NozzleVolume nozzle(model);
   const double boundAngle = model.boundingHalfAngleRad();
 
   PotentialCollisions out;
   out.pcg.resize(K);
   const int workers = std::max(1, std::min(K, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency())));
-  std::atomic<int> next{0};
+  std::atomic<int> next{0}, done{0};
+  std::atomic<bool> stop{false};
+  bool aborted = false;
   std::vector<long long> tests(workers, 0);
   auto work = [&](int w) {
     PairSearch search{m, nozzle, boundAngle, model.reach(), model.tipClearance};
     std::vector<std::pair<int, int>> stack;
-    for (int i = next++; i < K; i = next++) {
-      if (trees[i].nodes.empty()) {
-        continue;
+    int reported = -1;  // the calling thread reports about 64 times
+    for (int i = next++; i < K && !stop; i = next++) {
+      if (!trees[i].nodes.empty()) {
+        for (int j = 0; j < K; ++j) {
+          if (j != i && !trees[j].nodes.empty() && search.collides(trees[i], trees[j], stack)) {
+            out.pcg[i].push_back(j);
+          }
+        }
       }
-      for (int j = 0; j < K; ++j) {
-        if (j != i && !trees[j].nodes.empty() && search.collides(trees[i], trees[j], stack)) {
-          out.pcg[i].push_back(j);
+      const int finished = ++done;
+      if (w == 0 && finished * 64 / K != reported) {
+        // Not ProgressReporter::report: an exception must not leave the other workers unjoined.
+        reported = finished * 64 / K;
+        if (options.progress) {
+          options.progress(static_cast<double>(finished) / K);
+        }
+        if (options.shouldAbort && options.shouldAbort()) {
+          aborted = true;
+          stop = true;
         }
       }
     }
     tests[w] = search.leafTests;
   };
+  progress.report(0.0);
   std::vector<std::thread> pool;
   for (int w = 1; w < workers; ++w) {
     pool.emplace_back(work, w);
@@ -206,11 +213,15 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
   for (auto& t : pool) {
     t.join();
   }
+  if (aborted) {
+    throw GeoLatticeError("potential collisions aborted");
+  }
   for (int i = 0; i < K; ++i) {
     out.pairs += static_cast<long long>(out.pcg[i].size());
   }
   out.leafTests = std::accumulate(tests.begin(), tests.end(), 0LL);
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  progress.report(1.0);  // the last sub-graphs may have been finished by other workers
   return out;
 }
 

@@ -16,6 +16,7 @@
 #include "sequence/NozzleModel.h"
 #include "sequence/PrintMaterial.h"
 
+#include <functional>
 #include <vector>
 
 namespace geolattice {
@@ -26,6 +27,20 @@ struct PotentialCollisions {
   long long leafTests = 0;            ///< exact point-in-nozzle tests performed
   double seconds = 0;
 };
+
+/// @brief Parameters of computePotentialCollisions() (the result does not depend on them).
+struct PotentialCollisionOptions {
+  int threads = 0;  ///< worker threads over the sub-graphs; 0 = hardware concurrency
+  /// Called on the calling thread with the fraction of sub-graphs done (1 at the end). Optional.
+  std::function<void(double)> progress;
+  /// Polled on the calling thread after each sub-graph it handles; true stops every worker and
+  /// throws GeoLatticeError "potential collisions aborted". Optional.
+  std::function<bool()> shouldAbort;
+};
+
+/// Throws GeoLatticeError for a bad nozzle.
+PotentialCollisions computePotentialCollisions(const MaterialSamples& material, const NozzleModel& nozzle,
+                                               const PotentialCollisionOptions& options);
 
 /// threads: 0 = hardware concurrency. Throws GeoLatticeError for a bad nozzle.
 PotentialCollisions computePotentialCollisions(const MaterialSamples& material, const NozzleModel& nozzle,

@@ -1,6 +1,7 @@
 #include "sequence/PrintSequencer.h"
 
 #include "common/Error.h"
+#include "common/Progress.h"
 
 #include <algorithm>
 #include <chrono>
@@ -157,8 +158,9 @@ void greedyStep(SequenceState& s) {
   s.print(nearestReady(s, [&](int k) { return s.blockedBy[k] == fewest; }), true);
 }
 
-void runLayerPriority(SequenceState& s) {
+void runLayerPriority(SequenceState& s, const ProgressReporter& progress) {
   while (!s.done()) {
+    progress.loop(s.order.size(), s.printed.size());
     int lowest = std::numeric_limits<int>::max();
     for (int k : s.ready) {
       lowest = std::min(lowest, s.tree->nodes[k].layer);
@@ -175,8 +177,9 @@ void runLayerPriority(SequenceState& s) {
   }
 }
 
-void runDepthPriority(SequenceState& s) {
+void runDepthPriority(SequenceState& s, const ProgressReporter& progress) {
   while (!s.done()) {
+    progress.loop(s.order.size(), s.printed.size());
     int next = upperOfCurrent(s, false);
     if (next < 0) {  // back to the most recently enabled node (depth first)
       int latest = -1;
@@ -189,8 +192,12 @@ void runDepthPriority(SequenceState& s) {
   }
 }
 
-void runGreedy(SequenceState& s) {
+/// progress: null for the trial completions of the rollout.
+void runGreedy(SequenceState& s, const ProgressReporter* progress) {
   while (!s.done()) {
+    if (progress) {
+      progress->loop(s.order.size(), s.printed.size());
+    }
     greedyStep(s);
   }
 }
@@ -200,8 +207,9 @@ double rolloutCost(const SequenceState& s, double retractionCost) {
   return s.forcedSteps * 1e12 + s.retractions * retractionCost + s.airLength;
 }
 
-void runRollout(SequenceState& s, const SequenceOptions& options) {
+void runRollout(SequenceState& s, const SequenceOptions& options, const ProgressReporter& progress) {
   while (!s.done()) {
+    progress.loop(s.order.size(), s.printed.size());
     if (upperOfCurrent(s, true) >= 0 || s.current < 0) {
       greedyStep(s);  // no retraction needed (or the very first node): nothing to decide
       continue;
@@ -224,7 +232,7 @@ void runRollout(SequenceState& s, const SequenceOptions& options) {
     for (const auto& [distance, k] : options_) {
       SequenceState trial = s;
       trial.print(k, false);
-      runGreedy(trial);
+      runGreedy(trial, nullptr);
       const double cost = rolloutCost(trial, options.retractionCost);
       if (cost < bestCost) {
         bestCost = cost;
@@ -309,18 +317,22 @@ PrintSequence sequencePrint(const SkeletonTree& tree, const MaterialSamples& m, 
     throw GeoLatticeError("print sequencer: rollout candidates must be >= 1 and the retraction cost >= 0");
   }
 
+  const ProgressReporter progress(options.progress, options.shouldAbort, "print sequencing");
+  progress.report(0.0);
   SequenceState state;
   state.init(tree, m, needsPcg ? pcg : nullptr);
   PrintSequence seq;
   seq.strategy = options.strategy;
   switch (options.strategy) {
-  case SequenceStrategy::LayerPriority: runLayerPriority(state); break;
-  case SequenceStrategy::DepthPriority: runDepthPriority(state); break;
-  case SequenceStrategy::Greedy: runGreedy(state); break;
+  case SequenceStrategy::LayerPriority: runLayerPriority(state, progress); break;
+  case SequenceStrategy::DepthPriority: runDepthPriority(state, progress); break;
+  case SequenceStrategy::Greedy: runGreedy(state, &progress); break;
   case SequenceStrategy::Rollout: {
+    // A4 first (fast), then the rollout, which tries candidates at every retraction.
     SequenceState greedy = state;
-    runGreedy(greedy);
-    runRollout(state, options);
+    const ProgressReporter greedyPart = progress.part(0.0, 0.05);
+    runGreedy(greedy, &greedyPart);
+    runRollout(state, options, progress.part(0.05, 1.0));
     // Keep the improvement only where it is no worse on both counts.
     if (state.forcedSteps > greedy.forcedSteps || state.retractions > greedy.retractions ||
         state.airLength > greedy.airLength) {
@@ -334,6 +346,7 @@ PrintSequence sequencePrint(const SkeletonTree& tree, const MaterialSamples& m, 
   seq.unavoidablePairs = state.unavoidablePairs;
   evaluateSequence(tree, m, seq);
   seq.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  progress.report(1.0);
   return seq;
 }
 

@@ -31,6 +31,7 @@
 #include "sequence/PrintMaterial.h"
 #include "sequence/SkeletonTree.h"
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -46,6 +47,11 @@ struct SequenceOptions {
   SequenceStrategy strategy = SequenceStrategy::Greedy;
   int rolloutCandidates = 6;      ///< nearest candidates tried at each retraction (Rollout, >= 1)
   double retractionCost = 20.0;   ///< mm of air move one retraction is worth (Rollout, >= 0)
+  /// Called on the calling thread with the fraction of the order decided. Optional.
+  std::function<void(double)> progress;
+  /// Polled where progress is reported; true stops with a GeoLatticeError "print sequencing
+  /// aborted". Optional.
+  std::function<bool()> shouldAbort;
 };
 
 struct PrintSequence {

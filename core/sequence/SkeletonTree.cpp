@@ -1,6 +1,7 @@
 #include "sequence/SkeletonTree.h"
 
 #include "common/Error.h"
+#include "common/Progress.h"
 #include "common/UnionFind.h"
 #include "mesh/TetMeshTopology.h"
 
@@ -29,7 +30,7 @@ double minBarycentric(const TetMesh& mesh, int t, const Vec3& x) {
 } // namespace
 
 SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma, const std::vector<double>& phi,
-                               const std::vector<SkeletonAnchor>& anchors) {
+                               const std::vector<SkeletonAnchor>& anchors, const SkeletonTreeOptions& options) {
   const int T = static_cast<int>(mesh.tets.size());
   const int L = static_cast<int>(phi.size());
   const int K = static_cast<int>(anchors.size());
@@ -53,6 +54,9 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
     }
   }
 
+  const ProgressReporter progress(options.progress, options.shouldAbort, "skeleton tree");
+  progress.report(0.0);
+
   // γ range of each tet; slabs s = [phi[s], phi[s+1]], s = 0..L-2, met by the tet.
   std::vector<double> gmin(T), gmax(T);
   std::vector<int> slabBegin(T), slabEnd(T), elementOffset(T + 1, 0);
@@ -70,10 +74,15 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
     return s >= slabBegin[t] && s < slabEnd[t] ? elementOffset[t] + (s - slabBegin[t]) : -1;
   };
 
+  progress.report(0.05);
+
   // Pieces of face-adjacent tets touch iff the shared face meets the slab.
   UnionFind pieces(elementOffset[T]);
   const TetMeshTopology topology(mesh);
+  progress.report(0.35);
+  const ProgressReporter unionProgress = progress.part(0.35, 0.65);
   for (int t = 0; t < T; ++t) {
+    unionProgress.loop(t, T);
     const auto& q = mesh.tets[t];
     for (int k = 0; k < 4; ++k) {
       const int u = topology.neighbor(t, k);
@@ -94,6 +103,8 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
       }
     }
   }
+
+  progress.report(0.65);
 
   // Locate each anchor in a tet whose γ range contains its layer value: among the tets of
   // that layer whose bounding box contains it, the one it is deepest inside.
@@ -122,8 +133,11 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
       }
     }
   }
+  progress.report(0.7);
+  const ProgressReporter anchorProgress = progress.part(0.7, 0.95);
   std::vector<int> anchorTet(K, -1);
   for (int k = 0; k < K; ++k) {
+    anchorProgress.loop(k, K);
     const Vec3& x = anchors[k].point;
     double best = -std::numeric_limits<double>::infinity();
     for (int i = layerTetOffset[anchors[k].layer]; i < layerTetOffset[anchors[k].layer + 1]; ++i) {
@@ -152,6 +166,8 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
       throw GeoLatticeError(s.str());
     }
   }
+
+  progress.report(0.95);
 
   std::vector<int> label;
   SkeletonTree tree;
@@ -206,10 +222,12 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
     tree.mergeNodes += n.lower.size() > 1;
     tree.splitNodes += n.upper.size() > 1;
   }
+  progress.report(1.0);
   return tree;
 }
 
-SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma, const LatticeGraph& lattice) {
+SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma, const LatticeGraph& lattice,
+                               const SkeletonTreeOptions& options) {
   const int K = static_cast<int>(lattice.subgraphs.size());
   if (K == 0) {
     throw GeoLatticeError("skeleton tree: the lattice has no sub-graph");
@@ -234,7 +252,7 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
     }
     anchors[s].layer = lattice.subgraphs[s].layer;
   }
-  SkeletonTree tree = buildSkeletonTree(mesh, gamma, lattice.layerValues, anchors);
+  SkeletonTree tree = buildSkeletonTree(mesh, gamma, lattice.layerValues, anchors, options);
   for (int s = 0; s < K; ++s) {
     tree.nodes[s].indexInLayer = lattice.subgraphs[s].indexInLayer;
     tree.nodes[s].centroid = lattice.subgraphs[s].centroid;

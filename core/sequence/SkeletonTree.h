@@ -23,6 +23,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace geolattice {
@@ -55,17 +56,27 @@ struct SkeletonAnchor {
   Vec3 point = Vec3::Zero();
 };
 
+/// @brief Optional callbacks of buildSkeletonTree() (the result does not depend on them).
+struct SkeletonTreeOptions {
+  /// Called on the calling thread with the fraction done. Optional.
+  std::function<void(double)> progress;
+  /// Polled where progress is reported; true stops with a GeoLatticeError "skeleton tree
+  /// aborted". Optional.
+  std::function<bool()> shouldAbort;
+};
+
 /// Builds the skeleton from the tet mesh with vertex field γ, the lattice layer values φ_i
 /// (ascending) and one anchor per sub-graph (node i <-> anchors[i]); centroid and length of
 /// the nodes are left 0. Throws GeoLatticeError for empty input, sizes that do not match,
 /// layer values that are not strictly ascending, an anchor layer out of range, or an anchor
 /// that lies in no tet whose γ range contains its layer value.
 SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma, const std::vector<double>& layerValues,
-                               const std::vector<SkeletonAnchor>& anchors);
+                               const std::vector<SkeletonAnchor>& anchors, const SkeletonTreeOptions& options = {});
 
 /// Same, with anchors, centroids and lengths taken from the lattice's sub-graphs. Throws
 /// GeoLatticeError also for a lattice without sub-graphs.
-SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma, const LatticeGraph& lattice);
+SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma, const LatticeGraph& lattice,
+                               const SkeletonTreeOptions& options = {});
 
 /// @brief Transitive "must be printed before" relation of a skeleton: a is an ancestor of b
 /// iff a chain of edges leads upwards from a to b (Criterion 1 then forces a before b in every

@@ -1,6 +1,7 @@
 #include "slicer/CurvedLayerSlicer.h"
 
 #include "common/Error.h"
+#include "common/Progress.h"
 
 #include <Eigen/LU>
 #include <algorithm>
@@ -127,6 +128,8 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
                                const Eigen::VectorXd& beta, const std::vector<Vec3>& vertexNormals,
                                const SlicerOptions& options) {
   validate(mesh, gamma, alpha, beta, vertexNormals, options);
+  const ProgressReporter progress(options.progress, options.shouldAbort, "curved layer slicing");
+  progress.report(0.0);
   const int total = layerCount(gamma.maxCoeff(), options);
   if (total == 0) {
     throw GeoLatticeError("no layer: the first layer offset (" + std::to_string(options.firstLayerOffset) +
@@ -156,6 +159,7 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
   std::vector<std::array<int, 2>> edges;
   std::vector<std::array<int, 6>> tetEdges;
   uniqueEdges(mesh, edges, tetEdges);
+  progress.report(0.15);
 
   // Points: edge crossings γ(a) < φ_i < γ(b) get slots edgeOffset[e] + (i - edgeFirst[e]);
   // vertices with γ == φ_i get one slot each.
@@ -213,7 +217,10 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
     }
   }
 
+  progress.report(0.3);
+
   // Triangles: per tet, per crossing layer, 1 (3-1 split) or 2 (2-2 split), oriented along ∇γ.
+  const ProgressReporter triangleProgress = progress.part(0.3, 0.85);
   CurvedLayers out;
   struct Tri {
     std::array<int, 3> v;
@@ -222,6 +229,7 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
   std::vector<Tri> tris;
   tris.reserve(2 * mesh.tets.size());
   for (size_t t = 0; t < mesh.tets.size(); ++t) {
+    triangleProgress.loop(t, mesh.tets.size());
     const auto& tet = mesh.tets[t];
     double gmin = gamma[tet[0]], gmax = gmin;
     for (int k = 1; k < 4; ++k) {
@@ -280,6 +288,8 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
       }
     }
   }
+
+  progress.report(0.85);
 
   // A mesh face lying in a layer is emitted by both of its tets when both lie on the same side
   // (the layer only touches it): drop both copies. Only all-vertex-hit triangles can repeat.
@@ -373,6 +383,7 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
     out.layerIndex[l] = first + l;
     out.layerValues[l] = phi(first + l);
   }
+  progress.report(1.0);
   return out;
 }
 

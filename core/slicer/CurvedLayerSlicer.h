@@ -16,6 +16,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <functional>
 #include <vector>
 
 namespace geolattice {
@@ -26,6 +27,11 @@ struct SlicerOptions {
   double firstLayerOffset = 0.6;  ///< γ of layer 0 (mm, > 0)
   int firstLayer = 0;             ///< first layer index to extract (>= 0)
   int lastLayer = -1;             ///< last layer index to extract; -1 = up to the top
+  /// Called on the calling thread with the fraction of sliceCurvedLayers() done. Optional.
+  std::function<void(double)> progress;
+  /// Polled where progress is reported; true stops with a GeoLatticeError "curved layer slicing
+  /// aborted". Optional.
+  std::function<bool()> shouldAbort;
 };
 
 /// Number of layers φ_i <= γ_max: floor((γ_max - offset) / interval) + 1 (0 if offset > γ_max).

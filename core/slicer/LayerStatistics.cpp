@@ -7,8 +7,13 @@
 #include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 
+#include <algorithm>
+#include <atomic>
 #include <cmath>
+#include <exception>
 #include <limits>
+#include <mutex>
+#include <thread>
 
 namespace geolattice {
 
@@ -45,10 +50,46 @@ int layerComponents(const CurvedLayers& layers, int l, std::vector<int>& triangl
   return count;
 }
 
-std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers) {
+namespace {
+/// The triangles of layer l as CGAL triangles.
+std::vector<Triangle> layerTriangles(const CurvedLayers& layers, int l) {
+  std::vector<Triangle> out;
+  out.reserve(layers.layerTriangleOffset[l + 1] - layers.layerTriangleOffset[l]);
+  for (int k = layers.layerTriangleOffset[l]; k < layers.layerTriangleOffset[l + 1]; ++k) {
+    const auto& t = layers.triangles[k];
+    out.emplace_back(toPoint(layers.points[t[0]]), toPoint(layers.points[t[1]]), toPoint(layers.points[t[2]]));
+  }
+  return out;
+}
+
+/// Spacing of layer l to layer l + 1 (min, mean, max of the point-to-surface distances of
+/// layer l's points); the statistics must already hold the point and triangle counts.
+void layerSpacing(const CurvedLayers& layers, int l, std::vector<LayerStatistics>& stats) {
+  const int L = static_cast<int>(stats.size());
+  LayerStatistics& s = stats[l];
+  if (l + 1 == L || stats[l + 1].triangles == 0 || s.points == 0) {
+    s.spacingMin = s.spacingMean = s.spacingMax = std::numeric_limits<double>::quiet_NaN();
+    return;
+  }
+  const std::vector<Triangle> next = layerTriangles(layers, l + 1);
+  Tree tree(next.cbegin(), next.cend());
+  tree.accelerate_distance_queries();
+  s.spacingMin = std::numeric_limits<double>::infinity();
+  s.spacingMax = 0;
+  double sum = 0;
+  for (int p = layers.layerPointOffset[l]; p < layers.layerPointOffset[l + 1]; ++p) {
+    const double d = std::sqrt(tree.squared_distance(toPoint(layers.points[p])));
+    s.spacingMin = std::min(s.spacingMin, d);
+    s.spacingMax = std::max(s.spacingMax, d);
+    sum += d;
+  }
+  s.spacingMean = sum / s.points;
+}
+} // namespace
+
+std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers, int threads) {
   const int L = static_cast<int>(layers.layerValues.size());
   std::vector<LayerStatistics> stats(L);
-  std::vector<std::vector<Triangle>> triangles(L);
   std::vector<int> components;
   for (int l = 0; l < L; ++l) {
     LayerStatistics& s = stats[l];
@@ -60,28 +101,37 @@ std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers) 
       const auto& t = layers.triangles[k];
       const Vec3& a = layers.points[t[0]];
       s.area += 0.5 * (layers.points[t[1]] - a).cross(layers.points[t[2]] - a).norm();
-      triangles[l].emplace_back(toPoint(a), toPoint(layers.points[t[1]]), toPoint(layers.points[t[2]]));
     }
   }
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (int l = 0; l < L; ++l) {
-    LayerStatistics& s = stats[l];
-    if (l + 1 == L || triangles[l + 1].empty() || s.points == 0) {
-      s.spacingMin = s.spacingMean = s.spacingMax = nan;
-      continue;
+  // The spacing (an AABB tree of the next layer and a distance query per point) is most of the
+  // cost: layers are independent, so worker threads take them one at a time. Each layer is
+  // computed exactly as on one thread, so the result does not depend on the thread count.
+  std::atomic<int> nextLayer{0};
+  std::exception_ptr error;
+  std::mutex errorMutex;
+  auto work = [&] {
+    try {
+      for (int l = nextLayer++; l < L; l = nextLayer++) {
+        layerSpacing(layers, l, stats);
+      }
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(errorMutex);
+      error = std::current_exception();
+      nextLayer = L;
     }
-    Tree tree(triangles[l + 1].cbegin(), triangles[l + 1].cend());
-    tree.accelerate_distance_queries();
-    s.spacingMin = std::numeric_limits<double>::infinity();
-    s.spacingMax = 0;
-    double sum = 0;
-    for (int p = layers.layerPointOffset[l]; p < layers.layerPointOffset[l + 1]; ++p) {
-      const double d = std::sqrt(tree.squared_distance(toPoint(layers.points[p])));
-      s.spacingMin = std::min(s.spacingMin, d);
-      s.spacingMax = std::max(s.spacingMax, d);
-      sum += d;
-    }
-    s.spacingMean = sum / s.points;
+  };
+  int workers = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
+  workers = std::max(1, std::min(workers, L));
+  std::vector<std::thread> pool;
+  for (int i = 1; i < workers; ++i) {
+    pool.emplace_back(work);
+  }
+  work();
+  for (auto& t : pool) {
+    t.join();
+  }
+  if (error) {
+    std::rethrow_exception(error);
   }
   return stats;
 }

@@ -21,7 +21,9 @@ struct LayerStatistics {
 };
 
 /// Statistics of every layer of `layers` (AABB trees of CGAL for the spacing, O(n log n)).
-std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers);
+/// The spacing is computed on `threads` worker threads over layers (0 = hardware concurrency);
+/// the result is the same for every thread count.
+std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers, int threads = 0);
 
 /// Component id (0..count-1) of every triangle of layer l; returns the count.
 int layerComponents(const CurvedLayers& layers, int l, std::vector<int>& triangleComponent);

@@ -1,6 +1,7 @@
 #include "tetrahedralize/SurfaceTetrahedralizer.h"
 
 #include "common/Error.h"
+#include "common/Progress.h"
 #include "mesh/SurfaceCheck.h"
 #include "mesh/TetMeshCheck.h"
 #include "tetrahedralize/TetGenRunner.h"
@@ -215,7 +216,9 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const T
     return "pq" + formatSwitchNumber(options.radiusEdgeRatio) + "a" + formatSwitchNumber(regularTetVolume(edge)) +
            "AQ";
   };
+  const ProgressReporter progress(options.progress, options.shouldAbort, "tetrahedralization");
   int removedRegions = 0; // of the last run
+  int runs = 0;
   auto run = [&](double edge) {
     TetGenOutput out = runTetGen(surface, switchesFor(edge), options.shouldAbort);
     if (out.mesh.tets.empty()) {
@@ -234,6 +237,8 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const T
                             formatSwitchNumber(100.0 * gap) +
                             " %: the surface has overlapping parts or nearly coincident vertices");
     }
+    ++runs;
+    progress.report(automatic ? 0.9 * runs / kMaxAutoAttempts : 0.9);
     return std::move(out.mesh);
   };
 
@@ -298,6 +303,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const T
   result.meshVolume = check.totalVolume;
   result.meanEdgeLength = meanUniqueEdgeLength(result.mesh);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  progress.report(1.0);
   return result;
 }
 

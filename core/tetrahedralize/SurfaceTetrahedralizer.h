@@ -33,9 +33,13 @@ struct TetrahedralizeOptions {
   /// Upper bound of the tets' circumradius / shortest-edge ratio (TetGen switch -q).
   /// Range [kMinRadiusEdgeRatio, kMaxRadiusEdgeRatio]; 1.414 = sqrt 2 (good quality).
   double radiusEdgeRatio = 1.414;
-  /// Polled about every 50 ms while TetGen runs; returning true stops it and throws
-  /// "tetrahedralization aborted" (filters pass their AbortExecute flag). Optional.
+  /// Polled about every 50 ms while TetGen runs, and after each run; returning true stops it
+  /// and throws "tetrahedralization aborted" (filters pass their AbortExecute flag). Optional.
   std::function<bool()> shouldAbort;
+  /// Called on the calling thread with the fraction done: after each TetGen run
+  /// (runs / kMaxAutoAttempts of 0.9 for the automatic edge length, 0.9 for a given one) and
+  /// 1 at the end. Optional.
+  std::function<void(double)> progress;
 };
 
 /// @brief Mesh plus what was done to get it.

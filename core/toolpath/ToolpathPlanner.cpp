@@ -3,6 +3,7 @@
 #include "common/Error.h"
 #include "toolpath/EulerTour.h"
 #include "toolpath/EulerianTrimming.h"
+#include "toolpath/PathSubdivision.h"
 #include "toolpath/SafeBoxAirMove.h"
 #include "toolpath/SupportPerimeter.h"
 
@@ -30,6 +31,10 @@ void validate(const ToolpathOptions& o) {
   positive(o.thicknessCap, "thickness cap lambda");
   positive(o.maxTurnDeg, "maximum turn angle");
   positive(o.lift, "lift");
+  if (!(o.maxSegmentLength >= 0) || !std::isfinite(o.maxSegmentLength)) {
+    throw GeoLatticeError("toolpath: the longest segment must be >= 0 mm (0 = no subdivision)");
+  }
+  o.nozzle.validate();
   if (!(o.toothLength >= 0) || !std::isfinite(o.toothLength)) {
     throw GeoLatticeError("toolpath: tooth length must be >= 0 mm (0 = twice the path width)");
   }
@@ -41,42 +46,17 @@ void validate(const ToolpathOptions& o) {
   }
 }
 
-Vec3 slerp(const Vec3& a, const Vec3& b, double t) {
-  const double angle = std::acos(std::clamp(a.dot(b), -1.0, 1.0));
-  if (angle < 1e-12) {
-    return a;
-  }
-  if (angle > M_PI - 1e-9) {  // opposite: turn about any perpendicular
-    const Vec3 p = a.unitOrthogonal();
-    return (std::cos(t * M_PI) * a + std::sin(t * M_PI) * p).normalized();
-  }
-  return ((std::sin((1 - t) * angle) * a + std::sin(t * angle) * b) / std::sin(angle)).normalized();
-}
-
 class PathBuilder {
 public:
-  PathBuilder(Toolpath& path, const ToolpathOptions& o) : p_(path), o_(o), maxTurn_(o.maxTurnDeg * M_PI / 180.0) {}
+  PathBuilder(Toolpath& path, const ToolpathOptions& o) : p_(path), o_(o) {}
 
   bool empty() const { return p_.points.empty(); }
   const Vec3& position() const { return p_.points.back(); }
   const Vec3& axis() const { return p_.normals.back(); }
 
-  /// Appends a point reached by a move of `kind`; inserts rotation steps so the axis never turns
-  /// by more than maxTurn between consecutive points (positions and thickness interpolated).
+  /// Appends a point reached by a move of `kind` (rotation steps come later, PathSubdivision.h).
   void add(const Vec3& x, const Vec3& n, MoveKind kind, double h, int layer, int subgraph, int tour,
            bool extrude = true) {
-    if (!empty()) {
-      const Vec3 x0 = position(), n0 = axis();
-      const double h0 = p_.kind.back() == MoveKind::Air ? h : p_.thickness.back();
-      const double angle = std::acos(std::clamp(n0.dot(n), -1.0, 1.0));
-      const int steps = static_cast<int>(std::ceil(angle / maxTurn_ - 1e-9));
-      for (int i = 1; i < steps; ++i) {
-        const double t = static_cast<double>(i) / steps;
-        push((1 - t) * x0 + t * x, slerp(n0, n, t), kind, kind == MoveKind::Air ? 0.0 : (1 - t) * h0 + t * h, layer,
-             subgraph, tour, extrude);
-        ++p_.rotationSteps;
-      }
-    }
     push(x, n, kind, h, layer, subgraph, tour, extrude);
   }
 
@@ -117,9 +97,60 @@ private:
 
   Toolpath& p_;
   const ToolpathOptions& o_;
-  double maxTurn_;
   double e_ = 0;
 };
+
+/// Rotation steps and subdivision, then rounds of axis clearance (each followed by the rotation
+/// steps its tilts need) until no station collides or no tilt helps.
+void finishAxes(Toolpath& path, const ToolpathOptions& o) {
+  const double maxTurn = o.maxTurnDeg * M_PI / 180.0;
+  SubdivisionCounts counts = subdivideToolpath(path, maxTurn, o.maxSegmentLength);
+  path.rotationSteps = counts.rotationSteps;
+  path.subdivisionPoints = counts.inserted;
+  std::vector<Vec3> reference = path.normals;
+  auto materialOf = [&path] {
+    std::vector<char> m(path.kind.size());
+    for (size_t i = 0; i < m.size(); ++i) {
+      m[i] = path.kind[i] != MoveKind::Air;
+    }
+    return m;
+  };
+  constexpr int kMaxRounds = 4;
+  bool checked = false;
+  for (int round = 0; round < kMaxRounds && o.clearance.maxTiltDeg > 0; ++round) {
+    const AxisClearanceResult r =
+      clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, o.clearance);
+    if (round == 0) {
+      path.collidingStations = r.collidingStations;
+    }
+    path.clearanceRounds = round + 1;
+    path.tiltedStations += r.tiltedStations;
+    if (r.collidingStations == 0 || r.tiltedStations == 0) {
+      path.unclearedStations = r.collidingStations;
+      checked = true;
+      break;
+    }
+    counts = subdivideToolpath(path, maxTurn, 0.0, &reference);
+    path.rotationSteps += counts.rotationSteps;
+    path.subdivisionPoints += counts.inserted;
+  }
+  if (!checked) {  // count what is left (or, with clearance off, what there is)
+    AxisClearanceOptions detectOnly = o.clearance;
+    detectOnly.maxTiltDeg = 0;
+    const AxisClearanceResult r =
+      clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, detectOnly);
+    path.unclearedStations = r.collidingStations;
+    if (path.clearanceRounds == 0) {
+      path.collidingStations = r.collidingStations;
+    }
+  }
+  path.axisTilt.resize(path.points.size());
+  for (size_t i = 0; i < path.points.size(); ++i) {
+    path.axisTilt[i] =
+      std::atan2(path.normals[i].cross(reference[i]).norm(), path.normals[i].dot(reference[i])) * 180.0 / M_PI;
+    path.maxAxisTiltDeg = std::max(path.maxAxisTiltDeg, path.axisTilt[i]);
+  }
+}
 
 } // namespace
 
@@ -264,6 +295,7 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const
     previous = k;
   }
   path.tours = tourIndex;
+  finishAxes(path, o);
   path.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return path;
 }

@@ -17,10 +17,15 @@
 /// back without extrusion (width 0), so the sub-graph stays one continuous path. Extrusion per
 /// print segment (Eq. 14): π r_m² ΔE = μ w h̄ L, with h̄ the mean
 /// thickness of its ends; Extrusion holds the cumulative filament length E (mm).
+/// Finally segments are subdivided (PathSubdivision.h: axis turn <= maxTurnDeg, length <=
+/// maxSegmentLength) and, in up to four rounds, stations where the nozzle along ∇γ would hit
+/// earlier material of the path get a small tilt (NozzleAxisClearance.h); AxisTilt records it.
 #include "lattice/LatticeGraph.h"
 #include "sequence/PrintSequencer.h"
+#include "sequence/NozzleModel.h"
 #include "sequence/SkeletonTree.h"
 #include "toolpath/LayerThickness.h"
+#include "toolpath/NozzleAxisClearance.h"
 
 #include <vector>
 
@@ -41,6 +46,10 @@ struct ToolpathOptions {
   double retraction = 1.0;         ///< filament retracted before an air move and primed after (mm, >= 0)
   bool supportPerimeter = true;    ///< add the jagged support perimeter (SupportPerimeter.h)
   double toothLength = 0.0;        ///< l (mm); 0 = 2 w
+  double maxSegmentLength = 1.0;   ///< longer segments are subdivided (mm, >= 0; 0 = never), so
+                                   ///< the collision check of the path's points samples it this finely
+  NozzleModel nozzle;              ///< the nozzle the axis clearance keeps earlier material out of
+  AxisClearanceOptions clearance;  ///< tilts off ∇γ where the nozzle would collide (maxTiltDeg 0 = off)
 };
 
 struct Toolpath {
@@ -54,6 +63,7 @@ struct Toolpath {
   std::vector<int> layer;            ///< lattice layer (-1 on air moves)
   std::vector<int> subgraph;         ///< sub-graph (-1 on air moves)
   std::vector<int> pathIndex;        ///< index of the continuous print path (tour) the point belongs to; air points carry the next one
+  std::vector<double> axisTilt;      ///< angle between the nozzle axis and the layer normal ∇γ (deg)
   // Report.
   double printLength = 0;            ///< mm of lattice (MoveKind::Print)
   double perimeterLength = 0;        ///< mm of support perimeter incl. its connectors (MoveKind::Perimeter)
@@ -68,6 +78,12 @@ struct Toolpath {
   int trimmedEdges = 0;
   double trimmedLength = 0;          ///< mm of boundary left unprinted by the trimming
   int rotationSteps = 0;             ///< points inserted to limit the axis turn
+  int subdivisionPoints = 0;         ///< all points inserted (axis turn and maxSegmentLength)
+  int collidingStations = 0;         ///< stations with earlier material in the nozzle along ∇γ
+  int tiltedStations = 0;            ///< stations cleared by tilting the axis (over all rounds)
+  int unclearedStations = 0;         ///< stations still colliding after the last round
+  int clearanceRounds = 0;
+  double maxAxisTiltDeg = 0;
   double filamentLength = 0;         ///< Σ ΔE over print moves (mm)
   double depositedVolume = 0;        ///< Σ μ w h̄ L over print moves (mm³)
   LayerThicknessResult thicknessStats;

@@ -447,6 +447,40 @@ class CliVerifyTest(unittest.TestCase):
         self.assertIn("PrintOrder", no_order.stderr)
 
 
+class CliProgressTest(unittest.TestCase):
+    """One progress line per stage on stdout ("geolattice: STAGE ... done (S s)"), with the filter's
+    progress as 25% 50% 75% on the long stages; -q prints nothing."""
+
+    STAGES = ["input", "mesh", "gdf", "layers", "overhang", "lattice", "skeleton", "sequence", "verify", "toolpath",
+              "verify toolpath", "program"]
+    WITH_PERCENT = {"mesh", "gdf", "lattice", "sequence", "toolpath", "program"}
+
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp(prefix="geolattice-progress-")
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp, ignore_errors=True)
+
+    def run_cube(self, *extra):
+        return subprocess.run([CLI, "run", os.path.join(TESTDATA, "cube.obj"), "--fit-size", "20", "-o",
+                               os.path.join(self.tmp, "out"), *extra], capture_output=True, text=True, timeout=300)
+
+    def test_a_line_per_stage_with_percentages_on_the_long_ones(self):
+        run = self.run_cube()
+        self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+        lines = [l for l in run.stdout.splitlines() if l.startswith("geolattice: ") and " ... " in l]
+        self.assertEqual([l[len("geolattice: "):l.index(" ... ")] for l in lines], self.STAGES, run.stdout)
+        for stage, line in zip(self.STAGES, lines):
+            percent = " 25% 50% 75%" if stage in self.WITH_PERCENT else ""
+            self.assertRegex(line, r"^geolattice: %s \.\.\.%s done \([0-9.e-]+ s\)$" % (re.escape(stage), percent))
+
+    def test_quiet_prints_nothing(self):
+        run = self.run_cube("-q", "--until", "lattice")
+        self.assertEqual(run.returncode, 0, run.stderr)
+        self.assertEqual(run.stdout, "")
+        self.assertEqual(run.stderr, "")
+
+
 if __name__ == "__main__":
     result = unittest.main(exit=False, verbosity=2).result
     sys.exit(0 if result.wasSuccessful() else 1)

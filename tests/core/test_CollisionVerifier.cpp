@@ -103,6 +103,12 @@ TEST(CollisionVerifier, TiltedAxisAndTipClearance) {
   n[1] = V(0, 0, 1);
   c.tipClearance = 1.0;  // material at h = 1 is level with the clearance: ignored
   EXPECT_TRUE(verifyNozzleClearance(p, n, time, c).collisionFree);
+  // Within the tip face radius: the bead under the nozzle's flat face, not an obstacle.
+  c = cone(60);
+  c.tipFaceRadius = std::sqrt(2.0) + 1e-9;
+  EXPECT_TRUE(verifyNozzleClearance(p, n, time, c).collisionFree);
+  c.tipFaceRadius = std::sqrt(2.0) - 1e-9;
+  EXPECT_FALSE(verifyNozzleClearance(p, n, time, c).collisionFree);
   // Same print time: not an obstacle (a sub-graph is not tested against itself).
   EXPECT_TRUE(verifyNozzleClearance(p, n, {0, 0}, cone(60)).collisionFree);
   // Material printed later is not an obstacle.
@@ -116,15 +122,18 @@ TEST(CollisionVerifier, ManyPointsMatchBruteForce) {
   std::vector<V> p, n;
   std::vector<int> time;
   for (int i = 0; i < 1500; ++i) {
-    p.push_back(V(20 * rnd(), 20 * rnd(), 20 * rnd()));
+    // Every third point has a close neighbour, so the tip clearance and face radius matter.
+    p.push_back(i % 3 == 2 ? V(p.back() + 0.4 * V(rnd() - 0.5, rnd() - 0.5, rnd())) : V(20 * rnd(), 20 * rnd(), 20 * rnd()));
     n.push_back(V(rnd() - 0.5, rnd() - 0.5, 1.0).normalized());
     time.push_back(static_cast<int>(30 * rnd()));
   }
   NozzleModel nz = cone(20);
   nz.length = 4;
   nz.holderRadius = 3;
+  nz.tipClearance = 0.05;
+  nz.tipFaceRadius = 0.2;
   const CollisionReport r = verifyNozzleClearance(p, n, time, nz, 100000);
-  long long brute = 0;
+  long long brute = 0, nearTip = 0;
   const double c2 = std::pow(std::cos(20 * M_PI / 180), 2);
   for (size_t k = 0; k < p.size(); ++k) {
     bool hit = false;
@@ -132,13 +141,18 @@ TEST(CollisionVerifier, ManyPointsMatchBruteForce) {
       if (time[q] >= time[k]) continue;
       const V d = p[q] - p[k];
       const double h = d.dot(n[k]);
-      if (h <= 0) continue;
+      if (h <= 0.05) continue;
+      if (d.norm() <= 0.2) {
+        nearTip += h * h > d.squaredNorm() * c2;  // inside the cone but under the tip face
+        continue;
+      }
       const double r2 = d.squaredNorm() - h * h;
       hit = h <= 4 ? h * h > d.squaredNorm() * c2 : r2 < 9;
     }
     brute += hit;
   }
   EXPECT_EQ(r.violatingStations, brute);
+  EXPECT_GT(nearTip, 0);  // the face radius was exercised
   EXPECT_GT(brute, 0);
   EXPECT_LT(brute, static_cast<long long>(p.size()));
 }
@@ -154,6 +168,9 @@ TEST(CollisionVerifier, BadInput) {
   EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, cone(-5)), GeoLatticeError);
   NozzleModel bad = cone(45);
   bad.length = 0;
+  EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, bad), GeoLatticeError);
+  bad = cone(45);
+  bad.tipFaceRadius = -0.1;
   EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, bad), GeoLatticeError);
   EXPECT_TRUE(verifyNozzleClearance({}, {}, {}, cone(45)).collisionFree);  // nothing printed
 }

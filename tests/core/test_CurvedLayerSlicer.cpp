@@ -3,10 +3,14 @@
 #include "common/Error.h"
 #include "mesh/AnalyticShapes.h"
 #include "slicer/CurvedLayerSlicer.h"
+#include "slicer/LayerStatistics.h"
 
 #include "LayerChecks.h"
 
 #include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
 
 
 using namespace geolattice;
@@ -153,4 +157,52 @@ TEST(CurvedLayerSlicer, BadOptionsAreReported) {
   EXPECT_THROW(sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o), GeoLatticeError);
   EXPECT_THROW(sliceCurvedLayers(mesh, f.gamma.head(3), f.alpha, f.beta, f.normals, SlicerOptions{}), GeoLatticeError);
   EXPECT_THROW(sliceCurvedLayers(TetMesh{}, f.gamma, f.alpha, f.beta, f.normals, SlicerOptions{}), GeoLatticeError);
+}
+
+TEST(LayerStatistics, SpacingOfPlanesAndTheSameForEveryThreadCount) {
+  // Planar layers 0.5 mm apart: spacing 0.5 everywhere, NaN for the last layer.
+  const TetMesh box = boxTetMesh(Vec3(20, 20, 10), 5, 5, 5);
+  const ZField planes = heightField(box);
+  SlicerOptions o;
+  o.interval = 0.5;
+  o.firstLayerOffset = 0.5;
+  const CurvedLayers flat = sliceCurvedLayers(box, planes.gamma, planes.alpha, planes.beta, planes.normals, o);
+  const std::vector<LayerStatistics> s = computeLayerStatistics(flat);
+  ASSERT_EQ(s.size(), flat.layerValues.size());
+  for (size_t l = 0; l + 1 < s.size(); ++l) {
+    EXPECT_NEAR(s[l].spacingMin, 0.5, 1e-9) << "layer " << l;
+    EXPECT_NEAR(s[l].spacingMax, 0.5, 1e-9) << "layer " << l;
+    EXPECT_NEAR(s[l].area, 400.0, 1e-8) << "layer " << l;
+    EXPECT_EQ(s[l].components, 1);
+  }
+  EXPECT_TRUE(std::isnan(s.back().spacingMean));
+
+  // Curved layers (γ = distance from a point below the box): every thread count gives
+  // bit-identical statistics (layers are computed independently, each as on one thread).
+  const TetMesh mesh = boxTetMesh(Vec3(30, 30, 20), 8, 8, 6);
+  ZField f = heightField(mesh);
+  for (Eigen::Index v = 0; v < f.gamma.size(); ++v) {
+    f.gamma[v] = (mesh.points[v] - Vec3(15, 15, -10)).norm() - 10.0;
+  }
+  f.normals = vertexGradientDirections(mesh, f.gamma);
+  o.interval = 0.7;
+  o.firstLayerOffset = 0.7;
+  const CurvedLayers layers = sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o);
+  ASSERT_GT(layers.layerValues.size(), 20u);
+  const std::vector<LayerStatistics> one = computeLayerStatistics(layers, 1);
+  for (int threads : {0, 2, 3, 64}) {
+    const std::vector<LayerStatistics> many = computeLayerStatistics(layers, threads);
+    ASSERT_EQ(many.size(), one.size());
+    for (size_t l = 0; l < one.size(); ++l) {
+      for (auto field : {&LayerStatistics::value, &LayerStatistics::area, &LayerStatistics::spacingMin,
+                         &LayerStatistics::spacingMean, &LayerStatistics::spacingMax}) {
+        EXPECT_EQ(std::memcmp(&(one[l].*field), &(many[l].*field), sizeof(double)), 0)
+          << "layer " << l << ", " << threads << " threads";
+      }
+      EXPECT_EQ(one[l].triangles, many[l].triangles);
+      EXPECT_EQ(one[l].points, many[l].points);
+      EXPECT_EQ(one[l].components, many[l].components);
+    }
+  }
+  EXPECT_GT(one.front().spacingMax, one.front().spacingMin) << "curved layers: the spacing varies";
 }

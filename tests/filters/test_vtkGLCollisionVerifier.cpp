@@ -2,6 +2,7 @@
 // 3 mm apart (Normals +z). Printing tower A completely before tower B collides at NA 60;
 // alternating layer by layer does not. Cell and point time arrays, the output arrays, and bad input.
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLCollisionVerifier.h"
@@ -313,4 +314,18 @@ TEST(vtkGLCollisionVerifier, BadInputIsReported) {
   auto zeroNormal = towers(towerByTower);
   zeroNormal->GetPointData()->GetNormals()->SetTuple3(0, 0, 0, 0);
   expectEmptyWithError(verify(zeroNormal), "normal");
+}
+
+TEST(vtkGLCollisionVerifier, ProgressAndAbort) {
+  auto input = towers(towerByTower);
+  vtkNew<vtkGLCollisionVerifier> verifier;
+  verifier->SetInputData(input);
+  verifier->SetNozzleAngle(60.0);
+  glExpectProgressReport(verifier, 3);
+  GLAbortRequest beforeTheCheck;
+  beforeTheCheck.AtLeast = 0.2;
+  glExpectCleanAbort(verifier, beforeTheCheck);
+  GLAbortRequest afterTheCheck;
+  afterTheCheck.AtLeast = 0.9;
+  glExpectCleanAbort(verifier, afterTheCheck);
 }

@@ -1,5 +1,6 @@
 // vtkGLCurvedLayerSlicer on in-code grids: arrays, layer count, selected layer, bad input.
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 
 #include "mesh/AnalyticShapes.h"
 #include "vtkGLArrayNames.h"
@@ -134,4 +135,23 @@ TEST(vtkGLCurvedLayerSlicer, BadInputGivesAnErrorAndEmptyOutputs) {
     EXPECT_EQ(slicer->GetOutput(0)->GetNumberOfCells(), 0) << c.what;
     EXPECT_EQ(slicer->GetOutput(1)->GetNumberOfCells(), 0) << c.what;
   }
+}
+
+TEST(vtkGLCurvedLayerSlicer, ProgressAndAbort) {
+  auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  geolattice::fromTetMesh(geolattice::boxTetMesh(geolattice::Vec3(20, 20, 30), 10, 10, 15), grid);
+  vtkNew<vtkGLGeodesicDistanceFields> gdf;
+  gdf->SetInputData(grid);
+  gdf->Update();
+  vtkNew<vtkGLCurvedLayerSlicer> slicer;
+  slicer->SetInputConnection(gdf->GetOutputPort());
+  slicer->SetLayerInterval(0.5);
+  // The tet loop of the core reports about 64 times.
+  glExpectProgressReport(slicer, 20);
+  GLAbortRequest inTheTetLoop;
+  inTheTetLoop.AtLeast = 0.3;
+  glExpectCleanAbort(slicer, inTheTetLoop);
+  GLAbortRequest inTheComponents;
+  inTheComponents.AtLeast = 0.65;
+  glExpectCleanAbort(slicer, inTheComponents);
 }

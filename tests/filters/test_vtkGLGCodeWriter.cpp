@@ -2,6 +2,7 @@
 // at Pivot + R (p + PartOffset) (A-C and B-C), header and footer, the results, and errors (tilt
 // limits, NaN normals, empty toolpath, unwritable path) with nothing written.
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 #include "GLTestFiles.h"
 #include "GLTestToolpath.h"
 
@@ -185,6 +186,25 @@ TEST(vtkGLGCodeWriter, BadInputIsReported) {
     EXPECT_EQ(expectError(makeTestToolpath(), "cannot create " + missing,
                           [&](vtkGLGCodeWriter* w) { w->SetFileName(missing.c_str()); }),
               vtkErrorCode::CannotOpenFileError);
+  }
+  fs::remove_all(dir);
+}
+
+TEST(vtkGLGCodeWriter, ProgressAndAbortWriteNothing) {
+  const fs::path dir = glFreshDirectory("gcode-abort");
+  vtkNew<vtkGLGCodeWriter> w;
+  w->SetInputData(makeTestToolpath(4));
+  w->SetFileName((dir / "abort.gcode").string().c_str());
+  auto write = [&w] { EXPECT_EQ(w->Write(), 1); };
+  auto nothingWritten = [&w, &dir] { return glListDirectory(dir).empty() && w->GetNumberOfMoves() == 0; };
+  glExpectProgressReport(w, 3, write);
+  fs::remove(dir / "abort.gcode");
+  for (double at : {0.1, 0.2, 0.9}) {
+    SCOPED_TRACE(at);
+    GLAbortRequest request;
+    request.AtLeast = at;
+    glExpectCleanAbort(w, request, write, nothingWritten);
+    fs::remove(dir / "abort.gcode");
   }
   fs::remove_all(dir);
 }

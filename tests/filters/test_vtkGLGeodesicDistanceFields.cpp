@@ -1,5 +1,6 @@
 // vtkGLGeodesicDistanceFields on in-code grids: arrays, source modes, and bad input.
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 
 #include "mesh/AnalyticShapes.h"
 #include "vtkGLArrayNames.h"
@@ -157,5 +158,32 @@ TEST(vtkGLGeodesicDistanceFields, BadInputGivesAnErrorAndAnEmptyOutput) {
     EXPECT_NE(errors->Errors().find(c.expected), std::string::npos) << c.what << ": " << errors->Errors();
     EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0) << c.what;
     EXPECT_EQ(filter->GetOutput()->GetPointData()->GetArray(arrays::Gamma), nullptr) << c.what;
+  }
+}
+
+TEST(vtkGLGeodesicDistanceFields, ProgressAndAbortInTheSetUpAndInTheSolve) {
+  auto grid = boxGrid(20, 20, 30, 10, 10, 15);
+  vtkNew<vtkGLGeodesicDistanceFields> reference;
+  reference->SetInputData(grid);
+  // Fresh filter: conversion, the set-up (assembly, two factorizations), the solve steps.
+  glExpectProgressReport(reference, 8);
+  vtkDataArray* gamma = pointArray(reference->GetOutput(), arrays::Gamma);
+  ASSERT_NE(gamma, nullptr);
+
+  vtkNew<vtkGLGeodesicDistanceFields> filter;
+  filter->SetInputData(grid);
+  GLAbortRequest inSetUp;
+  inSetUp.AtLeast = 0.3; // after the heat factorization
+  glExpectCleanAbort(filter, inSetUp);
+  // The recovery run rebuilt the solver and keeps it: this abort comes inside solve().
+  GLAbortRequest inSolve;
+  inSolve.AtLeast = 0.7;
+  glExpectCleanAbort(filter, inSolve);
+  // After both aborts the fields are those of an undisturbed run.
+  vtkDataArray* again = pointArray(filter->GetOutput(), arrays::Gamma);
+  ASSERT_NE(again, nullptr);
+  ASSERT_EQ(again->GetNumberOfTuples(), gamma->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < gamma->GetNumberOfTuples(); ++i) {
+    ASSERT_EQ(again->GetTuple1(i), gamma->GetTuple1(i)) << i;
   }
 }

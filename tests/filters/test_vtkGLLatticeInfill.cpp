@@ -1,6 +1,7 @@
 // vtkGLLatticeInfill: arrays and counts against the core graph on the analytic box layers, the
 // GDF -> slicer -> lattice pipeline, the graded lattice, and bad input.
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 
 #include "lattice/LatticeGraph.h"
 #include "mesh/AnalyticShapes.h"
@@ -323,4 +324,17 @@ TEST(vtkGLLatticeInfill, BadInputIsReported) {
   quad->GetPolys()->InsertNextCell(4, ids);
   vtkIntArray::SafeDownCast(quad->GetCellData()->GetArray(arrays::LayerId))->InsertNextValue(0);
   expectError(quad, "must be triangles");
+}
+
+TEST(vtkGLLatticeInfill, ProgressPerLayerAndAbort) {
+  auto layers = toPolyData(analyticBoxLayers()); // 30 layers
+  vtkNew<vtkGLLatticeInfill> filter;
+  filter->SetInputData(layers);
+  filter->SetNumberOfThreads(1); // every layer reported by the calling thread
+  glExpectProgressReport(filter, 25);
+  GLAbortRequest midway;
+  midway.AtLeast = 0.3;
+  glExpectCleanAbort(filter, midway);
+  filter->SetNumberOfThreads(2); // the other worker finishes its layer, silently
+  glExpectCleanAbort(filter, midway);
 }

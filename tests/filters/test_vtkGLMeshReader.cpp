@@ -1,6 +1,7 @@
 #include "vtkGLMeshReader.h"
 
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 
 #include <gtest/gtest.h>
 
@@ -421,4 +422,21 @@ TEST_F(MeshReaderTest, VtuWithNonTetCellsIsRefused)
     std::string::npos)
     << r.Errors->Errors();
   EXPECT_EQ(vtkDataSet::SafeDownCast(r.Output)->GetNumberOfCells(), 0);
+}
+
+TEST(MeshReaderProgress, SurfaceAndTetMeshReportProgressAndStopOnAbort)
+{
+  for (const char* name : { "bunny.obj", "decimated-knight.off", "ring.tet" })
+  {
+    SCOPED_TRACE(name);
+    vtkNew<vtkGLMeshReader> reader;
+    reader->SetFileName((kData + "/" + name).c_str());
+    // The file read (OBJ: vtkOBJReader's own progress forwarded), then merging (surfaces).
+    glExpectProgressReport(reader, 2);
+    GLAbortRequest afterTheFirstReport;
+    glExpectCleanAbort(reader, afterTheFirstReport);
+    GLAbortRequest afterReading;
+    afterReading.AtLeast = 0.5;
+    glExpectCleanAbort(reader, afterReading);
+  }
 }

@@ -1,6 +1,7 @@
 // vtkGLOverhangAnalysis on in-code grids: the documented arrays, agreement with the core
 // analysis, the threshold property, and bad input (missing arrays, non-tets, bad threshold).
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 
 #include "mesh/AnalyticShapes.h"
 #include "mesh/TetMeshTopology.h"
@@ -277,4 +278,17 @@ TEST(vtkGLOverhangAnalysis, NonTetCellsAreAnError) {
   source->FillValue(0);
   grid->GetPointData()->AddArray(source);
   expectEmptyWithError(run(grid), "cell 0 is not a linear tetrahedron");
+}
+
+TEST(vtkGLOverhangAnalysis, ProgressAndAbort) {
+  auto fields = fieldsOfMushroom();
+  vtkNew<vtkGLOverhangAnalysis> filter;
+  filter->SetInputData(fields);
+  glExpectProgressReport(filter, 4);
+  GLAbortRequest afterTheTopology;
+  afterTheTopology.AtLeast = 0.5;
+  glExpectCleanAbort(filter, afterTheTopology);
+  GLAbortRequest whileCopying;
+  whileCopying.AtLeast = 0.8;
+  glExpectCleanAbort(filter, whileCopying);
 }

@@ -1,6 +1,7 @@
 #include "vtkGLPlaceOnPlatform.h"
 
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshReader.h"
 
@@ -249,4 +250,17 @@ TEST(PlaceOnPlatform, FitSizeOfDegenerateModel)
   EXPECT_NE(p.Errors->Errors().find("bounding box is a single point"), std::string::npos)
     << p.Errors->Errors();
   EXPECT_EQ(p.Output->GetNumberOfPoints(), 0);
+}
+
+TEST(PlaceOnPlatform, ProgressAndAbort)
+{
+  vtkNew<vtkGLMeshReader> reader;
+  reader->SetFileName((kData + "/bunny.obj").c_str());
+  reader->Update();
+  vtkNew<vtkGLPlaceOnPlatform> place;
+  place->SetInputConnection(reader->GetOutputPort());
+  glExpectProgressReport(place, 10);
+  GLAbortRequest midway;
+  midway.AtLeast = 0.5;
+  glExpectCleanAbort(place, midway);
 }

@@ -2,6 +2,7 @@
 // collides, A4 does not, as the collision verifier confirms), the end-to-end pipeline on the
 // branching Y (reader -> ... -> lattice -> skeleton -> sequencer -> verifier), and bad input.
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 #include "GLTestYPipeline.h"
 
 #include "vtkGLArrayNames.h"
@@ -639,4 +640,42 @@ TEST_F(BranchingYPipeline, VerifierSamplesTheLatticeLikeTheGenericLineSampling) 
   std::printf("[sequencer filter] Y, DPT at NA 70: collision-free %g, %g of %g stations violate\n",
               field(a, arrays::CollisionFree), field(a, arrays::CollisionViolatingStations),
               field(a, arrays::CollisionStations));
+}
+
+TEST_F(BranchingYPipeline, SequencerProgressAndAbort) {
+  ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
+  for (int strategy : {vtkGLPrintSequencer::LPT, vtkGLPrintSequencer::A4, vtkGLPrintSequencer::BEST}) {
+    SCOPED_TRACE(strategy);
+    vtkNew<vtkGLPrintSequencer> sequencer;
+    sequencer->SetInputConnection(0, p->lattice->GetOutputPort());
+    sequencer->SetInputConnection(1, p->skeleton->GetOutputPort());
+    sequencer->SetStrategy(strategy);
+    sequencer->SetNumberOfThreads(2);
+    // Material, the potential collisions per sub-graph (A4, best), the order step by step.
+    glExpectProgressReport(sequencer, 20);
+    GLAbortRequest early;
+    early.AtLeast = 0.3; // A4, best: in the potential collisions; LPT: in the order
+    glExpectCleanAbort(sequencer, early);
+    GLAbortRequest late;
+    late.AtLeast = 0.8; // in the order
+    glExpectCleanAbort(sequencer, late);
+  }
+}
+
+TEST_F(BranchingYPipeline, VerifierProgressAndAbort) {
+  ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
+  vtkNew<vtkGLPrintSequencer> sequencer;
+  sequencer->SetInputConnection(0, p->lattice->GetOutputPort());
+  sequencer->SetInputConnection(1, p->skeleton->GetOutputPort());
+  sequencer->Update();
+  vtkNew<vtkGLCollisionVerifier> verifier;
+  verifier->SetInputConnection(sequencer->GetOutputPort(0));
+  // Inputs checked, stations sampled, the check (one core call), the output.
+  glExpectProgressReport(verifier, 3);
+  GLAbortRequest beforeTheCheck;
+  beforeTheCheck.AtLeast = 0.2;
+  glExpectCleanAbort(verifier, beforeTheCheck);
+  GLAbortRequest afterTheCheck;
+  afterTheCheck.AtLeast = 0.9;
+  glExpectCleanAbort(verifier, afterTheCheck);
 }

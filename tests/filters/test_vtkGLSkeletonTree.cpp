@@ -1,6 +1,7 @@
 // vtkGLSkeletonTree: the chain of a box's layers with the documented arrays (GDF -> slicer ->
 // lattice -> skeleton), the lattice and skeleton conversions of vtkGLMeshConversion.h, and bad input.
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 
 #include "mesh/AnalyticShapes.h"
 #include "vtkGLArrayNames.h"
@@ -292,4 +293,18 @@ TEST(vtkGLSkeletonTree, BadInputIsReported) {
   skeleton->Update();
   EXPECT_TRUE(errors->HasError());
   EXPECT_EQ(skeleton->GetOutput()->GetNumberOfPoints(), 0);
+}
+
+TEST(vtkGLSkeletonTree, ProgressAndAbort) {
+  BoxPipeline p;
+  p.lattice->Update();
+  p.gdf->Update();
+  ASSERT_FALSE(p.errors->HasError()) << p.errors->Errors();
+  glExpectProgressReport(p.skeleton, 10);
+  GLAbortRequest inTheSlabUnion;
+  inTheSlabUnion.AtLeast = 0.5;
+  glExpectCleanAbort(p.skeleton, inTheSlabUnion);
+  GLAbortRequest locatingTheSubgraphs;
+  locatingTheSubgraphs.AtLeast = 0.8;
+  glExpectCleanAbort(p.skeleton, locatingTheSubgraphs);
 }

@@ -1,6 +1,7 @@
 #include "vtkGLTetrahedralizeSurface.h"
 
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 #include "vtkGLArrayNames.h"
 
 #include "mesh/AnalyticShapes.h"
@@ -337,4 +338,30 @@ TEST(vtkGLTetrahedralizeSurface, AbortLeavesAnEmptyOutputWithoutError)
   filter->Update();
   EXPECT_FALSE(errors->HasError()) << errors->Errors();
   EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0);
+}
+
+TEST(vtkGLTetrahedralizeSurface, ProgressAndAbortWhileTetGenRuns)
+{
+  auto box = toPolyData(geolattice::boxSurface(Vec3(40, 40, 60), 100.0));
+  vtkNew<vtkGLTetrahedralizeSurface> filter;
+  filter->SetInputData(box);
+  filter->SetTargetEdgeLength(4.0);
+  // Input converted, TetGen polled (the same value), TetGen done, the tet quality loop.
+  glExpectProgressReport(filter, 5);
+  GLAbortRequest inTetGen;
+  inTetGen.AfterEvents = 2; // 0 (executive), 0.05 (input converted), then the first poll of TetGen
+  glExpectCleanAbort(filter, inTetGen);
+  GLAbortRequest inTheQualityLoop;
+  inTheQualityLoop.AtLeast = 0.85;
+  glExpectCleanAbort(filter, inTheQualityLoop);
+}
+
+TEST(vtkGLTetrahedralizeSurface, AutomaticEdgeLengthReportsEveryTetGenRun)
+{
+  auto box = toPolyData(geolattice::boxSurface(Vec3(40, 40, 60), 100.0));
+  vtkNew<vtkGLTetrahedralizeSurface> filter;
+  filter->SetInputData(box);
+  filter->SetTargetEdgeLength(0.0);
+  filter->SetTargetTetCount(3000);
+  glExpectProgressReport(filter, 5);
 }

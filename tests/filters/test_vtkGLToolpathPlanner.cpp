@@ -2,6 +2,7 @@
 // (exact lengths) and on the branching Y (reader -> ... -> sequencer -> planner -> verifier),
 // the print replay over time (a prefix per requested time, planned once), and bad input.
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 #include "GLTestYPipeline.h"
 
 #include "vtkGLArrayNames.h"
@@ -332,10 +333,18 @@ TEST(vtkGLToolpathPlanner, DefaultsAndPrintSelf) {
   EXPECT_EQ(f->GetSupportPerimeter(), 1);
   EXPECT_EQ(f->GetToothLength(), 0.0);
   EXPECT_EQ(f->GetNumberOfTimeSteps(), 200);
+  EXPECT_EQ(f->GetMaxSegmentLength(), 1.0);
+  EXPECT_EQ(f->GetNozzleAngle(), 45.0);
+  EXPECT_EQ(f->GetNozzleLength(), 0.0);
+  EXPECT_EQ(f->GetHolderRadius(), 0.0);
+  EXPECT_EQ(f->GetTipClearance(), 0.1);
+  EXPECT_EQ(f->GetTipFaceRadius(), 0.3);
+  EXPECT_EQ(f->GetMaxAxisTilt(), 15.0);
+  EXPECT_EQ(f->GetTiltBlendLength(), 5.0);
   std::ostringstream os;
   f->Print(os);
-  for (const char* text :
-       {"PathWidth: 0.6", "FilamentDiameter: 1.75", "SupportPerimeter: 1", "NumberOfTimeSteps: 200"}) {
+  for (const char* text : {"PathWidth: 0.6", "FilamentDiameter: 1.75", "SupportPerimeter: 1", "NumberOfTimeSteps: 200",
+                           "MaxAxisTilt: 15", "TipFaceRadius: 0.3", "MaxSegmentLength: 1"}) {
     EXPECT_NE(os.str().find(text), std::string::npos) << text;
   }
 }
@@ -554,6 +563,12 @@ TEST_F(BranchingYToolpath, ToolpathIsConsistent) {
   ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
   vtkPolyData* path = p->planner->GetOutput();
   expectConsistentToolpath(path, p->planner);
+  // The axis stays within MaxAxisTilt of ∇γ and nothing is left colliding.
+  vtkDataArray* tilt = path->GetPointData()->GetArray(arrays::AxisTilt);
+  ASSERT_NE(tilt, nullptr);
+  EXPECT_LE(tilt->GetRange()[1], p->planner->GetMaxAxisTilt() + 1e-9);
+  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathUnclearedStations)->GetTuple1(0), 0.0);
+  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathMaxAxisTilt)->GetTuple1(0), tilt->GetRange()[1]);
   vtkPolyData* lattice = p->lattice->GetOutput();
   // Every sub-graph printed, on its own layer: the lattice's LayerId of the sub-graph.
   std::map<int, int> layerOf;
@@ -650,4 +665,24 @@ TEST_F(BranchingYToolpath, VerifierUsesOnlyPrintedPointsAsMaterial) {
               field(masked, arrays::CollisionStations), field(masked, arrays::CollisionViolatingStations),
               field(masked, arrays::CollisionUnavoidableStations), field(masked, arrays::CollisionFree),
               field(unmasked, arrays::CollisionViolatingStations));
+}
+
+TEST_F(BranchingYToolpath, ProgressAndAbortBeforeAndAfterThePlanning) {
+  ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
+  // A new planner for each check: a planner that has planned keeps the path (the replay of
+  // another time only cuts it, with nothing to report or abort).
+  auto planner = [this] {
+    auto f = vtkSmartPointer<vtkGLToolpathPlanner>::New();
+    f->SetInputConnection(0, p->sequencer->GetOutputPort(0));
+    f->SetInputConnection(1, p->sequencer->GetOutputPort(1));
+    return f;
+  };
+  // Inputs converted, the planning (one core call), the output built.
+  glExpectProgressReport(planner(), 3);
+  GLAbortRequest beforeThePlanning;
+  beforeThePlanning.AtLeast = 0.1;
+  glExpectCleanAbort(planner(), beforeThePlanning);
+  GLAbortRequest afterThePlanning;
+  afterThePlanning.AtLeast = 0.8; // nothing cached: the recovery run plans again
+  glExpectCleanAbort(planner(), afterThePlanning);
 }

@@ -5,6 +5,7 @@
 // and errors (unwritable path, NaN normals, empty toolpath, missing arrays, bad parameters,
 // unreachable points and cells) with nothing written.
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 #include "GLTestYPipeline.h"
 #include "GLTestFiles.h"
 #include "GLTestToolpath.h"
@@ -126,7 +127,9 @@ TEST(vtkGLURScriptWriter, DefaultsAndPrintSelf) {
   EXPECT_EQ(w->GetNumberOfFilesWritten(), 0);
   std::ostringstream os;
   w->Print(os);
-  for (const char* text : {"Robot: ur5", "MaxFileBytes: 4000000", "SpeedFactor: 0.5", "AllowUnreachable: 0"}) {
+  EXPECT_EQ(w->GetMaxJointStep(), 20.0);
+  for (const char* text :
+       {"Robot: ur5", "MaxFileBytes: 4000000", "SpeedFactor: 0.5", "AllowUnreachable: 0", "MaxJointStep: 20"}) {
     EXPECT_NE(os.str().find(text), std::string::npos) << text;
   }
 }
@@ -240,8 +243,23 @@ TEST_F(BranchingYProgram, SplitProgramPassesTheSyntaxCheck) {
   EXPECT_EQ(glListDirectory(dir), (std::vector<std::string>{"y_part.script", "y_part_notes.txt"}));
   EXPECT_EQ(checkSyntax(glReadFile(file), "y_part", 1000), static_cast<size_t>(N - 1));
 
-  // A cell that does not reach: an error, the earlier program stays as it was.
+  // A joint step bound the path cannot keep (below the Y's largest step even after refinement):
+  // an error naming the point, the earlier program stays as it was.
   const std::string before = glReadFile(file);
+  w->SetMaxJointStep(0.5);
+  EXPECT_EQ(w->Write(), 0);
+  EXPECT_NE(errors->Errors().find("jumps by"), std::string::npos) << errors->Errors();
+  EXPECT_NE(errors->Errors().find("at toolpath point"), std::string::npos) << errors->Errors();
+  EXPECT_EQ(glReadFile(file), before);
+  EXPECT_EQ(glListDirectory(dir), (std::vector<std::string>{"y_part.script", "y_part_notes.txt"}));
+  errors->Clear();
+  w->SetMaxJointStep(0);
+  EXPECT_EQ(w->Write(), 0);
+  EXPECT_NE(errors->Errors().find("maximum joint step must be > 0"), std::string::npos) << errors->Errors();
+  errors->Clear();
+  w->SetMaxJointStep(20);
+
+  // A cell that does not reach: an error, the earlier program stays as it was.
   w->SetNozzleTip(5.0, 0.0, 0.0);
   EXPECT_EQ(w->Write(), 0);
   EXPECT_NE(errors->Errors().find("unreachable cell set-up"), std::string::npos) << errors->Errors();
@@ -420,4 +438,27 @@ TEST(vtkGLURScriptWriter, UnreachablePointsAreReportedNotSkipped) {
     ASSERT_EQ(c.writer->GetNumberOfFilesWritten(), 1);
     EXPECT_EQ(checkSyntax(glReadFile(c.writer->GetFileWritten(0)), "part", 1000), 1999u);
   }
+}
+
+TEST(vtkGLURScriptWriter, ProgressAndAbortWriteNothing) {
+  const fs::path dir = glFreshDirectory("urscript-abort");
+  vtkNew<vtkGLURScriptWriter> w;
+  w->SetInputData(makeTestToolpath(4));
+  w->SetFileName((dir / "abort.script").string().c_str());
+  w->SetRobot("ur5e");
+  auto write = [&w] { EXPECT_EQ(w->Write(), 1); };
+  auto nothingWritten = [&w, &dir] { return glListDirectory(dir).empty() && w->GetNumberOfFilesWritten() == 0; };
+  // Toolpath read, joints solved (one core call), program written.
+  glExpectProgressReport(w, 3, write);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  for (double at : {0.1, 0.5, 0.9}) {
+    SCOPED_TRACE(at);
+    GLAbortRequest request;
+    request.AtLeast = at;
+    glExpectCleanAbort(w, request, write, nothingWritten);
+    EXPECT_EQ(glListDirectory(dir), std::vector<std::string>{"abort.script"}); // the recovery run
+    fs::remove(dir / "abort.script");
+  }
+  fs::remove_all(dir);
 }

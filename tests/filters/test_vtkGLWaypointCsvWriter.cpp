@@ -2,6 +2,7 @@
 // extrusion, kind and layer; errors (NaN normals, empty toolpath, unwritable path) with nothing
 // written and an earlier file untouched.
 #include "GLTestErrorObserver.h"
+#include "GLTestProgress.h"
 #include "GLTestFiles.h"
 #include "GLTestToolpath.h"
 
@@ -99,5 +100,24 @@ TEST(vtkGLWaypointCsvWriter, BadInputIsReported) {
   expectError(noLayer, file, "the toolpath has no point array LayerId");
   const std::string missing = (dir / "no-such-dir" / "w.csv").string();
   EXPECT_EQ(expectError(makeTestToolpath(), missing, "cannot create " + missing), vtkErrorCode::CannotOpenFileError);
+  fs::remove_all(dir);
+}
+
+TEST(vtkGLWaypointCsvWriter, ProgressAndAbortWriteNothing) {
+  const fs::path dir = glFreshDirectory("csv-abort");
+  vtkNew<vtkGLWaypointCsvWriter> w;
+  w->SetInputData(makeTestToolpath(4));
+  w->SetFileName((dir / "abort.csv").string().c_str());
+  auto write = [&w] { EXPECT_EQ(w->Write(), 1); };
+  auto nothingWritten = [&w, &dir] { return glListDirectory(dir).empty() && w->GetNumberOfRows() == 0; };
+  glExpectProgressReport(w, 2, write);
+  fs::remove(dir / "abort.csv");
+  for (double at : {0.2, 0.9}) {
+    SCOPED_TRACE(at);
+    GLAbortRequest request;
+    request.AtLeast = at;
+    glExpectCleanAbort(w, request, write, nothingWritten);
+    fs::remove(dir / "abort.csv");
+  }
   fs::remove_all(dir);
 }

@@ -1,0 +1,233 @@
+#include "toolpath/NozzleAxisClearance.h"
+
+#include "collision/TimedPointTree.h"
+#include "common/Error.h"
+#include "toolpath/PathSubdivision.h"
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace geolattice {
+
+namespace {
+
+constexpr double kDeg = M_PI / 180.0;
+
+double angleBetween(const Vec3& a, const Vec3& b) { return std::acos(std::clamp(a.dot(b), -1.0, 1.0)); }
+
+/// Earlier material that may enter the nozzle at tip p for some axis within the tilt limit.
+struct Obstacles {
+  const std::vector<Vec3>& points;
+  const NozzleVolume& wide;  ///< the nozzle with the margin added to its angle
+  Vec3 tip = Vec3::Zero();
+  std::vector<int> ids;
+
+  /// The obstacle deepest inside the wide nozzle at axis n (largest cosine to n), or -1.
+  int deepest(const Vec3& n) const {
+    int best = -1;
+    double bestCos = -2;
+    for (int q : ids) {
+      if (wide.contains(tip, n, points[q])) {
+        const double c = (points[q] - tip).normalized().dot(n);
+        if (c > bestCos) {
+          bestCos = c;
+          best = q;
+        }
+      }
+    }
+    return best;
+  }
+  bool clear(const Vec3& n) const {
+    return std::none_of(ids.begin(), ids.end(), [&](int q) { return wide.contains(tip, n, points[q]); });
+  }
+};
+
+/// The least tilt from `reference` (<= maxTilt) whose wide nozzle holds no obstacle; starts from
+/// `current`. Returns false when none is found.
+bool findClearAxis(const Obstacles& obstacles, const Vec3& reference, const Vec3& current, double coneAngle,
+                   double maxTilt, Vec3& result) {
+  // Projection: turn the axis off the deepest obstacle until it sits on the cone's surface.
+  Vec3 n = current;
+  for (int iteration = 0; iteration < 30; ++iteration) {
+    const int q = obstacles.deepest(n);
+    if (q < 0) {
+      result = n;
+      return true;
+    }
+    const Vec3 u = (obstacles.points[q] - obstacles.tip).normalized();
+    Vec3 w = n - u.dot(n) * u;
+    if (w.norm() < 1e-12) {
+      w = u.unitOrthogonal();
+    }
+    w.normalize();
+    const double theta = coneAngle + 1e-6;
+    n = (std::cos(theta) * u + std::sin(theta) * w).normalized();
+    if (angleBetween(n, reference) > maxTilt) {
+      break;
+    }
+  }
+  // Rings of tilts around the reference, smallest first; on a ring the axis nearest the current.
+  const Vec3 e1 = reference.unitOrthogonal();
+  const Vec3 e2 = reference.cross(e1);
+  const double step = 0.5 * kDeg;
+  const int azimuths = 48;
+  for (double tilt = step; tilt <= maxTilt + 1e-12; tilt += step) {
+    double bestDot = -2;
+    for (int a = 0; a < azimuths; ++a) {
+      const double phi = 2 * M_PI * a / azimuths;
+      const Vec3 candidate = std::cos(tilt) * reference + std::sin(tilt) * (std::cos(phi) * e1 + std::sin(phi) * e2);
+      if (candidate.dot(current) > bestDot && obstacles.clear(candidate)) {
+        bestDot = candidate.dot(current);
+        result = candidate;
+      }
+    }
+    if (bestDot > -2) {
+      return true;
+    }
+  }
+  return false;
+}
+
+} // namespace
+
+AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector<Vec3>& axes,
+                                    const std::vector<Vec3>& reference, const std::vector<char>& material,
+                                    const NozzleModel& nozzle, const AxisClearanceOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  nozzle.validate();
+  const size_t N = points.size();
+  if (axes.size() != N || reference.size() != N || material.size() != N) {
+    throw GeoLatticeError("axis clearance: points, axes, reference axes and material flags must have the same length");
+  }
+  if (!(o.maxTiltDeg >= 0 && o.maxTiltDeg <= 60) || !(o.marginDeg >= 0 && o.marginDeg < 10) ||
+      !(o.blendLength >= 0) || !std::isfinite(o.blendLength)) {
+    std::ostringstream s;
+    s << "axis clearance: the largest tilt must be in [0, 60] degrees (got " << o.maxTiltDeg
+      << "), the margin in [0, 10) degrees (got " << o.marginDeg << ") and the blend length >= 0 mm (got "
+      << o.blendLength << ")";
+    throw GeoLatticeError(s.str());
+  }
+  AxisClearanceResult result;
+  std::vector<int> obstacleTime(N);
+  for (size_t i = 0; i < N; ++i) {
+    obstacleTime[i] = material[i] ? static_cast<int>(i) : std::numeric_limits<int>::max();
+  }
+  const TimedPointTree tree(points, obstacleTime);
+
+  // 1. Stations with earlier material inside the nozzle.
+  const NozzleVolume volume(nozzle);
+  NozzleBound detect(nozzle.boundingHalfAngleRad(), nozzle.reach(), nozzle.tipClearance);
+  std::vector<int> colliding;
+  for (size_t k = 0; k < N; ++k) {
+    detect.setStation(points[k], axes[k]);
+    bool hit = false;
+    tree.forEachCandidate(detect, static_cast<int>(k), [&](int q) {
+      hit = volume.contains(points[k], axes[k], points[q]);
+      return hit;
+    });
+    if (hit) {
+      colliding.push_back(static_cast<int>(k));
+    }
+  }
+  result.collidingStations = static_cast<int>(colliding.size());
+  if (colliding.empty() || o.maxTiltDeg == 0) {
+    result.unresolvedStations = result.collidingStations;
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return result;
+  }
+
+  // 2. The least clearing tilt of each colliding station.
+  NozzleModel wideModel = nozzle;
+  wideModel.halfAngleDeg = std::min(89.9, nozzle.halfAngleDeg + o.marginDeg);
+  const NozzleVolume wide(wideModel);
+  const double maxTilt = o.maxTiltDeg * kDeg;
+  NozzleBound gather(wideModel.boundingHalfAngleRad() + maxTilt, wideModel.reach(),
+                     -std::numeric_limits<double>::infinity());
+  const double face2 = nozzle.tipFaceRadius * nozzle.tipFaceRadius;
+  Obstacles obstacles{points, wide, Vec3::Zero(), {}};
+  struct Tilt {
+    int station;
+    Vec3 axis;        ///< the clearing axis
+    Vec3 rotation;    ///< unit rotation axis from the old to the new axis
+    double angle;     ///< rotation angle (rad)
+  };
+  std::vector<Tilt> tilts;
+  for (int k : colliding) {
+    obstacles.tip = points[k];
+    obstacles.ids.clear();
+    gather.setStation(points[k], reference[k]);
+    tree.forEachCandidate(gather, k, [&](int q) {
+      if ((points[q] - points[k]).squaredNorm() > face2) {
+        obstacles.ids.push_back(q);
+      }
+      return false;
+    });
+    Vec3 axis;
+    if (!findClearAxis(obstacles, reference[k], axes[k], wideModel.halfAngleDeg * kDeg, maxTilt, axis)) {
+      ++result.unresolvedStations;
+      continue;
+    }
+    ++result.tiltedStations;
+    const Vec3 c = axes[k].cross(axis);
+    const double angle = std::atan2(c.norm(), axes[k].dot(axis));
+    tilts.push_back({k, axis, c.norm() > 1e-15 ? Vec3(c.normalized()) : Vec3::Zero(), angle});
+  }
+
+  // 3. Fade each tilt out along the path; the largest faded tilt wins, stations keep their own.
+  std::vector<double> arc(N, 0.0);
+  for (size_t i = 1; i < N; ++i) {
+    arc[i] = arc[i - 1] + (points[i] - points[i - 1]).norm();
+  }
+  std::vector<char> isStation(N, 0);
+  for (const Tilt& t : tilts) {
+    isStation[t.station] = 1;
+  }
+  std::vector<double> fadeAngle(N, 0.0);
+  std::vector<int> owner(N, -1);
+  for (size_t c = 0; c < tilts.size(); ++c) {
+    const Tilt& t = tilts[c];
+    if (o.blendLength <= 0 || t.rotation.isZero()) {
+      continue;
+    }
+    auto visit = [&](long j) {
+      const double d = std::abs(arc[j] - arc[t.station]);
+      if (d >= o.blendLength) {
+        return false;
+      }
+      const double a = t.angle * (1 - d / o.blendLength);
+      if (!isStation[j] && a > fadeAngle[j]) {
+        fadeAngle[j] = a;
+        owner[j] = static_cast<int>(c);
+      }
+      return true;
+    };
+    for (long j = t.station - 1; j >= 0 && visit(j); --j) {
+    }
+    for (long j = t.station + 1; j < static_cast<long>(N) && visit(j); ++j) {
+    }
+  }
+  for (size_t j = 0; j < N; ++j) {
+    if (owner[j] < 0) {
+      continue;
+    }
+    const Tilt& t = tilts[owner[j]];
+    Vec3 turned = (Eigen::AngleAxisd(fadeAngle[j], t.rotation) * axes[j]).normalized();
+    const double fromReference = angleBetween(turned, reference[j]);
+    if (fromReference > maxTilt) {  // keep blends inside the tilt limit too
+      turned = slerpAxis(reference[j], turned, maxTilt / fromReference);
+    }
+    axes[j] = turned;
+    ++result.blendedPoints;
+  }
+  for (const Tilt& t : tilts) {
+    axes[t.station] = t.axis;
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+} // namespace geolattice

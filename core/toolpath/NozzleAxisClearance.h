@@ -1,0 +1,49 @@
+#pragma once
+/// @file NozzleAxisClearance.h
+/// @brief Tilts the nozzle axis where the layer normal would drive the nozzle into material
+/// printed earlier on the same path (issue: toolpaths, acceptance "the collision verifier passes
+/// on the full toolpath").
+///
+/// The printing order (Section 3.1) keeps other sub-graphs out of the nozzle, but inside one
+/// sub-graph a strongly curved layer can rise into the cone: e.g. a branch's tip cap whose far
+/// side climbs 45° within a few millimetres of the nozzle, printed before the near side. The
+/// paper's fixed axis ∇γ then collides. Here such a station gets the smallest tilt away from
+/// ∇γ (at most maxTilt) that puts every earlier obstacle at least `margin` outside the nozzle
+/// cone, found by projecting the axis off the deepest obstacle (a few iterations) or, if that
+/// fails, by scanning rings of tilts around ∇γ. The tilt fades out linearly along the path over
+/// blendLength in both directions, so the axis changes gradually (the largest tilt wins where
+/// fades overlap; a station always keeps its own). Material is the path's points, so callers
+/// sample the path finely (PathSubdivision.h); the verifier remains the judge.
+///
+/// Cost: one nozzle query per station against a kd-tree (TimedPointTree.h), O(N log N); the
+/// obstacle search and tilt only for colliding stations.
+#include "sequence/NozzleModel.h"
+#include "mesh/TetMesh.h"
+
+#include <vector>
+
+namespace geolattice {
+
+struct AxisClearanceOptions {
+  double maxTiltDeg = 15.0;   ///< largest angle between the axis and the layer normal (deg, in [0, 60]); 0 = off
+  double marginDeg = 0.5;     ///< obstacles end at least this far outside the cone (deg, >= 0)
+  double blendLength = 5.0;   ///< a tilt fades out over this path length on each side (mm, >= 0)
+};
+
+struct AxisClearanceResult {
+  int collidingStations = 0;   ///< stations with earlier material inside the nozzle, before tilting
+  int tiltedStations = 0;      ///< of those, given a tilt that clears all of their obstacles
+  int unresolvedStations = 0;  ///< of those, no tilt within maxTilt clears them (left as they were)
+  int blendedPoints = 0;       ///< other points whose axis was turned by a fading tilt
+  double seconds = 0;
+};
+
+/// One pass over the path, time = point index. axes: current unit axes (modified);
+/// reference: the untilted unit layer normals (the tilt limit is measured from them); material:
+/// per point, non-zero if it is deposited material (an obstacle for later stations). Throws
+/// GeoLatticeError for mismatched sizes or bad options.
+AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector<Vec3>& axes,
+                                    const std::vector<Vec3>& reference, const std::vector<char>& material,
+                                    const NozzleModel& nozzle, const AxisClearanceOptions& options);
+
+} // namespace geolattice

@@ -1,0 +1,160 @@
+// Toolpath post-processing: subdivision (rotation steps, longest segment, exact extrusion) and
+// the nozzle axis clearance that tilts the axis off ∇γ where it would hit earlier material.
+#include "collision/CollisionVerifier.h"
+#include "common/Error.h"
+#include "toolpath/NozzleAxisClearance.h"
+#include "toolpath/PathSubdivision.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace geolattice;
+
+namespace {
+
+double degreesBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / M_PI; }
+
+void push(Toolpath& p, const Vec3& x, const Vec3& n, MoveKind kind, double h, double e) {
+  p.points.push_back(x);
+  p.normals.push_back(n.normalized());
+  p.kind.push_back(kind);
+  p.thickness.push_back(kind == MoveKind::Air ? 0.0 : h);
+  p.width.push_back(kind == MoveKind::Air ? 0.0 : 0.6);
+  p.extrusion.push_back(e);
+  p.feedRate.push_back(kind == MoveKind::Air ? 50.0 : 10.0);
+  p.layer.push_back(kind == MoveKind::Air ? -1 : 0);
+  p.subgraph.push_back(kind == MoveKind::Air ? -1 : 0);
+  p.pathIndex.push_back(0);
+}
+
+/// Earlier material on a line rising at 42.3° from the axis of stations along y: inside a 45°
+/// nozzle along +z at the station y = 0, outside it after a tilt of about 3°.
+struct Scene {
+  std::vector<Vec3> points, axes;
+  std::vector<char> material;
+  int station = -1;
+  Scene() {
+    for (double x = 3; x <= 6.01; x += 0.5) {
+      points.emplace_back(x, 0, 1.1 * x);
+      axes.emplace_back(0, 0, 1);
+      material.push_back(1);
+    }
+    for (double y = -6; y <= 6.01; y += 0.5) {
+      if (std::abs(y) < 1e-9) station = static_cast<int>(points.size());
+      points.emplace_back(0, y, 0);
+      axes.emplace_back(0, 0, 1);
+      material.push_back(1);
+    }
+  }
+};
+
+NozzleModel cone45() {
+  NozzleModel n;
+  n.halfAngleDeg = 45;
+  return n;
+}
+
+int collidingStations(const Scene& s, const std::vector<Vec3>& axes) {
+  std::vector<int> time(s.points.size());
+  for (size_t i = 0; i < time.size(); ++i) time[i] = static_cast<int>(i);
+  return static_cast<int>(verifyNozzleClearance(s.points, axes, time, cone45(), 0, nullptr, &s.material).violatingStations);
+}
+
+} // namespace
+
+TEST(PathSubdivision, RotationStepsLengthsAndExactExtrusion) {
+  Toolpath p;
+  push(p, Vec3(0, 0, 0), Vec3(0, 0, 1), MoveKind::Air, 0, 0);
+  push(p, Vec3(0, 0, 0.4), Vec3(0, 0, 1), MoveKind::Print, 0.4, 0);                 // arrives by air
+  push(p, Vec3(3, 0, 0.4), Vec3(std::sin(0.35), 0, std::cos(0.35)), MoveKind::Print, 0.8, 1.0);  // turns 20°
+  const std::vector<Vec3> original = p.normals;
+  std::vector<Vec3> reference = p.normals;
+  const SubdivisionCounts c = subdivideToolpath(p, 5 * M_PI / 180, 1.0, &reference);
+  // Segment 2: 3 mm and 20.05° -> max(ceil(20.05 / 5), ceil(3 / 1)) = 5 pieces; segment 1: 1 piece.
+  EXPECT_EQ(c.inserted, 4);
+  EXPECT_EQ(c.rotationSteps, 4);
+  ASSERT_EQ(p.points.size(), 7u);
+  ASSERT_EQ(reference.size(), 7u);
+  EXPECT_NEAR(p.extrusion.back(), 1.0, 1e-15);
+  for (size_t i = 3; i < p.points.size(); ++i) {
+    EXPECT_LE(degreesBetween(p.normals[i - 1], p.normals[i]), 5.0 + 1e-9);
+    EXPECT_LE((p.points[i] - p.points[i - 1]).norm(), 1.0);
+    EXPECT_EQ(p.kind[i], MoveKind::Print);
+    EXPECT_NEAR(degreesBetween(p.normals[i], reference[i]), 0.0, 1e-9);
+    // Eq. 14 per piece: ΔE ∝ (h_a + h_b) / 2 · L with the same constant as the whole segment.
+    const double piece = 0.5 * (p.thickness[i - 1] + p.thickness[i]) * (p.points[i] - p.points[i - 1]).norm();
+    const double whole = 0.5 * (0.4 + 0.8) * 3.0;
+    EXPECT_NEAR((p.extrusion[i] - p.extrusion[i - 1]) / 1.0, piece / whole, 1e-12) << "piece ending at " << i;
+  }
+  EXPECT_NEAR(degreesBetween(p.normals.back(), original.back()), 0.0, 1e-12);
+  // Nothing to do: no change.
+  const size_t n = p.points.size();
+  EXPECT_EQ(subdivideToolpath(p, 5 * M_PI / 180, 1.0).inserted, 0);
+  EXPECT_EQ(p.points.size(), n);
+}
+
+TEST(NozzleAxisClearance, TiltsTheLeastAngleAwayAndFadesAlongThePath) {
+  Scene s;
+  ASSERT_GT(collidingStations(s, s.axes), 0);
+  std::vector<Vec3> axes = s.axes;
+  AxisClearanceOptions o;
+  o.blendLength = 3;
+  const AxisClearanceResult r = clearNozzleAxes(s.points, axes, s.axes, s.material, cone45(), o);
+  EXPECT_GT(r.collidingStations, 0);
+  EXPECT_EQ(r.tiltedStations, r.collidingStations);
+  EXPECT_EQ(r.unresolvedStations, 0);
+  EXPECT_EQ(collidingStations(s, axes), 0);
+  // The station at y = 0: obstacles at 42.27° from +z (atan(1 / 1.1)); clearing them by the
+  // 0.5° margin needs 3.23°, tilting away from them (towards -x).
+  const double tilt = degreesBetween(axes[s.station], Vec3(0, 0, 1));
+  EXPECT_NEAR(tilt, 45.5 - std::atan(1 / 1.1) * 180 / M_PI, 0.05);
+  EXPECT_LT(axes[s.station].x(), 0);
+  // Fading: points farther than the blend length from every tilted station keep ∇γ; points
+  // nearer than it turn, by less than the station.
+  int faded = 0;
+  for (size_t i = 0; i < s.points.size(); ++i) {
+    if (s.points[i].x() != 0) continue;  // the material line, printed before the stations
+    const double t = degreesBetween(axes[i], Vec3(0, 0, 1));
+    EXPECT_LE(t, 15.0 + 1e-9);
+    if (std::abs(s.points[i].y()) > 6 - 1e-9) {
+      EXPECT_LT(t, 1e-12) << "y = " << s.points[i].y();
+    }
+    faded += t > 1e-9 && t < tilt - 1e-9;
+  }
+  EXPECT_GT(faded, 0);
+}
+
+TEST(NozzleAxisClearance, ReportsStationsNoAllowedTiltClears) {
+  Scene s;
+  std::vector<Vec3> axes = s.axes;
+  AxisClearanceOptions o;
+  o.maxTiltDeg = 2;  // 3.2° would be needed
+  const AxisClearanceResult r = clearNozzleAxes(s.points, axes, s.axes, s.material, cone45(), o);
+  EXPECT_GT(r.unresolvedStations, 0);
+  EXPECT_NEAR(degreesBetween(axes[s.station], Vec3(0, 0, 1)), 0.0, 2.0 + 1e-9);  // within the limit, maybe faded
+  EXPECT_GT(collidingStations(s, axes), 0);
+  // Off: detection only.
+  axes = s.axes;
+  o.maxTiltDeg = 0;
+  const AxisClearanceResult off = clearNozzleAxes(s.points, axes, s.axes, s.material, cone45(), o);
+  EXPECT_EQ(off.collidingStations, collidingStations(s, s.axes));
+  EXPECT_EQ(off.tiltedStations, 0);
+  EXPECT_EQ(axes, s.axes);
+}
+
+TEST(NozzleAxisClearance, BadInput) {
+  Scene s;
+  std::vector<Vec3> axes = s.axes;
+  AxisClearanceOptions o;
+  std::vector<Vec3> shortAxes(axes.begin(), axes.end() - 1);
+  EXPECT_THROW(clearNozzleAxes(s.points, shortAxes, s.axes, s.material, cone45(), o), GeoLatticeError);
+  o.maxTiltDeg = 70;
+  EXPECT_THROW(clearNozzleAxes(s.points, axes, s.axes, s.material, cone45(), o), GeoLatticeError);
+  o = AxisClearanceOptions{};
+  o.blendLength = -1;
+  EXPECT_THROW(clearNozzleAxes(s.points, axes, s.axes, s.material, cone45(), o), GeoLatticeError);
+  NozzleModel bad = cone45();
+  bad.halfAngleDeg = 95;
+  EXPECT_THROW(clearNozzleAxes(s.points, axes, s.axes, s.material, bad, AxisClearanceOptions{}), GeoLatticeError);
+}
