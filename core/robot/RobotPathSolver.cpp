@@ -32,12 +32,6 @@ JointVector unwrapNear(const RobotModel& r, JointVector q, const JointVector& ne
   return q;
 }
 
-double jointStep(const JointVector& a, const JointVector& b) {
-  double d = 0;
-  for (int i = 0; i < 6; ++i) d = std::max(d, std::abs(std::remainder(a[i] - b[i], 2 * M_PI)));
-  return d;
-}
-
 double singularityPenalty(const RobotModel& r, const JointVector& q, const Isometry& flange, double margin) {
   const SingularityDistance s = singularityDistance(r, q, flange);
   double p = 0;
@@ -89,6 +83,7 @@ CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>&
   std::vector<char> ok(S * P);
   std::vector<double> cost(S * P), penalty(S * P);
   std::vector<int> from(S * P);
+  std::vector<JointVector> wound(S * P);
   for (int branch : branches) {
     for (size_t s = 0; s < S; ++s) {
       for (int k = 0; k < P; ++k) {
@@ -100,6 +95,7 @@ CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>&
     for (int k = 0; k < P; ++k) {
       cost[k] = penalty[k];
       from[k] = -1;
+      wound[k] = q[k];
     }
     for (size_t s = 1; s < S; ++s) {
       for (int k = 0; k < P; ++k) {
@@ -111,10 +107,24 @@ CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>&
           const int j = ((k + dk) % P + P) % P;
           const size_t pid = (s - 1) * P + j;
           if (!std::isfinite(cost[pid])) continue;
-          const double c = cost[pid] + jointStep(q[pid], q[id]) + penalty[id];
+          // The joints as the robot reaches them along this path (turns add up, no ±2π
+          // folding): a path that would wind a joint past its limit is infeasible, since the
+          // fine pass could only get back by a full turn between two points.
+          JointVector reached;
+          double step = 0;
+          bool inside = true;
+          for (int a = 0; a < 6; ++a) {
+            const double d = std::remainder(q[id][a] - wound[pid][a], 2 * M_PI);
+            reached[a] = wound[pid][a] + d;
+            step = std::max(step, std::abs(d));
+            inside = inside && reached[a] >= robot.lowerLimit[a] && reached[a] <= robot.upperLimit[a];
+          }
+          if (!inside) continue;
+          const double c = cost[pid] + step + penalty[id];
           if (c < cost[id]) {
             cost[id] = c;
             from[id] = j;
+            wound[id] = reached;
           }
         }
       }

@@ -7,6 +7,8 @@
 ///    dynamic programming over a grid of ψ (psiSamples values) picks the ψ sequence that
 ///    minimises Σ joint-space steps + singularity penalties, allowing ψ to move at most
 ///    maxPsiStep grid cells between samples; infeasible states (no IK, joint limits) cost ∞.
+///    Joints are carried as reached along the path (turns add up, no folding modulo 2π), so a
+///    path that would wind a joint past its limit is infeasible too.
 ///    The branch with the least cost wins.
 /// 2. Fine pass: ψ is interpolated between the coarse samples, IK of the chosen branch is
 ///    solved at every point and unwrapped to the joint values nearest to the previous ones

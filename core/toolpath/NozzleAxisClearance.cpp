@@ -156,16 +156,43 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
     double angle;     ///< rotation angle (rad)
   };
   std::vector<Tilt> tilts;
+  // An obstacle closer to the reference axis than NA + margin - maxTilt is inside the cone for
+  // every allowed axis (cone-only nozzle): the station cannot be cleared, stop looking.
+  const double hopeless = wideModel.halfAngleDeg * kDeg - maxTilt;
+  const bool coneOnly = !std::isfinite(nozzle.length);
+  const double cosHopeless = hopeless > 0 ? std::cos(hopeless) : 2.0;
+  std::vector<std::pair<double, int>> byAngle;
   for (int k : colliding) {
     obstacles.tip = points[k];
     obstacles.ids.clear();
+    byAngle.clear();
     gather.setStation(points[k], reference[k]);
+    bool cannot = false;
     tree.forEachCandidate(gather, k, [&](int q) {
-      if ((points[q] - points[k]).squaredNorm() > face2) {
-        obstacles.ids.push_back(q);
+      const Vec3 d = points[q] - points[k];
+      const double d2 = d.squaredNorm();
+      if (d2 <= face2) {
+        return false;
       }
+      const double c = d.dot(reference[k]) / std::sqrt(d2);  // cos of the angle to the reference
+      if (coneOnly && c > cosHopeless && d.dot(reference[k]) * std::cos(maxTilt) > nozzle.tipClearance + std::sqrt(d2) * std::sin(maxTilt)) {
+        cannot = true;  // above the tip plane for every allowed axis, and inside every cone
+        return true;
+      }
+      byAngle.emplace_back(-c, q);
       return false;
     });
+    if (cannot) {
+      ++result.unresolvedStations;
+      continue;
+    }
+    // Those inside the cone about the reference first, so a blocked candidate axis is usually
+    // rejected by the first few (a partition, not a sort: linear).
+    const double cosWide = std::cos(wideModel.halfAngleDeg * kDeg);
+    std::partition(byAngle.begin(), byAngle.end(), [cosWide](const std::pair<double, int>& a) { return -a.first > cosWide; });
+    for (const auto& [negCos, q] : byAngle) {
+      obstacles.ids.push_back(q);
+    }
     Vec3 axis;
     if (!findClearAxis(obstacles, reference[k], axes[k], wideModel.halfAngleDeg * kDeg, maxTilt, axis)) {
       ++result.unresolvedStations;
