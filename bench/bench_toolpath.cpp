@@ -74,11 +74,14 @@ void BM_TrimToursThickness(benchmark::State& state) {
 }
 BENCHMARK(BM_TrimToursThickness)->Unit(benchmark::kMillisecond);
 
+/// Argument 0: the paper's axes (no clearance, only its detection pass); 1: the axis clearance.
 void BM_PlanToolpath(benchmark::State& state) {
   const Bunny& b = bunny();
   Toolpath p;
+  ToolpathOptions options;
+  options.clearance.maxTiltDeg = state.range(0) ? 15.0 : 0.0;
   for (auto _ : state) {
-    p = planToolpath(b.lattice, b.tree, b.order, ToolpathOptions{});
+    p = planToolpath(b.lattice, b.tree, b.order, options);
     benchmark::DoNotOptimize(p.points.data());
   }
   state.counters["points"] = static_cast<double>(p.points.size());
@@ -104,7 +107,7 @@ void BM_PlanToolpath(benchmark::State& state) {
   state.counters["max_tilt_deg"] = p.maxAxisTiltDeg;
   state.counters["inserted"] = p.subdivisionPoints;
 }
-BENCHMARK(BM_PlanToolpath)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlanToolpath)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 } // namespace
 
