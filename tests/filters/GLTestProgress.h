@@ -10,9 +10,7 @@
  *     the progress values start at 0, never go back, end at 1, and hold at least 5 distinct
  *     values strictly between 0 and 1 (the filter's own reports: the executive only adds 0 and 1)
  *
- *   GLAbortRequest abort;
- *   abort.AtLeast = 0.3;                 // at the first event >= 0.3 (after the executive's 0)
- *   glExpectCleanAbort(filter, abort);
+ *   glExpectCleanAbort(filter, glAbortAt(0.3));  // at the first event >= 0.3 (after the executive's 0)
  *     the abort was requested and then: no error or warning, empty outputs, no progress event
  *     of the filter after the request (it stopped at its next check; the executive's closing
  *     1.0 aside), and the filter recovers: with
@@ -45,6 +43,14 @@ struct GLAbortRequest
   int AfterEvents = 1;
   double AtLeast = 0.0;
 };
+
+/// The abort request at the first progress value >= atLeast.
+inline GLAbortRequest glAbortAt(double atLeast)
+{
+  GLAbortRequest request;
+  request.AtLeast = atLeast;
+  return request;
+}
 
 class GLTestProgress : public vtkCommand
 {

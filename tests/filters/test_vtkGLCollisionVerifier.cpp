@@ -322,10 +322,6 @@ TEST(vtkGLCollisionVerifier, ProgressAndAbort) {
   verifier->SetInputData(input);
   verifier->SetNozzleAngle(60.0);
   glExpectProgressReport(verifier, 3);
-  GLAbortRequest beforeTheCheck;
-  beforeTheCheck.AtLeast = 0.2;
-  glExpectCleanAbort(verifier, beforeTheCheck);
-  GLAbortRequest afterTheCheck;
-  afterTheCheck.AtLeast = 0.9;
-  glExpectCleanAbort(verifier, afterTheCheck);
+  glExpectCleanAbort(verifier, glAbortAt(0.2));
+  glExpectCleanAbort(verifier, glAbortAt(0.9));
 }

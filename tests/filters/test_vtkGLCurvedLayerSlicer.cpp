@@ -148,10 +148,6 @@ TEST(vtkGLCurvedLayerSlicer, ProgressAndAbort) {
   slicer->SetLayerInterval(0.5);
   // The tet loop of the core reports about 64 times.
   glExpectProgressReport(slicer, 20);
-  GLAbortRequest inTheTetLoop;
-  inTheTetLoop.AtLeast = 0.3;
-  glExpectCleanAbort(slicer, inTheTetLoop);
-  GLAbortRequest inTheComponents;
-  inTheComponents.AtLeast = 0.65;
-  glExpectCleanAbort(slicer, inTheComponents);
+  glExpectCleanAbort(slicer, glAbortAt(0.3));
+  glExpectCleanAbort(slicer, glAbortAt(0.65));
 }

@@ -201,9 +201,7 @@ TEST(vtkGLGCodeWriter, ProgressAndAbortWriteNothing) {
   fs::remove(dir / "abort.gcode");
   for (double at : {0.1, 0.2, 0.9}) {
     SCOPED_TRACE(at);
-    GLAbortRequest request;
-    request.AtLeast = at;
-    glExpectCleanAbort(w, request, write, nothingWritten);
+    glExpectCleanAbort(w, glAbortAt(at), write, nothingWritten);
     fs::remove(dir / "abort.gcode");
   }
   fs::remove_all(dir);

@@ -172,13 +172,9 @@ TEST(vtkGLGeodesicDistanceFields, ProgressAndAbortInTheSetUpAndInTheSolve) {
 
   vtkNew<vtkGLGeodesicDistanceFields> filter;
   filter->SetInputData(grid);
-  GLAbortRequest inSetUp;
-  inSetUp.AtLeast = 0.3; // after the heat factorization
-  glExpectCleanAbort(filter, inSetUp);
+  glExpectCleanAbort(filter, glAbortAt(0.3)); // after the heat factorization
   // The recovery run rebuilt the solver and keeps it: this abort comes inside solve().
-  GLAbortRequest inSolve;
-  inSolve.AtLeast = 0.7;
-  glExpectCleanAbort(filter, inSolve);
+  glExpectCleanAbort(filter, glAbortAt(0.7));
   // After both aborts the fields are those of an undisturbed run.
   vtkDataArray* again = pointArray(filter->GetOutput(), arrays::Gamma);
   ASSERT_NE(again, nullptr);

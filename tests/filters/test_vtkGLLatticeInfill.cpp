@@ -332,9 +332,7 @@ TEST(vtkGLLatticeInfill, ProgressPerLayerAndAbort) {
   filter->SetInputData(layers);
   filter->SetNumberOfThreads(1); // every layer reported by the calling thread
   glExpectProgressReport(filter, 25);
-  GLAbortRequest midway;
-  midway.AtLeast = 0.3;
-  glExpectCleanAbort(filter, midway);
+  glExpectCleanAbort(filter, glAbortAt(0.3));
   filter->SetNumberOfThreads(2); // the other worker finishes its layer, silently
-  glExpectCleanAbort(filter, midway);
+  glExpectCleanAbort(filter, glAbortAt(0.3));
 }

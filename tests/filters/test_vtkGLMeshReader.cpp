@@ -435,8 +435,6 @@ TEST(MeshReaderProgress, SurfaceAndTetMeshReportProgressAndStopOnAbort)
     glExpectProgressReport(reader, 2);
     GLAbortRequest afterTheFirstReport;
     glExpectCleanAbort(reader, afterTheFirstReport);
-    GLAbortRequest afterReading;
-    afterReading.AtLeast = 0.5;
-    glExpectCleanAbort(reader, afterReading);
+    glExpectCleanAbort(reader, glAbortAt(0.5));
   }
 }

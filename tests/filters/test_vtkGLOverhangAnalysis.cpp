@@ -285,10 +285,6 @@ TEST(vtkGLOverhangAnalysis, ProgressAndAbort) {
   vtkNew<vtkGLOverhangAnalysis> filter;
   filter->SetInputData(fields);
   glExpectProgressReport(filter, 4);
-  GLAbortRequest afterTheTopology;
-  afterTheTopology.AtLeast = 0.5;
-  glExpectCleanAbort(filter, afterTheTopology);
-  GLAbortRequest whileCopying;
-  whileCopying.AtLeast = 0.8;
-  glExpectCleanAbort(filter, whileCopying);
+  glExpectCleanAbort(filter, glAbortAt(0.5));
+  glExpectCleanAbort(filter, glAbortAt(0.8));
 }

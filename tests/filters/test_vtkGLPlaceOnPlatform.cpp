@@ -260,7 +260,5 @@ TEST(PlaceOnPlatform, ProgressAndAbort)
   vtkNew<vtkGLPlaceOnPlatform> place;
   place->SetInputConnection(reader->GetOutputPort());
   glExpectProgressReport(place, 10);
-  GLAbortRequest midway;
-  midway.AtLeast = 0.5;
-  glExpectCleanAbort(place, midway);
+  glExpectCleanAbort(place, glAbortAt(0.5));
 }

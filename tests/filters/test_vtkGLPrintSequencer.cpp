@@ -653,12 +653,8 @@ TEST_F(BranchingYPipeline, SequencerProgressAndAbort) {
     sequencer->SetNumberOfThreads(2);
     // Material, the potential collisions per sub-graph (A4, best), the order step by step.
     glExpectProgressReport(sequencer, 20);
-    GLAbortRequest early;
-    early.AtLeast = 0.3; // A4, best: in the potential collisions; LPT: in the order
-    glExpectCleanAbort(sequencer, early);
-    GLAbortRequest late;
-    late.AtLeast = 0.8; // in the order
-    glExpectCleanAbort(sequencer, late);
+    glExpectCleanAbort(sequencer, glAbortAt(0.3)); // A4, best: in the potential collisions; LPT: in the order
+    glExpectCleanAbort(sequencer, glAbortAt(0.8)); // in the order
   }
 }
 
@@ -672,10 +668,6 @@ TEST_F(BranchingYPipeline, VerifierProgressAndAbort) {
   verifier->SetInputConnection(sequencer->GetOutputPort(0));
   // Inputs checked, stations sampled, the check (one core call), the output.
   glExpectProgressReport(verifier, 3);
-  GLAbortRequest beforeTheCheck;
-  beforeTheCheck.AtLeast = 0.2;
-  glExpectCleanAbort(verifier, beforeTheCheck);
-  GLAbortRequest afterTheCheck;
-  afterTheCheck.AtLeast = 0.9;
-  glExpectCleanAbort(verifier, afterTheCheck);
+  glExpectCleanAbort(verifier, glAbortAt(0.2));
+  glExpectCleanAbort(verifier, glAbortAt(0.9));
 }

@@ -301,10 +301,6 @@ TEST(vtkGLSkeletonTree, ProgressAndAbort) {
   p.gdf->Update();
   ASSERT_FALSE(p.errors->HasError()) << p.errors->Errors();
   glExpectProgressReport(p.skeleton, 10);
-  GLAbortRequest inTheSlabUnion;
-  inTheSlabUnion.AtLeast = 0.5;
-  glExpectCleanAbort(p.skeleton, inTheSlabUnion);
-  GLAbortRequest locatingTheSubgraphs;
-  locatingTheSubgraphs.AtLeast = 0.8;
-  glExpectCleanAbort(p.skeleton, locatingTheSubgraphs);
+  glExpectCleanAbort(p.skeleton, glAbortAt(0.5));
+  glExpectCleanAbort(p.skeleton, glAbortAt(0.8));
 }

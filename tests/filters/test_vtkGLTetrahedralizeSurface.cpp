@@ -351,9 +351,7 @@ TEST(vtkGLTetrahedralizeSurface, ProgressAndAbortWhileTetGenRuns)
   GLAbortRequest inTetGen;
   inTetGen.AfterEvents = 2; // 0 (executive), 0.05 (input converted), then the first poll of TetGen
   glExpectCleanAbort(filter, inTetGen);
-  GLAbortRequest inTheQualityLoop;
-  inTheQualityLoop.AtLeast = 0.85;
-  glExpectCleanAbort(filter, inTheQualityLoop);
+  glExpectCleanAbort(filter, glAbortAt(0.85));
 }
 
 TEST(vtkGLTetrahedralizeSurface, AutomaticEdgeLengthReportsEveryTetGenRun)

@@ -679,10 +679,6 @@ TEST_F(BranchingYToolpath, ProgressAndAbortBeforeAndAfterThePlanning) {
   };
   // Inputs converted, the planning (one core call), the output built.
   glExpectProgressReport(planner(), 3);
-  GLAbortRequest beforeThePlanning;
-  beforeThePlanning.AtLeast = 0.1;
-  glExpectCleanAbort(planner(), beforeThePlanning);
-  GLAbortRequest afterThePlanning;
-  afterThePlanning.AtLeast = 0.8; // nothing cached: the recovery run plans again
-  glExpectCleanAbort(planner(), afterThePlanning);
+  glExpectCleanAbort(planner(), glAbortAt(0.1));
+  glExpectCleanAbort(planner(), glAbortAt(0.8)); // nothing cached: the recovery run plans again
 }

@@ -454,9 +454,7 @@ TEST(vtkGLURScriptWriter, ProgressAndAbortWriteNothing) {
   fs::create_directories(dir);
   for (double at : {0.1, 0.5, 0.9}) {
     SCOPED_TRACE(at);
-    GLAbortRequest request;
-    request.AtLeast = at;
-    glExpectCleanAbort(w, request, write, nothingWritten);
+    glExpectCleanAbort(w, glAbortAt(at), write, nothingWritten);
     EXPECT_EQ(glListDirectory(dir), std::vector<std::string>{"abort.script"}); // the recovery run
     fs::remove(dir / "abort.script");
   }

@@ -114,9 +114,7 @@ TEST(vtkGLWaypointCsvWriter, ProgressAndAbortWriteNothing) {
   fs::remove(dir / "abort.csv");
   for (double at : {0.2, 0.9}) {
     SCOPED_TRACE(at);
-    GLAbortRequest request;
-    request.AtLeast = at;
-    glExpectCleanAbort(w, request, write, nothingWritten);
+    glExpectCleanAbort(w, glAbortAt(at), write, nothingWritten);
     fs::remove(dir / "abort.csv");
   }
   fs::remove_all(dir);
