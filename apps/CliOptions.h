@@ -30,7 +30,7 @@ struct NozzleOptions {
   double length = 0.0;
   double holderRadius = 0.0;
   double tipClearance = 0.1;
-  double tipFaceRadius = 0.3;
+  double tipFaceRadius = 0.5;
   double sampleSpacing = 1.0;
 
   /// Consumes --nozzle-angle, --nozzle-length, --holder-radius, --tip-clearance,

@@ -151,6 +151,7 @@ void reportToolpath(vtkDataObject* toolpath, JsonObject& s)
   s.set("tilted_stations", count(arrays::ToolpathTiltedStations));
   s.set("uncleared_stations", count(arrays::ToolpathUnclearedStations));
   s.set("max_axis_tilt_deg", fieldNumber(toolpath, arrays::ToolpathMaxAxisTilt));
+  s.set("replanned_hops", count(arrays::ToolpathReplannedHops));
   s.set("thickness_dev_min", fieldNumber(toolpath, arrays::ToolpathThicknessDeviation, 0));
   s.set("thickness_dev_max", fieldNumber(toolpath, arrays::ToolpathThicknessDeviation, 1));
   s.set("capped_vertices", count(arrays::ToolpathCappedVertices));

@@ -139,7 +139,7 @@ Options:
   --holder-radius MM      radius of the holder cylinder above the nozzle length      [0]
   --tip-clearance MM      ignore material at most this high above the nozzle tip     [0.1]
   --tip-face-radius MM    ignore material this close to the tip (under the nozzle's
-                          flat face, which presses the bead)                          [0.3]
+                          flat face, which presses the bead)                          [0.5]
   --sample-spacing MM     spacing of the material samples tested for collisions      [1]
  Toolpath (paper Section 3.2: Euler tours, thickness Eq. 15, extrusion Eq. 14, air moves):
   --path-width MM         path (bead) width w                                        [0.6]

@@ -163,6 +163,7 @@ constexpr const char* ToolpathCollidingStations = "ToolpathCollidingStations"; /
 constexpr const char* ToolpathTiltedStations = "ToolpathTiltedStations";   ///< of those, cleared by tilting the axis
 constexpr const char* ToolpathUnclearedStations = "ToolpathUnclearedStations"; ///< stations still colliding after tilting
 constexpr const char* ToolpathMaxAxisTilt = "ToolpathMaxAxisTilt";       ///< largest AxisTilt (degrees)
+constexpr const char* ToolpathReplannedHops = "ToolpathReplannedHops";   ///< hops onto an upper node sent over the safe box (they collided)
 constexpr const char* ToolpathSeconds = "ToolpathSeconds";               ///< wall time of the planning (s)
 } // namespace arrays
 

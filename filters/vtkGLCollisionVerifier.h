@@ -42,7 +42,7 @@
  *   `CollisionUnavoidableStations`, `CollisionSeconds` and `NozzleAngleDeg`.
  * Parameters: TimeArrayName (default "PrintOrder"), NozzleAngle (degrees, default 45, in
  *   (0, 90)), NozzleLength (mm, default 0 = cone only), HolderRadius (mm, default 0),
- *   TipClearance (mm, default 0.1), TipFaceRadius (mm, default 0.3: material that near the tip is
+ *   TipClearance (mm, default 0.1), TipFaceRadius (mm, default 0.5: material that near the tip is
  *   under the nozzle face), SampleSpacing (mm, default 1, > 0), MaxReported (default 20).
  * Errors (an empty input, missing Normals or time array, a non-integer or non-finite time, a zero
  * normal, NozzleAngle outside (0, 90) or another bad nozzle, SampleSpacing <= 0, SkeletonEdges
@@ -123,7 +123,7 @@ protected:
   double NozzleLength = 0.0;
   double HolderRadius = 0.0;
   double TipClearance = 0.1;
-  double TipFaceRadius = 0.3;
+  double TipFaceRadius = 0.5;
   double SampleSpacing = 1.0;
   int MaxReported = 20;
 

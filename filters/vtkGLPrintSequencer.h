@@ -44,7 +44,7 @@
  * Parameters: Strategy (default 2 = A4), NozzleAngle (NA, degrees, default 45, in (0, 90)),
  *   NozzleLength (mm, default 0 = cone only), HolderRadius (mm, default 0), TipClearance (mm,
  *   default 0.1: material with height <= this above the tip is ignored), TipFaceRadius (mm,
- *   default 0.3: material this close to the tip is under the nozzle face), SampleSpacing (mm,
+ *   default 0.5: material this close to the tip is under the nozzle face), SampleSpacing (mm,
  *   default 1, > 0), RolloutCandidates (default 6, >= 1), RetractionCost (mm, default 20,
  *   >= 0), NumberOfThreads (PCG, default 0 = all cores).
  * Errors (an empty lattice, missing arrays, a skeleton that does not match the lattice (node
@@ -146,7 +146,7 @@ protected:
   double NozzleLength = 0.0;
   double HolderRadius = 0.0;
   double TipClearance = 0.1;
-  double TipFaceRadius = 0.3;
+  double TipFaceRadius = 0.5;
   double SampleSpacing = 1.0;
   int RolloutCandidates = 6;
   double RetractionCost = 20.0;

@@ -199,6 +199,7 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   count(gl::arrays::ToolpathTiltedStations, path.tiltedStations);
   count(gl::arrays::ToolpathUnclearedStations, path.unclearedStations);
   count(gl::arrays::ToolpathMaxAxisTilt, path.maxAxisTiltDeg);
+  count(gl::arrays::ToolpathReplannedHops, path.replannedHops);
   count(gl::arrays::ToolpathSeconds, path.seconds);
 }
 

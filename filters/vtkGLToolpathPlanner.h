@@ -55,7 +55,8 @@
  *     mean, max per lattice layer 0..L-1), `ToolpathCappedVertices`,
  *     `ToolpathUnsupportedVertices`, `ToolpathRotationSteps`, `ToolpathSubdivisionPoints`,
  *     `ToolpathCollidingStations` (along ∇γ), `ToolpathTiltedStations`,
- *     `ToolpathUnclearedStations`, `ToolpathMaxAxisTilt` (degrees), `ToolpathSeconds` (planning wall
+ *     `ToolpathUnclearedStations`, `ToolpathMaxAxisTilt` (degrees), `ToolpathReplannedHops`
+ *     (hops onto an upper node that collided and went over the safe box), `ToolpathSeconds` (planning wall
  *     time) and `SkeletonEdges` from input 0; always of the whole toolpath.
  * Time (print replay): unless NumberOfTimeSteps is 0 the output advertises NumberOfTimeSteps
  *   time steps p = k / (NumberOfTimeSteps - 1) in [0, 1] (TIME_STEPS, TIME_RANGE): the print
@@ -180,7 +181,7 @@ public:
   /// The nozzle kept clear of earlier material by tilting the axis (the same parameters as
   /// vtkGLPrintSequencer and vtkGLCollisionVerifier): half-angle NA (degrees, default 45, in
   /// (0, 90)), length (mm, default 0 = cone only), holder radius (mm, default 0), tip clearance
-  /// (mm, default 0.1), tip face radius (mm, default 0.3).
+  /// (mm, default 0.1), tip face radius (mm, default 0.5).
   vtkSetMacro(NozzleAngle, double);
   vtkGetMacro(NozzleAngle, double);
   vtkSetMacro(NozzleLength, double);
@@ -236,7 +237,7 @@ protected:
   double NozzleLength = 0.0;
   double HolderRadius = 0.0;
   double TipClearance = 0.1;
-  double TipFaceRadius = 0.3;
+  double TipFaceRadius = 0.5;
   double MaxAxisTilt = 15.0;
   double TiltBlendLength = 5.0;
   int NumberOfTimeSteps = 200;

@@ -12,7 +12,7 @@
 /// face rides on the layer being printed, so beads of the same layer next to the tip (their tops
 /// within a fraction of a layer of the tip, e.g. where the path passes a crossing the second
 /// time) are not obstacles. 0 makes every point above the tip plane count.
-/// tipFaceRadius (>= 0, default 0.3 mm) ignores material within that distance of the tip: it
+/// tipFaceRadius (>= 0, default 0.5 mm) ignores material within that distance of the tip: it
 /// lies under the nozzle's flat face around the orifice (a 0.4-0.6 mm nozzle's face is about
 /// 1 mm across), which presses the bead being printed and its overlapping neighbours; it is
 /// not inside the nozzle body. 0 makes the cone start at the tip point.
@@ -28,7 +28,7 @@ struct NozzleModel {
   double length = std::numeric_limits<double>::infinity();  ///< L (mm, > 0), ∞ = cone only
   double holderRadius = 0.0;    ///< R (mm, >= 0), used when length is finite; 0 = no holder
   double tipClearance = 0.1;    ///< material with h <= this is ignored (mm, >= 0)
-  double tipFaceRadius = 0.3;   ///< material within this distance of the tip is ignored (mm, >= 0)
+  double tipFaceRadius = 0.5;   ///< material within this distance of the tip is ignored (mm, >= 0)
 
   /// Throws GeoLatticeError naming the bad parameter.
   void validate() const;

@@ -134,6 +134,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
     }
   }
   result.collidingStations = static_cast<int>(colliding.size());
+  result.colliding = colliding;
   if (colliding.empty() || o.maxTiltDeg == 0) {
     result.unresolvedStations = result.collidingStations;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -32,6 +32,7 @@ struct AxisClearanceOptions {
 
 struct AxisClearanceResult {
   int collidingStations = 0;   ///< stations with earlier material inside the nozzle, before tilting
+  std::vector<int> colliding;  ///< their indices
   int tiltedStations = 0;      ///< of those, given a tilt that clears all of their obstacles
   int unresolvedStations = 0;  ///< of those, no tilt within maxTilt clears them (left as they were)
   int blendedPoints = 0;       ///< other points whose axis was turned by a fading tilt

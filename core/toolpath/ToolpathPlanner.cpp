@@ -102,7 +102,7 @@ private:
 
 /// Rotation steps and subdivision, then rounds of axis clearance (each followed by the rotation
 /// steps its tilts need) until no station collides or no tilt helps.
-void finishAxes(Toolpath& path, const ToolpathOptions& o) {
+std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o) {
   const double maxTurn = o.maxTurnDeg * M_PI / 180.0;
   SubdivisionCounts counts = subdivideToolpath(path, maxTurn, o.maxSegmentLength);
   path.rotationSteps = counts.rotationSteps;
@@ -117,6 +117,7 @@ void finishAxes(Toolpath& path, const ToolpathOptions& o) {
   };
   constexpr int kMaxRounds = 4;
   bool checked = false;
+  std::vector<int> uncleared;
   for (int round = 0; round < kMaxRounds && o.clearance.maxTiltDeg > 0; ++round) {
     const AxisClearanceResult r =
       clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, o.clearance);
@@ -127,6 +128,7 @@ void finishAxes(Toolpath& path, const ToolpathOptions& o) {
     path.tiltedStations += r.tiltedStations;
     if (r.collidingStations == 0 || r.tiltedStations == 0) {
       path.unclearedStations = r.collidingStations;
+      uncleared = r.colliding;
       checked = true;
       break;
     }
@@ -140,6 +142,7 @@ void finishAxes(Toolpath& path, const ToolpathOptions& o) {
     const AxisClearanceResult r =
       clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, detectOnly);
     path.unclearedStations = r.collidingStations;
+    uncleared = r.colliding;
     if (path.clearanceRounds == 0) {
       path.collidingStations = r.collidingStations;
     }
@@ -150,6 +153,7 @@ void finishAxes(Toolpath& path, const ToolpathOptions& o) {
       std::atan2(path.normals[i].cross(reference[i]).norm(), path.normals[i].dot(reference[i])) * 180.0 / M_PI;
     path.maxAxisTiltDeg = std::max(path.maxAxisTiltDeg, path.axisTilt[i]);
   }
+  return uncleared;
 }
 
 } // namespace
@@ -217,85 +221,112 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const
     toursOf[tours.subgraph[t]].push_back(static_cast<int>(t));
   }
 
-  PathBuilder b(path, o);
-  Eigen::AlignedBox3d printed;  // everything printed so far
-  int previous = -1, tourIndex = 0;
-  for (int k : order) {
-    std::vector<int> remaining = toursOf[k];
-    while (!remaining.empty()) {
-      // The tour of this sub-graph with the vertex nearest to the nozzle; start there.
-      size_t bestTour = 0, bestAt = 0;
-      double bestDistance = std::numeric_limits<double>::infinity();
-      for (size_t r = 0; r < remaining.size(); ++r) {
-        const auto& vs = tours.vertices[remaining[r]];
-        for (size_t i = 0; i + 1 < vs.size(); ++i) {
-          const double d = b.empty() ? static_cast<double>(i) : (g.points[vs[i]] - b.position()).squaredNorm();
-          if (d < bestDistance) {
-            bestDistance = d;
-            bestTour = r;
-            bestAt = i;
+  // Built once; if stations of a hop (the short lift onto an upper node) still collide after
+  // the axis clearance, the hop passed too close to a curved layer: those transitions go over
+  // the safe box instead and the path is built again.
+  const Toolpath base = path;
+  const std::vector<std::vector<int>> loopsAtStart = loopsAt;
+  std::vector<char> overTheBox(tours.subgraph.size() + 1, 0);
+  int replannedHops = 0;
+  for (int attempt = 0;; ++attempt) {
+    path = base;
+    loopsAt = loopsAtStart;
+    PathBuilder b(path, o);
+    Eigen::AlignedBox3d printed;  // everything printed so far
+    int previous = -1, tourIndex = 0;
+    std::vector<char> hopped(overTheBox.size(), 0);
+    for (int k : order) {
+      std::vector<int> remaining = toursOf[k];
+      while (!remaining.empty()) {
+        // The tour of this sub-graph with the vertex nearest to the nozzle; start there.
+        size_t bestTour = 0, bestAt = 0;
+        double bestDistance = std::numeric_limits<double>::infinity();
+        for (size_t r = 0; r < remaining.size(); ++r) {
+          const auto& vs = tours.vertices[remaining[r]];
+          for (size_t i = 0; i + 1 < vs.size(); ++i) {
+            const double d = b.empty() ? static_cast<double>(i) : (g.points[vs[i]] - b.position()).squaredNorm();
+            if (d < bestDistance) {
+              bestDistance = d;
+              bestTour = r;
+              bestAt = i;
+            }
           }
         }
-      }
-      const auto& vs = tours.vertices[remaining[bestTour]];
-      remaining.erase(remaining.begin() + static_cast<long>(bestTour));
-      const size_t n = vs.size() - 1;  // closed: vs[n] == vs[0]
-      const int start = vs[bestAt];
-      const Vec3 startAxis = g.normals[start].normalized();
-      if (!b.empty()) {
-        b.retract(o.retraction);
-        const bool upper = previous >= 0 &&
-                           std::binary_search(tree.nodes[previous].upper.begin(), tree.nodes[previous].upper.end(), k);
-        std::vector<AirWaypoint> air;
-        if (upper) {
-          air = liftAirMove(b.position(), b.axis(), g.points[start], startAxis, o.lift);
-        } else {
-          Eigen::AlignedBox3d box = printed;
-          box.extend(b.position());
-          box.extend(g.points[start]);
-          box.min().array() -= o.safeMargin;
-          box.max().array() += o.safeMargin;
-          air = safeBoxAirMove(b.position(), b.axis(), g.points[start], startAxis, box);
-        }
-        for (size_t i = 0; i + 1 < air.size(); ++i) {
-          b.add(air[i].point, air[i].axis, MoveKind::Air, 0.0, -1, -1, tourIndex);
-        }
-        // Prime during the approach, so E at the tour's start already holds it and every print
-        // segment's ΔE is its deposited filament only.
-        b.prime(o.retraction);
-        b.add(air.back().point, air.back().axis, MoveKind::Air, 0.0, -1, -1, tourIndex);
-        ++path.retractions;
-      }
-      const int layer = g.subgraphs[k].layer;
-      if (b.empty()) {  // the very first point: the nozzle starts there
-        b.add(g.points[start], startAxis, MoveKind::Air, 0.0, -1, -1, tourIndex);
-      }
-      // Perimeter loops anchored at v: out along the connector, around, back without extrusion.
-      auto splicePerimeters = [&](int v) {
-        for (int li : loopsAt[v]) {
-          const PerimeterLoop& loop = perimeters.loops[li];
-          for (size_t q = 0; q < loop.points.size(); ++q) {
-            b.add(loop.points[q], loop.normals[q], MoveKind::Perimeter, h[loop.nearVertex[q]], layer, k, tourIndex);
-            printed.extend(loop.points[q]);
+        const auto& vs = tours.vertices[remaining[bestTour]];
+        remaining.erase(remaining.begin() + static_cast<long>(bestTour));
+        const size_t n = vs.size() - 1;  // closed: vs[n] == vs[0]
+        const int start = vs[bestAt];
+        const Vec3 startAxis = g.normals[start].normalized();
+        if (!b.empty()) {
+          b.retract(o.retraction);
+          const bool upper = previous >= 0 &&
+                             std::binary_search(tree.nodes[previous].upper.begin(), tree.nodes[previous].upper.end(), k);
+          std::vector<AirWaypoint> air;
+          if (upper && !overTheBox[tourIndex]) {
+            hopped[tourIndex] = 1;
+            air = liftAirMove(b.position(), b.axis(), g.points[start], startAxis, o.lift);
+          } else {
+            Eigen::AlignedBox3d box = printed;
+            box.extend(b.position());
+            box.extend(g.points[start]);
+            box.min().array() -= o.safeMargin;
+            box.max().array() += o.safeMargin;
+            air = safeBoxAirMove(b.position(), b.axis(), g.points[start], startAxis, box);
           }
-          b.add(g.points[v], g.normals[v].normalized(), MoveKind::Perimeter, h[v], layer, k, tourIndex, false);
+          for (size_t i = 0; i + 1 < air.size(); ++i) {
+            b.add(air[i].point, air[i].axis, MoveKind::Air, 0.0, -1, -1, tourIndex);
+          }
+          // Prime during the approach, so E at the tour's start already holds it and every print
+          // segment's ΔE is its deposited filament only.
+          b.prime(o.retraction);
+          b.add(air.back().point, air.back().axis, MoveKind::Air, 0.0, -1, -1, tourIndex);
+          ++path.retractions;
         }
-        loopsAt[v].clear();
-      };
-      splicePerimeters(start);
-      for (size_t j = 1; j <= n; ++j) {
-        const int v = vs[(bestAt + j) % n];
-        b.add(g.points[v], g.normals[v].normalized(), MoveKind::Print, h[v], layer, k, tourIndex);
-        printed.extend(g.points[v]);
-        splicePerimeters(v);
+        const int layer = g.subgraphs[k].layer;
+        if (b.empty()) {  // the very first point: the nozzle starts there
+          b.add(g.points[start], startAxis, MoveKind::Air, 0.0, -1, -1, tourIndex);
+        }
+        // Perimeter loops anchored at v: out along the connector, around, back without extrusion.
+        auto splicePerimeters = [&](int v) {
+          for (int li : loopsAt[v]) {
+            const PerimeterLoop& loop = perimeters.loops[li];
+            for (size_t q = 0; q < loop.points.size(); ++q) {
+              b.add(loop.points[q], loop.normals[q], MoveKind::Perimeter, h[loop.nearVertex[q]], layer, k, tourIndex);
+              printed.extend(loop.points[q]);
+            }
+            b.add(g.points[v], g.normals[v].normalized(), MoveKind::Perimeter, h[v], layer, k, tourIndex, false);
+          }
+          loopsAt[v].clear();
+        };
+        splicePerimeters(start);
+        for (size_t j = 1; j <= n; ++j) {
+          const int v = vs[(bestAt + j) % n];
+          b.add(g.points[v], g.normals[v].normalized(), MoveKind::Print, h[v], layer, k, tourIndex);
+          printed.extend(g.points[v]);
+          splicePerimeters(v);
+        }
+        printed.extend(g.points[start]);
+        ++tourIndex;
       }
-      printed.extend(g.points[start]);
-      ++tourIndex;
+      previous = k;
     }
-    previous = k;
+    path.tours = tourIndex;
+    const std::vector<int> uncleared = finishAxes(path, o);
+    int replan = 0;
+    for (int i : uncleared) {
+      const int tour = path.pathIndex[i];
+      if (path.kind[i] == MoveKind::Air && tour >= 0 && tour < static_cast<int>(hopped.size()) && hopped[tour] &&
+          !overTheBox[tour]) {
+        overTheBox[tour] = 1;
+        ++replan;
+      }
+    }
+    replannedHops += replan;
+    if (replan == 0 || attempt == 2) {
+      break;
+    }
   }
-  path.tours = tourIndex;
-  finishAxes(path, o);
+  path.replannedHops = replannedHops;
   path.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return path;
 }

@@ -83,6 +83,7 @@ struct Toolpath {
   int tiltedStations = 0;            ///< stations cleared by tilting the axis (over all rounds)
   int unclearedStations = 0;         ///< stations still colliding after the last round
   int clearanceRounds = 0;
+  int replannedHops = 0;             ///< hops onto an upper node that collided and went over the safe box
   double maxAxisTiltDeg = 0;
   double filamentLength = 0;         ///< Σ ΔE over print moves (mm)
   double depositedVolume = 0;        ///< Σ μ w h̄ L over print moves (mm³)

@@ -338,13 +338,13 @@ TEST(vtkGLToolpathPlanner, DefaultsAndPrintSelf) {
   EXPECT_EQ(f->GetNozzleLength(), 0.0);
   EXPECT_EQ(f->GetHolderRadius(), 0.0);
   EXPECT_EQ(f->GetTipClearance(), 0.1);
-  EXPECT_EQ(f->GetTipFaceRadius(), 0.3);
+  EXPECT_EQ(f->GetTipFaceRadius(), 0.5);
   EXPECT_EQ(f->GetMaxAxisTilt(), 15.0);
   EXPECT_EQ(f->GetTiltBlendLength(), 5.0);
   std::ostringstream os;
   f->Print(os);
   for (const char* text : {"PathWidth: 0.6", "FilamentDiameter: 1.75", "SupportPerimeter: 1", "NumberOfTimeSteps: 200",
-                           "MaxAxisTilt: 15", "TipFaceRadius: 0.3", "MaxSegmentLength: 1"}) {
+                           "MaxAxisTilt: 15", "TipFaceRadius: 0.5", "MaxSegmentLength: 1"}) {
     EXPECT_NE(os.str().find(text), std::string::npos) << text;
   }
 }
