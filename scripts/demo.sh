@@ -14,8 +14,10 @@ Done. Outputs are in $root/out:
   layers.vtp     the curved layers (colour by LayerId)
   lattice.vtp    the lattice infill of every layer (colour by SubgraphId or PrintOrder)
   skeleton.vtp   the skeleton tree of the lattice pieces, sequence.csv the printing order
-  toolpath.vtp   the printing path (colour by MoveKind); toolpath.pvd replays the print
-  report.json    per-stage timings, counts and the collision check
+  toolpath.vtp   the printing path (colour by MoveKind or AxisTilt); toolpath.pvd replays the print
+  print_part*.script  the UR5 program (URScript; split into numbered files at air moves)
+  toolpath.gcode the 5-axis G-code (A-C table), waypoints.csv every point with its axis
+  report.json    per-stage timings, counts and the collision checks (toolpath.collision_free)
 Open them in ParaView:  paraview $root/out/toolpath.pvd   (press Play)
 or load the filters into ParaView (Tools > Manage Plugins > Load New):
   $root/build/lib/paraview-5.11/plugins/GeoLattice/GeoLattice.so
