@@ -5,7 +5,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh"
-"$root/build/bin/geolattice" run "$root/testdata/bunny.obj" --fit-size 80 --base-tolerance 1 -o "$root/out"
+"$root/build/bin/geolattice" run "$root/testdata/bunny.obj" --fit-size 80 -o "$root/out"
 cat <<MSG
 
 Done. Outputs are in $root/out:
