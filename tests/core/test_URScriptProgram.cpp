@@ -12,6 +12,7 @@
 #include "slicer/CurvedLayerSlicer.h"
 #include "tetrahedralize/SurfaceTetrahedralizer.h"
 #include "toolpath/ToolpathPlanner.h"
+#include "../common/URScriptSyntax.h"
 
 #include <gtest/gtest.h>
 
@@ -43,49 +44,6 @@ const Toolpath& yToolpath() {
   return path;
 }
 
-/// The syntax rules every generated file must satisfy.
-void checkSyntax(const std::string& text, size_t maxLine) {
-  std::istringstream in(text);
-  std::string line;
-  int depth = 0, defs = 0;
-  const std::regex number("-?[0-9]+(\\.[0-9]{1,6})?");
-  const std::regex pose("p\\[([^\\]]*)\\]");
-  while (std::getline(in, line)) {
-    ASSERT_LE(line.size(), maxLine) << line;
-    if (line.rfind("def ", 0) == 0) {
-      ++depth;
-      ++defs;
-      ASSERT_TRUE(std::regex_match(line, std::regex("def [a-z_0-9]+\\(\\):"))) << line;
-    } else if (line == "end") {
-      --depth;
-      ASSERT_GE(depth, 0);
-    } else if (!line.empty()) {
-      ASSERT_EQ(line.rfind("  ", 0), 0u) << "statements are inside the def: " << line;
-    }
-    for (std::sregex_iterator it(line.begin(), line.end(), pose), end; it != end; ++it) {
-      std::stringstream parts((*it)[1].str());
-      std::string part;
-      int count = 0;
-      while (std::getline(parts, part, ',')) {
-        part.erase(0, part.find_first_not_of(' '));
-        ASSERT_TRUE(std::regex_match(part, number)) << "bad number '" << part << "' in " << line;
-        ++count;
-      }
-      ASSERT_EQ(count, 6) << line;
-    }
-    for (const char* key : {"t=", "r="}) {
-      const size_t at = line.find(key);
-      if (at != std::string::npos) {
-        std::string v = line.substr(at + 2);
-        v = v.substr(0, v.find_first_of(",)"));
-        ASSERT_TRUE(std::regex_match(v, number)) << line;
-      }
-    }
-  }
-  EXPECT_EQ(depth, 0);
-  EXPECT_EQ(defs, 1);
-}
-
 } // namespace
 
 TEST(URScriptProgram, YPartInTheUr5Cell) {
@@ -110,7 +68,7 @@ TEST(URScriptProgram, YPartInTheUr5Cell) {
   for (size_t k = 0; k < stats.files; ++k) {
     const std::string text = files[k].str();
     EXPECT_LE(text.size(), o.maxFileBytes);
-    checkSyntax(text, 1000);
+    checkURScriptSyntax(text, "", 1000);
     // A file other than the first starts right after an air move's first point.
     for (size_t at = text.find("movel("); at != std::string::npos; at = text.find("movel(", at + 1)) ++movels;
   }

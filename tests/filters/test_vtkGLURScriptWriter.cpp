@@ -9,6 +9,7 @@
 #include "GLTestYPipeline.h"
 #include "GLTestFiles.h"
 #include "GLTestToolpath.h"
+#include "../common/URScriptSyntax.h"
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLCurvedLayerSlicer.h"
@@ -44,63 +45,6 @@
 #include <vector>
 
 namespace fs = std::filesystem;
-
-namespace {
-
-/// The URScript rules every file must satisfy; returns the number of movel commands.
-size_t checkSyntax(const std::string& text, const std::string& defName, size_t maxLine) {
-  std::istringstream in(text);
-  std::string line;
-  int depth = 0, defs = 0;
-  size_t movels = 0;
-  const std::regex number("-?[0-9]+(\\.[0-9]{1,6})?");
-  const std::regex pose("p\\[([^\\]]*)\\]");
-  bool first = true;
-  while (std::getline(in, line)) {
-    EXPECT_LE(line.size(), maxLine) << line;
-    if (first) {
-      EXPECT_EQ(line, "def " + defName + "():");
-      first = false;
-    }
-    if (line.rfind("def ", 0) == 0) {
-      ++depth;
-      ++defs;
-      EXPECT_TRUE(std::regex_match(line, std::regex("def [a-z][a-z_0-9]*\\(\\):"))) << line;
-    } else if (line == "end") {
-      --depth;
-      EXPECT_GE(depth, 0);
-    } else if (!line.empty()) {
-      EXPECT_EQ(line.rfind("  ", 0), 0u) << "statements are inside the def: " << line;
-      EXPECT_EQ(depth, 1) << line;
-    }
-    for (std::sregex_iterator it(line.begin(), line.end(), pose), end; it != end; ++it) {
-      std::stringstream parts((*it)[1].str());
-      std::string part;
-      int count = 0;
-      while (std::getline(parts, part, ',')) {
-        part.erase(0, part.find_first_not_of(' '));
-        EXPECT_TRUE(std::regex_match(part, number)) << "bad number '" << part << "' in " << line;
-        ++count;
-      }
-      EXPECT_EQ(count, 6) << line;
-    }
-    for (const char* key : {"t=", "r="}) {
-      const size_t at = line.find(key);
-      if (at != std::string::npos) {
-        std::string v = line.substr(at + 2);
-        v = v.substr(0, v.find_first_of(",)"));
-        EXPECT_TRUE(std::regex_match(v, number)) << line;
-      }
-    }
-    movels += line.rfind("  movel(", 0) == 0;
-  }
-  EXPECT_EQ(depth, 0);
-  EXPECT_EQ(defs, 1);
-  EXPECT_EQ(text.substr(text.size() - 4), "end\n");
-  return movels;
-}
-
-} // namespace
 
 TEST(vtkGLURScriptWriter, FileAndProgramNames) {
   EXPECT_EQ(vtkGLURScriptWriter::ProgramFileName("/a/b/part.script", 0), "/a/b/part.script");
@@ -157,7 +101,7 @@ TEST(vtkGLURScriptWriter, SmallToolpathInOneFile) {
   EXPECT_GE(w->GetIKBranch(), 0);
   EXPECT_GT(w->GetDuration(), 0.0);
   const std::string text = glReadFile(file);
-  EXPECT_EQ(checkSyntax(text, "small", 1000), static_cast<size_t>(w->GetNumberOfMoves()));
+  EXPECT_EQ(checkURScriptSyntax(text, "small", 1000), static_cast<size_t>(w->GetNumberOfMoves()));
   EXPECT_NE(text.find("set_tcp(p[0, 0, 0.04, 0, 0, 0])"), std::string::npos);
   EXPECT_NE(text.find("set_standard_analog_out(0, "), std::string::npos);
 }
@@ -224,7 +168,7 @@ TEST_F(BranchingYProgram, SplitProgramPassesTheSyntaxCheck) {
     expected.push_back(name);
     const std::string text = glReadFile(w->GetFileWritten(k));
     EXPECT_LE(text.size(), 100000u) << name;
-    movels += checkSyntax(text, k == 0 ? "y_part" : "y_part_" + std::to_string(k),
+    movels += checkURScriptSyntax(text, k == 0 ? "y_part" : "y_part_" + std::to_string(k),
                           static_cast<size_t>(w->GetMaxLineLength()));
     // Every file sets the TCP and the analog output, and starts from a joint position.
     EXPECT_NE(text.find("  set_tcp(p[0, 0, 0.04, 0, 0, 0])\n"), std::string::npos) << name;
@@ -241,7 +185,7 @@ TEST_F(BranchingYProgram, SplitProgramPassesTheSyntaxCheck) {
   ASSERT_EQ(w->Write(), 1) << errors->Errors();
   EXPECT_EQ(w->GetNumberOfFilesWritten(), 1);
   EXPECT_EQ(glListDirectory(dir), (std::vector<std::string>{"y_part.script", "y_part_notes.txt"}));
-  EXPECT_EQ(checkSyntax(glReadFile(file), "y_part", 1000), static_cast<size_t>(N - 1));
+  EXPECT_EQ(checkURScriptSyntax(glReadFile(file), "y_part", 1000), static_cast<size_t>(N - 1));
 
   // A joint step bound the path cannot keep (below the Y's largest step even after refinement):
   // an error naming the point, the earlier program stays as it was.
@@ -436,7 +380,7 @@ TEST(vtkGLURScriptWriter, UnreachablePointsAreReportedNotSkipped) {
     EXPECT_NE(c.errors->Warnings().find("2 of 2000 toolpath points are unreachable"), std::string::npos);
     EXPECT_EQ(c.writer->GetUnreachableCount(), 2);
     ASSERT_EQ(c.writer->GetNumberOfFilesWritten(), 1);
-    EXPECT_EQ(checkSyntax(glReadFile(c.writer->GetFileWritten(0)), "part", 1000), 1999u);
+    EXPECT_EQ(checkURScriptSyntax(glReadFile(c.writer->GetFileWritten(0)), "part", 1000), 1999u);
   }
 }
 
