@@ -22,7 +22,8 @@ double parseNumber(const std::string& flag, const std::string& text);
 
 /// Parses `count` comma-separated finite numbers (e.g. X,Y,Z) or throws UsageError naming the
 /// flag and `form` ("X,Y,Z").
-std::vector<double> parseNumbers(const std::string& flag, const std::string& text, size_t count, const char* form);
+std::vector<double> parseNumbers(const std::string& flag, const std::string& text, size_t count,
+                                 const char* form);
 
 /// @brief Nozzle model and material sampling (core/sequence/NozzleModel.h); 0 length = cone only.
 struct NozzleOptions {
@@ -116,19 +117,19 @@ struct ToolpathCliOptions {
 /// options (vtkGLURScriptWriter), the 5-axis G-code (vtkGLGCodeWriter) and its machine.
 struct ProgramCliOptions {
   std::string robot = "ur5";
-  double nozzleTip[3] = {0.0, -0.40, 0.30};        ///< m, robot base frame
+  double nozzleTip[3] = {0.0, -0.40, 0.30};  ///< m, robot base frame
   double nozzleAxis[3] = {0.0, 0.0, 1.0};
   double partOnFlange[6] = {0.0, 0.0, 0.04, 0.0, 0.0, 0.0};  ///< URScript pose (m, rad)
   double maxScriptBytes = 4000000;
   double speedFactor = 0.5;
-  double maxFilamentRate = 5.0;                    ///< mm/s of filament at 10 V
-  double maxBlend = 0.0005;                        ///< m
-  double maxJointStep = 20.0;                      ///< degrees
+  double maxFilamentRate = 5.0;  ///< mm/s of filament at 10 V
+  double maxBlend = 0.0005;      ///< m
+  double maxJointStep = 20.0;    ///< degrees
   bool allowUnreachable = false;
-  std::string gcode = "ac";                        ///< ac | bc | none
-  double gcodePivot[3] = {0.0, 0.0, 0.0};          ///< mm
-  double gcodeOffset[3] = {0.0, 0.0, 0.0};         ///< mm
-  double tiltLimits[2] = {-120.0, 120.0};          ///< degrees
+  std::string gcode = "ac";                 ///< ac | bc | none
+  double gcodePivot[3] = {0.0, 0.0, 0.0};   ///< mm
+  double gcodeOffset[3] = {0.0, 0.0, 0.0};  ///< mm
+  double tiltLimits[2] = {-120.0, 120.0};   ///< degrees
 
   /// Consumes --robot (ur5 | ur5e), --nozzle-tip X,Y,Z, --nozzle-axis X,Y,Z, --part-offset Z,
   /// --part-on-flange X,Y,Z,RX,RY,RZ (not both of these two), --max-script-bytes (a whole number
@@ -170,4 +171,4 @@ private:
   bool partOffsetGiven = false, partOnFlangeGiven = false;
 };
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -12,17 +12,14 @@
 namespace geolattice {
 
 /// Captures the first error an algorithm reports (instead of VTK's multi-line console text).
-class ErrorCapture
-{
+class ErrorCapture {
 public:
-  void Watch(vtkObject* object)
-  {
+  void Watch(vtkObject* object) {
     vtkNew<vtkCallbackCommand> cb;
     cb->SetClientData(this);
     cb->SetCallback([](vtkObject*, unsigned long, void* self, void* callData) {
       auto* me = static_cast<ErrorCapture*>(self);
-      if (me->Message.empty() && callData)
-      {
+      if (me->Message.empty() && callData) {
         me->Message = Clean(static_cast<const char*>(callData));
       }
     });
@@ -32,21 +29,16 @@ public:
 
 private:
   // "ERROR: In file, line N\nvtkClass (0x...): text\n\n" -> "text"
-  static std::string Clean(std::string text)
-  {
+  static std::string Clean(std::string text) {
     const size_t paren = text.find("): ");
-    if (paren != std::string::npos)
-    {
+    if (paren != std::string::npos) {
       text = text.substr(paren + 3);
     }
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    {
+    while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) {
       text.pop_back();
     }
-    for (char& c : text)
-    {
-      if (c == '\n')
-      {
+    for (char& c : text) {
+      if (c == '\n') {
         c = ' ';
       }
     }
@@ -54,4 +46,4 @@ private:
   }
 };
 
-} // namespace geolattice
+}  // namespace geolattice

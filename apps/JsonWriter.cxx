@@ -9,23 +9,33 @@ namespace geolattice {
 namespace {
 std::string number(double v) {
   if (!std::isfinite(v)) {
-    return "null"; // JSON has no NaN/Inf
+    return "null";  // JSON has no NaN/Inf
   }
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.10g", v);
   return buf;
 }
-} // namespace
+}  // namespace
 
 std::string jsonQuote(const std::string& text) {
   std::string out = "\"";
   for (unsigned char c : text) {
     switch (c) {
-      case '"': out += "\\\""; break;
-      case '\\': out += "\\\\"; break;
-      case '\n': out += "\\n"; break;
-      case '\t': out += "\\t"; break;
-      case '\r': out += "\\r"; break;
+      case '"':
+        out += "\\\"";
+        break;
+      case '\\':
+        out += "\\\\";
+        break;
+      case '\n':
+        out += "\\n";
+        break;
+      case '\t':
+        out += "\\t";
+        break;
+      case '\r':
+        out += "\\r";
+        break;
       default:
         if (c < 0x20) {
           char buf[8];
@@ -103,4 +113,4 @@ void JsonObject::write(std::ostream& os, int indent) const {
   os << (entries_.empty() ? "" : "\n") << std::string(static_cast<size_t>(indent), ' ') << "}";
 }
 
-} // namespace geolattice
+}  // namespace geolattice

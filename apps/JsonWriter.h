@@ -17,10 +17,14 @@ class JsonObject {
 public:
   JsonObject& set(const std::string& key, double value);
   JsonObject& set(const std::string& key, long long value);
-  JsonObject& set(const std::string& key, int value) { return set(key, static_cast<long long>(value)); }
+  JsonObject& set(const std::string& key, int value) {
+    return set(key, static_cast<long long>(value));
+  }
   JsonObject& set(const std::string& key, bool value);
   JsonObject& set(const std::string& key, const std::string& value);
-  JsonObject& set(const std::string& key, const char* value) { return set(key, std::string(value)); }
+  JsonObject& set(const std::string& key, const char* value) {
+    return set(key, std::string(value));
+  }
   JsonObject& set(const std::string& key, const std::vector<double>& values);
   JsonObject& set(const std::string& key, const std::vector<std::string>& values);
   /// The nested object under key (created if missing).
@@ -30,8 +34,8 @@ public:
 
 private:
   struct Value {
-    std::string literal;                  // already-encoded JSON text, or empty for an object
-    std::unique_ptr<JsonObject> object;   // non-null for a nested object
+    std::string literal;                 // already-encoded JSON text, or empty for an object
+    std::unique_ptr<JsonObject> object;  // non-null for a nested object
   };
   Value& slot(const std::string& key);
   std::vector<std::pair<std::string, Value>> entries_;
@@ -40,4 +44,4 @@ private:
 /// JSON string literal with escapes.
 std::string jsonQuote(const std::string& text);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -22,9 +22,11 @@ void prepareOutputDirectory(const std::string& dir) {
   std::error_code ec;
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir)) {
-    throw GeoLatticeError("cannot create output directory " + dir + (ec ? ": " + ec.message() : ""));
+    throw GeoLatticeError("cannot create output directory " + dir +
+                          (ec ? ": " + ec.message() : ""));
   }
-  const std::string probe = (fs::path(dir) / (".geolattice-write-test-" + std::to_string(::getpid()))).string();
+  const std::string probe =
+      (fs::path(dir) / (".geolattice-write-test-" + std::to_string(::getpid()))).string();
   {
     std::ofstream out(probe);
     if (!out) {
@@ -34,10 +36,12 @@ void prepareOutputDirectory(const std::string& dir) {
   fs::remove(probe, ec);
 }
 
-void writeAtomically(const std::string& path, const std::function<bool(const std::string&)>& write) {
+void writeAtomically(const std::string& path,
+                     const std::function<bool(const std::string&)>& write) {
   const fs::path target(path);
-  const std::string tmp =
-    (target.parent_path() / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()))).string();
+  const std::string tmp = (target.parent_path() / ("." + target.filename().string() + ".tmp-" +
+                                                   std::to_string(::getpid())))
+                              .string();
   bool ok = false;
   try {
     ok = write(tmp);
@@ -73,8 +77,9 @@ void writeVtkXml(vtkDataObject* data, const std::string& path) {
       writer->SetFileName(tmp.c_str());
       return writer->Write() == 1;
     }
-    throw GeoLatticeError("cannot write a " + std::string(data ? data->GetClassName() : "null") + " to " + tmp);
+    throw GeoLatticeError("cannot write a " + std::string(data ? data->GetClassName() : "null") +
+                          " to " + tmp);
   });
 }
 
-} // namespace geolattice
+}  // namespace geolattice

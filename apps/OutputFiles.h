@@ -15,7 +15,8 @@ void prepareOutputDirectory(const std::string& dir);
 
 /// Calls write(tmpPath) and renames tmpPath to path on success; removes tmpPath and throws
 /// GeoLatticeError on failure (write returns false or throws).
-void writeAtomically(const std::string& path, const std::function<bool(const std::string& tmpPath)>& write);
+void writeAtomically(const std::string& path,
+                     const std::function<bool(const std::string& tmpPath)>& write);
 
 /// VTK XML file (.vtu/.vtp by data type) in binary inline mode (appended mode is unreadable
 /// by Debian 12's ParaView 5.11, see docs/design.md), LZ4-compressed: VTK's default zlib
@@ -23,4 +24,4 @@ void writeAtomically(const std::string& path, const std::function<bool(const std
 /// ~20% larger files (docs/scale-run.md). VTK and ParaView read both.
 void writeVtkXml(vtkDataObject* data, const std::string& path);
 
-} // namespace geolattice
+}  // namespace geolattice

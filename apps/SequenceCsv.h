@@ -15,11 +15,12 @@ namespace geolattice {
 /// vtkGLPrintSequencer's outputs (SequenceOrder, SequenceStart, SequenceEnd, SubgraphLayer) and
 /// the Retraction cell array of its Print Order output. Written atomically; throws
 /// GeoLatticeError on missing arrays or a write failure.
-void writeSequenceCsv(vtkPolyData* sequencedLattice, vtkPolyData* printOrder, const std::string& path);
+void writeSequenceCsv(vtkPolyData* sequencedLattice, vtkPolyData* printOrder,
+                      const std::string& path);
 
 /// Adds collision_free (strict: no earlier material inside the nozzle anywhere),
 /// order_collision_free (apart from obstacles no order can avoid), violating_stations,
 /// unavoidable_stations and stations from vtkGLCollisionVerifier's field data.
 void reportCollisions(vtkDataObject* verifierOutput, JsonObject& section);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -23,56 +23,48 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kReplayPointBudget = 2e6; // points in all step files together (~70 bytes each on disk)
+constexpr double kReplayPointBudget =
+    2e6;  // points in all step files together (~70 bytes each on disk)
 
-double fieldNumber(vtkDataObject* data, const char* name, int component = 0)
-{
+double fieldNumber(vtkDataObject* data, const char* name, int component = 0) {
   vtkDataArray* a = vtkDataArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
-  if (!a || a->GetNumberOfValues() <= component)
-  {
+  if (!a || a->GetNumberOfValues() <= component) {
     throw GeoLatticeError(std::string("toolpath output has no field array ") + name);
   }
-  return a->GetComponent(component / a->GetNumberOfComponents(), component % a->GetNumberOfComponents());
+  return a->GetComponent(component / a->GetNumberOfComponents(),
+                         component % a->GetNumberOfComponents());
 }
 
-std::string stepName(int k)
-{
+std::string stepName(int k) {
   char name[32];
   std::snprintf(name, sizeof name, "step_%04d.vtp", k);
   return name;
 }
 
 /// Removes OUTDIR/toolpath/step_NNNN.vtp with NNNN > keep.
-void removeStaleSteps(const fs::path& dir, int keep)
-{
+void removeStaleSteps(const fs::path& dir, int keep) {
   std::error_code ec;
-  if (!fs::is_directory(dir, ec))
-  {
+  if (!fs::is_directory(dir, ec)) {
     return;
   }
   const std::regex pattern("step_([0-9]{4})\\.vtp");
   std::vector<fs::path> stale;
-  for (const auto& entry : fs::directory_iterator(dir, ec))
-  {
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
     std::smatch m;
     const std::string name = entry.path().filename().string();
-    if (std::regex_match(name, m, pattern) && std::stoi(m[1]) > keep)
-    {
+    if (std::regex_match(name, m, pattern) && std::stoi(m[1]) > keep) {
       stale.push_back(entry.path());
     }
   }
-  for (const fs::path& p : stale)
-  {
+  for (const fs::path& p : stale) {
     fs::remove(p, ec);
   }
 }
 
-} // namespace
+}  // namespace
 
-int replayStepCount(long long points, int maxSteps)
-{
-  if (maxSteps <= 0)
-  {
+int replayStepCount(long long points, int maxSteps) {
+  if (maxSteps <= 0) {
     return 0;
   }
   // Σ_{k=1..S} (k / S) N = N (S + 1) / 2 points in all step files.
@@ -80,13 +72,12 @@ int replayStepCount(long long points, int maxSteps)
   return std::max(1, std::min(maxSteps, static_cast<int>(std::floor(fit))));
 }
 
-std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner, const std::string& outDir, int steps)
-{
+std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner,
+                                             const std::string& outDir, int steps) {
   const fs::path dir = fs::path(outDir) / "toolpath";
   const fs::path pvd = fs::path(outDir) / "toolpath.pvd";
   std::vector<std::string> written;
-  if (steps <= 0)
-  {
+  if (steps <= 0) {
     std::error_code ec;
     fs::remove(pvd, ec);
     removeStaleSteps(dir, 0);
@@ -94,13 +85,11 @@ std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner, cons
   }
   prepareOutputDirectory(dir.string());
   std::vector<double> times;
-  for (int k = 1; k <= steps; ++k)
-  {
+  for (int k = 1; k <= steps; ++k) {
     const double p = k == steps ? 1.0 : static_cast<double>(k) / steps;
     planner->UpdateTimeStep(p);
     vtkPolyData* part = planner->GetOutput();
-    if (!part || part->GetNumberOfPoints() == 0)
-    {
+    if (!part || part->GetNumberOfPoints() == 0) {
       throw GeoLatticeError("toolpath: replay step " + std::to_string(k) + " is empty");
     }
     writeVtkXml(part, (dir / stepName(k)).string());
@@ -109,14 +98,14 @@ std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner, cons
   writeAtomically(pvd.string(), [&](const std::string& tmp) {
     std::ofstream out(tmp);
     out << "<?xml version=\"1.0\"?>\n"
-        << "<!-- GeoLattice print replay: step k holds the toolpath printed up to progress k / " << steps
-        << " (by point count) -->\n"
-        << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  <Collection>\n"
+        << "<!-- GeoLattice print replay: step k holds the toolpath printed up to progress k / "
+        << steps << " (by point count) -->\n"
+        << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  "
+           "<Collection>\n"
         << std::setprecision(10);
-    for (int k = 1; k <= steps; ++k)
-    {
-      out << "    <DataSet timestep=\"" << times[k - 1] << "\" group=\"\" part=\"0\" file=\"toolpath/" << stepName(k)
-          << "\"/>\n";
+    for (int k = 1; k <= steps; ++k) {
+      out << "    <DataSet timestep=\"" << times[k - 1]
+          << "\" group=\"\" part=\"0\" file=\"toolpath/" << stepName(k) << "\"/>\n";
     }
     out << "  </Collection>\n</VTKFile>\n";
     return static_cast<bool>(out);
@@ -127,9 +116,10 @@ std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner, cons
   return written;
 }
 
-void reportToolpath(vtkDataObject* toolpath, JsonObject& s)
-{
-  auto count = [toolpath](const char* name) { return static_cast<long long>(fieldNumber(toolpath, name)); };
+void reportToolpath(vtkDataObject* toolpath, JsonObject& s) {
+  auto count = [toolpath](const char* name) {
+    return static_cast<long long>(fieldNumber(toolpath, name));
+  };
   vtkPolyData* poly = vtkPolyData::SafeDownCast(toolpath);
   s.set("points", static_cast<long long>(poly ? poly->GetNumberOfPoints() : 0));
   s.set("cells", static_cast<long long>(poly ? poly->GetNumberOfCells() : 0));
@@ -161,4 +151,4 @@ void reportToolpath(vtkDataObject* toolpath, JsonObject& s)
   s.set("planning_seconds", fieldNumber(toolpath, arrays::ToolpathSeconds));
 }
 
-} // namespace geolattice
+}  // namespace geolattice

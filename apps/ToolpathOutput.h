@@ -35,7 +35,8 @@ int replayStepCount(long long points, int maxSteps);
 /// and all step files. The planner must have been updated without a time (whole path) before;
 /// it is left at time 1 (the whole path). Returns the paths written (the steps as one pattern).
 /// Throws GeoLatticeError on a write failure or an empty step.
-std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner, const std::string& outDir, int steps);
+std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner,
+                                             const std::string& outDir, int steps);
 
 /// Adds points, cells and the planner's field data to the report section: print_length_mm,
 /// perimeter_length_mm, air_length_mm, retractions, tours, crossings, split_subgraphs,
@@ -44,4 +45,4 @@ std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner, cons
 /// filament_mm, volume_mm3, planning_seconds.
 void reportToolpath(vtkDataObject* toolpath, JsonObject& section);
 
-} // namespace geolattice
+}  // namespace geolattice

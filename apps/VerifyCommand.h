@@ -10,4 +10,4 @@ namespace geolattice {
 /// GeoLatticeError), 2 usage (throws UsageError).
 int runVerifyCommand(int argc, char** argv);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -60,13 +60,17 @@ namespace {
 namespace gl = geolattice;
 using Clock = std::chrono::steady_clock;
 
-constexpr const char* kStages[] = { "mesh", "gdf", "layers", "lattice", "sequence", "toolpath", "program" };
-constexpr const char* kScriptFile = "print_part.script"; // + print_part_1.script, ... when split
+constexpr const char* kStages[] = {"mesh",     "gdf",      "layers", "lattice",
+                                   "sequence", "toolpath", "program"};
+constexpr const char* kScriptFile = "print_part.script";  // + print_part_1.script, ... when split
 constexpr const char* kGCodeFile = "toolpath.gcode";
 constexpr const char* kWaypointFile = "waypoints.csv";
-constexpr const char* kStrategies[] = { "lpt", "dpt", "a4", "best" }; // = vtkGLPrintSequencer::Strategy 0..3
+constexpr const char* kStrategies[] = {"lpt", "dpt", "a4",
+                                       "best"};  // = vtkGLPrintSequencer::Strategy 0..3
 
-const char* kUsage = R"(geolattice - multi-axis support-free printing with lattice infill (GeoLattice )" GEOLATTICE_VERSION R"()
+const char* kUsage =
+    R"(geolattice - multi-axis support-free printing with lattice infill (GeoLattice )" GEOLATTICE_VERSION
+    R"()
 
 Usage:
   geolattice run MODEL -o OUTDIR [options]
@@ -204,13 +208,13 @@ struct Options {
   double baseTolerance = 0.05;
   double baseAngle = 10.0;
   double timeFactor = 4.0;
-  double reference[3] = { 1, 0, 0 };
+  double reference[3] = {1, 0, 0};
   std::string solver = "cholmod";
   double layerInterval = 0.6;
-  double firstLayer = -1; // < 0: equal to layerInterval
+  double firstLayer = -1;  // < 0: equal to layerInterval
   double overhangThreshold = 135.0;
   double latticeWidth = 4.0;
-  double alphaWidth = -1; // < 0: latticeWidth
+  double alphaWidth = -1;  // < 0: latticeWidth
   double betaWidth = -1;
   double alphaPhase = 0;
   double betaPhase = 0;
@@ -222,116 +226,125 @@ struct Options {
   bool quiet = false;
 };
 
-using geolattice::UsageError;
 using geolattice::parseNumber;
+using geolattice::UsageError;
 
-
-Options parseArguments(int argc, char** argv)
-{
+Options parseArguments(int argc, char** argv) {
   Options o;
-  if (argc < 2)
-  {
+  if (argc < 2) {
     throw UsageError("missing command (try --help)");
   }
   const std::string command = argv[1];
-  if (command != "run")
-  {
+  if (command != "run") {
     throw UsageError("unknown command '" + command + "' (try --help)");
   }
-  for (int i = 2; i < argc; ++i)
-  {
+  for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
     auto value = [&]() -> std::string {
-      if (i + 1 >= argc)
-      {
+      if (i + 1 >= argc) {
         throw UsageError(arg + " needs a value");
       }
       return argv[++i];
     };
-    if (arg == "-o" || arg == "--output") o.outDir = value();
-    else if (arg == "--until") o.until = value();
-    else if (arg == "--scale") o.scale = parseNumber(arg, value());
-    else if (arg == "--fit-size") o.fitSize = parseNumber(arg, value());
-    else if (arg == "--no-center") o.center = false;
-    else if (arg == "--edge-length") o.edgeLength = parseNumber(arg, value());
-    else if (arg == "--target-tets") o.targetTets = parseNumber(arg, value());
-    else if (arg == "--radius-edge") o.radiusEdge = parseNumber(arg, value());
-    else if (arg == "--base") o.base = value();
-    else if (arg == "--base-tolerance") o.baseTolerance = parseNumber(arg, value());
-    else if (arg == "--base-angle") o.baseAngle = parseNumber(arg, value());
-    else if (arg == "--time-factor") o.timeFactor = parseNumber(arg, value());
-    else if (arg == "--reference")
-    {
+    if (arg == "-o" || arg == "--output")
+      o.outDir = value();
+    else if (arg == "--until")
+      o.until = value();
+    else if (arg == "--scale")
+      o.scale = parseNumber(arg, value());
+    else if (arg == "--fit-size")
+      o.fitSize = parseNumber(arg, value());
+    else if (arg == "--no-center")
+      o.center = false;
+    else if (arg == "--edge-length")
+      o.edgeLength = parseNumber(arg, value());
+    else if (arg == "--target-tets")
+      o.targetTets = parseNumber(arg, value());
+    else if (arg == "--radius-edge")
+      o.radiusEdge = parseNumber(arg, value());
+    else if (arg == "--base")
+      o.base = value();
+    else if (arg == "--base-tolerance")
+      o.baseTolerance = parseNumber(arg, value());
+    else if (arg == "--base-angle")
+      o.baseAngle = parseNumber(arg, value());
+    else if (arg == "--time-factor")
+      o.timeFactor = parseNumber(arg, value());
+    else if (arg == "--reference") {
       std::stringstream ss(value());
       std::string part;
       int k = 0;
-      while (std::getline(ss, part, ','))
-      {
-        if (k == 3)
-        {
+      while (std::getline(ss, part, ',')) {
+        if (k == 3) {
           throw UsageError("--reference expects X,Y,Z");
         }
         o.reference[k++] = parseNumber("--reference", part);
       }
-      if (k != 3)
-      {
+      if (k != 3) {
         throw UsageError("--reference expects X,Y,Z");
       }
-    }
-    else if (arg == "--solver") o.solver = value();
-    else if (arg == "--layer-interval") o.layerInterval = parseNumber(arg, value());
-    else if (arg == "--first-layer") o.firstLayer = parseNumber(arg, value());
-    else if (arg == "--overhang-threshold") o.overhangThreshold = parseNumber(arg, value());
-    else if (arg == "--lattice-width") o.latticeWidth = parseNumber(arg, value());
-    else if (arg == "--alpha-width") o.alphaWidth = parseNumber(arg, value());
-    else if (arg == "--beta-width") o.betaWidth = parseNumber(arg, value());
-    else if (arg == "--alpha-phase") o.alphaPhase = parseNumber(arg, value());
-    else if (arg == "--beta-phase") o.betaPhase = parseNumber(arg, value());
-    else if (arg == "--min-subgraph") o.minSubgraph = parseNumber(arg, value());
-    else if (arg == "--strategy") o.strategy = value();
-    else if (o.nozzle.parse(arg, value)) {}
-    else if (o.toolpath.parse(arg, value)) {}
-    else if (o.program.parse(arg, value)) {}
-    else if (arg == "-q" || arg == "--quiet") o.quiet = true;
-    else if (!arg.empty() && arg[0] == '-') throw UsageError("unknown option " + arg);
-    else if (o.model.empty()) o.model = arg;
-    else throw UsageError("unexpected argument '" + arg + "'");
+    } else if (arg == "--solver")
+      o.solver = value();
+    else if (arg == "--layer-interval")
+      o.layerInterval = parseNumber(arg, value());
+    else if (arg == "--first-layer")
+      o.firstLayer = parseNumber(arg, value());
+    else if (arg == "--overhang-threshold")
+      o.overhangThreshold = parseNumber(arg, value());
+    else if (arg == "--lattice-width")
+      o.latticeWidth = parseNumber(arg, value());
+    else if (arg == "--alpha-width")
+      o.alphaWidth = parseNumber(arg, value());
+    else if (arg == "--beta-width")
+      o.betaWidth = parseNumber(arg, value());
+    else if (arg == "--alpha-phase")
+      o.alphaPhase = parseNumber(arg, value());
+    else if (arg == "--beta-phase")
+      o.betaPhase = parseNumber(arg, value());
+    else if (arg == "--min-subgraph")
+      o.minSubgraph = parseNumber(arg, value());
+    else if (arg == "--strategy")
+      o.strategy = value();
+    else if (o.nozzle.parse(arg, value)) {
+    } else if (o.toolpath.parse(arg, value)) {
+    } else if (o.program.parse(arg, value)) {
+    } else if (arg == "-q" || arg == "--quiet")
+      o.quiet = true;
+    else if (!arg.empty() && arg[0] == '-')
+      throw UsageError("unknown option " + arg);
+    else if (o.model.empty())
+      o.model = arg;
+    else
+      throw UsageError("unexpected argument '" + arg + "'");
   }
-  if (o.model.empty())
-  {
+  if (o.model.empty()) {
     throw UsageError("missing MODEL");
   }
-  if (o.outDir.empty())
-  {
+  if (o.outDir.empty()) {
     throw UsageError("missing -o OUTDIR");
   }
-  if (std::find(std::begin(kStages), std::end(kStages), o.until) == std::end(kStages))
-  {
+  if (std::find(std::begin(kStages), std::end(kStages), o.until) == std::end(kStages)) {
     throw UsageError(
-      "--until must be one of: mesh, gdf, layers, lattice, sequence, toolpath, program (got '" + o.until + "')");
+        "--until must be one of: mesh, gdf, layers, lattice, sequence, toolpath, program (got '" +
+        o.until + "')");
   }
-  if (std::find(std::begin(kStrategies), std::end(kStrategies), o.strategy) == std::end(kStrategies))
-  {
+  if (std::find(std::begin(kStrategies), std::end(kStrategies), o.strategy) ==
+      std::end(kStrategies)) {
     throw UsageError("--strategy must be one of: lpt, dpt, a4, best (got '" + o.strategy + "')");
   }
-  if (o.base != "lowest" && o.base != "faces")
-  {
+  if (o.base != "lowest" && o.base != "faces") {
     throw UsageError("--base must be lowest or faces (got '" + o.base + "')");
   }
-  if (o.solver != "cholmod" && o.solver != "eigen")
-  {
+  if (o.solver != "cholmod" && o.solver != "eigen") {
     throw UsageError("--solver must be cholmod or eigen (got '" + o.solver + "')");
   }
-  if (o.firstLayer < 0)
-  {
+  if (o.firstLayer < 0) {
     o.firstLayer = o.layerInterval;
   }
-  if (o.alphaWidth < 0)
-  {
+  if (o.alphaWidth < 0) {
     o.alphaWidth = o.latticeWidth;
   }
-  if (o.betaWidth < 0)
-  {
+  if (o.betaWidth < 0) {
     o.betaWidth = o.latticeWidth;
   }
   // Parameter ranges are checked by the filters themselves, with the same messages as in ParaView.
@@ -339,8 +352,7 @@ Options parseArguments(int argc, char** argv)
 }
 
 /// Swallows VTK's console output; the messages that matter reach the CLI through ErrorCapture.
-class SilentOutputWindow : public vtkOutputWindow
-{
+class SilentOutputWindow : public vtkOutputWindow {
 public:
   static SilentOutputWindow* New() { return new SilentOutputWindow; }
   vtkTypeMacro(SilentOutputWindow, vtkOutputWindow);
@@ -349,30 +361,24 @@ public:
 
 /// While alive, prints " 25%", " 50%", " 75%" on the current stage line as the progress events of
 /// `algorithm` pass them (the long stages; nothing when disabled, e.g. with -q).
-class ProgressPrinter
-{
+class ProgressPrinter {
 public:
   ProgressPrinter(vtkAlgorithm* algorithm, bool enabled)
-    : Algorithm(enabled ? algorithm : nullptr)
-  {
-    if (this->Algorithm)
-    {
+      : Algorithm(enabled ? algorithm : nullptr) {
+    if (this->Algorithm) {
       this->Command->SetClientData(&this->Next);
       this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
         int& next = *static_cast<int*>(client);
         const double p = call ? *static_cast<double*>(call) : 0.0;
-        for (; next <= 3 && p >= 0.25 * next; ++next)
-        {
+        for (; next <= 3 && p >= 0.25 * next; ++next) {
           std::cout << " " << 25 * next << "%" << std::flush;
         }
       });
       this->Tag = this->Algorithm->AddObserver(vtkCommand::ProgressEvent, this->Command);
     }
   }
-  ~ProgressPrinter()
-  {
-    if (this->Algorithm)
-    {
+  ~ProgressPrinter() {
+    if (this->Algorithm) {
       this->Algorithm->RemoveObserver(this->Tag);
     }
   }
@@ -383,31 +389,25 @@ private:
   vtkAlgorithm* Algorithm;
   vtkNew<vtkCallbackCommand> Command;
   unsigned long Tag = 0;
-  int Next = 1; ///< the next quarter to print
+  int Next = 1;  ///< the next quarter to print
 };
 
 /// The stages that can take long enough for a percentage on their line.
-bool isLongStage(const std::string& stage)
-{
-  return stage == "mesh" || stage == "gdf" || stage == "lattice" || stage == "sequence" || stage == "toolpath";
+bool isLongStage(const std::string& stage) {
+  return stage == "mesh" || stage == "gdf" || stage == "lattice" || stage == "sequence" ||
+         stage == "toolpath";
 }
 
-double fieldValue(vtkDataObject* data, const char* name, int component = 0)
-{
+double fieldValue(vtkDataObject* data, const char* name, int component = 0) {
   vtkDataArray* a = vtkDataArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
   return a && a->GetNumberOfTuples() > component ? a->GetTuple1(component) : 0.0;
 }
 
-class Pipeline
-{
+class Pipeline {
 public:
-  explicit Pipeline(const Options& o)
-    : Opt(o)
-  {
-  }
+  explicit Pipeline(const Options& o) : Opt(o) {}
 
-  int Run()
-  {
+  int Run() {
     gl::prepareOutputDirectory(Opt.outDir);
     gl::JsonObject report;
     report.set("geolattice_version", GEOLATTICE_VERSION);
@@ -422,20 +422,23 @@ public:
     place->SetScale(Opt.scale);
     place->SetFitSize(Opt.fitSize);
     place->SetCenterXY(Opt.center);
-    vtkDataObject* placed = this->Execute("input", { reader, place }, place);
+    vtkDataObject* placed = this->Execute("input", {reader, place}, place);
     {
       auto& s = report.object("input");
       s.set("seconds", this->LastSeconds);
       s.set("file", Opt.model);
-      s.set("points", static_cast<long long>(vtkDataSet::SafeDownCast(placed)->GetNumberOfPoints()));
-      s.set(isTetMesh ? "tets" : "triangles", static_cast<long long>(vtkDataSet::SafeDownCast(placed)->GetNumberOfCells()));
+      s.set("points",
+            static_cast<long long>(vtkDataSet::SafeDownCast(placed)->GetNumberOfPoints()));
+      s.set(isTetMesh ? "tets" : "triangles",
+            static_cast<long long>(vtkDataSet::SafeDownCast(placed)->GetNumberOfCells()));
       s.set("scale", fieldValue(placed, gl::arrays::PlacementScale));
-      s.set("translation", std::vector<double>{ fieldValue(placed, gl::arrays::PlacementTranslation, 0),
-                             fieldValue(placed, gl::arrays::PlacementTranslation, 1),
-                             fieldValue(placed, gl::arrays::PlacementTranslation, 2) });
+      s.set("translation",
+            std::vector<double>{fieldValue(placed, gl::arrays::PlacementTranslation, 0),
+                                fieldValue(placed, gl::arrays::PlacementTranslation, 1),
+                                fieldValue(placed, gl::arrays::PlacementTranslation, 2)});
       double b[6];
       vtkDataSet::SafeDownCast(placed)->GetBounds(b);
-      s.set("size_mm", std::vector<double>{ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
+      s.set("size_mm", std::vector<double>{b[1] - b[0], b[3] - b[2], b[5] - b[4]});
     }
 
     // Stage: tetrahedral mesh (skipped for tet-mesh input).
@@ -444,19 +447,16 @@ public:
     {
       auto& s = report.object("mesh");
       vtkDataObject* tets = nullptr;
-      if (isTetMesh)
-      {
+      if (isTetMesh) {
         tets = placed;
         s.set("seconds", 0.0);
         s.set("meshed", false);
-      }
-      else
-      {
+      } else {
         tetrahedralize->SetInputConnection(place->GetOutputPort());
         tetrahedralize->SetTargetEdgeLength(Opt.edgeLength);
         tetrahedralize->SetRadiusEdgeRatio(Opt.radiusEdge);
         tetrahedralize->SetTargetTetCount(static_cast<int>(std::min(Opt.targetTets, 2e9)));
-        tets = this->Execute("mesh", { tetrahedralize }, tetrahedralize);
+        tets = this->Execute("mesh", {tetrahedralize}, tetrahedralize);
         tetSource = tetrahedralize;
         s.set("seconds", this->LastSeconds);
         s.set("meshed", true);
@@ -467,8 +467,7 @@ public:
       s.set("tets", static_cast<long long>(vtkDataSet::SafeDownCast(tets)->GetNumberOfCells()));
       this->Write(tets, "tets.vtu");
     }
-    if (Opt.until == "mesh")
-    {
+    if (Opt.until == "mesh") {
       return this->Finish(report);
     }
 
@@ -482,11 +481,12 @@ public:
     gdf->SetTimeFactor(Opt.timeFactor);
     gdf->SetReferenceVector(Opt.reference);
     gdf->SetUseCholmod(Opt.solver == "cholmod");
-    vtkDataObject* fields = this->Execute("gdf", { gdf }, gdf);
+    vtkDataObject* fields = this->Execute("gdf", {gdf}, gdf);
     {
       auto& s = report.object("gdf");
       s.set("seconds", this->LastSeconds);
-      s.set("points", static_cast<long long>(vtkDataSet::SafeDownCast(fields)->GetNumberOfPoints()));
+      s.set("points",
+            static_cast<long long>(vtkDataSet::SafeDownCast(fields)->GetNumberOfPoints()));
       s.set("tets", static_cast<long long>(vtkDataSet::SafeDownCast(fields)->GetNumberOfCells()));
       s.set("sources", static_cast<long long>(fieldValue(fields, gl::arrays::SourceCount)));
       s.set("gamma_max", fieldValue(fields, gl::arrays::GammaRange, 1));
@@ -495,7 +495,8 @@ public:
       s.set("assembly_seconds", fieldValue(fields, gl::arrays::GdfTimings, 0));
       s.set("factorization_seconds", fieldValue(fields, gl::arrays::GdfTimings, 1));
       s.set("solve_seconds", fieldValue(fields, gl::arrays::GdfTimings, 2));
-      s.set("reference_fallback_tets", static_cast<long long>(fieldValue(fields, gl::arrays::ReferenceFallbackTets)));
+      s.set("reference_fallback_tets",
+            static_cast<long long>(fieldValue(fields, gl::arrays::ReferenceFallbackTets)));
       auto& o = s.object("orthogonality_deviation_deg");
       o.set("alpha_gamma_median", fieldValue(fields, gl::arrays::OrthogonalityDeg, 0));
       o.set("alpha_gamma_p95", fieldValue(fields, gl::arrays::OrthogonalityDeg, 1));
@@ -503,8 +504,7 @@ public:
       o.set("beta_gamma_p95", fieldValue(fields, gl::arrays::OrthogonalityDeg, 3));
       this->Write(fields, "fields.vtu");
     }
-    if (Opt.until == "gdf")
-    {
+    if (Opt.until == "gdf") {
       return this->Finish(report);
     }
 
@@ -513,7 +513,7 @@ public:
     slicer->SetInputConnection(gdf->GetOutputPort());
     slicer->SetLayerInterval(Opt.layerInterval);
     slicer->SetFirstLayerOffset(Opt.firstLayer);
-    vtkDataObject* layers = this->Execute("layers", { slicer }, slicer);
+    vtkDataObject* layers = this->Execute("layers", {slicer}, slicer);
     {
       auto& s = report.object("layers");
       s.set("seconds", this->LastSeconds);
@@ -522,19 +522,20 @@ public:
       s.set("count", static_cast<long long>(count));
       s.set("interval", Opt.layerInterval);
       s.set("first_layer", Opt.firstLayer);
-      s.set("points", static_cast<long long>(vtkDataSet::SafeDownCast(layers)->GetNumberOfPoints()));
-      s.set("triangles", static_cast<long long>(vtkDataSet::SafeDownCast(layers)->GetNumberOfCells()));
+      s.set("points",
+            static_cast<long long>(vtkDataSet::SafeDownCast(layers)->GetNumberOfPoints()));
+      s.set("triangles",
+            static_cast<long long>(vtkDataSet::SafeDownCast(layers)->GetNumberOfCells()));
       double range[2];
       fd->GetArray(gl::arrays::LayerComponents)->GetRange(range);
       s.set("components_max", static_cast<long long>(range[1]));
       auto nanRange = [fd](const char* name, bool wantMin) {
         vtkDataArray* a = fd->GetArray(name);
-        double best = wantMin ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
-        for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i)
-        {
+        double best = wantMin ? std::numeric_limits<double>::infinity()
+                              : -std::numeric_limits<double>::infinity();
+        for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i) {
           const double v = a->GetTuple1(i);
-          if (!std::isnan(v))
-          {
+          if (!std::isnan(v)) {
             best = wantMin ? std::min(best, v) : std::max(best, v);
           }
         }
@@ -552,7 +553,7 @@ public:
     vtkNew<vtkGLOverhangAnalysis> overhang;
     overhang->SetInputConnection(gdf->GetOutputPort());
     overhang->SetThresholdAngle(Opt.overhangThreshold);
-    vtkDataObject* surface = this->Execute("overhang", { overhang }, overhang);
+    vtkDataObject* surface = this->Execute("overhang", {overhang}, overhang);
     {
       auto& s = report.object("overhang");
       s.set("seconds", this->LastSeconds);
@@ -563,8 +564,7 @@ public:
       s.set("base_area_mm2", fieldValue(surface, gl::arrays::OverhangBaseArea));
       this->Write(surface, "overhang.vtp");
     }
-    if (Opt.until == "layers")
-    {
+    if (Opt.until == "layers") {
       return this->Finish(report);
     }
 
@@ -576,13 +576,15 @@ public:
     lattice->SetAlphaPhase(Opt.alphaPhase);
     lattice->SetBetaPhase(Opt.betaPhase);
     lattice->SetMinimumSubgraphLength(Opt.minSubgraph);
-    vtkDataObject* graph = this->Execute("lattice", { lattice }, lattice, /*allowEmpty=*/true);
+    vtkDataObject* graph = this->Execute("lattice", {lattice}, lattice, /*allowEmpty=*/true);
     {
       auto& s = report.object("lattice");
       s.set("seconds", this->LastSeconds);
       s.set("alpha_width", Opt.alphaWidth);
       s.set("beta_width", Opt.betaWidth);
-      auto count = [graph](const char* name) { return static_cast<long long>(fieldValue(graph, name)); };
+      auto count = [graph](const char* name) {
+        return static_cast<long long>(fieldValue(graph, name));
+      };
       s.set("vertices", count(gl::arrays::LatticeVertices));
       s.set("edges", count(gl::arrays::LatticeEdges));
       s.set("subgraphs", count(gl::arrays::LatticeSubgraphs));
@@ -593,8 +595,7 @@ public:
       s.set("irregular_vertices", count(gl::arrays::LatticeIrregularVertices));
       this->Write(graph, "lattice.vtp");
     }
-    if (Opt.until == "lattice")
-    {
+    if (Opt.until == "lattice") {
       return this->Finish(report);
     }
 
@@ -602,54 +603,63 @@ public:
     vtkNew<vtkGLSkeletonTree> skeleton;
     skeleton->SetInputConnection(0, lattice->GetOutputPort());
     skeleton->SetInputConnection(1, gdf->GetOutputPort());
-    vtkDataObject* tree = this->Execute("skeleton", { skeleton }, skeleton);
+    vtkDataObject* tree = this->Execute("skeleton", {skeleton}, skeleton);
     {
       auto& s = report.object("skeleton");
       s.set("seconds", this->LastSeconds);
       s.set("nodes", static_cast<long long>(vtkDataSet::SafeDownCast(tree)->GetNumberOfPoints()));
       s.set("edges", static_cast<long long>(vtkDataSet::SafeDownCast(tree)->GetNumberOfCells()));
       s.set("roots", static_cast<long long>(fieldValue(tree, gl::arrays::SkeletonRoots)));
-      s.set("split_nodes", static_cast<long long>(fieldValue(tree, gl::arrays::SkeletonSplitNodes)));
-      s.set("merge_nodes", static_cast<long long>(fieldValue(tree, gl::arrays::SkeletonMergeNodes)));
-      s.set("floating_nodes", static_cast<long long>(fieldValue(tree, gl::arrays::SkeletonFloatingNodes)));
+      s.set("split_nodes",
+            static_cast<long long>(fieldValue(tree, gl::arrays::SkeletonSplitNodes)));
+      s.set("merge_nodes",
+            static_cast<long long>(fieldValue(tree, gl::arrays::SkeletonMergeNodes)));
+      s.set("floating_nodes",
+            static_cast<long long>(fieldValue(tree, gl::arrays::SkeletonFloatingNodes)));
     }
     vtkNew<vtkGLPrintSequencer> sequencer;
     sequencer->SetInputConnection(0, lattice->GetOutputPort());
     sequencer->SetInputConnection(1, skeleton->GetOutputPort());
-    sequencer->SetStrategy(static_cast<int>(
-      std::find(std::begin(kStrategies), std::end(kStrategies), Opt.strategy) - std::begin(kStrategies)));
+    sequencer->SetStrategy(
+        static_cast<int>(std::find(std::begin(kStrategies), std::end(kStrategies), Opt.strategy) -
+                         std::begin(kStrategies)));
     Opt.nozzle.apply(sequencer.Get());
-    this->Execute("sequence", { sequencer }, sequencer);
+    this->Execute("sequence", {sequencer}, sequencer);
     const double sequenceSeconds = this->LastSeconds;
     vtkDataObject* sequenced = sequencer->GetOutputDataObject(0);
     vtkNew<vtkGLCollisionVerifier> verifier;
     verifier->SetInputConnection(sequencer->GetOutputPort(0));
     Opt.nozzle.apply(verifier.Get());
-    vtkDataObject* collisions = this->Execute("verify", { verifier }, verifier, /*allowEmpty=*/true);
+    vtkDataObject* collisions = this->Execute("verify", {verifier}, verifier, /*allowEmpty=*/true);
     {
       auto& s = report.object("sequence");
       s.set("seconds", sequenceSeconds);
       s.set("verify_seconds", this->LastSeconds);
       s.set("strategy", Opt.strategy);
       Opt.nozzle.report(s);
-      s.set("subgraphs", static_cast<long long>(vtkDataSet::SafeDownCast(tree)->GetNumberOfPoints()));
-      s.set("retractions", static_cast<long long>(fieldValue(sequenced, gl::arrays::SequenceRetractions)));
+      s.set("subgraphs",
+            static_cast<long long>(vtkDataSet::SafeDownCast(tree)->GetNumberOfPoints()));
+      s.set("retractions",
+            static_cast<long long>(fieldValue(sequenced, gl::arrays::SequenceRetractions)));
       s.set("air_length_mm", fieldValue(sequenced, gl::arrays::SequenceAirLength));
-      s.set("pcg_pairs", static_cast<long long>(fieldValue(sequenced, gl::arrays::SequencePcgPairs)));
+      s.set("pcg_pairs",
+            static_cast<long long>(fieldValue(sequenced, gl::arrays::SequencePcgPairs)));
       s.set("pcg_seconds", fieldValue(sequenced, gl::arrays::SequencePcgSeconds));
-      s.set("unavoidable_pcg_pairs", static_cast<long long>(fieldValue(sequenced, gl::arrays::SequenceUnavoidablePairs)));
-      s.set("forced_steps", static_cast<long long>(fieldValue(sequenced, gl::arrays::SequenceForcedSteps)));
+      s.set("unavoidable_pcg_pairs",
+            static_cast<long long>(fieldValue(sequenced, gl::arrays::SequenceUnavoidablePairs)));
+      s.set("forced_steps",
+            static_cast<long long>(fieldValue(sequenced, gl::arrays::SequenceForcedSteps)));
       gl::reportCollisions(collisions, s);
       this->Write(sequenced, "lattice.vtp");
       this->Write(sequencer->GetOutputDataObject(1), "skeleton.vtp");
       this->Write(sequencer->GetOutputDataObject(2), "sequence.vtp");
       this->Write(collisions, "collisions.vtp");
       const std::string csv = (std::filesystem::path(Opt.outDir) / "sequence.csv").string();
-      gl::writeSequenceCsv(vtkPolyData::SafeDownCast(sequenced), vtkPolyData::SafeDownCast(sequencer->GetOutputDataObject(2)), csv);
+      gl::writeSequenceCsv(vtkPolyData::SafeDownCast(sequenced),
+                           vtkPolyData::SafeDownCast(sequencer->GetOutputDataObject(2)), csv);
       this->Written.push_back(csv);
     }
-    if (Opt.until == "sequence")
-    {
+    if (Opt.until == "sequence") {
       return this->Finish(report);
     }
 
@@ -660,14 +670,14 @@ public:
     planner->SetInputConnection(1, sequencer->GetOutputPort(1));
     Opt.toolpath.apply(planner.Get());
     Opt.nozzle.applyNozzle(planner.Get());
-    vtkDataObject* toolpath = this->Execute("toolpath", { planner }, planner);
+    vtkDataObject* toolpath = this->Execute("toolpath", {planner}, planner);
     const double toolpathSeconds = this->LastSeconds;
     vtkNew<vtkGLCollisionVerifier> toolpathVerifier;
     toolpathVerifier->SetInputConnection(planner->GetOutputPort());
     toolpathVerifier->SetTimeArrayName(gl::arrays::PointIndex);
     Opt.nozzle.apply(toolpathVerifier.Get());
     vtkDataObject* toolpathCollisions =
-      this->Execute("verify toolpath", { toolpathVerifier }, toolpathVerifier, /*allowEmpty=*/true);
+        this->Execute("verify toolpath", {toolpathVerifier}, toolpathVerifier, /*allowEmpty=*/true);
     {
       auto& s = report.object("toolpath");
       s.set("seconds", toolpathSeconds);
@@ -677,16 +687,14 @@ public:
       gl::reportCollisions(toolpathCollisions, s);
       this->Write(toolpath, "toolpath.vtp");
       this->Write(toolpathCollisions, "toolpath_collisions.vtp");
-      const int steps =
-        gl::replayStepCount(vtkDataSet::SafeDownCast(toolpath)->GetNumberOfPoints(), Opt.toolpath.replaySteps);
+      const int steps = gl::replayStepCount(vtkDataSet::SafeDownCast(toolpath)->GetNumberOfPoints(),
+                                            Opt.toolpath.replaySteps);
       s.set("replay_steps", steps);
-      for (const std::string& path : gl::writeToolpathReplay(planner, Opt.outDir, steps))
-      {
+      for (const std::string& path : gl::writeToolpathReplay(planner, Opt.outDir, steps)) {
         this->Written.push_back(path);
       }
     }
-    if (Opt.until == "toolpath")
-    {
+    if (Opt.until == "toolpath") {
       return this->Finish(report);
     }
 
@@ -694,59 +702,53 @@ public:
     // is unreachable nothing of this stage is written), then the 5-axis G-code and the waypoints;
     // if one of those fails, the files already written by this stage are removed again.
     {
-      if (!Opt.quiet)
-      {
+      if (!Opt.quiet) {
         std::cout << "geolattice: program ..." << std::flush;
       }
       const auto start = Clock::now();
       const std::filesystem::path dir(Opt.outDir);
       auto& s = report.object("program");
-      s.set("seconds", 0.0); // set below; first like in the other sections
+      s.set("seconds", 0.0);  // set below; first like in the other sections
       Opt.program.report(s);
 
       vtkNew<vtkGLURScriptWriter> script;
       script->SetInputConnection(planner->GetOutputPort());
       Opt.program.applyScript(script.Get());
       script->SetFileName((dir / kScriptFile).string().c_str());
-      const std::string scriptError = RunWriter(script, !Opt.quiet); // the long writer: joints along the path
+      const std::string scriptError =
+          RunWriter(script, !Opt.quiet);  // the long writer: joints along the path
       const vtkIdType unreachable = script->GetUnreachableCount();
       std::vector<double> firstUnreachable;
-      for (vtkIdType i = 0; i < std::min<vtkIdType>(unreachable, 10); ++i)
-      {
+      for (vtkIdType i = 0; i < std::min<vtkIdType>(unreachable, 10); ++i) {
         firstUnreachable.push_back(static_cast<double>(script->GetUnreachablePoint(i)));
       }
       std::ostringstream unreachableText;
-      if (unreachable > 0)
-      {
+      if (unreachable > 0) {
         unreachableText << unreachable << " of " << script->GetNumberOfWaypoints()
-                        << " toolpath points are unreachable for the " << Opt.program.robot << " (first:";
-        for (size_t i = 0; i < firstUnreachable.size(); ++i)
-        {
+                        << " toolpath points are unreachable for the " << Opt.program.robot
+                        << " (first:";
+        for (size_t i = 0; i < firstUnreachable.size(); ++i) {
           unreachableText << (i ? ", " : " ") << static_cast<long long>(firstUnreachable[i]);
         }
         unreachableText << (unreachable > 10 ? ", ...)" : ")");
       }
-      if (!scriptError.empty())
-      {
-        if (!Opt.quiet)
-        {
+      if (!scriptError.empty()) {
+        if (!Opt.quiet) {
           std::cout << " failed\n";
         }
-        if (unreachable > 0 && !Opt.program.allowUnreachable)
-        {
+        if (unreachable > 0 && !Opt.program.allowUnreachable) {
           throw gl::GeoLatticeError("program: " + unreachableText.str() +
-            "; nothing written: move --nozzle-tip, --part-offset or --part-on-flange (or --allow-unreachable)");
+                                    "; nothing written: move --nozzle-tip, --part-offset or "
+                                    "--part-on-flange (or --allow-unreachable)");
         }
         throw gl::GeoLatticeError("program: " + scriptError);
       }
-      if (unreachable > 0)
-      {
+      if (unreachable > 0) {
         std::cerr << "geolattice: warning: " << unreachableText.str()
                   << ": the program was written anyway (--allow-unreachable)\n";
       }
       std::vector<std::string> files;
-      for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k)
-      {
+      for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k) {
         files.push_back(std::filesystem::path(script->GetFileWritten(k)).filename().string());
       }
       s.set("waypoints", static_cast<long long>(script->GetNumberOfWaypoints()));
@@ -770,20 +772,17 @@ public:
       auto& g = s.object("gcode");
       g.set("kinematics", Opt.program.gcode);
       const std::filesystem::path gcodePath = dir / kGCodeFile;
-      if (Opt.program.gcode == "none")
-      {
+      if (Opt.program.gcode == "none") {
         std::error_code ec;
-        std::filesystem::remove(gcodePath, ec); // of an earlier run: it would not match this toolpath
-      }
-      else
-      {
+        std::filesystem::remove(gcodePath,
+                                ec);  // of an earlier run: it would not match this toolpath
+      } else {
         vtkNew<vtkGLGCodeWriter> gcode;
         gcode->SetInputConnection(planner->GetOutputPort());
         Opt.program.applyGCode(gcode.Get());
         gcode->SetFileName(gcodePath.string().c_str());
         const std::string error = RunWriter(gcode);
-        if (!error.empty() && gcode->GetOutOfLimitsCount() > 0)
-        {
+        if (!error.empty() && gcode->GetOutOfLimitsCount() > 0) {
           // The table cannot tilt far enough for some points (axes pointing down, e.g. under an
           // overhang the curved layers print sideways): no G-code, but the robot program and the
           // rest stay valid; the report names the points.
@@ -791,23 +790,21 @@ public:
           g.set("error", error);
           g.set("out_of_limits", static_cast<long long>(gcode->GetOutOfLimitsCount()));
           GCodeSkipped = error;
-        }
-        else if (!error.empty())
-        {
+        } else if (!error.empty()) {
           RemoveFiles(script, {});
-          if (!Opt.quiet)
-          {
+          if (!Opt.quiet) {
             std::cout << " failed\n";
           }
           throw gl::GeoLatticeError("program: " + error + " (--tilt-limits, or --gcode none)");
-        }
-        else
-        {
+        } else {
           g.set("written", true);
           g.set("file", kGCodeFile);
-          g.set("pivot_mm", std::vector<double>(Opt.program.gcodePivot, Opt.program.gcodePivot + 3));
-          g.set("part_offset_mm", std::vector<double>(Opt.program.gcodeOffset, Opt.program.gcodeOffset + 3));
-          g.set("tilt_limits_deg", std::vector<double>(Opt.program.tiltLimits, Opt.program.tiltLimits + 2));
+          g.set("pivot_mm",
+                std::vector<double>(Opt.program.gcodePivot, Opt.program.gcodePivot + 3));
+          g.set("part_offset_mm",
+                std::vector<double>(Opt.program.gcodeOffset, Opt.program.gcodeOffset + 3));
+          g.set("tilt_limits_deg",
+                std::vector<double>(Opt.program.tiltLimits, Opt.program.tiltLimits + 2));
           g.set("moves", static_cast<long long>(gcode->GetNumberOfMoves()));
           g.set("max_rotary_step_deg", gcode->GetMaxRotaryStepDeg());
           g.set("branch_flips", static_cast<long long>(gcode->GetBranchFlips()));
@@ -821,27 +818,23 @@ public:
       const std::filesystem::path csvPath = dir / kWaypointFile;
       csv->SetFileName(csvPath.string().c_str());
       const std::string csvError = RunWriter(csv);
-      if (!csvError.empty())
-      {
+      if (!csvError.empty()) {
         RemoveFiles(script, Opt.program.gcode == "none" ? std::string() : gcodePath.string());
-        if (!Opt.quiet)
-        {
+        if (!Opt.quiet) {
           std::cout << " failed\n";
         }
         throw gl::GeoLatticeError("program: " + csvError);
       }
-      for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k)
-      {
+      for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k) {
         this->Written.push_back(script->GetFileWritten(k));
       }
-      if (Opt.program.gcode != "none" && GCodeSkipped.empty())
-      {
+      if (Opt.program.gcode != "none" && GCodeSkipped.empty()) {
         this->Written.push_back(gcodePath.string());
       }
-      if (!GCodeSkipped.empty())
-      {
+      if (!GCodeSkipped.empty()) {
         std::error_code ec;
-        std::filesystem::remove(gcodePath, ec);  // of an earlier run: it would not match this toolpath
+        std::filesystem::remove(gcodePath,
+                                ec);  // of an earlier run: it would not match this toolpath
         std::cout << "geolattice: warning: no G-code written: " << GCodeSkipped << "\n";
       }
       this->Written.push_back(csvPath.string());
@@ -850,8 +843,7 @@ public:
 
       const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
       s.set("seconds", seconds);
-      if (!Opt.quiet)
-      {
+      if (!Opt.quiet) {
         std::cout << " done (" << seconds << " s)\n";
       }
     }
@@ -862,16 +854,13 @@ private:
   /// Updates `last` (watching every algorithm of the stage for errors) and returns its output;
   /// throws with the stage name if an error was reported or the output is empty (unless
   /// allowEmpty: a lattice wider than the part is a valid, empty result).
-  vtkDataObject* Execute(
-    const char* stage, std::initializer_list<vtkAlgorithm*> algorithms, vtkAlgorithm* last, bool allowEmpty = false)
-  {
-    if (!Opt.quiet)
-    {
+  vtkDataObject* Execute(const char* stage, std::initializer_list<vtkAlgorithm*> algorithms,
+                         vtkAlgorithm* last, bool allowEmpty = false) {
+    if (!Opt.quiet) {
       std::cout << "geolattice: " << stage << " ..." << std::flush;
     }
     geolattice::ErrorCapture errors;
-    for (vtkAlgorithm* a : algorithms)
-    {
+    for (vtkAlgorithm* a : algorithms) {
       errors.Watch(a);
     }
     const auto start = Clock::now();
@@ -881,16 +870,14 @@ private:
     }
     this->LastSeconds = std::chrono::duration<double>(Clock::now() - start).count();
     vtkDataSet* out = vtkDataSet::SafeDownCast(last->GetOutputDataObject(0));
-    if (!Opt.quiet)
-    {
-      std::cout << (errors.Message.empty() ? " done" : " failed") << " (" << this->LastSeconds << " s)\n";
+    if (!Opt.quiet) {
+      std::cout << (errors.Message.empty() ? " done" : " failed") << " (" << this->LastSeconds
+                << " s)\n";
     }
-    if (!errors.Message.empty())
-    {
+    if (!errors.Message.empty()) {
       throw gl::GeoLatticeError(std::string(stage) + ": " + errors.Message);
     }
-    if (!out || (!allowEmpty && out->GetNumberOfCells() == 0))
-    {
+    if (!out || (!allowEmpty && out->GetNumberOfCells() == 0)) {
       throw gl::GeoLatticeError(std::string(stage) + ": produced an empty output");
     }
     return out;
@@ -898,46 +885,38 @@ private:
 
   /// Removes the program files `script` wrote (and `also`, if not empty): a later writer of the
   /// program stage failed, and the stage leaves all its files or none.
-  static void RemoveFiles(vtkGLURScriptWriter* script, const std::string& also)
-  {
+  static void RemoveFiles(vtkGLURScriptWriter* script, const std::string& also) {
     std::error_code ec;
-    for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k)
-    {
+    for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k) {
       std::filesystem::remove(script->GetFileWritten(k), ec);
     }
-    if (!also.empty())
-    {
+    if (!also.empty()) {
       std::filesystem::remove(also, ec);
     }
   }
 
   /// Writes with `writer` (errors captured as in Execute) and returns the first error reported,
   /// empty on success. percent: print its progress on the stage line.
-  static std::string RunWriter(vtkWriter* writer, bool percent = false)
-  {
+  static std::string RunWriter(vtkWriter* writer, bool percent = false) {
     geolattice::ErrorCapture errors;
     errors.Watch(writer);
     const ProgressPrinter printer(writer, percent);
     const int ok = writer->Write();
-    if (errors.Message.empty() && !ok)
-    {
+    if (errors.Message.empty() && !ok) {
       errors.Message = std::string(writer->GetClassName()) + " failed";
     }
     return errors.Message;
   }
 
-  void Write(vtkDataObject* data, const char* name)
-  {
+  void Write(vtkDataObject* data, const char* name) {
     const std::string path = (std::filesystem::path(Opt.outDir) / name).string();
     gl::writeVtkXml(data, path);
-    if (std::find(this->Written.begin(), this->Written.end(), path) == this->Written.end())
-    {
+    if (std::find(this->Written.begin(), this->Written.end(), path) == this->Written.end()) {
       this->Written.push_back(path);
     }
   }
 
-  int Finish(gl::JsonObject& report)
-  {
+  int Finish(gl::JsonObject& report) {
     const std::string path = (std::filesystem::path(Opt.outDir) / "report.json").string();
     gl::writeAtomically(path, [&report](const std::string& tmp) {
       std::ofstream out(tmp);
@@ -946,11 +925,9 @@ private:
       return static_cast<bool>(out);
     });
     this->Written.push_back(path);
-    if (!Opt.quiet)
-    {
+    if (!Opt.quiet) {
       std::cout << "geolattice: wrote";
-      for (const auto& w : this->Written)
-      {
+      for (const auto& w : this->Written) {
         std::cout << " " << w;
       }
       std::cout << "\ngeolattice: open them in ParaView (paraview " << Opt.outDir
@@ -961,23 +938,20 @@ private:
 
   const Options& Opt;
   double LastSeconds = 0;
-  std::string GCodeSkipped;  ///< why the optional G-code was not written (empty: written or not asked for)
+  std::string
+      GCodeSkipped;  ///< why the optional G-code was not written (empty: written or not asked for)
   std::vector<std::string> Written;
 };
 
-} // namespace
+}  // namespace
 
-int main(int argc, char** argv)
-{
-  for (int i = 1; i < argc; ++i)
-  {
-    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h"))
-    {
+int main(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    if (!std::strcmp(argv[i], "--help") || !std::strcmp(argv[i], "-h")) {
       std::cout << kUsage;
       return 0;
     }
-    if (!std::strcmp(argv[i], "--version"))
-    {
+    if (!std::strcmp(argv[i], "--version")) {
       std::cout << "geolattice " << GEOLATTICE_VERSION << "\n";
       return 0;
     }
@@ -986,22 +960,16 @@ int main(int argc, char** argv)
   // would print (e.g. from readers inside a filter) goes to a silent output window.
   vtkNew<SilentOutputWindow> silent;
   vtkOutputWindow::SetInstance(silent);
-  try
-  {
-    if (argc >= 2 && !std::strcmp(argv[1], "verify"))
-    {
+  try {
+    if (argc >= 2 && !std::strcmp(argv[1], "verify")) {
       return geolattice::runVerifyCommand(argc, argv);
     }
     const Options options = parseArguments(argc, argv);
     return Pipeline(options).Run();
-  }
-  catch (const UsageError& e)
-  {
+  } catch (const UsageError& e) {
     std::cerr << "geolattice: " << e.what() << "\n";
     return 2;
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     std::cerr << "geolattice: error: " << e.what() << "\n";
     return 1;
   }

@@ -92,12 +92,14 @@ TriangleSurface readObj(const std::string& path) {
         const long n = static_cast<long>(s.points.size());
         const long index = i > 0 ? i - 1 : n + i;
         if (i == 0 || index < 0 || index >= n) {
-          throw GeoLatticeError(path + ":" + std::to_string(lineNo) + ": face index '" + token + "' out of range");
+          throw GeoLatticeError(path + ":" + std::to_string(lineNo) + ": face index '" + token +
+                                "' out of range");
         }
         face.push_back(static_cast<int>(index));
       }
       if (face.size() < 3) {
-        throw GeoLatticeError(path + ":" + std::to_string(lineNo) + ": face with fewer than 3 vertices");
+        throw GeoLatticeError(path + ":" + std::to_string(lineNo) +
+                              ": face with fewer than 3 vertices");
       }
       for (size_t k = 1; k + 1 < face.size(); ++k) {
         s.triangles.push_back({face[0], face[k], face[k + 1]});
@@ -138,7 +140,8 @@ const TetMesh& bunnyMesh(const MeshSize& size) {
   const std::string dir = cacheDir();
   ::mkdir(dir.c_str(), 0755);
   char name[64];
-  std::snprintf(name, sizeof name, "/bunny100mm_L%.4f_q%.3f.tet", size.edgeLengthMm, size.radiusEdgeRatio);
+  std::snprintf(name, sizeof name, "/bunny100mm_L%.4f_q%.3f.tet", size.edgeLengthMm,
+                size.radiusEdgeRatio);
   const std::string path = dir + name;
   TetMesh mesh;
   if (std::ifstream(path).good()) {
@@ -190,14 +193,15 @@ void benchGdf(benchmark::State& state, MeshSize size, CholeskyBackend backend) {
   double peakMiB = 0;
   for (auto _ : state) {
     fields = GeodesicFields{};
-    TetMesh copy = mesh; // the solver takes the mesh by value; copy outside the timed part
-    malloc_trim(0);      // hand freed heap back, so the baseline below is what is really in use
+    TetMesh copy = mesh;  // the solver takes the mesh by value; copy outside the timed part
+    malloc_trim(0);       // hand freed heap back, so the baseline below is what is really in use
     const long before = statusKb("VmRSS");
     const bool peakReset = resetPeakRss();
     const auto start = std::chrono::steady_clock::now();
     GeodesicDistanceFields gdf(std::move(copy), options);
     fields = gdf.solve(sources);
-    state.SetIterationTime(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    state.SetIterationTime(
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     const long peak = peakReset ? statusKb("VmHWM") : maxRssKb();
     peakMiB = std::max(peakMiB, static_cast<double>(peak - before) / 1024.0);
     sum.assembly += fields.timings.assembly;
@@ -240,18 +244,20 @@ int printTetCount(const char* arg) {
     options.radiusEdgeRatio = std::strtod(end + 1, &end);
   }
   if (end == arg || *end != '\0' || !(edge > 0)) {
-    std::cerr << "--tet-count needs a positive edge length in mm, optionally ',<radius-edge ratio>'\n";
+    std::cerr
+        << "--tet-count needs a positive edge length in mm, optionally ',<radius-edge ratio>'\n";
     return 2;
   }
   options.targetEdgeLength = edge;
   const TetrahedralizeResult r = tetrahedralizeSurface(scaledBunny(), options);
-  std::cout << "edge " << edge << " mm, ratio " << options.radiusEdgeRatio << ": " << r.tetCount << " tets, " << r.mesh.points.size() << " vertices, mean edge "
-            << r.meanEdgeLength << " mm, " << sourcesNearLowestZ(r.mesh, kSourceToleranceMm).size() << " sources, TetGen "
-            << r.seconds << " s\n";
+  std::cout << "edge " << edge << " mm, ratio " << options.radiusEdgeRatio << ": " << r.tetCount
+            << " tets, " << r.mesh.points.size() << " vertices, mean edge " << r.meanEdgeLength
+            << " mm, " << sourcesNearLowestZ(r.mesh, kSourceToleranceMm).size()
+            << " sources, TetGen " << r.seconds << " s\n";
   return 0;
 }
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {

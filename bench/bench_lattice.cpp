@@ -31,7 +31,8 @@ const CurvedLayers& bunnyLayers() {
     TetrahedralizeOptions options;
     options.autoTargetTets = 66000;
     const TetMesh mesh = tetrahedralizeSurface(s, options).mesh;
-    const GeodesicFields fields = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 1.0));
+    const GeodesicFields fields =
+        computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 1.0));
     return sliceCurvedLayers(mesh, fields.gamma, fields.alpha, fields.beta,
                              vertexGradientDirections(mesh, fields.gamma), SlicerOptions{});
   }();
@@ -57,13 +58,13 @@ void BM_LatticeAllLayers(benchmark::State& state) {
   state.counters["irregular"] = g.stats.irregularVertices;
 }
 BENCHMARK(BM_LatticeAllLayers)
-  ->ArgNames({"width_mm", "threads"})
-  ->Args({6, 1})
-  ->Args({6, 2})
-  ->Args({2, 2})
-  ->Unit(benchmark::kMillisecond)
-  ->MinTime(2.0);
+    ->ArgNames({"width_mm", "threads"})
+    ->Args({6, 1})
+    ->Args({6, 2})
+    ->Args({2, 2})
+    ->Unit(benchmark::kMillisecond)
+    ->MinTime(2.0);
 
-} // namespace
+}  // namespace
 
 BENCHMARK_MAIN();

@@ -28,10 +28,13 @@ const Path& spiral() {
     double e = 0;
     for (int i = 0; i < n; ++i) {
       const double z = 0.6 + 40.0 * i / n;
-      const double tilt = 0.5 * std::sin(z / 10);  // up to ~27° of nozzle tilt, turning slowly with z
+      const double tilt =
+          0.5 * std::sin(z / 10);  // up to ~27° of nozzle tilt, turning slowly with z
       // Raster: 0.2 mm steps back and forth along x, rows 1 mm apart, ~33 layers of 30 000 points.
-      r.points.push_back(Eigen::Vector3d(20 * std::sin(0.01 * i), std::fmod(0.0005 * i, 40.0) - 20.0, z));
-      r.normals.push_back(Eigen::Vector3d(tilt * std::cos(z / 7), tilt * std::sin(z / 7), 1).normalized());
+      r.points.push_back(
+          Eigen::Vector3d(20 * std::sin(0.01 * i), std::fmod(0.0005 * i, 40.0) - 20.0, z));
+      r.normals.push_back(
+          Eigen::Vector3d(tilt * std::cos(z / 7), tilt * std::sin(z / 7), 1).normalized());
       const bool air = i % 5000 == 0;
       e += air ? 0 : 0.01;
       r.extrusion.push_back(e);
@@ -60,7 +63,8 @@ void BM_IkAndURScript(benchmark::State& state) {
   for (auto _ : state) {
     rp = solveRobotPath(cell, p.points, p.normals);
     ProgramInput in{&p.points, &p.extrusion, &p.feed, &p.kind};
-    stats = writeURScript(cell, rp, in, URScriptOptions{}, [&](size_t) -> std::ostream& { return sink; });
+    stats = writeURScript(cell, rp, in, URScriptOptions{},
+                          [&](size_t) -> std::ostream& { return sink; });
   }
   state.counters["waypoints"] = static_cast<double>(p.points.size());
   state.counters["unreachable"] = static_cast<double>(rp.unreachable.size());
@@ -74,11 +78,13 @@ void BM_FiveAxisGCode(benchmark::State& state) {
   NullBuffer nb;
   std::ostream sink(&nb);
   for (auto _ : state) {
-    benchmark::DoNotOptimize(writeFiveAxisGCode(p.points, p.normals, p.extrusion, p.feed, p.kind, GCodeOptions{}, sink).moves);
+    benchmark::DoNotOptimize(
+        writeFiveAxisGCode(p.points, p.normals, p.extrusion, p.feed, p.kind, GCodeOptions{}, sink)
+            .moves);
   }
 }
 BENCHMARK(BM_FiveAxisGCode)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-} // namespace
+}  // namespace
 
 BENCHMARK_MAIN();

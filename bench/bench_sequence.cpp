@@ -50,15 +50,16 @@ const TreePart& threeBranchPart() {
     const TetMesh mesh = tetrahedralizeSurface(s, TetrahedralizeOptions{}).mesh;
     p.tets = mesh.tets.size();
     const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
-    const CurvedLayers layers =
-        sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
+    const CurvedLayers layers = sliceCurvedLayers(
+        mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
     p.layers = static_cast<int>(layers.layerValues.size());
     LatticeOptions o;
     o.alphaWidth = o.betaWidth = 4.0;
     p.lattice = buildLatticeGraph(layers, o);
     const auto t0 = std::chrono::steady_clock::now();
     p.tree = buildSkeletonTree(mesh, f.gamma, p.lattice);
-    p.skeletonSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    p.skeletonSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     p.material = sampleLatticeMaterial(p.lattice, 1.0);
     return p;
   }();
@@ -87,17 +88,22 @@ CollisionReport verify(const TreePart& p, const PrintSequence& s, const NozzleMo
   static const SkeletonAncestry ancestry(p.tree);
   CollisionExemption exemption;
   exemption.group = p.material.subgraph;
-  exemption.unavoidable = [&](int station, int obstacle) { return ancestry.isAncestor(obstacle, station); };
+  exemption.unavoidable = [&](int station, int obstacle) {
+    return ancestry.isAncestor(obstacle, station);
+  };
   return verifyNozzleClearance(p.material.points, p.material.normals, time, n, 20, &exemption);
 }
 
 void printTable() {
   const TreePart& p = threeBranchPart();
-  std::printf("Three-branch tree x1.5: %zu tets, %d layers, %zu sub-graphs, %zu material samples (1 mm), "
-              "skeleton %zu edges (%d split, %d merge nodes) in %.3f s\n\n",
-              p.tets, p.layers, p.tree.nodes.size(), p.material.points.size(), p.tree.edges.size(),
-              p.tree.splitNodes, p.tree.mergeNodes, p.skeletonSeconds);
-  std::printf("| Strategy | NA | Retractions | Air-move length (mm) | Collision-free order (verifier) | Unavoidable stations | PCG pairs | Forced steps | Seconds |\n");
+  std::printf(
+      "Three-branch tree x1.5: %zu tets, %d layers, %zu sub-graphs, %zu material samples (1 mm), "
+      "skeleton %zu edges (%d split, %d merge nodes) in %.3f s\n\n",
+      p.tets, p.layers, p.tree.nodes.size(), p.material.points.size(), p.tree.edges.size(),
+      p.tree.splitNodes, p.tree.mergeNodes, p.skeletonSeconds);
+  std::printf(
+      "| Strategy | NA | Retractions | Air-move length (mm) | Collision-free order (verifier) | "
+      "Unavoidable stations | PCG pairs | Forced steps | Seconds |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   for (double na : {75.0, 60.0, 45.0, 30.0, 15.0, 1.0}) {
     const NozzleModel n = cone(na);
@@ -114,10 +120,13 @@ void printTable() {
         std::snprintf(pcgText, sizeof pcgText, "%lld", pcg.pairs);
       }
       const long long orderStations = r.violatingStations - r.unavoidableStations;
-      std::printf("| %s | %.0f° | %d | %.0f | %s | %lld | %s | %d | %.3f |\n", sequenceStrategyName(st), na,
-                  s.retractions, s.airLength,
-                  r.orderCollisionFree ? "yes" : ("**no** (" + std::to_string(orderStations) + " stations)").c_str(),
-                  r.unavoidableStations, pcgText, s.forcedSteps, s.seconds + (usesPcg ? pcg.seconds : 0.0));
+      std::printf("| %s | %.0f° | %d | %.0f | %s | %lld | %s | %d | %.3f |\n",
+                  sequenceStrategyName(st), na, s.retractions, s.airLength,
+                  r.orderCollisionFree
+                      ? "yes"
+                      : ("**no** (" + std::to_string(orderStations) + " stations)").c_str(),
+                  r.unavoidableStations, pcgText, s.forcedSteps,
+                  s.seconds + (usesPcg ? pcg.seconds : 0.0));
     }
   }
 }
@@ -130,7 +139,8 @@ void BM_PcgAndA4(benchmark::State& state) {
   PrintSequence s;
   long long pairs = 0;
   for (auto _ : state) {
-    const PotentialCollisions pcg = computePotentialCollisions(p.material, n, static_cast<int>(state.range(1)));
+    const PotentialCollisions pcg =
+        computePotentialCollisions(p.material, n, static_cast<int>(state.range(1)));
     s = sequencePrint(p.tree, p.material, &pcg, o);
     pairs = pcg.pairs;
   }
@@ -138,7 +148,12 @@ void BM_PcgAndA4(benchmark::State& state) {
   state.counters["pcg_pairs"] = static_cast<double>(pairs);
   state.counters["retractions"] = s.retractions;
 }
-BENCHMARK(BM_PcgAndA4)->ArgNames({"NA", "threads"})->Args({75, 1})->Args({45, 1})->Args({15, 1})->Args({45, 2})
+BENCHMARK(BM_PcgAndA4)
+    ->ArgNames({"NA", "threads"})
+    ->Args({75, 1})
+    ->Args({45, 1})
+    ->Args({15, 1})
+    ->Args({45, 2})
     ->Unit(benchmark::kMillisecond);
 
 void BM_Rollout(benchmark::State& state) {
@@ -166,7 +181,7 @@ void BM_Verifier(benchmark::State& state) {
 }
 BENCHMARK(BM_Verifier)->ArgName("NA")->Arg(75)->Arg(45)->Unit(benchmark::kMillisecond);
 
-} // namespace
+}  // namespace
 
 int main(int argc, char** argv) {
   for (int i = 1; i < argc; ++i) {

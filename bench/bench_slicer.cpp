@@ -46,12 +46,12 @@ const Part& bunny66k() {
 
 void BM_SliceAllLayers(benchmark::State& state) {
   const Part& part = bunny66k();
-  SlicerOptions options; // 0.6 mm
+  SlicerOptions options;  // 0.6 mm
   size_t triangles = 0, layers = 0;
   for (auto _ : state) {
     const std::vector<Vec3> normals = vertexGradientDirections(part.mesh, part.fields.gamma);
-    const CurvedLayers result =
-      sliceCurvedLayers(part.mesh, part.fields.gamma, part.fields.alpha, part.fields.beta, normals, options);
+    const CurvedLayers result = sliceCurvedLayers(part.mesh, part.fields.gamma, part.fields.alpha,
+                                                  part.fields.beta, normals, options);
     triangles = result.triangles.size();
     layers = result.layerValues.size();
     benchmark::DoNotOptimize(result.points.data());
@@ -64,8 +64,8 @@ BENCHMARK(BM_SliceAllLayers)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 void BM_LayerStatistics(benchmark::State& state) {
   const Part& part = bunny66k();
-  const CurvedLayers layers =
-    sliceCurvedLayers(part.mesh, part.fields.gamma, part.fields.alpha, part.fields.beta, part.normals, SlicerOptions{});
+  const CurvedLayers layers = sliceCurvedLayers(part.mesh, part.fields.gamma, part.fields.alpha,
+                                                part.fields.beta, part.normals, SlicerOptions{});
   for (auto _ : state) {
     benchmark::DoNotOptimize(computeLayerStatistics(layers).data());
   }
@@ -73,6 +73,6 @@ void BM_LayerStatistics(benchmark::State& state) {
 }
 BENCHMARK(BM_LayerStatistics)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
-} // namespace
+}  // namespace
 
 BENCHMARK_MAIN();

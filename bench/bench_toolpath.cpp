@@ -36,15 +36,17 @@ const Bunny& bunny() {
     Bunny r;
     TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/bunny.obj");
     Eigen::AlignedBox3d box;
-    for (const Vec3& p : s.points) box.extend(p);
+    for (const Vec3& p : s.points)
+      box.extend(p);
     const double scale = 100.0 / box.sizes().maxCoeff();
-    for (Vec3& p : s.points) p = (p - box.min()) * scale;
+    for (Vec3& p : s.points)
+      p = (p - box.min()) * scale;
     TetrahedralizeOptions options;
     options.autoTargetTets = 66000;
     const TetMesh mesh = tetrahedralizeSurface(s, options).mesh;
     const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 1.0));
-    const CurvedLayers layers =
-        sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
+    const CurvedLayers layers = sliceCurvedLayers(
+        mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
     LatticeOptions lo;
     lo.alphaWidth = lo.betaWidth = 6.0;
     r.lattice = buildLatticeGraph(layers, lo);
@@ -109,6 +111,6 @@ void BM_PlanToolpath(benchmark::State& state) {
 }
 BENCHMARK(BM_PlanToolpath)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
-} // namespace
+}  // namespace
 
 BENCHMARK_MAIN();

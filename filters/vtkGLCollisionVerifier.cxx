@@ -38,27 +38,23 @@
 
 vtkStandardNewMacro(vtkGLCollisionVerifier);
 
-namespace
-{
+namespace {
 namespace gl = geolattice;
 
 static_assert(gl::collisionrole::Station == 0 && gl::collisionrole::Obstacle == 1, "Role values");
 
 /// Printed points with their nozzle axes, print times and sub-graphs (-1: none).
-struct Stations
-{
+struct Stations {
   std::vector<Eigen::Vector3d> points;
   std::vector<Eigen::Vector3d> normals;
   std::vector<int> time;
   std::vector<int> group;
-  std::vector<char> material; ///< per point: 1 = printed material; empty = all are
+  std::vector<char> material;  ///< per point: 1 = printed material; empty = all are
 };
 
 /// A non-negative integer id, else -1.
-int idOf(vtkDataArray* a, vtkIdType tuple)
-{
-  if (!a)
-  {
+int idOf(vtkDataArray* a, vtkIdType tuple) {
+  if (!a) {
     return -1;
   }
   const double v = a->GetComponent(tuple, 0);
@@ -67,25 +63,21 @@ int idOf(vtkDataArray* a, vtkIdType tuple)
 
 /// The ancestor relation of the skeleton stored by vtkGLPrintSequencer in the field array
 /// SkeletonEdges ((lower, upper) sub-graph ids); nodes = 0 .. K-1 with K = 1 + the largest id.
-std::unique_ptr<gl::SkeletonAncestry> ancestryOf(vtkDataArray* edges, int& K)
-{
-  if (edges->GetNumberOfComponents() != 2)
-  {
+std::unique_ptr<gl::SkeletonAncestry> ancestryOf(vtkDataArray* edges, int& K) {
+  if (edges->GetNumberOfComponents() != 2) {
     throw gl::GeoLatticeError(std::string("the field array '") + gl::arrays::SkeletonEdges +
-      "' must have 2 components (lower, upper sub-graph id)");
+                              "' must have 2 components (lower, upper sub-graph id)");
   }
   std::vector<std::array<int, 2>> pairs;
   K = 0;
-  for (vtkIdType e = 0; e < edges->GetNumberOfTuples(); ++e)
-  {
+  for (vtkIdType e = 0; e < edges->GetNumberOfTuples(); ++e) {
     std::array<int, 2> pair;
-    for (int j = 0; j < 2; ++j)
-    {
+    for (int j = 0; j < 2; ++j) {
       const double v = edges->GetComponent(e, j);
-      if (!std::isfinite(v) || v < 0 || v != std::floor(v) || v > 1e8)
-      {
-        throw gl::GeoLatticeError(std::string("the field array '") + gl::arrays::SkeletonEdges + "' has the node id " +
-          std::to_string(v) + " at edge " + std::to_string(e) + "; node ids must be integers >= 0");
+      if (!std::isfinite(v) || v < 0 || v != std::floor(v) || v > 1e8) {
+        throw gl::GeoLatticeError(std::string("the field array '") + gl::arrays::SkeletonEdges +
+                                  "' has the node id " + std::to_string(v) + " at edge " +
+                                  std::to_string(e) + "; node ids must be integers >= 0");
       }
       pair[j] = static_cast<int>(v);
       K = std::max(K, pair[j] + 1);
@@ -95,107 +87,90 @@ std::unique_ptr<gl::SkeletonAncestry> ancestryOf(vtkDataArray* edges, int& K)
   gl::SkeletonTree tree;
   tree.nodes.resize(K);
   std::vector<int> lowerLeft(K, 0);
-  for (const auto& [lower, upper] : pairs)
-  {
+  for (const auto& [lower, upper] : pairs) {
     tree.nodes[upper].lower.push_back(lower);
     tree.nodes[lower].upper.push_back(upper);
     ++lowerLeft[upper];
   }
   // Layers = longest path from a root, so that lower nodes come first (Kahn's order).
   std::vector<int> queue;
-  for (int k = 0; k < K; ++k)
-  {
-    if (lowerLeft[k] == 0)
-    {
+  for (int k = 0; k < K; ++k) {
+    if (lowerLeft[k] == 0) {
       queue.push_back(k);
     }
   }
-  for (size_t i = 0; i < queue.size(); ++i)
-  {
+  for (size_t i = 0; i < queue.size(); ++i) {
     const gl::SkeletonNode& n = tree.nodes[queue[i]];
-    for (int u : n.upper)
-    {
+    for (int u : n.upper) {
       tree.nodes[u].layer = std::max(tree.nodes[u].layer, n.layer + 1);
-      if (--lowerLeft[u] == 0)
-      {
+      if (--lowerLeft[u] == 0) {
         queue.push_back(u);
       }
     }
   }
-  if (static_cast<int>(queue.size()) != K)
-  {
-    throw gl::GeoLatticeError(std::string("the field array '") + gl::arrays::SkeletonEdges + "' has a cycle");
+  if (static_cast<int>(queue.size()) != K) {
+    throw gl::GeoLatticeError(std::string("the field array '") + gl::arrays::SkeletonEdges +
+                              "' has a cycle");
   }
   return std::make_unique<gl::SkeletonAncestry>(tree);
 }
 
 /// The integer time of a tuple; throws for a non-finite or fractional value.
-int timeValue(vtkDataArray* time, vtkIdType tuple, const char* where)
-{
+int timeValue(vtkDataArray* time, vtkIdType tuple, const char* where) {
   const double t = time->GetComponent(tuple, 0);
-  if (!std::isfinite(t) || t != std::floor(t) || std::abs(t) > 2e9)
-  {
-    throw gl::GeoLatticeError(std::string("the time array '") + time->GetName() + "' has the value " +
-      std::to_string(t) + " at " + where + " " + std::to_string(tuple) + "; print times must be integers");
+  if (!std::isfinite(t) || t != std::floor(t) || std::abs(t) > 2e9) {
+    throw gl::GeoLatticeError(std::string("the time array '") + time->GetName() +
+                              "' has the value " + std::to_string(t) + " at " + where + " " +
+                              std::to_string(tuple) + "; print times must be integers");
   }
   return static_cast<int>(t);
 }
 
-Eigen::Vector3d tupleOf(vtkDataArray* a, vtkIdType i)
-{
+Eigen::Vector3d tupleOf(vtkDataArray* a, vtkIdType i) {
   return Eigen::Vector3d(a->GetComponent(i, 0), a->GetComponent(i, 1), a->GetComponent(i, 2));
 }
 
 /// A lattice with one time per sub-graph: the samples of core/sequence/PrintMaterial.h, exactly
 /// those the sequencer tests. False (nothing added) when the input is not such a lattice.
-bool sampleLattice(vtkPolyData* input, vtkDataArray* cellTime, double spacing, Stations& out)
-{
+bool sampleLattice(vtkPolyData* input, vtkDataArray* cellTime, double spacing, Stations& out) {
   vtkCellData* cd = input->GetCellData();
   vtkDataArray* subgraph = cd->GetArray(gl::arrays::SubgraphId);
-  if (!subgraph || !cd->GetArray(gl::arrays::LayerId) || !input->GetPointData()->GetArray(gl::arrays::Gamma))
-  {
+  if (!subgraph || !cd->GetArray(gl::arrays::LayerId) ||
+      !input->GetPointData()->GetArray(gl::arrays::Gamma)) {
     return false;
   }
   std::vector<int> subgraphTime;
   std::vector<char> known;
   const vtkIdType firstLine = input->GetNumberOfVerts();
-  for (vtkIdType c = firstLine; c < firstLine + input->GetNumberOfLines(); ++c)
-  {
+  for (vtkIdType c = firstLine; c < firstLine + input->GetNumberOfLines(); ++c) {
     const double s = subgraph->GetComponent(c, 0);
-    if (!std::isfinite(s) || s < 0 || s != std::floor(s) || s > 1e9)
-    {
+    if (!std::isfinite(s) || s < 0 || s != std::floor(s) || s > 1e9) {
       return false;
     }
     const size_t id = static_cast<size_t>(s);
     const int t = timeValue(cellTime, c, "cell");
-    if (id >= known.size())
-    {
+    if (id >= known.size()) {
       known.resize(id + 1, 0);
       subgraphTime.resize(id + 1, 0);
     }
-    if (known[id] && subgraphTime[id] != t)
-    {
-      return false; // not one time per sub-graph
+    if (known[id] && subgraphTime[id] != t) {
+      return false;  // not one time per sub-graph
     }
     known[id] = 1;
     subgraphTime[id] = t;
   }
   gl::LatticeGraph graph;
-  try
-  {
+  try {
     graph = gl::toLatticeGraph(input);
-  }
-  catch (const gl::GeoLatticeError&)
-  {
-    return false; // not a lattice as the lattice filter writes it: sample the cells
+  } catch (const gl::GeoLatticeError&) {
+    return false;  // not a lattice as the lattice filter writes it: sample the cells
   }
   const gl::MaterialSamples material = gl::sampleLatticeMaterial(graph, spacing);
   out.points = material.points;
   out.normals = material.normals;
   out.group = material.subgraph;
   out.time.resize(material.subgraph.size());
-  for (size_t i = 0; i < material.subgraph.size(); ++i)
-  {
+  for (size_t i = 0; i < material.subgraph.size(); ++i) {
     out.time[i] = subgraphTime[material.subgraph[i]];
   }
   return true;
@@ -203,15 +178,15 @@ bool sampleLattice(vtkPolyData* input, vtkDataArray* cellTime, double spacing, S
 
 /// Any line cells: their points once per time, plus interior points on each segment; the group of
 /// a sample is the cell's SubgraphId, if there is such a cell array.
-void sampleCells(vtkPolyData* input, vtkDataArray* normals, vtkDataArray* cellTime, double spacing, Stations& out)
-{
+void sampleCells(vtkPolyData* input, vtkDataArray* normals, vtkDataArray* cellTime, double spacing,
+                 Stations& out) {
   vtkDataArray* cellGroup = input->GetCellData()->GetArray(gl::arrays::SubgraphId);
   int group = -1;
-  std::vector<std::vector<int>> emitted(input->GetNumberOfPoints()); // times a point was sampled with
+  std::vector<std::vector<int>> emitted(
+      input->GetNumberOfPoints());  // times a point was sampled with
   auto addPoint = [&](vtkIdType p, int t) {
     std::vector<int>& times = emitted[p];
-    if (std::find(times.begin(), times.end(), t) != times.end())
-    {
+    if (std::find(times.begin(), times.end(), t) != times.end()) {
       return;
     }
     times.push_back(t);
@@ -224,19 +199,16 @@ void sampleCells(vtkPolyData* input, vtkDataArray* normals, vtkDataArray* cellTi
   };
   const vtkIdType firstLine = input->GetNumberOfVerts();
   auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
     vtkIdType n;
     const vtkIdType* ids;
     it->GetCurrentCell(n, ids);
     const int t = timeValue(cellTime, firstLine + it->GetCurrentCellId(), "cell");
     group = idOf(cellGroup, firstLine + it->GetCurrentCellId());
-    for (vtkIdType k = 0; k < n; ++k)
-    {
+    for (vtkIdType k = 0; k < n; ++k) {
       addPoint(ids[k], t);
     }
-    for (vtkIdType k = 0; k + 1 < n; ++k)
-    {
+    for (vtkIdType k = 0; k + 1 < n; ++k) {
       double a[3], b[3];
       input->GetPoint(ids[k], a);
       input->GetPoint(ids[k + 1], b);
@@ -244,8 +216,7 @@ void sampleCells(vtkPolyData* input, vtkDataArray* normals, vtkDataArray* cellTi
       const Eigen::Vector3d na = tupleOf(normals, ids[k]).normalized();
       const Eigen::Vector3d nb = tupleOf(normals, ids[k + 1]).normalized();
       const int segments = static_cast<int>(std::ceil((pb - pa).norm() / spacing));
-      for (int j = 1; j < segments; ++j)
-      {
+      for (int j = 1; j < segments; ++j) {
         const double s = static_cast<double>(j) / segments;
         out.points.push_back((1 - s) * pa + s * pb);
         const Eigen::Vector3d nrm = (1 - s) * na + s * nb;
@@ -257,8 +228,7 @@ void sampleCells(vtkPolyData* input, vtkDataArray* normals, vtkDataArray* cellTi
   }
 }
 
-void buildOutput(const gl::CollisionReport& report, double nozzleAngle, vtkPolyData* out)
-{
+void buildOutput(const gl::CollisionReport& report, double nozzleAngle, vtkPolyData* out) {
   const vtkIdType R = static_cast<vtkIdType>(report.violations.size());
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -277,14 +247,12 @@ void buildOutput(const gl::CollisionReport& report, double nozzleAngle, vtkPolyD
   radial->SetNumberOfTuples(2 * R);
   vtkNew<vtkCellArray> lines;
   lines->AllocateExact(R, 2 * R);
-  for (vtkIdType k = 0; k < R; ++k)
-  {
+  for (vtkIdType k = 0; k < R; ++k) {
     const gl::CollisionViolation& v = report.violations[k];
-    const vtkIdType ids[2] = { 2 * k, 2 * k + 1 };
+    const vtkIdType ids[2] = {2 * k, 2 * k + 1};
     points->SetPoint(ids[0], v.stationPoint.data());
     points->SetPoint(ids[1], v.obstaclePoint.data());
-    for (int j = 0; j < 2; ++j)
-    {
+    for (int j = 0; j < 2; ++j) {
       index->SetValue(ids[j], static_cast<int>(k));
       role->SetValue(ids[j], j == 0 ? gl::collisionrole::Station : gl::collisionrole::Obstacle);
       height->SetValue(ids[j], v.height);
@@ -304,114 +272,102 @@ void buildOutput(const gl::CollisionReport& report, double nozzleAngle, vtkPolyD
   pd->SetActiveScalars(gl::arrays::Role);
 
   vtkFieldData* fd = out->GetFieldData();
-  for (const auto& [name, value] : { std::pair<const char*, bool>{ gl::arrays::CollisionFree, report.collisionFree },
-         { gl::arrays::CollisionOrderFree, report.orderCollisionFree } })
-  {
+  for (const auto& [name, value] :
+       {std::pair<const char*, bool>{gl::arrays::CollisionFree, report.collisionFree},
+        {gl::arrays::CollisionOrderFree, report.orderCollisionFree}}) {
     vtkNew<vtkIntArray> flag;
     flag->SetName(name);
     flag->InsertNextValue(value ? 1 : 0);
     fd->AddArray(flag);
   }
-  gl::addFieldArray(fd, gl::arrays::CollisionStations, { static_cast<double>(report.stations) });
-  gl::addFieldArray(fd, gl::arrays::CollisionViolatingStations, { static_cast<double>(report.violatingStations) });
-  gl::addFieldArray(
-    fd, gl::arrays::CollisionUnavoidableStations, { static_cast<double>(report.unavoidableStations) });
-  gl::addFieldArray(fd, gl::arrays::CollisionSeconds, { report.seconds });
-  gl::addFieldArray(fd, gl::arrays::NozzleAngleDeg, { nozzleAngle });
+  gl::addFieldArray(fd, gl::arrays::CollisionStations, {static_cast<double>(report.stations)});
+  gl::addFieldArray(fd, gl::arrays::CollisionViolatingStations,
+                    {static_cast<double>(report.violatingStations)});
+  gl::addFieldArray(fd, gl::arrays::CollisionUnavoidableStations,
+                    {static_cast<double>(report.unavoidableStations)});
+  gl::addFieldArray(fd, gl::arrays::CollisionSeconds, {report.seconds});
+  gl::addFieldArray(fd, gl::arrays::NozzleAngleDeg, {nozzleAngle});
 }
-} // namespace
+}  // namespace
 
-vtkGLCollisionVerifier::vtkGLCollisionVerifier()
-{
+vtkGLCollisionVerifier::vtkGLCollisionVerifier() {
   this->SetTimeArrayName(geolattice::arrays::PrintOrder);
 }
 
-vtkGLCollisionVerifier::~vtkGLCollisionVerifier()
-{
+vtkGLCollisionVerifier::~vtkGLCollisionVerifier() {
   this->SetTimeArrayName(nullptr);
 }
 
-int vtkGLCollisionVerifier::FillInputPortInformation(int, vtkInformation* info)
-{
+int vtkGLCollisionVerifier::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
 }
 
-int vtkGLCollisionVerifier::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
+int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                        vtkInformationVector* outputVector) {
   // Collective in an MPI run: all the printed points on one process (vtkGLParallel.h).
   const gl::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  if (!inputs.Computes())
-  {
-    return 1; // another process has the points
+  if (!inputs.Computes()) {
+    return 1;  // another process has the points
   }
   vtkPolyData* input = inputs.Get<vtkPolyData>(0);
-  try
-  {
-    const gl::NozzleModel nozzle = gl::nozzleModel(
-      this->NozzleAngle, this->NozzleLength, this->HolderRadius, this->TipClearance, this->TipFaceRadius);
+  try {
+    const gl::NozzleModel nozzle =
+        gl::nozzleModel(this->NozzleAngle, this->NozzleLength, this->HolderRadius,
+                        this->TipClearance, this->TipFaceRadius);
 
-    if (!input || input->GetNumberOfPoints() == 0)
-    {
+    if (!input || input->GetNumberOfPoints() == 0) {
       throw gl::GeoLatticeError("empty input: no printed points to verify");
     }
     vtkPointData* pd = input->GetPointData();
     vtkDataArray* normals = pd->GetArray(gl::arrays::Normals);
-    if (!normals)
-    {
+    if (!normals) {
       normals = pd->GetNormals();
     }
-    if (!normals || normals->GetNumberOfComponents() != 3)
-    {
-      throw gl::GeoLatticeError("input has no Normals point array with 3 components (the nozzle directions)");
+    if (!normals || normals->GetNumberOfComponents() != 3) {
+      throw gl::GeoLatticeError(
+          "input has no Normals point array with 3 components (the nozzle directions)");
     }
     const std::string name = this->TimeArrayName ? this->TimeArrayName : "";
     vtkDataArray* cellTime = name.empty() ? nullptr : input->GetCellData()->GetArray(name.c_str());
     vtkDataArray* pointTime = name.empty() ? nullptr : pd->GetArray(name.c_str());
-    if (!cellTime && !pointTime)
-    {
-      throw gl::GeoLatticeError("input has no cell or point array '" + name +
-        "' (the print time, e.g. PrintOrder of GL Print Sequencer; set TimeArrayName)");
+    if (!cellTime && !pointTime) {
+      throw gl::GeoLatticeError(
+          "input has no cell or point array '" + name +
+          "' (the print time, e.g. PrintOrder of GL Print Sequencer; set TimeArrayName)");
     }
 
-    if (gl::progressAborts(this, 0.05))
-    {
+    if (gl::progressAborts(this, 0.05)) {
       return 1;
     }
     Stations stations;
-    if (cellTime)
-    {
-      if (input->GetNumberOfLines() == 0)
-      {
-        throw gl::GeoLatticeError("input has no line cells to sample (the time array '" + name + "' is a cell array)");
+    if (cellTime) {
+      if (input->GetNumberOfLines() == 0) {
+        throw gl::GeoLatticeError("input has no line cells to sample (the time array '" + name +
+                                  "' is a cell array)");
       }
-      if (!(this->SampleSpacing > 0))
-      {
-        throw gl::GeoLatticeError("sample spacing must be > 0 mm, got " + std::to_string(this->SampleSpacing));
+      if (!(this->SampleSpacing > 0)) {
+        throw gl::GeoLatticeError("sample spacing must be > 0 mm, got " +
+                                  std::to_string(this->SampleSpacing));
       }
-      if (!sampleLattice(input, cellTime, this->SampleSpacing, stations))
-      {
+      if (!sampleLattice(input, cellTime, this->SampleSpacing, stations)) {
         sampleCells(input, normals, cellTime, this->SampleSpacing, stations);
       }
-    }
-    else
-    {
+    } else {
       vtkDataArray* pointGroup = pd->GetArray(gl::arrays::SubgraphId);
-      vtkDataArray* moveKind = pd->GetArray(gl::arrays::MoveKind); // a toolpath: air points are no material
+      vtkDataArray* moveKind =
+          pd->GetArray(gl::arrays::MoveKind);  // a toolpath: air points are no material
       const vtkIdType V = input->GetNumberOfPoints();
-      for (vtkIdType v = 0; v < V; ++v)
-      {
+      for (vtkIdType v = 0; v < V; ++v) {
         double x[3];
         input->GetPoint(v, x);
         stations.points.emplace_back(x[0], x[1], x[2]);
         stations.normals.push_back(tupleOf(normals, v));
         stations.time.push_back(timeValue(pointTime, v, "point"));
         stations.group.push_back(idOf(pointGroup, v));
-        if (moveKind)
-        {
+        if (moveKind) {
           stations.material.push_back(moveKind->GetComponent(v, 0) != gl::movekind::Air ? 1 : 0);
         }
       }
@@ -421,33 +377,29 @@ int vtkGLCollisionVerifier::RequestData(
     gl::CollisionExemption exemption;
     std::unique_ptr<gl::SkeletonAncestry> ancestry;
     int K = 0;
-    if (vtkDataArray* edges = input->GetFieldData()->GetArray(gl::arrays::SkeletonEdges))
-    {
+    if (vtkDataArray* edges = input->GetFieldData()->GetArray(gl::arrays::SkeletonEdges)) {
       ancestry = ancestryOf(edges, K);
       exemption.group = stations.group;
       exemption.unavoidable = [&ancestry, K](int station, int obstacle) {
-        return station >= 0 && obstacle >= 0 && station < K && obstacle < K && ancestry->isAncestor(obstacle, station);
+        return station >= 0 && obstacle >= 0 && station < K && obstacle < K &&
+               ancestry->isAncestor(obstacle, station);
       };
     }
     // The check itself is one core call: progress before and after it.
-    if (gl::progressAborts(this, 0.2))
-    {
+    if (gl::progressAborts(this, 0.2)) {
       return 1;
     }
-    const gl::CollisionReport report = gl::verifyNozzleClearance(stations.points, stations.normals, stations.time,
-      nozzle, this->MaxReported, ancestry ? &exemption : nullptr,
-      stations.material.empty() ? nullptr : &stations.material);
-    if (gl::progressAborts(this, 0.9))
-    {
+    const gl::CollisionReport report = gl::verifyNozzleClearance(
+        stations.points, stations.normals, stations.time, nozzle, this->MaxReported,
+        ancestry ? &exemption : nullptr, stations.material.empty() ? nullptr : &stations.material);
+    if (gl::progressAborts(this, 0.9)) {
       return 1;
     }
     buildOutput(report, this->NozzleAngle, output);
     this->UpdateProgress(1.0);
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     output->Initialize();
-    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
     {
       vtkErrorMacro(<< e.what());
     }
@@ -455,10 +407,10 @@ int vtkGLCollisionVerifier::RequestData(
   return 1;
 }
 
-void vtkGLCollisionVerifier::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLCollisionVerifier::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "TimeArrayName: " << (this->TimeArrayName ? this->TimeArrayName : "(none)") << "\n";
+  os << indent << "TimeArrayName: " << (this->TimeArrayName ? this->TimeArrayName : "(none)")
+     << "\n";
   os << indent << "NozzleAngle: " << this->NozzleAngle << " deg\n";
   os << indent << "NozzleLength: " << this->NozzleLength << " mm\n";
   os << indent << "HolderRadius: " << this->HolderRadius << " mm\n";

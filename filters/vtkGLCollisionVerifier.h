@@ -55,8 +55,7 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLCollisionVerifier : public vtkPolyDataAlgorithm
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLCollisionVerifier : public vtkPolyDataAlgorithm {
 public:
   static vtkGLCollisionVerifier* New();
   vtkTypeMacro(vtkGLCollisionVerifier, vtkPolyDataAlgorithm);

@@ -28,21 +28,17 @@
 
 vtkStandardNewMacro(vtkGLCurvedLayerSlicer);
 
-namespace
-{
+namespace {
 namespace gl = geolattice;
 
-Eigen::VectorXd requirePointArray(vtkUnstructuredGrid* grid, const char* name)
-{
+Eigen::VectorXd requirePointArray(vtkUnstructuredGrid* grid, const char* name) {
   vtkDataArray* a = grid->GetPointData()->GetArray(name);
-  if (!a)
-  {
+  if (!a) {
     throw gl::GeoLatticeError(std::string("input has no point array '") + name +
-      "' (apply GL Geodesic Distance Fields first)");
+                              "' (apply GL Geodesic Distance Fields first)");
   }
   Eigen::VectorXd v(a->GetNumberOfTuples());
-  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i)
-  {
+  for (vtkIdType i = 0; i < a->GetNumberOfTuples(); ++i) {
     v[i] = a->GetComponent(i, 0);
   }
   return v;
@@ -50,12 +46,10 @@ Eigen::VectorXd requirePointArray(vtkUnstructuredGrid* grid, const char* name)
 
 /// Polydata of the extracted layers [l0, l1) of `layers` (points and triangles are grouped by
 /// layer, so a layer range is a contiguous range of both).
-void buildPolyData(const gl::CurvedLayers& layers, const std::vector<int>& triangleComponent, int l0, int l1,
-  vtkPolyData* out)
-{
+void buildPolyData(const gl::CurvedLayers& layers, const std::vector<int>& triangleComponent,
+                   int l0, int l1, vtkPolyData* out) {
   out->Initialize();
-  if (l0 >= l1)
-  {
+  if (l0 >= l1) {
     return;
   }
   const int p0 = layers.layerPointOffset[l0], p1 = layers.layerPointOffset[l1];
@@ -73,12 +67,11 @@ void buildPolyData(const gl::CurvedLayers& layers, const std::vector<int>& trian
   edge->SetName(gl::arrays::SourceEdge);
   edge->SetNumberOfComponents(2);
   edgeT->SetName(gl::arrays::EdgeParameter);
-  for (vtkDataArray* a : std::initializer_list<vtkDataArray*>{ gamma, alpha, beta, normals, edge, edgeT })
-  {
+  for (vtkDataArray* a :
+       std::initializer_list<vtkDataArray*>{gamma, alpha, beta, normals, edge, edgeT}) {
     a->SetNumberOfTuples(p1 - p0);
   }
-  for (int p = p0; p < p1; ++p)
-  {
+  for (int p = p0; p < p1; ++p) {
     const vtkIdType k = p - p0;
     points->SetPoint(k, layers.points[p].data());
     gamma->SetValue(k, layers.layerValues[layers.pointLayer[p]]);
@@ -97,10 +90,9 @@ void buildPolyData(const gl::CurvedLayers& layers, const std::vector<int>& trian
   component->SetName(gl::arrays::LayerComponent);
   layerId->SetNumberOfTuples(t1 - t0);
   component->SetNumberOfTuples(t1 - t0);
-  for (int t = t0; t < t1; ++t)
-  {
+  for (int t = t0; t < t1; ++t) {
     const auto& f = layers.triangles[t];
-    const vtkIdType ids[3] = { f[0] - p0, f[1] - p0, f[2] - p0 };
+    const vtkIdType ids[3] = {f[0] - p0, f[1] - p0, f[2] - p0};
     polys->InsertNextCell(3, ids);
     layerId->SetValue(t - t0, layers.layerIndex[layers.triangleLayer[t]]);
     component->SetValue(t - t0, triangleComponent[t]);
@@ -118,46 +110,39 @@ void buildPolyData(const gl::CurvedLayers& layers, const std::vector<int>& trian
   out->GetCellData()->AddArray(component);
 }
 
-} // namespace
+}  // namespace
 
-vtkGLCurvedLayerSlicer::vtkGLCurvedLayerSlicer()
-{
+vtkGLCurvedLayerSlicer::vtkGLCurvedLayerSlicer() {
   this->SetNumberOfOutputPorts(2);
 }
 
-int vtkGLCurvedLayerSlicer::FillInputPortInformation(int, vtkInformation* info)
-{
+int vtkGLCurvedLayerSlicer::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
   return 1;
 }
 
-int vtkGLCurvedLayerSlicer::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
+int vtkGLCurvedLayerSlicer::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                        vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole tet mesh on one process (vtkGLParallel.h).
   const gl::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkPolyData* all = vtkPolyData::GetData(outputVector, 0);
   vtkPolyData* selected = vtkPolyData::GetData(outputVector, 1);
   all->Initialize();
   selected->Initialize();
-  if (!inputs.Computes())
-  {
-    return 1; // another process has the mesh
+  if (!inputs.Computes()) {
+    return 1;  // another process has the mesh
   }
   vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
-  try
-  {
+  try {
     const gl::TetMesh mesh = gl::toTetMesh(input);
     const Eigen::VectorXd gamma = requirePointArray(input, gl::arrays::Gamma);
     const Eigen::VectorXd alpha = requirePointArray(input, gl::arrays::Alpha);
     const Eigen::VectorXd beta = requirePointArray(input, gl::arrays::Beta);
-    if (gl::progressAborts(this, 0.05))
-    {
+    if (gl::progressAborts(this, 0.05)) {
       return 1;
     }
     const std::vector<gl::Vec3> normals = gl::vertexGradientDirections(mesh, gamma);
-    if (gl::progressAborts(this, 0.1))
-    {
+    if (gl::progressAborts(this, 0.1)) {
       return 1;
     }
     gl::SlicerOptions options;
@@ -167,9 +152,9 @@ int vtkGLCurvedLayerSlicer::RequestData(
     options.lastLayer = this->LastLayer;
     options.progress = gl::progressRange(this, 0.1, 0.6);
     options.shouldAbort = gl::abortFlag(this);
-    const gl::CurvedLayers layers = gl::sliceCurvedLayers(mesh, gamma, alpha, beta, normals, options);
-    if (gl::progressAborts(this, 0.6))
-    {
+    const gl::CurvedLayers layers =
+        gl::sliceCurvedLayers(mesh, gamma, alpha, beta, normals, options);
+    if (gl::progressAborts(this, 0.6)) {
       return 1;
     }
     const int L = static_cast<int>(layers.layerValues.size());
@@ -177,24 +162,21 @@ int vtkGLCurvedLayerSlicer::RequestData(
     std::vector<double> componentCount(L);
     std::vector<int> local;
     const int stride = std::max(1, L / 16);
-    for (int l = 0; l < L; ++l)
-    {
-      if (l % stride == 0 && gl::progressAborts(this, 0.6 + 0.15 * l / L))
-      {
+    for (int l = 0; l < L; ++l) {
+      if (l % stride == 0 && gl::progressAborts(this, 0.6 + 0.15 * l / L)) {
         return 1;
       }
       componentCount[l] = gl::layerComponents(layers, l, local);
-      std::copy(local.begin(), local.end(), triangleComponent.begin() + layers.layerTriangleOffset[l]);
+      std::copy(local.begin(), local.end(),
+                triangleComponent.begin() + layers.layerTriangleOffset[l]);
     }
-    if (gl::progressAborts(this, 0.75))
-    {
+    if (gl::progressAborts(this, 0.75)) {
       return 1;
     }
     buildPolyData(layers, triangleComponent, 0, L, all);
     const int s = this->SelectedLayer - layers.layerIndex.front();
     buildPolyData(layers, triangleComponent, std::max(0, s), s >= 0 && s < L ? s + 1 : 0, selected);
-    if (gl::progressAborts(this, 0.85))
-    {
+    if (gl::progressAborts(this, 0.85)) {
       all->Initialize();
       selected->Initialize();
       return 1;
@@ -203,12 +185,10 @@ int vtkGLCurvedLayerSlicer::RequestData(
     vtkNew<vtkFieldData> fd;
     gl::addFieldArray(fd, gl::arrays::LayerValues, layers.layerValues);
     gl::addFieldArray(fd, gl::arrays::LayerComponents, componentCount);
-    if (this->ComputeStatistics)
-    {
+    if (this->ComputeStatistics) {
       const auto stats = gl::computeLayerStatistics(layers);
       std::vector<double> area(L), smin(L), smean(L), smax(L);
-      for (int l = 0; l < L; ++l)
-      {
+      for (int l = 0; l < L; ++l) {
         area[l] = stats[l].area;
         smin[l] = stats[l].spacingMin;
         smean[l] = stats[l].spacingMean;
@@ -218,8 +198,7 @@ int vtkGLCurvedLayerSlicer::RequestData(
       gl::addFieldArray(fd, gl::arrays::LayerSpacingMin, smin);
       gl::addFieldArray(fd, gl::arrays::LayerSpacingMean, smean);
       gl::addFieldArray(fd, gl::arrays::LayerSpacingMax, smax);
-      if (gl::progressAborts(this, 0.95))
-      {
+      if (gl::progressAborts(this, 0.95)) {
         all->Initialize();
         selected->Initialize();
         return 1;
@@ -228,12 +207,10 @@ int vtkGLCurvedLayerSlicer::RequestData(
     all->SetFieldData(fd);
     selected->GetFieldData()->PassData(fd);
     this->UpdateProgress(1.0);
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     all->Initialize();
     selected->Initialize();
-    if (!this->GetAbortExecute()) // an abort is not an error: empty outputs, no message
+    if (!this->GetAbortExecute())  // an abort is not an error: empty outputs, no message
     {
       vtkErrorMacro(<< e.what());
     }
@@ -241,8 +218,7 @@ int vtkGLCurvedLayerSlicer::RequestData(
   return 1;
 }
 
-void vtkGLCurvedLayerSlicer::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLCurvedLayerSlicer::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "LayerInterval: " << this->LayerInterval << " mm\n";
   os << indent << "FirstLayerOffset: " << this->FirstLayerOffset << " mm\n";

@@ -31,8 +31,7 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLCurvedLayerSlicer : public vtkPolyDataAlgorithm
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLCurvedLayerSlicer : public vtkPolyDataAlgorithm {
 public:
   static vtkGLCurvedLayerSlicer* New();
   vtkTypeMacro(vtkGLCurvedLayerSlicer, vtkPolyDataAlgorithm);

@@ -20,60 +20,53 @@
 
 vtkStandardNewMacro(vtkGLGCodeWriter);
 
-namespace
-{
+namespace {
 namespace gl = geolattice;
 
 static_assert(static_cast<int>(gl::TableKinematics::AC) == vtkGLGCodeWriter::AC &&
-    static_cast<int>(gl::TableKinematics::BC) == vtkGLGCodeWriter::BC,
-  "vtkGLGCodeWriter::KinematicsType must match core/program/FiveAxisGCode.h");
+                  static_cast<int>(gl::TableKinematics::BC) == vtkGLGCodeWriter::BC,
+              "vtkGLGCodeWriter::KinematicsType must match core/program/FiveAxisGCode.h");
 
-constexpr double kPoleToleranceDeg = 0.01; // = GCodeOptions::poleToleranceDeg
+constexpr double kPoleToleranceDeg = 0.01;  // = GCodeOptions::poleToleranceDeg
 
 /// Points whose axis needs a tilt outside [lo, hi] on both solutions (tilt = ±τ, τ the angle
 /// between the axis and +Z), as the core decides it.
-std::vector<vtkIdType> outOfLimits(const std::vector<Eigen::Vector3d>& normals, double lo, double hi)
-{
+std::vector<vtkIdType> outOfLimits(const std::vector<Eigen::Vector3d>& normals, double lo,
+                                   double hi) {
   std::vector<vtkIdType> out;
-  for (size_t i = 0; i < normals.size(); ++i)
-  {
+  for (size_t i = 0; i < normals.size(); ++i) {
     const Eigen::Vector3d& n = normals[i];
     const double tau = std::atan2(std::hypot(n.x(), n.y()), n.z()) * 180.0 / M_PI;
     const bool inside = (tau >= lo && tau <= hi) || (-tau >= lo && -tau <= hi);
-    if (!inside)
-    {
+    if (!inside) {
       out.push_back(static_cast<vtkIdType>(i));
     }
   }
   return out;
 }
-} // namespace
+}  // namespace
 
 vtkGLGCodeWriter::vtkGLGCodeWriter() = default;
 
-vtkGLGCodeWriter::~vtkGLGCodeWriter()
-{
+vtkGLGCodeWriter::~vtkGLGCodeWriter() {
   this->SetFileName(nullptr);
 }
 
-int vtkGLGCodeWriter::FillInputPortInformation(int, vtkInformation* info)
-{
+int vtkGLGCodeWriter::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
 }
 
-vtkTypeBool vtkGLGCodeWriter::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
-  {
+vtkTypeBool vtkGLGCodeWriter::ProcessRequest(vtkInformation* request,
+                                             vtkInformationVector** inputVector,
+                                             vtkInformationVector* outputVector) {
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT())) {
     gl::requestEndOfTimeRange(inputVector);
   }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
-void vtkGLGCodeWriter::WriteData()
-{
+void vtkGLGCodeWriter::WriteData() {
   this->NumberOfMoves = 0;
   this->MaxRotaryStepDeg = 0;
   this->BranchFlips = 0;
@@ -82,47 +75,39 @@ void vtkGLGCodeWriter::WriteData()
   this->OutOfLimitsCount = 0;
   // In an MPI run one process writes: the one with the toolpath (vtkGLParallel.h).
   const gl::ParallelInputs inputs(this);
-  if (!inputs.Computes())
-  {
-    return; // another process writes the G-code
+  if (!inputs.Computes()) {
+    return;  // another process writes the G-code
   }
-  try
-  {
-    if (!this->FileName || !*this->FileName)
-    {
+  try {
+    if (!this->FileName || !*this->FileName) {
       throw gl::GeoLatticeError("G-code writer: no FileName given");
     }
     const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
-    if (gl::progressAborts(this, 0.1))
-    {
+    if (gl::progressAborts(this, 0.1)) {
       return;
     }
     const double lo = this->TiltLimits[0], hi = this->TiltLimits[1];
-    if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi))
-    {
-      throw gl::GeoLatticeError("G-code writer: the tilt limits must be finite with min < max (got " +
-        std::to_string(lo) + ", " + std::to_string(hi) + ")");
+    if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) {
+      throw gl::GeoLatticeError(
+          "G-code writer: the tilt limits must be finite with min < max (got " +
+          std::to_string(lo) + ", " + std::to_string(hi) + ")");
     }
-    for (const double* v : { this->Pivot, this->PartOffset })
-    {
-      if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
-      {
+    for (const double* v : {this->Pivot, this->PartOffset}) {
+      if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
         throw gl::GeoLatticeError("G-code writer: the pivot and the part offset must be finite");
       }
     }
     const std::vector<vtkIdType> out = outOfLimits(path.normals, lo, hi);
-    if (gl::progressAborts(this, 0.2))
-    {
+    if (gl::progressAborts(this, 0.2)) {
       return;
     }
     this->OutOfLimitsCount = static_cast<vtkIdType>(out.size());
-    if (!out.empty())
-    {
+    if (!out.empty()) {
       std::ostringstream s;
       s << "G-code writer: " << out.size() << " of " << path.points.size()
-        << " toolpath points need a tilt outside the limits [" << lo << ", " << hi << "] degrees (first:";
-      for (size_t i = 0; i < out.size() && i < 10; ++i)
-      {
+        << " toolpath points need a tilt outside the limits [" << lo << ", " << hi
+        << "] degrees (first:";
+      for (size_t i = 0; i < out.size() && i < 10; ++i) {
         s << (i ? ", " : " ") << out[i];
       }
       s << (out.size() > 10 ? ", ...)" : ")") << "; nothing written";
@@ -132,21 +117,21 @@ void vtkGLGCodeWriter::WriteData()
     gl::GCodeOptions options;
     options.kinematics = this->Kinematics == BC ? gl::TableKinematics::BC : gl::TableKinematics::AC;
     options.pivot = Eigen::Vector3d(this->Pivot[0], this->Pivot[1], this->Pivot[2]);
-    options.partOffset = Eigen::Vector3d(this->PartOffset[0], this->PartOffset[1], this->PartOffset[2]);
+    options.partOffset =
+        Eigen::Vector3d(this->PartOffset[0], this->PartOffset[1], this->PartOffset[2]);
     options.tiltMinDeg = lo;
     options.tiltMaxDeg = hi;
     options.poleToleranceDeg = kPoleToleranceDeg;
     gl::AtomicFileSet files;
-    const gl::GCodeStats stats = gl::writeFiveAxisGCode(path.points, path.normals, path.extrusion, path.feedRate,
-      path.kind, options, files.open(this->FileName));
-    if (stats.outOfLimits > 0)
-    {
+    const gl::GCodeStats stats =
+        gl::writeFiveAxisGCode(path.points, path.normals, path.extrusion, path.feedRate, path.kind,
+                               options, files.open(this->FileName));
+    if (stats.outOfLimits > 0) {
       throw gl::GeoLatticeError("G-code writer: " + std::to_string(stats.outOfLimits) +
-        " toolpath points need a tilt outside the limits; nothing written");
+                                " toolpath points need a tilt outside the limits; nothing written");
     }
-    if (gl::progressAborts(this, 0.9))
-    {
-      return; // the temporary file goes with `files`: nothing written
+    if (gl::progressAborts(this, 0.9)) {
+      return;  // the temporary file goes with `files`: nothing written
     }
     files.commit();
     this->NumberOfMoves = static_cast<vtkIdType>(stats.moves);
@@ -154,33 +139,28 @@ void vtkGLGCodeWriter::WriteData()
     this->BranchFlips = static_cast<vtkIdType>(stats.branchFlips);
     this->MaxAxisErrorDeg = stats.maxAxisErrorDeg;
     this->ForcedRotarySteps = static_cast<vtkIdType>(stats.forcedRotarySteps);
-  }
-  catch (const gl::FileWriteError& e)
-  {
+  } catch (const gl::FileWriteError& e) {
     this->NumberOfMoves = 0;
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
     vtkErrorMacro(<< e.what());
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     this->NumberOfMoves = 0;
-    if (this->GetAbortExecute())
-    {
-      return; // an abort is not an error: nothing written, no message
+    if (this->GetAbortExecute()) {
+      return;  // an abort is not an error: nothing written, no message
     }
     this->SetErrorCode(vtkErrorCode::UserError);
     vtkErrorMacro(<< e.what());
   }
 }
 
-void vtkGLGCodeWriter::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLGCodeWriter::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "Kinematics: " << (this->Kinematics == BC ? "BC" : "AC") << "\n";
-  os << indent << "Pivot: " << this->Pivot[0] << " " << this->Pivot[1] << " " << this->Pivot[2] << " mm\n";
-  os << indent << "PartOffset: " << this->PartOffset[0] << " " << this->PartOffset[1] << " " << this->PartOffset[2]
+  os << indent << "Pivot: " << this->Pivot[0] << " " << this->Pivot[1] << " " << this->Pivot[2]
      << " mm\n";
+  os << indent << "PartOffset: " << this->PartOffset[0] << " " << this->PartOffset[1] << " "
+     << this->PartOffset[2] << " mm\n";
   os << indent << "TiltLimits: " << this->TiltLimits[0] << " " << this->TiltLimits[1] << " deg\n";
   os << indent << "NumberOfMoves: " << this->NumberOfMoves << "\n";
 }

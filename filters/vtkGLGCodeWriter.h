@@ -40,17 +40,15 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkWriter.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLGCodeWriter : public vtkWriter
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLGCodeWriter : public vtkWriter {
 public:
   static vtkGLGCodeWriter* New();
   vtkTypeMacro(vtkGLGCodeWriter, vtkWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum KinematicsType
-  {
-    AC = 0, ///< tilt A about X, then rotary C
-    BC = 1  ///< tilt B about Y, then rotary C
+  enum KinematicsType {
+    AC = 0,  ///< tilt A about X, then rotary C
+    BC = 1   ///< tilt B about Y, then rotary C
   };
 
   ///@{
@@ -102,14 +100,14 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+                             vtkInformationVector* outputVector) override;
   void WriteData() override;
 
   char* FileName = nullptr;
   int Kinematics = AC;
-  double Pivot[3] = { 0, 0, 0 };
-  double PartOffset[3] = { 0, 0, 0 };
-  double TiltLimits[2] = { -120.0, 120.0 };
+  double Pivot[3] = {0, 0, 0};
+  double PartOffset[3] = {0, 0, 0};
+  double TiltLimits[2] = {-120.0, 120.0};
 
 private:
   vtkGLGCodeWriter(const vtkGLGCodeWriter&) = delete;

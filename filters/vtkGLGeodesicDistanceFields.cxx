@@ -27,8 +27,7 @@
 
 vtkStandardNewMacro(vtkGLGeodesicDistanceFields);
 
-struct vtkGLGeodesicDistanceFields::SolverCache
-{
+struct vtkGLGeodesicDistanceFields::SolverCache {
   std::unique_ptr<geolattice::GeodesicDistanceFields> Solver;
   vtkMTimeType MeshTime = 0;
   geolattice::GeodesicFieldOptions Options;
@@ -36,78 +35,69 @@ struct vtkGLGeodesicDistanceFields::SolverCache
   double ProgressLo = 0, ProgressHi = 1;
 };
 
-namespace
-{
-bool sameSetUp(const geolattice::GeodesicFieldOptions& a, const geolattice::GeodesicFieldOptions& b)
-{
+namespace {
+bool sameSetUp(const geolattice::GeodesicFieldOptions& a,
+               const geolattice::GeodesicFieldOptions& b) {
   return a.timeFactor == b.timeFactor && a.reference == b.reference &&
-    a.referenceParallelDeg == b.referenceParallelDeg && a.backend == b.backend;
+         a.referenceParallelDeg == b.referenceParallelDeg && a.backend == b.backend;
 }
 
-vtkNew<vtkDoubleArray> pointArray(const char* name, const Eigen::VectorXd& values)
-{
+vtkNew<vtkDoubleArray> pointArray(const char* name, const Eigen::VectorXd& values) {
   vtkNew<vtkDoubleArray> a;
   a->SetName(name);
   a->SetNumberOfTuples(values.size());
-  for (Eigen::Index i = 0; i < values.size(); ++i)
-  {
+  for (Eigen::Index i = 0; i < values.size(); ++i) {
     a->SetValue(i, values[i]);
   }
   return a;
 }
 
-vtkNew<vtkDoubleArray> vectorArray(const char* name, const std::vector<geolattice::Vec3>& values)
-{
+vtkNew<vtkDoubleArray> vectorArray(const char* name, const std::vector<geolattice::Vec3>& values) {
   vtkNew<vtkDoubleArray> a;
   a->SetName(name);
   a->SetNumberOfComponents(3);
   a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  for (size_t i = 0; i < values.size(); ++i)
-  {
+  for (size_t i = 0; i < values.size(); ++i) {
     a->SetTypedTuple(static_cast<vtkIdType>(i), values[i].data());
   }
   return a;
 }
 
-} // namespace
+}  // namespace
 
-vtkGLGeodesicDistanceFields::vtkGLGeodesicDistanceFields()
-  : Cache(new SolverCache)
-{
+vtkGLGeodesicDistanceFields::vtkGLGeodesicDistanceFields() : Cache(new SolverCache) {
   // Default mask array for MASK_ARRAY mode; ParaView users pick any point array.
-  this->SetInputArrayToProcess(
-    0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, geolattice::arrays::HeatSource);
+  this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
+                               geolattice::arrays::HeatSource);
 }
 
 vtkGLGeodesicDistanceFields::~vtkGLGeodesicDistanceFields() = default;
 
-int vtkGLGeodesicDistanceFields::FillInputPortInformation(int, vtkInformation* info)
-{
+int vtkGLGeodesicDistanceFields::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
   return 1;
 }
 
-int vtkGLGeodesicDistanceFields::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
+int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                             vtkInformationVector* outputVector) {
   namespace gl = geolattice;
   // Collective in an MPI run: the whole tet mesh on one process (vtkGLParallel.h).
   const gl::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
   output->Initialize();
-  if (!inputs.Computes())
-  {
-    return 1; // another process has the mesh
+  if (!inputs.Computes()) {
+    return 1;  // another process has the mesh
   }
   vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
   const auto start = std::chrono::steady_clock::now();
-  try
-  {
+  try {
     gl::GeodesicFieldOptions options;
     options.timeFactor = this->TimeFactor;
-    options.reference = gl::Vec3(this->ReferenceVector[0], this->ReferenceVector[1], this->ReferenceVector[2]);
+    options.reference =
+        gl::Vec3(this->ReferenceVector[0], this->ReferenceVector[1], this->ReferenceVector[2]);
     options.referenceParallelDeg = this->ReferenceParallelAngle;
-    options.backend = this->UseCholmod ? gl::CholeskyBackend::Cholmod : gl::CholeskyBackend::EigenLDLT;
+    options.backend =
+        this->UseCholmod ? gl::CholeskyBackend::Cholmod : gl::CholeskyBackend::EigenLDLT;
     SolverCache& cache = *this->Cache;
     // The cached solver keeps these callbacks: they read the range of the current step.
     options.progress = [this](double f) {
@@ -118,12 +108,11 @@ int vtkGLGeodesicDistanceFields::RequestData(
 
     const vtkMTimeType meshTime = input ? input->GetMTime() : 0;
     // A gathered mesh (parts from several processes) is a new object on every call.
-    if (!cache.Solver || inputs.Gathered() || cache.MeshTime != meshTime || !sameSetUp(cache.Options, options))
-    {
+    if (!cache.Solver || inputs.Gathered() || cache.MeshTime != meshTime ||
+        !sameSetUp(cache.Options, options)) {
       cache.Solver.reset();
       const gl::TetMesh mesh = gl::toTetMesh(input);
-      if (gl::progressAborts(this, 0.05))
-      {
+      if (gl::progressAborts(this, 0.05)) {
         return 1;
       }
       cache.ProgressLo = 0.05;
@@ -132,25 +121,21 @@ int vtkGLGeodesicDistanceFields::RequestData(
       cache.MeshTime = meshTime;
       cache.Options = options;
     }
-    if (gl::progressAborts(this, 0.6))
-    {
+    if (gl::progressAborts(this, 0.6)) {
       return 1;
     }
 
     const gl::TetMesh& mesh = cache.Solver->mesh();
     std::vector<int> sources;
-    switch (this->SourceMode)
-    {
-      case MASK_ARRAY:
-      {
+    switch (this->SourceMode) {
+      case MASK_ARRAY: {
         vtkDataArray* mask = this->GetInputArrayToProcess(0, input);
-        if (!mask)
-        {
-          throw gl::GeoLatticeError("source mode is MASK_ARRAY but the selected point array is missing");
+        if (!mask) {
+          throw gl::GeoLatticeError(
+              "source mode is MASK_ARRAY but the selected point array is missing");
         }
         std::vector<double> values(mask->GetNumberOfTuples());
-        for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
-        {
+        for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i) {
           values[i] = mask->GetComponent(i, 0);
         }
         sources = gl::sourcesFromMask(mesh, values);
@@ -165,8 +150,7 @@ int vtkGLGeodesicDistanceFields::RequestData(
     cache.ProgressLo = 0.6;
     cache.ProgressHi = 0.95;
     const gl::GeodesicFields fields = cache.Solver->solve(sources);
-    if (gl::progressAborts(this, 0.95))
-    {
+    if (gl::progressAborts(this, 0.95)) {
       return 1;
     }
 
@@ -180,8 +164,7 @@ int vtkGLGeodesicDistanceFields::RequestData(
     isSource->SetName(gl::arrays::HeatSource);
     isSource->SetNumberOfTuples(input->GetNumberOfPoints());
     isSource->FillValue(0);
-    for (int s : sources)
-    {
+    for (int s : sources) {
       isSource->SetValue(s, 1);
     }
     pd->AddArray(isSource);
@@ -192,23 +175,26 @@ int vtkGLGeodesicDistanceFields::RequestData(
 
     vtkNew<vtkFieldData> fd;
     fd->DeepCopy(input->GetFieldData());
-    gl::addFieldArray(fd, gl::arrays::GammaRange, { fields.gamma.minCoeff(), fields.gamma.maxCoeff() });
-    gl::addFieldArray(fd, gl::arrays::AlphaRange, { fields.alpha.minCoeff(), fields.alpha.maxCoeff() });
-    gl::addFieldArray(fd, gl::arrays::BetaRange, { fields.beta.minCoeff(), fields.beta.maxCoeff() });
-    const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    gl::addFieldArray(fd, gl::arrays::GdfTimings,
-      { fields.timings.assembly, fields.timings.factorization, fields.timings.solve, total });
+    gl::addFieldArray(fd, gl::arrays::GammaRange,
+                      {fields.gamma.minCoeff(), fields.gamma.maxCoeff()});
+    gl::addFieldArray(fd, gl::arrays::AlphaRange,
+                      {fields.alpha.minCoeff(), fields.alpha.maxCoeff()});
+    gl::addFieldArray(fd, gl::arrays::BetaRange, {fields.beta.minCoeff(), fields.beta.maxCoeff()});
+    const double total =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    gl::addFieldArray(
+        fd, gl::arrays::GdfTimings,
+        {fields.timings.assembly, fields.timings.factorization, fields.timings.solve, total});
     const auto& dev = fields.orthogonalityDeviationDeg;
-    gl::addFieldArray(fd, gl::arrays::OrthogonalityDeg, { dev[0], dev[1], dev[2], dev[3] });
-    gl::addFieldArray(fd, gl::arrays::ReferenceFallbackTets, { static_cast<double>(fields.referenceFallbackTets) });
-    gl::addFieldArray(fd, gl::arrays::SourceCount, { static_cast<double>(sources.size()) });
+    gl::addFieldArray(fd, gl::arrays::OrthogonalityDeg, {dev[0], dev[1], dev[2], dev[3]});
+    gl::addFieldArray(fd, gl::arrays::ReferenceFallbackTets,
+                      {static_cast<double>(fields.referenceFallbackTets)});
+    gl::addFieldArray(fd, gl::arrays::SourceCount, {static_cast<double>(sources.size())});
     output->SetFieldData(fd);
     this->UpdateProgress(1.0);
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     output->Initialize();
-    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
     {
       vtkErrorMacro(<< e.what());
     }
@@ -216,15 +202,14 @@ int vtkGLGeodesicDistanceFields::RequestData(
   return 1;
 }
 
-void vtkGLGeodesicDistanceFields::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLGeodesicDistanceFields::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SourceMode: " << this->SourceMode << "\n";
   os << indent << "BaseTolerance: " << this->BaseTolerance << " mm\n";
   os << indent << "BaseFaceAngle: " << this->BaseFaceAngle << " deg\n";
   os << indent << "TimeFactor: " << this->TimeFactor << "\n";
-  os << indent << "ReferenceVector: " << this->ReferenceVector[0] << " " << this->ReferenceVector[1] << " "
-     << this->ReferenceVector[2] << "\n";
+  os << indent << "ReferenceVector: " << this->ReferenceVector[0] << " " << this->ReferenceVector[1]
+     << " " << this->ReferenceVector[2] << "\n";
   os << indent << "ReferenceParallelAngle: " << this->ReferenceParallelAngle << " deg\n";
   os << indent << "UseCholmod: " << this->UseCholmod << "\n";
 }

@@ -43,19 +43,13 @@
 
 #include <memory>
 
-class GEOLATTICEFILTERS_EXPORT vtkGLGeodesicDistanceFields : public vtkUnstructuredGridAlgorithm
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLGeodesicDistanceFields : public vtkUnstructuredGridAlgorithm {
 public:
   static vtkGLGeodesicDistanceFields* New();
   vtkTypeMacro(vtkGLGeodesicDistanceFields, vtkUnstructuredGridAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum SourceModes
-  {
-    LOWEST_Z = 0,
-    MASK_ARRAY = 1,
-    DOWNWARD_FACES = 2
-  };
+  enum SourceModes { LOWEST_Z = 0, MASK_ARRAY = 1, DOWNWARD_FACES = 2 };
 
   ///@{
   /// How the base (heat source) is chosen. Default LOWEST_Z.
@@ -111,7 +105,7 @@ protected:
   double BaseTolerance = 0.05;
   double BaseFaceAngle = 10.0;
   double TimeFactor = 4.0;
-  double ReferenceVector[3] = { 1.0, 0.0, 0.0 };
+  double ReferenceVector[3] = {1.0, 0.0, 0.0};
   double ReferenceParallelAngle = 1.0;
   vtkTypeBool UseCholmod = true;
 

@@ -33,26 +33,25 @@
 
 vtkStandardNewMacro(vtkGLLatticeInfill);
 
-namespace
-{
+namespace {
 namespace gl = geolattice;
 
-static_assert(static_cast<int>(gl::LatticeVertexKind::IsolinePoint) == gl::latticekind::VertexIsolinePoint &&
-    static_cast<int>(gl::LatticeVertexKind::Crossing) == gl::latticekind::VertexCrossing &&
-    static_cast<int>(gl::LatticeVertexKind::BoundaryHit) == gl::latticekind::VertexBoundaryHit &&
-    static_cast<int>(gl::LatticeVertexKind::Boundary) == gl::latticekind::VertexBoundary &&
-    static_cast<int>(gl::LatticeEdgeKind::Alpha) == gl::latticekind::EdgeAlpha &&
-    static_cast<int>(gl::LatticeEdgeKind::Beta) == gl::latticekind::EdgeBeta &&
-    static_cast<int>(gl::LatticeEdgeKind::Boundary) == gl::latticekind::EdgeBoundary,
-  "vtkGLArrayNames.h latticekind values must match core/lattice/LatticeGraph.h");
+static_assert(
+    static_cast<int>(gl::LatticeVertexKind::IsolinePoint) == gl::latticekind::VertexIsolinePoint &&
+        static_cast<int>(gl::LatticeVertexKind::Crossing) == gl::latticekind::VertexCrossing &&
+        static_cast<int>(gl::LatticeVertexKind::BoundaryHit) ==
+            gl::latticekind::VertexBoundaryHit &&
+        static_cast<int>(gl::LatticeVertexKind::Boundary) == gl::latticekind::VertexBoundary &&
+        static_cast<int>(gl::LatticeEdgeKind::Alpha) == gl::latticekind::EdgeAlpha &&
+        static_cast<int>(gl::LatticeEdgeKind::Beta) == gl::latticekind::EdgeBeta &&
+        static_cast<int>(gl::LatticeEdgeKind::Boundary) == gl::latticekind::EdgeBoundary,
+    "vtkGLArrayNames.h latticekind values must match core/lattice/LatticeGraph.h");
 
-vtkDataArray* requireArray(vtkDataSetAttributes* data, const char* name, const char* where)
-{
+vtkDataArray* requireArray(vtkDataSetAttributes* data, const char* name, const char* where) {
   vtkDataArray* a = data->GetArray(name);
-  if (!a)
-  {
+  if (!a) {
     throw gl::GeoLatticeError(std::string("input has no ") + where + " array '" + name +
-      "' (apply GL Curved Layer Slicer first)");
+                              "' (apply GL Curved Layer Slicer first)");
   }
   return a;
 }
@@ -60,10 +59,9 @@ vtkDataArray* requireArray(vtkDataSetAttributes* data, const char* name, const c
 /// The layers of the input polydata as core CurvedLayers: triangles grouped by LayerId, points
 /// copied per layer (a point shared by two layers becomes two layer points). inputPoint maps
 /// each layer point back to its input point id.
-gl::CurvedLayers toCurvedLayers(vtkPolyData* input, std::vector<vtkIdType>& inputPoint, bool& hasGamma)
-{
-  if (!input || input->GetNumberOfPolys() == 0)
-  {
+gl::CurvedLayers toCurvedLayers(vtkPolyData* input, std::vector<vtkIdType>& inputPoint,
+                                bool& hasGamma) {
+  if (!input || input->GetNumberOfPolys() == 0) {
     throw gl::GeoLatticeError("input has no layer triangles (apply GL Curved Layer Slicer first)");
   }
   vtkPointData* pd = input->GetPointData();
@@ -72,66 +70,57 @@ gl::CurvedLayers toCurvedLayers(vtkPolyData* input, std::vector<vtkIdType>& inpu
   vtkDataArray* layerId = requireArray(input->GetCellData(), gl::arrays::LayerId, "cell");
   vtkDataArray* gamma = pd->GetArray(gl::arrays::Gamma);
   vtkDataArray* normals = pd->GetNormals() ? pd->GetNormals() : pd->GetArray(gl::arrays::Normals);
-  if (normals && normals->GetNumberOfComponents() != 3)
-  {
+  if (normals && normals->GetNumberOfComponents() != 3) {
     normals = nullptr;
   }
   vtkDataArray* sourceEdge = pd->GetArray(gl::arrays::SourceEdge);
-  if (sourceEdge && sourceEdge->GetNumberOfComponents() != 2)
-  {
+  if (sourceEdge && sourceEdge->GetNumberOfComponents() != 2) {
     sourceEdge = nullptr;
   }
   hasGamma = gamma != nullptr;
 
   // Triangles with their layer id (cell ids of polys follow the verts and lines).
   const vtkIdType firstPoly = input->GetNumberOfVerts() + input->GetNumberOfLines();
-  struct Tri
-  {
+  struct Tri {
     int layer;
     vtkIdType ids[3];
   };
   std::vector<Tri> tris;
   tris.reserve(input->GetNumberOfPolys());
   auto it = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell())
-  {
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
     vtkIdType n;
     const vtkIdType* ids;
     it->GetCurrentCell(n, ids);
     const vtkIdType cell = firstPoly + it->GetCurrentCellId();
-    if (n != 3)
-    {
+    if (n != 3) {
       throw gl::GeoLatticeError("cell " + std::to_string(cell) + " has " + std::to_string(n) +
-        " points: the layers must be triangles (apply Triangulate)");
+                                " points: the layers must be triangles (apply Triangulate)");
     }
     const double id = layerId->GetComponent(cell, 0);
-    if (!std::isfinite(id))
-    {
+    if (!std::isfinite(id)) {
       throw gl::GeoLatticeError("cell " + std::to_string(cell) + " has a non-finite LayerId");
     }
-    tris.push_back({ static_cast<int>(id), { ids[0], ids[1], ids[2] } });
+    tris.push_back({static_cast<int>(id), {ids[0], ids[1], ids[2]}});
   }
-  std::stable_sort(tris.begin(), tris.end(), [](const Tri& a, const Tri& b) { return a.layer < b.layer; });
+  std::stable_sort(tris.begin(), tris.end(),
+                   [](const Tri& a, const Tri& b) { return a.layer < b.layer; });
 
   gl::CurvedLayers c;
   c.layerPointOffset.push_back(0);
   c.layerTriangleOffset.push_back(0);
   std::vector<int> local(input->GetNumberOfPoints(), -1);
   std::vector<vtkIdType> touched;
-  for (size_t i = 0; i < tris.size();)
-  {
+  for (size_t i = 0; i < tris.size();) {
     const int layer = tris[i].layer;
     const int l = static_cast<int>(c.layerValues.size());
     double gammaSum = 0;
     touched.clear();
-    for (; i < tris.size() && tris[i].layer == layer; ++i)
-    {
+    for (; i < tris.size() && tris[i].layer == layer; ++i) {
       std::array<int, 3> f;
-      for (int k = 0; k < 3; ++k)
-      {
+      for (int k = 0; k < 3; ++k) {
         const vtkIdType p = tris[i].ids[k];
-        if (local[p] < 0)
-        {
+        if (local[p] < 0) {
           local[p] = static_cast<int>(c.points.size());
           touched.push_back(p);
           inputPoint.push_back(p);
@@ -140,13 +129,13 @@ gl::CurvedLayers toCurvedLayers(vtkPolyData* input, std::vector<vtkIdType>& inpu
           c.points.emplace_back(x[0], x[1], x[2]);
           c.alpha.push_back(alpha->GetComponent(p, 0));
           c.beta.push_back(beta->GetComponent(p, 0));
-          c.normals.push_back(normals
-              ? gl::Vec3(normals->GetComponent(p, 0), normals->GetComponent(p, 1), normals->GetComponent(p, 2))
-              : gl::Vec3::Zero());
-          if (sourceEdge)
-          {
-            c.sourceEdge.push_back({ static_cast<int>(sourceEdge->GetComponent(p, 0)),
-              static_cast<int>(sourceEdge->GetComponent(p, 1)) });
+          c.normals.push_back(normals ? gl::Vec3(normals->GetComponent(p, 0),
+                                                 normals->GetComponent(p, 1),
+                                                 normals->GetComponent(p, 2))
+                                      : gl::Vec3::Zero());
+          if (sourceEdge) {
+            c.sourceEdge.push_back({static_cast<int>(sourceEdge->GetComponent(p, 0)),
+                                    static_cast<int>(sourceEdge->GetComponent(p, 1))});
           }
           c.pointLayer.push_back(l);
           gammaSum += gamma ? gamma->GetComponent(p, 0) : 0.0;
@@ -156,29 +145,24 @@ gl::CurvedLayers toCurvedLayers(vtkPolyData* input, std::vector<vtkIdType>& inpu
       c.triangles.push_back(f);
       c.triangleLayer.push_back(l);
     }
-    for (vtkIdType p : touched)
-    {
+    for (vtkIdType p : touched) {
       local[p] = -1;
     }
     c.layerIndex.push_back(layer);
-    c.layerValues.push_back(
-      gamma ? gammaSum / static_cast<double>(touched.size()) : std::numeric_limits<double>::quiet_NaN());
+    c.layerValues.push_back(gamma ? gammaSum / static_cast<double>(touched.size())
+                                  : std::numeric_limits<double>::quiet_NaN());
     c.layerPointOffset.push_back(static_cast<int>(c.points.size()));
     c.layerTriangleOffset.push_back(static_cast<int>(c.triangles.size()));
   }
-  if (!normals)
-  {
+  if (!normals) {
     // Area-weighted normals of the triangles (their orientation is the slicer's +∇γ).
-    for (const auto& f : c.triangles)
-    {
+    for (const auto& f : c.triangles) {
       const gl::Vec3 n = (c.points[f[1]] - c.points[f[0]]).cross(c.points[f[2]] - c.points[f[0]]);
-      for (int v : f)
-      {
+      for (int v : f) {
         c.normals[v] += n;
       }
     }
-    for (gl::Vec3& n : c.normals)
-    {
+    for (gl::Vec3& n : c.normals) {
       const double len = n.norm();
       n = len > 0 ? gl::Vec3(n / len) : gl::Vec3::Zero();
     }
@@ -186,21 +170,18 @@ gl::CurvedLayers toCurvedLayers(vtkPolyData* input, std::vector<vtkIdType>& inpu
   return c;
 }
 
-vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n)
-{
+vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n) {
   auto a = vtkSmartPointer<vtkIntArray>::New();
   a->SetName(name);
   a->SetNumberOfTuples(n);
   return a;
 }
 
-void addCount(vtkFieldData* fd, const char* name, double value)
-{
-  gl::addFieldArray(fd, name, { value });
+void addCount(vtkFieldData* fd, const char* name, double value) {
+  gl::addFieldArray(fd, name, {value});
 }
 
-void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out)
-{
+void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out) {
   const vtkIdType V = static_cast<vtkIdType>(g.points.size());
   const vtkIdType E = static_cast<vtkIdType>(g.edges.size());
   vtkNew<vtkPoints> points;
@@ -219,8 +200,7 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out)
   auto kind = intArray(gl::arrays::VertexKind, V);
   auto degree = intArray(gl::arrays::Degree, V);
   auto vertexSubgraph = intArray(gl::arrays::SubgraphId, V);
-  for (vtkIdType v = 0; v < V; ++v)
-  {
+  for (vtkIdType v = 0; v < V; ++v) {
     points->SetPoint(v, g.points[v].data());
     normals->SetTypedTuple(v, g.normals[v].data());
     gamma->SetValue(v, g.gamma[v]);
@@ -239,25 +219,23 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out)
   vtkNew<vtkDoubleArray> level;
   level->SetName(gl::arrays::IsolineLevel);
   level->SetNumberOfTuples(E);
-  for (vtkIdType e = 0; e < E; ++e)
-  {
-    const vtkIdType ids[2] = { g.edges[e][0], g.edges[e][1] };
+  for (vtkIdType e = 0; e < E; ++e) {
+    const vtkIdType ids[2] = {g.edges[e][0], g.edges[e][1]};
     lines->InsertNextCell(2, ids);
     edgeKind->SetValue(e, static_cast<int>(g.edgeKind[e]));
     layerId->SetValue(e, g.layerIndex[g.edgeLayer[e]]);
     edgeSubgraph->SetValue(e, g.edgeSubgraph[e]);
     const gl::LatticeEdgeKind k = g.edgeKind[e];
-    level->SetValue(e, k == gl::LatticeEdgeKind::Alpha ? g.alphaLevels[g.edgeLevel[e]]
-        : k == gl::LatticeEdgeKind::Beta              ? g.betaLevels[g.edgeLevel[e]]
-                                                      : std::numeric_limits<double>::quiet_NaN());
+    level->SetValue(e, k == gl::LatticeEdgeKind::Alpha  ? g.alphaLevels[g.edgeLevel[e]]
+                       : k == gl::LatticeEdgeKind::Beta ? g.betaLevels[g.edgeLevel[e]]
+                                                        : std::numeric_limits<double>::quiet_NaN());
   }
   out->SetLines(lines);
   vtkPointData* pd = out->GetPointData();
   pd->AddArray(kind);
   pd->AddArray(degree);
   pd->SetNormals(normals);
-  if (hasGamma)
-  {
+  if (hasGamma) {
     pd->AddArray(gamma);
   }
   pd->AddArray(alpha);
@@ -283,8 +261,7 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out)
   gl::addFieldArray(fd, gl::arrays::LatticeAlphaLevels, g.alphaLevels);
   gl::addFieldArray(fd, gl::arrays::LatticeBetaLevels, g.betaLevels);
   std::vector<double> subLayer, subLength, subCentroid;
-  for (const gl::LatticeSubgraph& s : g.subgraphs)
-  {
+  for (const gl::LatticeSubgraph& s : g.subgraphs) {
     subLayer.push_back(g.layerIndex[s.layer]);
     subLength.push_back(s.length);
     subCentroid.insert(subCentroid.end(), s.centroid.data(), s.centroid.data() + 3);
@@ -293,34 +270,30 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out)
   gl::addFieldArray(fd, gl::arrays::SubgraphLength, subLength);
   gl::addFieldArray(fd, gl::arrays::SubgraphCentroid, subCentroid, 3);
 }
-} // namespace
+}  // namespace
 
 vtkGLLatticeInfill::vtkGLLatticeInfill() = default;
 
-int vtkGLLatticeInfill::FillInputPortInformation(int, vtkInformation* info)
-{
+int vtkGLLatticeInfill::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
 }
 
-int vtkGLLatticeInfill::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
+int vtkGLLatticeInfill::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                    vtkInformationVector* outputVector) {
   // Collective in an MPI run: all the layers on one process (vtkGLParallel.h).
   const gl::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  if (!inputs.Computes())
-  {
-    return 1; // another process has the layers
+  if (!inputs.Computes()) {
+    return 1;  // another process has the layers
   }
   vtkPolyData* input = inputs.Get<vtkPolyData>(0);
-  try
-  {
-    if (!(this->AlphaWidth > 0) || !(this->BetaWidth > 0))
-    {
-      throw gl::GeoLatticeError("lattice widths must be > 0 mm (AlphaWidth " + std::to_string(this->AlphaWidth) +
-        ", BetaWidth " + std::to_string(this->BetaWidth) + ")");
+  try {
+    if (!(this->AlphaWidth > 0) || !(this->BetaWidth > 0)) {
+      throw gl::GeoLatticeError("lattice widths must be > 0 mm (AlphaWidth " +
+                                std::to_string(this->AlphaWidth) + ", BetaWidth " +
+                                std::to_string(this->BetaWidth) + ")");
     }
     std::vector<vtkIdType> inputPoint;
     bool hasGamma = false;
@@ -337,60 +310,50 @@ int vtkGLLatticeInfill::RequestData(
     // Graded lattice: the width scale array, if one is selected.
     std::string scaleName;
     vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
-    if (arrayInfo && arrayInfo->Has(vtkDataObject::FIELD_NAME()))
-    {
+    if (arrayInfo && arrayInfo->Has(vtkDataObject::FIELD_NAME())) {
       scaleName = arrayInfo->Get(vtkDataObject::FIELD_NAME());
     }
-    if (!scaleName.empty() && scaleName != "None")
-    {
+    if (!scaleName.empty() && scaleName != "None") {
       vtkDataArray* scale = input->GetPointData()->GetArray(scaleName.c_str());
-      if (!scale)
-      {
-        throw gl::GeoLatticeError("the width scale array '" + scaleName + "' is not a point array of the input");
+      if (!scale) {
+        throw gl::GeoLatticeError("the width scale array '" + scaleName +
+                                  "' is not a point array of the input");
       }
       options.widthScale.resize(inputPoint.size());
-      for (size_t p = 0; p < inputPoint.size(); ++p)
-      {
+      for (size_t p = 0; p < inputPoint.size(); ++p) {
         options.widthScale[p] = scale->GetComponent(inputPoint[p], 0);
       }
     }
     options.progress = gl::progressRange(this, 0.1, 0.9);
     options.shouldAbort = gl::abortFlag(this);
-    if (gl::progressAborts(this, 0.1))
-    {
+    if (gl::progressAborts(this, 0.1)) {
       return 1;
     }
 
     const gl::LatticeGraph graph = gl::buildLatticeGraph(layers, options);
-    if (gl::progressAborts(this, 0.9))
-    {
+    if (gl::progressAborts(this, 0.9)) {
       return 1;
     }
     buildOutput(graph, hasGamma, output);
-    if (graph.stats.isolineEdges == 0)
-    {
+    if (graph.stats.isolineEdges == 0) {
       const auto [aLo, aHi] = std::minmax_element(layers.alpha.begin(), layers.alpha.end());
       const auto [bLo, bHi] = std::minmax_element(layers.beta.begin(), layers.beta.end());
-      vtkWarningMacro(<< "empty lattice: no α- or β-isoline crosses the layers (α range [" << *aLo << ", " << *aHi
-                      << "] mm, AlphaWidth " << this->AlphaWidth << " mm; β range [" << *bLo << ", " << *bHi
-                      << "] mm, BetaWidth " << this->BetaWidth
+      vtkWarningMacro(<< "empty lattice: no α- or β-isoline crosses the layers (α range [" << *aLo
+                      << ", " << *aHi << "] mm, AlphaWidth " << this->AlphaWidth << " mm; β range ["
+                      << *bLo << ", " << *bHi << "] mm, BetaWidth " << this->BetaWidth
                       << " mm); only the layer boundaries are output (LatticeIsolineEdges = 0)");
     }
     this->UpdateProgress(1.0);
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     output->Initialize();
-    if (!this->GetAbortExecute())
-    {
+    if (!this->GetAbortExecute()) {
       vtkErrorMacro(<< e.what());
     }
   }
   return 1;
 }
 
-void vtkGLLatticeInfill::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLLatticeInfill::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "AlphaWidth: " << this->AlphaWidth << " mm\n";
   os << indent << "BetaWidth: " << this->BetaWidth << " mm\n";

@@ -46,8 +46,7 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLLatticeInfill : public vtkPolyDataAlgorithm
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLLatticeInfill : public vtkPolyDataAlgorithm {
 public:
   static vtkGLLatticeInfill* New();
   vtkTypeMacro(vtkGLLatticeInfill, vtkPolyDataAlgorithm);

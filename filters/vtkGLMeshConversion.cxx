@@ -49,7 +49,7 @@ vtkNew<vtkPoints> writePoints(const std::vector<Vec3>& points) {
   }
   return out;
 }
-} // namespace
+}  // namespace
 
 TriangleSurface toTriangleSurface(vtkPolyData* poly) {
   if (!poly || poly->GetNumberOfPolys() == 0) {
@@ -81,7 +81,8 @@ TetMesh toTetMesh(vtkUnstructuredGrid* grid) {
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
     if (grid->GetCellType(c) != VTK_TETRA) {
-      throw GeoLatticeError("cell " + std::to_string(c) + " is not a linear tetrahedron (VTK type " +
+      throw GeoLatticeError("cell " + std::to_string(c) +
+                            " is not a linear tetrahedron (VTK type " +
                             std::to_string(grid->GetCellType(c)) + ")");
     }
     grid->GetCellPoints(c, ids);
@@ -96,7 +97,8 @@ void fromTetMesh(const TetMesh& mesh, vtkUnstructuredGrid* grid) {
   grid->Initialize();
   grid->SetPoints(writePoints(mesh.points));
   vtkNew<vtkCellArray> cells;
-  cells->AllocateExact(static_cast<vtkIdType>(mesh.tets.size()), 4 * static_cast<vtkIdType>(mesh.tets.size()));
+  cells->AllocateExact(static_cast<vtkIdType>(mesh.tets.size()),
+                       4 * static_cast<vtkIdType>(mesh.tets.size()));
   for (const auto& t : mesh.tets) {
     const vtkIdType ids[4] = {t[0], t[1], t[2], t[3]};
     cells->InsertNextCell(4, ids);
@@ -122,8 +124,8 @@ namespace {
 int integerValue(vtkDataArray* a, vtkIdType tuple, const char* what) {
   const double v = a->GetComponent(tuple, 0);
   if (!std::isfinite(v) || v != std::floor(v) || std::abs(v) > 1e9) {
-    throw GeoLatticeError(std::string(what) + " " + std::to_string(tuple) + " has " + a->GetName() + " " +
-                          std::to_string(v) + ", which is not an integer");
+    throw GeoLatticeError(std::string(what) + " " + std::to_string(tuple) + " has " + a->GetName() +
+                          " " + std::to_string(v) + ", which is not an integer");
   }
   return static_cast<int>(v);
 }
@@ -143,11 +145,12 @@ bool groupOffsets(const std::vector<int>& values, int groups, std::vector<int>& 
   }
   return true;
 }
-} // namespace
+}  // namespace
 
 LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
   if (!lattice || lattice->GetNumberOfLines() == 0 || lattice->GetNumberOfPoints() == 0) {
-    throw GeoLatticeError("empty lattice: the input has no line cells (apply GL Lattice Infill first)");
+    throw GeoLatticeError(
+        "empty lattice: the input has no line cells (apply GL Lattice Infill first)");
   }
   vtkPointData* pd = lattice->GetPointData();
   vtkCellData* cd = lattice->GetCellData();
@@ -164,16 +167,18 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
     normals = pd->GetNormals();
   }
   if (!normals || normals->GetNumberOfComponents() != 3) {
-    throw GeoLatticeError("lattice has no Normals point array with 3 components (the nozzle directions)");
+    throw GeoLatticeError(
+        "lattice has no Normals point array with 3 components (the nozzle directions)");
   }
   vtkDataArray* gamma = pd->GetArray(arrays::Gamma);
   if (!gamma) {
-    throw GeoLatticeError("lattice has no Gamma point array (the layer values; slice with GL Curved Layer Slicer, "
-                          "which writes Gamma, before GL Lattice Infill)");
+    throw GeoLatticeError(
+        "lattice has no Gamma point array (the layer values; slice with GL Curved Layer Slicer, "
+        "which writes Gamma, before GL Lattice Infill)");
   }
   vtkDataArray* pointSubgraph = pd->GetArray(arrays::SubgraphId);
-  vtkDataArray* cellKind = cd->GetArray(arrays::EdgeKind);    // optional
-  vtkDataArray* pointKind = pd->GetArray(arrays::VertexKind); // optional
+  vtkDataArray* cellKind = cd->GetArray(arrays::EdgeKind);     // optional
+  vtkDataArray* pointKind = pd->GetArray(arrays::VertexKind);  // optional
 
   LatticeGraph g;
   const vtkIdType V = lattice->GetNumberOfPoints();
@@ -187,8 +192,8 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
     if (pointKind) {
       const int kind = integerValue(pointKind, v, "lattice point");
       if (kind < latticekind::VertexIsolinePoint || kind > latticekind::VertexBoundary) {
-        throw GeoLatticeError("lattice point " + std::to_string(v) + " has VertexKind " + std::to_string(kind) +
-                              "; vertex kinds are 0..3");
+        throw GeoLatticeError("lattice point " + std::to_string(v) + " has VertexKind " +
+                              std::to_string(kind) + "; vertex kinds are 0..3");
       }
       g.vertexKind[v] = static_cast<LatticeVertexKind>(kind);
     }
@@ -200,7 +205,7 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
 
   // Edges: line cells (cell ids of lines follow the vertex cells), polylines split.
   const vtkIdType firstLine = lattice->GetNumberOfVerts();
-  std::vector<int> rawLayer; // LayerId value per edge
+  std::vector<int> rawLayer;  // LayerId value per edge
   auto it = vtk::TakeSmartPointer(lattice->GetLines()->NewIterator());
   for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
     vtkIdType n;
@@ -208,18 +213,19 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
     it->GetCurrentCell(n, ids);
     const vtkIdType cell = firstLine + it->GetCurrentCellId();
     if (n < 2) {
-      throw GeoLatticeError("lattice line cell " + std::to_string(cell) + " has " + std::to_string(n) +
-                            " point(s); a line needs at least 2");
+      throw GeoLatticeError("lattice line cell " + std::to_string(cell) + " has " +
+                            std::to_string(n) + " point(s); a line needs at least 2");
     }
     const int s = integerValue(cellSubgraph, cell, "lattice line cell");
     if (s < 0) {
-      throw GeoLatticeError("lattice line cell " + std::to_string(cell) + " has SubgraphId " + std::to_string(s) +
-                            "; sub-graph ids must be 0..K-1");
+      throw GeoLatticeError("lattice line cell " + std::to_string(cell) + " has SubgraphId " +
+                            std::to_string(s) + "; sub-graph ids must be 0..K-1");
     }
     const int layer = integerValue(cellLayer, cell, "lattice line cell");
     const int kind = cellKind ? integerValue(cellKind, cell, "lattice line cell") : 0;
     if (kind < latticekind::EdgeAlpha || kind > latticekind::EdgeBoundary) {
-      throw GeoLatticeError("lattice line cell " + std::to_string(cell) + " has EdgeKind " + std::to_string(kind) +
+      throw GeoLatticeError("lattice line cell " + std::to_string(cell) + " has EdgeKind " +
+                            std::to_string(kind) +
                             "; edge kinds are 0 (alpha), 1 (beta) and 2 (boundary)");
     }
     for (vtkIdType k = 0; k + 1 < n; ++k) {
@@ -253,7 +259,8 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
     if (subgraphLayer[s] < 0) {
       subgraphLayer[s] = g.edgeLayer[e];
     } else if (subgraphLayer[s] != g.edgeLayer[e]) {
-      throw GeoLatticeError("sub-graph " + std::to_string(s) + " has line cells on two layers (LayerId " +
+      throw GeoLatticeError("sub-graph " + std::to_string(s) +
+                            " has line cells on two layers (LayerId " +
                             std::to_string(g.layerIndex[subgraphLayer[s]]) + " and " +
                             std::to_string(g.layerIndex[g.edgeLayer[e]]) + ")");
     }
@@ -268,8 +275,9 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
   }
   for (int s = 0; s < K; ++s) {
     if (subgraphLayer[s] < 0) {
-      throw GeoLatticeError("sub-graph ids must be 0..K-1 without gaps: no line cell has SubgraphId " +
-                            std::to_string(s) + " (largest id " + std::to_string(K - 1) + ")");
+      throw GeoLatticeError(
+          "sub-graph ids must be 0..K-1 without gaps: no line cell has SubgraphId " +
+          std::to_string(s) + " (largest id " + std::to_string(K - 1) + ")");
     }
   }
 
@@ -285,7 +293,8 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
         g.vertexLayer[v] = g.edgeLayer[e];
       } else if (g.vertexSubgraph[v] != g.edgeSubgraph[e]) {
         throw GeoLatticeError("lattice point " + std::to_string(v) + " is shared by sub-graphs " +
-                              std::to_string(g.vertexSubgraph[v]) + " and " + std::to_string(g.edgeSubgraph[e]));
+                              std::to_string(g.vertexSubgraph[v]) + " and " +
+                              std::to_string(g.edgeSubgraph[e]));
       }
     }
   }
@@ -293,12 +302,13 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
     const int own = pointSubgraph ? integerValue(pointSubgraph, v, "lattice point") : -1;
     if (g.degree[v] > 0) {
       if (pointSubgraph && own != g.vertexSubgraph[v]) {
-        throw GeoLatticeError("lattice point " + std::to_string(v) + " has SubgraphId " + std::to_string(own) +
-                              " but its line cells belong to sub-graph " + std::to_string(g.vertexSubgraph[v]));
+        throw GeoLatticeError("lattice point " + std::to_string(v) + " has SubgraphId " +
+                              std::to_string(own) + " but its line cells belong to sub-graph " +
+                              std::to_string(g.vertexSubgraph[v]));
       }
       continue;
     }
-    if (own >= 0 && own < K) { // an isolated point of a sub-graph
+    if (own >= 0 && own < K) {  // an isolated point of a sub-graph
       g.vertexSubgraph[v] = own;
       g.vertexLayer[v] = subgraphLayer[own];
     }
@@ -319,7 +329,7 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
   for (int l = 0; l < L; ++l) {
     g.layerValues[l] /= layerCount[l];
   }
-  for (vtkIdType v = 0; v < V; ++v) { // points without a sub-graph: the layer of the nearest φ
+  for (vtkIdType v = 0; v < V; ++v) {  // points without a sub-graph: the layer of the nearest φ
     if (g.vertexLayer[v] < 0) {
       int best = 0;
       for (int l = 1; l < L; ++l) {
@@ -343,7 +353,7 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
     sub.indexInLayer = nextInLayer[sub.layer]++;
     if (centroidWeight[s] > 0) {
       sub.centroid /= centroidWeight[s];
-    } else { // only zero-length edges: their mean point
+    } else {  // only zero-length edges: their mean point
       sub.centroid = Vec3::Zero();
       for (size_t e = 0; e < g.edges.size(); ++e) {
         if (g.edgeSubgraph[e] == s) {
@@ -354,7 +364,8 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
   }
 
   // Layer offsets, when everything is grouped by layer (as the lattice filter writes it).
-  if (!groupOffsets(g.vertexLayer, L, g.layerVertexOffset) || !groupOffsets(g.edgeLayer, L, g.layerEdgeOffset) ||
+  if (!groupOffsets(g.vertexLayer, L, g.layerVertexOffset) ||
+      !groupOffsets(g.edgeLayer, L, g.layerEdgeOffset) ||
       !groupOffsets(subgraphLayer, L, g.layerSubgraphOffset)) {
     g.layerVertexOffset.clear();
     g.layerEdgeOffset.clear();
@@ -377,21 +388,21 @@ SkeletonTree toSkeletonTree(vtkPolyData* skeleton) {
   const vtkIdType N = skeleton->GetNumberOfPoints();
   SkeletonTree tree;
   tree.nodes.resize(N);
-  std::vector<int> node(N); // point -> node
+  std::vector<int> node(N);  // point -> node
   std::vector<char> seen(N, 0);
   for (vtkIdType p = 0; p < N; ++p) {
     const int id = nodeId ? integerValue(nodeId, p, "skeleton point") : static_cast<int>(p);
     if (id < 0 || id >= N || seen[id]) {
-      throw GeoLatticeError("skeleton NodeId is not a permutation of 0.." + std::to_string(N - 1) + " (point " +
-                            std::to_string(p) + " has " + std::to_string(id) + ")");
+      throw GeoLatticeError("skeleton NodeId is not a permutation of 0.." + std::to_string(N - 1) +
+                            " (point " + std::to_string(p) + " has " + std::to_string(id) + ")");
     }
     seen[id] = 1;
     node[p] = id;
     SkeletonNode& n = tree.nodes[id];
     n.layer = integerValue(layer, p, "skeleton point");
     if (n.layer < 0) {
-      throw GeoLatticeError("skeleton point " + std::to_string(p) + " has LayerId " + std::to_string(n.layer) +
-                            "; lattice layers are 0..L-1");
+      throw GeoLatticeError("skeleton point " + std::to_string(p) + " has LayerId " +
+                            std::to_string(n.layer) + "; lattice layers are 0..L-1");
     }
     double x[3];
     skeleton->GetPoint(p, x);
@@ -413,11 +424,13 @@ SkeletonTree toSkeletonTree(vtkPolyData* skeleton) {
     const vtkIdType* ids;
     it->GetCurrentCell(n, ids);
     if (n != 2) {
-      throw GeoLatticeError("skeleton line cell " + std::to_string(firstLine + it->GetCurrentCellId()) + " has " +
-                            std::to_string(n) + " points; each edge must be a 2-point line (lower, upper)");
+      throw GeoLatticeError(
+          "skeleton line cell " + std::to_string(firstLine + it->GetCurrentCellId()) + " has " +
+          std::to_string(n) + " points; each edge must be a 2-point line (lower, upper)");
     }
     if (ids[0] < 0 || ids[0] >= N || ids[1] < 0 || ids[1] >= N) {
-      throw GeoLatticeError("skeleton line cell " + std::to_string(firstLine + it->GetCurrentCellId()) +
+      throw GeoLatticeError("skeleton line cell " +
+                            std::to_string(firstLine + it->GetCurrentCellId()) +
                             " uses a point id out of range");
     }
     int a = node[ids[0]], b = node[ids[1]];
@@ -432,8 +445,9 @@ SkeletonTree toSkeletonTree(vtkPolyData* skeleton) {
     tree.nodes[e[0]].upper.push_back(e[1]);
     tree.nodes[e[1]].lower.push_back(e[0]);
   }
-  const int firstLayer = static_cast<int>(std::find_if(count.begin(), count.end(), [](int c) { return c > 0; }) -
-                                          count.begin()); // as buildSkeletonTree: the lowest layer with a node
+  const int firstLayer =
+      static_cast<int>(std::find_if(count.begin(), count.end(), [](int c) { return c > 0; }) -
+                       count.begin());  // as buildSkeletonTree: the lowest layer with a node
   for (SkeletonNode& n : tree.nodes) {
     std::sort(n.lower.begin(), n.lower.end());
     std::sort(n.upper.begin(), n.upper.end());
@@ -453,15 +467,16 @@ SkeletonTree toSkeletonTree(vtkPolyData* skeleton) {
 
 void matchSkeletonToLattice(SkeletonTree& tree, const LatticeGraph& graph) {
   if (tree.nodes.size() != graph.subgraphs.size()) {
-    throw GeoLatticeError("the skeleton has " + std::to_string(tree.nodes.size()) + " nodes but the lattice has " +
-                          std::to_string(graph.subgraphs.size()) +
+    throw GeoLatticeError("the skeleton has " + std::to_string(tree.nodes.size()) +
+                          " nodes but the lattice has " + std::to_string(graph.subgraphs.size()) +
                           " sub-graphs (connect the GL Skeleton Tree of this lattice)");
   }
   for (size_t i = 0; i < tree.nodes.size(); ++i) {
     if (tree.nodes[i].layer != graph.subgraphs[i].layer) {
       throw GeoLatticeError("skeleton node " + std::to_string(i) + " is on lattice layer " +
-                            std::to_string(tree.nodes[i].layer) + " but sub-graph " + std::to_string(i) +
-                            " of the lattice is on layer " + std::to_string(graph.subgraphs[i].layer) +
+                            std::to_string(tree.nodes[i].layer) + " but sub-graph " +
+                            std::to_string(i) + " of the lattice is on layer " +
+                            std::to_string(graph.subgraphs[i].layer) +
                             " (connect the GL Skeleton Tree of this lattice)");
     }
   }
@@ -473,7 +488,8 @@ void matchSkeletonToLattice(SkeletonTree& tree, const LatticeGraph& graph) {
 ToolpathArrays toToolpathArrays(vtkPolyData* toolpath) {
   const vtkIdType n = toolpath && toolpath->GetPoints() ? toolpath->GetNumberOfPoints() : 0;
   if (n == 0) {
-    throw GeoLatticeError("empty toolpath: the input has no points (connect the output of GL Toolpath Planner)");
+    throw GeoLatticeError(
+        "empty toolpath: the input has no points (connect the output of GL Toolpath Planner)");
   }
   vtkPointData* pd = toolpath->GetPointData();
   auto array = [pd](const char* name, int components) {
@@ -524,7 +540,8 @@ ToolpathArrays toToolpathArrays(vtkPolyData* toolpath) {
                             "; feed rates must be > 0 mm/s");
     }
     t.kind[i] = integerValue(kind, i, "toolpath point");
-    if (t.kind[i] != movekind::Print && t.kind[i] != movekind::Perimeter && t.kind[i] != movekind::Air) {
+    if (t.kind[i] != movekind::Print && t.kind[i] != movekind::Perimeter &&
+        t.kind[i] != movekind::Air) {
       throw GeoLatticeError(at + " has " + arrays::MoveKind + " " + std::to_string(t.kind[i]) +
                             " (0 print, 1 perimeter, 2 air)");
     }
@@ -533,7 +550,8 @@ ToolpathArrays toToolpathArrays(vtkPolyData* toolpath) {
   return t;
 }
 
-NozzleModel nozzleModel(double angleDeg, double length, double holderRadius, double tipClearance, double tipFaceRadius) {
+NozzleModel nozzleModel(double angleDeg, double length, double holderRadius, double tipClearance,
+                        double tipFaceRadius) {
   NozzleModel nozzle;
   nozzle.halfAngleDeg = angleDeg;
   nozzle.length = length == 0 ? std::numeric_limits<double>::infinity() : length;
@@ -544,7 +562,8 @@ NozzleModel nozzleModel(double angleDeg, double length, double holderRadius, dou
   return nozzle;
 }
 
-vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components) {
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values,
+                                            int components) {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
   a->SetName(name);
   a->SetNumberOfComponents(components);
@@ -553,8 +572,9 @@ vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<
   return a;
 }
 
-void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values, int components) {
+void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values,
+                   int components) {
   fd->AddArray(doubleArray(name, values, components));
 }
 
-} // namespace geolattice
+}  // namespace geolattice

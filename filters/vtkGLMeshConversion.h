@@ -67,12 +67,12 @@ void matchSkeletonToLattice(SkeletonTree& tree, const LatticeGraph& graph);
 
 /// A toolpath as the program writers (core/program/) need it, per point in point order.
 struct ToolpathArrays {
-  std::vector<Vec3> points;      ///< mm, part (platform) frame
-  std::vector<Vec3> normals;     ///< unit nozzle axes (normalized here)
-  std::vector<double> extrusion; ///< cumulative filament E (mm)
-  std::vector<double> feedRate;  ///< mm/s
-  std::vector<int> kind;         ///< movekind: 0 print, 1 perimeter, 2 air
-  std::vector<int> layer;        ///< the lattice's LayerId, -1 on air moves
+  std::vector<Vec3> points;       ///< mm, part (platform) frame
+  std::vector<Vec3> normals;      ///< unit nozzle axes (normalized here)
+  std::vector<double> extrusion;  ///< cumulative filament E (mm)
+  std::vector<double> feedRate;   ///< mm/s
+  std::vector<int> kind;          ///< movekind: 0 print, 1 perimeter, 2 air
+  std::vector<int> layer;         ///< the lattice's LayerId, -1 on air moves
 };
 
 /// The toolpath from the output of vtkGLToolpathPlanner: its points in point order (the printing
@@ -86,11 +86,14 @@ ToolpathArrays toToolpathArrays(vtkPolyData* toolpath);
 /// A named double array of values.size() / components tuples holding values.
 /// The nozzle of the filters' properties (NozzleLength 0 = cone only); validated, throws
 /// GeoLatticeError naming a bad parameter.
-NozzleModel nozzleModel(double angleDeg, double length, double holderRadius, double tipClearance, double tipFaceRadius);
+NozzleModel nozzleModel(double angleDeg, double length, double holderRadius, double tipClearance,
+                        double tipFaceRadius);
 
-vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values, int components = 1);
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values,
+                                            int components = 1);
 /// Adds doubleArray(name, values, components) to the field data (replacing one of that name).
-void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values, int components = 1);
+void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values,
+                   int components = 1);
 
-} // namespace geolattice
+}  // namespace geolattice
 #endif

@@ -39,35 +39,29 @@
 
 vtkStandardNewMacro(vtkGLMeshReader);
 
-namespace
-{
+namespace {
 // Surfaces first, then tet meshes; kNumSurfaceExtensions splits the list.
-constexpr const char* kExtensions[] = { ".stl", ".obj", ".ply", ".vtp", ".off", ".vtu", ".tet",
-  ".node", ".ele" };
+constexpr const char* kExtensions[] = {".stl", ".obj", ".ply",  ".vtp", ".off",
+                                       ".vtu", ".tet", ".node", ".ele"};
 constexpr int kNumExtensions = static_cast<int>(sizeof(kExtensions) / sizeof(kExtensions[0]));
 constexpr int kNumSurfaceExtensions = 5;
 constexpr const char* kExtensionsString = ".stl .obj .ply .vtp .off .vtu .tet .node .ele";
 
 /// Lower-case extension with its dot ("" if none).
-std::string lowerExtension(const char* path)
-{
-  if (!path)
-  {
+std::string lowerExtension(const char* path) {
+  if (!path) {
     return {};
   }
   std::string ext = std::filesystem::path(path).extension().string();
   std::transform(ext.begin(), ext.end(), ext.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return ext;
 }
 
-int extensionIndex(const char* path)
-{
+int extensionIndex(const char* path) {
   const std::string ext = lowerExtension(path);
-  for (int i = 0; i < kNumExtensions; ++i)
-  {
-    if (ext == kExtensions[i])
-    {
+  for (int i = 0; i < kNumExtensions; ++i) {
+    if (ext == kExtensions[i]) {
       return i;
     }
   }
@@ -76,48 +70,40 @@ int extensionIndex(const char* path)
 
 /// Collects the error and warning events of an inner reader (and of its executive) so that
 /// this reader reports them once, under its own name, instead of the inner objects printing them.
-class ErrorCollector : public vtkCommand
-{
+class ErrorCollector : public vtkCommand {
 public:
   static ErrorCollector* New() { return new ErrorCollector; }
   vtkTypeMacro(ErrorCollector, vtkCommand);
 
-  void Execute(vtkObject*, unsigned long event, void* callData) override
-  {
+  void Execute(vtkObject*, unsigned long event, void* callData) override {
     const bool error = event == vtkCommand::ErrorEvent;
-    if (!error && event != vtkCommand::WarningEvent)
-    {
+    if (!error && event != vtkCommand::WarningEvent) {
       return;
     }
     std::string& first = error ? this->FirstError : this->FirstWarning;
     this->ErrorCount += error ? 1 : 0;
-    if (first.empty() && callData)
-    {
+    if (first.empty() && callData) {
       // "vtkSTLReader (0x...): message" -> "message"
       std::string text = static_cast<const char*>(callData);
       const size_t colon = text.find("): ");
-      if (colon != std::string::npos)
-      {
+      if (colon != std::string::npos) {
         text = text.substr(colon + 3);
       }
-      while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back())))
-      {
+      while (!text.empty() && std::isspace(static_cast<unsigned char>(text.back()))) {
         text.pop_back();
       }
       // The executive's "Algorithm ... returned failure for request: <info dump>" says nothing
       // the reader's own message or warning does not say better.
-      if (text.rfind("Algorithm ", 0) != 0 || text.find("returned failure") == std::string::npos)
-      {
+      if (text.rfind("Algorithm ", 0) != 0 || text.find("returned failure") == std::string::npos) {
         first = text;
       }
     }
   }
 
   /// Observe errors and warnings of `object`; returns the two observer tags.
-  std::pair<unsigned long, unsigned long> Watch(vtkObject* object)
-  {
-    return { object->AddObserver(vtkCommand::ErrorEvent, this),
-      object->AddObserver(vtkCommand::WarningEvent, this) };
+  std::pair<unsigned long, unsigned long> Watch(vtkObject* object) {
+    return {object->AddObserver(vtkCommand::ErrorEvent, this),
+            object->AddObserver(vtkCommand::WarningEvent, this)};
   }
 
   int ErrorCount = 0;
@@ -127,11 +113,9 @@ public:
 
 /// Progress of this reader (UpdateProgress(f)); throws "reading aborted" if the user asked to
 /// abort (the reader's catch keeps that quiet).
-void progressOrAbort(vtkAlgorithm* reader, double f)
-{
+void progressOrAbort(vtkAlgorithm* reader, double f) {
   reader->UpdateProgress(f);
-  if (reader->GetAbortExecute())
-  {
+  if (reader->GetAbortExecute()) {
     throw geolattice::GeoLatticeError("reading aborted");
   }
 }
@@ -142,32 +126,29 @@ void progressOrAbort(vtkAlgorithm* reader, double f)
 /// "Could not open PLY file") go into the error message; the first warning of a successful
 /// one is passed on as a warning of `reporter` (this reader). The algorithm's progress is
 /// forwarded as [lo, hi] of the reporter's, and the reporter's abort flag to the algorithm.
-void runChecked(vtkAlgorithm* algorithm, const std::string& path, vtkAlgorithm* reporter, double lo, double hi)
-{
+void runChecked(vtkAlgorithm* algorithm, const std::string& path, vtkAlgorithm* reporter, double lo,
+                double hi) {
   vtkNew<ErrorCollector> errors;
   const auto tags = errors->Watch(algorithm);
   const auto executiveTags = errors->Watch(algorithm->GetExecutive());
-  if (auto* xml = vtkXMLReader::SafeDownCast(algorithm))
-  {
+  if (auto* xml = vtkXMLReader::SafeDownCast(algorithm)) {
     xml->SetReaderErrorObserver(errors);
     xml->SetParserErrorObserver(errors);
   }
-  struct Forward
-  {
+  struct Forward {
     vtkAlgorithm* Reporter;
     double Lo, Hi;
-  } forward{ reporter, lo, hi };
+  } forward{reporter, lo, hi};
   vtkNew<vtkCallbackCommand> progress;
   progress->SetClientData(&forward);
   progress->SetCallback([](vtkObject* caller, unsigned long, void* client, void* call) {
     const Forward& f = *static_cast<Forward*>(client);
     const double p = call ? *static_cast<double*>(call) : 0.0;
-    if (!f.Reporter->GetAbortExecute()) // after an abort, nothing more to report
+    if (!f.Reporter->GetAbortExecute())  // after an abort, nothing more to report
     {
       f.Reporter->UpdateProgress(f.Lo + (f.Hi - f.Lo) * std::clamp(p, 0.0, 1.0));
     }
-    if (f.Reporter->GetAbortExecute())
-    {
+    if (f.Reporter->GetAbortExecute()) {
       static_cast<vtkAlgorithm*>(caller)->SetAbortExecute(1);
     }
   });
@@ -178,31 +159,26 @@ void runChecked(vtkAlgorithm* algorithm, const std::string& path, vtkAlgorithm* 
   algorithm->RemoveObserver(tags.second);
   algorithm->GetExecutive()->RemoveObserver(executiveTags.first);
   algorithm->GetExecutive()->RemoveObserver(executiveTags.second);
-  if (auto* xml = vtkXMLReader::SafeDownCast(algorithm))
-  {
+  if (auto* xml = vtkXMLReader::SafeDownCast(algorithm)) {
     xml->SetReaderErrorObserver(nullptr);
     xml->SetParserErrorObserver(nullptr);
   }
-  if (reporter->GetAbortExecute())
-  {
-    throw geolattice::GeoLatticeError("reading aborted"); // the inner reader may have stopped early
+  if (reporter->GetAbortExecute()) {
+    throw geolattice::GeoLatticeError(
+        "reading aborted");  // the inner reader may have stopped early
   }
-  if (errors->ErrorCount > 0 || algorithm->GetErrorCode() != vtkErrorCode::NoError)
-  {
+  if (errors->ErrorCount > 0 || algorithm->GetErrorCode() != vtkErrorCode::NoError) {
     std::string reason = errors->FirstError;
-    if (!errors->FirstWarning.empty())
-    {
+    if (!errors->FirstWarning.empty()) {
       reason += (reason.empty() ? "" : " (") + errors->FirstWarning + (reason.empty() ? "" : ")");
     }
-    if (reason.empty())
-    {
+    if (reason.empty()) {
       reason = vtkErrorCode::GetStringFromErrorCode(algorithm->GetErrorCode());
     }
     throw geolattice::GeoLatticeError(std::string(algorithm->GetClassName()) + " cannot read " +
-      path + ": " + reason);
+                                      path + ": " + reason);
   }
-  if (!errors->FirstWarning.empty())
-  {
+  if (!errors->FirstWarning.empty()) {
     vtkWarningWithObjectMacro(reporter, << algorithm->GetClassName() << " reading " << path << ": "
                                         << errors->FirstWarning);
   }
@@ -210,22 +186,18 @@ void runChecked(vtkAlgorithm* algorithm, const std::string& path, vtkAlgorithm* 
 
 /// Removes point normals and texture coordinates: per-corner data that point merging would
 /// make wrong, and that made readers (OBJ) split vertices in the first place.
-void dropCornerAttributes(vtkPolyData* poly)
-{
+void dropCornerAttributes(vtkPolyData* poly) {
   vtkPointData* pd = poly->GetPointData();
   int indices[vtkDataSetAttributes::NUM_ATTRIBUTES];
   pd->GetAttributeIndices(indices);
   int normals = indices[vtkDataSetAttributes::NORMALS];
   int tcoords = indices[vtkDataSetAttributes::TCOORDS];
   // Remove the higher index first so the other index stays valid.
-  if (normals < tcoords)
-  {
+  if (normals < tcoords) {
     std::swap(normals, tcoords);
   }
-  for (int index : { normals, tcoords })
-  {
-    if (index >= 0)
-    {
+  for (int index : {normals, tcoords}) {
+    if (index >= 0) {
       pd->RemoveArray(index);
     }
   }
@@ -234,75 +206,60 @@ void dropCornerAttributes(vtkPolyData* poly)
 /// Throws if a cell refers to a point that does not exist. VTK readers do not all check this
 /// (vtkOBJReader keeps "f 1 2 3 9" of a 3-vertex file as a polygon with point id 8), and the
 /// filters downstream would read out of bounds.
-void checkPointIds(vtkCellArray* cells, vtkIdType numPoints, const char* cellName, const std::string& path)
-{
-  if (!cells)
-  {
+void checkPointIds(vtkCellArray* cells, vtkIdType numPoints, const char* cellName,
+                   const std::string& path) {
+  if (!cells) {
     return;
   }
   auto it = vtk::TakeSmartPointer(cells->NewIterator());
   vtkIdType cell = 0;
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell)
-  {
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell) {
     vtkIdType n = 0;
     const vtkIdType* ids = nullptr;
     it->GetCurrentCell(n, ids);
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      if (ids[k] < 0 || ids[k] >= numPoints)
-      {
+    for (vtkIdType k = 0; k < n; ++k) {
+      if (ids[k] < 0 || ids[k] >= numPoints) {
         throw geolattice::GeoLatticeError("index out of range: " + std::string(cellName) + " " +
-          std::to_string(cell) + " of " + path + " uses point " + std::to_string(ids[k]) +
-          " (0-based), but there are " + std::to_string(numPoints) + " points");
+                                          std::to_string(cell) + " of " + path + " uses point " +
+                                          std::to_string(ids[k]) + " (0-based), but there are " +
+                                          std::to_string(numPoints) + " points");
       }
     }
   }
 }
 
 /// Surface formats -> triangles only, coincident points merged.
-void readSurface(
-  const std::string& path, const std::string& ext, vtkPolyData* output, vtkAlgorithm* reporter)
-{
+void readSurface(const std::string& path, const std::string& ext, vtkPolyData* output,
+                 vtkAlgorithm* reporter) {
   vtkNew<vtkPolyData> raw;
-  if (ext == ".off")
-  {
+  if (ext == ".off") {
     geolattice::fromTriangleSurface(geolattice::readOff(path), raw);
-  }
-  else
-  {
+  } else {
     vtkSmartPointer<vtkAlgorithm> reader;
-    if (ext == ".stl")
-    {
+    if (ext == ".stl") {
       auto stl = vtkSmartPointer<vtkSTLReader>::New();
       stl->SetFileName(path.c_str());
       stl->MergingOn();
       stl->ScalarTagsOff();
       reader = stl;
-    }
-    else if (ext == ".obj")
-    {
+    } else if (ext == ".obj") {
       auto obj = vtkSmartPointer<vtkOBJReader>::New();
       obj->SetFileName(path.c_str());
       reader = obj;
-    }
-    else if (ext == ".ply")
-    {
+    } else if (ext == ".ply") {
       auto ply = vtkSmartPointer<vtkPLYReader>::New();
       ply->SetFileName(path.c_str());
       reader = ply;
-    }
-    else
-    {
+    } else {
       auto vtp = vtkSmartPointer<vtkXMLPolyDataReader>::New();
       vtp->SetFileName(path.c_str());
       reader = vtp;
     }
     runChecked(reader, path, reporter, 0.02, 0.6);
     vtkPolyData* read = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
-    if (!read)
-    {
-      throw geolattice::GeoLatticeError(
-        std::string(reader->GetClassName()) + " gave no polydata for " + path);
+    if (!read) {
+      throw geolattice::GeoLatticeError(std::string(reader->GetClassName()) +
+                                        " gave no polydata for " + path);
     }
     raw->ShallowCopy(read);
     checkPointIds(raw->GetPolys(), raw->GetNumberOfPoints(), "polygon", path);
@@ -325,8 +282,7 @@ void readSurface(
   clean->ConvertStripsToPolysOff();
   runChecked(clean, path, reporter, 0.6, 0.95);
   vtkPolyData* cleaned = clean->GetOutput();
-  if (cleaned->GetNumberOfPolys() == 0)
-  {
+  if (cleaned->GetNumberOfPolys() == 0) {
     throw geolattice::GeoLatticeError("empty mesh: " + path + " has no triangles");
   }
   output->ShallowCopy(cleaned);
@@ -334,12 +290,10 @@ void readSurface(
 
 /// Tet formats -> VTK_TETRA cells only.
 void readTetMesh(const std::string& path, const std::string& ext, vtkUnstructuredGrid* output,
-  vtkAlgorithm* reporter)
-{
-  if (ext == ".tet" || ext == ".node" || ext == ".ele")
-  {
+                 vtkAlgorithm* reporter) {
+  if (ext == ".tet" || ext == ".node" || ext == ".ele") {
     const geolattice::TetMesh mesh =
-      ext == ".tet" ? geolattice::readTetFile(path) : geolattice::readTetGenMesh(path);
+        ext == ".tet" ? geolattice::readTetFile(path) : geolattice::readTetGenMesh(path);
     progressOrAbort(reporter, 0.8);
     geolattice::fromTetMesh(mesh, output);
     return;
@@ -349,137 +303,112 @@ void readTetMesh(const std::string& path, const std::string& ext, vtkUnstructure
   runChecked(reader, path, reporter, 0.02, 0.8);
   progressOrAbort(reporter, 0.8);
   vtkUnstructuredGrid* grid = reader->GetOutput();
-  if (grid->GetNumberOfCells() == 0 || grid->GetNumberOfPoints() == 0)
-  {
+  if (grid->GetNumberOfCells() == 0 || grid->GetNumberOfPoints() == 0) {
     throw geolattice::GeoLatticeError("empty mesh: " + path + " has " +
-      std::to_string(grid->GetNumberOfPoints()) + " points and " +
-      std::to_string(grid->GetNumberOfCells()) + " cells");
+                                      std::to_string(grid->GetNumberOfPoints()) + " points and " +
+                                      std::to_string(grid->GetNumberOfCells()) + " cells");
   }
   checkPointIds(grid->GetCells(), grid->GetNumberOfPoints(), "cell", path);
-  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
-  {
-    if (grid->GetCellType(c) != VTK_TETRA)
-    {
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
+    if (grid->GetCellType(c) != VTK_TETRA) {
       throw geolattice::GeoLatticeError("cell " + std::to_string(c) + " of " + path +
-        " is not a linear tetrahedron (VTK cell type " + std::to_string(grid->GetCellType(c)) +
-        "); only tet meshes are accepted");
+                                        " is not a linear tetrahedron (VTK cell type " +
+                                        std::to_string(grid->GetCellType(c)) +
+                                        "); only tet meshes are accepted");
     }
   }
   output->ShallowCopy(grid);
 }
-} // namespace
+}  // namespace
 
-vtkGLMeshReader::vtkGLMeshReader()
-{
+vtkGLMeshReader::vtkGLMeshReader() {
   this->SetNumberOfInputPorts(0);
   this->SetNumberOfOutputPorts(1);
 }
 
-vtkGLMeshReader::~vtkGLMeshReader()
-{
+vtkGLMeshReader::~vtkGLMeshReader() {
   this->SetFileName(nullptr);
 }
 
-void vtkGLMeshReader::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLMeshReader::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
 }
 
-int vtkGLMeshReader::GetNumberOfSupportedExtensions()
-{
+int vtkGLMeshReader::GetNumberOfSupportedExtensions() {
   return kNumExtensions;
 }
 
-const char* vtkGLMeshReader::GetSupportedExtension(int i)
-{
+const char* vtkGLMeshReader::GetSupportedExtension(int i) {
   return (i >= 0 && i < kNumExtensions) ? kExtensions[i] : nullptr;
 }
 
-const char* vtkGLMeshReader::GetSupportedExtensionsString()
-{
+const char* vtkGLMeshReader::GetSupportedExtensionsString() {
   return kExtensionsString;
 }
 
-bool vtkGLMeshReader::IsSupportedFile(const char* path)
-{
+bool vtkGLMeshReader::IsSupportedFile(const char* path) {
   return extensionIndex(path) >= 0;
 }
 
-bool vtkGLMeshReader::IsTetMeshFile(const char* path)
-{
+bool vtkGLMeshReader::IsTetMeshFile(const char* path) {
   return extensionIndex(path) >= kNumSurfaceExtensions;
 }
 
-int vtkGLMeshReader::CanReadFile(const char* path)
-{
+int vtkGLMeshReader::CanReadFile(const char* path) {
   std::error_code ec;
   return IsSupportedFile(path) && std::filesystem::is_regular_file(path, ec) ? 1 : 0;
 }
 
-int vtkGLMeshReader::RequestDataObject(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
+int vtkGLMeshReader::RequestDataObject(vtkInformation*, vtkInformationVector**,
+                                       vtkInformationVector* outputVector) {
   // Unsupported or missing names get an (empty) polydata; RequestData reports the error.
   const int type = IsTetMeshFile(this->FileName) ? VTK_UNSTRUCTURED_GRID : VTK_POLY_DATA;
-  return vtkDataObjectAlgorithm::SetOutputDataObject(
-           type, outputVector->GetInformationObject(0), /*exact=*/true)
-    ? 1
-    : 0;
+  return vtkDataObjectAlgorithm::SetOutputDataObject(type, outputVector->GetInformationObject(0),
+                                                     /*exact=*/true)
+             ? 1
+             : 0;
 }
 
-int vtkGLMeshReader::RequestData(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
+int vtkGLMeshReader::RequestData(vtkInformation*, vtkInformationVector**,
+                                 vtkInformationVector* outputVector) {
   vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
-  try
-  {
-    if (!this->FileName || this->FileName[0] == '\0')
-    {
+  try {
+    if (!this->FileName || this->FileName[0] == '\0') {
       throw geolattice::GeoLatticeError("no file name set (FileName is empty)");
     }
     const std::string path = this->FileName;
     const std::string ext = lowerExtension(this->FileName);
-    if (!IsSupportedFile(this->FileName))
-    {
+    if (!IsSupportedFile(this->FileName)) {
       throw geolattice::GeoLatticeError("unsupported file extension '" + ext + "' of " + path +
-        "; supported: " + kExtensionsString);
+                                        "; supported: " + kExtensionsString);
     }
     std::error_code ec;
-    if (!std::filesystem::exists(path, ec))
-    {
+    if (!std::filesystem::exists(path, ec)) {
       throw geolattice::GeoLatticeError("file not found: " + path);
     }
-    if (!std::filesystem::is_regular_file(path, ec))
-    {
+    if (!std::filesystem::is_regular_file(path, ec)) {
       throw geolattice::GeoLatticeError("not a regular file: " + path);
     }
     progressOrAbort(this, 0.01);
-    if (IsTetMeshFile(this->FileName))
-    {
+    if (IsTetMeshFile(this->FileName)) {
       vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(output);
-      if (!grid)
-      {
+      if (!grid) {
         throw geolattice::GeoLatticeError("internal error: output is not an unstructured grid");
       }
       readTetMesh(path, ext, grid, this);
-    }
-    else
-    {
+    } else {
       vtkPolyData* poly = vtkPolyData::SafeDownCast(output);
-      if (!poly)
-      {
+      if (!poly) {
         throw geolattice::GeoLatticeError("internal error: output is not polydata");
       }
       readSurface(path, ext, poly, this);
     }
     this->UpdateProgress(1.0);
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     // GeoLatticeError from core and the conversions, or std errors (bad_alloc, filesystem).
     output->Initialize();
-    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
     {
       vtkErrorMacro(<< e.what());
     }

@@ -34,8 +34,7 @@
 
 #include <string>
 
-class GEOLATTICEFILTERS_EXPORT vtkGLMeshReader : public vtkDataObjectAlgorithm
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLMeshReader : public vtkDataObjectAlgorithm {
 public:
   static vtkGLMeshReader* New();
   vtkTypeMacro(vtkGLMeshReader, vtkDataObjectAlgorithm);

@@ -13,10 +13,14 @@ namespace fs = std::filesystem;
 
 std::string temporaryPathFor(const std::string& path) {
   const fs::path target(path);
-  return (target.parent_path() / ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid()))).string();
+  return (target.parent_path() /
+          ("." + target.filename().string() + ".tmp-" + std::to_string(::getpid())))
+      .string();
 }
 
-AtomicFileSet::~AtomicFileSet() { removeTemporaries(); }
+AtomicFileSet::~AtomicFileSet() {
+  removeTemporaries();
+}
 
 void AtomicFileSet::closeLast() {
   if (stream_.is_open()) {
@@ -81,7 +85,8 @@ void AtomicFileSet::commit() {
 }
 
 void requestEndOfTimeRange(vtkInformationVector** inputVector) {
-  vtkInformation* in = inputVector && inputVector[0] ? inputVector[0]->GetInformationObject(0) : nullptr;
+  vtkInformation* in =
+      inputVector && inputVector[0] ? inputVector[0]->GetInformationObject(0) : nullptr;
   if (!in) {
     return;
   }
@@ -94,4 +99,4 @@ void requestEndOfTimeRange(vtkInformationVector** inputVector) {
   }
 }
 
-} // namespace geolattice
+}  // namespace geolattice

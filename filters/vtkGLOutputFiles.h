@@ -61,5 +61,5 @@ std::string temporaryPathFor(const std::string& path);
 /// toolpath (the planner's print replay) is written whole whatever the pipeline time.
 void requestEndOfTimeRange(vtkInformationVector** inputVector);
 
-} // namespace geolattice
+}  // namespace geolattice
 #endif

@@ -29,97 +29,83 @@
 
 vtkStandardNewMacro(vtkGLOverhangAnalysis);
 
-namespace
-{
+namespace {
 namespace gl = geolattice;
 
 /// The named array of `data` with `components` components, or a GeoLatticeError naming it.
-vtkDataArray* requireArray(vtkDataSetAttributes* data, const char* name, const char* kind, int components,
-  const char* what)
-{
+vtkDataArray* requireArray(vtkDataSetAttributes* data, const char* name, const char* kind,
+                           int components, const char* what) {
   vtkDataArray* a = data->GetArray(name);
-  if (!a)
-  {
+  if (!a) {
     throw gl::GeoLatticeError(std::string("missing ") + kind + " array '" + name + "' (" + what +
-      "): run GL Geodesic Distance Fields first");
+                              "): run GL Geodesic Distance Fields first");
   }
-  if (a->GetNumberOfComponents() != components)
-  {
+  if (a->GetNumberOfComponents() != components) {
     throw gl::GeoLatticeError(std::string(kind) + " array '" + name + "' has " +
-      std::to_string(a->GetNumberOfComponents()) + " components, expected " + std::to_string(components));
+                              std::to_string(a->GetNumberOfComponents()) +
+                              " components, expected " + std::to_string(components));
   }
   return a;
 }
 
-vtkNew<vtkDoubleArray> cellArray(const char* name, const std::vector<double>& values)
-{
+vtkNew<vtkDoubleArray> cellArray(const char* name, const std::vector<double>& values) {
   vtkNew<vtkDoubleArray> a;
   a->SetName(name);
   a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  for (size_t i = 0; i < values.size(); ++i)
-  {
+  for (size_t i = 0; i < values.size(); ++i) {
     a->SetValue(static_cast<vtkIdType>(i), values[i]);
   }
   return a;
 }
 
-} // namespace
+}  // namespace
 
-int vtkGLOverhangAnalysis::FillInputPortInformation(int, vtkInformation* info)
-{
+int vtkGLOverhangAnalysis::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
   return 1;
 }
 
-int vtkGLOverhangAnalysis::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
+int vtkGLOverhangAnalysis::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                       vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole tet mesh on one process (vtkGLParallel.h).
   const gl::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  if (!inputs.Computes())
-  {
-    return 1; // another process has the mesh
+  if (!inputs.Computes()) {
+    return 1;  // another process has the mesh
   }
   vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
-  try
-  {
-    if (!input || input->GetNumberOfCells() == 0)
-    {
+  try {
+    if (!input || input->GetNumberOfCells() == 0) {
       throw gl::GeoLatticeError("the input has no cells");
     }
     gl::OverhangOptions options;
     options.thresholdDeg = this->ThresholdAngle;
     // Array checks first: they are cheap, and name the likely mistake (input not from the GDF).
-    vtkDataArray* gradient = requireArray(input->GetCellData(), gl::arrays::GammaGradient, "cell", 3,
-      "the curved-layer nozzle axis per tet");
-    vtkDataArray* base =
-      requireArray(input->GetPointData(), gl::arrays::HeatSource, "point", 1, "1 on the base vertices");
+    vtkDataArray* gradient = requireArray(input->GetCellData(), gl::arrays::GammaGradient, "cell",
+                                          3, "the curved-layer nozzle axis per tet");
+    vtkDataArray* base = requireArray(input->GetPointData(), gl::arrays::HeatSource, "point", 1,
+                                      "1 on the base vertices");
 
     const gl::TetMesh mesh = gl::toTetMesh(input);
     std::vector<gl::Vec3> directions(mesh.tets.size());
-    for (vtkIdType t = 0; t < static_cast<vtkIdType>(directions.size()); ++t)
-    {
+    for (vtkIdType t = 0; t < static_cast<vtkIdType>(directions.size()); ++t) {
       gradient->GetTuple(t, directions[t].data());
     }
     std::vector<std::uint8_t> onPlatform(mesh.points.size());
-    for (vtkIdType i = 0; i < static_cast<vtkIdType>(onPlatform.size()); ++i)
-    {
+    for (vtkIdType i = 0; i < static_cast<vtkIdType>(onPlatform.size()); ++i) {
       onPlatform[i] = base->GetComponent(i, 0) != 0.0;
     }
-    if (gl::progressAborts(this, 0.2))
-    {
+    if (gl::progressAborts(this, 0.2)) {
       return 1;
     }
     const gl::TetMeshTopology topology(mesh);
-    if (gl::progressAborts(this, 0.5))
-    {
+    if (gl::progressAborts(this, 0.5)) {
       return 1;
     }
-    const gl::OverhangResult result = gl::analyzeOverhang(mesh, topology, directions, onPlatform, options);
-    if (gl::progressAborts(this, 0.7))
-    {
+    const gl::OverhangResult result =
+        gl::analyzeOverhang(mesh, topology, directions, onPlatform, options);
+    if (gl::progressAborts(this, 0.7)) {
       return 1;
     }
 
@@ -130,14 +116,11 @@ int vtkGLOverhangAnalysis::RequestData(
     std::vector<vtkIdType> oldId;
     vtkNew<vtkCellArray> triangles;
     triangles->AllocateExact(numFaces, 3 * numFaces);
-    for (vtkIdType f = 0; f < numFaces; ++f)
-    {
+    for (vtkIdType f = 0; f < numFaces; ++f) {
       vtkIdType ids[3];
-      for (int k = 0; k < 3; ++k)
-      {
+      for (int k = 0; k < 3; ++k) {
         const int v = faces[f].vertices[k];
-        if (newId[v] < 0)
-        {
+        if (newId[v] < 0) {
           newId[v] = static_cast<vtkIdType>(oldId.size());
           oldId.push_back(v);
         }
@@ -148,8 +131,7 @@ int vtkGLOverhangAnalysis::RequestData(
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
     points->SetNumberOfPoints(static_cast<vtkIdType>(oldId.size()));
-    for (vtkIdType i = 0; i < static_cast<vtkIdType>(oldId.size()); ++i)
-    {
+    for (vtkIdType i = 0; i < static_cast<vtkIdType>(oldId.size()); ++i) {
       points->SetPoint(i, mesh.points[oldId[i]].data());
     }
     output->Initialize();
@@ -159,23 +141,19 @@ int vtkGLOverhangAnalysis::RequestData(
     vtkPointData* inPD = input->GetPointData();
     vtkPointData* outPD = output->GetPointData();
     outPD->CopyAllocate(inPD, static_cast<vtkIdType>(oldId.size()));
-    for (vtkIdType i = 0; i < static_cast<vtkIdType>(oldId.size()); ++i)
-    {
+    for (vtkIdType i = 0; i < static_cast<vtkIdType>(oldId.size()); ++i) {
       outPD->CopyData(inPD, oldId[i], i);
     }
-    if (gl::progressAborts(this, 0.8))
-    {
+    if (gl::progressAborts(this, 0.8)) {
       output->Initialize();
       return 1;
     }
     vtkCellData* inCD = input->GetCellData();
     vtkCellData* outCD = output->GetCellData();
     outCD->CopyAllocate(inCD, numFaces);
-    for (vtkIdType f = 0; f < numFaces; ++f)
-    {
+    for (vtkIdType f = 0; f < numFaces; ++f) {
       outCD->CopyData(inCD, faces[f].tet, f);
-      if (f % 65536 == 0 && this->GetAbortExecute())
-      {
+      if (f % 65536 == 0 && this->GetAbortExecute()) {
         output->Initialize();
         return 1;
       }
@@ -185,8 +163,7 @@ int vtkGLOverhangAnalysis::RequestData(
     vtkNew<vtkUnsignedCharArray> onBase;
     onBase->SetName(gl::arrays::OnBase);
     onBase->SetNumberOfTuples(numFaces);
-    for (vtkIdType f = 0; f < numFaces; ++f)
-    {
+    for (vtkIdType f = 0; f < numFaces; ++f) {
       onBase->SetValue(f, result.onBase[f]);
     }
     outCD->AddArray(onBase);
@@ -194,18 +171,16 @@ int vtkGLOverhangAnalysis::RequestData(
 
     vtkNew<vtkFieldData> fd;
     fd->DeepCopy(input->GetFieldData());
-    gl::addFieldArray(fd, gl::arrays::OverhangPlanarFraction, { result.planarFraction });
-    gl::addFieldArray(fd, gl::arrays::OverhangCurvedFraction, { result.curvedFraction });
-    gl::addFieldArray(fd, gl::arrays::OverhangThresholdDeg, { result.thresholdDeg });
-    gl::addFieldArray(fd, gl::arrays::OverhangBaseArea, { result.baseArea });
-    gl::addFieldArray(fd, gl::arrays::OverhangTotalArea, { result.totalArea });
+    gl::addFieldArray(fd, gl::arrays::OverhangPlanarFraction, {result.planarFraction});
+    gl::addFieldArray(fd, gl::arrays::OverhangCurvedFraction, {result.curvedFraction});
+    gl::addFieldArray(fd, gl::arrays::OverhangThresholdDeg, {result.thresholdDeg});
+    gl::addFieldArray(fd, gl::arrays::OverhangBaseArea, {result.baseArea});
+    gl::addFieldArray(fd, gl::arrays::OverhangTotalArea, {result.totalArea});
     output->SetFieldData(fd);
     this->UpdateProgress(1.0);
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     output->Initialize();
-    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
     {
       vtkErrorMacro(<< e.what());
     }
@@ -213,8 +188,7 @@ int vtkGLOverhangAnalysis::RequestData(
   return 1;
 }
 
-void vtkGLOverhangAnalysis::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLOverhangAnalysis::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ThresholdAngle: " << this->ThresholdAngle << " deg\n";
 }

@@ -34,8 +34,7 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLOverhangAnalysis : public vtkPolyDataAlgorithm
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLOverhangAnalysis : public vtkPolyDataAlgorithm {
 public:
   static vtkGLOverhangAnalysis* New();
   vtkTypeMacro(vtkGLOverhangAnalysis, vtkPolyDataAlgorithm);

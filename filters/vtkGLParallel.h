@@ -53,8 +53,7 @@ public:
   /// The data object of `port` to compute on (the local one, or the gathered one on rank 0).
   vtkDataObject* Get(int port) const { return this->Inputs[port]; }
   template <class T>
-  T* Get(int port) const
-  {
+  T* Get(int port) const {
     return T::SafeDownCast(this->Inputs[port]);
   }
   /// Whether the inputs were gathered from several processes.
@@ -74,5 +73,5 @@ private:
 /// data object, a non-zero number of elements).
 bool hasData(vtkDataObject* data);
 
-} // namespace geolattice
+}  // namespace geolattice
 #endif

@@ -33,8 +33,7 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkPointSetAlgorithm.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLPlaceOnPlatform : public vtkPointSetAlgorithm
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLPlaceOnPlatform : public vtkPointSetAlgorithm {
 public:
   static vtkGLPlaceOnPlatform* New();
   vtkTypeMacro(vtkGLPlaceOnPlatform, vtkPointSetAlgorithm);

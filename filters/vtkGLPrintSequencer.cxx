@@ -35,18 +35,17 @@
 
 vtkStandardNewMacro(vtkGLPrintSequencer);
 
-namespace
-{
+namespace {
 namespace gl = geolattice;
 
 static_assert(static_cast<int>(gl::SequenceStrategy::LayerPriority) == vtkGLPrintSequencer::LPT &&
-    static_cast<int>(gl::SequenceStrategy::DepthPriority) == vtkGLPrintSequencer::DPT &&
-    static_cast<int>(gl::SequenceStrategy::Greedy) == vtkGLPrintSequencer::A4 &&
-    static_cast<int>(gl::SequenceStrategy::Rollout) == vtkGLPrintSequencer::BEST,
-  "vtkGLPrintSequencer::Strategies must match core/sequence/PrintSequencer.h");
+                  static_cast<int>(gl::SequenceStrategy::DepthPriority) ==
+                      vtkGLPrintSequencer::DPT &&
+                  static_cast<int>(gl::SequenceStrategy::Greedy) == vtkGLPrintSequencer::A4 &&
+                  static_cast<int>(gl::SequenceStrategy::Rollout) == vtkGLPrintSequencer::BEST,
+              "vtkGLPrintSequencer::Strategies must match core/sequence/PrintSequencer.h");
 
-vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n)
-{
+vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n) {
   auto a = vtkSmartPointer<vtkIntArray>::New();
   a->SetName(name);
   a->SetNumberOfTuples(n);
@@ -54,10 +53,8 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n)
 }
 
 /// Position of sub-graph `value` in the order, -1 when it is no sub-graph.
-int positionOf(double value, const std::vector<int>& printIndex)
-{
-  if (!std::isfinite(value) || value < 0 || value >= static_cast<double>(printIndex.size()))
-  {
+int positionOf(double value, const std::vector<int>& printIndex) {
+  if (!std::isfinite(value) || value < 0 || value >= static_cast<double>(printIndex.size())) {
     return -1;
   }
   return printIndex[static_cast<size_t>(value)];
@@ -65,23 +62,23 @@ int positionOf(double value, const std::vector<int>& printIndex)
 
 /// The field data shared by the three outputs.
 void addSequenceFieldData(const gl::SkeletonTree& tree, const gl::PrintSequence& seq,
-  const gl::PotentialCollisions& pcg, double nozzleAngle, vtkFieldData* fd)
-{
+                          const gl::PotentialCollisions& pcg, double nozzleAngle,
+                          vtkFieldData* fd) {
   vtkNew<vtkStringArray> strategy;
   strategy->SetName(gl::arrays::SequenceStrategy);
   strategy->InsertNextValue(gl::sequenceStrategyName(seq.strategy));
   fd->AddArray(strategy);
-  gl::addFieldArray(fd, gl::arrays::SequenceRetractions, { static_cast<double>(seq.retractions) });
-  gl::addFieldArray(fd, gl::arrays::SequenceAirLength, { seq.airLength });
-  gl::addFieldArray(fd, gl::arrays::SequenceForcedSteps, { static_cast<double>(seq.forcedSteps) });
-  gl::addFieldArray(fd, gl::arrays::SequenceSeconds, { seq.seconds });
-  gl::addFieldArray(fd, gl::arrays::SequencePcgPairs, { static_cast<double>(pcg.pairs) });
-  gl::addFieldArray(fd, gl::arrays::SequencePcgSeconds, { pcg.seconds });
-  gl::addFieldArray(fd, gl::arrays::SequenceUnavoidablePairs, { static_cast<double>(seq.unavoidablePairs) });
-  gl::addFieldArray(fd, gl::arrays::NozzleAngleDeg, { nozzleAngle });
+  gl::addFieldArray(fd, gl::arrays::SequenceRetractions, {static_cast<double>(seq.retractions)});
+  gl::addFieldArray(fd, gl::arrays::SequenceAirLength, {seq.airLength});
+  gl::addFieldArray(fd, gl::arrays::SequenceForcedSteps, {static_cast<double>(seq.forcedSteps)});
+  gl::addFieldArray(fd, gl::arrays::SequenceSeconds, {seq.seconds});
+  gl::addFieldArray(fd, gl::arrays::SequencePcgPairs, {static_cast<double>(pcg.pairs)});
+  gl::addFieldArray(fd, gl::arrays::SequencePcgSeconds, {pcg.seconds});
+  gl::addFieldArray(fd, gl::arrays::SequenceUnavoidablePairs,
+                    {static_cast<double>(seq.unavoidablePairs)});
+  gl::addFieldArray(fd, gl::arrays::NozzleAngleDeg, {nozzleAngle});
   std::vector<double> order(seq.order.begin(), seq.order.end()), start, end;
-  for (size_t k = 0; k < seq.order.size(); ++k)
-  {
+  for (size_t k = 0; k < seq.order.size(); ++k) {
     start.insert(start.end(), seq.start[k].data(), seq.start[k].data() + 3);
     end.insert(end.end(), seq.end[k].data(), seq.end[k].data() + 3);
   }
@@ -89,8 +86,7 @@ void addSequenceFieldData(const gl::SkeletonTree& tree, const gl::PrintSequence&
   gl::addFieldArray(fd, gl::arrays::SequenceStart, start, 3);
   gl::addFieldArray(fd, gl::arrays::SequenceEnd, end, 3);
   std::vector<double> edges;
-  for (const auto& e : tree.edges)
-  {
+  for (const auto& e : tree.edges) {
     edges.push_back(e[0]);
     edges.push_back(e[1]);
   }
@@ -98,21 +94,18 @@ void addSequenceFieldData(const gl::SkeletonTree& tree, const gl::PrintSequence&
 }
 
 /// Output 0: the lattice with PrintOrder per cell (from its SubgraphId) and per point.
-void sequencedLattice(vtkPolyData* input, const gl::LatticeGraph& graph, const gl::PrintSequence& seq,
-  vtkPolyData* out)
-{
+void sequencedLattice(vtkPolyData* input, const gl::LatticeGraph& graph,
+                      const gl::PrintSequence& seq, vtkPolyData* out) {
   out->ShallowCopy(input);
   vtkDataArray* cellSubgraph = input->GetCellData()->GetArray(gl::arrays::SubgraphId);
   const vtkIdType C = input->GetNumberOfCells();
   auto cellOrder = intArray(gl::arrays::PrintOrder, C);
-  for (vtkIdType c = 0; c < C; ++c)
-  {
+  for (vtkIdType c = 0; c < C; ++c) {
     cellOrder->SetValue(c, positionOf(cellSubgraph->GetComponent(c, 0), seq.printIndex));
   }
   const vtkIdType V = input->GetNumberOfPoints();
   auto pointOrder = intArray(gl::arrays::PrintOrder, V);
-  for (vtkIdType v = 0; v < V; ++v)
-  {
+  for (vtkIdType v = 0; v < V; ++v) {
     const int s = graph.vertexSubgraph[v];
     pointOrder->SetValue(v, s >= 0 ? seq.printIndex[s] : -1);
   }
@@ -121,30 +114,28 @@ void sequencedLattice(vtkPolyData* input, const gl::LatticeGraph& graph, const g
 }
 
 /// Output 1: the skeleton with PrintOrder per node.
-void sequencedSkeleton(vtkPolyData* input, const gl::PrintSequence& seq, vtkPolyData* out)
-{
+void sequencedSkeleton(vtkPolyData* input, const gl::PrintSequence& seq, vtkPolyData* out) {
   out->ShallowCopy(input);
   vtkDataArray* nodeId = input->GetPointData()->GetArray(gl::arrays::NodeId);
   const vtkIdType N = input->GetNumberOfPoints();
   auto order = intArray(gl::arrays::PrintOrder, N);
-  for (vtkIdType p = 0; p < N; ++p)
-  {
-    order->SetValue(p, positionOf(nodeId ? nodeId->GetComponent(p, 0) : static_cast<double>(p), seq.printIndex));
+  for (vtkIdType p = 0; p < N; ++p) {
+    order->SetValue(p, positionOf(nodeId ? nodeId->GetComponent(p, 0) : static_cast<double>(p),
+                                  seq.printIndex));
   }
   out->GetPointData()->AddArray(order);
 }
 
 /// Output 2: the order as a polyline through the start points, one line cell per transition.
-void printOrderPolyline(const gl::SkeletonTree& tree, const gl::PrintSequence& seq, vtkPolyData* out)
-{
+void printOrderPolyline(const gl::SkeletonTree& tree, const gl::PrintSequence& seq,
+                        vtkPolyData* out) {
   const vtkIdType K = static_cast<vtkIdType>(seq.order.size());
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(K);
   auto position = intArray(gl::arrays::PrintOrder, K);
   auto subgraph = intArray(gl::arrays::SubgraphId, K);
-  for (vtkIdType k = 0; k < K; ++k)
-  {
+  for (vtkIdType k = 0; k < K; ++k) {
     points->SetPoint(k, seq.start[k].data());
     position->SetValue(k, static_cast<int>(k));
     subgraph->SetValue(k, seq.order[k]);
@@ -155,13 +146,13 @@ void printOrderPolyline(const gl::SkeletonTree& tree, const gl::PrintSequence& s
   lines->AllocateExact(T, 2 * T);
   auto from = intArray(gl::arrays::PrintOrder, T);
   auto retraction = intArray(gl::arrays::Retraction, T);
-  for (vtkIdType k = 0; k < T; ++k)
-  {
-    const vtkIdType ids[2] = { k, k + 1 };
+  for (vtkIdType k = 0; k < T; ++k) {
+    const vtkIdType ids[2] = {k, k + 1};
     lines->InsertNextCell(2, ids);
     from->SetValue(k, static_cast<int>(k));
     const std::vector<int>& upper = tree.nodes[seq.order[k]].upper;
-    retraction->SetValue(k, std::binary_search(upper.begin(), upper.end(), seq.order[k + 1]) ? 0 : 1);
+    retraction->SetValue(k,
+                         std::binary_search(upper.begin(), upper.end(), seq.order[k + 1]) ? 0 : 1);
   }
   out->SetLines(lines);
   out->GetPointData()->AddArray(position);
@@ -171,63 +162,54 @@ void printOrderPolyline(const gl::SkeletonTree& tree, const gl::PrintSequence& s
   out->GetCellData()->AddArray(retraction);
   out->GetCellData()->SetActiveScalars(gl::arrays::Retraction);
 }
-} // namespace
+}  // namespace
 
-vtkGLPrintSequencer::vtkGLPrintSequencer()
-{
+vtkGLPrintSequencer::vtkGLPrintSequencer() {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(3);
 }
 
-int vtkGLPrintSequencer::FillInputPortInformation(int, vtkInformation* info)
-{
+int vtkGLPrintSequencer::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
 }
 
-int vtkGLPrintSequencer::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
+int vtkGLPrintSequencer::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                     vtkInformationVector* outputVector) {
   // Collective in an MPI run: the lattice and the skeleton on one process (vtkGLParallel.h).
   const gl::ParallelInputs inputs(inputVector, 2, outputVector);
   vtkPolyData* outputs[3];
-  for (int port = 0; port < 3; ++port)
-  {
+  for (int port = 0; port < 3; ++port) {
     outputs[port] = vtkPolyData::GetData(outputVector, port);
     outputs[port]->Initialize();
   }
-  if (!inputs.Computes())
-  {
-    return 1; // another process has the inputs
+  if (!inputs.Computes()) {
+    return 1;  // another process has the inputs
   }
   vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
   vtkPolyData* skeleton = inputs.Get<vtkPolyData>(1);
   auto aborted = [this, &outputs](double progress) {
-    if (!gl::progressAborts(this, progress))
-    {
+    if (!gl::progressAborts(this, progress)) {
       return false;
     }
-    for (vtkPolyData* out : outputs)
-    {
+    for (vtkPolyData* out : outputs) {
       out->Initialize();
     }
     return true;
   };
-  try
-  {
-    const gl::NozzleModel nozzle = gl::nozzleModel(
-      this->NozzleAngle, this->NozzleLength, this->HolderRadius, this->TipClearance, this->TipFaceRadius);
+  try {
+    const gl::NozzleModel nozzle =
+        gl::nozzleModel(this->NozzleAngle, this->NozzleLength, this->HolderRadius,
+                        this->TipClearance, this->TipFaceRadius);
 
     const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
     gl::SkeletonTree tree = gl::toSkeletonTree(skeleton);
     gl::matchSkeletonToLattice(tree, graph);
-    if (aborted(0.05))
-    {
+    if (aborted(0.05)) {
       return 1;
     }
     const gl::MaterialSamples material = gl::sampleLatticeMaterial(graph, this->SampleSpacing);
-    if (aborted(0.1))
-    {
+    if (aborted(0.1)) {
       return 1;
     }
 
@@ -235,45 +217,39 @@ int vtkGLPrintSequencer::RequestData(
     options.strategy = static_cast<gl::SequenceStrategy>(this->Strategy);
     options.rolloutCandidates = this->RolloutCandidates;
     options.retractionCost = this->RetractionCost;
-    const bool needPcg =
-      options.strategy == gl::SequenceStrategy::Greedy || options.strategy == gl::SequenceStrategy::Rollout;
+    const bool needPcg = options.strategy == gl::SequenceStrategy::Greedy ||
+                         options.strategy == gl::SequenceStrategy::Rollout;
     options.progress = gl::progressRange(this, needPcg ? 0.6 : 0.1, 0.95);
     options.shouldAbort = gl::abortFlag(this);
     gl::PotentialCollisions pcg;
-    if (needPcg)
-    {
+    if (needPcg) {
       gl::PotentialCollisionOptions pcgOptions;
       pcgOptions.threads = this->NumberOfThreads;
       pcgOptions.progress = gl::progressRange(this, 0.1, 0.6);
       pcgOptions.shouldAbort = gl::abortFlag(this);
       pcg = gl::computePotentialCollisions(material, nozzle, pcgOptions);
-      if (aborted(0.6))
-      {
+      if (aborted(0.6)) {
         return 1;
       }
     }
-    const gl::PrintSequence seq = gl::sequencePrint(tree, material, needPcg ? &pcg : nullptr, options);
-    if (aborted(0.95))
-    {
+    const gl::PrintSequence seq =
+        gl::sequencePrint(tree, material, needPcg ? &pcg : nullptr, options);
+    if (aborted(0.95)) {
       return 1;
     }
 
     sequencedLattice(lattice, graph, seq, outputs[0]);
     sequencedSkeleton(skeleton, seq, outputs[1]);
     printOrderPolyline(tree, seq, outputs[2]);
-    for (vtkPolyData* out : outputs)
-    {
+    for (vtkPolyData* out : outputs) {
       addSequenceFieldData(tree, seq, pcg, this->NozzleAngle, out->GetFieldData());
     }
     this->UpdateProgress(1.0);
-  }
-  catch (const std::exception& e)
-  {
-    for (vtkPolyData* out : outputs)
-    {
+  } catch (const std::exception& e) {
+    for (vtkPolyData* out : outputs) {
       out->Initialize();
     }
-    if (!this->GetAbortExecute()) // an abort is not an error: empty outputs, no message
+    if (!this->GetAbortExecute())  // an abort is not an error: empty outputs, no message
     {
       vtkErrorMacro(<< e.what());
     }
@@ -281,8 +257,7 @@ int vtkGLPrintSequencer::RequestData(
   return 1;
 }
 
-void vtkGLPrintSequencer::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLPrintSequencer::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Strategy: " << this->Strategy << "\n";
   os << indent << "NozzleAngle: " << this->NozzleAngle << " deg\n";

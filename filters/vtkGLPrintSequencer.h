@@ -57,16 +57,14 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLPrintSequencer : public vtkPolyDataAlgorithm
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLPrintSequencer : public vtkPolyDataAlgorithm {
 public:
   static vtkGLPrintSequencer* New();
   vtkTypeMacro(vtkGLPrintSequencer, vtkPolyDataAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Values of Strategy (= geolattice::SequenceStrategy).
-  enum Strategies
-  {
+  enum Strategies {
     LPT = 0,  ///< layer priority traversal
     DPT = 1,  ///< depth priority traversal
     A4 = 2,   ///< the paper's greedy traversal with PCGs (Algorithm 4)

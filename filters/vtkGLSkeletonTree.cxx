@@ -29,20 +29,17 @@
 
 vtkStandardNewMacro(vtkGLSkeletonTree);
 
-namespace
-{
+namespace {
 namespace gl = geolattice;
 
-vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n)
-{
+vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n) {
   auto a = vtkSmartPointer<vtkIntArray>::New();
   a->SetName(name);
   a->SetNumberOfTuples(n);
   return a;
 }
 
-void buildOutput(const gl::SkeletonTree& tree, double seconds, vtkPolyData* out)
-{
+void buildOutput(const gl::SkeletonTree& tree, double seconds, vtkPolyData* out) {
   const vtkIdType N = static_cast<vtkIdType>(tree.nodes.size());
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -57,8 +54,7 @@ void buildOutput(const gl::SkeletonTree& tree, double seconds, vtkPolyData* out)
   gamma->SetNumberOfTuples(N);
   length->SetName(gl::arrays::SubgraphLength);
   length->SetNumberOfTuples(N);
-  for (vtkIdType i = 0; i < N; ++i)
-  {
+  for (vtkIdType i = 0; i < N; ++i) {
     const gl::SkeletonNode& n = tree.nodes[i];
     points->SetPoint(i, n.centroid.data());
     nodeId->SetValue(i, static_cast<int>(i));
@@ -73,9 +69,8 @@ void buildOutput(const gl::SkeletonTree& tree, double seconds, vtkPolyData* out)
   vtkNew<vtkCellArray> lines;
   const vtkIdType E = static_cast<vtkIdType>(tree.edges.size());
   lines->AllocateExact(E, 2 * E);
-  for (const auto& e : tree.edges)
-  {
-    const vtkIdType ids[2] = { e[0], e[1] };
+  for (const auto& e : tree.edges) {
+    const vtkIdType ids[2] = {e[0], e[1]};
     lines->InsertNextCell(2, ids);
   }
   out->SetLines(lines);
@@ -90,78 +85,71 @@ void buildOutput(const gl::SkeletonTree& tree, double seconds, vtkPolyData* out)
   pd->SetActiveScalars(gl::arrays::LayerId);
 
   vtkFieldData* fd = out->GetFieldData();
-  gl::addFieldArray(fd, gl::arrays::SkeletonRoots, { static_cast<double>(tree.roots) });
-  gl::addFieldArray(fd, gl::arrays::SkeletonFloatingNodes, { static_cast<double>(tree.floatingNodes) });
-  gl::addFieldArray(fd, gl::arrays::SkeletonMergeNodes, { static_cast<double>(tree.mergeNodes) });
-  gl::addFieldArray(fd, gl::arrays::SkeletonSplitNodes, { static_cast<double>(tree.splitNodes) });
-  gl::addFieldArray(fd, gl::arrays::SkeletonSeconds, { seconds });
+  gl::addFieldArray(fd, gl::arrays::SkeletonRoots, {static_cast<double>(tree.roots)});
+  gl::addFieldArray(fd, gl::arrays::SkeletonFloatingNodes,
+                    {static_cast<double>(tree.floatingNodes)});
+  gl::addFieldArray(fd, gl::arrays::SkeletonMergeNodes, {static_cast<double>(tree.mergeNodes)});
+  gl::addFieldArray(fd, gl::arrays::SkeletonSplitNodes, {static_cast<double>(tree.splitNodes)});
+  gl::addFieldArray(fd, gl::arrays::SkeletonSeconds, {seconds});
   gl::addFieldArray(fd, gl::arrays::LayerValues, tree.layerValues);
 }
-} // namespace
+}  // namespace
 
-vtkGLSkeletonTree::vtkGLSkeletonTree()
-{
+vtkGLSkeletonTree::vtkGLSkeletonTree() {
   this->SetNumberOfInputPorts(2);
 }
 
-int vtkGLSkeletonTree::FillInputPortInformation(int port, vtkInformation* info)
-{
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), port == 0 ? "vtkPolyData" : "vtkUnstructuredGrid");
+int vtkGLSkeletonTree::FillInputPortInformation(int port, vtkInformation* info) {
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(),
+            port == 0 ? "vtkPolyData" : "vtkUnstructuredGrid");
   return 1;
 }
 
-int vtkGLSkeletonTree::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
+int vtkGLSkeletonTree::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                   vtkInformationVector* outputVector) {
   // Collective in an MPI run: the lattice and the tet mesh on one process (vtkGLParallel.h).
   const gl::ParallelInputs inputs(inputVector, 2, outputVector);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  if (!inputs.Computes())
-  {
-    return 1; // another process has the inputs
+  if (!inputs.Computes()) {
+    return 1;  // another process has the inputs
   }
   vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
   vtkUnstructuredGrid* grid = inputs.Get<vtkUnstructuredGrid>(1);
-  try
-  {
+  try {
     const auto t0 = std::chrono::steady_clock::now();
     const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
-    if (!grid)
-    {
-      throw gl::GeoLatticeError("no tet mesh on input port 1 (connect the output of GL Geodesic Distance Fields)");
+    if (!grid) {
+      throw gl::GeoLatticeError(
+          "no tet mesh on input port 1 (connect the output of GL Geodesic Distance Fields)");
     }
     const gl::TetMesh mesh = gl::toTetMesh(grid);
     vtkDataArray* gammaArray = grid->GetPointData()->GetArray(gl::arrays::Gamma);
-    if (!gammaArray)
-    {
-      throw gl::GeoLatticeError("the tet mesh has no point array 'Gamma' (apply GL Geodesic Distance Fields first)");
+    if (!gammaArray) {
+      throw gl::GeoLatticeError(
+          "the tet mesh has no point array 'Gamma' (apply GL Geodesic Distance Fields first)");
     }
     Eigen::VectorXd gamma(gammaArray->GetNumberOfTuples());
-    for (vtkIdType i = 0; i < gammaArray->GetNumberOfTuples(); ++i)
-    {
+    for (vtkIdType i = 0; i < gammaArray->GetNumberOfTuples(); ++i) {
       gamma[i] = gammaArray->GetComponent(i, 0);
     }
-    if (gl::progressAborts(this, 0.2))
-    {
+    if (gl::progressAborts(this, 0.2)) {
       return 1;
     }
     gl::SkeletonTreeOptions options;
     options.progress = gl::progressRange(this, 0.2, 0.95);
     options.shouldAbort = gl::abortFlag(this);
     const gl::SkeletonTree tree = gl::buildSkeletonTree(mesh, gamma, graph, options);
-    if (gl::progressAborts(this, 0.95))
-    {
+    if (gl::progressAborts(this, 0.95)) {
       return 1;
     }
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     buildOutput(tree, seconds, output);
     this->UpdateProgress(1.0);
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     output->Initialize();
-    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
     {
       vtkErrorMacro(<< e.what());
     }
@@ -169,7 +157,6 @@ int vtkGLSkeletonTree::RequestData(
   return 1;
 }
 
-void vtkGLSkeletonTree::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLSkeletonTree::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
 }

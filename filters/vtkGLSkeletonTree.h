@@ -35,8 +35,7 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLSkeletonTree : public vtkPolyDataAlgorithm
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLSkeletonTree : public vtkPolyDataAlgorithm {
 public:
   static vtkGLSkeletonTree* New();
   vtkTypeMacro(vtkGLSkeletonTree, vtkPolyDataAlgorithm);

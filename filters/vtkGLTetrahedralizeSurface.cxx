@@ -27,12 +27,10 @@
 
 vtkStandardNewMacro(vtkGLTetrahedralizeSurface);
 
-namespace
-{
+namespace {
 // Circumradius / shortest edge of tet (a, b, c, d); infinity for a flat tet.
-double radiusEdgeRatio(const geolattice::Vec3& a, const geolattice::Vec3& b, const geolattice::Vec3& c,
-  const geolattice::Vec3& d)
-{
+double radiusEdgeRatio(const geolattice::Vec3& a, const geolattice::Vec3& b,
+                       const geolattice::Vec3& c, const geolattice::Vec3& d) {
   // Circumcentre x - a solves 2 (p - a) . (x - a) = |p - a|^2 for p = b, c, d.
   Eigen::Matrix3d m;
   m.row(0) = 2.0 * (b - a).transpose();
@@ -40,65 +38,56 @@ double radiusEdgeRatio(const geolattice::Vec3& a, const geolattice::Vec3& b, con
   m.row(2) = 2.0 * (d - a).transpose();
   const Eigen::Vector3d rhs((b - a).squaredNorm(), (c - a).squaredNorm(), (d - a).squaredNorm());
   const double det = m.determinant();
-  if (det == 0.0)
-  {
+  if (det == 0.0) {
     return std::numeric_limits<double>::infinity();
   }
   const double radius = m.partialPivLu().solve(rhs).norm();
-  const double shortest = std::sqrt(std::min({ (b - a).squaredNorm(), (c - a).squaredNorm(),
-    (d - a).squaredNorm(), (c - b).squaredNorm(), (d - b).squaredNorm(), (d - c).squaredNorm() }));
+  const double shortest =
+      std::sqrt(std::min({(b - a).squaredNorm(), (c - a).squaredNorm(), (d - a).squaredNorm(),
+                          (c - b).squaredNorm(), (d - b).squaredNorm(), (d - c).squaredNorm()}));
   return radius / shortest;
 }
 
-void addValue(vtkFieldData* fd, const char* name, double value)
-{
+void addValue(vtkFieldData* fd, const char* name, double value) {
   vtkNew<vtkDoubleArray> array;
   array->SetName(name);
   array->InsertNextValue(value);
   fd->AddArray(array);
 }
-} // namespace
+}  // namespace
 
-void vtkGLTetrahedralizeSurface::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLTetrahedralizeSurface::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "TargetEdgeLength: " << this->TargetEdgeLength << " mm (0 = automatic)\n";
   os << indent << "TargetTetCount: " << this->TargetTetCount << "\n";
   os << indent << "RadiusEdgeRatio: " << this->RadiusEdgeRatio << "\n";
 }
 
-int vtkGLTetrahedralizeSurface::FillInputPortInformation(int, vtkInformation* info)
-{
+int vtkGLTetrahedralizeSurface::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
 }
 
-int vtkGLTetrahedralizeSurface::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
+int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                            vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole surface on one process (vtkGLParallel.h).
   const geolattice::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
-  if (!output)
-  {
+  if (!output) {
     vtkErrorMacro(<< "output must be a vtkUnstructuredGrid");
     return 1;
   }
   output->Initialize();
-  if (!inputs.Computes())
-  {
-    return 1; // another process has the surface
+  if (!inputs.Computes()) {
+    return 1;  // another process has the surface
   }
   vtkPolyData* input = inputs.Get<vtkPolyData>(0);
-  try
-  {
-    if (!input)
-    {
+  try {
+    if (!input) {
       throw geolattice::GeoLatticeError("input must be a vtkPolyData surface");
     }
     const geolattice::TriangleSurface surface = geolattice::toTriangleSurface(input);
-    if (geolattice::progressAborts(this, 0.05))
-    {
+    if (geolattice::progressAborts(this, 0.05)) {
       return 1;
     }
 
@@ -116,15 +105,14 @@ int vtkGLTetrahedralizeSurface::RequestData(
     // (with the last fraction, so progress never goes back) lets ParaView's progress handler
     // set AbortExecute.
     options.shouldAbort = [this, &reported]() {
-      if (!this->GetAbortExecute())
-      {
+      if (!this->GetAbortExecute()) {
         this->UpdateProgress(reported);
       }
       return this->GetAbortExecute() != 0;
     };
-    const geolattice::TetrahedralizeResult result = geolattice::tetrahedralizeSurface(surface, options);
-    if (geolattice::progressAborts(this, 0.8))
-    {
+    const geolattice::TetrahedralizeResult result =
+        geolattice::tetrahedralizeSurface(surface, options);
+    if (geolattice::progressAborts(this, 0.8)) {
       return 1;
     }
 
@@ -134,17 +122,16 @@ int vtkGLTetrahedralizeSurface::RequestData(
     quality->SetNumberOfValues(static_cast<vtkIdType>(result.mesh.tets.size()));
     const size_t tetCount = result.mesh.tets.size();
     const size_t stride = std::max<size_t>(1, tetCount / 16);
-    for (size_t t = 0; t < tetCount; ++t)
-    {
-      if (t % stride == 0 && geolattice::progressAborts(this, 0.8 + 0.15 * static_cast<double>(t) / tetCount))
-      {
+    for (size_t t = 0; t < tetCount; ++t) {
+      if (t % stride == 0 &&
+          geolattice::progressAborts(this, 0.8 + 0.15 * static_cast<double>(t) / tetCount)) {
         output->Initialize();
         return 1;
       }
       const auto& tet = result.mesh.tets[t];
       const auto& p = result.mesh.points;
-      quality->SetValue(
-        static_cast<vtkIdType>(t), radiusEdgeRatio(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]));
+      quality->SetValue(static_cast<vtkIdType>(t),
+                        radiusEdgeRatio(p[tet[0]], p[tet[1]], p[tet[2]], p[tet[3]]));
     }
     output->GetCellData()->AddArray(quality);
 
@@ -157,13 +144,10 @@ int vtkGLTetrahedralizeSurface::RequestData(
     fd->AddArray(count);
     addValue(fd, geolattice::arrays::TetrahedralizeSeconds, result.seconds);
     this->UpdateProgress(1.0);
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     output->Initialize();
     // An abort requested by the user is not an error: empty output, no message.
-    if (!this->GetAbortExecute())
-    {
+    if (!this->GetAbortExecute()) {
       vtkErrorMacro(<< e.what());
     }
   }

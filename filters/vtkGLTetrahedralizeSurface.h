@@ -38,8 +38,7 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkUnstructuredGridAlgorithm.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLTetrahedralizeSurface : public vtkUnstructuredGridAlgorithm
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLTetrahedralizeSurface : public vtkUnstructuredGridAlgorithm {
 public:
   static vtkGLTetrahedralizeSurface* New();
   vtkTypeMacro(vtkGLTetrahedralizeSurface, vtkUnstructuredGridAlgorithm);

@@ -34,25 +34,22 @@
 
 vtkStandardNewMacro(vtkGLToolpathPlanner);
 
-namespace
-{
+namespace {
 namespace gl = geolattice;
 
 static_assert(static_cast<int>(gl::MoveKind::Print) == gl::movekind::Print &&
-    static_cast<int>(gl::MoveKind::Perimeter) == gl::movekind::Perimeter &&
-    static_cast<int>(gl::MoveKind::Air) == gl::movekind::Air,
-  "geolattice::movekind must match core/toolpath/ToolpathPlanner.h");
+                  static_cast<int>(gl::MoveKind::Perimeter) == gl::movekind::Perimeter &&
+                  static_cast<int>(gl::MoveKind::Air) == gl::movekind::Air,
+              "geolattice::movekind must match core/toolpath/ToolpathPlanner.h");
 
-vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n)
-{
+vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n) {
   auto a = vtkSmartPointer<vtkIntArray>::New();
   a->SetName(name);
   a->SetNumberOfTuples(n);
   return a;
 }
 
-vtkSmartPointer<vtkDoubleArray> pointDoubles(const char* name, const std::vector<double>& values)
-{
+vtkSmartPointer<vtkDoubleArray> pointDoubles(const char* name, const std::vector<double>& values) {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
   a->SetName(name);
   a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
@@ -61,23 +58,22 @@ vtkSmartPointer<vtkDoubleArray> pointDoubles(const char* name, const std::vector
 }
 
 /// The printing order: the field array SequenceOrder of the sequencer's outputs.
-std::vector<int> printOrderOf(vtkPolyData* lattice)
-{
+std::vector<int> printOrderOf(vtkPolyData* lattice) {
   vtkDataArray* order = lattice->GetFieldData()->GetArray(gl::arrays::SequenceOrder);
-  if (!order)
-  {
-    throw gl::GeoLatticeError(std::string("the lattice has no field array ") + gl::arrays::SequenceOrder +
-      " (the printing order): run GL Print Sequencer first and connect its Sequenced Lattice output");
+  if (!order) {
+    throw gl::GeoLatticeError(std::string("the lattice has no field array ") +
+                              gl::arrays::SequenceOrder +
+                              " (the printing order): run GL Print Sequencer first and connect its "
+                              "Sequenced Lattice output");
   }
   std::vector<int> out;
   out.reserve(static_cast<size_t>(order->GetNumberOfTuples()));
-  for (vtkIdType k = 0; k < order->GetNumberOfTuples(); ++k)
-  {
+  for (vtkIdType k = 0; k < order->GetNumberOfTuples(); ++k) {
     const double v = order->GetComponent(k, 0);
-    if (!std::isfinite(v) || v < 0 || v != std::floor(v) || v > 1e9)
-    {
-      throw gl::GeoLatticeError(std::string("the field array ") + gl::arrays::SequenceOrder + " has the value " +
-        std::to_string(v) + " at position " + std::to_string(k) + "; sub-graph ids must be integers >= 0");
+    if (!std::isfinite(v) || v < 0 || v != std::floor(v) || v > 1e9) {
+      throw gl::GeoLatticeError(std::string("the field array ") + gl::arrays::SequenceOrder +
+                                " has the value " + std::to_string(v) + " at position " +
+                                std::to_string(k) + "; sub-graph ids must be integers >= 0");
     }
     out.push_back(static_cast<int>(v));
   }
@@ -85,8 +81,7 @@ std::vector<int> printOrderOf(vtkPolyData* lattice)
 }
 
 /// The whole toolpath as polydata (see the class documentation).
-void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkPolyData* out)
-{
+void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkPolyData* out) {
   const vtkIdType N = static_cast<vtkIdType>(path.points.size());
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -103,8 +98,7 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   auto latticeLayerId = [&graph](int l) {
     return l >= 0 && l < static_cast<int>(graph.layerIndex.size()) ? graph.layerIndex[l] : l;
   };
-  for (vtkIdType i = 0; i < N; ++i)
-  {
+  for (vtkIdType i = 0; i < N; ++i) {
     points->SetPoint(i, path.points[i].data());
     normals->SetTuple(i, path.normals[i].data());
     kind->SetValue(i, static_cast<int>(path.kind[i]));
@@ -137,19 +131,16 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   cellSubgraph->SetName(gl::arrays::SubgraphId);
   auto sameRun = [&path](vtkIdType a, vtkIdType b) {
     return path.kind[a] == path.kind[b] && path.pathIndex[a] == path.pathIndex[b] &&
-      path.subgraph[a] == path.subgraph[b] && path.layer[a] == path.layer[b];
+           path.subgraph[a] == path.subgraph[b] && path.layer[a] == path.layer[b];
   };
   std::vector<vtkIdType> ids;
-  for (vtkIdType first = 1; first < N;)
-  {
+  for (vtkIdType first = 1; first < N;) {
     vtkIdType last = first;
-    while (last + 1 < N && sameRun(last + 1, first))
-    {
+    while (last + 1 < N && sameRun(last + 1, first)) {
       ++last;
     }
     ids.clear();
-    for (vtkIdType i = first - 1; i <= last; ++i)
-    {
+    for (vtkIdType i = first - 1; i <= last; ++i) {
       ids.push_back(i);
     }
     lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
@@ -168,7 +159,9 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   cd->SetActiveScalars(gl::arrays::MoveKind);
 
   vtkFieldData* fd = out->GetFieldData();
-  auto count = [fd](const char* name, double value) { gl::addFieldArray(fd, name, { value }); };
+  auto count = [fd](const char* name, double value) {
+    gl::addFieldArray(fd, name, {value});
+  };
   count(gl::arrays::ToolpathPrintLength, path.printLength);
   count(gl::arrays::ToolpathPerimeterLength, path.perimeterLength);
   count(gl::arrays::ToolpathAirLength, path.airLength);
@@ -184,11 +177,10 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   count(gl::arrays::ToolpathFilament, path.filamentLength);
   count(gl::arrays::ToolpathVolume, path.depositedVolume);
   const gl::LayerThicknessResult& t = path.thicknessStats;
-  gl::addFieldArray(fd, gl::arrays::ToolpathThicknessDeviation, { t.deviationMin, t.deviationMax });
+  gl::addFieldArray(fd, gl::arrays::ToolpathThicknessDeviation, {t.deviationMin, t.deviationMax});
   std::vector<double> perLayer;
-  for (const gl::LayerThicknessDeviation& d : t.perLayer)
-  {
-    perLayer.insert(perLayer.end(), { d.min, d.mean, d.max });
+  for (const gl::LayerThicknessDeviation& d : t.perLayer) {
+    perLayer.insert(perLayer.end(), {d.min, d.mean, d.max});
   }
   gl::addFieldArray(fd, gl::arrays::ToolpathThicknessDeviationPerLayer, perLayer, 3);
   count(gl::arrays::ToolpathCappedVertices, t.cappedVertices);
@@ -204,8 +196,7 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
 }
 
 /// The first `n` tuples of `a` in a new array of the same type and name.
-vtkSmartPointer<vtkAbstractArray> prefixOf(vtkAbstractArray* a, vtkIdType n)
-{
+vtkSmartPointer<vtkAbstractArray> prefixOf(vtkAbstractArray* a, vtkIdType n) {
   auto b = vtkSmartPointer<vtkAbstractArray>::Take(a->NewInstance());
   b->SetName(a->GetName());
   b->SetNumberOfComponents(a->GetNumberOfComponents());
@@ -215,8 +206,7 @@ vtkSmartPointer<vtkAbstractArray> prefixOf(vtkAbstractArray* a, vtkIdType n)
 
 /// The toolpath printed up to point `last` (inclusive): points 0..last, the cells that start
 /// before it, the last of them cut there; all field data.
-void cutToolpath(vtkPolyData* full, vtkIdType last, vtkPolyData* out)
-{
+void cutToolpath(vtkPolyData* full, vtkIdType last, vtkPolyData* out) {
   const vtkIdType n = last + 1;
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
@@ -224,8 +214,7 @@ void cutToolpath(vtkPolyData* full, vtkIdType last, vtkPolyData* out)
   out->SetPoints(points);
   vtkPointData* from = full->GetPointData();
   vtkPointData* pd = out->GetPointData();
-  for (int i = 0; i < from->GetNumberOfArrays(); ++i)
-  {
+  for (int i = 0; i < from->GetNumberOfArrays(); ++i) {
     pd->AddArray(prefixOf(from->GetAbstractArray(i), n));
   }
   pd->SetNormals(vtkDataArray::SafeDownCast(pd->GetAbstractArray(geolattice::arrays::Normals)));
@@ -236,12 +225,10 @@ void cutToolpath(vtkPolyData* full, vtkIdType last, vtkPolyData* out)
   vtkIdType count;
   const vtkIdType* ids;
   vtkCellArray* fullLines = full->GetLines();
-  for (vtkIdType c = 0; c < fullLines->GetNumberOfCells(); ++c)
-  {
+  for (vtkIdType c = 0; c < fullLines->GetNumberOfCells(); ++c) {
     fullLines->GetCellAtId(c, count, ids);
-    if (count == 0 || ids[0] >= last)
-    {
-      break; // cells are in printing order
+    if (count == 0 || ids[0] >= last) {
+      break;  // cells are in printing order
     }
     const vtkIdType kept = std::min(count, last - ids[0] + 1);
     lines->InsertNextCell(kept, ids);
@@ -250,97 +237,101 @@ void cutToolpath(vtkPolyData* full, vtkIdType last, vtkPolyData* out)
   out->SetLines(lines);
   vtkCellData* fromCells = full->GetCellData();
   vtkCellData* cd = out->GetCellData();
-  for (int i = 0; i < fromCells->GetNumberOfArrays(); ++i)
-  {
+  for (int i = 0; i < fromCells->GetNumberOfArrays(); ++i) {
     cd->AddArray(prefixOf(fromCells->GetAbstractArray(i), cells));
   }
   cd->SetActiveScalars(geolattice::arrays::MoveKind);
   out->GetFieldData()->ShallowCopy(full->GetFieldData());
 }
-} // namespace
+}  // namespace
 
-vtkGLToolpathPlanner::vtkGLToolpathPlanner()
-{
+vtkGLToolpathPlanner::vtkGLToolpathPlanner() {
   this->SetNumberOfInputPorts(2);
 }
 
 vtkGLToolpathPlanner::~vtkGLToolpathPlanner() = default;
 
-int vtkGLToolpathPlanner::FillInputPortInformation(int, vtkInformation* info)
-{
+int vtkGLToolpathPlanner::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
 }
 
-std::array<double, 20> vtkGLToolpathPlanner::Parameters() const
-{
-  return { this->PathWidth, this->FilamentDiameter, this->FlowCorrection, this->PrintFeedRate, this->AirFeedRate,
-    this->ThicknessCap, this->MaxTurnAngle, this->SafeMargin, this->Lift, this->Retraction,
-    static_cast<double>(this->SupportPerimeter), this->ToothLength, this->MaxSegmentLength, this->NozzleAngle,
-    this->NozzleLength, this->HolderRadius, this->TipClearance, this->TipFaceRadius, this->MaxAxisTilt,
-    this->TiltBlendLength };
+std::array<double, 20> vtkGLToolpathPlanner::Parameters() const {
+  return {this->PathWidth,
+          this->FilamentDiameter,
+          this->FlowCorrection,
+          this->PrintFeedRate,
+          this->AirFeedRate,
+          this->ThicknessCap,
+          this->MaxTurnAngle,
+          this->SafeMargin,
+          this->Lift,
+          this->Retraction,
+          static_cast<double>(this->SupportPerimeter),
+          this->ToothLength,
+          this->MaxSegmentLength,
+          this->NozzleAngle,
+          this->NozzleLength,
+          this->HolderRadius,
+          this->TipClearance,
+          this->TipFaceRadius,
+          this->MaxAxisTilt,
+          this->TiltBlendLength};
 }
 
-int vtkGLToolpathPlanner::RequestInformation(
-  vtkInformation*, vtkInformationVector**, vtkInformationVector* outputVector)
-{
+int vtkGLToolpathPlanner::RequestInformation(vtkInformation*, vtkInformationVector**,
+                                             vtkInformationVector* outputVector) {
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   // The toolpath's time is the print progress p in [0, 1]: the point count is unknown until the
   // path is planned in RequestData.
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
   outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
-  if (this->NumberOfTimeSteps > 0)
-  {
+  if (this->NumberOfTimeSteps > 0) {
     const int n = std::max(this->NumberOfTimeSteps, 2);
     std::vector<double> steps(static_cast<size_t>(n));
-    for (int k = 0; k < n; ++k)
-    {
+    for (int k = 0; k < n; ++k) {
       steps[k] = static_cast<double>(k) / (n - 1);
     }
-    const double range[2] = { 0.0, 1.0 };
+    const double range[2] = {0.0, 1.0};
     outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), n);
     outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
   }
   return 1;
 }
 
-int vtkGLToolpathPlanner::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
+int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                      vtkInformationVector* outputVector) {
   // Collective in an MPI run: the lattice and the skeleton on one process (vtkGLParallel.h).
   const gl::ParallelInputs inputs(inputVector, 2, outputVector);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
-  if (!inputs.Computes())
-  {
-    return 1; // another process has the inputs
+  if (!inputs.Computes()) {
+    return 1;  // another process has the inputs
   }
   vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
   vtkPolyData* skeleton = inputs.Get<vtkPolyData>(1);
-  try
-  {
-    const bool cached = this->Planned && lattice && skeleton && lattice->GetMTime() == this->PlannedLatticeTime &&
-      skeleton->GetMTime() == this->PlannedSkeletonTime && this->Parameters() == this->PlannedParameters;
-    if (!cached)
-    {
+  try {
+    const bool cached = this->Planned && lattice && skeleton &&
+                        lattice->GetMTime() == this->PlannedLatticeTime &&
+                        skeleton->GetMTime() == this->PlannedSkeletonTime &&
+                        this->Parameters() == this->PlannedParameters;
+    if (!cached) {
       this->Planned = nullptr;
-      if (!(this->FilamentDiameter > 0) || !std::isfinite(this->FilamentDiameter))
-      {
+      if (!(this->FilamentDiameter > 0) || !std::isfinite(this->FilamentDiameter)) {
         throw gl::GeoLatticeError("toolpath: filament diameter must be > 0 (got " +
-          std::to_string(this->FilamentDiameter) + ")");
+                                  std::to_string(this->FilamentDiameter) + ")");
       }
       const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
-      if (graph.edgeKind.size() != graph.edges.size())
-      {
+      if (graph.edgeKind.size() != graph.edges.size()) {
         throw gl::GeoLatticeError(std::string("the lattice has no ") + gl::arrays::EdgeKind +
-          " cell array (alpha, beta or boundary edge, written by GL Lattice Infill; the trimming needs it)");
+                                  " cell array (alpha, beta or boundary edge, written by GL "
+                                  "Lattice Infill; the trimming needs it)");
       }
       const std::vector<int> order = printOrderOf(lattice);
       gl::SkeletonTree tree = gl::toSkeletonTree(skeleton);
       gl::matchSkeletonToLattice(tree, graph);
-      if (gl::progressAborts(this, 0.1))
-      {
+      if (gl::progressAborts(this, 0.1)) {
         return 1;
       }
 
@@ -358,25 +349,22 @@ int vtkGLToolpathPlanner::RequestData(
       options.supportPerimeter = this->SupportPerimeter != 0;
       options.toothLength = this->ToothLength;
       options.maxSegmentLength = this->MaxSegmentLength;
-      options.nozzle = gl::nozzleModel(
-        this->NozzleAngle, this->NozzleLength, this->HolderRadius, this->TipClearance, this->TipFaceRadius);
+      options.nozzle = gl::nozzleModel(this->NozzleAngle, this->NozzleLength, this->HolderRadius,
+                                       this->TipClearance, this->TipFaceRadius);
       options.clearance.maxTiltDeg = this->MaxAxisTilt;
       options.clearance.blendLength = this->TiltBlendLength;
       // The planning is one core call (core/toolpath): progress before and after it.
       const gl::Toolpath path = gl::planToolpath(graph, tree, order, options);
-      if (gl::progressAborts(this, 0.8))
-      {
-        return 1; // nothing cached: the next update plans again
+      if (gl::progressAborts(this, 0.8)) {
+        return 1;  // nothing cached: the next update plans again
       }
 
       auto planned = vtkSmartPointer<vtkPolyData>::New();
       buildToolpath(path, graph, planned);
-      if (gl::progressAborts(this, 0.95))
-      {
+      if (gl::progressAborts(this, 0.95)) {
         return 1;
       }
-      if (vtkDataArray* edges = lattice->GetFieldData()->GetArray(gl::arrays::SkeletonEdges))
-      {
+      if (vtkDataArray* edges = lattice->GetFieldData()->GetArray(gl::arrays::SkeletonEdges)) {
         planned->GetFieldData()->AddArray(edges);
       }
       this->Planned = planned;
@@ -388,32 +376,26 @@ int vtkGLToolpathPlanner::RequestData(
     // The print replay: at time p the points 0 .. round(p (N - 1)).
     const vtkIdType N = this->Planned->GetNumberOfPoints();
     vtkIdType last = N - 1;
-    const bool timed =
-      this->NumberOfTimeSteps > 0 && outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    const double p = timed ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) : 1.0;
-    if (std::isfinite(p) && p < 1)
-    {
+    const bool timed = this->NumberOfTimeSteps > 0 &&
+                       outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
+    const double p =
+        timed ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) : 1.0;
+    if (std::isfinite(p) && p < 1) {
       last = static_cast<vtkIdType>(std::llround(std::max(p, 0.0) * static_cast<double>(N - 1)));
     }
-    if (last >= N - 1)
-    {
+    if (last >= N - 1) {
       output->ShallowCopy(this->Planned);
-    }
-    else
-    {
+    } else {
       cutToolpath(this->Planned, last, output);
     }
-    if (timed)
-    {
+    if (timed) {
       output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), p);
     }
     this->UpdateProgress(1.0);
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     this->Planned = nullptr;
     output->Initialize();
-    if (!this->GetAbortExecute()) // an abort is not an error: empty output, no message
+    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
     {
       vtkErrorMacro(<< e.what());
     }
@@ -421,8 +403,7 @@ int vtkGLToolpathPlanner::RequestData(
   return 1;
 }
 
-void vtkGLToolpathPlanner::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLToolpathPlanner::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "PathWidth: " << this->PathWidth << " mm\n";
   os << indent << "FilamentDiameter: " << this->FilamentDiameter << " mm\n";

@@ -86,12 +86,11 @@
 
 #include "GeoLatticeFiltersModule.h"
 #include "vtkPolyDataAlgorithm.h"
-#include "vtkSmartPointer.h" // for the cached toolpath
+#include "vtkSmartPointer.h"  // for the cached toolpath
 
-#include <array> // for the cached parameters
+#include <array>  // for the cached parameters
 
-class GEOLATTICEFILTERS_EXPORT vtkGLToolpathPlanner : public vtkPolyDataAlgorithm
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLToolpathPlanner : public vtkPolyDataAlgorithm {
 public:
   static vtkGLToolpathPlanner* New();
   vtkTypeMacro(vtkGLToolpathPlanner, vtkPolyDataAlgorithm);
@@ -250,9 +249,9 @@ private:
   std::array<double, 20> Parameters() const;
 
   // Cache of the last successful planning: a new requested time only re-cuts it.
-  vtkSmartPointer<vtkPolyData> Planned;   ///< the whole toolpath
-  vtkMTimeType PlannedLatticeTime = 0;    ///< MTime of input 0 it was planned from
-  vtkMTimeType PlannedSkeletonTime = 0;   ///< MTime of input 1
+  vtkSmartPointer<vtkPolyData> Planned;  ///< the whole toolpath
+  vtkMTimeType PlannedLatticeTime = 0;   ///< MTime of input 0 it was planned from
+  vtkMTimeType PlannedSkeletonTime = 0;  ///< MTime of input 1
   std::array<double, 20> PlannedParameters{};
 };
 

@@ -24,95 +24,81 @@
 
 vtkStandardNewMacro(vtkGLURScriptWriter);
 
-namespace
-{
+namespace {
 namespace gl = geolattice;
 
-bool allFinite(const double* v, int n)
-{
+bool allFinite(const double* v, int n) {
   return std::all_of(v, v + n, [](double x) { return std::isfinite(x); });
 }
 
 /// "N of M toolpath points are unreachable … (first: a, b, …)".
-std::string describeUnreachable(const std::vector<vtkIdType>& unreachable, size_t points, const std::string& robot)
-{
+std::string describeUnreachable(const std::vector<vtkIdType>& unreachable, size_t points,
+                                const std::string& robot) {
   std::ostringstream s;
-  s << unreachable.size() << " of " << points << " toolpath points are unreachable for the " << robot
-    << " in this cell (first: ";
+  s << unreachable.size() << " of " << points << " toolpath points are unreachable for the "
+    << robot << " in this cell (first: ";
   const size_t shown = std::min<size_t>(unreachable.size(), 10);
-  for (size_t i = 0; i < shown; ++i)
-  {
+  for (size_t i = 0; i < shown; ++i) {
     s << (i ? ", " : "") << unreachable[i];
   }
   s << (unreachable.size() > shown ? ", ...)" : ")");
   return s.str();
 }
-} // namespace
+}  // namespace
 
-vtkGLURScriptWriter::vtkGLURScriptWriter()
-{
+vtkGLURScriptWriter::vtkGLURScriptWriter() {
   this->SetRobot("ur5");
 }
 
-vtkGLURScriptWriter::~vtkGLURScriptWriter()
-{
+vtkGLURScriptWriter::~vtkGLURScriptWriter() {
   this->SetFileName(nullptr);
   this->SetRobot(nullptr);
 }
 
-int vtkGLURScriptWriter::FillInputPortInformation(int, vtkInformation* info)
-{
+int vtkGLURScriptWriter::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
 }
 
-vtkTypeBool vtkGLURScriptWriter::ProcessRequest(
-  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
-{
-  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT()))
-  {
+vtkTypeBool vtkGLURScriptWriter::ProcessRequest(vtkInformation* request,
+                                                vtkInformationVector** inputVector,
+                                                vtkInformationVector* outputVector) {
+  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT())) {
     gl::requestEndOfTimeRange(inputVector);
   }
   return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
-std::string vtkGLURScriptWriter::ProgramFileName(const std::string& fileName, int k)
-{
-  if (k <= 0)
-  {
+std::string vtkGLURScriptWriter::ProgramFileName(const std::string& fileName, int k) {
+  if (k <= 0) {
     return fileName;
   }
   const std::filesystem::path p(fileName);
-  return (p.parent_path() / (p.stem().string() + "_" + std::to_string(k) + p.extension().string())).string();
+  return (p.parent_path() / (p.stem().string() + "_" + std::to_string(k) + p.extension().string()))
+      .string();
 }
 
-std::string vtkGLURScriptWriter::ProgramName(const std::string& fileName)
-{
+std::string vtkGLURScriptWriter::ProgramName(const std::string& fileName) {
   std::string name = std::filesystem::path(fileName).stem().string();
-  for (char& c : name)
-  {
+  for (char& c : name) {
     const unsigned char u = static_cast<unsigned char>(c);
     c = std::isalnum(u) && u < 128 ? static_cast<char>(std::tolower(u)) : '_';
   }
-  if (name.empty() || !(name[0] >= 'a' && name[0] <= 'z'))
-  {
+  if (name.empty() || !(name[0] >= 'a' && name[0] <= 'z')) {
     name = "p_" + name;
   }
   return name;
 }
 
-std::string vtkGLURScriptWriter::GetFileWritten(int k) const
-{
+std::string vtkGLURScriptWriter::GetFileWritten(int k) const {
   return k >= 0 && k < this->GetNumberOfFilesWritten() ? this->FilesWritten[k] : std::string();
 }
 
-vtkIdType vtkGLURScriptWriter::GetUnreachablePoint(vtkIdType i) const
-{
+vtkIdType vtkGLURScriptWriter::GetUnreachablePoint(vtkIdType i) const {
   return i >= 0 && i < this->GetUnreachableCount() ? this->Unreachable[i] : -1;
 }
 
-void vtkGLURScriptWriter::ResetResults()
-{
+void vtkGLURScriptWriter::ResetResults() {
   this->FilesWritten.clear();
   this->Unreachable.clear();
   this->NumberOfWaypoints = 0;
@@ -128,25 +114,20 @@ void vtkGLURScriptWriter::ResetResults()
   this->SolveSeconds = 0;
 }
 
-void vtkGLURScriptWriter::WriteData()
-{
+void vtkGLURScriptWriter::WriteData() {
   this->ResetResults();
   // In an MPI run one process writes: the one with the toolpath (vtkGLParallel.h).
   const gl::ParallelInputs inputs(this);
-  if (!inputs.Computes())
-  {
-    return; // another process writes the program
+  if (!inputs.Computes()) {
+    return;  // another process writes the program
   }
-  try
-  {
-    if (!this->FileName || !*this->FileName)
-    {
+  try {
+    if (!this->FileName || !*this->FileName) {
       throw gl::GeoLatticeError("URScript writer: no FileName given");
     }
     const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
     this->NumberOfWaypoints = static_cast<vtkIdType>(path.points.size());
-    if (gl::progressAborts(this, 0.1))
-    {
+    if (gl::progressAborts(this, 0.1)) {
       this->ResetResults();
       return;
     }
@@ -154,45 +135,42 @@ void vtkGLURScriptWriter::WriteData()
     // The cell.
     gl::RobotCell cell;
     cell.robot = gl::robotModelByName(this->Robot ? this->Robot : "");
-    if (!allFinite(this->NozzleTip, 3))
-    {
+    if (!allFinite(this->NozzleTip, 3)) {
       throw gl::GeoLatticeError("URScript writer: the nozzle tip must be finite");
     }
     cell.nozzleTip = Eigen::Vector3d(this->NozzleTip[0], this->NozzleTip[1], this->NozzleTip[2]);
     const Eigen::Vector3d axis(this->NozzleAxis[0], this->NozzleAxis[1], this->NozzleAxis[2]);
-    if (!axis.allFinite() || !(axis.norm() > 1e-12))
-    {
-      throw gl::GeoLatticeError("URScript writer: the nozzle axis must be a finite, non-zero vector");
+    if (!axis.allFinite() || !(axis.norm() > 1e-12)) {
+      throw gl::GeoLatticeError(
+          "URScript writer: the nozzle axis must be a finite, non-zero vector");
     }
     cell.nozzleAxis = axis.normalized();
-    if (!allFinite(this->PartOnFlange, 6))
-    {
+    if (!allFinite(this->PartOnFlange, 6)) {
       throw gl::GeoLatticeError("URScript writer: the part-on-flange pose must be finite");
     }
-    cell.partOnFlange = gl::toIsometry({ this->PartOnFlange[0], this->PartOnFlange[1], this->PartOnFlange[2],
-      this->PartOnFlange[3], this->PartOnFlange[4], this->PartOnFlange[5] });
-    cell.partScale = 0.001; // toolpath mm -> m
+    cell.partOnFlange =
+        gl::toIsometry({this->PartOnFlange[0], this->PartOnFlange[1], this->PartOnFlange[2],
+                        this->PartOnFlange[3], this->PartOnFlange[4], this->PartOnFlange[5]});
+    cell.partScale = 0.001;  // toolpath mm -> m
 
     // The program options (checked here with the property names; the core checks them again).
-    if (this->MaxFileBytes < 10000)
-    {
+    if (this->MaxFileBytes < 10000) {
       throw gl::GeoLatticeError(
-        "URScript writer: the maximum file size must be >= 10000 bytes (got " + std::to_string(this->MaxFileBytes) + ")");
+          "URScript writer: the maximum file size must be >= 10000 bytes (got " +
+          std::to_string(this->MaxFileBytes) + ")");
     }
-    if (!(this->SpeedFactor > 0 && this->SpeedFactor <= 1))
-    {
+    if (!(this->SpeedFactor > 0 && this->SpeedFactor <= 1)) {
+      throw gl::GeoLatticeError("URScript writer: the speed factor must be in (0, 1] (got " +
+                                std::to_string(this->SpeedFactor) + ")");
+    }
+    if (!(this->MaxFilamentRate > 0) || !std::isfinite(this->MaxFilamentRate)) {
       throw gl::GeoLatticeError(
-        "URScript writer: the speed factor must be in (0, 1] (got " + std::to_string(this->SpeedFactor) + ")");
+          "URScript writer: the maximum filament rate must be > 0 mm/s (got " +
+          std::to_string(this->MaxFilamentRate) + ")");
     }
-    if (!(this->MaxFilamentRate > 0) || !std::isfinite(this->MaxFilamentRate))
-    {
-      throw gl::GeoLatticeError("URScript writer: the maximum filament rate must be > 0 mm/s (got " +
-        std::to_string(this->MaxFilamentRate) + ")");
-    }
-    if (!(this->MaxBlend >= 0) || !std::isfinite(this->MaxBlend))
-    {
-      throw gl::GeoLatticeError(
-        "URScript writer: the maximum blend radius must be >= 0 m (got " + std::to_string(this->MaxBlend) + ")");
+    if (!(this->MaxBlend >= 0) || !std::isfinite(this->MaxBlend)) {
+      throw gl::GeoLatticeError("URScript writer: the maximum blend radius must be >= 0 m (got " +
+                                std::to_string(this->MaxBlend) + ")");
     }
     gl::URScriptOptions options;
     options.maxFileBytes = static_cast<size_t>(this->MaxFileBytes);
@@ -202,16 +180,16 @@ void vtkGLURScriptWriter::WriteData()
     options.programName = ProgramName(this->FileName);
 
     // Joints along the path (one core call: progress before and after it).
-    if (!(this->MaxJointStep > 0) || !std::isfinite(this->MaxJointStep))
-    {
+    if (!(this->MaxJointStep > 0) || !std::isfinite(this->MaxJointStep)) {
       throw gl::GeoLatticeError(
-        "URScript writer: the maximum joint step must be > 0 degrees (got " + std::to_string(this->MaxJointStep) + ")");
+          "URScript writer: the maximum joint step must be > 0 degrees (got " +
+          std::to_string(this->MaxJointStep) + ")");
     }
     gl::RobotPathOptions pathOptions;
     pathOptions.maxJointStepDeg = this->MaxJointStep;
-    const gl::RobotPath robotPath = gl::solveRobotPath(cell, path.points, path.normals, pathOptions);
-    if (gl::progressAborts(this, 0.5))
-    {
+    const gl::RobotPath robotPath =
+        gl::solveRobotPath(cell, path.points, path.normals, pathOptions);
+    if (gl::progressAborts(this, 0.5)) {
       this->ResetResults();
       return;
     }
@@ -225,39 +203,41 @@ void vtkGLURScriptWriter::WriteData()
     this->MinSingularity[1] = robotPath.minSingularity.elbow;
     this->MinSingularity[2] = robotPath.minSingularity.wrist;
     this->SolveSeconds = robotPath.seconds;
-    if (!robotPath.largeSteps.empty())
-    {
+    if (!robotPath.largeSteps.empty()) {
       std::ostringstream text;
-      text << "URScript writer: a joint of the " << cell.robot.name << " jumps by " << robotPath.maxJointStepDeg
-           << " degrees at toolpath point " << robotPath.maxJointStepAt << " (" << robotPath.largeSteps.size()
-           << " steps above MaxJointStep " << this->MaxJointStep
-           << " degrees; a wrist flip or a joint limit): nothing written; move the nozzle tip or the part on the "
+      text << "URScript writer: a joint of the " << cell.robot.name << " jumps by "
+           << robotPath.maxJointStepDeg << " degrees at toolpath point " << robotPath.maxJointStepAt
+           << " (" << robotPath.largeSteps.size() << " steps above MaxJointStep "
+           << this->MaxJointStep
+           << " degrees; a wrist flip or a joint limit): nothing written; move the nozzle tip or "
+              "the part on the "
               "flange, or raise MaxJointStep";
       throw gl::GeoLatticeError(text.str());
     }
-    if (!this->Unreachable.empty())
-    {
-      const std::string text = describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name);
-      if (!this->AllowUnreachable)
-      {
+    if (!this->Unreachable.empty()) {
+      const std::string text =
+          describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name);
+      if (!this->AllowUnreachable) {
         throw gl::GeoLatticeError(text +
-          ": nothing written; move the nozzle tip or the part on the flange (AllowUnreachable writes it anyway)");
+                                  ": nothing written; move the nozzle tip or the part on the "
+                                  "flange (AllowUnreachable writes it anyway)");
       }
-      vtkWarningMacro(<< text << ": written anyway (AllowUnreachable); the robot holds still at those points");
+      vtkWarningMacro(
+          << text << ": written anyway (AllowUnreachable); the robot holds still at those points");
     }
 
     // The program files, all-or-nothing.
     std::vector<std::string> names;
     gl::AtomicFileSet files;
-    const gl::ProgramInput input{ &path.points, &path.extrusion, &path.feedRate, &path.kind };
-    const gl::ProgramStats stats = gl::writeURScript(cell, robotPath, input, options, [&](size_t k) -> std::ostream& {
-      names.push_back(ProgramFileName(this->FileName, static_cast<int>(k)));
-      return files.open(names.back());
-    });
-    if (gl::progressAborts(this, 0.9))
-    {
+    const gl::ProgramInput input{&path.points, &path.extrusion, &path.feedRate, &path.kind};
+    const gl::ProgramStats stats =
+        gl::writeURScript(cell, robotPath, input, options, [&](size_t k) -> std::ostream& {
+          names.push_back(ProgramFileName(this->FileName, static_cast<int>(k)));
+          return files.open(names.back());
+        });
+    if (gl::progressAborts(this, 0.9)) {
       this->ResetResults();
-      return; // the temporary files go with `files`: nothing written
+      return;  // the temporary files go with `files`: nothing written
     }
     files.commit();
     this->FilesWritten = names;
@@ -268,28 +248,21 @@ void vtkGLURScriptWriter::WriteData()
 
     // Numbered files of an earlier, longer program.
     std::error_code ec;
-    for (int k = static_cast<int>(names.size());; ++k)
-    {
+    for (int k = static_cast<int>(names.size());; ++k) {
       const std::string stale = ProgramFileName(this->FileName, k);
-      if (!std::filesystem::is_regular_file(stale, ec) || !std::filesystem::remove(stale, ec))
-      {
+      if (!std::filesystem::is_regular_file(stale, ec) || !std::filesystem::remove(stale, ec)) {
         break;
       }
     }
     this->UpdateProgress(1.0);
-  }
-  catch (const gl::FileWriteError& e)
-  {
+  } catch (const gl::FileWriteError& e) {
     this->FilesWritten.clear();
     this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
     vtkErrorMacro(<< e.what());
-  }
-  catch (const std::exception& e)
-  {
+  } catch (const std::exception& e) {
     this->FilesWritten.clear();
-    if (this->GetAbortExecute())
-    {
-      this->ResetResults(); // an abort is not an error: nothing written, no message
+    if (this->GetAbortExecute()) {
+      this->ResetResults();  // an abort is not an error: nothing written, no message
       return;
     }
     this->SetErrorCode(vtkErrorCode::UserError);
@@ -297,18 +270,16 @@ void vtkGLURScriptWriter::WriteData()
   }
 }
 
-void vtkGLURScriptWriter::PrintSelf(ostream& os, vtkIndent indent)
-{
+void vtkGLURScriptWriter::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "Robot: " << (this->Robot ? this->Robot : "(none)") << "\n";
-  os << indent << "NozzleTip: " << this->NozzleTip[0] << " " << this->NozzleTip[1] << " " << this->NozzleTip[2]
-     << " m\n";
-  os << indent << "NozzleAxis: " << this->NozzleAxis[0] << " " << this->NozzleAxis[1] << " " << this->NozzleAxis[2]
-     << "\n";
+  os << indent << "NozzleTip: " << this->NozzleTip[0] << " " << this->NozzleTip[1] << " "
+     << this->NozzleTip[2] << " m\n";
+  os << indent << "NozzleAxis: " << this->NozzleAxis[0] << " " << this->NozzleAxis[1] << " "
+     << this->NozzleAxis[2] << "\n";
   os << indent << "PartOnFlange:";
-  for (double v : this->PartOnFlange)
-  {
+  for (double v : this->PartOnFlange) {
     os << " " << v;
   }
   os << "\n";

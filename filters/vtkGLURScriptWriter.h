@@ -68,13 +68,12 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkWriter.h"
 
-#include <string> // for the file names
-#include <vector> // for the results
+#include <string>  // for the file names
+#include <vector>  // for the results
 
 class vtkPolyData;
 
-class GEOLATTICEFILTERS_EXPORT vtkGLURScriptWriter : public vtkWriter
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLURScriptWriter : public vtkWriter {
 public:
   static vtkGLURScriptWriter* New();
   vtkTypeMacro(vtkGLURScriptWriter, vtkWriter);
@@ -184,14 +183,14 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+                             vtkInformationVector* outputVector) override;
   void WriteData() override;
 
   char* FileName = nullptr;
   char* Robot = nullptr;
-  double NozzleTip[3] = { 0.0, -0.40, 0.30 };
-  double NozzleAxis[3] = { 0.0, 0.0, 1.0 };
-  double PartOnFlange[6] = { 0.0, 0.0, 0.04, 0.0, 0.0, 0.0 };
+  double NozzleTip[3] = {0.0, -0.40, 0.30};
+  double NozzleAxis[3] = {0.0, 0.0, 1.0};
+  double PartOnFlange[6] = {0.0, 0.0, 0.04, 0.0, 0.0, 0.0};
   vtkIdType MaxFileBytes = 4000000;
   double SpeedFactor = 0.5;
   double MaxFilamentRate = 5.0;
@@ -213,7 +212,7 @@ private:
   double MaxTipError = 0;
   double MaxAxisErrorDeg = 0;
   double MaxJointSpeedDegS = 0;
-  double MinSingularity[3] = { 0, 0, 0 };
+  double MinSingularity[3] = {0, 0, 0};
   double Duration = 0;
   vtkIdType MaxLineLength = 0;
   int IKBranch = -1;

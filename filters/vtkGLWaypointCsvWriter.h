@@ -24,8 +24,7 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkWriter.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLWaypointCsvWriter : public vtkWriter
-{
+class GEOLATTICEFILTERS_EXPORT vtkGLWaypointCsvWriter : public vtkWriter {
 public:
   static vtkGLWaypointCsvWriter* New();
   vtkTypeMacro(vtkGLWaypointCsvWriter, vtkWriter);
@@ -46,7 +45,7 @@ protected:
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
-    vtkInformationVector* outputVector) override;
+                             vtkInformationVector* outputVector) override;
   void WriteData() override;
 
   char* FileName = nullptr;

@@ -15,17 +15,21 @@ namespace geolattice {
 
 using Vec = Eigen::Vector3d;
 
-CollisionReport verifyNozzleClearance(const std::vector<Vec>& points, const std::vector<Vec>& normals,
-                                      const std::vector<int>& time, const NozzleModel& nozzle, int maxReported,
-                                      const CollisionExemption* exemption, const std::vector<char>* material) {
+CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
+                                      const std::vector<Vec>& normals, const std::vector<int>& time,
+                                      const NozzleModel& nozzle, int maxReported,
+                                      const CollisionExemption* exemption,
+                                      const std::vector<char>* material) {
   const auto t0 = std::chrono::steady_clock::now();
   nozzle.validate();
   const size_t N = points.size();
   if (normals.size() != N || time.size() != N) {
-    throw GeoLatticeError("collision verifier: points, normals and print times must have the same length");
+    throw GeoLatticeError(
+        "collision verifier: points, normals and print times must have the same length");
   }
   if (exemption && (exemption->group.size() != N || !exemption->unavoidable)) {
-    throw GeoLatticeError("collision verifier: the exemption needs one group per point and a predicate");
+    throw GeoLatticeError(
+        "collision verifier: the exemption needs one group per point and a predicate");
   }
   if (material && material->size() != N) {
     throw GeoLatticeError("collision verifier: the material mask needs one flag per point");
@@ -40,7 +44,8 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points, const std:
     const double len = normals[i].norm();
     if (!(len > 0) || !std::isfinite(len)) {
       std::ostringstream s;
-      s << "collision verifier: the nozzle axis (normal) of point " << i << " is zero or not finite";
+      s << "collision verifier: the nozzle axis (normal) of point " << i
+        << " is zero or not finite";
       throw GeoLatticeError(s.str());
     }
     axis[i] = normals[i] / len;
@@ -63,7 +68,8 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points, const std:
   // Stations in print-time order, so the reported violations are the first ones.
   std::vector<int> stations(N);
   std::iota(stations.begin(), stations.end(), 0);
-  std::stable_sort(stations.begin(), stations.end(), [&](int a, int b) { return time[a] < time[b]; });
+  std::stable_sort(stations.begin(), stations.end(),
+                   [&](int a, int b) { return time[a] < time[b]; });
 
   CollisionReport report;
   report.stations = static_cast<long long>(N);
@@ -109,4 +115,4 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points, const std:
   return report;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

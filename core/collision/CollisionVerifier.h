@@ -20,12 +20,12 @@
 namespace geolattice {
 
 struct CollisionViolation {
-  int station = 0;       ///< index of the point being printed
-  int obstacle = 0;      ///< index of the earlier point inside the nozzle there
+  int station = 0;   ///< index of the point being printed
+  int obstacle = 0;  ///< index of the earlier point inside the nozzle there
   Eigen::Vector3d stationPoint = Eigen::Vector3d::Zero();
   Eigen::Vector3d obstaclePoint = Eigen::Vector3d::Zero();
-  double height = 0;     ///< obstacle height above the tip along the axis (mm)
-  double radial = 0;     ///< obstacle distance from the axis (mm)
+  double height = 0;         ///< obstacle height above the tip along the axis (mm)
+  double radial = 0;         ///< obstacle distance from the axis (mm)
   bool unavoidable = false;  ///< every obstacle of this station is exempt (see CollisionExemption)
 };
 
@@ -39,11 +39,12 @@ struct CollisionExemption {
 
 struct CollisionReport {
   bool collisionFree = true;
-  long long stations = 0;            ///< points checked
-  long long violatingStations = 0;   ///< stations with at least one obstacle inside the nozzle
-  long long unavoidableStations = 0; ///< of those, stations whose obstacles are all exempt
-  bool orderCollisionFree = true;    ///< no station with an obstacle that is not exempt
-  std::vector<CollisionViolation> violations;  ///< the first ones in print time order (at most maxReported)
+  long long stations = 0;             ///< points checked
+  long long violatingStations = 0;    ///< stations with at least one obstacle inside the nozzle
+  long long unavoidableStations = 0;  ///< of those, stations whose obstacles are all exempt
+  bool orderCollisionFree = true;     ///< no station with an obstacle that is not exempt
+  std::vector<CollisionViolation>
+      violations;  ///< the first ones in print time order (at most maxReported)
   double seconds = 0;
 };
 
@@ -53,9 +54,10 @@ struct CollisionReport {
 /// (optional, one flag per point): only points with a non-zero flag are obstacles, e.g. the
 /// print points of a toolpath but not its air moves; every point is still a station.
 CollisionReport verifyNozzleClearance(const std::vector<Eigen::Vector3d>& points,
-                                      const std::vector<Eigen::Vector3d>& normals, const std::vector<int>& time,
-                                      const NozzleModel& nozzle, int maxReported = 20,
+                                      const std::vector<Eigen::Vector3d>& normals,
+                                      const std::vector<int>& time, const NozzleModel& nozzle,
+                                      int maxReported = 20,
                                       const CollisionExemption* exemption = nullptr,
                                       const std::vector<char>* material = nullptr);
 
-} // namespace geolattice
+}  // namespace geolattice

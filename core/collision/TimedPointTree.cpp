@@ -9,8 +9,11 @@ namespace geolattice {
 using Vec = Eigen::Vector3d;
 
 NozzleBound::NozzleBound(double angleRad, double reachMm, double clearanceMm)
-  : sinAngle(std::sin(angleRad)), cosAngle(std::cos(angleRad)), halfSpaceOrMore(angleRad >= M_PI / 2),
-    reach(reachMm), clearance(clearanceMm) {}
+    : sinAngle(std::sin(angleRad)),
+      cosAngle(std::cos(angleRad)),
+      halfSpaceOrMore(angleRad >= M_PI / 2),
+      reach(reachMm),
+      clearance(clearanceMm) {}
 
 bool NozzleBound::mayTouch(const Vec& c, double rho) const {
   const Vec v = c - tip;
@@ -34,7 +37,7 @@ bool NozzleBound::mayTouch(const Vec& c, double rho) const {
 }
 
 TimedPointTree::TimedPointTree(const std::vector<Vec>& points, const std::vector<int>& time)
-  : points_(points), time_(time) {
+    : points_(points), time_(time) {
   order_.resize(points.size());
   std::iota(order_.begin(), order_.end(), 0);
   if (!order_.empty()) {
@@ -79,4 +82,4 @@ int TimedPointTree::build(int begin, int end) {
   return id;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -46,7 +46,8 @@ public:
 
   /// Calls visit(q) for every point q with time[q] < now in a leaf whose sphere the bound may
   /// touch (candidates: the caller applies its exact test); stops when visit returns true.
-  template <class Visit> void forEachCandidate(const NozzleBound& bound, int now, Visit&& visit) const {
+  template <class Visit>
+  void forEachCandidate(const NozzleBound& bound, int now, Visit&& visit) const {
     if (nodes_.empty()) {
       return;
     }
@@ -82,4 +83,4 @@ private:
   mutable std::vector<int> stack_;  ///< query scratch: one tree per thread
 };
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -14,4 +14,4 @@ public:
   explicit GeoLatticeError(const std::string& what) : std::runtime_error(what) {}
 };
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -19,13 +19,15 @@ namespace geolattice {
 /// and polls the abort callback at the same points. Either callback may be empty.
 class ProgressReporter {
 public:
-  ProgressReporter(const std::function<void(double)>& progress, const std::function<bool()>& shouldAbort,
-                   const char* what, double lo = 0.0, double hi = 1.0)
+  ProgressReporter(const std::function<void(double)>& progress,
+                   const std::function<bool()>& shouldAbort, const char* what, double lo = 0.0,
+                   double hi = 1.0)
       : progress_(progress), shouldAbort_(shouldAbort), what_(what), lo_(lo), hi_(hi) {}
 
   /// The same callbacks for the sub-range [a, b] of this one's [0, 1].
   ProgressReporter part(double a, double b) const {
-    return ProgressReporter(progress_, shouldAbort_, what_, lo_ + (hi_ - lo_) * a, lo_ + (hi_ - lo_) * b);
+    return ProgressReporter(progress_, shouldAbort_, what_, lo_ + (hi_ - lo_) * a,
+                            lo_ + (hi_ - lo_) * b);
   }
 
   /// Reports fraction f (0..1) of this part, then polls the abort callback; throws
@@ -60,4 +62,4 @@ private:
   double lo_, hi_;
 };
 
-} // namespace geolattice
+}  // namespace geolattice

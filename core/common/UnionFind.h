@@ -12,7 +12,9 @@ namespace geolattice {
 /// @brief unite() and find() in near-constant amortised time.
 class UnionFind {
 public:
-  explicit UnionFind(int n) : parent_(static_cast<size_t>(n)) { std::iota(parent_.begin(), parent_.end(), 0); }
+  explicit UnionFind(int n) : parent_(static_cast<size_t>(n)) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
 
   int find(int v) {
     while (parent_[v] != v) {
@@ -46,4 +48,4 @@ private:
   std::vector<int> parent_;
 };
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -57,8 +57,8 @@ SparseMatrix lowerWithDiagonal(const SparseMatrix& K) {
     }
     outer[c + 1] = static_cast<int>(inner.size());
   }
-  SparseMatrix L = Eigen::Map<const SparseMatrix>(n, n, static_cast<Eigen::Index>(inner.size()), outer.data(),
-                                                  inner.data(), values.data());
+  SparseMatrix L = Eigen::Map<const SparseMatrix>(n, n, static_cast<Eigen::Index>(inner.size()),
+                                                  outer.data(), inner.data(), values.data());
   return L;
 }
 
@@ -74,7 +74,7 @@ void fixRows(SparseMatrix& L, const std::vector<char>& fixed) {
   for (int c = 0; c < n; ++c) {
     const int begin = outer[c];
     if (fixed[c]) {
-      values[begin] = values[begin] > 0 ? values[begin] : 1.0; // keep K's scale on the diagonal
+      values[begin] = values[begin] > 0 ? values[begin] : 1.0;  // keep K's scale on the diagonal
       std::fill(values + begin + 1, values + outer[c + 1], 0.0);
     } else {
       for (int k = begin + 1; k < outer[c + 1]; ++k) {
@@ -97,8 +97,8 @@ std::vector<char> indexMask(size_t n, const std::vector<int>& indices) {
 /// Gives every tet with valid[t] == 0 a unit vector from its already-valid face neighbours
 /// (breadth first, so the gaps fill from their rims), projected orthogonal to normal[t] when a
 /// normal field is given. Returns the number of tets still invalid (isolated regions).
-int fillFromNeighbours(std::vector<Vec3>& field, std::vector<char>& valid, const TetMeshTopology& topology,
-                       const std::vector<Vec3>* normal) {
+int fillFromNeighbours(std::vector<Vec3>& field, std::vector<char>& valid,
+                       const TetMeshTopology& topology, const std::vector<Vec3>* normal) {
   const int nt = static_cast<int>(field.size());
   std::queue<int> queue;
   std::vector<char> queued(nt, 0);
@@ -153,14 +153,16 @@ double percentile(std::vector<double> values, double q) {
   if (values.empty()) {
     return 0;
   }
-  const size_t k = std::min(values.size() - 1, static_cast<size_t>(q * static_cast<double>(values.size() - 1) + 0.5));
+  const size_t k = std::min(values.size() - 1,
+                            static_cast<size_t>(q * static_cast<double>(values.size() - 1) + 0.5));
   std::nth_element(values.begin(), values.begin() + static_cast<long>(k), values.end());
   return values[k];
 }
 
 void validate(const GeodesicFieldOptions& o) {
   if (!(o.timeFactor > 0) || !std::isfinite(o.timeFactor)) {
-    throw GeoLatticeError("heat time factor must be > 0 (got " + std::to_string(o.timeFactor) + ")");
+    throw GeoLatticeError("heat time factor must be > 0 (got " + std::to_string(o.timeFactor) +
+                          ")");
   }
   if (!(o.reference.norm() > 0) || !o.reference.allFinite()) {
     throw GeoLatticeError("reference vector r must be non-zero and finite");
@@ -171,21 +173,25 @@ void validate(const GeodesicFieldOptions& o) {
   }
 }
 
-} // namespace
+}  // namespace
 
 GeodesicDistanceFields::GeodesicDistanceFields(TetMesh mesh, const GeodesicFieldOptions& options)
-    : mesh_(std::move(mesh)), options_(options), heat_(options.backend), pinnedLaplacian_(options.backend),
+    : mesh_(std::move(mesh)),
+      options_(options),
+      heat_(options.backend),
+      pinnedLaplacian_(options.backend),
       dirichletLaplacian_(options.backend) {
   validate(options_);
-  const ProgressReporter progress(options_.progress, options_.shouldAbort, "geodesic distance fields");
+  const ProgressReporter progress(options_.progress, options_.shouldAbort,
+                                  "geodesic distance fields");
   progress.report(0.0);
   auto start = Clock::now();
-  ops_ = buildTetOperators(mesh_); // also checks the vertex indices the topology relies on
+  ops_ = buildTetOperators(mesh_);  // also checks the vertex indices the topology relies on
   // The tet adjacency is needed only by solve() and by callers; build it on a second thread
   // while this one assembles and factors. (If this constructor throws, the future's
   // destructor waits for the thread before the members go.)
-  std::future<void> topologyDone =
-      std::async(std::launch::async, [this] { topology_ = std::make_unique<TetMeshTopology>(mesh_); });
+  std::future<void> topologyDone = std::async(
+      std::launch::async, [this] { topology_ = std::make_unique<TetMeshTopology>(mesh_); });
   componentCount_ = vertexComponents(mesh_, component_);
   pinned_.assign(componentCount_, -1);
   for (size_t v = 0; v < component_.size(); ++v) {
@@ -205,7 +211,7 @@ GeodesicDistanceFields::GeodesicDistanceFields(TetMesh mesh, const GeodesicField
       values[k] = heatTime_ * values[k];
     }
     for (Eigen::Index c = 0; c < heatMatrix.cols(); ++c) {
-      values[heatMatrix.outerIndexPtr()[c]] += ops_.vertexVolumes[c]; // diagonal: first in column
+      values[heatMatrix.outerIndexPtr()[c]] += ops_.vertexVolumes[c];  // diagonal: first in column
     }
   }
   setupTimings_.assembly = secondsSince(start);
@@ -240,19 +246,23 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
   std::sort(sources.begin(), sources.end());
   sources.erase(std::unique(sources.begin(), sources.end()), sources.end());
   if (sources.front() < 0 || sources.back() >= static_cast<int>(nv)) {
-    throw GeoLatticeError("source vertex index out of range (mesh has " + std::to_string(nv) + " vertices)");
+    throw GeoLatticeError("source vertex index out of range (mesh has " + std::to_string(nv) +
+                          " vertices)");
   }
   std::vector<char> componentHasSource(componentCount_, 0);
   for (int s : sources) {
     componentHasSource[component_[s]] = 1;
   }
-  const int without = static_cast<int>(std::count(componentHasSource.begin(), componentHasSource.end(), 0));
+  const int without =
+      static_cast<int>(std::count(componentHasSource.begin(), componentHasSource.end(), 0));
   if (without > 0) {
-    throw GeoLatticeError("the tet mesh has " + std::to_string(componentCount_) + " connected components and " +
-                          std::to_string(without) + " of them contain no source vertex (γ is undefined there)");
+    throw GeoLatticeError("the tet mesh has " + std::to_string(componentCount_) +
+                          " connected components and " + std::to_string(without) +
+                          " of them contain no source vertex (γ is undefined there)");
   }
 
-  const ProgressReporter progress(options_.progress, options_.shouldAbort, "geodesic distance fields");
+  const ProgressReporter progress(options_.progress, options_.shouldAbort,
+                                  "geodesic distance fields");
   progress.report(0.0);
   GeodesicFields out;
   out.timings = setupTimings_;
@@ -296,8 +306,10 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
       ++out.zeroHeatGradientTets;
     }
   }
-  if (out.zeroHeatGradientTets > 0 && fillFromNeighbours(out.gammaDirection, valid, *topology_, nullptr) > 0) {
-    throw GeoLatticeError("the heat gradient vanished in a whole region of the mesh; increase the heat time factor");
+  if (out.zeroHeatGradientTets > 0 &&
+      fillFromNeighbours(out.gammaDirection, valid, *topology_, nullptr) > 0) {
+    throw GeoLatticeError(
+        "the heat gradient vanished in a whole region of the mesh; increase the heat time factor");
   }
 
   // Eqs. 4-5 for γ: K γ = b with γ = 0 on the sources.
@@ -308,7 +320,7 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
     }
     out.gamma = dirichletLaplacian_.solve(b);
     for (int s : sources) {
-      out.gamma[s] = 0; // exact already (decoupled identity rows); stated for the reader
+      out.gamma[s] = 0;  // exact already (decoupled identity rows); stated for the reader
     }
   }
   progress.report(0.65);
@@ -405,8 +417,8 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
       devBeta.push_back(angleDeviationDeg(tetGradient(ops_, mesh_, t, out.beta), gg));
     }
   }
-  out.orthogonalityDeviationDeg = {percentile(devAlpha, 0.5), percentile(devAlpha, 0.95), percentile(devBeta, 0.5),
-                                   percentile(devBeta, 0.95)};
+  out.orthogonalityDeviationDeg = {percentile(devAlpha, 0.5), percentile(devAlpha, 0.95),
+                                   percentile(devBeta, 0.5), percentile(devBeta, 0.95)};
   out.timings.solve = secondsSince(start);
   progress.report(1.0);
   return out;
@@ -418,4 +430,4 @@ GeodesicFields computeGeodesicDistanceFields(const TetMesh& mesh, const std::vec
   return solver.solve(sources);
 }
 
-} // namespace geolattice
+}  // namespace geolattice

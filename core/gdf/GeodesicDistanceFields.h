@@ -25,10 +25,11 @@ class TetMeshTopology;
 
 /// @brief Parameters of the GDF computation.
 struct GeodesicFieldOptions {
-  double timeFactor = 4.0;             ///< heat time t = timeFactor * h^2, h = mean edge length (> 0)
-  Vec3 reference = Vec3(1, 0, 0);      ///< r of Eq. 3 (any non-zero vector; normalised)
-  double referenceParallelDeg = 1.0;   ///< where angle(r, g_γ) < this (or > 180 - this), g_α is taken
-                                       ///< from neighbouring tets instead of Eq. 3 (degrees, [0, 90))
+  double timeFactor = 4.0;         ///< heat time t = timeFactor * h^2, h = mean edge length (> 0)
+  Vec3 reference = Vec3(1, 0, 0);  ///< r of Eq. 3 (any non-zero vector; normalised)
+  double referenceParallelDeg =
+      1.0;  ///< where angle(r, g_γ) < this (or > 180 - this), g_α is taken
+            ///< from neighbouring tets instead of Eq. 3 (degrees, [0, 90))
   CholeskyBackend backend = CholeskyBackend::Cholmod;
   /// true (default): g_γ, and so g_α and g_β (Eq. 3), are the normalised gradient of the
   /// solved γ, so the lattice lines are orthogonal to the actual layer normals. false: the
@@ -52,14 +53,14 @@ struct GeodesicFieldTimings {
 
 /// @brief Output of GeodesicDistanceFields::solve.
 struct GeodesicFields {
-  Eigen::VectorXd gamma;              ///< #V γ (mm), 0 on the sources
-  Eigen::VectorXd alpha;              ///< #V α (mm), min 0
-  Eigen::VectorXd beta;               ///< #V β (mm), min 0
-  std::vector<Vec3> gammaDirection;   ///< #T unit g_γ (Eq. 2, normalised, towards increasing γ)
-  std::vector<Vec3> alphaDirection;   ///< #T unit g_α (Eq. 3)
-  std::vector<Vec3> betaDirection;    ///< #T unit g_β (Eq. 3)
-  int referenceFallbackTets = 0;      ///< tets where r was nearly parallel to g_γ (see options)
-  int zeroHeatGradientTets = 0;       ///< tets where ∇u vanished (g_γ taken from neighbours)
+  Eigen::VectorXd gamma;             ///< #V γ (mm), 0 on the sources
+  Eigen::VectorXd alpha;             ///< #V α (mm), min 0
+  Eigen::VectorXd beta;              ///< #V β (mm), min 0
+  std::vector<Vec3> gammaDirection;  ///< #T unit g_γ (Eq. 2, normalised, towards increasing γ)
+  std::vector<Vec3> alphaDirection;  ///< #T unit g_α (Eq. 3)
+  std::vector<Vec3> betaDirection;   ///< #T unit g_β (Eq. 3)
+  int referenceFallbackTets = 0;     ///< tets where r was nearly parallel to g_γ (see options)
+  int zeroHeatGradientTets = 0;      ///< tets where ∇u vanished (g_γ taken from neighbours)
   /// Deviation from 90° (degrees) between the solved ∇α and ∇γ, and ∇β and ∇γ, over all tets:
   /// {median αγ, 95th percentile αγ, median βγ, 95th percentile βγ}.
   std::array<double, 4> orthogonalityDeviationDeg{};
@@ -93,9 +94,9 @@ private:
   TetOperators ops_;
   std::unique_ptr<TetMeshTopology> topology_;
   double heatTime_ = 0;
-  std::vector<int> component_;   ///< #V component id
+  std::vector<int> component_;  ///< #V component id
   int componentCount_ = 0;
-  std::vector<int> pinned_;      ///< one pinned vertex per component
+  std::vector<int> pinned_;  ///< one pinned vertex per component
   SparseCholesky heat_;
   SparseCholesky pinnedLaplacian_;
   SparseCholesky dirichletLaplacian_;
@@ -107,4 +108,4 @@ private:
 GeodesicFields computeGeodesicDistanceFields(const TetMesh& mesh, const std::vector<int>& sources,
                                              const GeodesicFieldOptions& options = {});
 
-} // namespace geolattice
+}  // namespace geolattice

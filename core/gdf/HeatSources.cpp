@@ -31,8 +31,9 @@ std::vector<int> sourcesNearLowestZ(const TetMesh& mesh, double tolerance) {
 
 std::vector<int> sourcesFromMask(const TetMesh& mesh, const std::vector<double>& mask) {
   if (mask.size() != mesh.points.size()) {
-    throw GeoLatticeError("source mask has " + std::to_string(mask.size()) + " values but the mesh has " +
-                          std::to_string(mesh.points.size()) + " points");
+    throw GeoLatticeError("source mask has " + std::to_string(mask.size()) +
+                          " values but the mesh has " + std::to_string(mesh.points.size()) +
+                          " points");
   }
   std::vector<int> sources;
   for (size_t i = 0; i < mask.size(); ++i) {
@@ -46,7 +47,8 @@ std::vector<int> sourcesFromMask(const TetMesh& mesh, const std::vector<double>&
 std::vector<int> sourcesFromDownwardFaces(const TetMesh& mesh, const TetMeshTopology& topology,
                                           double maxAngleDeg) {
   if (!(maxAngleDeg >= 0 && maxAngleDeg <= 180)) {
-    throw GeoLatticeError("base face angle must be within [0, 180] degrees (got " + std::to_string(maxAngleDeg) + ")");
+    throw GeoLatticeError("base face angle must be within [0, 180] degrees (got " +
+                          std::to_string(maxAngleDeg) + ")");
   }
   const double cosMax = std::cos(maxAngleDeg * M_PI / 180.0);
   std::vector<char> isSource(mesh.points.size(), 0);
@@ -69,4 +71,4 @@ std::vector<int> sourcesFromDownwardFaces(const TetMesh& mesh, const TetMeshTopo
   return sources;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -20,4 +20,4 @@ std::vector<int> sourcesFromMask(const TetMesh& mesh, const std::vector<double>&
 std::vector<int> sourcesFromDownwardFaces(const TetMesh& mesh, const TetMeshTopology& topology,
                                           double maxAngleDeg);
 
-} // namespace geolattice
+}  // namespace geolattice

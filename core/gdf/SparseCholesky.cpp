@@ -15,10 +15,10 @@ namespace {
 
 void startCholmod(cholmod_common& c) {
   cholmod_start(&c);
-  c.print = 0;                    // core never prints; failures are reported through status
-  c.supernodal = CHOLMOD_AUTO;    // supernodal when flops/nnz(L) >= 40, simplicial below
-  c.final_ll = 1;                 // simplicial LL^T, not LDL^T: LDL^T would accept indefinite A
-  c.final_asis = 1;               // keep the factor as computed (no conversion after factorizing)
+  c.print = 0;                  // core never prints; failures are reported through status
+  c.supernodal = CHOLMOD_AUTO;  // supernodal when flops/nnz(L) >= 40, simplicial below
+  c.final_ll = 1;               // simplicial LL^T, not LDL^T: LDL^T would accept indefinite A
+  c.final_asis = 1;             // keep the factor as computed (no conversion after factorizing)
   c.quick_return_if_not_posdef = 1;
 }
 
@@ -36,7 +36,7 @@ cholmod_sparse viewLower(const Eigen::SparseMatrix<double>& A) {
   s.itype = CHOLMOD_INT;
   s.xtype = CHOLMOD_REAL;
   s.dtype = CHOLMOD_DOUBLE;
-  s.sorted = 1; // Eigen keeps the row indices of each compressed column sorted
+  s.sorted = 1;  // Eigen keeps the row indices of each compressed column sorted
   s.packed = 1;
   return s;
 }
@@ -67,24 +67,24 @@ void factorizeWithOneOpenMPThread(cholmod_sparse* A, cholmod_factor* L, cholmod_
 
 std::string cholmodStatus(int status) {
   switch (status) {
-  case CHOLMOD_OUT_OF_MEMORY:
-    return "out of memory";
-  case CHOLMOD_TOO_LARGE:
-    return "matrix too large";
-  case CHOLMOD_INVALID:
-    return "invalid input";
-  default:
-    return "CHOLMOD status " + std::to_string(status);
+    case CHOLMOD_OUT_OF_MEMORY:
+      return "out of memory";
+    case CHOLMOD_TOO_LARGE:
+      return "matrix too large";
+    case CHOLMOD_INVALID:
+      return "invalid input";
+    default:
+      return "CHOLMOD status " + std::to_string(status);
   }
 }
 
-} // namespace
+}  // namespace
 
 /// Ordering and symbolic factor of one sparsity pattern (immutable once built, shared).
 struct SparseCholesky::Analysis {
   cholmod_common common;
   cholmod_factor* symbolic = nullptr;
-  std::vector<int> outer, inner; ///< the pattern analysed (compressed column storage)
+  std::vector<int> outer, inner;  ///< the pattern analysed (compressed column storage)
 
   Analysis() { startCholmod(common); }
   ~Analysis() {
@@ -118,7 +118,8 @@ struct SparseCholesky::Impl {
   Impl& operator=(const Impl&) = delete;
 };
 
-SparseCholesky::SparseCholesky(CholeskyBackend backend) : backend_(backend), impl_(std::make_unique<Impl>()) {}
+SparseCholesky::SparseCholesky(CholeskyBackend backend)
+    : backend_(backend), impl_(std::make_unique<Impl>()) {}
 SparseCholesky::~SparseCholesky() = default;
 SparseCholesky::SparseCholesky(SparseCholesky&&) noexcept = default;
 SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
@@ -126,8 +127,8 @@ SparseCholesky& SparseCholesky::operator=(SparseCholesky&&) noexcept = default;
 void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& Ain, const char* what) {
   impl_->ok = false;
   if (Ain.rows() != Ain.cols()) {
-    throw GeoLatticeError(std::string("the ") + what + " matrix is not square (" + std::to_string(Ain.rows()) + " x " +
-                          std::to_string(Ain.cols()) + ")");
+    throw GeoLatticeError(std::string("the ") + what + " matrix is not square (" +
+                          std::to_string(Ain.rows()) + " x " + std::to_string(Ain.cols()) + ")");
   }
   Eigen::SparseMatrix<double> compressedCopy;
   if (!Ain.isCompressed()) {
@@ -184,12 +185,15 @@ void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& Ain, const cha
 }
 
 void SparseCholesky::shareAnalysis(const SparseCholesky& other) {
-  if (backend_ == CholeskyBackend::Cholmod && other.backend_ == CholeskyBackend::Cholmod && other.impl_->analysis) {
+  if (backend_ == CholeskyBackend::Cholmod && other.backend_ == CholeskyBackend::Cholmod &&
+      other.impl_->analysis) {
     impl_->analysis = other.impl_->analysis;
   }
 }
 
-bool SparseCholesky::hasAnalysis() const { return impl_->analysis != nullptr; }
+bool SparseCholesky::hasAnalysis() const {
+  return impl_->analysis != nullptr;
+}
 
 Eigen::VectorXd SparseCholesky::solve(const Eigen::VectorXd& b) const {
   return solveColumns(b);
@@ -201,8 +205,9 @@ Eigen::MatrixXd SparseCholesky::solveColumns(const Eigen::MatrixXd& B) const {
   }
   if (backend_ == CholeskyBackend::EigenLDLT) {
     if (B.rows() != impl_->ldlt.rows()) {
-      throw GeoLatticeError("SparseCholesky::solve: right-hand side has " + std::to_string(B.rows()) +
-                            " rows, the matrix " + std::to_string(impl_->ldlt.rows()));
+      throw GeoLatticeError("SparseCholesky::solve: right-hand side has " +
+                            std::to_string(B.rows()) + " rows, the matrix " +
+                            std::to_string(impl_->ldlt.rows()));
     }
     return impl_->ldlt.solve(B);
   }
@@ -219,11 +224,14 @@ Eigen::MatrixXd SparseCholesky::solveColumns(const Eigen::MatrixXd& B) const {
   if (!x) {
     throw GeoLatticeError("sparse triangular solve failed: " + cholmodStatus(impl_->common.status));
   }
-  Eigen::MatrixXd X = Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(x->x), n, B.cols());
+  Eigen::MatrixXd X =
+      Eigen::Map<const Eigen::MatrixXd>(static_cast<const double*>(x->x), n, B.cols());
   cholmod_free_dense(&x, &impl_->common);
   return X;
 }
 
-bool SparseCholesky::factorized() const { return impl_->ok; }
+bool SparseCholesky::factorized() const {
+  return impl_->ok;
+}
 
-} // namespace geolattice
+}  // namespace geolattice

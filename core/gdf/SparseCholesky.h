@@ -15,8 +15,8 @@
 namespace geolattice {
 
 enum class CholeskyBackend {
-  Cholmod,     ///< SuiteSparse CHOLMOD LL^T, supernodal or simplicial (CHOLMOD's choice by flops/nnz)
-  EigenLDLT,   ///< Eigen::SimplicialLDLT with AMD ordering (no external library)
+  Cholmod,  ///< SuiteSparse CHOLMOD LL^T, supernodal or simplicial (CHOLMOD's choice by flops/nnz)
+  EigenLDLT,  ///< Eigen::SimplicialLDLT with AMD ordering (no external library)
 };
 
 /// @class SparseCholesky
@@ -58,4 +58,4 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -26,13 +26,13 @@ TetOperators buildTetOperators(const TetMesh& mesh) {
   ops.basisGradients.resize(nt);
   ops.tetVolumes.resize(nt);
   ops.vertexVolumes = Eigen::VectorXd::Zero(nv);
-  std::vector<int> incidenceStart(static_cast<size_t>(nv) + 1, 0); // vertex -> tets, counted here
+  std::vector<int> incidenceStart(static_cast<size_t>(nv) + 1, 0);  // vertex -> tets, counted here
   for (int t = 0; t < nt; ++t) {
     const auto& tet = mesh.tets[t];
     for (int k = 0; k < 4; ++k) {
       if (tet[k] < 0 || tet[k] >= nv) {
-        throw GeoLatticeError("tet " + std::to_string(t) + " refers to vertex " + std::to_string(tet[k]) +
-                              " which does not exist");
+        throw GeoLatticeError("tet " + std::to_string(t) + " refers to vertex " +
+                              std::to_string(tet[k]) + " which does not exist");
       }
     }
     const Vec3& p0 = mesh.points[tet[0]];
@@ -42,8 +42,9 @@ TetOperators buildTetOperators(const TetMesh& mesh) {
     edges.col(2) = mesh.points[tet[3]] - p0;
     const double volume = edges.determinant() / 6.0;
     if (!(volume > minVolume)) {
-      throw GeoLatticeError(std::string(volume < 0 ? "inverted" : "zero-volume") + " tet " + std::to_string(t) +
-                            " (signed volume " + std::to_string(volume) + " mm^3)");
+      throw GeoLatticeError(std::string(volume < 0 ? "inverted" : "zero-volume") + " tet " +
+                            std::to_string(t) + " (signed volume " + std::to_string(volume) +
+                            " mm^3)");
     }
     // Rows of edges^{-1} are the gradients of the barycentric coordinates 1..3.
     const Eigen::Matrix3d inv = edges.inverse();
@@ -79,7 +80,7 @@ TetOperators buildTetOperators(const TetMesh& mesh) {
   std::vector<double> values;
   inner.reserve(15 * static_cast<size_t>(nv));
   values.reserve(15 * static_cast<size_t>(nv));
-  std::vector<int> slot(nv, -1); // row -> position in the current column, -1 if absent
+  std::vector<int> slot(nv, -1);  // row -> position in the current column, -1 if absent
   for (int c = 0; c < nv; ++c) {
     const int begin = static_cast<int>(inner.size());
     for (int k = incidenceStart[c]; k < incidenceStart[c + 1]; ++k) {
@@ -109,8 +110,8 @@ TetOperators buildTetOperators(const TetMesh& mesh) {
     }
     outer[c + 1] = static_cast<int>(inner.size());
   }
-  ops.stiffness = Eigen::Map<const SparseMatrix>(nv, nv, static_cast<Eigen::Index>(inner.size()), outer.data(),
-                                                 inner.data(), values.data());
+  ops.stiffness = Eigen::Map<const SparseMatrix>(nv, nv, static_cast<Eigen::Index>(inner.size()),
+                                                 outer.data(), inner.data(), values.data());
 
   // Mean edge length over unique edges: the off-diagonal pattern of K holds each edge twice.
   double sum = 0;
@@ -144,4 +145,4 @@ Eigen::VectorXd integratedDivergence(const TetOperators& ops, const TetMesh& mes
   return b;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

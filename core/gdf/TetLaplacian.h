@@ -20,10 +20,10 @@ struct TetOperators {
   /// basisGradients[t][k]: gradient of the hat function of local vertex k in tet t (1/mm).
   /// It is normal to the face opposite vertex k, points towards k, |.| = area/(3|T|).
   std::vector<std::array<Vec3, 4>> basisGradients;
-  std::vector<double> tetVolumes;    ///< #T, |T| (mm^3), > 0
-  Eigen::VectorXd vertexVolumes;     ///< #V lumped volumes, sum of |T|/4 (mm^3)
-  SparseMatrix stiffness;            ///< #V x #V, K_ij = sum_T |T| grad N_i . grad N_j
-  double meanEdgeLength = 0;         ///< h (mm), mean over unique edges
+  std::vector<double> tetVolumes;  ///< #T, |T| (mm^3), > 0
+  Eigen::VectorXd vertexVolumes;   ///< #V lumped volumes, sum of |T|/4 (mm^3)
+  SparseMatrix stiffness;          ///< #V x #V, K_ij = sum_T |T| grad N_i . grad N_j
+  double meanEdgeLength = 0;       ///< h (mm), mean over unique edges
 };
 
 /// Assembles the operators. Throws GeoLatticeError naming the first inverted or zero-volume tet
@@ -38,4 +38,4 @@ Vec3 tetGradient(const TetOperators& ops, const TetMesh& mesh, int t, const Eige
 Eigen::VectorXd integratedDivergence(const TetOperators& ops, const TetMesh& mesh,
                                      const std::vector<Vec3>& tetField);
 
-} // namespace geolattice
+}  // namespace geolattice

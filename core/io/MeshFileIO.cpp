@@ -47,7 +47,8 @@ std::string loadFile(const std::string& path) {
 /// '#' comments, and keeps the 1-based number of the current line for error messages.
 class LineTokenizer {
 public:
-  LineTokenizer(std::string path, std::string text) : path_(std::move(path)), text_(std::move(text)) {}
+  LineTokenizer(std::string path, std::string text)
+      : path_(std::move(path)), text_(std::move(text)) {}
 
   /// Tokens of the next line that has any; false at end of file.
   bool next(std::vector<std::string_view>& tokens) {
@@ -91,7 +92,7 @@ public:
 
   double number(std::string_view token, const char* what) const {
     if (!token.empty() && token.front() == '+') {
-      token.remove_prefix(1); // from_chars does not take a leading '+'
+      token.remove_prefix(1);  // from_chars does not take a leading '+'
     }
     double value = 0.0;
     const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
@@ -126,18 +127,21 @@ public:
   }
 
   /// A vertex index shifted by -base, checked against [0, numPoints).
-  int index(std::string_view token, long long base, int numPoints, long long cell, const char* cellName) const {
+  int index(std::string_view token, long long base, int numPoints, long long cell,
+            const char* cellName) const {
     const long long raw = integer(token, "a vertex index");
     const long long value = raw - base;
     if (value < 0 || value >= numPoints) {
-      fail(std::string(cellName) + " " + std::to_string(cell) + ": vertex index " + std::to_string(raw) +
-           " out of range [" + std::to_string(base) + ", " + std::to_string(base + numPoints - 1) + "]");
+      fail(std::string(cellName) + " " + std::to_string(cell) + ": vertex index " +
+           std::to_string(raw) + " out of range [" + std::to_string(base) + ", " +
+           std::to_string(base + numPoints - 1) + "]");
     }
     return static_cast<int>(value);
   }
 
   Vec3 point(const std::vector<std::string_view>& tokens, size_t first) const {
-    return Vec3(number(tokens[first], "x"), number(tokens[first + 1], "y"), number(tokens[first + 2], "z"));
+    return Vec3(number(tokens[first], "x"), number(tokens[first + 1], "y"),
+                number(tokens[first + 2], "z"));
   }
 
   /// Throws if any non-comment line follows the data the header announced.
@@ -153,7 +157,9 @@ public:
   int lineNumber() const { return line_; }
 
 private:
-  static bool isSpace(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+  static bool isSpace(char c) {
+    return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f';
+  }
 
   std::string path_;
   std::string text_;
@@ -162,7 +168,8 @@ private:
 };
 
 std::string toLower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  std::transform(s.begin(), s.end(), s.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
 }
 
@@ -176,14 +183,15 @@ bool isOffKeyword(std::string_view token) {
   return prefix.find_first_not_of("STCN") == std::string_view::npos;
 }
 
-void checkNotEmpty(const std::string& path, size_t numPoints, size_t numCells, const char* cellName) {
+void checkNotEmpty(const std::string& path, size_t numPoints, size_t numCells,
+                   const char* cellName) {
   if (numPoints == 0 || numCells == 0) {
-    throw GeoLatticeError("empty mesh: " + path + " has " + std::to_string(numPoints) + " vertices and " +
-                          std::to_string(numCells) + " " + cellName);
+    throw GeoLatticeError("empty mesh: " + path + " has " + std::to_string(numPoints) +
+                          " vertices and " + std::to_string(numCells) + " " + cellName);
   }
 }
 
-} // namespace
+}  // namespace
 
 TriangleSurface readOff(const std::string& path) {
   LineTokenizer lines(path, loadFile(path));
@@ -194,7 +202,8 @@ TriangleSurface readOff(const std::string& path) {
   // Header keyword (optional in Geomview's OFF), then the counts on the same or next line.
   if (toLower(std::string(tok[0])).find("off") != std::string::npos) {
     if (!isOffKeyword(tok[0]) && tok[0] != "off") {
-      lines.fail("unsupported OFF variant '" + std::string(tok[0]) + "' (supported: OFF, COFF, NOFF, CNOFF, STOFF)");
+      lines.fail("unsupported OFF variant '" + std::string(tok[0]) +
+                 "' (supported: OFF, COFF, NOFF, CNOFF, STOFF)");
     }
     tok.erase(tok.begin());
     if (tok.empty() && !lines.next(tok)) {
@@ -215,7 +224,8 @@ TriangleSurface readOff(const std::string& path) {
       lines.failEof("vertex " + std::to_string(i) + " of " + std::to_string(numPoints));
     }
     if (tok.size() < 3) {
-      lines.fail("vertex " + std::to_string(i) + ": expected 'x y z', got " + std::to_string(tok.size()) + " values");
+      lines.fail("vertex " + std::to_string(i) + ": expected 'x y z', got " +
+                 std::to_string(tok.size()) + " values");
     }
     surface.points[i] = lines.point(tok, 0);
   }
@@ -226,11 +236,12 @@ TriangleSurface readOff(const std::string& path) {
     }
     const long long n = lines.integer(tok[0], "the face's vertex count");
     if (n < 3) {
-      lines.fail("face " + std::to_string(f) + " has " + std::to_string(n) + " vertices; at least 3 needed");
+      lines.fail("face " + std::to_string(f) + " has " + std::to_string(n) +
+                 " vertices; at least 3 needed");
     }
     if (static_cast<long long>(tok.size()) < n + 1) {
-      lines.fail("face " + std::to_string(f) + ": expected " + std::to_string(n) + " vertex indices, got " +
-                 std::to_string(tok.size() - 1));
+      lines.fail("face " + std::to_string(f) + ": expected " + std::to_string(n) +
+                 " vertex indices, got " + std::to_string(tok.size() - 1));
     }
     std::vector<int> ids(static_cast<size_t>(n));
     for (long long k = 0; k < n; ++k) {
@@ -241,7 +252,8 @@ TriangleSurface readOff(const std::string& path) {
       surface.triangles.push_back({ids[0], ids[k], ids[k + 1]});
     }
   }
-  lines.expectEnd(std::to_string(numPoints) + " vertices and " + std::to_string(numFaces) + " faces");
+  lines.expectEnd(std::to_string(numPoints) + " vertices and " + std::to_string(numFaces) +
+                  " faces");
   return surface;
 }
 
@@ -259,8 +271,8 @@ TriangleSurface readObj(const std::string& path) {
   while (lines.next(tok)) {
     if (tok[0] == "v") {
       if (tok.size() < 4) {
-        lines.fail("vertex " + std::to_string(surface.points.size() + 1) + ": expected 'v x y z', got " +
-                   std::to_string(tok.size() - 1) + " values");
+        lines.fail("vertex " + std::to_string(surface.points.size() + 1) +
+                   ": expected 'v x y z', got " + std::to_string(tok.size() - 1) + " values");
       }
       surface.points.push_back(lines.point(tok, 1));
     } else if (tok[0] == "f") {
@@ -274,20 +286,22 @@ TriangleSurface readObj(const std::string& path) {
         // "v", "v/vt", "v/vt/vn" or "v//vn": the vertex index is the part before the first '/'.
         const std::string_view ref = tok[k];
         const size_t slash = ref.find('/');
-        if (slash != std::string_view::npos &&
-            std::count(ref.begin(), ref.end(), '/') > 2) {
-          lines.fail("malformed vertex reference '" + std::string(ref) + "' (expected v, v/vt, v/vt/vn or v//vn)");
+        if (slash != std::string_view::npos && std::count(ref.begin(), ref.end(), '/') > 2) {
+          lines.fail("malformed vertex reference '" + std::string(ref) +
+                     "' (expected v, v/vt, v/vt/vn or v//vn)");
         }
         const long long raw = lines.integer(ref.substr(0, slash), "a vertex index");
         if (raw == 0) {
-          lines.fail("vertex index 0 in '" + std::string(ref) + "' (OBJ indices start at 1; negative = relative)");
+          lines.fail("vertex index 0 in '" + std::string(ref) +
+                     "' (OBJ indices start at 1; negative = relative)");
         }
         long long id = raw;
         if (raw < 0) {
-          id = numRead + 1 + raw; // -1 = the last vertex read so far
+          id = numRead + 1 + raw;  // -1 = the last vertex read so far
           if (id < 1) {
-            lines.fail("relative vertex index " + std::to_string(raw) + " reaches before the first vertex (" +
-                       std::to_string(numRead) + " vertices read so far)");
+            lines.fail("relative vertex index " + std::to_string(raw) +
+                       " reaches before the first vertex (" + std::to_string(numRead) +
+                       " vertices read so far)");
           }
         }
         face.ids.push_back(id);
@@ -305,13 +319,15 @@ TriangleSurface readObj(const std::string& path) {
   for (const PendingFace& face : faces) {
     for (long long id : face.ids) {
       if (id > numPoints) {
-        throw GeoLatticeError(path + ":" + std::to_string(face.line) + ": vertex index " + std::to_string(id) +
-                              " out of range [1, " + std::to_string(numPoints) + "]");
+        throw GeoLatticeError(path + ":" + std::to_string(face.line) + ": vertex index " +
+                              std::to_string(id) + " out of range [1, " +
+                              std::to_string(numPoints) + "]");
       }
     }
     // Fan triangulation keeps the polygon's orientation; exact for convex polygons.
     for (size_t k = 1; k + 1 < face.ids.size(); ++k) {
-      surface.triangles.push_back({static_cast<int>(face.ids[0] - 1), static_cast<int>(face.ids[k] - 1),
+      surface.triangles.push_back({static_cast<int>(face.ids[0] - 1),
+                                   static_cast<int>(face.ids[k] - 1),
                                    static_cast<int>(face.ids[k + 1] - 1)});
     }
   }
@@ -324,14 +340,16 @@ void writeObj(const std::string& path, const TriangleSurface& surface, const std
   for (size_t t = 0; t < surface.triangles.size(); ++t) {
     for (int id : surface.triangles[t]) {
       if (id < 0 || id >= numPoints) {
-        throw GeoLatticeError("cannot write " + path + ": triangle " + std::to_string(t) + " has vertex index " +
-                              std::to_string(id) + " out of range [0, " + std::to_string(numPoints - 1) + "]");
+        throw GeoLatticeError("cannot write " + path + ": triangle " + std::to_string(t) +
+                              " has vertex index " + std::to_string(id) + " out of range [0, " +
+                              std::to_string(numPoints - 1) + "]");
       }
     }
   }
   for (size_t i = 0; i < surface.points.size(); ++i) {
     if (!surface.points[i].allFinite()) {
-      throw GeoLatticeError("cannot write " + path + ": vertex " + std::to_string(i) + " is not finite");
+      throw GeoLatticeError("cannot write " + path + ": vertex " + std::to_string(i) +
+                            " is not finite");
     }
   }
   const std::string tmpPath = path + ".tmp";
@@ -404,7 +422,8 @@ TetMesh readTetFile(const std::string& path) {
       lines.failEof("vertex " + std::to_string(i) + " of " + std::to_string(numPoints));
     }
     if (tok.size() < 3) {
-      lines.fail("vertex " + std::to_string(i) + ": expected 'x y z', got " + std::to_string(tok.size()) + " values");
+      lines.fail("vertex " + std::to_string(i) + ": expected 'x y z', got " +
+                 std::to_string(tok.size()) + " values");
     }
     mesh.points[i] = lines.point(tok, 0);
   }
@@ -465,15 +484,17 @@ TetMesh readTetGenMesh(const std::string& path) {
       throw GeoLatticeError("empty mesh: " + nodePath.string() + " has 0 points");
     }
     mesh.points.resize(numPoints);
-    const size_t minTokens = 4 + static_cast<size_t>(numAttributes) + static_cast<size_t>(numMarkers);
+    const size_t minTokens =
+        4 + static_cast<size_t>(numAttributes) + static_cast<size_t>(numMarkers);
     for (int i = 0; i < numPoints; ++i) {
       if (!lines.next(tok)) {
         lines.failEof("point " + std::to_string(i) + " of " + std::to_string(numPoints));
       }
       if (tok.size() < minTokens) {
-        lines.fail("point line: expected " + std::to_string(minTokens) + " values ('<point #> x y z' + " +
-                   std::to_string(numAttributes) + " attributes + " + std::to_string(numMarkers) +
-                   " markers), got " + std::to_string(tok.size()));
+        lines.fail("point line: expected " + std::to_string(minTokens) +
+                   " values ('<point #> x y z' + " + std::to_string(numAttributes) +
+                   " attributes + " + std::to_string(numMarkers) + " markers), got " +
+                   std::to_string(tok.size()));
       }
       const long long number = lines.integer(tok[0], "the point number");
       if (i == 0) {
@@ -482,8 +503,8 @@ TetMesh readTetGenMesh(const std::string& path) {
         }
         base = number;
       } else if (number != base + i) {
-        lines.fail("point numbers must be consecutive: expected " + std::to_string(base + i) + ", got " +
-                   std::to_string(number));
+        lines.fail("point numbers must be consecutive: expected " + std::to_string(base + i) +
+                   ", got " + std::to_string(number));
       }
       mesh.points[i] = lines.point(tok, 1);
     }
@@ -509,7 +530,8 @@ TetMesh readTetGenMesh(const std::string& path) {
       throw GeoLatticeError("empty mesh: " + elePath.string() + " has 0 tetrahedra");
     }
     const int numPoints = static_cast<int>(mesh.points.size());
-    const size_t minTokens = 1 + static_cast<size_t>(nodesPerTet) + static_cast<size_t>(numAttributes);
+    const size_t minTokens =
+        1 + static_cast<size_t>(nodesPerTet) + static_cast<size_t>(numAttributes);
     mesh.tets.resize(numTets);
     for (int t = 0; t < numTets; ++t) {
       if (!lines.next(tok)) {
@@ -535,14 +557,16 @@ void writeTetFile(const std::string& path, const TetMesh& mesh) {
   for (size_t t = 0; t < mesh.tets.size(); ++t) {
     for (int id : mesh.tets[t]) {
       if (id < 0 || id >= numPoints) {
-        throw GeoLatticeError("cannot write " + path + ": tet " + std::to_string(t) + " has vertex index " +
-                              std::to_string(id) + " out of range [0, " + std::to_string(numPoints - 1) + "]");
+        throw GeoLatticeError("cannot write " + path + ": tet " + std::to_string(t) +
+                              " has vertex index " + std::to_string(id) + " out of range [0, " +
+                              std::to_string(numPoints - 1) + "]");
       }
     }
   }
   for (size_t i = 0; i < mesh.points.size(); ++i) {
     if (!mesh.points[i].allFinite()) {
-      throw GeoLatticeError("cannot write " + path + ": vertex " + std::to_string(i) + " is not finite");
+      throw GeoLatticeError("cannot write " + path + ": vertex " + std::to_string(i) +
+                            " is not finite");
     }
   }
 
@@ -586,4 +610,4 @@ void writeTetFile(const std::string& path, const TetMesh& mesh) {
   }
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -44,7 +44,8 @@ TriangleSurface readObj(const std::string& path);
 /// writeTetFile, the data goes to `path + ".tmp"`, renamed to `path` after a successful write.
 /// @throws GeoLatticeError on an empty surface, an index out of range, a non-finite point, or
 ///   an I/O failure.
-void writeObj(const std::string& path, const TriangleSurface& surface, const std::string& comment = "");
+void writeObj(const std::string& path, const TriangleSurface& surface,
+              const std::string& comment = "");
 
 /// Read a `.tet` file: line 1 `N vertices`, line 2 `M tets`, then N lines `x y z`, then M
 /// lines `4 a b c d` (0-based indices). The words after the counts are optional.
@@ -69,4 +70,4 @@ TetMesh readTetGenMesh(const std::string& path);
 /// @throws GeoLatticeError on an empty mesh, an index out of range, or an I/O failure.
 void writeTetFile(const std::string& path, const TetMesh& mesh);
 
-} // namespace geolattice
+}  // namespace geolattice

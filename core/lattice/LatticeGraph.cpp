@@ -48,7 +48,8 @@ struct LayerGraph {
   std::vector<Vec3> points, normals;
   std::vector<double> alpha, beta;
   std::vector<int> alphaLevel, betaLevel;
-  std::vector<int> onMeshEdge;  ///< layer-mesh edge of an edge point, kTriangleInterior or kLayerPoint
+  std::vector<int>
+      onMeshEdge;  ///< layer-mesh edge of an edge point, kTriangleInterior or kLayerPoint
   std::vector<LatticeVertexKind> kind;
   std::vector<int> degree, subgraph;
   std::vector<std::array<int, 2>> edges;
@@ -77,13 +78,14 @@ struct LayerGraph {
 /// A unique edge of a layer mesh, a < b (layer-local point ids); parameters t run from a to b.
 struct MeshEdge {
   int a = 0, b = 0;
-  int count = 0;              ///< triangles using it (1 = layer boundary)
-  int tri[2] = {-1, -1};      ///< layer-local triangles
-  int side[2] = {-1, -1};     ///< side s of the triangle: corners s -> s+1
+  int count = 0;                     ///< triangles using it (1 = layer boundary)
+  int tri[2] = {-1, -1};             ///< layer-local triangles
+  int side[2] = {-1, -1};            ///< side s of the triangle: corners s -> s+1
   int pointBegin = 0, pointEnd = 0;  ///< isoline points on the edge, sorted by t (CSR)
   int firstLevel[2] = {0, 0};        ///< level index of the edge's first point per field
-  int rankBegin[2] = {0, 0};         ///< per field: rank of level firstLevel + i at rankOf[f][rankBegin + i]
-  bool diagonal = false;             ///< joins layer points on disjoint tet edges (a quad diagonal)
+  int rankBegin[2] = {0,
+                      0};  ///< per field: rank of level firstLevel + i at rankOf[f][rankBegin + i]
+  bool diagonal = false;   ///< joins layer points on disjoint tet edges (a quad diagonal)
 };
 
 /// Segment end point: its vertex and its place on the triangle boundary cycle.
@@ -144,7 +146,9 @@ public:
   }
 
 private:
-  double field(int f, int v) const { return f == kAlpha ? layers_.alpha[p0_ + v] : layers_.beta[p0_ + v]; }
+  double field(int f, int v) const {
+    return f == kAlpha ? layers_.alpha[p0_ + v] : layers_.beta[p0_ + v];
+  }
   int corner(int t, int i) const { return layers_.triangles[t0_ + t][i] - p0_; }
 
   void buildEdges() {
@@ -156,7 +160,8 @@ private:
       }
     }
     std::partial_sum(offset.begin(), offset.end(), offset.begin());
-    std::vector<std::pair<int, int>> bucket(3 * static_cast<size_t>(nt_));  // (larger point, half-edge)
+    std::vector<std::pair<int, int>> bucket(3 *
+                                            static_cast<size_t>(nt_));  // (larger point, half-edge)
     std::vector<int> cursor(offset.begin(), offset.end() - 1);
     for (int t = 0; t < nt_; ++t) {
       for (int s = 0; s < 3; ++s) {
@@ -174,9 +179,9 @@ private:
         }
         if (j - i > 2) {
           throw GeoLatticeError("layer " + std::to_string(layers_.layerIndex[layer_]) +
-                                " is not edge-manifold: its edge (" + std::to_string(p0_ + a) + ", " +
-                                std::to_string(p0_ + bucket[i].first) + ") is used by " + std::to_string(j - i) +
-                                " triangles");
+                                " is not edge-manifold: its edge (" + std::to_string(p0_ + a) +
+                                ", " + std::to_string(p0_ + bucket[i].first) + ") is used by " +
+                                std::to_string(j - i) + " triangles");
         }
         MeshEdge e;
         e.a = a;
@@ -190,8 +195,8 @@ private:
         if (!layers_.sourceEdge.empty()) {
           const auto& ea = layers_.sourceEdge[p0_ + e.a];
           const auto& eb = layers_.sourceEdge[p0_ + e.b];
-          e.diagonal = ea[0] != ea[1] && eb[0] != eb[1] && ea[0] != eb[0] && ea[0] != eb[1] && ea[1] != eb[0] &&
-                       ea[1] != eb[1];
+          e.diagonal = ea[0] != ea[1] && eb[0] != eb[1] && ea[0] != eb[0] && ea[0] != eb[1] &&
+                       ea[1] != eb[0] && ea[1] != eb[1];
         }
         edges_.push_back(e);
         i = j;
@@ -216,7 +221,8 @@ private:
         const int k1 = firstAtOrAbove(lv, std::max(fa, fb));  // levels in (min, max)
         list[f].clear();
         for (int k = k0; k < k1; ++k) {
-          list[f].push_back({(lv[k] - fa) / (fb - fa), {f == kAlpha ? k : -1, f == kBeta ? k : -1}});
+          list[f].push_back(
+              {(lv[k] - fa) / (fb - fa), {f == kAlpha ? k : -1, f == kBeta ? k : -1}});
         }
         if (fa > fb) {
           std::reverse(list[f].begin(), list[f].end());  // ascending t
@@ -247,10 +253,12 @@ private:
       for (size_t r = 0; r < merged.size(); ++r) {
         const Entry& m = merged[r];
         const double t = m.t;
-        const double a = m.k[0] >= 0 ? (*levels_[0])[m.k[0]] : (1 - t) * field(kAlpha, e.a) + t * field(kAlpha, e.b);
-        const double b = m.k[1] >= 0 ? (*levels_[1])[m.k[1]] : (1 - t) * field(kBeta, e.a) + t * field(kBeta, e.b);
-        const int v = g_.addVertex((1 - t) * pa + t * pb, unitOrZero((1 - t) * na + t * nb), a, b, m.k[0], m.k[1],
-                                   static_cast<int>(ei));
+        const double a = m.k[0] >= 0 ? (*levels_[0])[m.k[0]]
+                                     : (1 - t) * field(kAlpha, e.a) + t * field(kAlpha, e.b);
+        const double b = m.k[1] >= 0 ? (*levels_[1])[m.k[1]]
+                                     : (1 - t) * field(kBeta, e.a) + t * field(kBeta, e.b);
+        const int v = g_.addVertex((1 - t) * pa + t * pb, unitOrZero((1 - t) * na + t * nb), a, b,
+                                   m.k[0], m.k[1], static_cast<int>(ei));
         edgePointVertex_.push_back(v);
         for (int f = 0; f < 2; ++f) {
           if (m.k[f] >= 0) {
@@ -266,9 +274,9 @@ private:
   int meshVertex(int v) {
     if (meshVertex_[v] < 0) {
       const int p = p0_ + v;
-      meshVertex_[v] = g_.addVertex(layers_.points[p], layers_.normals[p], layers_.alpha[p], layers_.beta[p],
-                                    exactLevel(*levels_[0], layers_.alpha[p]), exactLevel(*levels_[1], layers_.beta[p]),
-                                    kLayerPoint);
+      meshVertex_[v] = g_.addVertex(layers_.points[p], layers_.normals[p], layers_.alpha[p],
+                                    layers_.beta[p], exactLevel(*levels_[0], layers_.alpha[p]),
+                                    exactLevel(*levels_[1], layers_.beta[p]), kLayerPoint);
     }
     return meshVertex_[v];
   }
@@ -329,7 +337,8 @@ private:
           const int nt = e.tri[0] == t ? e.tri[1] : e.tri[0];
           const int ns = e.tri[0] == t ? e.side[1] : e.side[0];
           if (field(f, corner(nt, (ns + 2) % 3)) < level) {
-            ++g_.stats.ridgeSegments;  // emitted by both triangles: the field touches the level from below
+            ++g_.stats
+                  .ridgeSegments;  // emitted by both triangles: the field touches the level from below
             continue;
           }
           seg.alongSide = side;
@@ -393,8 +402,8 @@ private:
         const double d = g_.beta[a1] - g_.beta[a0];
         const double s = std::clamp(d != 0 ? (levelB - g_.beta[a0]) / d : 0.5, 0.0, 1.0);  // Eq. 11
         const int x = g_.addVertex((1 - s) * g_.points[a0] + s * g_.points[a1],
-                                   unitOrZero((1 - s) * g_.normals[a0] + s * g_.normals[a1]), levelA, levelB, A.level,
-                                   B.level, kTriangleInterior);
+                                   unitOrZero((1 - s) * g_.normals[a0] + s * g_.normals[a1]),
+                                   levelA, levelB, A.level, B.level, kTriangleInterior);
         splits_.push_back({i, (d >= 0 ? 1.0 : -1.0) * B.level, x});
         splits_.push_back({j, (g_.alpha[b1] >= g_.alpha[b0] ? 1.0 : -1.0) * A.level, x});
       }
@@ -405,7 +414,8 @@ private:
     size_t next = 0;
     for (int i = 0; i < n; ++i) {
       const Segment& S = segments_[i];
-      const LatticeEdgeKind kind = S.field == kAlpha ? LatticeEdgeKind::Alpha : LatticeEdgeKind::Beta;
+      const LatticeEdgeKind kind =
+          S.field == kAlpha ? LatticeEdgeKind::Alpha : LatticeEdgeKind::Beta;
       int prev = S.end[0].vertex;
       for (; next < splits_.size() && splits_[next].segment == i; ++next) {
         g_.addEdge(prev, splits_[next].vertex, kind, S.level);
@@ -438,9 +448,11 @@ private:
     std::vector<int> order(g_.edges.size());
     std::iota(order.begin(), order.end(), 0);
     auto key = [&](int e) {
-      return std::make_pair(std::min(g_.edges[e][0], g_.edges[e][1]), std::max(g_.edges[e][0], g_.edges[e][1]));
+      return std::make_pair(std::min(g_.edges[e][0], g_.edges[e][1]),
+                            std::max(g_.edges[e][0], g_.edges[e][1]));
     };
-    std::sort(order.begin(), order.end(), [&](int x, int y) { return key(x) != key(y) ? key(x) < key(y) : x < y; });
+    std::sort(order.begin(), order.end(),
+              [&](int x, int y) { return key(x) != key(y) ? key(x) < key(y) : x < y; });
     std::vector<char> keep(g_.edges.size(), 1);
     for (size_t i = 1; i < order.size(); ++i) {
       if (key(order[i]) == key(order[i - 1])) {
@@ -513,7 +525,8 @@ private:
         continue;
       }
       // Keep the direction of e1 (x -> v becomes x -> y; v -> x becomes y -> x).
-      g_.edges[e1] = g_.edges[e1][0] == static_cast<int>(v) ? std::array<int, 2>{y, x} : std::array<int, 2>{x, y};
+      g_.edges[e1] = g_.edges[e1][0] == static_cast<int>(v) ? std::array<int, 2>{y, x}
+                                                            : std::array<int, 2>{x, y};
       keep[e2] = 0;
       for (int i = offset[y]; i < offset[y + 1]; ++i) {
         if (list[i] == e2) {
@@ -585,7 +598,8 @@ private:
       if (c[2] > 0) {
         g_.kind[v] = c[0] + c[1] > 0 ? LatticeVertexKind::BoundaryHit : LatticeVertexKind::Boundary;
       } else {
-        g_.kind[v] = c[0] > 0 && c[1] > 0 ? LatticeVertexKind::Crossing : LatticeVertexKind::IsolinePoint;
+        g_.kind[v] =
+            c[0] > 0 && c[1] > 0 ? LatticeVertexKind::Crossing : LatticeVertexKind::IsolinePoint;
       }
     }
   }
@@ -641,7 +655,7 @@ private:
       }
       const int expected = g_.kind[v] == LatticeVertexKind::Crossing      ? 4
                            : g_.kind[v] == LatticeVertexKind::BoundaryHit ? 3
-                                                                           : 2;
+                                                                          : 2;
       if (g_.degree[v] != expected) {
         ++g_.stats.irregularVertices;
       }
@@ -719,7 +733,7 @@ private:
   std::vector<int> triEdge_;          ///< 3 nt: edge of side s of triangle t
   std::vector<int> edgePointVertex_;  ///< CSR of MeshEdge::pointBegin/End
   std::vector<int> rankOf_[2];
-  std::vector<int> meshVertex_;       ///< layer point -> vertex (-1: none yet)
+  std::vector<int> meshVertex_;  ///< layer point -> vertex (-1: none yet)
   std::vector<Segment> segments_;
   std::vector<Split> splits_;
   LayerGraph g_;
@@ -728,8 +742,8 @@ private:
 void validate(const CurvedLayers& in, const LatticeOptions& o) {
   auto positiveWidth = [](double w, const char* name) {
     if (!(w > 0) || !std::isfinite(w)) {
-      throw GeoLatticeError(std::string(name) + " lattice width must be > 0 mm and finite (got " + std::to_string(w) +
-                            ")");
+      throw GeoLatticeError(std::string(name) + " lattice width must be > 0 mm and finite (got " +
+                            std::to_string(w) + ")");
     }
   };
   positiveWidth(o.alphaWidth, "α");
@@ -738,38 +752,44 @@ void validate(const CurvedLayers& in, const LatticeOptions& o) {
     throw GeoLatticeError("lattice phases must be finite");
   }
   if (!(o.minimumSubgraphLength >= 0) || !std::isfinite(o.minimumSubgraphLength)) {
-    throw GeoLatticeError("minimum sub-graph length must be >= 0 mm (got " + std::to_string(o.minimumSubgraphLength) +
-                          ")");
+    throw GeoLatticeError("minimum sub-graph length must be >= 0 mm (got " +
+                          std::to_string(o.minimumSubgraphLength) + ")");
   }
   if (o.threads < 0) {
     throw GeoLatticeError("thread count must be >= 0 (got " + std::to_string(o.threads) + ")");
   }
   const size_t L = in.layerValues.size(), P = in.points.size(), T = in.triangles.size();
-  if (in.layerIndex.size() != L || in.layerPointOffset.size() != L + 1 || in.layerTriangleOffset.size() != L + 1) {
-    throw GeoLatticeError("curved layers: layerIndex and the layer offsets must have " + std::to_string(L) + " and " +
-                          std::to_string(L + 1) + " entries");
+  if (in.layerIndex.size() != L || in.layerPointOffset.size() != L + 1 ||
+      in.layerTriangleOffset.size() != L + 1) {
+    throw GeoLatticeError("curved layers: layerIndex and the layer offsets must have " +
+                          std::to_string(L) + " and " + std::to_string(L + 1) + " entries");
   }
   if (in.alpha.size() != P || in.beta.size() != P || in.normals.size() != P ||
       (!in.sourceEdge.empty() && in.sourceEdge.size() != P)) {
-    throw GeoLatticeError("curved layers: α, β, normals (and sourceEdge if given) need one value per point (" +
-                          std::to_string(P) + ")");
+    throw GeoLatticeError(
+        "curved layers: α, β, normals (and sourceEdge if given) need one value per point (" +
+        std::to_string(P) + ")");
   }
   if (!o.widthScale.empty() && o.widthScale.size() != P) {
-    throw GeoLatticeError("width scale has " + std::to_string(o.widthScale.size()) + " values for " +
-                          std::to_string(P) + " layer points");
+    throw GeoLatticeError("width scale has " + std::to_string(o.widthScale.size()) +
+                          " values for " + std::to_string(P) + " layer points");
   }
   if (in.layerPointOffset[0] != 0 || in.layerTriangleOffset[0] != 0 ||
-      in.layerPointOffset[L] != static_cast<int>(P) || in.layerTriangleOffset[L] != static_cast<int>(T)) {
-    throw GeoLatticeError("curved layers: layer offsets must start at 0 and end at the point / triangle counts");
+      in.layerPointOffset[L] != static_cast<int>(P) ||
+      in.layerTriangleOffset[L] != static_cast<int>(T)) {
+    throw GeoLatticeError(
+        "curved layers: layer offsets must start at 0 and end at the point / triangle counts");
   }
   for (size_t l = 0; l < L; ++l) {
-    if (in.layerPointOffset[l + 1] < in.layerPointOffset[l] || in.layerTriangleOffset[l + 1] < in.layerTriangleOffset[l]) {
+    if (in.layerPointOffset[l + 1] < in.layerPointOffset[l] ||
+        in.layerTriangleOffset[l + 1] < in.layerTriangleOffset[l]) {
       throw GeoLatticeError("curved layers: decreasing offsets at layer " + std::to_string(l));
     }
   }
   for (size_t p = 0; p < P; ++p) {
     if (!std::isfinite(in.alpha[p]) || !std::isfinite(in.beta[p]) || !in.points[p].allFinite()) {
-      throw GeoLatticeError("curved layers: layer point " + std::to_string(p) + " has a non-finite position, α or β");
+      throw GeoLatticeError("curved layers: layer point " + std::to_string(p) +
+                            " has a non-finite position, α or β");
     }
   }
   for (size_t l = 0; l < L; ++l) {
@@ -777,18 +797,20 @@ void validate(const CurvedLayers& in, const LatticeOptions& o) {
       const auto& f = in.triangles[t];
       for (int v : f) {
         if (v < in.layerPointOffset[l] || v >= in.layerPointOffset[l + 1]) {
-          throw GeoLatticeError("curved layers: triangle " + std::to_string(t) + " of layer " + std::to_string(l) +
-                                " uses point " + std::to_string(v) + " outside its layer's points");
+          throw GeoLatticeError("curved layers: triangle " + std::to_string(t) + " of layer " +
+                                std::to_string(l) + " uses point " + std::to_string(v) +
+                                " outside its layer's points");
         }
       }
       if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) {
-        throw GeoLatticeError("curved layers: triangle " + std::to_string(t) + " uses a point twice");
+        throw GeoLatticeError("curved layers: triangle " + std::to_string(t) +
+                              " uses a point twice");
       }
     }
   }
 }
 
-} // namespace
+}  // namespace
 
 LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions& options) {
   validate(layers, options);
@@ -804,8 +826,10 @@ LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions&
       out.alphaLevels = uniformLatticeLevels(*aLo, *aHi, options.alphaWidth, options.alphaPhase);
       out.betaLevels = uniformLatticeLevels(*bLo, *bHi, options.betaWidth, options.betaPhase);
     } else {
-      out.alphaLevels = gradedLatticeLevels(layers.alpha, options.widthScale, options.alphaWidth, options.alphaPhase);
-      out.betaLevels = gradedLatticeLevels(layers.beta, options.widthScale, options.betaWidth, options.betaPhase);
+      out.alphaLevels = gradedLatticeLevels(layers.alpha, options.widthScale, options.alphaWidth,
+                                            options.alphaPhase);
+      out.betaLevels = gradedLatticeLevels(layers.beta, options.widthScale, options.betaWidth,
+                                           options.betaPhase);
     }
   }
   const std::vector<double>* levels[2] = {&out.alphaLevels, &out.betaLevels};
@@ -846,7 +870,8 @@ LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions&
       }
     }
   };
-  int threads = options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
+  int threads =
+      options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
   threads = std::max(1, std::min(threads, L));
   std::vector<std::thread> pool;
   for (int i = 1; i < threads; ++i) {
@@ -868,9 +893,11 @@ LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions&
   out.layerEdgeOffset.assign(L + 1, 0);
   out.layerSubgraphOffset.assign(L + 1, 0);
   for (int l = 0; l < L; ++l) {
-    out.layerVertexOffset[l + 1] = out.layerVertexOffset[l] + static_cast<int>(result[l].points.size());
+    out.layerVertexOffset[l + 1] =
+        out.layerVertexOffset[l] + static_cast<int>(result[l].points.size());
     out.layerEdgeOffset[l + 1] = out.layerEdgeOffset[l] + static_cast<int>(result[l].edges.size());
-    out.layerSubgraphOffset[l + 1] = out.layerSubgraphOffset[l] + static_cast<int>(result[l].subgraphs.size());
+    out.layerSubgraphOffset[l + 1] =
+        out.layerSubgraphOffset[l] + static_cast<int>(result[l].subgraphs.size());
   }
   const size_t V = out.layerVertexOffset[L], E = out.layerEdgeOffset[L];
   out.points.reserve(V);
@@ -879,7 +906,9 @@ LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions&
   for (int l = 0; l < L; ++l) {
     LayerGraph& g = result[l];
     const int v0 = out.layerVertexOffset[l], s0 = out.layerSubgraphOffset[l];
-    auto append = [](auto& dst, const auto& src) { dst.insert(dst.end(), src.begin(), src.end()); };
+    auto append = [](auto& dst, const auto& src) {
+      dst.insert(dst.end(), src.begin(), src.end());
+    };
     append(out.points, g.points);
     append(out.normals, g.normals);
     out.gamma.insert(out.gamma.end(), g.points.size(), layers.layerValues[l]);
@@ -933,4 +962,4 @@ LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions&
   return out;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

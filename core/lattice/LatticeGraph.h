@@ -70,11 +70,12 @@ enum class LatticeEdgeKind : int {
 
 /// @brief Parameters of buildLatticeGraph().
 struct LatticeOptions {
-  double alphaWidth = 4.0;             ///< a: distance between α-isolines (mm, > 0)
-  double betaWidth = 4.0;              ///< b: distance between β-isolines (mm, > 0)
-  double alphaPhase = 0.0;             ///< α-levels are j·a + alphaPhase (mm)
-  double betaPhase = 0.0;              ///< β-levels are k·b + betaPhase (mm)
-  double minimumSubgraphLength = 0.0;  ///< sub-graphs with a shorter total edge length are dropped (mm, >= 0)
+  double alphaWidth = 4.0;  ///< a: distance between α-isolines (mm, > 0)
+  double betaWidth = 4.0;   ///< b: distance between β-isolines (mm, > 0)
+  double alphaPhase = 0.0;  ///< α-levels are j·a + alphaPhase (mm)
+  double betaPhase = 0.0;   ///< β-levels are k·b + betaPhase (mm)
+  double minimumSubgraphLength =
+      0.0;  ///< sub-graphs with a shorter total edge length are dropped (mm, >= 0)
   /// Graded lattice: empty (uniform lattice) or one factor per layer point (> 0) that scales
   /// the local line spacing (0.5 = twice as dense). See LatticeLevels.h for the remapping.
   std::vector<double> widthScale;
@@ -96,15 +97,15 @@ struct LatticeBoundaryLoop {
 
 /// @brief A connected sub-graph G_{i,j}.
 struct LatticeSubgraph {
-  int id = 0;              ///< index into LatticeGraph::subgraphs
-  int layer = 0;           ///< 0..L-1 (into LatticeGraph::layerValues)
-  int indexInLayer = 0;    ///< j of G_{i,j}, 0-based
+  int id = 0;            ///< index into LatticeGraph::subgraphs
+  int layer = 0;         ///< 0..L-1 (into LatticeGraph::layerValues)
+  int indexInLayer = 0;  ///< j of G_{i,j}, 0-based
   int vertexCount = 0;
   int edgeCount = 0;
   int isolineEdgeCount = 0;  ///< α + β edges
   int crossingCount = 0;
   int boundaryHitCount = 0;
-  double length = 0;       ///< total edge length (mm)
+  double length = 0;             ///< total edge length (mm)
   Vec3 centroid = Vec3::Zero();  ///< length-weighted mean of the edge midpoints (mm)
   std::vector<LatticeBoundaryLoop> boundaryLoops;
 };
@@ -113,47 +114,49 @@ struct LatticeSubgraph {
 struct LatticeStatistics {
   int crossings = 0;
   int boundaryHits = 0;
-  int isolineEdges = 0;          ///< α + β edges: 0 = empty lattice (e.g. widths larger than the part)
-  int irregularVertices = 0;     ///< degree != 4 / 3 / 2 for crossing / boundary hit / other (see file comment)
-  int droppedSubgraphs = 0;      ///< shorter than minimumSubgraphLength
-  double droppedLength = 0;      ///< their total length (mm)
-  int touchingSegments = 0;      ///< isoline segments collapsed onto one exact-hit layer point (dropped)
-  int boundarySegments = 0;      ///< isoline segments lying on the layer boundary (dropped)
-  int ridgeSegments = 0;         ///< isoline segments along an edge emitted by both triangles (dropped)
-  int edgeCrossings = 0;         ///< α- and β-point at the same parameter of a layer-mesh edge (merged)
-  int pointCrossings = 0;        ///< α and β both exactly at a level at a layer point
-  int duplicateEdges = 0;        ///< edges joining the same two vertices (kept once)
+  int isolineEdges = 0;  ///< α + β edges: 0 = empty lattice (e.g. widths larger than the part)
+  int irregularVertices =
+      0;  ///< degree != 4 / 3 / 2 for crossing / boundary hit / other (see file comment)
+  int droppedSubgraphs = 0;  ///< shorter than minimumSubgraphLength
+  double droppedLength = 0;  ///< their total length (mm)
+  int touchingSegments =
+      0;  ///< isoline segments collapsed onto one exact-hit layer point (dropped)
+  int boundarySegments = 0;  ///< isoline segments lying on the layer boundary (dropped)
+  int ridgeSegments = 0;     ///< isoline segments along an edge emitted by both triangles (dropped)
+  int edgeCrossings = 0;   ///< α- and β-point at the same parameter of a layer-mesh edge (merged)
+  int pointCrossings = 0;  ///< α and β both exactly at a level at a layer point
+  int duplicateEdges = 0;  ///< edges joining the same two vertices (kept once)
   int mergedDiagonalPoints = 0;  ///< isoline points on quad diagonals removed
   int openBoundaryChains = 0;    ///< boundary walks that did not close (non-manifold layers)
 };
 
 /// @brief The lattice of all layers; vertices, edges and sub-graphs are grouped by layer.
 struct LatticeGraph {
-  std::vector<double> layerValues;      ///< #L φ_i (mm), copied from CurvedLayers
-  std::vector<int> layerIndex;          ///< #L layer index i, copied from CurvedLayers
-  std::vector<int> layerVertexOffset;   ///< #L+1: layer l owns vertices [off[l], off[l+1])
-  std::vector<int> layerEdgeOffset;     ///< #L+1
-  std::vector<int> layerSubgraphOffset; ///< #L+1
-  std::vector<double> alphaLevels;      ///< Ψ^α used (mm, ascending); alphaLevel indexes it
-  std::vector<double> betaLevels;       ///< Ψ^β used (mm, ascending)
+  std::vector<double> layerValues;       ///< #L φ_i (mm), copied from CurvedLayers
+  std::vector<int> layerIndex;           ///< #L layer index i, copied from CurvedLayers
+  std::vector<int> layerVertexOffset;    ///< #L+1: layer l owns vertices [off[l], off[l+1])
+  std::vector<int> layerEdgeOffset;      ///< #L+1
+  std::vector<int> layerSubgraphOffset;  ///< #L+1
+  std::vector<double> alphaLevels;       ///< Ψ^α used (mm, ascending); alphaLevel indexes it
+  std::vector<double> betaLevels;        ///< Ψ^β used (mm, ascending)
 
-  std::vector<Vec3> points;                 ///< #V positions (mm), on the layer surface
-  std::vector<Vec3> normals;                ///< #V unit nozzle direction (interpolated)
-  std::vector<double> gamma;                ///< #V γ = φ_i of the vertex's layer (mm)
-  std::vector<double> alpha, beta;          ///< #V field values (exactly the level on an isoline)
+  std::vector<Vec3> points;         ///< #V positions (mm), on the layer surface
+  std::vector<Vec3> normals;        ///< #V unit nozzle direction (interpolated)
+  std::vector<double> gamma;        ///< #V γ = φ_i of the vertex's layer (mm)
+  std::vector<double> alpha, beta;  ///< #V field values (exactly the level on an isoline)
   /// #V index of the α- (β-) level equal to the vertex's α (β), -1 if none. Set on every isoline
   /// point and crossing; also on an exact-hit layer point whose isoline was dropped there.
   std::vector<int> alphaLevel, betaLevel;
   std::vector<LatticeVertexKind> vertexKind;  ///< #V
-  std::vector<int> degree;                  ///< #V
-  std::vector<int> vertexLayer;             ///< #V 0..L-1
-  std::vector<int> vertexSubgraph;          ///< #V into subgraphs
+  std::vector<int> degree;                    ///< #V
+  std::vector<int> vertexLayer;               ///< #V 0..L-1
+  std::vector<int> vertexSubgraph;            ///< #V into subgraphs
 
-  std::vector<std::array<int, 2>> edges;    ///< #E vertex pairs
-  std::vector<LatticeEdgeKind> edgeKind;    ///< #E
-  std::vector<int> edgeLevel;               ///< #E level index of α/β edges, -1 for boundary edges
-  std::vector<int> edgeLayer;               ///< #E 0..L-1
-  std::vector<int> edgeSubgraph;            ///< #E into subgraphs
+  std::vector<std::array<int, 2>> edges;  ///< #E vertex pairs
+  std::vector<LatticeEdgeKind> edgeKind;  ///< #E
+  std::vector<int> edgeLevel;             ///< #E level index of α/β edges, -1 for boundary edges
+  std::vector<int> edgeLayer;             ///< #E 0..L-1
+  std::vector<int> edgeSubgraph;          ///< #E into subgraphs
 
   std::vector<LatticeSubgraph> subgraphs;
   LatticeStatistics stats;
@@ -167,4 +170,4 @@ struct LatticeGraph {
 /// triangles), or an abort.
 LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions& options = {});
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -13,7 +13,8 @@ namespace {
 
 void requireWidth(double width, double phase) {
   if (!(width > 0) || !std::isfinite(width)) {
-    throw GeoLatticeError("lattice width must be > 0 mm and finite (got " + std::to_string(width) + ")");
+    throw GeoLatticeError("lattice width must be > 0 mm and finite (got " + std::to_string(width) +
+                          ")");
   }
   if (!std::isfinite(phase)) {
     throw GeoLatticeError("lattice phase must be finite");
@@ -28,16 +29,19 @@ void requireLevelCount(double span, double width) {
   }
 }
 
-} // namespace
+}  // namespace
 
 std::vector<double> uniformLatticeLevels(double lo, double hi, double width, double phase) {
   requireWidth(width, phase);
   if (!std::isfinite(lo) || !std::isfinite(hi) || lo > hi) {
-    throw GeoLatticeError("invalid field range [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+    throw GeoLatticeError("invalid field range [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                          "]");
   }
   requireLevelCount(hi - lo, width);
   std::vector<double> levels;
-  auto value = [&](double j) { return phase + j * width; };
+  auto value = [&](double j) {
+    return phase + j * width;
+  };
   double j = std::floor((lo - phase) / width) - 1;
   while (value(j) <= lo) {
     j += 1;
@@ -48,7 +52,8 @@ std::vector<double> uniformLatticeLevels(double lo, double hi, double width, dou
   return levels;
 }
 
-std::vector<double> gradedLatticeLevels(const std::vector<double>& f, const std::vector<double>& scale, double width,
+std::vector<double> gradedLatticeLevels(const std::vector<double>& f,
+                                        const std::vector<double>& scale, double width,
                                         double phase) {
   requireWidth(width, phase);
   if (f.size() != scale.size()) {
@@ -61,8 +66,8 @@ std::vector<double> gradedLatticeLevels(const std::vector<double>& f, const std:
       throw GeoLatticeError("field value of layer point " + std::to_string(p) + " is not finite");
     }
     if (!(scale[p] > 0) || !std::isfinite(scale[p])) {
-      throw GeoLatticeError("width scale must be > 0 and finite (layer point " + std::to_string(p) + " has " +
-                            std::to_string(scale[p]) + ")");
+      throw GeoLatticeError("width scale must be > 0 and finite (layer point " + std::to_string(p) +
+                            " has " + std::to_string(scale[p]) + ")");
     }
     lo = std::min(lo, f[p]);
     hi = std::max(hi, f[p]);
@@ -75,7 +80,8 @@ std::vector<double> gradedLatticeLevels(const std::vector<double>& f, const std:
   requireLevelCount(span / sMin, width);
   // Bins of width h; their count is capped, which only coarsens the sampling of s.
   const double binsWanted = std::ceil(span / (width * sMin) * kGradingBinsPerSpacing);
-  const int n = static_cast<int>(std::clamp(binsWanted, 1.0, static_cast<double>(kMaxLatticeLevels)));
+  const int n =
+      static_cast<int>(std::clamp(binsWanted, 1.0, static_cast<double>(kMaxLatticeLevels)));
   const double h = span / n;
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> sBar(n, inf);
@@ -137,4 +143,4 @@ std::vector<double> gradedLatticeLevels(const std::vector<double>& f, const std:
   return levels;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

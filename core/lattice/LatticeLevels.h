@@ -38,7 +38,8 @@ std::vector<double> uniformLatticeLevels(double lo, double hi, double width, dou
 /// width scale s (one per layer point, > 0): levels f_min < φ_j <= f_max, strictly ascending.
 /// @throws GeoLatticeError for a width <= 0, sizes that differ, a non-finite f, or an s that is
 ///   not finite and > 0 (naming the first offending point), or too many levels.
-std::vector<double> gradedLatticeLevels(const std::vector<double>& f, const std::vector<double>& scale, double width,
+std::vector<double> gradedLatticeLevels(const std::vector<double>& f,
+                                        const std::vector<double>& scale, double width,
                                         double phase);
 
-} // namespace geolattice
+}  // namespace geolattice

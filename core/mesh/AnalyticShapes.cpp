@@ -18,20 +18,21 @@ namespace {
 void requirePositiveSize(const Vec3& size, const char* function) {
   for (int a = 0; a < 3; ++a) {
     if (!(size[a] > 0.0) || !std::isfinite(size[a])) {
-      throw GeoLatticeError(std::string(function) + ": box size must be positive and finite, got (" +
+      throw GeoLatticeError(std::string(function) +
+                            ": box size must be positive and finite, got (" +
                             std::to_string(size.x()) + ", " + std::to_string(size.y()) + ", " +
                             std::to_string(size.z()) + ") mm");
     }
   }
 }
 
-} // namespace
+}  // namespace
 
 TriangleSurface boxSurface(const Vec3& size, double maxEdge) {
   requirePositiveSize(size, "boxSurface");
   if (!(maxEdge > 0.0) || !std::isfinite(maxEdge)) {
-    throw GeoLatticeError("boxSurface: maxEdge must be positive and finite, got " + std::to_string(maxEdge) +
-                          " mm");
+    throw GeoLatticeError("boxSurface: maxEdge must be positive and finite, got " +
+                          std::to_string(maxEdge) + " mm");
   }
   // A right triangle with legs h_u, h_v has hypotenuse sqrt(h_u^2 + h_v^2) <= maxEdge when
   // both legs are <= maxEdge / sqrt(2).
@@ -40,14 +41,16 @@ TriangleSurface boxSurface(const Vec3& size, double maxEdge) {
   for (int a = 0; a < 3; ++a) {
     const double cells = std::ceil(size[a] / maxStep - 1e-9);
     if (cells > 1e6) {
-      throw GeoLatticeError("boxSurface: maxEdge " + std::to_string(maxEdge) + " mm is too small for a " +
-                            std::to_string(size[a]) + " mm side");
+      throw GeoLatticeError("boxSurface: maxEdge " + std::to_string(maxEdge) +
+                            " mm is too small for a " + std::to_string(size[a]) + " mm side");
     }
     n[a] = std::max<int64_t>(1, static_cast<int64_t>(cells));
   }
-  const int64_t surfaceVertices = 2 * ((n[0] + 1) * (n[1] + 1) + (n[0] + 1) * (n[2] + 1) + (n[1] + 1) * (n[2] + 1));
+  const int64_t surfaceVertices =
+      2 * ((n[0] + 1) * (n[1] + 1) + (n[0] + 1) * (n[2] + 1) + (n[1] + 1) * (n[2] + 1));
   if (surfaceVertices > std::numeric_limits<int>::max() / 2) {
-    throw GeoLatticeError("boxSurface: too many vertices (" + std::to_string(surfaceVertices) + ")");
+    throw GeoLatticeError("boxSurface: too many vertices (" + std::to_string(surfaceVertices) +
+                          ")");
   }
 
   TriangleSurface surface;
@@ -87,20 +90,21 @@ TriangleSurface boxSurface(const Vec3& size, double maxEdge) {
       }
     }
   };
-  face(0, 0, 2, 1);    // x = 0,  normal -x = z cross y
-  face(0, n[0], 1, 2); // x = sx, normal +x = y cross z
-  face(1, 0, 0, 2);    // y = 0,  normal -y = x cross z
-  face(1, n[1], 2, 0); // y = sy, normal +y = z cross x
-  face(2, 0, 1, 0);    // z = 0,  normal -z = y cross x
-  face(2, n[2], 0, 1); // z = sz, normal +z = x cross y
+  face(0, 0, 2, 1);     // x = 0,  normal -x = z cross y
+  face(0, n[0], 1, 2);  // x = sx, normal +x = y cross z
+  face(1, 0, 0, 2);     // y = 0,  normal -y = x cross z
+  face(1, n[1], 2, 0);  // y = sy, normal +y = z cross x
+  face(2, 0, 1, 0);     // z = 0,  normal -z = y cross x
+  face(2, n[2], 0, 1);  // z = sz, normal +z = x cross y
   return surface;
 }
 
-TriangleSurface torusSurface(const Vec3& centre, double majorRadius, double minorRadius, int majorSegments,
-                             int minorSegments) {
+TriangleSurface torusSurface(const Vec3& centre, double majorRadius, double minorRadius,
+                             int majorSegments, int minorSegments) {
   if (!(minorRadius > 0.0) || !(majorRadius > minorRadius) || !std::isfinite(majorRadius)) {
-    throw GeoLatticeError("torusSurface: need 0 < minor radius < major radius, got " + std::to_string(minorRadius) +
-                          " and " + std::to_string(majorRadius) + " mm");
+    throw GeoLatticeError("torusSurface: need 0 < minor radius < major radius, got " +
+                          std::to_string(minorRadius) + " and " + std::to_string(majorRadius) +
+                          " mm");
   }
   if (majorSegments < 3 || minorSegments < 3 || majorSegments > 4096 || minorSegments > 4096) {
     throw GeoLatticeError("torusSurface: segment counts must be in 3..4096");
@@ -116,7 +120,9 @@ TriangleSurface torusSurface(const Vec3& centre, double majorRadius, double mino
                          minorRadius * std::sin(v) * Vec3::UnitY());
     }
   }
-  auto id = [&](int i, int j) { return ((i + nu) % nu) * nv + (j + nv) % nv; };
+  auto id = [&](int i, int j) {
+    return ((i + nu) % nu) * nv + (j + nv) % nv;
+  };
   for (int i = 0; i < nu; ++i) {
     for (int j = 0; j < nv; ++j) {
       // (d/du) x (d/dv) points inwards for this parametrisation, so the quads run (i, j+1, i+1).
@@ -129,8 +135,8 @@ TriangleSurface torusSurface(const Vec3& centre, double majorRadius, double mino
 
 TriangleSurface sphereSurface(const Vec3& centre, double radius, int subdivisionLevel) {
   if (!(radius > 0.0) || !std::isfinite(radius)) {
-    throw GeoLatticeError("sphereSurface: radius must be positive and finite, got " + std::to_string(radius) +
-                          " mm");
+    throw GeoLatticeError("sphereSurface: radius must be positive and finite, got " +
+                          std::to_string(radius) + " mm");
   }
   if (subdivisionLevel < 0 || subdivisionLevel > 10) {
     throw GeoLatticeError("sphereSurface: subdivision level must be in 0..10, got " +
@@ -138,18 +144,18 @@ TriangleSurface sphereSurface(const Vec3& centre, double radius, int subdivision
   }
   // Unit icosahedron, outward counter-clockwise triangles.
   const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Vec3> p = {Vec3(-1, t, 0), Vec3(1, t, 0),  Vec3(-1, -t, 0), Vec3(1, -t, 0),
-                         Vec3(0, -1, t), Vec3(0, 1, t),  Vec3(0, -1, -t), Vec3(0, 1, -t),
-                         Vec3(t, 0, -1), Vec3(t, 0, 1),  Vec3(-t, 0, -1), Vec3(-t, 0, 1)};
+  std::vector<Vec3> p = {Vec3(-1, t, 0), Vec3(1, t, 0), Vec3(-1, -t, 0), Vec3(1, -t, 0),
+                         Vec3(0, -1, t), Vec3(0, 1, t), Vec3(0, -1, -t), Vec3(0, 1, -t),
+                         Vec3(t, 0, -1), Vec3(t, 0, 1), Vec3(-t, 0, -1), Vec3(-t, 0, 1)};
   for (Vec3& q : p) {
     q.normalize();
   }
-  std::vector<std::array<int, 3>> tris = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                          {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                          {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                          {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  std::vector<std::array<int, 3>> tris = {
+      {0, 11, 5},  {0, 5, 1},  {0, 1, 7},  {0, 7, 10}, {0, 10, 11}, {1, 5, 9}, {5, 11, 4},
+      {11, 10, 2}, {10, 7, 6}, {7, 1, 8},  {3, 9, 4},  {3, 4, 2},   {3, 2, 6}, {3, 6, 8},
+      {3, 8, 9},   {4, 9, 5},  {2, 4, 11}, {6, 2, 10}, {8, 6, 7},   {9, 8, 1}};
   for (int level = 0; level < subdivisionLevel; ++level) {
-    std::map<std::pair<int, int>, int> midpoints; // one new vertex per edge, shared by both sides
+    std::map<std::pair<int, int>, int> midpoints;  // one new vertex per edge, shared by both sides
     auto midpoint = [&](int a, int b) {
       const std::pair<int, int> key(std::min(a, b), std::max(a, b));
       auto it = midpoints.find(key);
@@ -164,7 +170,8 @@ TriangleSurface sphereSurface(const Vec3& centre, double radius, int subdivision
     std::vector<std::array<int, 3>> next;
     next.reserve(tris.size() * 4);
     for (const auto& tri : tris) {
-      const int ab = midpoint(tri[0], tri[1]), bc = midpoint(tri[1], tri[2]), ca = midpoint(tri[2], tri[0]);
+      const int ab = midpoint(tri[0], tri[1]), bc = midpoint(tri[1], tri[2]),
+                ca = midpoint(tri[2], tri[0]);
       next.push_back({tri[0], ab, ca});
       next.push_back({tri[1], bc, ab});
       next.push_back({tri[2], ca, bc});
@@ -184,8 +191,8 @@ TriangleSurface sphereSurface(const Vec3& centre, double radius, int subdivision
 TetMesh boxTetMesh(const Vec3& size, int nx, int ny, int nz) {
   requirePositiveSize(size, "boxTetMesh");
   if (nx < 1 || ny < 1 || nz < 1) {
-    throw GeoLatticeError("boxTetMesh: cell counts must be >= 1, got " + std::to_string(nx) + " x " +
-                          std::to_string(ny) + " x " + std::to_string(nz));
+    throw GeoLatticeError("boxTetMesh: cell counts must be >= 1, got " + std::to_string(nx) +
+                          " x " + std::to_string(ny) + " x " + std::to_string(nz));
   }
   const int64_t tetCount = int64_t{6} * nx * ny * nz;
   if (tetCount > std::numeric_limits<int>::max()) {
@@ -200,7 +207,9 @@ TetMesh boxTetMesh(const Vec3& size, int nx, int ny, int nz) {
       }
     }
   }
-  auto id = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
+  auto id = [&](int i, int j, int k) {
+    return i + (nx + 1) * (j + (ny + 1) * k);
+  };
   // Kuhn split: one tet per axis order (a, b, c), along the path 0 -> e_a -> e_a+e_b -> 1,1,1.
   // Corner bit 1 = +x, 2 = +y, 4 = +z. Odd permutations give negative orientation, so two
   // vertices are swapped for them.
@@ -234,4 +243,4 @@ TetMesh boxTetMesh(const Vec3& size, int nx, int ny, int nz) {
   return mesh;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

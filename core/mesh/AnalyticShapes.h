@@ -34,8 +34,8 @@ TriangleSurface sphereSurface(const Vec3& centre, double radius, int subdivision
 /// each split into two triangles, counter-clockwise seen from outside. Used as a part whose
 /// curved layers split into two arcs and merge again (a skeleton DAG).
 /// @throws GeoLatticeError unless 0 < minorRadius < majorRadius and both segment counts are in 3..4096.
-TriangleSurface torusSurface(const Vec3& centre, double majorRadius, double minorRadius, int majorSegments,
-                             int minorSegments);
+TriangleSurface torusSurface(const Vec3& centre, double majorRadius, double minorRadius,
+                             int majorSegments, int minorSegments);
 
 /// @brief Structured tet mesh of the box [0,sx] x [0,sy] x [0,sz] (mm) with nx*ny*nz cells,
 /// each cell split into 6 tets along its main diagonal (Kuhn / Freudenthal split). The split
@@ -44,4 +44,4 @@ TriangleSurface torusSurface(const Vec3& centre, double majorRadius, double mino
 /// @throws GeoLatticeError on non-positive sizes or counts, or more than 2^31 tets.
 TetMesh boxTetMesh(const Vec3& size, int nx, int ny, int nz);
 
-} // namespace geolattice
+}  // namespace geolattice

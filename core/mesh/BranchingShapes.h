@@ -28,16 +28,17 @@ namespace geolattice {
 /// centre of its hemispherical tip). Branch k has azimuth firstAzimuthDeg + k * 360 / #branches
 /// (measured from +x towards +y).
 struct BranchingShapeParameters {
-  double trunkRadius = 6.0;      ///< > 0 (mm)
-  double trunkHeight = 22.0;     ///< z of the joint centre, > trunkRadius (mm)
-  double branchRadius = 4.5;     ///< in (0, 0.9 * trunkRadius]: a branch starts inside the joint sphere (mm)
+  double trunkRadius = 6.0;   ///< > 0 (mm)
+  double trunkHeight = 22.0;  ///< z of the joint centre, > trunkRadius (mm)
+  double branchRadius =
+      4.5;  ///< in (0, 0.9 * trunkRadius]: a branch starts inside the joint sphere (mm)
   double branchLength = 28.0;    ///< joint centre to tip centre, >= trunkRadius (mm)
   double branchLeanDeg = 50.0;   ///< angle between a branch axis and +z, [10, 80] (degrees)
   double firstAzimuthDeg = 0.0;  ///< azimuth of branch 0 (degrees, finite)
   int segments = 48;             ///< facets around every cylinder before remeshing, [8, 256]; the
-                                 ///< axial ring spacing and the cap rings follow the same edge length
-  double surfaceEdgeLength = 1.5; ///< target edge length of the final isotropic remeshing, in
-                                  ///< [branchRadius / 50, branchRadius] (mm)
+      ///< axial ring spacing and the cap rings follow the same edge length
+  double surfaceEdgeLength = 1.5;  ///< target edge length of the final isotropic remeshing, in
+                                   ///< [branchRadius / 50, branchRadius] (mm)
 };
 
 /// Defaults of the Y model: the members' defaults (trunk r 6 mm to z = 22 mm, two branches of
@@ -58,6 +59,7 @@ TriangleSurface yShapeSurface(const BranchingShapeParameters& parameters = yShap
 
 /// @brief Tree with three branches (azimuths firstAzimuthDeg + 0°, 120°, 240°). Same
 /// guarantees and errors as yShapeSurface.
-TriangleSurface threeBranchTreeSurface(const BranchingShapeParameters& parameters = threeBranchTreeDefaults());
+TriangleSurface threeBranchTreeSurface(
+    const BranchingShapeParameters& parameters = threeBranchTreeDefaults());
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -14,8 +14,8 @@ namespace geolattice {
 namespace {
 
 struct EdgeUse {
-  int lo, hi;   // sorted vertex ids
-  bool forward; // traversed lo -> hi by its triangle
+  int lo, hi;    // sorted vertex ids
+  bool forward;  // traversed lo -> hi by its triangle
   bool operator<(const EdgeUse& o) const { return lo != o.lo ? lo < o.lo : hi < o.hi; }
 };
 
@@ -23,11 +23,12 @@ std::string firstIndex(const char* what, int index) {
   return " (first: " + std::string(what) + " " + std::to_string(index) + ")";
 }
 
-} // namespace
+}  // namespace
 
 bool SurfaceCheckReport::isClosedManifold() const {
   return triangleCount > 0 && pointCount > 0 && outOfRangeTriangles == 0 && nonFinitePoints == 0 &&
-         boundaryEdges == 0 && nonManifoldEdges == 0 && inconsistentEdges == 0 && degenerateTriangles == 0;
+         boundaryEdges == 0 && nonManifoldEdges == 0 && inconsistentEdges == 0 &&
+         degenerateTriangles == 0;
 }
 
 SurfaceCheckReport checkSurface(const TriangleSurface& surface) {
@@ -83,7 +84,7 @@ SurfaceCheckReport checkSurface(const TriangleSurface& surface) {
     }
     for (int k = 0; k < 3; ++k) {
       const int u = tri[k], w = tri[(k + 1) % 3];
-      if (u != w) { // a repeated vertex has no real edge there; it is counted as degenerate
+      if (u != w) {  // a repeated vertex has no real edge there; it is counted as degenerate
         edges.push_back({std::min(u, w), std::max(u, w), u < w});
       }
     }
@@ -118,12 +119,14 @@ SurfaceCheckReport requireClosedManifold(const TriangleSurface& surface) {
   }
   if (r.outOfRangeTriangles > 0) {
     throw GeoLatticeError("invalid surface: " + std::to_string(r.outOfRangeTriangles) +
-                          " triangles reference a vertex index outside 0.." + std::to_string(r.pointCount - 1) +
+                          " triangles reference a vertex index outside 0.." +
+                          std::to_string(r.pointCount - 1) +
                           firstIndex("triangle", r.firstOutOfRangeTriangle));
   }
   if (r.nonFinitePoints > 0) {
     throw GeoLatticeError("invalid surface: " + std::to_string(r.nonFinitePoints) +
-                          " points have NaN or infinite coordinates" + firstIndex("point", r.firstNonFinitePoint));
+                          " points have NaN or infinite coordinates" +
+                          firstIndex("point", r.firstNonFinitePoint));
   }
   if (r.boundaryEdges > 0) {
     throw GeoLatticeError("open surface: " + std::to_string(r.boundaryEdges) +
@@ -134,18 +137,20 @@ SurfaceCheckReport requireClosedManifold(const TriangleSurface& surface) {
                           " edges shared by more than two triangles");
   }
   if (r.inconsistentEdges > 0) {
-    throw GeoLatticeError("inconsistently oriented triangles: " + std::to_string(r.inconsistentEdges) +
-                          " edges are traversed in the same direction by both of their triangles "
-                          "(the surface is not consistently oriented, or not orientable)");
+    throw GeoLatticeError(
+        "inconsistently oriented triangles: " + std::to_string(r.inconsistentEdges) +
+        " edges are traversed in the same direction by both of their triangles "
+        "(the surface is not consistently oriented, or not orientable)");
   }
   if (r.degenerateTriangles > 0) {
     throw GeoLatticeError("degenerate surface: " + std::to_string(r.degenerateTriangles) +
-                          " zero-area triangles" + firstIndex("triangle", r.firstDegenerateTriangle));
+                          " zero-area triangles" +
+                          firstIndex("triangle", r.firstDegenerateTriangle));
   }
   const double volumeTolerance = 1e-12 * std::pow(r.bboxDiagonal, 3);
   if (!(std::abs(r.signedVolume) > volumeTolerance)) {
-    throw GeoLatticeError("surface encloses no volume (signed volume " + std::to_string(r.signedVolume) +
-                          " mm^3)");
+    throw GeoLatticeError("surface encloses no volume (signed volume " +
+                          std::to_string(r.signedVolume) + " mm^3)");
   }
   return r;
 }
@@ -161,4 +166,4 @@ int orientOutward(TriangleSurface& surface) {
   return static_cast<int>(surface.triangles.size());
 }
 
-} // namespace geolattice
+}  // namespace geolattice

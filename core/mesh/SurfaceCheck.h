@@ -14,18 +14,18 @@ namespace geolattice {
 struct SurfaceCheckReport {
   int pointCount = 0;
   int triangleCount = 0;
-  int outOfRangeTriangles = 0;     ///< triangles with a vertex index < 0 or >= pointCount
+  int outOfRangeTriangles = 0;  ///< triangles with a vertex index < 0 or >= pointCount
   int firstOutOfRangeTriangle = -1;
-  int nonFinitePoints = 0;         ///< points with a NaN or infinite coordinate
+  int nonFinitePoints = 0;  ///< points with a NaN or infinite coordinate
   int firstNonFinitePoint = -1;
-  int degenerateTriangles = 0;     ///< area <= 1e-12 * (bounding-box diagonal)^2, or a repeated vertex
+  int degenerateTriangles = 0;  ///< area <= 1e-12 * (bounding-box diagonal)^2, or a repeated vertex
   int firstDegenerateTriangle = -1;
-  int boundaryEdges = 0;           ///< edges used by exactly one triangle (holes)
-  int nonManifoldEdges = 0;        ///< edges used by more than two triangles
-  int inconsistentEdges = 0;       ///< edges whose two triangles traverse it in the same direction
-  int unusedPoints = 0;            ///< points no triangle references (harmless, reported only)
-  double signedVolume = 0.0;       ///< enclosed volume (mm^3) by the divergence theorem; < 0 if inward
-  double bboxDiagonal = 0.0;       ///< bounding-box diagonal of the finite points (mm)
+  int boundaryEdges = 0;      ///< edges used by exactly one triangle (holes)
+  int nonManifoldEdges = 0;   ///< edges used by more than two triangles
+  int inconsistentEdges = 0;  ///< edges whose two triangles traverse it in the same direction
+  int unusedPoints = 0;       ///< points no triangle references (harmless, reported only)
+  double signedVolume = 0.0;  ///< enclosed volume (mm^3) by the divergence theorem; < 0 if inward
+  double bboxDiagonal = 0.0;  ///< bounding-box diagonal of the finite points (mm)
 
   /// True when the surface is non-empty, closed, edge-manifold, consistently oriented, with
   /// in-range indices, finite points and no degenerate triangles (orientation not required).
@@ -48,4 +48,4 @@ SurfaceCheckReport requireClosedManifold(const TriangleSurface& surface);
 /// triangles flipped (0 when already outward). Call after requireClosedManifold().
 int orientOutward(TriangleSurface& surface);
 
-} // namespace geolattice
+}  // namespace geolattice

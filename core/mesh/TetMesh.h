@@ -36,4 +36,4 @@ inline double signedTetVolume(const Vec3& a, const Vec3& b, const Vec3& c, const
   return (b - a).cross(c - a).dot(d - a) / 6.0;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

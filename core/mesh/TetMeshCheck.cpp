@@ -26,11 +26,11 @@ std::string first(const char* what, int index) {
   return " (first: " + std::string(what) + " " + std::to_string(index) + ")";
 }
 
-} // namespace
+}  // namespace
 
 bool TetMeshCheckReport::isValid() const {
-  return pointCount > 0 && tetCount > 0 && outOfRangeTets == 0 && nonFinitePoints == 0 && invertedTets == 0 &&
-         zeroVolumeTets == 0 && nonManifoldFaces == 0 && unusedPoints == 0;
+  return pointCount > 0 && tetCount > 0 && outOfRangeTets == 0 && nonFinitePoints == 0 &&
+         invertedTets == 0 && zeroVolumeTets == 0 && nonManifoldFaces == 0 && unusedPoints == 0;
 }
 
 TetMeshCheckReport checkTetMesh(const TetMesh& mesh) {
@@ -65,12 +65,12 @@ TetMeshCheckReport checkTetMesh(const TetMesh& mesh) {
     for (int v : tet) {
       used[v] = 1;
     }
-    const double vol = signedTetVolume(mesh.points[tet[0]], mesh.points[tet[1]], mesh.points[tet[2]],
-                                       mesh.points[tet[3]]);
+    const double vol = signedTetVolume(mesh.points[tet[0]], mesh.points[tet[1]],
+                                       mesh.points[tet[2]], mesh.points[tet[3]]);
     if (std::isfinite(vol)) {
       r.totalVolume += vol;
     }
-    if (!(std::abs(vol) >= r.zeroVolumeTolerance)) { // NaN counts as zero volume
+    if (!(std::abs(vol) >= r.zeroVolumeTolerance)) {  // NaN counts as zero volume
       if (r.zeroVolumeTets++ == 0) {
         r.firstZeroVolumeTet = t;
       }
@@ -99,19 +99,21 @@ TetMeshCheckReport requireValidTetMesh(const TetMesh& mesh) {
   }
   if (r.outOfRangeTets > 0) {
     throw GeoLatticeError("tet mesh has " + std::to_string(r.outOfRangeTets) +
-                          " tets with a vertex index outside 0.." + std::to_string(r.pointCount - 1) +
-                          first("tet", r.firstOutOfRangeTet));
+                          " tets with a vertex index outside 0.." +
+                          std::to_string(r.pointCount - 1) + first("tet", r.firstOutOfRangeTet));
   }
   if (r.nonFinitePoints > 0) {
     throw GeoLatticeError("tet mesh has " + std::to_string(r.nonFinitePoints) +
-                          " points with NaN or infinite coordinates" + first("point", r.firstNonFinitePoint));
+                          " points with NaN or infinite coordinates" +
+                          first("point", r.firstNonFinitePoint));
   }
   if (r.invertedTets > 0) {
-    throw GeoLatticeError("tet mesh has " + std::to_string(r.invertedTets) + " inverted tets" +
-                          first("tet", r.firstInvertedTet) +
-                          (r.invertedTets == r.tetCount
-                               ? "; all tets are negatively oriented, orientTetsPositively() can flip them"
-                               : ""));
+    throw GeoLatticeError(
+        "tet mesh has " + std::to_string(r.invertedTets) + " inverted tets" +
+        first("tet", r.firstInvertedTet) +
+        (r.invertedTets == r.tetCount
+             ? "; all tets are negatively oriented, orientTetsPositively() can flip them"
+             : ""));
   }
   if (r.zeroVolumeTets > 0) {
     throw GeoLatticeError("tet mesh has " + std::to_string(r.zeroVolumeTets) + " zero-volume tets" +
@@ -122,8 +124,8 @@ TetMeshCheckReport requireValidTetMesh(const TetMesh& mesh) {
                           " faces shared by more than two tets (overlapping tets)");
   }
   if (r.unusedPoints > 0) {
-    throw GeoLatticeError("tet mesh has " + std::to_string(r.unusedPoints) + " vertices used by no tet" +
-                          first("vertex", r.firstUnusedPoint));
+    throw GeoLatticeError("tet mesh has " + std::to_string(r.unusedPoints) +
+                          " vertices used by no tet" + first("vertex", r.firstUnusedPoint));
   }
   return r;
 }
@@ -134,9 +136,8 @@ int orientTetsPositively(TetMesh& mesh) {
     return 0;
   }
   for (const auto& tet : mesh.tets) {
-    if (!tetInRange(tet, n) ||
-        !(signedTetVolume(mesh.points[tet[0]], mesh.points[tet[1]], mesh.points[tet[2]], mesh.points[tet[3]]) <
-          0.0)) {
+    if (!tetInRange(tet, n) || !(signedTetVolume(mesh.points[tet[0]], mesh.points[tet[1]],
+                                                 mesh.points[tet[2]], mesh.points[tet[3]]) < 0.0)) {
       return 0;
     }
   }
@@ -146,4 +147,4 @@ int orientTetsPositively(TetMesh& mesh) {
   return static_cast<int>(mesh.tets.size());
 }
 
-} // namespace geolattice
+}  // namespace geolattice

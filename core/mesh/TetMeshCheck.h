@@ -14,19 +14,19 @@ namespace geolattice {
 struct TetMeshCheckReport {
   int pointCount = 0;
   int tetCount = 0;
-  int outOfRangeTets = 0;      ///< tets with a vertex index < 0 or >= pointCount
+  int outOfRangeTets = 0;  ///< tets with a vertex index < 0 or >= pointCount
   int firstOutOfRangeTet = -1;
-  int nonFinitePoints = 0;     ///< points with a NaN or infinite coordinate
+  int nonFinitePoints = 0;  ///< points with a NaN or infinite coordinate
   int firstNonFinitePoint = -1;
-  int invertedTets = 0;        ///< signed volume <= -zeroVolumeTolerance
+  int invertedTets = 0;  ///< signed volume <= -zeroVolumeTolerance
   int firstInvertedTet = -1;
-  int zeroVolumeTets = 0;      ///< |signed volume| < zeroVolumeTolerance (repeated vertices included)
+  int zeroVolumeTets = 0;  ///< |signed volume| < zeroVolumeTolerance (repeated vertices included)
   int firstZeroVolumeTet = -1;
-  int nonManifoldFaces = 0;    ///< triangles shared by more than two tets
-  int unusedPoints = 0;        ///< vertices referenced by no tet (they make the FEM Laplacian singular)
+  int nonManifoldFaces = 0;  ///< triangles shared by more than two tets
+  int unusedPoints = 0;  ///< vertices referenced by no tet (they make the FEM Laplacian singular)
   int firstUnusedPoint = -1;
-  double totalVolume = 0.0;    ///< sum of signed tet volumes (mm^3)
-  double zeroVolumeTolerance = 0.0; ///< 1e-12 * (bounding-box diagonal)^3 (mm^3)
+  double totalVolume = 0.0;          ///< sum of signed tet volumes (mm^3)
+  double zeroVolumeTolerance = 0.0;  ///< 1e-12 * (bounding-box diagonal)^3 (mm^3)
 
   /// True when every count above is zero and the mesh is non-empty.
   bool isValid() const;
@@ -47,4 +47,4 @@ TetMeshCheckReport requireValidTetMesh(const TetMesh& mesh);
 /// orientations is a tangled mesh, not a convention, and requireValidTetMesh reports it).
 int orientTetsPositively(TetMesh& mesh);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -11,12 +11,12 @@ namespace {
 constexpr int kFaceVertices[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
 
 struct FaceRecord {
-  std::array<int, 3> key; // sorted vertex ids
+  std::array<int, 3> key;  // sorted vertex ids
   int tet;
   int localFace;
   bool operator<(const FaceRecord& o) const { return key < o.key; }
 };
-} // namespace
+}  // namespace
 
 TetMeshTopology::TetMeshTopology(const TetMesh& mesh) {
   const size_t nt = mesh.tets.size();
@@ -25,7 +25,8 @@ TetMeshTopology::TetMeshTopology(const TetMesh& mesh) {
   faces.reserve(4 * nt);
   for (size_t t = 0; t < nt; ++t) {
     for (int k = 0; k < 4; ++k) {
-      std::array<int, 3> key = {mesh.tets[t][kFaceVertices[k][0]], mesh.tets[t][kFaceVertices[k][1]],
+      std::array<int, 3> key = {mesh.tets[t][kFaceVertices[k][0]],
+                                mesh.tets[t][kFaceVertices[k][1]],
                                 mesh.tets[t][kFaceVertices[k][2]]};
       std::sort(key.begin(), key.end());
       faces.push_back({key, static_cast<int>(t), k});
@@ -40,11 +41,12 @@ TetMeshTopology::TetMeshTopology(const TetMesh& mesh) {
     if (j - i == 1) {
       const FaceRecord& f = faces[i];
       const auto& tet = mesh.tets[f.tet];
-      std::array<int, 3> v = {tet[kFaceVertices[f.localFace][0]], tet[kFaceVertices[f.localFace][1]],
+      std::array<int, 3> v = {tet[kFaceVertices[f.localFace][0]],
+                              tet[kFaceVertices[f.localFace][1]],
                               tet[kFaceVertices[f.localFace][2]]};
       // A negatively oriented tet flips its faces; keep boundary normals outward anyway.
-      const double vol = signedTetVolume(mesh.points[tet[0]], mesh.points[tet[1]], mesh.points[tet[2]],
-                                         mesh.points[tet[3]]);
+      const double vol = signedTetVolume(mesh.points[tet[0]], mesh.points[tet[1]],
+                                         mesh.points[tet[2]], mesh.points[tet[3]]);
       if (vol < 0) {
         std::swap(v[1], v[2]);
       }
@@ -73,4 +75,4 @@ TriangleSurface boundarySurface(const TetMesh& mesh, const TetMeshTopology& topo
   return surface;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

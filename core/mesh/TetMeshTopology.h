@@ -40,4 +40,4 @@ private:
 /// vertices included), e.g. for overhang analysis or base selection.
 TriangleSurface boundarySurface(const TetMesh& mesh, const TetMeshTopology& topology);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -14,10 +14,11 @@ namespace {
 constexpr double kRadToDeg = 180.0 / 3.14159265358979323846;
 
 std::string vecText(const Vec3& v) {
-  return "(" + std::to_string(v.x()) + ", " + std::to_string(v.y()) + ", " + std::to_string(v.z()) + ")";
+  return "(" + std::to_string(v.x()) + ", " + std::to_string(v.y()) + ", " + std::to_string(v.z()) +
+         ")";
 }
 
-} // namespace
+}  // namespace
 
 double overhangAngleDeg(const Vec3& nozzle, const Vec3& normal) {
   const double c = nozzle.dot(normal) / normal.norm();
@@ -26,7 +27,8 @@ double overhangAngleDeg(const Vec3& nozzle, const Vec3& normal) {
 
 OverhangResult analyzeOverhang(const TetMesh& mesh, const TetMeshTopology& topology,
                                const std::vector<Vec3>& nozzleDirections,
-                               const std::vector<std::uint8_t>& baseVertex, const OverhangOptions& options) {
+                               const std::vector<std::uint8_t>& baseVertex,
+                               const OverhangOptions& options) {
   const double threshold = options.thresholdDeg;
   if (!(threshold > 90.0 && threshold <= 180.0)) {
     throw GeoLatticeError("overhang analysis: threshold angle must be in (90, 180] degrees, got " +
@@ -36,15 +38,18 @@ OverhangResult analyzeOverhang(const TetMesh& mesh, const TetMeshTopology& topol
   const size_t numPoints = mesh.points.size();
   if (nozzleDirections.size() != numTets) {
     throw GeoLatticeError("overhang analysis: " + std::to_string(nozzleDirections.size()) +
-                          " nozzle directions for " + std::to_string(numTets) + " tets (one per tet needed)");
+                          " nozzle directions for " + std::to_string(numTets) +
+                          " tets (one per tet needed)");
   }
   if (baseVertex.size() != numPoints) {
-    throw GeoLatticeError("overhang analysis: " + std::to_string(baseVertex.size()) + " base flags for " +
-                          std::to_string(numPoints) + " vertices (one per vertex needed)");
+    throw GeoLatticeError("overhang analysis: " + std::to_string(baseVertex.size()) +
+                          " base flags for " + std::to_string(numPoints) +
+                          " vertices (one per vertex needed)");
   }
   if (topology.neighbors().size() != numTets) {
-    throw GeoLatticeError("overhang analysis: the topology has " + std::to_string(topology.neighbors().size()) +
-                          " tets but the mesh " + std::to_string(numTets) + " (topology of another mesh?)");
+    throw GeoLatticeError("overhang analysis: the topology has " +
+                          std::to_string(topology.neighbors().size()) + " tets but the mesh " +
+                          std::to_string(numTets) + " (topology of another mesh?)");
   }
   const std::vector<BoundaryFace>& faces = topology.boundaryFaces();
   if (faces.empty()) {
@@ -65,24 +70,27 @@ OverhangResult analyzeOverhang(const TetMesh& mesh, const TetMeshTopology& topol
     const BoundaryFace& face = faces[f];
     for (int id : face.vertices) {
       if (id < 0 || static_cast<size_t>(id) >= numPoints) {
-        throw GeoLatticeError("overhang analysis: boundary face " + std::to_string(f) + " has vertex index " +
-                              std::to_string(id) + " out of range [0, " + std::to_string(numPoints) + ")");
+        throw GeoLatticeError("overhang analysis: boundary face " + std::to_string(f) +
+                              " has vertex index " + std::to_string(id) + " out of range [0, " +
+                              std::to_string(numPoints) + ")");
       }
     }
     // Each tet is checked when one of its faces is analysed: interior tets never matter.
     Vec3 d = nozzleDirections[face.tet];
     const double length = d.norm();
     if (!std::isfinite(length) || std::abs(length - 1.0) > 1e-3) {
-      throw GeoLatticeError("overhang analysis: nozzle direction of tet " + std::to_string(face.tet) + " is " +
-                            vecText(d) + " (length " + std::to_string(length) + "), expected a unit vector");
+      throw GeoLatticeError("overhang analysis: nozzle direction of tet " +
+                            std::to_string(face.tet) + " is " + vecText(d) + " (length " +
+                            std::to_string(length) + "), expected a unit vector");
     }
     d /= length;
     const Vec3& a = mesh.points[face.vertices[0]];
     const Vec3& b = mesh.points[face.vertices[1]];
     const Vec3& c = mesh.points[face.vertices[2]];
-    const Vec3 n = (b - a).cross(c - a); // outward (BoundaryFace orientation), |n| = 2 * area
+    const Vec3 n = (b - a).cross(c - a);  // outward (BoundaryFace orientation), |n| = 2 * area
     const double nn = n.norm();
-    r.onBase[f] = baseVertex[face.vertices[0]] && baseVertex[face.vertices[1]] && baseVertex[face.vertices[2]];
+    r.onBase[f] = baseVertex[face.vertices[0]] && baseVertex[face.vertices[1]] &&
+                  baseVertex[face.vertices[2]];
     if (!(nn > 0.0) || !std::isfinite(nn)) {
       // No normal: neutral angle, and no area to count anywhere.
       r.planarDeg[f] = r.curvedDeg[f] = 90.0;
@@ -119,4 +127,4 @@ OverhangResult analyzeOverhang(const TetMesh& mesh, const TetMeshTopology& topol
   return r;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

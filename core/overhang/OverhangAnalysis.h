@@ -31,8 +31,8 @@ struct OverhangOptions {
 /// @brief Per boundary face results (index f = the f-th TetMeshTopology::boundaryFaces entry)
 /// and the totals.
 struct OverhangResult {
-  std::vector<double> planarDeg;     ///< #F θ for d = +z (degrees, [0, 180])
-  std::vector<double> curvedDeg;     ///< #F θ for d = the nozzle direction of the face's tet (degrees)
+  std::vector<double> planarDeg;  ///< #F θ for d = +z (degrees, [0, 180])
+  std::vector<double> curvedDeg;  ///< #F θ for d = the nozzle direction of the face's tet (degrees)
   std::vector<std::uint8_t> onBase;  ///< #F 1 if all three vertices are base vertices
   std::vector<double> area;          ///< #F face area (mm^2)
   double thresholdDeg = 135.0;       ///< threshold used (degrees)
@@ -44,9 +44,9 @@ struct OverhangResult {
   double planarFraction = 0.0;
   /// curvedOverhangArea / (totalArea - baseArea), in [0, 1].
   double curvedFraction = 0.0;
-  double maxPlanarDeg = 0.0;         ///< largest θ_planar over the off-base faces (degrees)
-  double maxCurvedDeg = 0.0;         ///< largest θ_curved over the off-base faces (degrees)
-  int zeroAreaFaces = 0;             ///< faces with no defined normal: θ set to 90°, area 0
+  double maxPlanarDeg = 0.0;  ///< largest θ_planar over the off-base faces (degrees)
+  double maxCurvedDeg = 0.0;  ///< largest θ_curved over the off-base faces (degrees)
+  int zeroAreaFaces = 0;      ///< faces with no defined normal: θ set to 90°, area 0
 };
 
 /// @brief Overhang angles of the boundary faces of `mesh`.
@@ -68,4 +68,4 @@ OverhangResult analyzeOverhang(const TetMesh& mesh, const TetMeshTopology& topol
 /// length > 0) for a unit nozzle direction d; clamps rounding so that the result is in [0, 180].
 double overhangAngleDeg(const Vec3& nozzle, const Vec3& normal);
 
-} // namespace geolattice
+}  // namespace geolattice

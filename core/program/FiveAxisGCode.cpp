@@ -13,21 +13,26 @@ namespace {
 
 constexpr double kDeg = 180.0 / M_PI;
 
-double unwrapNear(double angle, double near) { return near + std::remainder(angle - near, 360.0); }
+double unwrapNear(double angle, double near) {
+  return near + std::remainder(angle - near, 360.0);
+}
 
 Eigen::Matrix3d tiltMatrix(TableKinematics k, double tiltDeg) {
-  return Eigen::AngleAxisd(tiltDeg / kDeg, k == TableKinematics::AC ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY())
+  return Eigen::AngleAxisd(tiltDeg / kDeg, k == TableKinematics::AC ? Eigen::Vector3d::UnitX()
+                                                                    : Eigen::Vector3d::UnitY())
       .toRotationMatrix();
 }
 
-} // namespace
+}  // namespace
 
-void tableAngles(TableKinematics k, const Eigen::Vector3d& nIn, double previousC, double poleToleranceDeg, double& tilt,
-                 double& c) {
+void tableAngles(TableKinematics k, const Eigen::Vector3d& nIn, double previousC,
+                 double poleToleranceDeg, double& tilt, double& c) {
   const Eigen::Vector3d n = nIn.normalized();
   const double rho = std::hypot(n.x(), n.y());
-  double c1 = k == TableKinematics::AC ? std::atan2(n.x(), n.y()) * kDeg : std::atan2(-n.y(), n.x()) * kDeg;
-  double t1 = k == TableKinematics::AC ? std::atan2(rho, n.z()) * kDeg : std::atan2(-rho, n.z()) * kDeg;
+  double c1 =
+      k == TableKinematics::AC ? std::atan2(n.x(), n.y()) * kDeg : std::atan2(-n.y(), n.x()) * kDeg;
+  double t1 =
+      k == TableKinematics::AC ? std::atan2(rho, n.z()) * kDeg : std::atan2(-rho, n.z()) * kDeg;
   if (std::abs(t1) < poleToleranceDeg || rho == 0) {
     tilt = t1;
     c = previousC;  // pole: keep C
@@ -45,9 +50,11 @@ void tableAngles(TableKinematics k, const Eigen::Vector3d& nIn, double previousC
   }
 }
 
-GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
-                              const std::vector<double>& extrusion, const std::vector<double>& feedRate,
-                              const std::vector<int>& kind, const GCodeOptions& o, std::ostream& out) {
+GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points,
+                              const std::vector<Eigen::Vector3d>& normals,
+                              const std::vector<double>& extrusion,
+                              const std::vector<double>& feedRate, const std::vector<int>& kind,
+                              const GCodeOptions& o, std::ostream& out) {
   const size_t N = points.size();
   if (N == 0) {
     throw GeoLatticeError("G-code: the toolpath is empty");
@@ -66,7 +73,8 @@ GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const 
   double previousC = 0;
   for (size_t i = 0; i < N; ++i) {
     if (!points[i].allFinite() || !normals[i].allFinite() || !(normals[i].norm() > 0)) {
-      throw GeoLatticeError("G-code: toolpath point " + std::to_string(i) + " has a NaN position or normal");
+      throw GeoLatticeError("G-code: toolpath point " + std::to_string(i) +
+                            " has a NaN position or normal");
     }
     double tilt = 0, c = 0;
     tableAngles(o.kinematics, normals[i], previousC, o.poleToleranceDeg, tilt, c);
@@ -94,11 +102,14 @@ GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const 
   // little as possible pick one that turns at most r per point wherever that is possible at all.
   const double tol = o.axisToleranceDeg / kDeg, r = o.maxRotaryStepDeg;
   const double any = 1e12;  // a tube that allows every C
-  std::vector<double> lo(N), hi(N), ref(N);  // reachable C interval, a C inside it near the exact one
-  std::vector<char> forced(N, 0);            // the tube is beyond r: C turns faster here
+  std::vector<double> lo(N), hi(N),
+      ref(N);                      // reachable C interval, a C inside it near the exact one
+  std::vector<char> forced(N, 0);  // the tube is beyond r: C turns faster here
   for (size_t i = 0; i < N; ++i) {
-    const double sinTheta = std::sin(std::min(std::abs(tilts[i]), 180.0 - std::abs(tilts[i])) / kDeg);
-    const double delta = sinTheta <= std::sin(tol) ? 180.0 : std::asin(std::sin(tol) / sinTheta) * kDeg;
+    const double sinTheta =
+        std::sin(std::min(std::abs(tilts[i]), 180.0 - std::abs(tilts[i])) / kDeg);
+    const double delta =
+        sinTheta <= std::sin(tol) ? 180.0 : std::asin(std::sin(tol) / sinTheta) * kDeg;
     const double previous = i > 0 ? ref[i - 1] : cs[i];
     const double reachLo = i > 0 ? lo[i - 1] - r : -any, reachHi = i > 0 ? hi[i - 1] + r : any;
     if (delta >= 180.0) {
@@ -111,12 +122,14 @@ GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const 
     // if the tilt limits allow it).
     double centre = unwrapNear(cs[i], previous);
     const double other = unwrapNear(cs[i] + 180.0, previous);
-    if (-tilts[i] >= o.tiltMinDeg && -tilts[i] <= o.tiltMaxDeg && std::abs(other - previous) < std::abs(centre - previous)) {
+    if (-tilts[i] >= o.tiltMinDeg && -tilts[i] <= o.tiltMaxDeg &&
+        std::abs(other - previous) < std::abs(centre - previous)) {
       centre = other;
     }
     lo[i] = centre - delta;
     hi[i] = centre + delta;
-    if (reachHi < lo[i]) {  // C must turn faster than r here: by the least step that reaches the tube
+    if (reachHi <
+        lo[i]) {  // C must turn faster than r here: by the least step that reaches the tube
       forced[i] = 1;
       hi[i] = lo[i];
     } else if (reachLo > hi[i]) {
@@ -138,10 +151,13 @@ GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const 
   for (size_t k = 0; k < N; ++k) {
     const double c = chosen[k];
     // Best tilt for this C: rotate R_C(c)·n within the tilt plane as close to +Z as possible.
-    const Eigen::Vector3d m = Eigen::AngleAxisd(c / kDeg, Eigen::Vector3d::UnitZ()) * normals[k].normalized();
-    const double tilt = o.kinematics == TableKinematics::AC ? std::atan2(m.y(), m.z()) * kDeg : std::atan2(-m.x(), m.z()) * kDeg;
+    const Eigen::Vector3d m =
+        Eigen::AngleAxisd(c / kDeg, Eigen::Vector3d::UnitZ()) * normals[k].normalized();
+    const double tilt = o.kinematics == TableKinematics::AC ? std::atan2(m.y(), m.z()) * kDeg
+                                                            : std::atan2(-m.x(), m.z()) * kDeg;
     const Eigen::Vector3d up = tiltMatrix(o.kinematics, tilt) * m;
-    stats.maxAxisErrorDeg = std::max(stats.maxAxisErrorDeg, std::acos(std::clamp(up.z(), -1.0, 1.0)) * kDeg);
+    stats.maxAxisErrorDeg =
+        std::max(stats.maxAxisErrorDeg, std::acos(std::clamp(up.z(), -1.0, 1.0)) * kDeg);
     stats.forcedRotarySteps += forced[k];
     cs[k] = c;
     tilts[k] = tilt;
@@ -151,17 +167,19 @@ GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const 
   previousC = cs[0];
   for (size_t i = 0; i < N; ++i) {
     const double tilt = tilts[i], c = cs[i];
-    const Eigen::Matrix3d r = tiltMatrix(o.kinematics, tilt) *
-                              Eigen::AngleAxisd(c / kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+    const Eigen::Matrix3d r =
+        tiltMatrix(o.kinematics, tilt) *
+        Eigen::AngleAxisd(c / kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     const Eigen::Vector3d x = o.pivot + r * (points[i] + o.partOffset);
     if (i > 0) {
-      stats.maxRotaryStepDeg = std::max({stats.maxRotaryStepDeg, std::abs(c - previousC), std::abs(tilt - previousTilt)});
+      stats.maxRotaryStepDeg = std::max(
+          {stats.maxRotaryStepDeg, std::abs(c - previousC), std::abs(tilt - previousTilt)});
     }
     const double len = i > 0 ? (points[i] - points[i - 1]).norm() : 0.0;
     const double t = feedRate[i] > 0 && len > 0 ? len / feedRate[i] : 0.001;  // s
     const bool air = kind[i] == 2;
-    out << (air || i == 0 ? "G0" : "G1") << " X" << urNumber(x.x()) << " Y" << urNumber(x.y()) << " Z"
-        << urNumber(x.z()) << ' ' << tiltAxis << urNumber(tilt) << " C" << urNumber(c);
+    out << (air || i == 0 ? "G0" : "G1") << " X" << urNumber(x.x()) << " Y" << urNumber(x.y())
+        << " Z" << urNumber(x.z()) << ' ' << tiltAxis << urNumber(tilt) << " C" << urNumber(c);
     const double de = extrusion[i] - previousE;
     if (!air && i > 0 && de != 0) {
       out << " E" << urNumber(de);
@@ -171,7 +189,8 @@ GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const 
     }
     out << '\n';
     if (air && de != 0) {
-      out << "G1 E" << urNumber(de) << " F" << urNumber(60.0 / 0.05) << " ; " << (de < 0 ? "retract" : "prime") << '\n';
+      out << "G1 E" << urNumber(de) << " F" << urNumber(60.0 / 0.05) << " ; "
+          << (de < 0 ? "retract" : "prime") << '\n';
     }
     previousE = extrusion[i];
     previousC = c;
@@ -182,9 +201,10 @@ GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const 
   return stats;
 }
 
-void writeWaypointCsv(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
-                      const std::vector<double>& extrusion, const std::vector<int>& kind, const std::vector<int>& layer,
-                      std::ostream& out) {
+void writeWaypointCsv(const std::vector<Eigen::Vector3d>& points,
+                      const std::vector<Eigen::Vector3d>& normals,
+                      const std::vector<double>& extrusion, const std::vector<int>& kind,
+                      const std::vector<int>& layer, std::ostream& out) {
   const size_t N = points.size();
   if (normals.size() != N || extrusion.size() != N || kind.size() != N || layer.size() != N) {
     throw GeoLatticeError("waypoint CSV: toolpath arrays differ in length");
@@ -192,10 +212,11 @@ void writeWaypointCsv(const std::vector<Eigen::Vector3d>& points, const std::vec
   out << "x,y,z,nx,ny,nz,e,kind,layer\n";
   for (size_t i = 0; i < N; ++i) {
     const Eigen::Vector3d n = normals[i].normalized();
-    out << urNumber(points[i].x()) << ',' << urNumber(points[i].y()) << ',' << urNumber(points[i].z()) << ','
-        << urNumber(n.x()) << ',' << urNumber(n.y()) << ',' << urNumber(n.z()) << ',' << urNumber(extrusion[i]) << ','
-        << kind[i] << ',' << layer[i] << '\n';
+    out << urNumber(points[i].x()) << ',' << urNumber(points[i].y()) << ','
+        << urNumber(points[i].z()) << ',' << urNumber(n.x()) << ',' << urNumber(n.y()) << ','
+        << urNumber(n.z()) << ',' << urNumber(extrusion[i]) << ',' << kind[i] << ',' << layer[i]
+        << '\n';
   }
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -42,27 +42,30 @@ struct GCodeOptions {
 
 struct GCodeStats {
   size_t moves = 0;
-  size_t outOfLimits = 0;     ///< points whose tilt exceeds the limits on both branches
+  size_t outOfLimits = 0;  ///< points whose tilt exceeds the limits on both branches
   double maxRotaryStepDeg = 0;
   size_t branchFlips = 0;
-  double maxAxisErrorDeg = 0;  ///< from the C deviations near the pole (at most axisToleranceDeg)
+  double maxAxisErrorDeg = 0;    ///< from the C deviations near the pole (at most axisToleranceDeg)
   size_t forcedRotarySteps = 0;  ///< points where C had to turn by more than maxRotaryStepDeg
 };
 
 /// Rotary angles (degrees) for one axis direction: (tilt, c) of the branch nearest to
 /// previousC (two branches: see the file comment).
-void tableAngles(TableKinematics k, const Eigen::Vector3d& n, double previousC, double poleToleranceDeg, double& tilt,
-                 double& c);
+void tableAngles(TableKinematics k, const Eigen::Vector3d& n, double previousC,
+                 double poleToleranceDeg, double& tilt, double& c);
 
 /// Writes the program. points/normals/extrusion/feedRate/kind as in Toolpath (kind 2 = air,
 /// rapid G0 without E). Throws GeoLatticeError for mismatched sizes, an empty path or NaN data.
-GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
-                              const std::vector<double>& extrusion, const std::vector<double>& feedRate,
-                              const std::vector<int>& kind, const GCodeOptions& options, std::ostream& out);
+GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points,
+                              const std::vector<Eigen::Vector3d>& normals,
+                              const std::vector<double>& extrusion,
+                              const std::vector<double>& feedRate, const std::vector<int>& kind,
+                              const GCodeOptions& options, std::ostream& out);
 
 /// Waypoint CSV: header "x,y,z,nx,ny,nz,e,kind,layer" and one row per point (mm, unit axis, E mm).
-void writeWaypointCsv(const std::vector<Eigen::Vector3d>& points, const std::vector<Eigen::Vector3d>& normals,
-                      const std::vector<double>& extrusion, const std::vector<int>& kind, const std::vector<int>& layer,
-                      std::ostream& out);
+void writeWaypointCsv(const std::vector<Eigen::Vector3d>& points,
+                      const std::vector<Eigen::Vector3d>& normals,
+                      const std::vector<double>& extrusion, const std::vector<int>& kind,
+                      const std::vector<int>& layer, std::ostream& out);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -16,8 +16,10 @@ std::string urNumber(double v) {
   char buf[64];
   std::snprintf(buf, sizeof buf, "%.6f", v);
   std::string s = buf;
-  while (!s.empty() && s.back() == '0') s.pop_back();
-  if (!s.empty() && s.back() == '.') s.pop_back();
+  while (!s.empty() && s.back() == '0')
+    s.pop_back();
+  if (!s.empty() && s.back() == '.')
+    s.pop_back();
   return s;
 }
 
@@ -33,9 +35,10 @@ std::string poseLiteral(const Isometry& t) {
   return s;
 }
 
-} // namespace
+}  // namespace
 
-ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const ProgramInput& in, const URScriptOptions& o,
+ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const ProgramInput& in,
+                           const URScriptOptions& o,
                            const std::function<std::ostream&(size_t)>& openFile) {
   if (!in.points || !in.extrusion || !in.feedRate || !in.kind) {
     throw GeoLatticeError("URScript: toolpath arrays missing");
@@ -44,12 +47,15 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
   if (N == 0) {
     throw GeoLatticeError("URScript: the toolpath is empty");
   }
-  if (rp.joints.size() != N || in.extrusion->size() != N || in.feedRate->size() != N || in.kind->size() != N) {
+  if (rp.joints.size() != N || in.extrusion->size() != N || in.feedRate->size() != N ||
+      in.kind->size() != N) {
     throw GeoLatticeError("URScript: toolpath arrays and joint solutions differ in length");
   }
-  if (!(o.speedFactor > 0 && o.speedFactor <= 1) || !(o.maxFilamentRate > 0) || !(o.blendFraction >= 0) ||
-      o.maxFileBytes < 10000) {
-    throw GeoLatticeError("URScript: bad options (speed factor in (0, 1], max filament rate > 0, file size >= 10 kB)");
+  if (!(o.speedFactor > 0 && o.speedFactor <= 1) || !(o.maxFilamentRate > 0) ||
+      !(o.blendFraction >= 0) || o.maxFileBytes < 10000) {
+    throw GeoLatticeError(
+        "URScript: bad options (speed factor in (0, 1], max filament rate > 0, file size >= 10 "
+        "kB)");
   }
   const auto& pts = *in.points;
   const auto& kind = *in.kind;
@@ -65,12 +71,14 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
     const double len = (pts[i] - pts[i - 1]).norm();
     double t = (*in.feedRate)[i] > 0 ? len / (*in.feedRate)[i] : 0.0;
     for (int j = 0; j < 6; ++j) {
-      t = std::max(t, std::abs(rp.joints[i][j] - rp.joints[i - 1][j]) / (o.speedFactor * robot.maxSpeed[j]));
+      t = std::max(
+          t, std::abs(rp.joints[i][j] - rp.joints[i - 1][j]) / (o.speedFactor * robot.maxSpeed[j]));
     }
     time[i] = std::max(t, 0.002);  // one controller cycle at least
     for (int j = 0; j < 6; ++j) {
       stats.maxJointSpeedDegS =
-          std::max(stats.maxJointSpeedDegS, std::abs(rp.joints[i][j] - rp.joints[i - 1][j]) / time[i] * 180 / M_PI);
+          std::max(stats.maxJointSpeedDegS,
+                   std::abs(rp.joints[i][j] - rp.joints[i - 1][j]) / time[i] * 180 / M_PI);
     }
     stats.duration += time[i];
   }
@@ -88,7 +96,8 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
       chunk.clear();
       // A new program may start here: restate the joints and the analog output.
       chunk << "  movej([";
-      for (int j = 0; j < 6; ++j) chunk << urNumber(rp.joints[i - 1][j]) << (j < 5 ? ", " : "]");
+      for (int j = 0; j < 6; ++j)
+        chunk << urNumber(rp.joints[i - 1][j]) << (j < 5 ? ", " : "]");
       chunk << ", a=0.5, v=0.2)\n";
       previousRate = -1;
     }
@@ -96,7 +105,8 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
     const double rate = air ? 0.0 : de / time[i];
     if (air && de != 0) {  // retraction / prime: an extruder move while the robot waits
       chunk << "  set_standard_analog_out(0, 0)\n";
-      chunk << "  # " << (de < 0 ? "retract " : "prime ") << urNumber(std::abs(de)) << " mm of filament\n";
+      chunk << "  # " << (de < 0 ? "retract " : "prime ") << urNumber(std::abs(de))
+            << " mm of filament\n";
       chunk << "  sleep(" << urNumber(std::abs(de) / o.retractionRate) << ")\n";
       previousRate = 0;
     }
@@ -112,7 +122,8 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
       const double lb = (tcp[i + 1].translation() - tcp[i].translation()).norm();
       blend = std::min(o.maxBlend, o.blendFraction * std::min(la, lb));
     }
-    chunk << "  movel(" << poseLiteral(tcp[i]) << ", t=" << urNumber(time[i]) << ", r=" << urNumber(blend) << ")\n";
+    chunk << "  movel(" << poseLiteral(tcp[i]) << ", t=" << urNumber(time[i])
+          << ", r=" << urNumber(blend) << ")\n";
     ++stats.moves;
   }
   chunks.push_back(chunk.str());
@@ -121,21 +132,26 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
   std::string body;
   auto flush = [&]() {
     std::ostringstream head;
-    head << "def " << o.programName << (file > 0 ? "_" + std::to_string(file) : std::string()) << "():\n";
-    head << "  # GeoLattice multi-axis print, program " << file + 1 << "; the robot holds the part under a fixed nozzle\n";
+    head << "def " << o.programName << (file > 0 ? "_" + std::to_string(file) : std::string())
+         << "():\n";
+    head << "  # GeoLattice multi-axis print, program " << file + 1
+         << "; the robot holds the part under a fixed nozzle\n";
     head << "  set_tcp(" << poseLiteral(cell.partOnFlange) << ")\n";
-    head << "  # analog out 0 drives the extruder: level 0..1 (0-10 V) = 0-" << urNumber(o.maxFilamentRate) << " mm/s of filament\n";
+    head << "  # analog out 0 drives the extruder: level 0..1 (0-10 V) = 0-"
+         << urNumber(o.maxFilamentRate) << " mm/s of filament\n";
     head << "  set_standard_analog_out(0, 0)\n";
     if (file == 0) {
       head << "  movej([";
-      for (int j = 0; j < 6; ++j) head << urNumber(rp.joints[0][j]) << (j < 5 ? ", " : "]");
+      for (int j = 0; j < 6; ++j)
+        head << urNumber(rp.joints[0][j]) << (j < 5 ? ", " : "]");
       head << ", a=0.5, v=0.2)\n";
     }
     const std::string text = head.str() + body + "  set_standard_analog_out(0, 0)\nend\n";
     openFile(file) << text;
     std::istringstream lines(text);
     std::string line;
-    while (std::getline(lines, line)) stats.maxLineLength = std::max(stats.maxLineLength, line.size());
+    while (std::getline(lines, line))
+      stats.maxLineLength = std::max(stats.maxLineLength, line.size());
     body.clear();
     ++file;
   };
@@ -143,8 +159,8 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
   for (const std::string& c : chunks) {
     if (c.size() + kFrame > o.maxFileBytes) {
       std::ostringstream m;
-      m << "URScript: one print run between air moves needs " << c.size() << " bytes, more than the file size limit "
-        << o.maxFileBytes << "; raise the limit";
+      m << "URScript: one print run between air moves needs " << c.size()
+        << " bytes, more than the file size limit " << o.maxFileBytes << "; raise the limit";
       throw GeoLatticeError(m.str());
     }
     if (!body.empty() && body.size() + c.size() + kFrame > o.maxFileBytes) {
@@ -157,4 +173,4 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
   return stats;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -27,12 +27,12 @@
 namespace geolattice {
 
 struct URScriptOptions {
-  double maxBlend = 0.0005;          ///< m
-  double blendFraction = 0.4;        ///< of the shorter neighbouring segment
-  double speedFactor = 0.5;          ///< fraction of the joint speed limits used
-  double maxFilamentRate = 5.0;      ///< mm/s of filament at 10 V
-  double retractionRate = 20.0;      ///< mm/s of filament while retracting / priming
-  size_t maxFileBytes = 4'000'000;   ///< split programs below this size (at air moves)
+  double maxBlend = 0.0005;         ///< m
+  double blendFraction = 0.4;       ///< of the shorter neighbouring segment
+  double speedFactor = 0.5;         ///< fraction of the joint speed limits used
+  double maxFilamentRate = 5.0;     ///< mm/s of filament at 10 V
+  double retractionRate = 20.0;     ///< mm/s of filament while retracting / priming
+  size_t maxFileBytes = 4'000'000;  ///< split programs below this size (at air moves)
   std::string programName = "print_part";
 };
 
@@ -47,17 +47,18 @@ struct ProgramInput {
 struct ProgramStats {
   size_t files = 0;
   size_t moves = 0;
-  double maxJointSpeedDegS = 0;   ///< with the computed segment times
-  double duration = 0;            ///< s, sum of segment times
+  double maxJointSpeedDegS = 0;  ///< with the computed segment times
+  double duration = 0;           ///< s, sum of segment times
   size_t maxLineLength = 0;
 };
 
 /// Writes the programs; openFile(k) returns the stream for program file k (0, 1, …). Throws
 /// GeoLatticeError for mismatched sizes, an empty path or bad options.
-ProgramStats writeURScript(const RobotCell& cell, const RobotPath& robotPath, const ProgramInput& input,
-                           const URScriptOptions& options, const std::function<std::ostream&(size_t)>& openFile);
+ProgramStats writeURScript(const RobotCell& cell, const RobotPath& robotPath,
+                           const ProgramInput& input, const URScriptOptions& options,
+                           const std::function<std::ostream&(size_t)>& openFile);
 
 /// The number formatted with at most 6 decimals, no trailing zeros, no "-0".
 std::string urNumber(double v);
 
-} // namespace geolattice
+}  // namespace geolattice

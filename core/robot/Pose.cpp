@@ -42,8 +42,12 @@ UrPose toUrPose(const Isometry& t) {
   return {t.translation().x(), t.translation().y(), t.translation().z(), rv.x(), rv.y(), rv.z()};
 }
 
-UrPose poseTrans(const UrPose& from, const UrPose& fromTo) { return toUrPose(toIsometry(from) * toIsometry(fromTo)); }
+UrPose poseTrans(const UrPose& from, const UrPose& fromTo) {
+  return toUrPose(toIsometry(from) * toIsometry(fromTo));
+}
 
-UrPose poseInv(const UrPose& p) { return toUrPose(toIsometry(p).inverse()); }
+UrPose poseInv(const UrPose& p) {
+  return toUrPose(toIsometry(p).inverse());
+}
 
-} // namespace geolattice
+}  // namespace geolattice

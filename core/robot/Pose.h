@@ -26,4 +26,4 @@ UrPose poseTrans(const UrPose& from, const UrPose& fromTo);
 /// URScript pose_inv(p).
 UrPose poseInv(const UrPose& p);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -19,7 +19,7 @@ namespace geolattice {
 struct RobotCell {
   RobotModel robot = ur5Model();
   Eigen::Vector3d nozzleTip = Eigen::Vector3d(0.0, -0.40, 0.30);  ///< m, base frame
-  Eigen::Vector3d nozzleAxis = Eigen::Vector3d(0, 0, 1);          ///< from the tip into the nozzle (unit)
+  Eigen::Vector3d nozzleAxis = Eigen::Vector3d(0, 0, 1);  ///< from the tip into the nozzle (unit)
   /// Part (platform) frame in the flange frame: the platform plate 40 mm in front of the
   /// flange, part z along the flange z.
   Isometry partOnFlange = Isometry(Eigen::Translation3d(0, 0, 0.04));
@@ -32,4 +32,4 @@ struct RobotCell {
   Isometry flangePose(const Eigen::Vector3d& p, const Eigen::Vector3d& n, double psi) const;
 };
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -16,7 +16,8 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 bool withinLimits(const RobotModel& r, const JointVector& q) {
   for (int i = 0; i < 6; ++i) {
-    if (q[i] < r.lowerLimit[i] || q[i] > r.upperLimit[i]) return false;
+    if (q[i] < r.lowerLimit[i] || q[i] > r.upperLimit[i])
+      return false;
   }
   return true;
 }
@@ -25,18 +26,22 @@ bool withinLimits(const RobotModel& r, const JointVector& q) {
 JointVector unwrapNear(const RobotModel& r, JointVector q, const JointVector& near) {
   for (int i = 0; i < 6; ++i) {
     double v = near[i] + std::remainder(q[i] - near[i], 2 * M_PI);
-    if (v > r.upperLimit[i]) v -= 2 * M_PI;
-    if (v < r.lowerLimit[i]) v += 2 * M_PI;
+    if (v > r.upperLimit[i])
+      v -= 2 * M_PI;
+    if (v < r.lowerLimit[i])
+      v += 2 * M_PI;
     q[i] = v;
   }
   return q;
 }
 
-double singularityPenalty(const RobotModel& r, const JointVector& q, const Isometry& flange, double margin) {
+double singularityPenalty(const RobotModel& r, const JointVector& q, const Isometry& flange,
+                          double margin) {
   const SingularityDistance s = singularityDistance(r, q, flange);
   double p = 0;
   for (double d : {s.shoulder, s.elbow, s.wrist}) {
-    if (d < margin) p += (margin - d) / margin * 10.0;  // up to 10 rad-equivalents per singularity
+    if (d < margin)
+      p += (margin - d) / margin * 10.0;  // up to 10 rad-equivalents per singularity
   }
   return p;
 }
@@ -50,8 +55,8 @@ struct CoarsePlan {
 /// Dynamic programming over the ψ grid at the coarse samples, for every branch that reaches a
 /// subsample of them; the cheapest branch wins (module comment). branch -1: none reaches.
 CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
-                      const std::vector<Eigen::Vector3d>& normals, const std::vector<size_t>& coarse,
-                      const RobotPathOptions& o) {
+                      const std::vector<Eigen::Vector3d>& normals,
+                      const std::vector<size_t>& coarse, const RobotPathOptions& o) {
   const RobotModel& robot = cell.robot;
   const int P = o.psiSamples;
   const double dpsi = 2 * M_PI / P;
@@ -71,11 +76,13 @@ CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>&
       bool any = false;
       for (int k = 0; k < P && !any; k += 3) {
         JointVector qq;
-        any = inverseKinematicsBranch(robot, flange[s * P + k], branch, qq) && withinLimits(robot, qq);
+        any = inverseKinematicsBranch(robot, flange[s * P + k], branch, qq) &&
+              withinLimits(robot, qq);
       }
       reaches = any;
     }
-    if (reaches) branches.push_back(branch);
+    if (reaches)
+      branches.push_back(branch);
   }
   CoarsePlan best;
   double bestCost = kInf;
@@ -89,7 +96,8 @@ CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>&
       for (int k = 0; k < P; ++k) {
         const size_t id = s * P + k;
         ok[id] = inverseKinematicsBranch(robot, flange[id], branch, q[id]);
-        penalty[id] = ok[id] ? singularityPenalty(robot, q[id], flange[id], o.singularityMargin) : kInf;
+        penalty[id] =
+            ok[id] ? singularityPenalty(robot, q[id], flange[id], o.singularityMargin) : kInf;
       }
     }
     for (int k = 0; k < P; ++k) {
@@ -102,11 +110,13 @@ CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>&
         const size_t id = s * P + k;
         cost[id] = kInf;
         from[id] = -1;
-        if (!ok[id]) continue;
+        if (!ok[id])
+          continue;
         for (int dk = -o.maxPsiStep; dk <= o.maxPsiStep; ++dk) {
           const int j = ((k + dk) % P + P) % P;
           const size_t pid = (s - 1) * P + j;
-          if (!std::isfinite(cost[pid])) continue;
+          if (!std::isfinite(cost[pid]))
+            continue;
           // The joints as the robot reaches them along this path (turns add up, no ±2π
           // folding): a path that would wind a joint past its limit is infeasible, since the
           // fine pass could only get back by a full turn between two points.
@@ -117,9 +127,11 @@ CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>&
             const double d = std::remainder(q[id][a] - wound[pid][a], 2 * M_PI);
             reached[a] = wound[pid][a] + d;
             step = std::max(step, std::abs(d));
-            inside = inside && reached[a] >= robot.lowerLimit[a] && reached[a] <= robot.upperLimit[a];
+            inside =
+                inside && reached[a] >= robot.lowerLimit[a] && reached[a] <= robot.upperLimit[a];
           }
-          if (!inside) continue;
+          if (!inside)
+            continue;
           const double c = cost[pid] + step + penalty[id];
           if (c < cost[id]) {
             cost[id] = c;
@@ -131,7 +143,9 @@ CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>&
     }
     int end = -1;
     for (int k = 0; k < P; ++k) {
-      if (std::isfinite(cost[(S - 1) * P + k]) && (end < 0 || cost[(S - 1) * P + k] < cost[(S - 1) * P + end])) end = k;
+      if (std::isfinite(cost[(S - 1) * P + k]) &&
+          (end < 0 || cost[(S - 1) * P + k] < cost[(S - 1) * P + end]))
+        end = k;
     }
     if (end >= 0 && cost[(S - 1) * P + end] < bestCost) {
       bestCost = cost[(S - 1) * P + end];
@@ -164,7 +178,8 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
   bool havePrevious = false;
   size_t seg = 0;
   for (size_t i = 0; i < N; ++i) {
-    while (seg + 1 < S - 1 && coarse[seg + 1] <= i) ++seg;
+    while (seg + 1 < S - 1 && coarse[seg + 1] <= i)
+      ++seg;
     const size_t a = coarse[seg], b = coarse[std::min(seg + 1, S - 1)];
     double pa = plan.psi[seg] * dpsi, pb = plan.psi[std::min(seg + 1, S - 1)] * dpsi;
     pb = pa + std::remainder(pb - pa, 2 * M_PI);
@@ -172,7 +187,8 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
     double psi = (1 - t) * pa + t * pb;
     JointVector qi;
     Isometry f = cell.flangePose(points[i], normals[i], psi);
-    bool found = inverseKinematicsBranch(robot, f, plan.branch, qi, havePrevious ? previous[5] : 0.0);
+    bool found =
+        inverseKinematicsBranch(robot, f, plan.branch, qi, havePrevious ? previous[5] : 0.0);
     for (int retry = 1; !found && retry <= 3; ++retry) {
       for (double sign : {1.0, -1.0}) {
         const double p2 = psi + sign * retry * dpsi;
@@ -194,16 +210,19 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
       const SingularityDistance sd = singularityDistance(robot, qi, f);
       // Independent check of the emitted joints: forward kinematics puts p at the tip, n along the nozzle.
       const Isometry part = forwardKinematics(robot, qi) * cell.partOnFlange;
-      path.maxTipError = std::max(path.maxTipError, (part * (cell.partScale * points[i]) - cell.nozzleTip).norm());
+      path.maxTipError =
+          std::max(path.maxTipError, (part * (cell.partScale * points[i]) - cell.nozzleTip).norm());
       const double c = (part.linear() * normals[i].normalized()).dot(cell.nozzleAxis);
-      path.maxAxisErrorDeg = std::max(path.maxAxisErrorDeg, std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI);
+      path.maxAxisErrorDeg =
+          std::max(path.maxAxisErrorDeg, std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI);
       path.minSingularity.shoulder = std::min(path.minSingularity.shoulder, sd.shoulder);
       path.minSingularity.elbow = std::min(path.minSingularity.elbow, sd.elbow);
       path.minSingularity.wrist = std::min(path.minSingularity.wrist, sd.wrist);
     }
     if (havePrevious) {
       double step = 0;
-      for (int j = 0; j < 6; ++j) step = std::max(step, std::abs(qi[j] - previous[j]));
+      for (int j = 0; j < 6; ++j)
+        step = std::max(step, std::abs(qi[j] - previous[j]));
       if (step * 180.0 / M_PI > path.maxJointStepDeg) {
         path.maxJointStepDeg = step * 180.0 / M_PI;
         path.maxJointStepAt = static_cast<int>(i);
@@ -220,7 +239,7 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
   return path;
 }
 
-} // namespace
+}  // namespace
 
 RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                          const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o) {
@@ -242,20 +261,24 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
   }
   if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2 || !(o.maxJointStepDeg > 0) ||
       o.refinements < 0) {
-    throw GeoLatticeError("robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2, "
-                          "max joint step > 0, refinements >= 0)");
+    throw GeoLatticeError(
+        "robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2, "
+        "max joint step > 0, refinements >= 0)");
   }
   const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
   std::vector<size_t> coarse;
-  for (size_t i = 0; i < N; i += stride) coarse.push_back(i);
-  if (coarse.back() != N - 1) coarse.push_back(N - 1);
+  for (size_t i = 0; i < N; i += stride)
+    coarse.push_back(i);
+  if (coarse.back() != N - 1)
+    coarse.push_back(N - 1);
 
   RobotPath path;
   for (int pass = 0;; ++pass) {
     const CoarsePlan plan = planCoarse(cell, points, normals, coarse, o);
     if (plan.branch < 0) {
       throw GeoLatticeError(
-          "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously (check the nozzle "
+          "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously "
+          "(check the nozzle "
           "position, the part-on-flange transform and the part size)");
     }
     path = solveFine(cell, points, normals, coarse, plan, o);
@@ -272,7 +295,8 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
       const auto hi = std::upper_bound(coarse.begin(), coarse.end(), static_cast<size_t>(i));
       const size_t from = hi == coarse.begin() ? 0 : *(hi - 1);
       const size_t to = hi == coarse.end() ? N - 1 : *hi;
-      for (size_t j = from; j <= to; j += fine) added.push_back(j);
+      for (size_t j = from; j <= to; j += fine)
+        added.push_back(j);
       added.push_back(static_cast<size_t>(i - 1));
       added.push_back(static_cast<size_t>(i));
     }
@@ -285,13 +309,15 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
   return path;
 }
 
-double jointSpeedRatio(const RobotCell& cell, const RobotPath& path, const std::vector<Eigen::Vector3d>& points,
+double jointSpeedRatio(const RobotCell& cell, const RobotPath& path,
+                       const std::vector<Eigen::Vector3d>& points,
                        const std::vector<double>& feedRate, double& maxSpeedDegS) {
   double ratio = 0;
   maxSpeedDegS = 0;
   for (size_t i = 1; i < path.joints.size() && i < points.size() && i < feedRate.size(); ++i) {
     const double len = (points[i] - points[i - 1]).norm();
-    if (!(feedRate[i] > 0) || len == 0) continue;
+    if (!(feedRate[i] > 0) || len == 0)
+      continue;
     const double dt = len / feedRate[i];
     for (int j = 0; j < 6; ++j) {
       const double speed = std::abs(path.joints[i][j] - path.joints[i - 1][j]) / dt;
@@ -302,4 +328,4 @@ double jointSpeedRatio(const RobotCell& cell, const RobotPath& path, const std::
   return ratio;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

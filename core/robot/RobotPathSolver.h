@@ -28,27 +28,30 @@
 namespace geolattice {
 
 struct RobotPathOptions {
-  int psiSamples = 72;            ///< grid of ψ over 2π (5° steps)
-  int maxPsiStep = 2;             ///< grid cells ψ may move between coarse samples
-  int coarseSamples = 500;        ///< about this many coarse samples
-  double singularityMargin = 0.05;  ///< below this (|sin θ5|, |sin θ3|, shoulder distance in m) a penalty applies
-  double maxJointStepDeg = 20.0;  ///< a larger step of any joint between consecutive points triggers refinement
-  int refinements = 3;            ///< passes that densify the coarse samples around such steps
+  int psiSamples = 72;      ///< grid of ψ over 2π (5° steps)
+  int maxPsiStep = 2;       ///< grid cells ψ may move between coarse samples
+  int coarseSamples = 500;  ///< about this many coarse samples
+  double singularityMargin =
+      0.05;  ///< below this (|sin θ5|, |sin θ3|, shoulder distance in m) a penalty applies
+  double maxJointStepDeg =
+      20.0;  ///< a larger step of any joint between consecutive points triggers refinement
+  int refinements = 3;  ///< passes that densify the coarse samples around such steps
 };
 
 struct RobotPath {
-  std::vector<JointVector> joints;   ///< per point, continuous (unwrapped)
-  std::vector<double> psi;           ///< per point (rad)
-  std::vector<int> unreachable;      ///< point indices without a valid IK solution
-  int branch = -1;                   ///< IK branch used (inverseKinematicsBranch)
-  double maxJointStepDeg = 0;        ///< largest change of any joint between consecutive points
-  int maxJointStepAt = -1;           ///< the point where it happens (the step from the point before)
-  std::vector<int> largeSteps;       ///< points reached by a step above RobotPathOptions::maxJointStepDeg
-  int coarseSamples = 0;             ///< coarse samples after refinement
-  int refinements = 0;               ///< refinement passes used
+  std::vector<JointVector> joints;  ///< per point, continuous (unwrapped)
+  std::vector<double> psi;          ///< per point (rad)
+  std::vector<int> unreachable;     ///< point indices without a valid IK solution
+  int branch = -1;                  ///< IK branch used (inverseKinematicsBranch)
+  double maxJointStepDeg = 0;       ///< largest change of any joint between consecutive points
+  int maxJointStepAt = -1;          ///< the point where it happens (the step from the point before)
+  std::vector<int>
+      largeSteps;         ///< points reached by a step above RobotPathOptions::maxJointStepDeg
+  int coarseSamples = 0;  ///< coarse samples after refinement
+  int refinements = 0;    ///< refinement passes used
   SingularityDistance minSingularity;  ///< smallest distances along the path
-  double maxTipError = 0;            ///< m: |FK(q)·partOnFlange·p − nozzle tip| over reachable points
-  double maxAxisErrorDeg = 0;        ///< angle between the placed axis n and the nozzle axis
+  double maxTipError = 0;      ///< m: |FK(q)·partOnFlange·p − nozzle tip| over reachable points
+  double maxAxisErrorDeg = 0;  ///< angle between the placed axis n and the nozzle axis
   double seconds = 0;
 };
 
@@ -56,12 +59,14 @@ struct RobotPath {
 /// zero normals, a bad cell, or a cell in which no branch reaches the coarse path at all
 /// ("unreachable cell set-up").
 RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
-                         const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& options = {});
+                         const std::vector<Eigen::Vector3d>& normals,
+                         const RobotPathOptions& options = {});
 
 /// Largest per-joint speed ratio |Δq| / (Δt · maxSpeed) over consecutive points, with Δt from
 /// segment lengths (part units · scale) and feed rates (part units/s); ≤ 1 means within limits.
 /// Also returns the largest joint speed in deg/s through maxSpeedDegS.
-double jointSpeedRatio(const RobotCell& cell, const RobotPath& path, const std::vector<Eigen::Vector3d>& points,
+double jointSpeedRatio(const RobotCell& cell, const RobotPath& path,
+                       const std::vector<Eigen::Vector3d>& points,
                        const std::vector<double>& feedRate, double& maxSpeedDegS);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -11,7 +11,8 @@ namespace {
 
 Isometry dhTransform(double theta, double d, double a, double alpha) {
   Isometry t = Isometry::Identity();
-  const double ct = std::cos(theta), st = std::sin(theta), ca = std::cos(alpha), sa = std::sin(alpha);
+  const double ct = std::cos(theta), st = std::sin(theta), ca = std::cos(alpha),
+               sa = std::sin(alpha);
   t.matrix() << ct, -st * ca, st * sa, a * ct,  //
       st, ct * ca, -ct * sa, a * st,            //
       0, sa, ca, d,                             //
@@ -24,8 +25,8 @@ double wrapAngle(double x) {
   return x <= -M_PI ? x + 2.0 * M_PI : x;
 }
 
-RobotModel makeModel(const char* name, double d1, double a2, double a3, double d4, double d5, double d6,
-                     double reach) {
+RobotModel makeModel(const char* name, double d1, double a2, double a3, double d4, double d5,
+                     double d6, double reach) {
   RobotModel r;
   r.name = name;
   r.d = {d1, 0, 0, d4, d5, d6};
@@ -38,15 +39,21 @@ RobotModel makeModel(const char* name, double d1, double a2, double a3, double d
   return r;
 }
 
-} // namespace
+}  // namespace
 
-RobotModel ur5Model() { return makeModel("ur5", 0.089159, -0.425, -0.39225, 0.10915, 0.09465, 0.0823, 0.85); }
+RobotModel ur5Model() {
+  return makeModel("ur5", 0.089159, -0.425, -0.39225, 0.10915, 0.09465, 0.0823, 0.85);
+}
 
-RobotModel ur5eModel() { return makeModel("ur5e", 0.1625, -0.425, -0.3922, 0.1333, 0.0997, 0.0996, 0.85); }
+RobotModel ur5eModel() {
+  return makeModel("ur5e", 0.1625, -0.425, -0.3922, 0.1333, 0.0997, 0.0996, 0.85);
+}
 
 RobotModel robotModelByName(const std::string& name) {
-  if (name == "ur5") return ur5Model();
-  if (name == "ur5e") return ur5eModel();
+  if (name == "ur5")
+    return ur5Model();
+  if (name == "ur5e")
+    return ur5eModel();
   throw GeoLatticeError("unknown robot '" + name + "' (expected ur5 or ur5e)");
 }
 
@@ -58,8 +65,8 @@ Isometry forwardKinematics(const RobotModel& r, const JointVector& q) {
   return t;
 }
 
-bool inverseKinematicsBranch(const RobotModel& r, const Isometry& flange, int branch, JointVector& q,
-                             double wristFreeAngle) {
+bool inverseKinematicsBranch(const RobotModel& r, const Isometry& flange, int branch,
+                             JointVector& q, double wristFreeAngle) {
   const int shoulder = (branch >> 2) & 1, wrist = (branch >> 1) & 1, elbow = branch & 1;
   const double d1 = r.d[0], a2 = r.a[1], a3 = r.a[2], d4 = r.d[3], d5 = r.d[4], d6 = r.d[5];
   const Eigen::Vector3d p06 = flange.translation();
@@ -93,15 +100,18 @@ bool inverseKinematicsBranch(const RobotModel& r, const Isometry& flange, int br
     return false;
   }
   const double theta3 = (elbow == 0 ? 1.0 : -1.0) * std::acos(std::clamp(c3, -1.0, 1.0));
-  const double theta2 = std::atan2(y, x) - std::atan2(a3 * std::sin(theta3), a2 + a3 * std::cos(theta3));
+  const double theta2 =
+      std::atan2(y, x) - std::atan2(a3 * std::sin(theta3), a2 + a3 * std::cos(theta3));
   // R14 = Rz(θ2 + θ3 + θ4) Rx(π/2): the total angle from its first column.
   const Eigen::Matrix3d r14 = t14.linear();
   const double theta4 = std::atan2(r14(1, 0), r14(0, 0)) - theta2 - theta3;
-  q = {wrapAngle(theta1), wrapAngle(theta2), wrapAngle(theta3), wrapAngle(theta4), wrapAngle(theta5), wrapAngle(theta6)};
+  q = {wrapAngle(theta1), wrapAngle(theta2), wrapAngle(theta3),
+       wrapAngle(theta4), wrapAngle(theta5), wrapAngle(theta6)};
   return true;
 }
 
-std::vector<JointVector> inverseKinematics(const RobotModel& r, const Isometry& flange, double wristFreeAngle) {
+std::vector<JointVector> inverseKinematics(const RobotModel& r, const Isometry& flange,
+                                           double wristFreeAngle) {
   std::vector<JointVector> out;
   for (int branch = 0; branch < 8; ++branch) {
     JointVector q;
@@ -112,7 +122,8 @@ std::vector<JointVector> inverseKinematics(const RobotModel& r, const Isometry& 
     bool duplicate = false;
     for (const JointVector& o : out) {
       double d = 0;
-      for (int i = 0; i < 6; ++i) d = std::max(d, std::abs(std::remainder(o[i] - q[i], 2 * M_PI)));
+      for (int i = 0; i < 6; ++i)
+        d = std::max(d, std::abs(std::remainder(o[i] - q[i], 2 * M_PI)));
       duplicate |= d < 1e-12;
     }
     if (!duplicate) {
@@ -126,7 +137,8 @@ SingularityDistance singularityDistance(const RobotModel& r, const JointVector& 
   return singularityDistance(r, q, forwardKinematics(r, q));
 }
 
-SingularityDistance singularityDistance(const RobotModel& r, const JointVector& q, const Isometry& t) {
+SingularityDistance singularityDistance(const RobotModel& r, const JointVector& q,
+                                        const Isometry& t) {
   const Eigen::Vector3d p05 = t.translation() - r.d[5] * t.linear().col(2);
   SingularityDistance s;
   s.shoulder = std::hypot(p05.x(), p05.y()) - std::abs(r.d[3]);
@@ -135,4 +147,4 @@ SingularityDistance singularityDistance(const RobotModel& r, const JointVector& 
   return s;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

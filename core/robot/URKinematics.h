@@ -26,14 +26,16 @@ using JointVector = std::array<double, 6>;  ///< radians
 
 struct RobotModel {
   std::string name;
-  std::array<double, 6> d{}, a{}, alpha{};   ///< DH (m, rad)
+  std::array<double, 6> d{}, a{}, alpha{};           ///< DH (m, rad)
   std::array<double, 6> lowerLimit{}, upperLimit{};  ///< rad
-  std::array<double, 6> maxSpeed{};          ///< rad/s
-  double reach = 0;                          ///< m, nominal
+  std::array<double, 6> maxSpeed{};                  ///< rad/s
+  double reach = 0;                                  ///< m, nominal
 };
 
-RobotModel ur5Model();   ///< UR5 CB3: d1 0.089159, a2 -0.425, a3 -0.39225, d4 0.10915, d5 0.09465, d6 0.0823; ±360°, 180°/s
-RobotModel ur5eModel();  ///< UR5e: d1 0.1625, a2 -0.425, a3 -0.3922, d4 0.1333, d5 0.0997, d6 0.0996; ±360°, 180°/s
+RobotModel
+ur5Model();  ///< UR5 CB3: d1 0.089159, a2 -0.425, a3 -0.39225, d4 0.10915, d5 0.09465, d6 0.0823; ±360°, 180°/s
+RobotModel
+ur5eModel();  ///< UR5e: d1 0.1625, a2 -0.425, a3 -0.3922, d4 0.1333, d5 0.0997, d6 0.0996; ±360°, 180°/s
 /// "ur5" or "ur5e"; throws GeoLatticeError otherwise.
 RobotModel robotModelByName(const std::string& name);
 
@@ -43,12 +45,13 @@ Isometry forwardKinematics(const RobotModel& robot, const JointVector& q);
 /// One IK branch: shoulder (0/1: θ1 = ψ + asin(d4/r) or ψ + π − asin(d4/r)), wrist (0/1:
 /// θ5 = +acos or −acos), elbow (0/1: θ3 = +acos or −acos); branch = 4·shoulder + 2·wrist + elbow.
 /// Returns false when that branch cannot reach the pose. Joints in (-π, π].
-bool inverseKinematicsBranch(const RobotModel& robot, const Isometry& flange, int branch, JointVector& q,
-                             double wristFreeAngle = 0.0);
+bool inverseKinematicsBranch(const RobotModel& robot, const Isometry& flange, int branch,
+                             JointVector& q, double wristFreeAngle = 0.0);
 
 /// All real solutions for the flange pose (0 to 8), each joint in (-π, π]. wristFreeAngle is
 /// used for θ6 at the wrist singularity. Unreachable poses give an empty list.
-std::vector<JointVector> inverseKinematics(const RobotModel& robot, const Isometry& flange, double wristFreeAngle = 0.0);
+std::vector<JointVector> inverseKinematics(const RobotModel& robot, const Isometry& flange,
+                                           double wristFreeAngle = 0.0);
 
 /// Distances to the singularities at q (0 = singular): shoulder = distance of the wrist centre
 /// from the cylinder of radius d4 about the base axis (m), elbow = |sin θ3|, wrist = |sin θ5|.
@@ -57,6 +60,7 @@ struct SingularityDistance {
 };
 SingularityDistance singularityDistance(const RobotModel& robot, const JointVector& q);
 /// Same, when the flange pose of q is already known (no forward kinematics).
-SingularityDistance singularityDistance(const RobotModel& robot, const JointVector& q, const Isometry& flange);
+SingularityDistance singularityDistance(const RobotModel& robot, const JointVector& q,
+                                        const Isometry& flange);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -47,4 +47,4 @@ double NozzleModel::reach() const {
   return std::numeric_limits<double>::infinity();
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -24,11 +24,11 @@
 namespace geolattice {
 
 struct NozzleModel {
-  double halfAngleDeg = 45.0;   ///< NA, in (0, 90) degrees
+  double halfAngleDeg = 45.0;                               ///< NA, in (0, 90) degrees
   double length = std::numeric_limits<double>::infinity();  ///< L (mm, > 0), ∞ = cone only
-  double holderRadius = 0.0;    ///< R (mm, >= 0), used when length is finite; 0 = no holder
-  double tipClearance = 0.1;    ///< material with h <= this is ignored (mm, >= 0)
-  double tipFaceRadius = 0.5;   ///< material within this distance of the tip is ignored (mm, >= 0)
+  double holderRadius = 0.0;   ///< R (mm, >= 0), used when length is finite; 0 = no holder
+  double tipClearance = 0.1;   ///< material with h <= this is ignored (mm, >= 0)
+  double tipFaceRadius = 0.5;  ///< material within this distance of the tip is ignored (mm, >= 0)
 
   /// Throws GeoLatticeError naming the bad parameter.
   void validate() const;
@@ -45,14 +45,16 @@ struct NozzleModel {
 /// toolpath's axis clearance so that all three judge the same volume.
 struct NozzleVolume {
   explicit NozzleVolume(const NozzleModel& m)
-    : cos2(std::cos(m.halfAngleDeg * M_PI / 180.0) * std::cos(m.halfAngleDeg * M_PI / 180.0)),
-      length(m.length), holder2(m.holderRadius * m.holderRadius), clearance(m.tipClearance),
-      face2(m.tipFaceRadius * m.tipFaceRadius) {}
+      : cos2(std::cos(m.halfAngleDeg * M_PI / 180.0) * std::cos(m.halfAngleDeg * M_PI / 180.0)),
+        length(m.length),
+        holder2(m.holderRadius * m.holderRadius),
+        clearance(m.tipClearance),
+        face2(m.tipFaceRadius * m.tipFaceRadius) {}
 
   /// Is x inside the nozzle with its tip at p and unit axis n? Sets height (along n) and radial
   /// distance when it is.
-  bool contains(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const Eigen::Vector3d& x, double* height = nullptr,
-                double* radial = nullptr) const {
+  bool contains(const Eigen::Vector3d& p, const Eigen::Vector3d& n, const Eigen::Vector3d& x,
+                double* height = nullptr, double* radial = nullptr) const {
     const Eigen::Vector3d d = x - p;
     const double h = d.dot(n);
     if (!(h > clearance)) {
@@ -76,4 +78,4 @@ struct NozzleVolume {
   double cos2, length, holder2, clearance, face2;
 };
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -35,7 +35,8 @@ constexpr int kLeafSize = 8;
 int buildNode(SampleTree& tree, const MaterialSamples& m, int begin, int end) {
   const int id = static_cast<int>(tree.nodes.size());
   tree.nodes.emplace_back();
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo, axisSum = Vec3::Zero();
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo,
+       axisSum = Vec3::Zero();
   for (int i = begin; i < end; ++i) {
     const int s = tree.order[i];
     lo = lo.cwiseMin(m.points[s]);
@@ -93,7 +94,7 @@ struct PairSearch {
   const MaterialSamples& m;
   const NozzleVolume& nozzle;
   double boundAngle;
-  double reach;  ///< nothing farther than this from a tip is inside the nozzle
+  double reach;      ///< nothing farther than this from a tip is inside the nozzle
   double clearance;  ///< material with h <= clearance is ignored
   long long leafTests = 0;
 
@@ -109,7 +110,8 @@ struct PairSearch {
       const Vec3 d = b.centre - a.centre;
       const double dn = d.norm();
       // Highest h = (x - p)·n over the clusters: the material lies below every tip plane.
-      const double hMax = d.dot(a.axis) + b.radius + (dn + b.radius) * 2 * std::sin(0.5 * std::min(a.spread, M_PI)) + a.radius;
+      const double hMax = d.dot(a.axis) + b.radius +
+                          (dn + b.radius) * 2 * std::sin(0.5 * std::min(a.spread, M_PI)) + a.radius;
       if (hMax <= clearance || dn > a.radius + b.radius + reach ||
           distanceToCone(d, a.axis, boundAngle + a.spread) > a.radius + b.radius) {
         continue;
@@ -140,9 +142,10 @@ struct PairSearch {
   }
 };
 
-} // namespace
+}  // namespace
 
-PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const NozzleModel& model, int threads) {
+PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const NozzleModel& model,
+                                               int threads) {
   PotentialCollisionOptions options;
   options.threads = threads;
   return computePotentialCollisions(m, model, options);
@@ -172,7 +175,9 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
 
   PotentialCollisions out;
   out.pcg.resize(K);
-  const int workers = std::max(1, std::min(K, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency())));
+  const int workers = std::max(
+      1,
+      std::min(K, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency())));
   std::atomic<int> next{0}, done{0};
   std::atomic<bool> stop{false};
   bool aborted = false;
@@ -225,4 +230,4 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
   return out;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -39,11 +39,12 @@ struct PotentialCollisionOptions {
 };
 
 /// Throws GeoLatticeError for a bad nozzle.
-PotentialCollisions computePotentialCollisions(const MaterialSamples& material, const NozzleModel& nozzle,
+PotentialCollisions computePotentialCollisions(const MaterialSamples& material,
+                                               const NozzleModel& nozzle,
                                                const PotentialCollisionOptions& options);
 
 /// threads: 0 = hardware concurrency. Throws GeoLatticeError for a bad nozzle.
-PotentialCollisions computePotentialCollisions(const MaterialSamples& material, const NozzleModel& nozzle,
-                                               int threads = 0);
+PotentialCollisions computePotentialCollisions(const MaterialSamples& material,
+                                               const NozzleModel& nozzle, int threads = 0);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -15,7 +15,8 @@ MaterialSamples sampleLatticeMaterial(const LatticeGraph& g, double spacing) {
   }
   const size_t V = g.points.size(), E = g.edges.size(), K = g.subgraphs.size();
   if (g.normals.size() != V || g.vertexSubgraph.size() != V || g.edgeSubgraph.size() != E) {
-    throw GeoLatticeError("lattice arrays do not match its points and edges (normals, sub-graph ids)");
+    throw GeoLatticeError(
+        "lattice arrays do not match its points and edges (normals, sub-graph ids)");
   }
   // Count per sub-graph, then fill in place (samples grouped by sub-graph).
   std::vector<int> count(K + 1, 0);
@@ -78,4 +79,4 @@ MaterialSamples sampleLatticeMaterial(const LatticeGraph& g, double spacing) {
   return m;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -12,10 +12,10 @@ namespace geolattice {
 
 /// @brief Samples grouped by sub-graph: sub-graph s owns [offset[s], offset[s+1]).
 struct MaterialSamples {
-  std::vector<Vec3> points;     ///< #S positions (mm)
-  std::vector<Vec3> normals;    ///< #S unit nozzle axes (interpolated along edges)
-  std::vector<int> subgraph;    ///< #S sub-graph id
-  std::vector<int> offset;      ///< #subgraphs + 1
+  std::vector<Vec3> points;   ///< #S positions (mm)
+  std::vector<Vec3> normals;  ///< #S unit nozzle axes (interpolated along edges)
+  std::vector<int> subgraph;  ///< #S sub-graph id
+  std::vector<int> offset;    ///< #subgraphs + 1
 };
 
 /// Samples the lattice: each vertex once, and ceil(len / spacing) - 1 interior points on an edge
@@ -23,4 +23,4 @@ struct MaterialSamples {
 /// per-edge arrays do not match its points. Vertices without a sub-graph (-1) are skipped.
 MaterialSamples sampleLatticeMaterial(const LatticeGraph& lattice, double spacing);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -40,10 +40,10 @@ struct SequenceState {
   const MaterialSamples* material = nullptr;
   const PotentialCollisions* pcg = nullptr;
   std::vector<char> printed;
-  std::vector<int> lowerLeft;      ///< unprinted lower nodes
-  std::vector<int> blockedBy;      ///< unprinted nodes i != k with k in PCG(i)
-  std::vector<int> ready;          ///< unprinted nodes with lowerLeft == 0 (Criterion 1)
-  std::vector<int> readySince;     ///< per node: step at which it became ready (DPT)
+  std::vector<int> lowerLeft;   ///< unprinted lower nodes
+  std::vector<int> blockedBy;   ///< unprinted nodes i != k with k in PCG(i)
+  std::vector<int> ready;       ///< unprinted nodes with lowerLeft == 0 (Criterion 1)
+  std::vector<int> readySince;  ///< per node: step at which it became ready (DPT)
   std::vector<int> order;
   /// per node i: the PCG entries that count for Criterion 2 (shared by rollout copies)
   std::shared_ptr<std::vector<std::vector<int>>> blocks;
@@ -137,7 +137,8 @@ int upperOfCurrent(const SequenceState& s, bool needValid) {
   if (s.current < 0) {
     return -1;
   }
-  return nearestReady(s, [&](int k) { return isUpperOf(*s.tree, s.current, k) && (!needValid || s.valid(k)); });
+  return nearestReady(
+      s, [&](int k) { return isUpperOf(*s.tree, s.current, k) && (!needValid || s.valid(k)); });
 }
 
 /// One step of the paper's A4: upper node of the current one, else the nearest valid candidate;
@@ -168,7 +169,9 @@ void runLayerPriority(SequenceState& s, const ProgressReporter& progress) {
     // Stay in the lowest open layer; continue upwards without retraction when possible.
     int next = -1;
     if (s.current >= 0) {
-      next = nearestReady(s, [&](int k) { return s.tree->nodes[k].layer == lowest && isUpperOf(*s.tree, s.current, k); });
+      next = nearestReady(s, [&](int k) {
+        return s.tree->nodes[k].layer == lowest && isUpperOf(*s.tree, s.current, k);
+      });
     }
     if (next < 0) {
       next = nearestReady(s, [&](int k) { return s.tree->nodes[k].layer == lowest; });
@@ -207,7 +210,8 @@ double rolloutCost(const SequenceState& s, double retractionCost) {
   return s.forcedSteps * 1e12 + s.retractions * retractionCost + s.airLength;
 }
 
-void runRollout(SequenceState& s, const SequenceOptions& options, const ProgressReporter& progress) {
+void runRollout(SequenceState& s, const SequenceOptions& options,
+                const ProgressReporter& progress) {
   while (!s.done()) {
     progress.loop(s.order.size(), s.printed.size());
     if (upperOfCurrent(s, true) >= 0 || s.current < 0) {
@@ -243,22 +247,30 @@ void runRollout(SequenceState& s, const SequenceOptions& options, const Progress
   }
 }
 
-} // namespace
+}  // namespace
 
 SequenceStrategy parseSequenceStrategy(const std::string& name) {
-  if (name == "lpt") return SequenceStrategy::LayerPriority;
-  if (name == "dpt") return SequenceStrategy::DepthPriority;
-  if (name == "a4") return SequenceStrategy::Greedy;
-  if (name == "best") return SequenceStrategy::Rollout;
+  if (name == "lpt")
+    return SequenceStrategy::LayerPriority;
+  if (name == "dpt")
+    return SequenceStrategy::DepthPriority;
+  if (name == "a4")
+    return SequenceStrategy::Greedy;
+  if (name == "best")
+    return SequenceStrategy::Rollout;
   throw GeoLatticeError("unknown sequence strategy '" + name + "' (expected lpt, dpt, a4 or best)");
 }
 
 const char* sequenceStrategyName(SequenceStrategy strategy) {
   switch (strategy) {
-  case SequenceStrategy::LayerPriority: return "lpt";
-  case SequenceStrategy::DepthPriority: return "dpt";
-  case SequenceStrategy::Greedy: return "a4";
-  case SequenceStrategy::Rollout: return "best";
+    case SequenceStrategy::LayerPriority:
+      return "lpt";
+    case SequenceStrategy::DepthPriority:
+      return "dpt";
+    case SequenceStrategy::Greedy:
+      return "a4";
+    case SequenceStrategy::Rollout:
+      return "best";
   }
   return "?";
 }
@@ -294,13 +306,14 @@ void evaluateSequence(const SkeletonTree& tree, const MaterialSamples& m, PrintS
   }
 }
 
-PrintSequence sequencePrint(const SkeletonTree& tree, const MaterialSamples& m, const PotentialCollisions* pcg,
-                            const SequenceOptions& options) {
+PrintSequence sequencePrint(const SkeletonTree& tree, const MaterialSamples& m,
+                            const PotentialCollisions* pcg, const SequenceOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   validateSkeletonTree(tree);
   const int K = static_cast<int>(tree.nodes.size());
   if (static_cast<int>(m.offset.size()) != K + 1) {
-    throw GeoLatticeError("print sequencer: the material samples do not match the skeleton (one group per node)");
+    throw GeoLatticeError(
+        "print sequencer: the material samples do not match the skeleton (one group per node)");
   }
   for (int k = 0; k < K; ++k) {
     if (m.offset[k + 1] <= m.offset[k]) {
@@ -309,12 +322,16 @@ PrintSequence sequencePrint(const SkeletonTree& tree, const MaterialSamples& m, 
       throw GeoLatticeError(s.str());
     }
   }
-  const bool needsPcg = options.strategy == SequenceStrategy::Greedy || options.strategy == SequenceStrategy::Rollout;
+  const bool needsPcg =
+      options.strategy == SequenceStrategy::Greedy || options.strategy == SequenceStrategy::Rollout;
   if (needsPcg && (!pcg || static_cast<int>(pcg->pcg.size()) != K)) {
-    throw GeoLatticeError("print sequencer: the a4 and best strategies need the potential collision sub-graphs of every node");
+    throw GeoLatticeError(
+        "print sequencer: the a4 and best strategies need the potential collision sub-graphs of "
+        "every node");
   }
   if (options.rolloutCandidates < 1 || !(options.retractionCost >= 0)) {
-    throw GeoLatticeError("print sequencer: rollout candidates must be >= 1 and the retraction cost >= 0");
+    throw GeoLatticeError(
+        "print sequencer: rollout candidates must be >= 1 and the retraction cost >= 0");
   }
 
   const ProgressReporter progress(options.progress, options.shouldAbort, "print sequencing");
@@ -324,22 +341,28 @@ PrintSequence sequencePrint(const SkeletonTree& tree, const MaterialSamples& m, 
   PrintSequence seq;
   seq.strategy = options.strategy;
   switch (options.strategy) {
-  case SequenceStrategy::LayerPriority: runLayerPriority(state, progress); break;
-  case SequenceStrategy::DepthPriority: runDepthPriority(state, progress); break;
-  case SequenceStrategy::Greedy: runGreedy(state, &progress); break;
-  case SequenceStrategy::Rollout: {
-    // A4 first (fast), then the rollout, which tries candidates at every retraction.
-    SequenceState greedy = state;
-    const ProgressReporter greedyPart = progress.part(0.0, 0.05);
-    runGreedy(greedy, &greedyPart);
-    runRollout(state, options, progress.part(0.05, 1.0));
-    // Keep the improvement only where it is no worse on both counts.
-    if (state.forcedSteps > greedy.forcedSteps || state.retractions > greedy.retractions ||
-        state.airLength > greedy.airLength) {
-      state = greedy;
+    case SequenceStrategy::LayerPriority:
+      runLayerPriority(state, progress);
+      break;
+    case SequenceStrategy::DepthPriority:
+      runDepthPriority(state, progress);
+      break;
+    case SequenceStrategy::Greedy:
+      runGreedy(state, &progress);
+      break;
+    case SequenceStrategy::Rollout: {
+      // A4 first (fast), then the rollout, which tries candidates at every retraction.
+      SequenceState greedy = state;
+      const ProgressReporter greedyPart = progress.part(0.0, 0.05);
+      runGreedy(greedy, &greedyPart);
+      runRollout(state, options, progress.part(0.05, 1.0));
+      // Keep the improvement only where it is no worse on both counts.
+      if (state.forcedSteps > greedy.forcedSteps || state.retractions > greedy.retractions ||
+          state.airLength > greedy.airLength) {
+        state = greedy;
+      }
+      break;
     }
-    break;
-  }
   }
   seq.order = state.order;
   seq.forcedSteps = state.forcedSteps;
@@ -350,4 +373,4 @@ PrintSequence sequencePrint(const SkeletonTree& tree, const MaterialSamples& m, 
   return seq;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -45,8 +45,8 @@ const char* sequenceStrategyName(SequenceStrategy strategy);
 
 struct SequenceOptions {
   SequenceStrategy strategy = SequenceStrategy::Greedy;
-  int rolloutCandidates = 6;      ///< nearest candidates tried at each retraction (Rollout, >= 1)
-  double retractionCost = 20.0;   ///< mm of air move one retraction is worth (Rollout, >= 0)
+  int rolloutCandidates = 6;     ///< nearest candidates tried at each retraction (Rollout, >= 1)
+  double retractionCost = 20.0;  ///< mm of air move one retraction is worth (Rollout, >= 0)
   /// Called on the calling thread with the fraction of the order decided. Optional.
   std::function<void(double)> progress;
   /// Polled where progress is reported; true stops with a GeoLatticeError "print sequencing
@@ -61,8 +61,8 @@ struct PrintSequence {
   std::vector<Vec3> start, end;  ///< per position: first and last printed point (mm)
   std::vector<int> startSample;  ///< per position: material sample index of start
   int retractions = 0;
-  double airLength = 0;          ///< mm
-  int forcedSteps = 0;           ///< steps that violated Criterion 2 (no valid candidate)
+  double airLength = 0;            ///< mm
+  int forcedSteps = 0;             ///< steps that violated Criterion 2 (no valid candidate)
   long long unavoidablePairs = 0;  ///< PCG entries that are ancestors (ignored by Criterion 2)
   double seconds = 0;
 };
@@ -70,11 +70,12 @@ struct PrintSequence {
 /// Orders the nodes of `tree`. pcg is needed by Greedy and Rollout (may be null for LPT, DPT).
 /// Throws GeoLatticeError for an empty tree, material that does not match the tree, a missing
 /// PCG, bad options, or a tree that fails validateSkeletonTree.
-PrintSequence sequencePrint(const SkeletonTree& tree, const MaterialSamples& material, const PotentialCollisions* pcg,
-                            const SequenceOptions& options = {});
+PrintSequence sequencePrint(const SkeletonTree& tree, const MaterialSamples& material,
+                            const PotentialCollisions* pcg, const SequenceOptions& options = {});
 
 /// Recomputes start/end points, retractions and air length of a given order (as described
 /// above). Throws GeoLatticeError when order is not a permutation of the nodes.
-void evaluateSequence(const SkeletonTree& tree, const MaterialSamples& material, PrintSequence& sequence);
+void evaluateSequence(const SkeletonTree& tree, const MaterialSamples& material,
+                      PrintSequence& sequence);
 
-} // namespace geolattice
+}  // namespace geolattice

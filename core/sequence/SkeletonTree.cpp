@@ -17,7 +17,8 @@ namespace {
 /// Barycentric coordinates of x in tet t; the smallest one tells how far inside x is.
 double minBarycentric(const TetMesh& mesh, int t, const Vec3& x) {
   const auto& q = mesh.tets[t];
-  const Vec3 &a = mesh.points[q[0]], &b = mesh.points[q[1]], &c = mesh.points[q[2]], &d = mesh.points[q[3]];
+  const Vec3 &a = mesh.points[q[0]], &b = mesh.points[q[1]], &c = mesh.points[q[2]],
+             &d = mesh.points[q[3]];
   const double vol = signedTetVolume(a, b, c, d);
   if (vol == 0) {
     return -std::numeric_limits<double>::infinity();
@@ -27,10 +28,12 @@ double minBarycentric(const TetMesh& mesh, int t, const Vec3& x) {
   return std::min({l0, l1, l2, l3});
 }
 
-} // namespace
+}  // namespace
 
-SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma, const std::vector<double>& phi,
-                               const std::vector<SkeletonAnchor>& anchors, const SkeletonTreeOptions& options) {
+SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma,
+                               const std::vector<double>& phi,
+                               const std::vector<SkeletonAnchor>& anchors,
+                               const SkeletonTreeOptions& options) {
   const int T = static_cast<int>(mesh.tets.size());
   const int L = static_cast<int>(phi.size());
   const int K = static_cast<int>(anchors.size());
@@ -65,8 +68,13 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
     gmin[t] = std::min({gamma[q[0]], gamma[q[1]], gamma[q[2]], gamma[q[3]]});
     gmax[t] = std::max({gamma[q[0]], gamma[q[1]], gamma[q[2]], gamma[q[3]]});
     // first s with phi[s+1] >= gmin; last s with phi[s] <= gmax.
-    slabBegin[t] = L < 2 ? 0 : static_cast<int>(std::lower_bound(phi.begin() + 1, phi.end(), gmin[t]) - (phi.begin() + 1));
-    slabEnd[t] = L < 2 ? 0 : std::min(L - 1, static_cast<int>(std::upper_bound(phi.begin(), phi.end(), gmax[t]) - phi.begin()));
+    slabBegin[t] = L < 2 ? 0
+                         : static_cast<int>(std::lower_bound(phi.begin() + 1, phi.end(), gmin[t]) -
+                                            (phi.begin() + 1));
+    slabEnd[t] =
+        L < 2 ? 0
+              : std::min(L - 1, static_cast<int>(std::upper_bound(phi.begin(), phi.end(), gmax[t]) -
+                                                 phi.begin()));
     slabEnd[t] = std::max(slabEnd[t], slabBegin[t]);
     elementOffset[t + 1] = elementOffset[t] + (slabEnd[t] - slabBegin[t]);
   }
@@ -96,7 +104,8 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
           fmax = std::max(fmax, gamma[q[i]]);
         }
       }
-      for (int s = std::max(slabBegin[t], slabBegin[u]); s < std::min(slabEnd[t], slabEnd[u]); ++s) {
+      for (int s = std::max(slabBegin[t], slabBegin[u]); s < std::min(slabEnd[t], slabEnd[u]);
+           ++s) {
         if (fmin <= phi[s + 1] && fmax >= phi[s]) {
           pieces.unite(element(t, s), element(u, s));
         }
@@ -110,8 +119,10 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
   // that layer whose bounding box contains it, the one it is deepest inside.
   std::vector<int> layerTetOffset(L + 1, 0), layerTets;
   auto layerRange = [&](int t) {
-    const int lo = static_cast<int>(std::lower_bound(phi.begin(), phi.end(), gmin[t]) - phi.begin());
-    const int hi = static_cast<int>(std::upper_bound(phi.begin(), phi.end(), gmax[t]) - phi.begin());
+    const int lo =
+        static_cast<int>(std::lower_bound(phi.begin(), phi.end(), gmin[t]) - phi.begin());
+    const int hi =
+        static_cast<int>(std::upper_bound(phi.begin(), phi.end(), gmax[t]) - phi.begin());
     return std::make_pair(lo, hi);  // layers [lo, hi) have gmin <= phi <= gmax
   };
   for (int t = 0; t < T; ++t) {
@@ -161,7 +172,8 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
     if (anchorTet[k] < 0 || best < -1e-6) {
       std::ostringstream s;
       s << "skeleton tree: sub-graph " << k << " (layer " << anchors[k].layer
-        << ") lies in no tet of the mesh whose gamma range contains the layer value; are the lattice and the tet mesh"
+        << ") lies in no tet of the mesh whose gamma range contains the layer value; are the "
+           "lattice and the tet mesh"
            " from the same part?";
       throw GeoLatticeError(s.str());
     }
@@ -226,8 +238,8 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
   return tree;
 }
 
-SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma, const LatticeGraph& lattice,
-                               const SkeletonTreeOptions& options) {
+SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma,
+                               const LatticeGraph& lattice, const SkeletonTreeOptions& options) {
   const int K = static_cast<int>(lattice.subgraphs.size());
   if (K == 0) {
     throw GeoLatticeError("skeleton tree: the lattice has no sub-graph");
@@ -294,8 +306,9 @@ void validateSkeletonTree(const SkeletonTree& tree) {
     // Edges join consecutive layers upwards: then the graph is acyclic by construction.
     if (tree.nodes[e[1]].layer != tree.nodes[e[0]].layer + 1) {
       std::ostringstream s;
-      s << "skeleton tree: cyclic or missing adjacency: edge " << e[0] << " - " << e[1] << " joins layers "
-        << tree.nodes[e[0]].layer << " and " << tree.nodes[e[1]].layer << " (must be consecutive, lower first)";
+      s << "skeleton tree: cyclic or missing adjacency: edge " << e[0] << " - " << e[1]
+        << " joins layers " << tree.nodes[e[0]].layer << " and " << tree.nodes[e[1]].layer
+        << " (must be consecutive, lower first)";
       throw GeoLatticeError(s.str());
     }
     upper[e[0]].push_back(e[1]);
@@ -312,4 +325,4 @@ void validateSkeletonTree(const SkeletonTree& tree) {
   }
 }
 
-} // namespace geolattice
+}  // namespace geolattice

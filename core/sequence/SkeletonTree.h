@@ -30,12 +30,12 @@ namespace geolattice {
 
 /// @brief One node = one connected sub-graph G_{i,j}; node index == sub-graph id.
 struct SkeletonNode {
-  int layer = 0;            ///< lattice layer (0..L-1)
-  int indexInLayer = 0;     ///< j of G_{i,j}
+  int layer = 0;                 ///< lattice layer (0..L-1)
+  int indexInLayer = 0;          ///< j of G_{i,j}
   Vec3 centroid = Vec3::Zero();  ///< length-weighted centroid of the sub-graph (mm)
-  double length = 0;        ///< total edge length of the sub-graph (mm)
-  std::vector<int> lower;   ///< adjacent nodes on layer i-1 (printed before this one), ascending
-  std::vector<int> upper;   ///< adjacent nodes on layer i+1, ascending
+  double length = 0;             ///< total edge length of the sub-graph (mm)
+  std::vector<int> lower;  ///< adjacent nodes on layer i-1 (printed before this one), ascending
+  std::vector<int> upper;  ///< adjacent nodes on layer i+1, ascending
 };
 
 /// @brief The skeleton DAG. edges are (lower, upper) node pairs, sorted.
@@ -43,11 +43,11 @@ struct SkeletonTree {
   std::vector<SkeletonNode> nodes;
   std::vector<std::array<int, 2>> edges;
   std::vector<double> layerValues;  ///< φ_i of the lattice layers (mm)
-  int roots = 0;            ///< nodes without lower node
-  int floatingNodes = 0;    ///< roots above lattice layer 0 (their support was dropped)
-  int mergeNodes = 0;       ///< nodes with more than one lower node (branches merge)
-  int splitNodes = 0;       ///< nodes with more than one upper node (branches split)
-  int slabComponents = 0;   ///< connected slab pieces summed over all slabs
+  int roots = 0;                    ///< nodes without lower node
+  int floatingNodes = 0;            ///< roots above lattice layer 0 (their support was dropped)
+  int mergeNodes = 0;               ///< nodes with more than one lower node (branches merge)
+  int splitNodes = 0;               ///< nodes with more than one upper node (branches split)
+  int slabComponents = 0;           ///< connected slab pieces summed over all slabs
 };
 
 /// A point of one sub-graph and its layer, used to place the sub-graph in the tet mesh.
@@ -70,12 +70,15 @@ struct SkeletonTreeOptions {
 /// the nodes are left 0. Throws GeoLatticeError for empty input, sizes that do not match,
 /// layer values that are not strictly ascending, an anchor layer out of range, or an anchor
 /// that lies in no tet whose γ range contains its layer value.
-SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma, const std::vector<double>& layerValues,
-                               const std::vector<SkeletonAnchor>& anchors, const SkeletonTreeOptions& options = {});
+SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma,
+                               const std::vector<double>& layerValues,
+                               const std::vector<SkeletonAnchor>& anchors,
+                               const SkeletonTreeOptions& options = {});
 
 /// Same, with anchors, centroids and lengths taken from the lattice's sub-graphs. Throws
 /// GeoLatticeError also for a lattice without sub-graphs.
-SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma, const LatticeGraph& lattice,
+SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma,
+                               const LatticeGraph& lattice,
                                const SkeletonTreeOptions& options = {});
 
 /// @brief Transitive "must be printed before" relation of a skeleton: a is an ancestor of b
@@ -95,4 +98,4 @@ private:
 /// missing adjacency"). Used by the sequencer on trees that come from outside (VTK input).
 void validateSkeletonTree(const SkeletonTree& tree);
 
-} // namespace geolattice
+}  // namespace geolattice

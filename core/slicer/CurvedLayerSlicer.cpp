@@ -24,7 +24,8 @@ int localEdge(int i, int j) {
 }
 
 /// Gradient of the linear interpolant of f over tet (p0..p3).
-Vec3 linearGradient(const TetMesh& mesh, const std::array<int, 4>& t, const Eigen::VectorXd& f, double* volume) {
+Vec3 linearGradient(const TetMesh& mesh, const std::array<int, 4>& t, const Eigen::VectorXd& f,
+                    double* volume) {
   const Vec3& p0 = mesh.points[t[0]];
   Eigen::Matrix3d edges;
   edges.row(0) = (mesh.points[t[1]] - p0).transpose();
@@ -42,7 +43,8 @@ Vec3 linearGradient(const TetMesh& mesh, const std::array<int, 4>& t, const Eige
 }
 
 /// Unique edges of the mesh (a < b) and, per tet, the id of each of its six local edges.
-void uniqueEdges(const TetMesh& mesh, std::vector<std::array<int, 2>>& edges, std::vector<std::array<int, 6>>& tetEdges) {
+void uniqueEdges(const TetMesh& mesh, std::vector<std::array<int, 2>>& edges,
+                 std::vector<std::array<int, 6>>& tetEdges) {
   struct Rec {
     int a, b, slot;
   };
@@ -57,7 +59,8 @@ void uniqueEdges(const TetMesh& mesh, std::vector<std::array<int, 2>>& edges, st
       recs.push_back({a, b, static_cast<int>(6 * t + k)});
     }
   }
-  std::sort(recs.begin(), recs.end(), [](const Rec& x, const Rec& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+  std::sort(recs.begin(), recs.end(),
+            [](const Rec& x, const Rec& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
   tetEdges.resize(mesh.tets.size());
   edges.clear();
   for (size_t i = 0; i < recs.size(); ++i) {
@@ -69,13 +72,16 @@ void uniqueEdges(const TetMesh& mesh, std::vector<std::array<int, 2>>& edges, st
 }
 
 void validate(const TetMesh& mesh, const Eigen::VectorXd& gamma, const Eigen::VectorXd& alpha,
-              const Eigen::VectorXd& beta, const std::vector<Vec3>& normals, const SlicerOptions& o) {
+              const Eigen::VectorXd& beta, const std::vector<Vec3>& normals,
+              const SlicerOptions& o) {
   if (mesh.tets.empty() || mesh.points.empty()) {
     throw GeoLatticeError("empty mesh: nothing to slice");
   }
   const auto n = static_cast<Eigen::Index>(mesh.points.size());
-  if (gamma.size() != n || alpha.size() != n || beta.size() != n || static_cast<Eigen::Index>(normals.size()) != n) {
-    throw GeoLatticeError("slicer fields must have one value per mesh vertex (" + std::to_string(n) + ")");
+  if (gamma.size() != n || alpha.size() != n || beta.size() != n ||
+      static_cast<Eigen::Index>(normals.size()) != n) {
+    throw GeoLatticeError("slicer fields must have one value per mesh vertex (" +
+                          std::to_string(n) + ")");
   }
   if (!gamma.allFinite()) {
     throw GeoLatticeError("γ has non-finite values");
@@ -84,14 +90,16 @@ void validate(const TetMesh& mesh, const Eigen::VectorXd& gamma, const Eigen::Ve
     throw GeoLatticeError("layer interval must be > 0 mm (got " + std::to_string(o.interval) + ")");
   }
   if (!(o.firstLayerOffset > 0) || !std::isfinite(o.firstLayerOffset)) {
-    throw GeoLatticeError("first layer offset must be > 0 mm (got " + std::to_string(o.firstLayerOffset) + ")");
+    throw GeoLatticeError("first layer offset must be > 0 mm (got " +
+                          std::to_string(o.firstLayerOffset) + ")");
   }
   if (o.firstLayer < 0 || (o.lastLayer >= 0 && o.lastLayer < o.firstLayer)) {
-    throw GeoLatticeError("invalid layer range [" + std::to_string(o.firstLayer) + ", " + std::to_string(o.lastLayer) + "]");
+    throw GeoLatticeError("invalid layer range [" + std::to_string(o.firstLayer) + ", " +
+                          std::to_string(o.lastLayer) + "]");
   }
 }
 
-} // namespace
+}  // namespace
 
 int layerCount(double gammaMax, const SlicerOptions& o) {
   if (!(o.interval > 0) || gammaMax < o.firstLayerOffset) {
@@ -124,25 +132,29 @@ std::vector<Vec3> vertexGradientDirections(const TetMesh& mesh, const Eigen::Vec
   return sum;
 }
 
-CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma, const Eigen::VectorXd& alpha,
-                               const Eigen::VectorXd& beta, const std::vector<Vec3>& vertexNormals,
+CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma,
+                               const Eigen::VectorXd& alpha, const Eigen::VectorXd& beta,
+                               const std::vector<Vec3>& vertexNormals,
                                const SlicerOptions& options) {
   validate(mesh, gamma, alpha, beta, vertexNormals, options);
   const ProgressReporter progress(options.progress, options.shouldAbort, "curved layer slicing");
   progress.report(0.0);
   const int total = layerCount(gamma.maxCoeff(), options);
   if (total == 0) {
-    throw GeoLatticeError("no layer: the first layer offset (" + std::to_string(options.firstLayerOffset) +
-                          " mm) is above the largest γ (" + std::to_string(gamma.maxCoeff()) + " mm)");
+    throw GeoLatticeError(
+        "no layer: the first layer offset (" + std::to_string(options.firstLayerOffset) +
+        " mm) is above the largest γ (" + std::to_string(gamma.maxCoeff()) + " mm)");
   }
   const int first = options.firstLayer;
   const int last = options.lastLayer < 0 ? total - 1 : std::min(options.lastLayer, total - 1);
   if (first > last) {
-    throw GeoLatticeError("layer range starts at " + std::to_string(first) + " but there are only " +
-                          std::to_string(total) + " layers");
+    throw GeoLatticeError("layer range starts at " + std::to_string(first) +
+                          " but there are only " + std::to_string(total) + " layers");
   }
   const int L = last - first + 1;
-  auto phi = [&](int i) { return layerValue(i, options); };
+  auto phi = [&](int i) {
+    return layerValue(i, options);
+  };
   // Smallest layer index i >= first with φ_i > x (exactly, with φ computed by phi()).
   auto firstAbove = [&](double x) {
     int i = static_cast<int>(std::floor((x - options.firstLayerOffset) / options.interval)) + 1;
@@ -169,10 +181,10 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
     const double lo = std::min(gamma[edges[e][0]], gamma[edges[e][1]]);
     const double hi = std::max(gamma[edges[e][0]], gamma[edges[e][1]]);
     const int i0 = firstAbove(lo);
-    const int i1 = firstAbove(hi); // layers in [i0, i1) cross strictly: lo < φ <= hi minus φ == hi
+    const int i1 = firstAbove(hi);  // layers in [i0, i1) cross strictly: lo < φ <= hi minus φ == hi
     int count = std::max(0, std::min(i1, last + 1) - i0);
     if (count > 0 && phi(i0 + count - 1) == hi) {
-      --count; // that crossing is the vertex hit at the upper end
+      --count;  // that crossing is the vertex hit at the upper end
     }
     edgeFirst[e] = i0;
     edgeOffset[e + 1] = edgeOffset[e] + count;
@@ -182,7 +194,7 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
   std::vector<int> vertexLayer;
   int slots = edgePoints;
   for (size_t v = 0; v < mesh.points.size(); ++v) {
-    const int i = firstAbove(gamma[v]) - 1; // largest i with φ_i <= γ
+    const int i = firstAbove(gamma[v]) - 1;  // largest i with φ_i <= γ
     if (i >= first && i <= last && phi(i) == gamma[v]) {
       vertexSlot[v] = slots++;
     }
@@ -237,7 +249,7 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
       gmax = std::max(gmax, gamma[tet[k]]);
     }
     const int i0 = firstAbove(gmin);
-    const int i1 = std::min(firstAbove(gmax) - 1, last); // layers with gmin < φ_i <= gmax
+    const int i1 = std::min(firstAbove(gmax) - 1, last);  // layers with gmin < φ_i <= gmax
     if (i0 > i1) {
       continue;
     }
@@ -264,9 +276,11 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
       std::array<int, 3> tri[2];
       int count = 0;
       if (na == 1) {
-        tri[count++] = {point(below[0], above[0]), point(below[1], above[0]), point(below[2], above[0])};
+        tri[count++] = {point(below[0], above[0]), point(below[1], above[0]),
+                        point(below[2], above[0])};
       } else if (nb == 1) {
-        tri[count++] = {point(below[0], above[0]), point(below[0], above[1]), point(below[0], above[2])};
+        tri[count++] = {point(below[0], above[0]), point(below[0], above[1]),
+                        point(below[0], above[2])};
       } else if (na == 2) {
         // Quad p00 p01 p11 p10 (cyclic around the tet), split on the p00-p11 diagonal.
         const int p00 = point(below[0], above[0]), p01 = point(below[0], above[1]);
@@ -277,7 +291,7 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
       for (int c = 0; c < count; ++c) {
         auto& f = tri[c];
         if (f[0] == f[1] || f[1] == f[2] || f[0] == f[2]) {
-          ++out.droppedDegenerateTriangles; // collapsed onto exact vertex hits
+          ++out.droppedDegenerateTriangles;  // collapsed onto exact vertex hits
           continue;
         }
         const Vec3 n = (position[f[1]] - position[f[0]]).cross(position[f[2]] - position[f[0]]);
@@ -387,4 +401,4 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
   return out;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

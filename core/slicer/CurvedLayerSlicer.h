@@ -43,31 +43,33 @@ inline double layerValue(int i, const SlicerOptions& options) {
 
 /// @brief All extracted layers in one mesh; triangles and points are grouped by layer.
 struct CurvedLayers {
-  std::vector<double> layerValues;              ///< #L φ_i of the extracted layers (mm)
-  std::vector<int> layerIndex;                  ///< #L the index i of each extracted layer
-  std::vector<Vec3> points;                     ///< #P positions (mm)
-  std::vector<double> alpha, beta;              ///< #P α, β interpolated along the tet edge (mm)
-  std::vector<Vec3> normals;                    ///< #P unit nozzle direction (∇γ, towards increasing γ)
-  std::vector<int> pointLayer;                  ///< #P layer (0..L-1, into layerValues)
-  std::vector<std::array<int, 2>> sourceEdge;   ///< #P tet-mesh edge (a, b), γ(a) < γ(b); a == b for a vertex hit
-  std::vector<double> edgeParameter;            ///< #P t: point = (1 - t) p_a + t p_b
-  std::vector<std::array<int, 3>> triangles;    ///< #F, counter-clockwise seen from +∇γ
-  std::vector<int> triangleLayer;               ///< #F layer (0..L-1)
-  std::vector<int> layerTriangleOffset;         ///< #L+1: layer l owns triangles [off[l], off[l+1])
-  std::vector<int> layerPointOffset;            ///< #L+1: layer l owns points [off[l], off[l+1])
-  int droppedDegenerateTriangles = 0;           ///< collapsed onto exact vertex hits
-  int droppedDuplicateFaces = 0;                ///< mesh faces touching a layer from one side
+  std::vector<double> layerValues;  ///< #L φ_i of the extracted layers (mm)
+  std::vector<int> layerIndex;      ///< #L the index i of each extracted layer
+  std::vector<Vec3> points;         ///< #P positions (mm)
+  std::vector<double> alpha, beta;  ///< #P α, β interpolated along the tet edge (mm)
+  std::vector<Vec3> normals;        ///< #P unit nozzle direction (∇γ, towards increasing γ)
+  std::vector<int> pointLayer;      ///< #P layer (0..L-1, into layerValues)
+  std::vector<std::array<int, 2>>
+      sourceEdge;  ///< #P tet-mesh edge (a, b), γ(a) < γ(b); a == b for a vertex hit
+  std::vector<double> edgeParameter;          ///< #P t: point = (1 - t) p_a + t p_b
+  std::vector<std::array<int, 3>> triangles;  ///< #F, counter-clockwise seen from +∇γ
+  std::vector<int> triangleLayer;             ///< #F layer (0..L-1)
+  std::vector<int> layerTriangleOffset;       ///< #L+1: layer l owns triangles [off[l], off[l+1])
+  std::vector<int> layerPointOffset;          ///< #L+1: layer l owns points [off[l], off[l+1])
+  int droppedDegenerateTriangles = 0;         ///< collapsed onto exact vertex hits
+  int droppedDuplicateFaces = 0;              ///< mesh faces touching a layer from one side
 };
 
 /// Slices the tet mesh. gamma, alpha, beta have one value per mesh vertex. vertexNormals: unit
 /// ∇γ per vertex (see vertexGradientDirections). Throws GeoLatticeError for bad options, sizes
 /// that do not match, non-finite γ, or when the options select no layer.
-CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma, const Eigen::VectorXd& alpha,
-                               const Eigen::VectorXd& beta, const std::vector<Vec3>& vertexNormals,
+CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma,
+                               const Eigen::VectorXd& alpha, const Eigen::VectorXd& beta,
+                               const std::vector<Vec3>& vertexNormals,
                                const SlicerOptions& options = {});
 
 /// Unit volume-weighted average of the per-tet gradients of f at each vertex (zero where the
 /// gradient vanishes). Used as the nozzle direction ∇γ/|∇γ| at layer points.
 std::vector<Vec3> vertexGradientDirections(const TetMesh& mesh, const Eigen::VectorXd& f);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -24,8 +24,10 @@ using TriangleIterator = std::vector<Triangle>::const_iterator;
 using Primitive = CGAL::AABB_triangle_primitive<Kernel, TriangleIterator>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 
-Kernel::Point_3 toPoint(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
-} // namespace
+Kernel::Point_3 toPoint(const Vec3& p) {
+  return {p.x(), p.y(), p.z()};
+}
+}  // namespace
 
 int layerComponents(const CurvedLayers& layers, int l, std::vector<int>& triangleComponent) {
   const int p0 = layers.layerPointOffset[l], np = layers.layerPointOffset[l + 1] - p0;
@@ -57,7 +59,8 @@ std::vector<Triangle> layerTriangles(const CurvedLayers& layers, int l) {
   out.reserve(layers.layerTriangleOffset[l + 1] - layers.layerTriangleOffset[l]);
   for (int k = layers.layerTriangleOffset[l]; k < layers.layerTriangleOffset[l + 1]; ++k) {
     const auto& t = layers.triangles[k];
-    out.emplace_back(toPoint(layers.points[t[0]]), toPoint(layers.points[t[1]]), toPoint(layers.points[t[2]]));
+    out.emplace_back(toPoint(layers.points[t[0]]), toPoint(layers.points[t[1]]),
+                     toPoint(layers.points[t[2]]));
   }
   return out;
 }
@@ -85,7 +88,7 @@ void layerSpacing(const CurvedLayers& layers, int l, std::vector<LayerStatistics
   }
   s.spacingMean = sum / s.points;
 }
-} // namespace
+}  // namespace
 
 std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers, int threads) {
   const int L = static_cast<int>(layers.layerValues.size());
@@ -136,4 +139,4 @@ std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers, 
   return stats;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

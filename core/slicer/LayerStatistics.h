@@ -10,11 +10,11 @@ namespace geolattice {
 
 /// @brief Statistics of one extracted layer.
 struct LayerStatistics {
-  double value = 0;       ///< φ_i (mm)
-  double area = 0;        ///< mm^2
+  double value = 0;  ///< φ_i (mm)
+  double area = 0;   ///< mm^2
   int triangles = 0;
   int points = 0;
-  int components = 0;     ///< connected pieces (triangles sharing vertices)
+  int components = 0;  ///< connected pieces (triangles sharing vertices)
   /// Distance from this layer's points to the next layer's surface (mm); NaN for the last layer
   /// or when the next layer is empty. Uniform layers give min ≈ mean ≈ max ≈ interval.
   double spacingMin = 0, spacingMean = 0, spacingMax = 0;
@@ -28,4 +28,4 @@ std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers, 
 /// Component id (0..count-1) of every triangle of layer l; returns the count.
 int layerComponents(const CurvedLayers& layers, int l, std::vector<int>& triangleComponent);
 
-} // namespace geolattice
+}  // namespace geolattice

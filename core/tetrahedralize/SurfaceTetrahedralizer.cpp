@@ -31,7 +31,9 @@ constexpr double kVolumeTolerance = 1e-5;
 // The automatic search accepts a count within this factor of the target.
 constexpr double kAutoTolerance = 1.25;
 
-double regularTetVolume(double edge) { return edge * edge * edge / (6.0 * std::sqrt(2.0)); }
+double regularTetVolume(double edge) {
+  return edge * edge * edge / (6.0 * std::sqrt(2.0));
+}
 
 std::string formatSwitchNumber(double value) {
   char buffer[64];
@@ -66,7 +68,8 @@ double meanUniqueEdgeLength(const TetMesh& mesh) {
 double windingNumber(const TriangleSurface& surface, const Vec3& q) {
   double total = 0.0;
   for (const auto& t : surface.triangles) {
-    const Vec3 a = surface.points[t[0]] - q, b = surface.points[t[1]] - q, c = surface.points[t[2]] - q;
+    const Vec3 a = surface.points[t[0]] - q, b = surface.points[t[1]] - q,
+               c = surface.points[t[2]] - q;
     const double la = a.norm(), lb = b.norm(), lc = c.norm();
     const double numerator = a.dot(b.cross(c));
     const double denominator = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
@@ -76,8 +79,8 @@ double windingNumber(const TriangleSurface& surface, const Vec3& q) {
 }
 
 struct RegionSummary {
-  int removedRegions = 0;        // regions with winding number 0 (cavities), dropped
-  double windingVolume = 0.0;    // sum over all tets of winding number * volume (mm^3)
+  int removedRegions = 0;      // regions with winding number 0 (cavities), dropped
+  double windingVolume = 0.0;  // sum over all tets of winding number * volume (mm^3)
 };
 
 // TetGen meshes every bounded region enclosed by the facets, cavities of hollow parts
@@ -91,7 +94,7 @@ struct RegionSummary {
 RegionSummary classifyRegions(const TriangleSurface& surface, TetGenOutput& out) {
   RegionSummary summary;
   const bool numbered = out.regions.size() == out.mesh.tets.size();
-  std::map<int, long> windingOf; // region -> winding number
+  std::map<int, long> windingOf;  // region -> winding number
   std::vector<long> tetWinding(out.mesh.tets.size());
   for (size_t t = 0; t < out.mesh.tets.size(); ++t) {
     const int region = numbered ? out.regions[t] : 0;
@@ -103,9 +106,10 @@ RegionSummary classifyRegions(const TriangleSurface& surface, TetGenOutput& out)
       }
       it = windingOf.emplace(region, std::lround(windingNumber(surface, centroid))).first;
       if (it->second < 0) {
-        throw GeoLatticeError("inconsistently oriented shells: a region has winding number " +
-                              std::to_string(it->second) +
-                              " (an inward-oriented shell lies outside every other shell; flip that shell)");
+        throw GeoLatticeError(
+            "inconsistently oriented shells: a region has winding number " +
+            std::to_string(it->second) +
+            " (an inward-oriented shell lies outside every other shell; flip that shell)");
       }
       summary.removedRegions += it->second == 0 ? 1 : 0;
     }
@@ -158,7 +162,7 @@ TriangleSurface withoutUnusedPoints(const TriangleSurface& input) {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 double automaticEdgeLength(double enclosedVolume, int targetTets) {
   if (!(enclosedVolume > 0.0) || !std::isfinite(enclosedVolume)) {
@@ -166,27 +170,34 @@ double automaticEdgeLength(double enclosedVolume, int targetTets) {
                           std::to_string(enclosedVolume) + " mm^3");
   }
   if (targetTets <= 0) {
-    throw GeoLatticeError("automatic edge length needs a positive tet count, got " + std::to_string(targetTets));
+    throw GeoLatticeError("automatic edge length needs a positive tet count, got " +
+                          std::to_string(targetTets));
   }
   // N = V / (k * L^3 / (6 sqrt 2))  =>  L = cbrt(6 sqrt 2 * V / (k * N)).
-  return std::cbrt(6.0 * std::sqrt(2.0) * enclosedVolume / (kGuessMeanTetVolumeOverBound * targetTets));
+  return std::cbrt(6.0 * std::sqrt(2.0) * enclosedVolume /
+                   (kGuessMeanTetVolumeOverBound * targetTets));
 }
 
-TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const TetrahedralizeOptions& options) {
+TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
+                                           const TetrahedralizeOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   if (!(options.targetEdgeLength >= 0.0) || !std::isfinite(options.targetEdgeLength)) {
     throw GeoLatticeError("target edge length must be >= 0 mm (0 = automatic), got " +
                           std::to_string(options.targetEdgeLength));
   }
-  if (!(options.radiusEdgeRatio >= kMinRadiusEdgeRatio && options.radiusEdgeRatio <= kMaxRadiusEdgeRatio)) {
-    throw GeoLatticeError("radius-edge ratio must be in [" + formatSwitchNumber(kMinRadiusEdgeRatio) + ", " +
+  if (!(options.radiusEdgeRatio >= kMinRadiusEdgeRatio &&
+        options.radiusEdgeRatio <= kMaxRadiusEdgeRatio)) {
+    throw GeoLatticeError("radius-edge ratio must be in [" +
+                          formatSwitchNumber(kMinRadiusEdgeRatio) + ", " +
                           formatSwitchNumber(kMaxRadiusEdgeRatio) + "], got " +
                           std::to_string(options.radiusEdgeRatio));
   }
   const bool automatic = options.targetEdgeLength == 0.0;
-  if (automatic && (options.autoTargetTets < kMinAutoTargetTets || options.autoTargetTets > kMaxAutoTargetTets)) {
-    throw GeoLatticeError("automatic target tet count must be in [" + std::to_string(kMinAutoTargetTets) + ", " +
-                          std::to_string(kMaxAutoTargetTets) + "], got " + std::to_string(options.autoTargetTets));
+  if (automatic && (options.autoTargetTets < kMinAutoTargetTets ||
+                    options.autoTargetTets > kMaxAutoTargetTets)) {
+    throw GeoLatticeError(
+        "automatic target tet count must be in [" + std::to_string(kMinAutoTargetTets) + ", " +
+        std::to_string(kMaxAutoTargetTets) + "], got " + std::to_string(options.autoTargetTets));
   }
 
   const SurfaceCheckReport report = requireClosedManifold(input);
@@ -199,11 +210,14 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const T
   result.flippedSurfaceTriangles = orientOutward(surface);
   result.enclosedVolume = std::abs(report.signedVolume);
 
-  const double firstEdge =
-      automatic ? automaticEdgeLength(result.enclosedVolume, options.autoTargetTets) : options.targetEdgeLength;
-  const double smallestCount = result.enclosedVolume / (kLargestMeanTetVolumeOverBound * regularTetVolume(firstEdge));
+  const double firstEdge = automatic
+                               ? automaticEdgeLength(result.enclosedVolume, options.autoTargetTets)
+                               : options.targetEdgeLength;
+  const double smallestCount =
+      result.enclosedVolume / (kLargestMeanTetVolumeOverBound * regularTetVolume(firstEdge));
   if (!automatic && smallestCount > kMaxEstimatedTets) {
-    throw GeoLatticeError("target edge length " + std::to_string(firstEdge) + " mm is too small for a solid of " +
+    throw GeoLatticeError("target edge length " + std::to_string(firstEdge) +
+                          " mm is too small for a solid of " +
                           std::to_string(result.enclosedVolume) + " mm^3: at least about " +
                           std::to_string(static_cast<long long>(smallestCount)) + " tets (limit " +
                           std::to_string(static_cast<long long>(kMaxEstimatedTets)) + ")");
@@ -213,11 +227,11 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const T
   // (cavities), Q: quiet. No "Y": boundary triangles may be split, so the boundary gets the
   // target resolution too.
   auto switchesFor = [&](double edge) {
-    return "pq" + formatSwitchNumber(options.radiusEdgeRatio) + "a" + formatSwitchNumber(regularTetVolume(edge)) +
-           "AQ";
+    return "pq" + formatSwitchNumber(options.radiusEdgeRatio) + "a" +
+           formatSwitchNumber(regularTetVolume(edge)) + "AQ";
   };
   const ProgressReporter progress(options.progress, options.shouldAbort, "tetrahedralization");
-  int removedRegions = 0; // of the last run
+  int removedRegions = 0;  // of the last run
   int runs = 0;
   auto run = [&](double edge) {
     TetGenOutput out = runTetGen(surface, switchesFor(edge), options.shouldAbort);
@@ -229,13 +243,15 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const T
     // TetGen keeps the boundary geometrically (Steiner points lie on the input facets), so the
     // volumes agree to rounding (measured: <= 1e-7 relative on the test models). A larger gap
     // means TetGen changed the geometry, e.g. merged nearly coincident vertices.
-    const double gap = std::abs(regions.windingVolume - result.enclosedVolume) / result.enclosedVolume;
+    const double gap =
+        std::abs(regions.windingVolume - result.enclosedVolume) / result.enclosedVolume;
     if (gap > kVolumeTolerance) {
-      throw GeoLatticeError("the tet mesh volume (" + std::to_string(regions.windingVolume) +
-                            " mm^3, counted with the winding number) differs from the volume enclosed by the "
-                            "surface (" + std::to_string(result.enclosedVolume) + " mm^3) by " +
-                            formatSwitchNumber(100.0 * gap) +
-                            " %: the surface has overlapping parts or nearly coincident vertices");
+      throw GeoLatticeError(
+          "the tet mesh volume (" + std::to_string(regions.windingVolume) +
+          " mm^3, counted with the winding number) differs from the volume enclosed by the "
+          "surface (" +
+          std::to_string(result.enclosedVolume) + " mm^3) by " + formatSwitchNumber(100.0 * gap) +
+          " %: the surface has overlapping parts or nearly coincident vertices");
     }
     ++runs;
     progress.report(automatic ? 0.9 * runs / kMaxAutoAttempts : 0.9);
@@ -253,10 +269,13 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const T
     // bracket (largest edge known to give too many tets, smallest known to give too few) is
     // replaced by the bracket's geometric mean.
     const double target = options.autoTargetTets;
-    auto miss = [&](size_t count) { return std::abs(std::log(static_cast<double>(count) / target)); };
+    auto miss = [&](size_t count) {
+      return std::abs(std::log(static_cast<double>(count) / target));
+    };
     double edge = firstEdge, count = static_cast<double>(best.tets.size());
     double slope = -3.0;
-    double tooFine = 0.0, tooCoarse = 0.0; // largest edge with count > target, smallest with count < target
+    double tooFine = 0.0,
+           tooCoarse = 0.0;  // largest edge with count > target, smallest with count < target
     auto updateBracket = [&](double e, double n) {
       if (n > target) {
         tooFine = std::max(tooFine, e);
@@ -265,14 +284,15 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const T
       }
     };
     updateBracket(edge, count);
-    while (miss(best.tets.size()) > std::log(kAutoTolerance) && result.attempts < kMaxAutoAttempts) {
+    while (miss(best.tets.size()) > std::log(kAutoTolerance) &&
+           result.attempts < kMaxAutoAttempts) {
       double next = edge * std::exp(std::log(count / target) / -slope);
       next = std::max(edge / 4.0, std::min(next, std::min(edge * 4.0, report.bboxDiagonal)));
       if (tooFine > 0.0 && tooCoarse > tooFine && !(next > tooFine && next < tooCoarse)) {
         next = std::sqrt(tooFine * tooCoarse);
       }
       if (!(std::abs(next - edge) > 1e-9 * edge)) {
-        break; // no further change possible (the bound is the bounding-box diagonal)
+        break;  // no further change possible (the bound is the bounding-box diagonal)
       }
       TetMesh mesh = run(next);
       ++result.attempts;
@@ -307,4 +327,4 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input, const T
   return result;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

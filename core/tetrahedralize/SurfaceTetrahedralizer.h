@@ -44,20 +44,21 @@ struct TetrahedralizeOptions {
 
 /// @brief Mesh plus what was done to get it.
 struct TetrahedralizeResult {
-  TetMesh mesh;                       ///< positively oriented, validated (requireValidTetMesh)
-  double targetEdgeLength = 0.0;      ///< edge length used (mm): the option, or the automatic choice
-  double maxTetVolume = 0.0;          ///< TetGen volume bound (mm^3)
-  double meanEdgeLength = 0.0;        ///< mean length of the output's unique edges (mm)
-  double enclosedVolume = 0.0;        ///< divergence-theorem volume of the outward surface (mm^3);
-                                      ///< nested outward shells count twice inside the inner one
-  double meshVolume = 0.0;            ///< sum of tet volumes (mm^3)
+  TetMesh mesh;                   ///< positively oriented, validated (requireValidTetMesh)
+  double targetEdgeLength = 0.0;  ///< edge length used (mm): the option, or the automatic choice
+  double maxTetVolume = 0.0;      ///< TetGen volume bound (mm^3)
+  double meanEdgeLength = 0.0;    ///< mean length of the output's unique edges (mm)
+  double enclosedVolume = 0.0;    ///< divergence-theorem volume of the outward surface (mm^3);
+                                  ///< nested outward shells count twice inside the inner one
+  double meshVolume = 0.0;        ///< sum of tet volumes (mm^3)
   int tetCount = 0;
-  int flippedSurfaceTriangles = 0;    ///< input triangles reversed because the surface faced inward
-  int flippedTets = 0;                ///< output tets reoriented (0 in practice: TetGen 1.5 writes positive tets)
-  int removedCavityRegions = 0;       ///< regions TetGen filled with winding number 0 (cavities), removed
-  int attempts = 0;                   ///< TetGen runs (1 unless the edge length was automatic)
-  double seconds = 0.0;               ///< wall time of the whole call
-  std::string switches;               ///< TetGen switches used
+  int flippedSurfaceTriangles = 0;  ///< input triangles reversed because the surface faced inward
+  int flippedTets = 0;  ///< output tets reoriented (0 in practice: TetGen 1.5 writes positive tets)
+  int removedCavityRegions =
+      0;                 ///< regions TetGen filled with winding number 0 (cavities), removed
+  int attempts = 0;      ///< TetGen runs (1 unless the edge length was automatic)
+  double seconds = 0.0;  ///< wall time of the whole call
+  std::string switches;  ///< TetGen switches used
 };
 
 /// Range of TetrahedralizeOptions::autoTargetTets.
@@ -97,4 +98,4 @@ double automaticEdgeLength(double enclosedVolume, int targetTets = 75000);
 TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& surface,
                                            const TetrahedralizeOptions& options = {});
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -26,10 +26,16 @@ namespace {
 
 // Child -> parent message header; arrays follow (points: 3 doubles each, tets: 4 int32 each,
 // regions: 1 int32 per tet when hasRegions).
-enum Status : int32_t { kOk = 0, kTetgenError = 1, kSelfIntersecting = 2, kOutOfMemory = 3, kOtherException = 4 };
+enum Status : int32_t {
+  kOk = 0,
+  kTetgenError = 1,
+  kSelfIntersecting = 2,
+  kOutOfMemory = 3,
+  kOtherException = 4
+};
 struct Header {
   int32_t status;
-  int32_t code;          // TetGen error code, or the number of intersecting facets
+  int32_t code;  // TetGen error code, or the number of intersecting facets
   int64_t pointCount;
   int64_t tetCount;
   int32_t hasRegions;
@@ -40,7 +46,7 @@ struct Header {
 // child by fork).
 struct ChildJob {
   int fd;
-  int stderrFd; // memfd that receives the child's stderr (assertion messages), or -1
+  int stderrFd;  // memfd that receives the child's stderr (assertion messages), or -1
   const TriangleSurface* surface;
   const char* switches;
 };
@@ -127,11 +133,17 @@ void* childTetgenThread(void* arg) {
   tetgenio out;
   tetrahedralize(switches.data(), &in, &out);
 
-  const bool hasRegions = out.numberoftetrahedronattributes > 0 && out.tetrahedronattributelist != nullptr;
-  const Header h{kOk, 0, out.numberofpoints, out.numberoftetrahedra, hasRegions ? 1 : 0,
+  const bool hasRegions =
+      out.numberoftetrahedronattributes > 0 && out.tetrahedronattributelist != nullptr;
+  const Header h{kOk,
+                 0,
+                 out.numberofpoints,
+                 out.numberoftetrahedra,
+                 hasRegions ? 1 : 0,
                  out.numberofcorners >= 4 ? 4 : out.numberofcorners};
   bool ok = writeAll(job.fd, &h, sizeof(h));
-  ok = ok && writeAll(job.fd, out.pointlist, sizeof(REAL) * 3 * static_cast<size_t>(out.numberofpoints));
+  ok = ok &&
+       writeAll(job.fd, out.pointlist, sizeof(REAL) * 3 * static_cast<size_t>(out.numberofpoints));
   // The first 4 corners of each tet (the linear tet; more only with second order "o2").
   std::vector<int32_t> tets(static_cast<size_t>(out.numberoftetrahedra) * 4);
   for (size_t t = 0; t < static_cast<size_t>(out.numberoftetrahedra); ++t) {
@@ -143,7 +155,8 @@ void* childTetgenThread(void* arg) {
   if (hasRegions) {
     std::vector<int32_t> regions(static_cast<size_t>(out.numberoftetrahedra));
     for (size_t t = 0; t < regions.size(); ++t) {
-      regions[t] = static_cast<int32_t>(out.tetrahedronattributelist[t * out.numberoftetrahedronattributes]);
+      regions[t] =
+          static_cast<int32_t>(out.tetrahedronattributelist[t * out.numberoftetrahedronattributes]);
     }
     ok = ok && writeAll(job.fd, regions.data(), sizeof(int32_t) * regions.size());
   }
@@ -154,20 +167,20 @@ void* childTetgenThread(void* arg) {
   g_childFd = job.fd;
   const int devNull = ::open("/dev/null", O_WRONLY);
   if (devNull >= 0) {
-    ::dup2(devNull, STDOUT_FILENO); // TetGen prints warnings even with "Q"; core never prints
+    ::dup2(devNull, STDOUT_FILENO);  // TetGen prints warnings even with "Q"; core never prints
   }
   // Failed assertions in TetGen go to stderr; the parent quotes them in its error message.
   ::dup2(job.stderrFd >= 0 ? job.stderrFd : devNull, STDERR_FILENO);
   std::set_terminate(childTerminateHandler);
   pthread_attr_t attr;
   pthread_attr_init(&attr);
-  pthread_attr_setstacksize(&attr, size_t{64} << 20); // generous: TetGen recursion on large meshes
+  pthread_attr_setstacksize(&attr, size_t{64} << 20);  // generous: TetGen recursion on large meshes
   pthread_t thread;
   if (pthread_create(&thread, &attr, childTetgenThread, &job) != 0) {
     childFinish(kOtherException, 0);
   }
   pthread_join(thread, nullptr);
-  ::_exit(1); // the thread always _exits; not reached
+  ::_exit(1);  // the thread always _exits; not reached
 }
 
 // Last non-empty line the child wrote to stderr (e.g. "...: Assertion `maxz > 0' failed.").
@@ -196,25 +209,27 @@ std::string signalName(int sig) {
   return std::to_string(sig) + (name ? std::string(" (") + name + ")" : std::string());
 }
 
-} // namespace
+}  // namespace
 
 std::string tetgenErrorMessage(int code) {
   switch (code) {
-  case 1:
-    return "TetGen ran out of memory (try a larger target edge length)";
-  case 2:
-    return "TetGen internal error (code 2); the surface may have nearly coincident or degenerate features";
-  case 3:
-    return "self-intersecting surface: TetGen found intersecting facets";
-  case 4:
-    return "TetGen found a very small input feature (code 4): nearly coincident vertices or extremely thin "
-           "triangles on the surface";
-  case 5:
-    return "TetGen found two very close, nearly overlapping input facets (code 5)";
-  case 10:
-    return "TetGen rejected the input (code 10: input error)";
-  default:
-    return "TetGen failed with error code " + std::to_string(code);
+    case 1:
+      return "TetGen ran out of memory (try a larger target edge length)";
+    case 2:
+      return "TetGen internal error (code 2); the surface may have nearly coincident or degenerate "
+             "features";
+    case 3:
+      return "self-intersecting surface: TetGen found intersecting facets";
+    case 4:
+      return "TetGen found a very small input feature (code 4): nearly coincident vertices or "
+             "extremely thin "
+             "triangles on the surface";
+    case 5:
+      return "TetGen found two very close, nearly overlapping input facets (code 5)";
+    case 10:
+      return "TetGen rejected the input (code 10: input error)";
+    default:
+      return "TetGen failed with error code " + std::to_string(code);
   }
 }
 
@@ -227,7 +242,7 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
   if (::pipe2(fds, O_CLOEXEC) != 0) {
     throw GeoLatticeError(std::string("cannot start TetGen: pipe failed: ") + std::strerror(errno));
   }
-  const int stderrFd = ::memfd_create("geolattice-tetgen-stderr", MFD_CLOEXEC); // -1 is tolerated
+  const int stderrFd = ::memfd_create("geolattice-tetgen-stderr", MFD_CLOEXEC);  // -1 is tolerated
   const ChildJob job{fds[1], stderrFd, &surface, switches.c_str()};
   const pid_t pid = ::fork();
   if (pid < 0) {
@@ -273,7 +288,7 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
       break;
     }
     if (n == 0) {
-      break; // child closed the pipe (exited)
+      break;  // child closed the pipe (exited)
     }
     data.insert(data.end(), buffer, buffer + n);
   }
@@ -298,35 +313,38 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
   Header h{};
   if (data.size() < sizeof(Header)) {
     if (WIFSIGNALED(status)) {
-      throw GeoLatticeError("TetGen crashed with signal " + signalName(WTERMSIG(status)) +
-                            (stderrLine.empty() ? std::string() : " (" + stderrLine + ")") +
-                            "; the surface may be flat, or have nearly coincident vertices or overlapping facets");
+      throw GeoLatticeError(
+          "TetGen crashed with signal " + signalName(WTERMSIG(status)) +
+          (stderrLine.empty() ? std::string() : " (" + stderrLine + ")") +
+          "; the surface may be flat, or have nearly coincident vertices or overlapping facets");
     }
     throw GeoLatticeError("TetGen process ended without a result (exit status " +
                           std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1) + ")");
   }
   std::memcpy(&h, data.data(), sizeof(Header));
   switch (h.status) {
-  case kOk:
-    break;
-  case kTetgenError:
-    throw GeoLatticeError(tetgenErrorMessage(h.code));
-  case kSelfIntersecting:
-    throw GeoLatticeError("self-intersecting surface: TetGen found " + std::to_string(h.code) +
-                          " intersecting facets");
-  case kOutOfMemory:
-    throw GeoLatticeError(tetgenErrorMessage(1));
-  default:
-    throw GeoLatticeError("TetGen failed with an unexpected exception");
+    case kOk:
+      break;
+    case kTetgenError:
+      throw GeoLatticeError(tetgenErrorMessage(h.code));
+    case kSelfIntersecting:
+      throw GeoLatticeError("self-intersecting surface: TetGen found " + std::to_string(h.code) +
+                            " intersecting facets");
+    case kOutOfMemory:
+      throw GeoLatticeError(tetgenErrorMessage(1));
+    default:
+      throw GeoLatticeError("TetGen failed with an unexpected exception");
   }
   if (h.corners != 4 || h.pointCount < 0 || h.tetCount < 0) {
-    throw GeoLatticeError("TetGen produced an unexpected mesh (" + std::to_string(h.corners) + " corners per tet)");
+    throw GeoLatticeError("TetGen produced an unexpected mesh (" + std::to_string(h.corners) +
+                          " corners per tet)");
   }
   const size_t pointBytes = sizeof(double) * 3 * static_cast<size_t>(h.pointCount);
   const size_t tetBytes = sizeof(int32_t) * 4 * static_cast<size_t>(h.tetCount);
   const size_t regionBytes = h.hasRegions ? sizeof(int32_t) * static_cast<size_t>(h.tetCount) : 0;
   if (data.size() != sizeof(Header) + pointBytes + tetBytes + regionBytes) {
-    throw GeoLatticeError("TetGen process sent an incomplete mesh (" + std::to_string(data.size()) + " bytes)");
+    throw GeoLatticeError("TetGen process sent an incomplete mesh (" + std::to_string(data.size()) +
+                          " bytes)");
   }
   TetGenOutput output;
   const char* p = data.data() + sizeof(Header);
@@ -349,4 +367,4 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
   return output;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -25,7 +25,7 @@ namespace geolattice {
 /// region number per tet (regions are the parts of space separated by the input facets).
 struct TetGenOutput {
   TetMesh mesh;
-  std::vector<int> regions; ///< empty without "A"
+  std::vector<int> regions;  ///< empty without "A"
 };
 
 /// @brief Mesh the PLC given by `surface` (one facet per triangle) with TetGen `switches`
@@ -42,4 +42,4 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
 /// Message for a TetGen terminatetetgen() error code.
 std::string tetgenErrorMessage(int code);
 
-} // namespace geolattice
+}  // namespace geolattice

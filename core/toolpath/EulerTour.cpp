@@ -13,8 +13,12 @@ namespace geolattice {
 namespace {
 
 /// Half-edge "end" ids: 2e + side, side 0 at edges[e][0], side 1 at edges[e][1].
-inline int endVertex(const LatticeGraph& g, int end) { return g.edges[end >> 1][end & 1]; }
-inline int otherEnd(int end) { return end ^ 1; }
+inline int endVertex(const LatticeGraph& g, int end) {
+  return g.edges[end >> 1][end & 1];
+}
+inline int otherEnd(int end) {
+  return end ^ 1;
+}
 
 /// Ends at each vertex sorted by angle about the vertex normal.
 struct VertexStar {
@@ -82,12 +86,12 @@ template <class Visit>
 void traceCircuit(const std::vector<int>& partner, int start, Visit visit) {
   int end = start;
   do {
-    visit(end);                      // traverse edge end>>1 from end's vertex to the other end
-    end = partner[otherEnd(end)];    // arrive at the other end, leave by its partner
+    visit(end);                    // traverse edge end>>1 from end's vertex to the other end
+    end = partner[otherEnd(end)];  // arrive at the other end, leave by its partner
   } while (end != start);
 }
 
-} // namespace
+}  // namespace
 
 EulerTours nonCrossingEulerTours(const LatticeGraph& g, const std::vector<char>& kept) {
   const int E = static_cast<int>(g.edges.size());
@@ -182,9 +186,12 @@ int countTourCrossovers(const LatticeGraph& g, const EulerTours& tours) {
           const Vec3 d = g.points[o] - g.points[v];
           return std::atan2(d.dot(w), d.dot(u));
         };
-        auto between = [](double a, double lo, double hi) {  // a strictly inside the arc lo -> hi (ccw)
+        auto between = [](double a, double lo,
+                          double hi) {  // a strictly inside the arc lo -> hi (ccw)
           const double twoPi = 2 * M_PI;
-          auto norm = [&](double x) { return std::fmod(std::fmod(x, twoPi) + twoPi, twoPi); };
+          auto norm = [&](double x) {
+            return std::fmod(std::fmod(x, twoPi) + twoPi, twoPi);
+          };
           return norm(a - lo) > 0 && norm(a - lo) < norm(hi - lo);
         };
         for (size_t a = i; a < j; ++a) {
@@ -202,4 +209,4 @@ int countTourCrossovers(const LatticeGraph& g, const EulerTours& tours) {
   return crossings;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -22,10 +22,10 @@ namespace geolattice {
 
 struct EulerTours {
   std::vector<std::vector<int>> vertices;  ///< per tour: closed vertex sequence (first == last)
-  std::vector<std::vector<int>> edges;     ///< per tour: edge ids in order (vertices[t][i] -> [i+1])
-  std::vector<int> subgraph;               ///< per tour: the sub-graph it belongs to
-  int switches = 0;                        ///< transitions switched to merge circuits
-  int highDegreeVertices = 0;              ///< degree >= 6: kept unswitched
+  std::vector<std::vector<int>> edges;  ///< per tour: edge ids in order (vertices[t][i] -> [i+1])
+  std::vector<int> subgraph;            ///< per tour: the sub-graph it belongs to
+  int switches = 0;                     ///< transitions switched to merge circuits
+  int highDegreeVertices = 0;           ///< degree >= 6: kept unswitched
 };
 
 /// Tours over the edges with kept[e] != 0 (all edges if kept is empty); uses points, normals,
@@ -38,4 +38,4 @@ EulerTours nonCrossingEulerTours(const LatticeGraph& g, const std::vector<char>&
 /// around it? Returns the number of such crossing pairs (0 for tours from nonCrossingEulerTours).
 int countTourCrossovers(const LatticeGraph& g, const EulerTours& tours);
 
-} // namespace geolattice
+}  // namespace geolattice

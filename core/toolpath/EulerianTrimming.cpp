@@ -14,9 +14,9 @@ namespace {
 
 /// Edges of one sub-graph with local incidence lists.
 struct Subgraph {
-  std::vector<int> edges;               ///< global edge ids
-  std::vector<int> vertices;            ///< global vertex ids
-  std::vector<std::vector<int>> incident;  ///< per local vertex: local edge ids
+  std::vector<int> edges;                        ///< global edge ids
+  std::vector<int> vertices;                     ///< global vertex ids
+  std::vector<std::vector<int>> incident;        ///< per local vertex: local edge ids
   const std::vector<int>* localOfAll = nullptr;  ///< global vertex -> local id in its sub-graph
   int local(int v) const { return (*localOfAll)[v]; }
 };
@@ -45,7 +45,7 @@ int componentsOfKept(const Subgraph& s, const LatticeGraph& g, const std::vector
   return count;
 }
 
-} // namespace
+}  // namespace
 
 int contractShortEdges(LatticeGraph& g, double tolerance) {
   const size_t V = g.points.size(), E = g.edges.size();
@@ -115,7 +115,8 @@ TrimResult trimToEulerian(const LatticeGraph& g) {
   for (size_t e = 0; e < E; ++e) {
     const int s = g.edgeSubgraph[e];
     const auto [a, b] = g.edges[e];
-    if (s < 0 || s >= static_cast<int>(K) || a < 0 || b < 0 || a >= static_cast<int>(V) || b >= static_cast<int>(V)) {
+    if (s < 0 || s >= static_cast<int>(K) || a < 0 || b < 0 || a >= static_cast<int>(V) ||
+        b >= static_cast<int>(V)) {
       throw GeoLatticeError("Eulerian trimming: an edge has no valid sub-graph or vertex");
     }
     if (!((g.points[a] - g.points[b]).norm() > 0)) {
@@ -133,7 +134,8 @@ TrimResult trimToEulerian(const LatticeGraph& g) {
         if (localOf[v] < 0) {
           localOf[v] = static_cast<int>(s.vertices.size());
           s.vertices.push_back(v);
-        } else if (localOf[v] >= static_cast<int>(s.vertices.size()) || s.vertices[localOf[v]] != v) {
+        } else if (localOf[v] >= static_cast<int>(s.vertices.size()) ||
+                   s.vertices[localOf[v]] != v) {
           throw GeoLatticeError("Eulerian trimming: a vertex is shared by two sub-graphs");
         }
       }
@@ -154,7 +156,9 @@ TrimResult trimToEulerian(const LatticeGraph& g) {
       const auto& ge = g.edges[s.edges[le]];
       return s.local(ge[0]) == lv ? s.local(ge[1]) : s.local(ge[0]);
     };
-    auto isBoundary = [&](int le) { return g.edgeKind[s.edges[le]] == LatticeEdgeKind::Boundary; };
+    auto isBoundary = [&](int le) {
+      return g.edgeKind[s.edges[le]] == LatticeEdgeKind::Boundary;
+    };
     auto length = [&](int le) {
       const auto& ge = g.edges[s.edges[le]];
       return (g.points[ge[0]] - g.points[ge[1]]).norm();
@@ -171,8 +175,8 @@ TrimResult trimToEulerian(const LatticeGraph& g) {
       if (usedB[e0] || !isBoundary(e0)) {
         continue;
       }
-      std::vector<int> cycle;      // local edges in order
-      std::vector<int> atVertex;   // vertex at the start of each edge
+      std::vector<int> cycle;     // local edges in order
+      std::vector<int> atVertex;  // vertex at the start of each edge
       int v = s.local(g.edges[s.edges[e0]][0]);
       int e = e0;
       const int start = v;
@@ -307,9 +311,11 @@ TrimResult trimToEulerian(const LatticeGraph& g) {
         const int v = q.front();
         q.pop();
         for (int le : s.incident[v]) {
-          if (!best[le]) continue;
+          if (!best[le])
+            continue;
           const int w = other(le, v);
-          if (via[w] != -2) continue;
+          if (via[w] != -2)
+            continue;
           via[w] = le;
           if (deg[w] % 2 == 1) {
             target = w;
@@ -347,4 +353,4 @@ TrimResult trimToEulerian(const LatticeGraph& g) {
   return r;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -20,13 +20,13 @@
 namespace geolattice {
 
 struct TrimResult {
-  std::vector<char> kept;          ///< #E 1 = edge stays in the printed graph
-  std::vector<int> componentCount; ///< per sub-graph: connected pieces after trimming (1 normally)
-  int trimmedEdges = 0;            ///< boundary edges deleted
-  double trimmedLength = 0;        ///< their length (mm)
-  int tJoinEdges = 0;              ///< edges deleted by the odd-loop fallback
-  int splitSubgraphs = 0;          ///< sub-graphs left in more than one piece
-  int oddLoops = 0;                ///< boundary loops with an odd number of odd vertices
+  std::vector<char> kept;           ///< #E 1 = edge stays in the printed graph
+  std::vector<int> componentCount;  ///< per sub-graph: connected pieces after trimming (1 normally)
+  int trimmedEdges = 0;             ///< boundary edges deleted
+  double trimmedLength = 0;         ///< their length (mm)
+  int tJoinEdges = 0;               ///< edges deleted by the odd-loop fallback
+  int splitSubgraphs = 0;           ///< sub-graphs left in more than one piece
+  int oddLoops = 0;                 ///< boundary loops with an odd number of odd vertices
 };
 
 /// Documented repair before trimming: contracts edges not longer than `tolerance` (mm). The
@@ -42,4 +42,4 @@ int contractShortEdges(LatticeGraph& g, double tolerance);
 /// subgraphs. Throws GeoLatticeError for inconsistent arrays or a zero-length edge.
 TrimResult trimToEulerian(const LatticeGraph& g);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -103,9 +103,10 @@ private:
   std::vector<Node> nodes_;
 };
 
-} // namespace
+}  // namespace
 
-LayerThicknessResult computeLayerThickness(const LatticeGraph& g, const SkeletonTree& tree, double lambda) {
+LayerThicknessResult computeLayerThickness(const LatticeGraph& g, const SkeletonTree& tree,
+                                           double lambda) {
   if (!(lambda > 0) || !std::isfinite(lambda)) {
     throw GeoLatticeError("layer thickness: the cap factor lambda must be > 0");
   }
@@ -183,4 +184,4 @@ LayerThicknessResult computeLayerThickness(const LatticeGraph& g, const Skeleton
   return r;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -33,6 +33,7 @@ struct LayerThicknessResult {
 
 /// lambda > 1 (the paper uses 1.5). Throws GeoLatticeError for lambda <= 0, a skeleton that does
 /// not match the lattice's sub-graphs, or a lattice without layer values.
-LayerThicknessResult computeLayerThickness(const LatticeGraph& g, const SkeletonTree& tree, double lambda = 1.5);
+LayerThicknessResult computeLayerThickness(const LatticeGraph& g, const SkeletonTree& tree,
+                                           double lambda = 1.5);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -17,7 +17,9 @@ namespace {
 
 constexpr double kDeg = M_PI / 180.0;
 
-double angleBetween(const Vec3& a, const Vec3& b) { return std::acos(std::clamp(a.dot(b), -1.0, 1.0)); }
+double angleBetween(const Vec3& a, const Vec3& b) {
+  return std::acos(std::clamp(a.dot(b), -1.0, 1.0));
+}
 
 /// Earlier material that may enter the nozzle at tip p for some axis within the tilt limit.
 struct Obstacles {
@@ -42,14 +44,15 @@ struct Obstacles {
     return best;
   }
   bool clear(const Vec3& n) const {
-    return std::none_of(ids.begin(), ids.end(), [&](int q) { return wide.contains(tip, n, points[q]); });
+    return std::none_of(ids.begin(), ids.end(),
+                        [&](int q) { return wide.contains(tip, n, points[q]); });
   }
 };
 
 /// The least tilt from `reference` (<= maxTilt) whose wide nozzle holds no obstacle; starts from
 /// `current`. Returns false when none is found.
-bool findClearAxis(const Obstacles& obstacles, const Vec3& reference, const Vec3& current, double coneAngle,
-                   double maxTilt, Vec3& result) {
+bool findClearAxis(const Obstacles& obstacles, const Vec3& reference, const Vec3& current,
+                   double coneAngle, double maxTilt, Vec3& result) {
   // Projection: turn the axis off the deepest obstacle until it sits on the cone's surface.
   Vec3 n = current;
   for (int iteration = 0; iteration < 30; ++iteration) {
@@ -79,7 +82,8 @@ bool findClearAxis(const Obstacles& obstacles, const Vec3& reference, const Vec3
     double bestDot = -2;
     for (int a = 0; a < azimuths; ++a) {
       const double phi = 2 * M_PI * a / azimuths;
-      const Vec3 candidate = std::cos(tilt) * reference + std::sin(tilt) * (std::cos(phi) * e1 + std::sin(phi) * e2);
+      const Vec3 candidate =
+          std::cos(tilt) * reference + std::sin(tilt) * (std::cos(phi) * e1 + std::sin(phi) * e2);
       if (candidate.dot(current) > bestDot && obstacles.clear(candidate)) {
         bestDot = candidate.dot(current);
         result = candidate;
@@ -92,23 +96,26 @@ bool findClearAxis(const Obstacles& obstacles, const Vec3& reference, const Vec3
   return false;
 }
 
-} // namespace
+}  // namespace
 
 AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector<Vec3>& axes,
-                                    const std::vector<Vec3>& reference, const std::vector<char>& material,
-                                    const NozzleModel& nozzle, const AxisClearanceOptions& o) {
+                                    const std::vector<Vec3>& reference,
+                                    const std::vector<char>& material, const NozzleModel& nozzle,
+                                    const AxisClearanceOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   nozzle.validate();
   const size_t N = points.size();
   if (axes.size() != N || reference.size() != N || material.size() != N) {
-    throw GeoLatticeError("axis clearance: points, axes, reference axes and material flags must have the same length");
+    throw GeoLatticeError(
+        "axis clearance: points, axes, reference axes and material flags must have the same "
+        "length");
   }
   if (!(o.maxTiltDeg >= 0 && o.maxTiltDeg <= 60) || !(o.marginDeg >= 0 && o.marginDeg < 10) ||
       !(o.blendLength >= 0) || !std::isfinite(o.blendLength)) {
     std::ostringstream s;
     s << "axis clearance: the largest tilt must be in [0, 60] degrees (got " << o.maxTiltDeg
-      << "), the margin in [0, 10) degrees (got " << o.marginDeg << ") and the blend length >= 0 mm (got "
-      << o.blendLength << ")";
+      << "), the margin in [0, 10) degrees (got " << o.marginDeg
+      << ") and the blend length >= 0 mm (got " << o.blendLength << ")";
     throw GeoLatticeError(s.str());
   }
   AxisClearanceResult result;
@@ -152,9 +159,9 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   Obstacles obstacles{points, wide, Vec3::Zero(), {}};
   struct Tilt {
     int station;
-    Vec3 axis;        ///< the clearing axis
-    Vec3 rotation;    ///< unit rotation axis from the old to the new axis
-    double angle;     ///< rotation angle (rad)
+    Vec3 axis;      ///< the clearing axis
+    Vec3 rotation;  ///< unit rotation axis from the old to the new axis
+    double angle;   ///< rotation angle (rad)
   };
   std::vector<Tilt> tilts;
   // An obstacle closer to the reference axis than NA + margin - maxTilt is inside the cone for
@@ -176,7 +183,9 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
         return false;
       }
       const double c = d.dot(reference[k]) / std::sqrt(d2);  // cos of the angle to the reference
-      if (coneOnly && c > cosHopeless && d.dot(reference[k]) * std::cos(maxTilt) > nozzle.tipClearance + std::sqrt(d2) * std::sin(maxTilt)) {
+      if (coneOnly && c > cosHopeless &&
+          d.dot(reference[k]) * std::cos(maxTilt) >
+              nozzle.tipClearance + std::sqrt(d2) * std::sin(maxTilt)) {
         cannot = true;  // above the tip plane for every allowed axis, and inside every cone
         return true;
       }
@@ -190,12 +199,14 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
     // Those inside the cone about the reference first, so a blocked candidate axis is usually
     // rejected by the first few (a partition, not a sort: linear).
     const double cosWide = std::cos(wideModel.halfAngleDeg * kDeg);
-    std::partition(byAngle.begin(), byAngle.end(), [cosWide](const std::pair<double, int>& a) { return -a.first > cosWide; });
+    std::partition(byAngle.begin(), byAngle.end(),
+                   [cosWide](const std::pair<double, int>& a) { return -a.first > cosWide; });
     for (const auto& [negCos, q] : byAngle) {
       obstacles.ids.push_back(q);
     }
     Vec3 axis;
-    if (!findClearAxis(obstacles, reference[k], axes[k], wideModel.halfAngleDeg * kDeg, maxTilt, axis)) {
+    if (!findClearAxis(obstacles, reference[k], axes[k], wideModel.halfAngleDeg * kDeg, maxTilt,
+                       axis)) {
       ++result.unresolvedStations;
       continue;
     }
@@ -258,4 +269,4 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   return result;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

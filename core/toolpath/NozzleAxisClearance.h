@@ -25,9 +25,10 @@
 namespace geolattice {
 
 struct AxisClearanceOptions {
-  double maxTiltDeg = 15.0;   ///< largest angle between the axis and the layer normal (deg, in [0, 60]); 0 = off
-  double marginDeg = 0.5;     ///< obstacles end at least this far outside the cone (deg, >= 0)
-  double blendLength = 5.0;   ///< a tilt fades out over this path length on each side (mm, >= 0)
+  double maxTiltDeg =
+      15.0;  ///< largest angle between the axis and the layer normal (deg, in [0, 60]); 0 = off
+  double marginDeg = 0.5;    ///< obstacles end at least this far outside the cone (deg, >= 0)
+  double blendLength = 5.0;  ///< a tilt fades out over this path length on each side (mm, >= 0)
 };
 
 struct AxisClearanceResult {
@@ -44,7 +45,8 @@ struct AxisClearanceResult {
 /// per point, non-zero if it is deposited material (an obstacle for later stations). Throws
 /// GeoLatticeError for mismatched sizes or bad options.
 AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector<Vec3>& axes,
-                                    const std::vector<Vec3>& reference, const std::vector<char>& material,
-                                    const NozzleModel& nozzle, const AxisClearanceOptions& options);
+                                    const std::vector<Vec3>& reference,
+                                    const std::vector<char>& material, const NozzleModel& nozzle,
+                                    const AxisClearanceOptions& options);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -17,7 +17,8 @@ Vec3 slerpAxis(const Vec3& a, const Vec3& b, double t) {
   return ((std::sin((1 - t) * angle) * a + std::sin(t * angle) * b) / std::sin(angle)).normalized();
 }
 
-SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLength, std::vector<Vec3>* extra) {
+SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLength,
+                                    std::vector<Vec3>* extra) {
   SubdivisionCounts counts;
   const size_t N = p.points.size();
   if (N < 2) {
@@ -30,7 +31,9 @@ SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLe
     const double turn = std::acos(std::clamp(p.normals[i - 1].dot(p.normals[i]), -1.0, 1.0));
     const int byTurn = std::max(1, static_cast<int>(std::ceil(turn / maxTurnRad - 1e-9)));
     const int byLength =
-      maxLength > 0 ? std::max(1, static_cast<int>(std::ceil((p.points[i] - p.points[i - 1]).norm() / maxLength - 1e-9))) : 1;
+        maxLength > 0 ? std::max(1, static_cast<int>(std::ceil(
+                                        (p.points[i] - p.points[i - 1]).norm() / maxLength - 1e-9)))
+                      : 1;
     pieces[i] = std::max(byTurn, byLength);
     counts.rotationSteps += byTurn - 1;
     total += static_cast<size_t>(pieces[i] - 1);
@@ -64,7 +67,8 @@ SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLe
     const bool deposits = p.kind[i] != MoveKind::Air && p.width[i] > 0;
     // As the planner: a print segment arriving by air has the end's thickness at both ends.
     const double h1 = p.thickness[i];
-    const double h0 = p.kind[i - 1] == MoveKind::Air || p.kind[i] == MoveKind::Air ? h1 : p.thickness[i - 1];
+    const double h0 =
+        p.kind[i - 1] == MoveKind::Air || p.kind[i] == MoveKind::Air ? h1 : p.thickness[i - 1];
     const double e0 = p.extrusion[i - 1], e1 = p.extrusion[i];
     for (int s = 1; s < n; ++s) {
       const double t = static_cast<double>(s) / n;
@@ -102,4 +106,4 @@ SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLe
   return counts;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -29,4 +29,4 @@ SubdivisionCounts subdivideToolpath(Toolpath& path, double maxTurnRad, double ma
 /// about an arbitrary perpendicular.
 Vec3 slerpAxis(const Vec3& a, const Vec3& b, double t);
 
-} // namespace geolattice
+}  // namespace geolattice

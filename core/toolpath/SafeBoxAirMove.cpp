@@ -28,10 +28,10 @@ Vec3 exitPoint(const Vec3& x, const Vec3& d, const Eigen::AlignedBox3d& box) {
   return p;
 }
 
-} // namespace
+}  // namespace
 
-std::vector<AirWaypoint> safeBoxAirMove(const Vec3& from, const Vec3& fromAxis, const Vec3& to, const Vec3& toAxis,
-                                        const Eigen::AlignedBox3d& box) {
+std::vector<AirWaypoint> safeBoxAirMove(const Vec3& from, const Vec3& fromAxis, const Vec3& to,
+                                        const Vec3& toAxis, const Eigen::AlignedBox3d& box) {
   const Vec3 na = fromAxis.normalized(), nb = toAxis.normalized();
   const Vec3 a1 = exitPoint(from, na, box);
   const Vec3 b1 = exitPoint(to, nb, box);
@@ -49,10 +49,10 @@ std::vector<AirWaypoint> safeBoxAirMove(const Vec3& from, const Vec3& fromAxis, 
   return w;
 }
 
-std::vector<AirWaypoint> liftAirMove(const Vec3& from, const Vec3& fromAxis, const Vec3& to, const Vec3& toAxis,
-                                     double lift) {
+std::vector<AirWaypoint> liftAirMove(const Vec3& from, const Vec3& fromAxis, const Vec3& to,
+                                     const Vec3& toAxis, double lift) {
   const Vec3 na = fromAxis.normalized(), nb = toAxis.normalized();
   return {{from + lift * na, na}, {to + lift * nb, nb}, {to, nb}};
 }
 
-} // namespace geolattice
+}  // namespace geolattice

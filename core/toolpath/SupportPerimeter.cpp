@@ -7,9 +7,10 @@
 
 namespace geolattice {
 
-PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>& kept, double offset,
-                                  double toothLength) {
-  if (!(offset > 0) || !(toothLength > 0) || !std::isfinite(offset) || !std::isfinite(toothLength)) {
+PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>& kept,
+                                  double offset, double toothLength) {
+  if (!(offset > 0) || !(toothLength > 0) || !std::isfinite(offset) ||
+      !std::isfinite(toothLength)) {
     throw GeoLatticeError("support perimeter: offset and tooth length must be > 0 mm");
   }
   const size_t V = g.points.size(), E = g.edges.size();
@@ -32,7 +33,9 @@ PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>
       list[next[g.edges[e][1]]++] = static_cast<int>(e);
     }
   }
-  auto isBoundary = [&](int e) { return g.edgeKind[e] == LatticeEdgeKind::Boundary; };
+  auto isBoundary = [&](int e) {
+    return g.edgeKind[e] == LatticeEdgeKind::Boundary;
+  };
 
   PerimeterResult out;
   std::vector<char> used(E, 0);
@@ -102,7 +105,9 @@ PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>
     PerimeterLoop loop;
     loop.subgraph = g.edgeSubgraph[loopE[first]];
     loop.anchorVertex = loopV[first];
-    auto inner = [&](size_t i) { return Vec3(g.points[loopV[i]] + side * offset * d[i]); };
+    auto inner = [&](size_t i) {
+      return Vec3(g.points[loopV[i]] + side * offset * d[i]);
+    };
     auto add = [&](const Vec3& x, size_t i) {
       loop.points.push_back(x);
       loop.normals.push_back(unitOr(g.normals[loopV[i]], Vec3::UnitZ()));
@@ -123,7 +128,8 @@ PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>
       // Trimmed edge: alternate inner/outer every half tooth along it.
       const Vec3 a = g.points[loopV[i]], b = g.points[loopV[i1]];
       const Vec3 ai = inner(i), bi = inner(i1);
-      const int parts = std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * toothLength))));
+      const int parts =
+          std::max(1, static_cast<int>(std::ceil((b - a).norm() / (0.5 * toothLength))));
       for (int k = 1; k <= parts; ++k) {
         const double t = static_cast<double>(k) / parts;
         outward = !outward;
@@ -146,4 +152,4 @@ PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>
   return out;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -21,9 +21,9 @@ namespace geolattice {
 
 struct PerimeterLoop {
   int subgraph = 0;
-  std::vector<Vec3> points;       ///< closed: points.front() == points.back()
-  std::vector<Vec3> normals;      ///< unit nozzle axes (from the boundary vertices)
-  std::vector<int> nearVertex;    ///< per point: the boundary lattice vertex it belongs to
+  std::vector<Vec3> points;     ///< closed: points.front() == points.back()
+  std::vector<Vec3> normals;    ///< unit nozzle axes (from the boundary vertices)
+  std::vector<int> nearVertex;  ///< per point: the boundary lattice vertex it belongs to
   /// Lattice vertex on the loop where the perimeter is joined to the tour (points.front() is
   /// its offset point); it lies on a kept edge.
   int anchorVertex = -1;
@@ -31,13 +31,13 @@ struct PerimeterLoop {
 
 struct PerimeterResult {
   std::vector<PerimeterLoop> loops;
-  int loopsWithoutIsolines = 0;   ///< skipped (never trimmed)
+  int loopsWithoutIsolines = 0;  ///< skipped (never trimmed)
   int teeth = 0;
 };
 
 /// offset w > 0 (mm), toothLength l > 0 (mm). kept: per lattice edge, from trimToEulerian.
 /// Throws GeoLatticeError for bad parameters or mismatched sizes.
-PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>& kept, double offset,
-                                  double toothLength);
+PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>& kept,
+                                  double offset, double toothLength);
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -64,7 +64,8 @@ public:
   void prime(double amount) { e_ += amount; }
 
 private:
-  void push(const Vec3& x, const Vec3& n, MoveKind kind, double h, int layer, int subgraph, int tour, bool extrude) {
+  void push(const Vec3& x, const Vec3& n, MoveKind kind, double h, int layer, int subgraph,
+            int tour, bool extrude) {
     const bool print = kind != MoveKind::Air;
     const double w = print && extrude ? o_.pathWidth : 0.0;
     if (!empty()) {
@@ -120,7 +121,7 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o) {
   std::vector<int> uncleared;
   for (int round = 0; round < kMaxRounds && o.clearance.maxTiltDeg > 0; ++round) {
     const AxisClearanceResult r =
-      clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, o.clearance);
+        clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, o.clearance);
     if (round == 0) {
       path.collidingStations = r.collidingStations;
     }
@@ -140,7 +141,7 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o) {
     AxisClearanceOptions detectOnly = o.clearance;
     detectOnly.maxTiltDeg = 0;
     const AxisClearanceResult r =
-      clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, detectOnly);
+        clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, detectOnly);
     path.unclearedStations = r.collidingStations;
     uncleared = r.colliding;
     if (path.clearanceRounds == 0) {
@@ -150,16 +151,17 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o) {
   path.axisTilt.resize(path.points.size());
   for (size_t i = 0; i < path.points.size(); ++i) {
     path.axisTilt[i] =
-      std::atan2(path.normals[i].cross(reference[i]).norm(), path.normals[i].dot(reference[i])) * 180.0 / M_PI;
+        std::atan2(path.normals[i].cross(reference[i]).norm(), path.normals[i].dot(reference[i])) *
+        180.0 / M_PI;
     path.maxAxisTiltDeg = std::max(path.maxAxisTiltDeg, path.axisTilt[i]);
   }
   return uncleared;
 }
 
-} // namespace
+}  // namespace
 
-Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const std::vector<int>& order,
-                      const ToolpathOptions& o) {
+Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
+                      const std::vector<int>& order, const ToolpathOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   validate(o);
   const int K = static_cast<int>(input.subgraphs.size());
@@ -206,7 +208,8 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const
   path.thicknessStats = computeLayerThickness(g, tree, o.thicknessCap);
   PerimeterResult perimeters;
   if (o.supportPerimeter) {
-    perimeters = supportPerimeters(g, trim.kept, o.pathWidth, o.toothLength > 0 ? o.toothLength : 2 * o.pathWidth);
+    perimeters = supportPerimeters(g, trim.kept, o.pathWidth,
+                                   o.toothLength > 0 ? o.toothLength : 2 * o.pathWidth);
   }
   path.perimeterLoops = static_cast<int>(perimeters.loops.size());
   path.perimeterTeeth = perimeters.teeth;
@@ -244,7 +247,8 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const
         for (size_t r = 0; r < remaining.size(); ++r) {
           const auto& vs = tours.vertices[remaining[r]];
           for (size_t i = 0; i + 1 < vs.size(); ++i) {
-            const double d = b.empty() ? static_cast<double>(i) : (g.points[vs[i]] - b.position()).squaredNorm();
+            const double d =
+                b.empty() ? static_cast<double>(i) : (g.points[vs[i]] - b.position()).squaredNorm();
             if (d < bestDistance) {
               bestDistance = d;
               bestTour = r;
@@ -259,8 +263,9 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const
         const Vec3 startAxis = g.normals[start].normalized();
         if (!b.empty()) {
           b.retract(o.retraction);
-          const bool upper = previous >= 0 &&
-                             std::binary_search(tree.nodes[previous].upper.begin(), tree.nodes[previous].upper.end(), k);
+          const bool upper =
+              previous >= 0 && std::binary_search(tree.nodes[previous].upper.begin(),
+                                                  tree.nodes[previous].upper.end(), k);
           std::vector<AirWaypoint> air;
           if (upper && !overTheBox[tourIndex]) {
             hopped[tourIndex] = 1;
@@ -291,10 +296,12 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const
           for (int li : loopsAt[v]) {
             const PerimeterLoop& loop = perimeters.loops[li];
             for (size_t q = 0; q < loop.points.size(); ++q) {
-              b.add(loop.points[q], loop.normals[q], MoveKind::Perimeter, h[loop.nearVertex[q]], layer, k, tourIndex);
+              b.add(loop.points[q], loop.normals[q], MoveKind::Perimeter, h[loop.nearVertex[q]],
+                    layer, k, tourIndex);
               printed.extend(loop.points[q]);
             }
-            b.add(g.points[v], g.normals[v].normalized(), MoveKind::Perimeter, h[v], layer, k, tourIndex, false);
+            b.add(g.points[v], g.normals[v].normalized(), MoveKind::Perimeter, h[v], layer, k,
+                  tourIndex, false);
           }
           loopsAt[v].clear();
         };
@@ -315,8 +322,8 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const
     int replan = 0;
     for (int i : uncleared) {
       const int tour = path.pathIndex[i];
-      if (path.kind[i] == MoveKind::Air && tour >= 0 && tour < static_cast<int>(hopped.size()) && hopped[tour] &&
-          !overTheBox[tour]) {
+      if (path.kind[i] == MoveKind::Air && tour >= 0 && tour < static_cast<int>(hopped.size()) &&
+          hopped[tour] && !overTheBox[tour]) {
         overTheBox[tour] = 1;
         ++replan;
       }
@@ -331,4 +338,4 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree, const
   return path;
 }
 
-} // namespace geolattice
+}  // namespace geolattice

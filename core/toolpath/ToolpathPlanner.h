@@ -34,59 +34,62 @@ namespace geolattice {
 enum class MoveKind : int { Print = 0, Perimeter = 1, Air = 2 };
 
 struct ToolpathOptions {
-  double pathWidth = 0.6;          ///< w (mm, > 0)
-  double filamentRadius = 0.875;   ///< r_m (mm, > 0): 1.75 mm filament
-  double flowCorrection = 0.95;    ///< μ in (0, 1]
-  double printFeedRate = 10.0;     ///< f_p (mm/s, > 0)
-  double airFeedRate = 50.0;       ///< feed rate of air moves (mm/s, > 0)
-  double thicknessCap = 1.5;       ///< λ of Eq. 15 (> 0)
-  double maxTurnDeg = 5.0;         ///< largest axis change between consecutive points (deg, > 0)
-  double safeMargin = 5.0;         ///< margin of the safe box around the in-process part (mm, >= 0)
-  double lift = 2.0;               ///< lift for hops onto an upper node (mm, > 0)
-  double retraction = 1.0;         ///< filament retracted before an air move and primed after (mm, >= 0)
-  bool supportPerimeter = true;    ///< add the jagged support perimeter (SupportPerimeter.h)
-  double toothLength = 0.0;        ///< l (mm); 0 = 2 w
-  double maxSegmentLength = 1.0;   ///< longer segments are subdivided (mm, >= 0; 0 = never), so
-                                   ///< the collision check of the path's points samples it this finely
-  NozzleModel nozzle;              ///< the nozzle the axis clearance keeps earlier material out of
-  AxisClearanceOptions clearance;  ///< tilts off ∇γ where the nozzle would collide (maxTiltDeg 0 = off)
+  double pathWidth = 0.6;         ///< w (mm, > 0)
+  double filamentRadius = 0.875;  ///< r_m (mm, > 0): 1.75 mm filament
+  double flowCorrection = 0.95;   ///< μ in (0, 1]
+  double printFeedRate = 10.0;    ///< f_p (mm/s, > 0)
+  double airFeedRate = 50.0;      ///< feed rate of air moves (mm/s, > 0)
+  double thicknessCap = 1.5;      ///< λ of Eq. 15 (> 0)
+  double maxTurnDeg = 5.0;        ///< largest axis change between consecutive points (deg, > 0)
+  double safeMargin = 5.0;        ///< margin of the safe box around the in-process part (mm, >= 0)
+  double lift = 2.0;              ///< lift for hops onto an upper node (mm, > 0)
+  double retraction = 1.0;  ///< filament retracted before an air move and primed after (mm, >= 0)
+  bool supportPerimeter = true;   ///< add the jagged support perimeter (SupportPerimeter.h)
+  double toothLength = 0.0;       ///< l (mm); 0 = 2 w
+  double maxSegmentLength = 1.0;  ///< longer segments are subdivided (mm, >= 0; 0 = never), so
+      ///< the collision check of the path's points samples it this finely
+  NozzleModel nozzle;  ///< the nozzle the axis clearance keeps earlier material out of
+  AxisClearanceOptions
+      clearance;  ///< tilts off ∇γ where the nozzle would collide (maxTiltDeg 0 = off)
 };
 
 struct Toolpath {
-  std::vector<Vec3> points;          ///< tip positions in printing order (mm)
-  std::vector<Vec3> normals;         ///< unit nozzle axes
-  std::vector<MoveKind> kind;        ///< kind of the move that ends at the point (first: Air)
-  std::vector<double> thickness;     ///< h (mm), 0 on air moves
-  std::vector<double> width;         ///< w (mm), 0 on air moves
-  std::vector<double> extrusion;     ///< cumulative filament E (mm), after retraction/prime
-  std::vector<double> feedRate;      ///< mm/s of the move that ends at the point
-  std::vector<int> layer;            ///< lattice layer (-1 on air moves)
-  std::vector<int> subgraph;         ///< sub-graph (-1 on air moves)
-  std::vector<int> pathIndex;        ///< index of the continuous print path (tour) the point belongs to; air points carry the next one
-  std::vector<double> axisTilt;      ///< angle between the nozzle axis and the layer normal ∇γ (deg)
+  std::vector<Vec3> points;       ///< tip positions in printing order (mm)
+  std::vector<Vec3> normals;      ///< unit nozzle axes
+  std::vector<MoveKind> kind;     ///< kind of the move that ends at the point (first: Air)
+  std::vector<double> thickness;  ///< h (mm), 0 on air moves
+  std::vector<double> width;      ///< w (mm), 0 on air moves
+  std::vector<double> extrusion;  ///< cumulative filament E (mm), after retraction/prime
+  std::vector<double> feedRate;   ///< mm/s of the move that ends at the point
+  std::vector<int> layer;         ///< lattice layer (-1 on air moves)
+  std::vector<int> subgraph;      ///< sub-graph (-1 on air moves)
+  std::vector<int>
+      pathIndex;  ///< index of the continuous print path (tour) the point belongs to; air points carry the next one
+  std::vector<double> axisTilt;  ///< angle between the nozzle axis and the layer normal ∇γ (deg)
   // Report.
-  double printLength = 0;            ///< mm of lattice (MoveKind::Print)
-  double perimeterLength = 0;        ///< mm of support perimeter incl. its connectors (MoveKind::Perimeter)
+  double printLength = 0;  ///< mm of lattice (MoveKind::Print)
+  double perimeterLength =
+      0;  ///< mm of support perimeter incl. its connectors (MoveKind::Perimeter)
   int perimeterLoops = 0;
   int perimeterTeeth = 0;
-  double airLength = 0;              ///< mm
-  int retractions = 0;               ///< air moves
+  double airLength = 0;  ///< mm
+  int retractions = 0;   ///< air moves
   int tours = 0;
-  int crossings = 0;                 ///< self-crossings of the tours (countTourCrossovers; 0 expected)
-  int splitSubgraphs = 0;            ///< sub-graphs printed as more than one tour
-  int contractedEdges = 0;           ///< zero-length lattice edges contracted
+  int crossings = 0;        ///< self-crossings of the tours (countTourCrossovers; 0 expected)
+  int splitSubgraphs = 0;   ///< sub-graphs printed as more than one tour
+  int contractedEdges = 0;  ///< zero-length lattice edges contracted
   int trimmedEdges = 0;
-  double trimmedLength = 0;          ///< mm of boundary left unprinted by the trimming
-  int rotationSteps = 0;             ///< points inserted to limit the axis turn
-  int subdivisionPoints = 0;         ///< all points inserted (axis turn and maxSegmentLength)
-  int collidingStations = 0;         ///< stations with earlier material in the nozzle along ∇γ
-  int tiltedStations = 0;            ///< stations cleared by tilting the axis (over all rounds)
-  int unclearedStations = 0;         ///< stations still colliding after the last round
+  double trimmedLength = 0;   ///< mm of boundary left unprinted by the trimming
+  int rotationSteps = 0;      ///< points inserted to limit the axis turn
+  int subdivisionPoints = 0;  ///< all points inserted (axis turn and maxSegmentLength)
+  int collidingStations = 0;  ///< stations with earlier material in the nozzle along ∇γ
+  int tiltedStations = 0;     ///< stations cleared by tilting the axis (over all rounds)
+  int unclearedStations = 0;  ///< stations still colliding after the last round
   int clearanceRounds = 0;
-  int replannedHops = 0;             ///< hops onto an upper node that collided and went over the safe box
+  int replannedHops = 0;  ///< hops onto an upper node that collided and went over the safe box
   double maxAxisTiltDeg = 0;
-  double filamentLength = 0;         ///< Σ ΔE over print moves (mm)
-  double depositedVolume = 0;        ///< Σ μ w h̄ L over print moves (mm³)
+  double filamentLength = 0;   ///< Σ ΔE over print moves (mm)
+  double depositedVolume = 0;  ///< Σ μ w h̄ L over print moves (mm³)
   LayerThicknessResult thicknessStats;
   double seconds = 0;
 };
@@ -96,7 +99,7 @@ struct Toolpath {
 /// order: sub-graph ids in printing order (a permutation, e.g. PrintSequence::order). Throws
 /// GeoLatticeError for bad options, mismatched inputs, an order that is not a permutation, or
 /// what trimming and tours reject (odd vertices left, missing normals).
-Toolpath planToolpath(const LatticeGraph& lattice, const SkeletonTree& tree, const std::vector<int>& order,
-                      const ToolpathOptions& options = {});
+Toolpath planToolpath(const LatticeGraph& lattice, const SkeletonTree& tree,
+                      const std::vector<int>& order, const ToolpathOptions& options = {});
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -10,7 +10,8 @@
 /// The URScript rules every generated file must satisfy (issue 8: balanced def/end, one def
 /// named defName (empty: any lower-case name), pose literals of 6 numbers with at most 6
 /// decimals, t= and r= numbers, lines at most maxLine long); returns the number of movel commands.
-inline size_t checkURScriptSyntax(const std::string& text, const std::string& defName, size_t maxLine) {
+inline size_t checkURScriptSyntax(const std::string& text, const std::string& defName,
+                                  size_t maxLine) {
   std::istringstream in(text);
   std::string line;
   int depth = 0, defs = 0;

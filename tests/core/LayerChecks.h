@@ -25,4 +25,4 @@ inline void expectEdgeManifoldAndOriented(const CurvedLayers& layers, int layer)
   }
 }
 
-} // namespace geolattice
+}  // namespace geolattice

@@ -61,7 +61,7 @@ int duplicatePointCount(const TriangleSurface& s) {
   return dup;
 }
 
-} // namespace
+}  // namespace
 
 TEST(AnalyticShapes, BoxSurfaceIsClosedOutwardAndFine) {
   const Vec3 size(40, 40, 60);
@@ -74,9 +74,9 @@ TEST(AnalyticShapes, BoxSurfaceIsClosedOutwardAndFine) {
     EXPECT_LE(maxEdgeLength(s), maxEdge * (1 + 1e-12)) << "maxEdge " << maxEdge;
     // Euler characteristic of a sphere: V - E + F = 2 with E = 3F/2.
     EXPECT_EQ(static_cast<long>(s.points.size()) - static_cast<long>(s.triangles.size()) / 2, 2);
-    for (const Vec3& p : s.points) { // all vertices on the box boundary
-      const bool onFace = p.x() == 0 || p.y() == 0 || p.z() == 0 || p.x() == size.x() || p.y() == size.y() ||
-                          p.z() == size.z();
+    for (const Vec3& p : s.points) {  // all vertices on the box boundary
+      const bool onFace = p.x() == 0 || p.y() == 0 || p.z() == 0 || p.x() == size.x() ||
+                          p.y() == size.y() || p.z() == size.z();
       EXPECT_TRUE(onFace);
     }
   }
@@ -107,11 +107,11 @@ TEST(AnalyticShapes, SphereSurfaceIsClosedAndConvergesToTheBall) {
     for (const Vec3& p : s.points) {
       EXPECT_NEAR((p - centre).norm(), r, 1e-9);
     }
-    EXPECT_GT(enclosedVolume(s), 0) << "level " << level; // outward orientation
+    EXPECT_GT(enclosedVolume(s), 0) << "level " << level;  // outward orientation
   }
   const double exact = 4.0 / 3.0 * M_PI * r * r * r;
   const double v4 = enclosedVolume(sphereSurface(centre, r, 4));
-  EXPECT_LT(v4, exact); // inscribed polyhedron
+  EXPECT_LT(v4, exact);  // inscribed polyhedron
   EXPECT_NEAR(v4, exact, 0.01 * exact);
 }
 
@@ -130,7 +130,8 @@ TEST(AnalyticShapes, BoxTetMeshIsPositiveConformingAndExact) {
   double total = 0;
   const double cellVolume = size.prod() / (nx * ny * nz);
   for (const auto& t : m.tets) {
-    const double v = signedTetVolume(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]);
+    const double v =
+        signedTetVolume(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]);
     EXPECT_NEAR(v, cellVolume / 6.0, 1e-12);
     total += v;
   }

@@ -24,22 +24,27 @@ constexpr double kPi = 3.14159265358979323846;
 
 struct Shape {
   const char* name;
-  const char* file; ///< copy in testdata/
+  const char* file;  ///< copy in testdata/
   int branches;
   BranchingShapeParameters parameters;
   std::function<TriangleSurface(const BranchingShapeParameters&)> build;
 };
 
 std::vector<Shape> shapes() {
-  return {{"Y", "y_shape.obj", 2, yShapeDefaults(), [](const auto& p) { return yShapeSurface(p); }},
-          {"tree", "three_branch_tree.obj", 3, threeBranchTreeDefaults(),
-           [](const auto& p) { return threeBranchTreeSurface(p); }}};
+  return {{"Y", "y_shape.obj", 2, yShapeDefaults(),
+           [](const auto& p) {
+             return yShapeSurface(p);
+           }},
+          {"tree", "three_branch_tree.obj", 3, threeBranchTreeDefaults(), [](const auto& p) {
+             return threeBranchTreeSurface(p);
+           }}};
 }
 
 Vec3 branchAxis(const BranchingShapeParameters& p, int k, int branches) {
   const double lean = p.branchLeanDeg * kPi / 180.0;
   const double azimuth = (p.firstAzimuthDeg + 360.0 * k / branches) * kPi / 180.0;
-  return Vec3(std::sin(lean) * std::cos(azimuth), std::sin(lean) * std::sin(azimuth), std::cos(lean));
+  return Vec3(std::sin(lean) * std::cos(azimuth), std::sin(lean) * std::sin(azimuth),
+              std::cos(lean));
 }
 
 double capsuleVolume(double radius, double length) {
@@ -47,10 +52,11 @@ double capsuleVolume(double radius, double length) {
 }
 
 std::string parameterText(const BranchingShapeParameters& p) {
-  return "trunkRadius " + std::to_string(p.trunkRadius) + " mm, trunkHeight " + std::to_string(p.trunkHeight) +
-         " mm, branchRadius " + std::to_string(p.branchRadius) + " mm, branchLength " +
-         std::to_string(p.branchLength) + " mm, branchLeanDeg " + std::to_string(p.branchLeanDeg) +
-         ", firstAzimuthDeg " + std::to_string(p.firstAzimuthDeg) + ", segments " + std::to_string(p.segments) +
+  return "trunkRadius " + std::to_string(p.trunkRadius) + " mm, trunkHeight " +
+         std::to_string(p.trunkHeight) + " mm, branchRadius " + std::to_string(p.branchRadius) +
+         " mm, branchLength " + std::to_string(p.branchLength) + " mm, branchLeanDeg " +
+         std::to_string(p.branchLeanDeg) + ", firstAzimuthDeg " +
+         std::to_string(p.firstAzimuthDeg) + ", segments " + std::to_string(p.segments) +
          ", surfaceEdgeLength " + std::to_string(p.surfaceEdgeLength) + " mm";
 }
 
@@ -71,7 +77,7 @@ double bottomArea(const TriangleSurface& s, bool& allFaceDown) {
   return area;
 }
 
-} // namespace
+}  // namespace
 
 TEST(BranchingShapes, ClosedOutwardWithFlatBaseAndExpectedSize) {
   for (const Shape& shape : shapes()) {
@@ -86,7 +92,8 @@ TEST(BranchingShapes, ClosedOutwardWithFlatBaseAndExpectedSize) {
     // 2 * trunkRadius from the joint), less than all capsules together.
     const double trunk = capsuleVolume(p.trunkRadius, p.trunkHeight);
     const double branch = capsuleVolume(p.branchRadius, p.branchLength);
-    const double freeBranches = shape.branches * kPi * p.branchRadius * p.branchRadius * (p.branchLength - 2 * p.trunkRadius);
+    const double freeBranches = shape.branches * kPi * p.branchRadius * p.branchRadius *
+                                (p.branchLength - 2 * p.trunkRadius);
     EXPECT_GT(report.signedVolume, 0.98 * (trunk + freeBranches));
     EXPECT_LT(report.signedVolume, trunk + shape.branches * branch);
 
@@ -102,13 +109,15 @@ TEST(BranchingShapes, ClosedOutwardWithFlatBaseAndExpectedSize) {
       }
     }
     EXPECT_NEAR(rimRadius, p.trunkRadius, 1e-9);
-    EXPECT_GT(minZAboveBase, 0.25 * p.surfaceEdgeLength); // the wall rises straight from the rim
+    EXPECT_GT(minZAboveBase, 0.25 * p.surfaceEdgeLength);  // the wall rises straight from the rim
     bool allFaceDown = false;
-    EXPECT_NEAR(bottomArea(s, allFaceDown), kPi * p.trunkRadius * p.trunkRadius, 0.02 * kPi * p.trunkRadius * p.trunkRadius);
+    EXPECT_NEAR(bottomArea(s, allFaceDown), kPi * p.trunkRadius * p.trunkRadius,
+                0.02 * kPi * p.trunkRadius * p.trunkRadius);
     EXPECT_TRUE(allFaceDown);
 
     // Height and the reach of every branch tip along its horizontal direction.
-    const double sag = 0.3; // remeshed vertices lie on the faceted caps, at most this far inside (mm)
+    const double sag =
+        0.3;  // remeshed vertices lie on the faceted caps, at most this far inside (mm)
     double maxZ = 0.0;
     for (const Vec3& q : s.points) {
       maxZ = std::max(maxZ, q.z());
@@ -124,7 +133,8 @@ TEST(BranchingShapes, ClosedOutwardWithFlatBaseAndExpectedSize) {
       for (const Vec3& q : s.points) {
         reach = std::max(reach, q.dot(horizontal));
       }
-      const double expected = p.branchLength * std::sin(p.branchLeanDeg * kPi / 180.0) + p.branchRadius;
+      const double expected =
+          p.branchLength * std::sin(p.branchLeanDeg * kPi / 180.0) + p.branchRadius;
       EXPECT_LE(reach, expected + 1e-9) << "branch " << k;
       EXPECT_GE(reach, expected - sag) << "branch " << k;
     }
@@ -134,13 +144,13 @@ TEST(BranchingShapes, ClosedOutwardWithFlatBaseAndExpectedSize) {
 TEST(BranchingShapes, OtherParametersGiveValidSurfaces) {
   BranchingShapeParameters p = yShapeDefaults();
   p.branchLeanDeg = 65.0;
-  p.branchRadius = 0.9 * p.trunkRadius; // largest allowed
+  p.branchRadius = 0.9 * p.trunkRadius;  // largest allowed
   p.segments = 12;
   p.firstAzimuthDeg = 33.0;
   p.surfaceEdgeLength = 1.0;
   EXPECT_TRUE(checkSurface(yShapeSurface(p)).isClosedManifold());
   p = threeBranchTreeDefaults();
-  p.branchLeanDeg = 10.0; // branches nearly vertical, overlapping each other near the joint
+  p.branchLeanDeg = 10.0;  // branches nearly vertical, overlapping each other near the joint
   p.branchLength = p.trunkRadius;
   EXPECT_TRUE(checkSurface(threeBranchTreeSurface(p)).isClosedManifold());
 }
@@ -152,7 +162,7 @@ TEST(BranchingShapes, TetGenMeshesThem) {
     options.targetEdgeLength = 3.0;
     const TetrahedralizeResult r = tetrahedralizeSurface(shape.build(shape.parameters), options);
     EXPECT_GT(r.tetCount, 5000);
-    EXPECT_EQ(r.flippedSurfaceTriangles, 0); // the surfaces are outward already
+    EXPECT_EQ(r.flippedSurfaceTriangles, 0);  // the surfaces are outward already
     EXPECT_NEAR(r.meshVolume, r.enclosedVolume, 1e-5 * r.enclosedVolume);
   }
 }
@@ -166,10 +176,12 @@ TEST(BranchingShapes, BadParametersAreReported) {
       {[](auto& p) { p.trunkRadius = 0.0; }, "trunkRadius must be positive"},
       {[](auto& p) { p.trunkRadius = std::nan(""); }, "trunkRadius must be positive"},
       {[](auto& p) { p.trunkHeight = 5.0; }, "trunkHeight (> trunkRadius) must be in"},
-      {[](auto& p) { p.branchRadius = 5.5; }, "branchRadius must be in (0, 0.9 * trunkRadius = 5.4"},
+      {[](auto& p) { p.branchRadius = 5.5; },
+       "branchRadius must be in (0, 0.9 * trunkRadius = 5.4"},
       {[](auto& p) { p.branchRadius = -1.0; }, "branchRadius must be in"},
       {[](auto& p) { p.branchLength = 5.0; }, "branchLength (>= trunkRadius) must be in"},
-      {[](auto& p) { p.branchLeanDeg = 85.0; }, "branchLeanDeg must be in [10.000000, 80.000000] degrees, got 85"},
+      {[](auto& p) { p.branchLeanDeg = 85.0; },
+       "branchLeanDeg must be in [10.000000, 80.000000] degrees, got 85"},
       {[](auto& p) { p.branchLeanDeg = 5.0; }, "branchLeanDeg must be in"},
       {[](auto& p) { p.firstAzimuthDeg = INFINITY; }, "firstAzimuthDeg must be finite"},
       {[](auto& p) { p.segments = 7; }, "segments must be in [8, 256], got 7"},
@@ -204,7 +216,8 @@ TEST(BranchingShapes, TestdataCopiesMatchTheGenerator) {
     const std::string path = kData + "/" + shape.file;
     if (write) {
       writeObj(path, generated,
-               std::string(shape.name) + " test part generated by core/mesh/BranchingShapes (GeoLattice), z up, mm.\n" +
+               std::string(shape.name) +
+                   " test part generated by core/mesh/BranchingShapes (GeoLattice), z up, mm.\n" +
                    "Parameters: " + parameterText(shape.parameters) + ".\n" +
                    "Closed, edge-manifold, outward; flat bottom disk at z = 0.");
     }

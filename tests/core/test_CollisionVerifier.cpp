@@ -38,7 +38,7 @@ NozzleModel cone(double deg) {
   return n;
 }
 
-} // namespace
+}  // namespace
 
 TEST(CollisionVerifier, TowersInTheWrongOrderCollide) {
   const Towers t = towers(3.0, 20, true);
@@ -118,12 +118,15 @@ TEST(CollisionVerifier, TiltedAxisAndTipClearance) {
 TEST(CollisionVerifier, ManyPointsMatchBruteForce) {
   // Random cloud with random axes: the kd-tree query must agree with an all-pairs check.
   std::srand(7);
-  auto rnd = [] { return std::rand() / double(RAND_MAX); };
+  auto rnd = [] {
+    return std::rand() / double(RAND_MAX);
+  };
   std::vector<V> p, n;
   std::vector<int> time;
   for (int i = 0; i < 1500; ++i) {
     // Every third point has a close neighbour, so the tip clearance and face radius matter.
-    p.push_back(i % 3 == 2 ? V(p.back() + 0.4 * V(rnd() - 0.5, rnd() - 0.5, rnd())) : V(20 * rnd(), 20 * rnd(), 20 * rnd()));
+    p.push_back(i % 3 == 2 ? V(p.back() + 0.4 * V(rnd() - 0.5, rnd() - 0.5, rnd()))
+                           : V(20 * rnd(), 20 * rnd(), 20 * rnd()));
     n.push_back(V(rnd() - 0.5, rnd() - 0.5, 1.0).normalized());
     time.push_back(static_cast<int>(30 * rnd()));
   }
@@ -138,10 +141,12 @@ TEST(CollisionVerifier, ManyPointsMatchBruteForce) {
   for (size_t k = 0; k < p.size(); ++k) {
     bool hit = false;
     for (size_t q = 0; q < p.size() && !hit; ++q) {
-      if (time[q] >= time[k]) continue;
+      if (time[q] >= time[k])
+        continue;
       const V d = p[q] - p[k];
       const double h = d.dot(n[k]);
-      if (h <= 0.05) continue;
+      if (h <= 0.05)
+        continue;
       if (d.norm() <= 0.2) {
         nearTip += h * h > d.squaredNorm() * c2;  // inside the cone but under the tip face
         continue;
@@ -160,10 +165,13 @@ TEST(CollisionVerifier, ManyPointsMatchBruteForce) {
 TEST(CollisionVerifier, BadInput) {
   const std::vector<V> p = {V(0, 0, 0), V(0, 0, 1)};
   const std::vector<V> n = {V(0, 0, 1), V(0, 0, 1)};
-  EXPECT_THROW(verifyNozzleClearance(p, n, {0}, cone(45)), GeoLatticeError);                     // sizes
-  EXPECT_THROW(verifyNozzleClearance(p, {V(0, 0, 1), V::Zero()}, {0, 1}, cone(45)), GeoLatticeError);  // zero axis
-  EXPECT_THROW(verifyNozzleClearance({V(0, 0, 0), V(0, 0, NAN)}, n, {0, 1}, cone(45)), GeoLatticeError);
-  EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, cone(0)), GeoLatticeError);   // NA outside (0, 90)
+  EXPECT_THROW(verifyNozzleClearance(p, n, {0}, cone(45)), GeoLatticeError);  // sizes
+  EXPECT_THROW(verifyNozzleClearance(p, {V(0, 0, 1), V::Zero()}, {0, 1}, cone(45)),
+               GeoLatticeError);  // zero axis
+  EXPECT_THROW(verifyNozzleClearance({V(0, 0, 0), V(0, 0, NAN)}, n, {0, 1}, cone(45)),
+               GeoLatticeError);
+  EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, cone(0)),
+               GeoLatticeError);  // NA outside (0, 90)
   EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, cone(90)), GeoLatticeError);
   EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, cone(-5)), GeoLatticeError);
   NozzleModel bad = cone(45);

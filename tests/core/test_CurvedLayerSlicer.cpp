@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstring>
 
-
 using namespace geolattice;
 
 namespace {
@@ -42,13 +41,13 @@ double triangleArea(const CurvedLayers& layers, const std::array<int, 3>& t) {
   return 0.5 * (layers.points[t[1]] - a).cross(layers.points[t[2]] - a).norm();
 }
 
-} // namespace
+}  // namespace
 
 TEST(CurvedLayerSlicer, LayerCountFormula) {
   SlicerOptions o;
   o.interval = 0.6;
   o.firstLayerOffset = 0.6;
-  EXPECT_EQ(layerCount(60.0, o), 100); // floor((60 - 0.6) / 0.6) + 1
+  EXPECT_EQ(layerCount(60.0, o), 100);  // floor((60 - 0.6) / 0.6) + 1
   EXPECT_EQ(layerCount(0.59, o), 0);
   EXPECT_EQ(layerCount(0.6, o), 1);
   o.firstLayerOffset = 0.25;
@@ -66,7 +65,7 @@ TEST(CurvedLayerSlicer, BoxLayersArePlanesEvenThroughMeshVertices) {
   o.firstLayerOffset = 0.5;
   const CurvedLayers layers = sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o);
   ASSERT_EQ(static_cast<int>(layers.layerValues.size()), layerCount(60.0, o));
-  ASSERT_EQ(layers.layerValues.size(), 120u); // the top face z = 60 is the last layer
+  ASSERT_EQ(layers.layerValues.size(), 120u);  // the top face z = 60 is the last layer
   for (size_t l = 0; l < layers.layerValues.size(); ++l) {
     const int L = static_cast<int>(l);
     double area = 0;
@@ -75,7 +74,8 @@ TEST(CurvedLayerSlicer, BoxLayersArePlanesEvenThroughMeshVertices) {
       ASSERT_GT(a, 0.0);
       area += a;
       const auto& t = layers.triangles[k];
-      const Vec3 n = (layers.points[t[1]] - layers.points[t[0]]).cross(layers.points[t[2]] - layers.points[t[0]]);
+      const Vec3 n = (layers.points[t[1]] - layers.points[t[0]])
+                         .cross(layers.points[t[2]] - layers.points[t[0]]);
       ASSERT_GT(n.z(), 0.0) << "triangle normals follow +∇γ";
     }
     EXPECT_NEAR(area, 1600.0, 1e-8) << "layer " << l << " at z = " << layers.layerValues[l];
@@ -87,7 +87,7 @@ TEST(CurvedLayerSlicer, BoxLayersArePlanesEvenThroughMeshVertices) {
     }
     expectEdgeManifoldAndOriented(layers, L);
   }
-  EXPECT_GT(layers.droppedDegenerateTriangles, 0); // the exact hits did occur
+  EXPECT_GT(layers.droppedDegenerateTriangles, 0);  // the exact hits did occur
 }
 
 TEST(CurvedLayerSlicer, PointsKeepTheirSourceEdgeAndExactGamma) {
@@ -144,7 +144,7 @@ TEST(CurvedLayerSlicer, BadOptionsAreReported) {
   o.interval = -1;
   EXPECT_THROW(sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o), GeoLatticeError);
   o = SlicerOptions{};
-  o.interval = 20; // larger than γ_max = 10 with offset = interval: no layer
+  o.interval = 20;  // larger than γ_max = 10 with offset = interval: no layer
   o.firstLayerOffset = 20;
   try {
     sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o);
@@ -155,8 +155,11 @@ TEST(CurvedLayerSlicer, BadOptionsAreReported) {
   o = SlicerOptions{};
   o.firstLayer = 1000;
   EXPECT_THROW(sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o), GeoLatticeError);
-  EXPECT_THROW(sliceCurvedLayers(mesh, f.gamma.head(3), f.alpha, f.beta, f.normals, SlicerOptions{}), GeoLatticeError);
-  EXPECT_THROW(sliceCurvedLayers(TetMesh{}, f.gamma, f.alpha, f.beta, f.normals, SlicerOptions{}), GeoLatticeError);
+  EXPECT_THROW(
+      sliceCurvedLayers(mesh, f.gamma.head(3), f.alpha, f.beta, f.normals, SlicerOptions{}),
+      GeoLatticeError);
+  EXPECT_THROW(sliceCurvedLayers(TetMesh{}, f.gamma, f.alpha, f.beta, f.normals, SlicerOptions{}),
+               GeoLatticeError);
 }
 
 TEST(LayerStatistics, SpacingOfPlanesAndTheSameForEveryThreadCount) {
@@ -166,7 +169,8 @@ TEST(LayerStatistics, SpacingOfPlanesAndTheSameForEveryThreadCount) {
   SlicerOptions o;
   o.interval = 0.5;
   o.firstLayerOffset = 0.5;
-  const CurvedLayers flat = sliceCurvedLayers(box, planes.gamma, planes.alpha, planes.beta, planes.normals, o);
+  const CurvedLayers flat =
+      sliceCurvedLayers(box, planes.gamma, planes.alpha, planes.beta, planes.normals, o);
   const std::vector<LayerStatistics> s = computeLayerStatistics(flat);
   ASSERT_EQ(s.size(), flat.layerValues.size());
   for (size_t l = 0; l + 1 < s.size(); ++l) {
@@ -194,10 +198,11 @@ TEST(LayerStatistics, SpacingOfPlanesAndTheSameForEveryThreadCount) {
     const std::vector<LayerStatistics> many = computeLayerStatistics(layers, threads);
     ASSERT_EQ(many.size(), one.size());
     for (size_t l = 0; l < one.size(); ++l) {
-      for (auto field : {&LayerStatistics::value, &LayerStatistics::area, &LayerStatistics::spacingMin,
-                         &LayerStatistics::spacingMean, &LayerStatistics::spacingMax}) {
+      for (auto field :
+           {&LayerStatistics::value, &LayerStatistics::area, &LayerStatistics::spacingMin,
+            &LayerStatistics::spacingMean, &LayerStatistics::spacingMax}) {
         EXPECT_EQ(std::memcmp(&(one[l].*field), &(many[l].*field), sizeof(double)), 0)
-          << "layer " << l << ", " << threads << " threads";
+            << "layer " << l << ", " << threads << " threads";
       }
       EXPECT_EQ(one[l].triangles, many[l].triangles);
       EXPECT_EQ(one[l].points, many[l].points);

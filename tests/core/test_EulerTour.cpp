@@ -30,8 +30,8 @@ LatticeGraph boxLattice() {
     alpha[i] = mesh.points[i].y();
     beta[i] = mesh.points[i].x();
   }
-  const CurvedLayers layers =
-      sliceCurvedLayers(mesh, gamma, alpha, beta, vertexGradientDirections(mesh, gamma), SlicerOptions{});
+  const CurvedLayers layers = sliceCurvedLayers(
+      mesh, gamma, alpha, beta, vertexGradientDirections(mesh, gamma), SlicerOptions{});
   LatticeOptions o;
   o.alphaWidth = o.betaWidth = 4.0;
   o.alphaPhase = o.betaPhase = 1.1;
@@ -41,15 +41,17 @@ LatticeGraph boxLattice() {
 LatticeGraph realLattice(const std::string& file, double size, double edge, double width) {
   TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/" + file);
   Eigen::AlignedBox3d box;
-  for (const Vec3& p : s.points) box.extend(p);
+  for (const Vec3& p : s.points)
+    box.extend(p);
   const double scale = size / box.sizes().maxCoeff();  // largest side = size (mm)
-  for (Vec3& p : s.points) p = (p - box.min()) * scale;
+  for (Vec3& p : s.points)
+    p = (p - box.min()) * scale;
   TetrahedralizeOptions t;
   t.targetEdgeLength = edge;
   const TetMesh mesh = tetrahedralizeSurface(s, t).mesh;
   const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
-  const CurvedLayers layers =
-      sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
+  const CurvedLayers layers = sliceCurvedLayers(
+      mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
   LatticeOptions o;
   o.alphaWidth = o.betaWidth = width;
   return buildLatticeGraph(layers, o);
@@ -60,7 +62,8 @@ void expectPrintable(const char* name, const LatticeGraph& g) {
   const auto t0 = std::chrono::steady_clock::now();
   const TrimResult trim = trimToEulerian(g);
   const EulerTours tours = nonCrossingEulerTours(g, trim.kept);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   // Only boundary edges are trimmed (unless the odd-loop fallback ran).
   int keptEdges = 0;
   for (size_t e = 0; e < g.edges.size(); ++e) {
@@ -72,7 +75,8 @@ void expectPrintable(const char* name, const LatticeGraph& g) {
   // Every kept edge exactly once, deleted ones never.
   std::vector<int> uses(g.edges.size(), 0);
   for (const auto& t : tours.edges) {
-    for (int e : t) ++uses[e];
+    for (int e : t)
+      ++uses[e];
   }
   for (size_t e = 0; e < g.edges.size(); ++e) {
     ASSERT_EQ(uses[e], trim.kept[e] ? 1 : 0) << name << " edge " << e;
@@ -88,13 +92,17 @@ void expectPrintable(const char* name, const LatticeGraph& g) {
   }
   // One tour per sub-graph piece: retractions = sub-graphs - 1 unless a split is reported.
   int pieces = 0;
-  for (int c : trim.componentCount) pieces += c;
+  for (int c : trim.componentCount)
+    pieces += c;
   EXPECT_EQ(static_cast<int>(tours.edges.size()), pieces) << name;
   EXPECT_EQ(countTourCrossovers(g, tours), 0) << name;
-  std::printf("[toolpath] %s: %zu sub-graphs, %zu edges (%d kept), trimmed %d boundary edges (%.1f mm), odd loops %d, "
-              "T-join edges %d, split %d, %zu tours, %d switches, %d high-degree vertices, %.3f s\n",
-              name, g.subgraphs.size(), g.edges.size(), keptEdges, trim.trimmedEdges, trim.trimmedLength, trim.oddLoops,
-              trim.tJoinEdges, trim.splitSubgraphs, tours.edges.size(), tours.switches, tours.highDegreeVertices, seconds);
+  std::printf(
+      "[toolpath] %s: %zu sub-graphs, %zu edges (%d kept), trimmed %d boundary edges (%.1f mm), "
+      "odd loops %d, "
+      "T-join edges %d, split %d, %zu tours, %d switches, %d high-degree vertices, %.3f s\n",
+      name, g.subgraphs.size(), g.edges.size(), keptEdges, trim.trimmedEdges, trim.trimmedLength,
+      trim.oddLoops, trim.tJoinEdges, trim.splitSubgraphs, tours.edges.size(), tours.switches,
+      tours.highDegreeVertices, seconds);
 }
 
 /// A square ring of boundary edges around (cx, cy), z = 0, with `n` points per side.
@@ -103,8 +111,10 @@ int addSquareLoop(LatticeGraph& g, double cx, double cy, double half, int n, int
   for (int side = 0; side < 4; ++side) {
     for (int i = 0; i < n; ++i) {
       const double t = -half + 2 * half * i / n;
-      const Vec3 p = side == 0 ? Vec3(cx + t, cy - half, 0) : side == 1 ? Vec3(cx + half, cy + t, 0)
-                   : side == 2 ? Vec3(cx - t, cy + half, 0) : Vec3(cx - half, cy - t, 0);
+      const Vec3 p = side == 0   ? Vec3(cx + t, cy - half, 0)
+                     : side == 1 ? Vec3(cx + half, cy + t, 0)
+                     : side == 2 ? Vec3(cx - t, cy + half, 0)
+                                 : Vec3(cx - half, cy - t, 0);
       g.points.push_back(p);
     }
   }
@@ -123,7 +133,7 @@ void finish(LatticeGraph& g, int subgraphs) {
   g.subgraphs.resize(subgraphs);
 }
 
-} // namespace
+}  // namespace
 
 TEST(EulerTour, BoxLatticeOneTourPerSubgraph) {
   LatticeGraph g = boxLattice();
@@ -145,9 +155,13 @@ TEST(EulerTour, BoxLatticeOneTourPerSubgraph) {
   EXPECT_GT(trim.trimmedEdges, 0);
 }
 
-TEST(EulerTour, ThreeBranchTree) { expectPrintable("three-branch tree", realLattice("three_branch_tree.obj", 54.0, 2.0, 4.0)); }
+TEST(EulerTour, ThreeBranchTree) {
+  expectPrintable("three-branch tree", realLattice("three_branch_tree.obj", 54.0, 2.0, 4.0));
+}
 
-TEST(EulerTour, Bunny) { expectPrintable("bunny 80 mm", realLattice("bunny.obj", 80.0, 2.5, 6.0)); }
+TEST(EulerTour, Bunny) {
+  expectPrintable("bunny 80 mm", realLattice("bunny.obj", 80.0, 2.5, 6.0));
+}
 
 TEST(EulerTour, RingWithOneSpokeIsSplitAndReported) {
   // Outer and inner loop joined by one isoline: each loop has one odd vertex, so chains cannot
@@ -195,7 +209,8 @@ TEST(EulerTour, CrossingTurnsInsteadOfGoingStraight) {
       // Swap the two passes' outgoing halves: turning pairs become straight ones.
       std::vector<int> e = tours.edges[0];
       size_t second = i + 1;
-      while (second + 1 < vs.size() && vs[second] != centre) ++second;
+      while (second + 1 < vs.size() && vs[second] != centre)
+        ++second;
       ASSERT_LT(second + 1, vs.size());
       std::reverse(e.begin() + i, e.begin() + second);
       std::vector<int> v(vs.begin(), vs.end());

@@ -16,12 +16,14 @@ using namespace geolattice;
 namespace {
 
 Eigen::Matrix3d tableRotation(TableKinematics k, double tilt, double c) {
-  const Eigen::Vector3d axis = k == TableKinematics::AC ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
-  return (Eigen::AngleAxisd(tilt * M_PI / 180, axis) * Eigen::AngleAxisd(c * M_PI / 180, Eigen::Vector3d::UnitZ()))
+  const Eigen::Vector3d axis =
+      k == TableKinematics::AC ? Eigen::Vector3d::UnitX() : Eigen::Vector3d::UnitY();
+  return (Eigen::AngleAxisd(tilt * M_PI / 180, axis) *
+          Eigen::AngleAxisd(c * M_PI / 180, Eigen::Vector3d::UnitZ()))
       .toRotationMatrix();
 }
 
-} // namespace
+}  // namespace
 
 TEST(FiveAxisGCode, AnglesTurnTheAxisUp) {
   std::mt19937 rng(3);
@@ -61,9 +63,11 @@ TEST(FiveAxisGCode, TableTurnsSmoothlyNearThePole) {
   std::vector<double> e, f;
   std::vector<int> kind;
   for (int i = 0; i < 200; ++i) {
-    const double a = u(rng), t = (i < 100 ? 0.3 : 0.3 + 0.2 * (i - 100)) * M_PI / 180;  // then a tilt ramp
+    const double a = u(rng),
+                 t = (i < 100 ? 0.3 : 0.3 + 0.2 * (i - 100)) * M_PI / 180;  // then a tilt ramp
     p.push_back(Eigen::Vector3d(i * 0.5, 0, 0.6));
-    n.push_back(Eigen::Vector3d(std::sin(t) * std::cos(i < 100 ? a : 0.3), std::sin(t) * std::sin(i < 100 ? a : 0.3), std::cos(t)));
+    n.push_back(Eigen::Vector3d(std::sin(t) * std::cos(i < 100 ? a : 0.3),
+                                std::sin(t) * std::sin(i < 100 ? a : 0.3), std::cos(t)));
     e.push_back(0.01 * i);
     f.push_back(10);
     kind.push_back(0);
@@ -106,13 +110,15 @@ TEST(FiveAxisGCode, ProgramAndCsv) {
   while (std::getline(lines, line) && line.rfind("G0 X", 0) != 0) {
   }
   double gx, gy, gz, ga, gc;
-  ASSERT_EQ(std::sscanf(line.c_str(), "G0 X%lf Y%lf Z%lf A%lf C%lf", &gx, &gy, &gz, &ga, &gc), 5) << line;
+  ASSERT_EQ(std::sscanf(line.c_str(), "G0 X%lf Y%lf Z%lf A%lf C%lf", &gx, &gy, &gz, &ga, &gc), 5)
+      << line;
   const Eigen::Matrix3d rotation = tableRotation(TableKinematics::AC, ga, gc);
   const Eigen::Vector3d x = o.pivot + rotation * (p[0] + o.partOffset);
   EXPECT_NEAR(gx, x.x(), 2e-6);
   EXPECT_NEAR(gy, x.y(), 2e-6);
   EXPECT_NEAR(gz, x.z(), 2e-6);
-  EXPECT_LE(std::acos(std::clamp((rotation * n[0]).z(), -1.0, 1.0)) * 180 / M_PI, o.axisToleranceDeg + 1e-4);
+  EXPECT_LE(std::acos(std::clamp((rotation * n[0]).z(), -1.0, 1.0)) * 180 / M_PI,
+            o.axisToleranceDeg + 1e-4);
   // The exact angles are within the tolerance of these.
   double tilt, c;
   tableAngles(TableKinematics::AC, n[0], gc, 0.01, tilt, c);

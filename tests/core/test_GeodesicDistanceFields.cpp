@@ -42,11 +42,12 @@ const TetMesh& boxMesh() {
 }
 
 const GeodesicFields& boxFields() {
-  static const GeodesicFields fields = computeGeodesicDistanceFields(boxMesh(), sourcesNearLowestZ(boxMesh(), 1e-6));
+  static const GeodesicFields fields =
+      computeGeodesicDistanceFields(boxMesh(), sourcesNearLowestZ(boxMesh(), 1e-6));
   return fields;
 }
 
-} // namespace
+}  // namespace
 
 TEST(TetLaplacian, DivergenceOfGradientIsStiffnessTimesField) {
   const TetMesh mesh = boxTetMesh(Vec3(2, 3, 4), 3, 3, 4);
@@ -95,9 +96,11 @@ TEST(GeodesicDistanceFields, BoxGammaIsHeightAlphaBetaAreAffine) {
   EXPECT_LT(beta.max, 0.02 * 40);
   RecordProperty("gamma_mean_rel_pct", std::to_string(100 * gamma.mean / 60));
   RecordProperty("gamma_max_rel_pct", std::to_string(100 * gamma.max / 60));
-  std::printf("box: gamma mean %.4f%% max %.4f%%, alpha mean %.4f%% max %.4f%%, beta mean %.4f%% max %.4f%%\n",
-              100 * gamma.mean / 60, 100 * gamma.max / 60, 100 * alpha.mean / 40, 100 * alpha.max / 40,
-              100 * beta.mean / 40, 100 * beta.max / 40);
+  std::printf(
+      "box: gamma mean %.4f%% max %.4f%%, alpha mean %.4f%% max %.4f%%, beta mean %.4f%% max "
+      "%.4f%%\n",
+      100 * gamma.mean / 60, 100 * gamma.max / 60, 100 * alpha.mean / 40, 100 * alpha.max / 40,
+      100 * beta.mean / 40, 100 * beta.max / 40);
   for (int s : sources) {
     EXPECT_EQ(f.gamma[s], 0.0);
   }
@@ -140,7 +143,8 @@ TEST(GeodesicDistanceFields, BallGammaIsDistanceToTheCentralBall) {
     }
   }
   relative /= count;
-  std::printf("ball: mean relative error of γ vs |x| - 2: %.3f%% over %d vertices\n", 100 * relative, count);
+  std::printf("ball: mean relative error of γ vs |x| - 2: %.3f%% over %d vertices\n",
+              100 * relative, count);
   EXPECT_LT(relative, 0.02);
 }
 
@@ -162,9 +166,10 @@ TEST(GeodesicDistanceFields, DirectionsAreOrthonormalPerTet) {
 TEST(GeodesicDistanceFields, ReferenceParallelToGammaFallsBackAndIsReported) {
   const TetMesh mesh = boxTetMesh(Vec3(10, 10, 20), 5, 5, 10);
   GeodesicFieldOptions options;
-  options.reference = Vec3(0, 0, 1); // (nearly) parallel to g_γ everywhere
+  options.reference = Vec3(0, 0, 1);  // (nearly) parallel to g_γ everywhere
   options.referenceParallelDeg = 45;
-  const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 1e-6), options);
+  const GeodesicFields f =
+      computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 1e-6), options);
   EXPECT_GT(f.referenceFallbackTets, static_cast<int>(mesh.tets.size()) * 9 / 10);
   for (size_t t = 0; t < mesh.tets.size(); ++t) {
     ASSERT_TRUE(f.alphaDirection[t].allFinite());
@@ -172,7 +177,7 @@ TEST(GeodesicDistanceFields, ReferenceParallelToGammaFallsBackAndIsReported) {
     ASSERT_LT(std::abs(f.alphaDirection[t].dot(f.gammaDirection[t])), 1e-9);
   }
   EXPECT_TRUE(f.alpha.allFinite());
-  EXPECT_GT(f.alpha.maxCoeff(), 9.0); // a real field across the box, not zero
+  EXPECT_GT(f.alpha.maxCoeff(), 9.0);  // a real field across the box, not zero
 }
 
 TEST(GeodesicDistanceFields, SourceSelectionsAgreeOnTheBox) {
@@ -215,15 +220,16 @@ TEST(GeodesicDistanceFields, SolverIsReusedForNewSources) {
   const GeodesicFields fromTop = solver.solve(top);
   const GeodesicFields again = solver.solve(bottom);
   // The cached factorizations give the same answers as a fresh solver.
-  EXPECT_LT((fromTop.gamma - computeGeodesicDistanceFields(mesh, top).gamma).lpNorm<Eigen::Infinity>(), 1e-10);
+  EXPECT_LT(
+      (fromTop.gamma - computeGeodesicDistanceFields(mesh, top).gamma).lpNorm<Eigen::Infinity>(),
+      1e-10);
   EXPECT_LT((again.gamma - first.gamma).lpNorm<Eigen::Infinity>(), 1e-12);
   double meanTop = 0;
   for (int v : top) {
     EXPECT_EQ(fromTop.gamma[v], 0.0);
     meanTop += first.gamma[v] / static_cast<double>(top.size());
   }
-  EXPECT_NEAR(meanTop, 10.0, 0.3); // coarse 2 mm Kuhn mesh: corners are off by up to ~1 mm
-
+  EXPECT_NEAR(meanTop, 10.0, 0.3);  // coarse 2 mm Kuhn mesh: corners are off by up to ~1 mm
 }
 
 TEST(GeodesicDistanceFields, BadInputIsReported) {

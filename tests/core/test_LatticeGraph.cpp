@@ -49,11 +49,16 @@ CurvedLayers sliceBox(const BoxFields& b, double interval, double offset) {
   SlicerOptions o;
   o.interval = interval;
   o.firstLayerOffset = offset;
-  return sliceCurvedLayers(b.mesh, b.gamma, b.alpha, b.beta, vertexGradientDirections(b.mesh, b.gamma), o);
+  return sliceCurvedLayers(b.mesh, b.gamma, b.alpha, b.beta,
+                           vertexGradientDirections(b.mesh, b.gamma), o);
 }
 
-const Field kAlphaOfBox = [](const Vec3& p) { return 40 - p.y(); };
-const Field kBetaOfBox = [](const Vec3& p) { return 40 - p.x(); };
+const Field kAlphaOfBox = [](const Vec3& p) {
+  return 40 - p.y();
+};
+const Field kBetaOfBox = [](const Vec3& p) {
+  return 40 - p.x();
+};
 
 /// Levels of a uniform lattice strictly inside (0, 40).
 int interiorLevels(double width, double phase) {
@@ -66,13 +71,14 @@ int interiorLevels(double width, double phase) {
 
 struct GridReport {
   int layers = 0;
-  int crossingsPerLayer = -1;     ///< the same on every layer, else -1
-  double maxSpacingError = 0;     ///< |spacing of neighbouring lines - width| (mm)
-  double maxLineDeviation = 0;    ///< distance of a vertex from its straight line (mm)
+  int crossingsPerLayer = -1;   ///< the same on every layer, else -1
+  double maxSpacingError = 0;   ///< |spacing of neighbouring lines - width| (mm)
+  double maxLineDeviation = 0;  ///< distance of a vertex from its straight line (mm)
 };
 
 /// Every layer of the box is the rectangular grid of lines y = 40 - φ^α_j, x = 40 - φ^β_k.
-GridReport expectRectangularGrid(const LatticeGraph& g, double width, double alphaPhase, double betaPhase) {
+GridReport expectRectangularGrid(const LatticeGraph& g, double width, double alphaPhase,
+                                 double betaPhase) {
   GridReport r;
   const int na = interiorLevels(width, alphaPhase), nb = interiorLevels(width, betaPhase);
   const StructureReport s = checkStructure(g, 1e-9);
@@ -93,7 +99,8 @@ GridReport expectRectangularGrid(const LatticeGraph& g, double width, double alp
       EXPECT_NEAR(g.points[v].z(), g.layerValues[l], 1e-9);
       EXPECT_EQ(g.gamma[v], g.layerValues[l]);
       if (g.vertexKind[v] == LatticeVertexKind::Crossing) {
-        EXPECT_TRUE(crossings.insert({g.alphaLevel[v], g.betaLevel[v]}).second) << "two crossings of the same lines";
+        EXPECT_TRUE(crossings.insert({g.alphaLevel[v], g.betaLevel[v]}).second)
+            << "two crossings of the same lines";
         EXPECT_NEAR(g.points[v].x(), 40 - g.betaLevels[g.betaLevel[v]], 1e-9);
         EXPECT_NEAR(g.points[v].y(), 40 - g.alphaLevels[g.alphaLevel[v]], 1e-9);
       }
@@ -105,14 +112,17 @@ GridReport expectRectangularGrid(const LatticeGraph& g, double width, double alp
       const Vec3& q = g.points[g.edges[e][1]];
       if (g.edgeKind[e] == LatticeEdgeKind::Alpha) {
         const double y = 40 - g.alphaLevels[g.edgeLevel[e]];
-        r.maxLineDeviation = std::max({r.maxLineDeviation, std::abs(p.y() - y), std::abs(q.y() - y)});
+        r.maxLineDeviation =
+            std::max({r.maxLineDeviation, std::abs(p.y() - y), std::abs(q.y() - y)});
         alphaLineY[g.edgeLevel[e]] = y;
       } else if (g.edgeKind[e] == LatticeEdgeKind::Beta) {
         const double x = 40 - g.betaLevels[g.edgeLevel[e]];
-        r.maxLineDeviation = std::max({r.maxLineDeviation, std::abs(p.x() - x), std::abs(q.x() - x)});
+        r.maxLineDeviation =
+            std::max({r.maxLineDeviation, std::abs(p.x() - x), std::abs(q.x() - x)});
         betaLineX[g.edgeLevel[e]] = x;
       }
-      (g.edgeKind[e] == LatticeEdgeKind::Boundary ? boundaryLength : isolineLength) += (q - p).norm();
+      (g.edgeKind[e] == LatticeEdgeKind::Boundary ? boundaryLength : isolineLength) +=
+          (q - p).norm();
     }
     const int nc = static_cast<int>(crossings.size());
     r.crossingsPerLayer = l == 0 ? nc : (r.crossingsPerLayer == nc ? nc : -1);
@@ -124,7 +134,8 @@ GridReport expectRectangularGrid(const LatticeGraph& g, double width, double alp
     EXPECT_NEAR(boundaryLength, 160.0, 1e-9) << "layer " << l;
     for (const auto* lines : {&alphaLineY, &betaLineX}) {
       std::vector<double> pos;
-      for (const auto& [k, c] : *lines) pos.push_back(c);
+      for (const auto& [k, c] : *lines)
+        pos.push_back(c);
       std::sort(pos.begin(), pos.end());
       for (size_t i = 1; i < pos.size(); ++i) {
         r.maxSpacingError = std::max(r.maxSpacingError, std::abs(pos[i] - pos[i - 1] - width));
@@ -137,12 +148,13 @@ GridReport expectRectangularGrid(const LatticeGraph& g, double width, double alp
 }
 
 void printGrid(const char* name, const GridReport& r, const LatticeGraph& g) {
-  std::printf("[lattice] %s: %d layers, crossings/layer %d, spacing error %.2e mm, line deviation %.2e mm, "
-              "V %zu E %zu, point crossings %d, edge crossings %d, boundary segments %d, touching %d, "
-              "merged diagonal points %d\n",
-              name, r.layers, r.crossingsPerLayer, r.maxSpacingError, r.maxLineDeviation, g.points.size(),
-              g.edges.size(), g.stats.pointCrossings, g.stats.edgeCrossings, g.stats.boundarySegments,
-              g.stats.touchingSegments, g.stats.mergedDiagonalPoints);
+  std::printf(
+      "[lattice] %s: %d layers, crossings/layer %d, spacing error %.2e mm, line deviation %.2e mm, "
+      "V %zu E %zu, point crossings %d, edge crossings %d, boundary segments %d, touching %d, "
+      "merged diagonal points %d\n",
+      name, r.layers, r.crossingsPerLayer, r.maxSpacingError, r.maxLineDeviation, g.points.size(),
+      g.edges.size(), g.stats.pointCrossings, g.stats.edgeCrossings, g.stats.boundarySegments,
+      g.stats.touchingSegments, g.stats.mergedDiagonalPoints);
 }
 
 /// A hand-made layer set: each layer is a union of axis-aligned rectangles triangulated as
@@ -152,7 +164,8 @@ struct Rect {
   int nx, ny;
 };
 
-CurvedLayers gridLayers(const std::vector<std::vector<Rect>>& spec, const Field& alpha, const Field& beta) {
+CurvedLayers gridLayers(const std::vector<std::vector<Rect>>& spec, const Field& alpha,
+                        const Field& beta) {
   CurvedLayers c;
   c.layerPointOffset.push_back(0);
   c.layerTriangleOffset.push_back(0);
@@ -169,7 +182,9 @@ CurvedLayers gridLayers(const std::vector<std::vector<Rect>>& spec, const Field&
           c.pointLayer.push_back(static_cast<int>(l));
         }
       }
-      auto id = [&](int i, int j) { return base + i + (r.nx + 1) * j; };
+      auto id = [&](int i, int j) {
+        return base + i + (r.nx + 1) * j;
+      };
       for (int j = 0; j < r.ny; ++j) {
         for (int i = 0; i < r.nx; ++i) {
           c.triangles.push_back({id(i, j), id(i + 1, j), id(i + 1, j + 1)});
@@ -203,7 +218,7 @@ std::string errorOf(const std::function<void()>& f) {
   return "(no error)";
 }
 
-} // namespace
+}  // namespace
 
 // Layers through the tet vertices (z = 4k with 4 mm cells): every layer mesh is the 10 x 10 grid
 // of the cell faces and every isoline runs along layer-mesh edges through layer points.
@@ -215,8 +230,8 @@ TEST(LatticeGraph, BoxGridWithIsolinesAlongLayerMeshEdges) {
   const GridReport r = expectRectangularGrid(g, 4.0, 0.0, 0.0);
   printGrid("box, levels on layer points and edges", r, g);
   EXPECT_EQ(r.crossingsPerLayer, 81);
-  EXPECT_EQ(g.stats.pointCrossings, 81 * 15); // every crossing is an exact hit at a layer point
-  EXPECT_GT(g.stats.boundarySegments, 0);     // α = 40 (y = 0) and β = 40 (x = 0) lie on the boundary
+  EXPECT_EQ(g.stats.pointCrossings, 81 * 15);  // every crossing is an exact hit at a layer point
+  EXPECT_GT(g.stats.boundarySegments, 0);  // α = 40 (y = 0) and β = 40 (x = 0) lie on the boundary
   EXPECT_EQ(g.stats.crossings, 81 * 15);
   EXPECT_EQ(g.stats.boundaryHits, 36 * 15);
 }
@@ -276,7 +291,8 @@ TEST(LatticeGraph, BoxGridWithCrossingsOnInteriorLayerPoints) {
 // Hand-made grid of 2 mm squares split along (1,1): with phase 1 every crossing lies at the
 // middle of a diagonal edge, where the α- and β-point coincide exactly (one vertex).
 TEST(LatticeGraph, CrossingsExactlyOnLayerMeshEdgesAreOneVertex) {
-  const CurvedLayers layers = gridLayers({{{0, 0, 40, 40, 20, 20}}, {{0, 0, 40, 40, 20, 20}}}, kAlphaOfBox, kBetaOfBox);
+  const CurvedLayers layers =
+      gridLayers({{{0, 0, 40, 40, 20, 20}}, {{0, 0, 40, 40, 20, 20}}}, kAlphaOfBox, kBetaOfBox);
   const LatticeGraph g = buildLatticeGraph(layers, phases(1.0, 1.0));
   const GridReport r = expectRectangularGrid(g, 4.0, 1.0, 1.0);
   printGrid("grid, crossings on diagonal edges", r, g);
@@ -299,28 +315,35 @@ TEST(LatticeGraph, QuadDiagonalPointsAreMergedIntoThePapersGraph) {
   EXPECT_EQ(gk.edges.size(), gm.edges.size() + gm.stats.mergedDiagonalPoints);
   EXPECT_EQ(gk.stats.crossings, gm.stats.crossings);
   double lk = 0, lm = 0;
-  for (const auto& s : gk.subgraphs) lk += s.length;
-  for (const auto& s : gm.subgraphs) lm += s.length;
+  for (const auto& s : gk.subgraphs)
+    lk += s.length;
+  for (const auto& s : gm.subgraphs)
+    lm += s.length;
   EXPECT_NEAR(lk, lm, 1e-9 * lk);
   long onFaces = 0;
   for (size_t v = 0; v < gm.points.size(); ++v) {
-    onFaces += gm.vertexKind[v] == LatticeVertexKind::IsolinePoint || gm.vertexKind[v] == LatticeVertexKind::BoundaryHit;
+    onFaces += gm.vertexKind[v] == LatticeVertexKind::IsolinePoint ||
+               gm.vertexKind[v] == LatticeVertexKind::BoundaryHit;
   }
   EXPECT_EQ(onFaces, paperFacePointCount(b.mesh, b.gamma, b.alpha, b.beta, gm));
-  std::printf("[lattice] diagonal merge: %zu -> %zu vertices, %ld isoline points on tet faces (paper count)\n",
-              gk.points.size(), gm.points.size(), onFaces);
+  std::printf(
+      "[lattice] diagonal merge: %zu -> %zu vertices, %ld isoline points on tet faces (paper "
+      "count)\n",
+      gk.points.size(), gm.points.size(), onFaces);
 }
 
 // α = 20 - |y - 20| has a ridge at y = 20 where it equals the level 20 exactly: both triangles
 // along the ridge would emit the segment; the touch is dropped and every other level appears twice.
 TEST(LatticeGraph, RidgeAtALevelIsDropped) {
-  const Field ridge = [](const Vec3& p) { return 20 - std::abs(p.y() - 20); };
+  const Field ridge = [](const Vec3& p) {
+    return 20 - std::abs(p.y() - 20);
+  };
   const CurvedLayers layers = gridLayers({{{0, 0, 40, 40, 20, 20}}}, ridge, kBetaOfBox);
   const LatticeGraph g = buildLatticeGraph(layers);
   const StructureReport s = checkStructure(g, 1e-9);
   EXPECT_EQ(s.irregularVertices, 0);
   EXPECT_EQ(s.duplicateVertices, 0);
-  EXPECT_EQ(g.stats.ridgeSegments, 2 * 20); // 20 edges along y = 20, each from both sides
+  EXPECT_EQ(g.stats.ridgeSegments, 2 * 20);  // 20 edges along y = 20, each from both sides
   std::set<double> alphaLines;
   for (size_t e = 0; e < g.edges.size(); ++e) {
     if (g.edgeKind[e] == LatticeEdgeKind::Alpha) {
@@ -364,8 +387,12 @@ TEST(LatticeGraph, LevelThroughASaddlePointIsCountedAsIrregular) {
 // β-isolines at 0.057° to the α-isolines, on a mesh (37 x 37 squares) whose rows miss the levels: each β-line
 // crosses one α-line inside a thin sliver of a triangle; the crossing is found once, inside.
 TEST(LatticeGraph, NearlyParallelIsolinesCrossOnce) {
-  const Field alpha = [](const Vec3& p) { return p.y(); };
-  const Field beta = [](const Vec3& p) { return p.y() + 0.001 * p.x(); };
+  const Field alpha = [](const Vec3& p) {
+    return p.y();
+  };
+  const Field beta = [](const Vec3& p) {
+    return p.y() + 0.001 * p.x();
+  };
   const CurvedLayers layers = gridLayers({{{0, 0, 40, 40, 37, 37}}}, alpha, beta);
   const LatticeGraph g = buildLatticeGraph(layers, phases(2.0, 2.02));
   const StructureReport s = checkStructure(g, 1e-12);
@@ -375,7 +402,7 @@ TEST(LatticeGraph, NearlyParallelIsolinesCrossOnce) {
   const GeometryReport geo = checkGeometry(g, layers, 1e-12);
   EXPECT_EQ(geo.intersectingEdgePairs, 0);
   EXPECT_LT(geo.maxLevelError, 1e-9);
-  EXPECT_EQ(g.stats.crossings, 10); // β = 4k + 2.02 crosses α = 4k + 2 at x = 20, k = 0..9
+  EXPECT_EQ(g.stats.crossings, 10);  // β = 4k + 2.02 crosses α = 4k + 2 at x = 20, k = 0..9
   EXPECT_EQ(g.stats.boundaryHits, 40);
   for (size_t v = 0; v < g.points.size(); ++v) {
     if (g.vertexKind[v] == LatticeVertexKind::Crossing) {
@@ -383,8 +410,9 @@ TEST(LatticeGraph, NearlyParallelIsolinesCrossOnce) {
       EXPECT_NEAR(g.points[v].y(), g.alphaLevels[g.alphaLevel[v]], 1e-9);
     }
   }
-  std::printf("[lattice] nearly parallel lines: %d crossings, min separation of disjoint edges %.3g mm\n",
-              g.stats.crossings, geo.minSeparation);
+  std::printf(
+      "[lattice] nearly parallel lines: %d crossings, min separation of disjoint edges %.3g mm\n",
+      g.stats.crossings, geo.minSeparation);
 }
 
 // Two parts in one layer: a 40 x 40 square and a 2 x 2 square (no isoline, boundary only).
@@ -402,7 +430,8 @@ TEST(LatticeGraph, SubgraphsAndMinimumLength) {
   EXPECT_NEAR(big.centroid.x(), (160 * 20 + 400 * 20 + 400 * 19.9) / 960, 1e-9);
   EXPECT_NEAR(big.centroid.y(), (160 * 20 + 400 * 20.7 + 400 * 20) / 960, 1e-9);
   ASSERT_EQ(big.boundaryLoops.size(), 1u);
-  EXPECT_EQ(big.boundaryLoops[0].vertices.size(), 20u * 4 + 40); // grid points + hits on the boundary
+  EXPECT_EQ(big.boundaryLoops[0].vertices.size(),
+            20u * 4 + 40);  // grid points + hits on the boundary
   EXPECT_EQ(small.isolineEdgeCount, 0);
   EXPECT_NEAR(small.length, 8.0, 1e-12);
   EXPECT_EQ(small.boundaryLoops.size(), 1u);
@@ -440,11 +469,15 @@ TEST(LatticeGraph, ProgressAndAbort) {
   LatticeOptions o;
   o.threads = 1;
   std::vector<double> progress;
-  o.progress = [&](double f) { progress.push_back(f); };
+  o.progress = [&](double f) {
+    progress.push_back(f);
+  };
   buildLatticeGraph(layers, o);
   ASSERT_EQ(progress.size(), layers.layerValues.size());
   EXPECT_DOUBLE_EQ(progress.back(), 1.0);
-  o.shouldAbort = [] { return true; };
+  o.shouldAbort = [] {
+    return true;
+  };
   EXPECT_NE(errorOf([&] { buildLatticeGraph(layers, o); }).find("aborted"), std::string::npos);
 }
 
@@ -462,10 +495,12 @@ TEST(LatticeGraph, GradedLatticeFollowsTheWidthScale) {
   EXPECT_EQ(s.irregularVertices, 0);
   std::vector<double> alphaY, betaX;
   for (double c : g.alphaLevels) {
-    if (c > 0 && c < 40) alphaY.push_back(40 - c);
+    if (c > 0 && c < 40)
+      alphaY.push_back(40 - c);
   }
   for (double c : g.betaLevels) {
-    if (c > 0 && c < 40) betaX.push_back(40 - c);
+    if (c > 0 && c < 40)
+      betaX.push_back(40 - c);
   }
   std::sort(alphaY.begin(), alphaY.end());
   std::sort(betaX.begin(), betaX.end());
@@ -482,17 +517,22 @@ TEST(LatticeGraph, GradedLatticeFollowsTheWidthScale) {
     worst = std::max(worst, std::abs(betaX[i] - betaX[i - 1] - 2) / 2);
   }
   EXPECT_LT(worst, 0.01);
-  EXPECT_EQ(betaX.size(), 20u);                                                                  // 0.5, 2.5, .., 39.5
-  EXPECT_EQ(std::count_if(alphaY.begin(), alphaY.end(), [](double y) { return y < 18; }), 9);   // 1.25, .., 17.25
-  EXPECT_EQ(std::count_if(alphaY.begin(), alphaY.end(), [](double y) { return y > 19.9; }), 5); // 23, 27, .., 39
+  EXPECT_EQ(betaX.size(), 20u);  // 0.5, 2.5, .., 39.5
+  EXPECT_EQ(std::count_if(alphaY.begin(), alphaY.end(), [](double y) { return y < 18; }),
+            9);  // 1.25, .., 17.25
+  EXPECT_EQ(std::count_if(alphaY.begin(), alphaY.end(), [](double y) { return y > 19.9; }),
+            5);  // 23, 27, .., 39
   // Every layer: crossings = α-lines x β-lines.
   EXPECT_EQ(g.stats.crossings, static_cast<int>(alphaY.size() * betaX.size()) * 30);
-  std::printf("[lattice] graded: %zu α-lines (2 mm below y = 20, 4 mm above), %zu β-lines, worst spacing error %.2g %%\n",
-              alphaY.size(), betaX.size(), 100 * worst);
+  std::printf(
+      "[lattice] graded: %zu α-lines (2 mm below y = 20, 4 mm above), %zu β-lines, worst spacing "
+      "error %.2g %%\n",
+      alphaY.size(), betaX.size(), 100 * worst);
 }
 
 TEST(LatticeLevels, UniformLevels) {
-  EXPECT_EQ(uniformLatticeLevels(0, 12, 4, 0), (std::vector<double>{4, 8, 12}));   // 0 = min is left out
+  EXPECT_EQ(uniformLatticeLevels(0, 12, 4, 0),
+            (std::vector<double>{4, 8, 12}));  // 0 = min is left out
   EXPECT_EQ(uniformLatticeLevels(-1, 12, 4, 0), (std::vector<double>{0, 4, 8, 12}));
   EXPECT_EQ(uniformLatticeLevels(0, 12, 4, 1.5), (std::vector<double>{1.5, 5.5, 9.5}));
   EXPECT_EQ(uniformLatticeLevels(0, 12, 4, -2.5), (std::vector<double>{1.5, 5.5, 9.5}));
@@ -501,7 +541,7 @@ TEST(LatticeLevels, UniformLevels) {
   EXPECT_THROW(uniformLatticeLevels(0, 1, 0, 0), GeoLatticeError);
   EXPECT_THROW(uniformLatticeLevels(0, 1, -4, 0), GeoLatticeError);
   EXPECT_THROW(uniformLatticeLevels(0, 1, std::nan(""), 0), GeoLatticeError);
-  EXPECT_THROW(uniformLatticeLevels(0, 1e9, 1e-3, 0), GeoLatticeError); // 1e12 levels
+  EXPECT_THROW(uniformLatticeLevels(0, 1e9, 1e-3, 0), GeoLatticeError);  // 1e12 levels
 }
 
 TEST(LatticeLevels, GradedLevelsWithUnitScaleAreTheUniformOnes) {
@@ -537,7 +577,7 @@ TEST(LatticeGraph, WidthLargerThanThePartGivesAnEmptyLattice) {
   EXPECT_EQ(g.stats.isolineEdges, 0);
   EXPECT_EQ(g.stats.crossings, 0);
   EXPECT_EQ(g.stats.boundaryHits, 0);
-  ASSERT_EQ(g.subgraphs.size(), 1u); // the layer boundary alone remains
+  ASSERT_EQ(g.subgraphs.size(), 1u);  // the layer boundary alone remains
   EXPECT_NEAR(g.subgraphs[0].length, 160.0, 1e-9);
 }
 
@@ -545,7 +585,8 @@ TEST(LatticeGraph, BadInputIsReported) {
   const CurvedLayers good = gridLayers({{{0, 0, 8, 8, 2, 2}}}, kAlphaOfBox, kBetaOfBox);
   LatticeOptions o;
   o.alphaWidth = 0;
-  EXPECT_NE(errorOf([&] { buildLatticeGraph(good, o); }).find("width must be > 0"), std::string::npos);
+  EXPECT_NE(errorOf([&] { buildLatticeGraph(good, o); }).find("width must be > 0"),
+            std::string::npos);
   o = LatticeOptions{};
   o.betaWidth = -1;
   EXPECT_THROW(buildLatticeGraph(good, o), GeoLatticeError);
@@ -557,7 +598,8 @@ TEST(LatticeGraph, BadInputIsReported) {
   EXPECT_THROW(buildLatticeGraph(good, o), GeoLatticeError);
   o = LatticeOptions{};
   o.widthScale = {1.0, 2.0};
-  EXPECT_NE(errorOf([&] { buildLatticeGraph(good, o); }).find("width scale has 2 values"), std::string::npos);
+  EXPECT_NE(errorOf([&] { buildLatticeGraph(good, o); }).find("width scale has 2 values"),
+            std::string::npos);
 
   CurvedLayers bad = good;
   bad.alpha.pop_back();
@@ -567,7 +609,8 @@ TEST(LatticeGraph, BadInputIsReported) {
   EXPECT_NE(errorOf([&] { buildLatticeGraph(bad); }).find("point 3"), std::string::npos);
   bad = good;
   bad.triangles[1][2] = bad.triangles[1][0];
-  EXPECT_NE(errorOf([&] { buildLatticeGraph(bad); }).find("triangle 1 uses a point twice"), std::string::npos);
+  EXPECT_NE(errorOf([&] { buildLatticeGraph(bad); }).find("triangle 1 uses a point twice"),
+            std::string::npos);
   bad = good;
   bad.triangles[0][0] = 100;
   EXPECT_THROW(buildLatticeGraph(bad), GeoLatticeError);
@@ -576,7 +619,7 @@ TEST(LatticeGraph, BadInputIsReported) {
   EXPECT_THROW(buildLatticeGraph(bad), GeoLatticeError);
   // A third triangle on an edge: not edge-manifold.
   bad = good;
-  bad.triangles.push_back({0, 4, 2}); // (0, 4) is the diagonal of the first square
+  bad.triangles.push_back({0, 4, 2});  // (0, 4) is the diagonal of the first square
   bad.triangleLayer.push_back(0);
   bad.layerTriangleOffset.back() += 1;
   EXPECT_NE(errorOf([&] { buildLatticeGraph(bad); }).find("not edge-manifold"), std::string::npos);

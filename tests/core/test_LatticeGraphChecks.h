@@ -19,9 +19,9 @@
 namespace geolattice::testing {
 
 struct StructureReport {
-  int irregularVertices = 0;      ///< degree != 4/3/2 for crossing/boundary hit/other
+  int irregularVertices = 0;  ///< degree != 4/3/2 for crossing/boundary hit/other
   int oddBoundaryHitSubgraphs = 0;
-  int duplicateVertices = 0;      ///< two vertices of a layer closer than the tolerance
+  int duplicateVertices = 0;  ///< two vertices of a layer closer than the tolerance
   int zeroLengthEdges = 0;
   int crossings = 0;
   int boundaryHits = 0;
@@ -66,7 +66,9 @@ inline StructureReport checkStructure(const LatticeGraph& g, double tolerance) {
       kind = c[0] > 0 && c[1] > 0 ? LatticeVertexKind::Crossing : LatticeVertexKind::IsolinePoint;
     }
     EXPECT_EQ(kind, g.vertexKind[v]) << "vertex " << v;
-    const int expected = kind == LatticeVertexKind::Crossing ? 4 : kind == LatticeVertexKind::BoundaryHit ? 3 : 2;
+    const int expected = kind == LatticeVertexKind::Crossing      ? 4
+                         : kind == LatticeVertexKind::BoundaryHit ? 3
+                                                                  : 2;
     r.irregularVertices += degree != expected;
     r.crossings += kind == LatticeVertexKind::Crossing;
     r.boundaryHits += kind == LatticeVertexKind::BoundaryHit;
@@ -106,13 +108,15 @@ inline StructureReport checkStructure(const LatticeGraph& g, double tolerance) {
         }
       }
     }
-    EXPECT_EQ(reached, vertexCount[g.vertexSubgraph[v0]]) << "sub-graph " << g.vertexSubgraph[v0] << " is not connected";
+    EXPECT_EQ(reached, vertexCount[g.vertexSubgraph[v0]])
+        << "sub-graph " << g.vertexSubgraph[v0] << " is not connected";
   }
   // Boundary loops: closed, made of boundary edges, each boundary edge exactly once.
   std::map<std::pair<int, int>, int> boundaryUse;
   for (int e = 0; e < E; ++e) {
     if (g.edgeKind[e] == LatticeEdgeKind::Boundary) {
-      boundaryUse[{std::min(g.edges[e][0], g.edges[e][1]), std::max(g.edges[e][0], g.edges[e][1])}] = 0;
+      boundaryUse[{std::min(g.edges[e][0], g.edges[e][1]),
+                   std::max(g.edges[e][0], g.edges[e][1])}] = 0;
     }
   }
   for (const LatticeSubgraph& sg : g.subgraphs) {
@@ -138,9 +142,11 @@ inline StructureReport checkStructure(const LatticeGraph& g, double tolerance) {
   for (int l = 0; l < L; ++l) {
     std::vector<int> order(g.layerVertexOffset[l + 1] - g.layerVertexOffset[l]);
     std::iota(order.begin(), order.end(), g.layerVertexOffset[l]);
-    std::sort(order.begin(), order.end(), [&](int a, int b) { return g.points[a].x() < g.points[b].x(); });
+    std::sort(order.begin(), order.end(),
+              [&](int a, int b) { return g.points[a].x() < g.points[b].x(); });
     for (size_t i = 0; i < order.size(); ++i) {
-      for (size_t j = i + 1; j < order.size() && g.points[order[j]].x() - g.points[order[i]].x() <= tolerance; ++j) {
+      for (size_t j = i + 1;
+           j < order.size() && g.points[order[j]].x() - g.points[order[i]].x() <= tolerance; ++j) {
         r.duplicateVertices += (g.points[order[j]] - g.points[order[i]]).norm() <= tolerance;
       }
     }
@@ -182,10 +188,12 @@ inline double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, co
 inline Vec3 closestBarycentric(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c) {
   const Vec3 ab = b - a, ac = c - a, ap = p - a;
   const double d1 = ab.dot(ap), d2 = ac.dot(ap);
-  if (d1 <= 0 && d2 <= 0) return {1, 0, 0};
+  if (d1 <= 0 && d2 <= 0)
+    return {1, 0, 0};
   const Vec3 bp = p - b;
   const double d3 = ab.dot(bp), d4 = ac.dot(bp);
-  if (d3 >= 0 && d4 <= d3) return {0, 1, 0};
+  if (d3 >= 0 && d4 <= d3)
+    return {0, 1, 0};
   const double vc = d1 * d4 - d3 * d2;
   if (vc <= 0 && d1 >= 0 && d3 <= 0) {
     const double v = d1 / (d1 - d3);
@@ -193,7 +201,8 @@ inline Vec3 closestBarycentric(const Vec3& p, const Vec3& a, const Vec3& b, cons
   }
   const Vec3 cp = p - c;
   const double d5 = ab.dot(cp), d6 = ac.dot(cp);
-  if (d6 >= 0 && d5 <= d6) return {0, 0, 1};
+  if (d6 >= 0 && d5 <= d6)
+    return {0, 0, 1};
   const double vb = d5 * d2 - d1 * d6;
   if (vb <= 0 && d2 >= 0 && d6 <= 0) {
     const double w = d2 / (d2 - d6);
@@ -217,7 +226,8 @@ public:
     const auto a = cell(lo), b = cell(hi);
     for (long i = a[0]; i <= b[0]; ++i)
       for (long j = a[1]; j <= b[1]; ++j)
-        for (long k = a[2]; k <= b[2]; ++k) cells_[key(i, j, k)].push_back(id);
+        for (long k = a[2]; k <= b[2]; ++k)
+          cells_[key(i, j, k)].push_back(id);
   }
   const std::vector<int>& at(const Vec3& p) const {
     static const std::vector<int> none;
@@ -229,7 +239,8 @@ public:
 
 private:
   std::array<long, 3> cell(const Vec3& p) const {
-    return {static_cast<long>(std::floor((p.x() - origin_.x()) / h_)), static_cast<long>(std::floor((p.y() - origin_.y()) / h_)),
+    return {static_cast<long>(std::floor((p.x() - origin_.x()) / h_)),
+            static_cast<long>(std::floor((p.y() - origin_.y()) / h_)),
             static_cast<long>(std::floor((p.z() - origin_.z()) / h_))};
   }
   static long long key(long i, long j, long k) { return (i * 1000003LL + j) * 1000033LL + k; }
@@ -240,13 +251,16 @@ private:
 
 struct GeometryReport {
   double maxSurfaceDistance = 0;  ///< vertex to its layer's triangles (mm)
-  double maxLevelError = 0;       ///< |α - level| (|β - level|) interpolated at isoline vertices (mm)
-  int intersectingEdgePairs = 0;  ///< edges of a layer closer than the tolerance without a shared vertex
-  double minSeparation = std::numeric_limits<double>::infinity();  ///< of edge pairs without a shared vertex
+  double maxLevelError = 0;  ///< |α - level| (|β - level|) interpolated at isoline vertices (mm)
+  int intersectingEdgePairs =
+      0;  ///< edges of a layer closer than the tolerance without a shared vertex
+  double minSeparation =
+      std::numeric_limits<double>::infinity();  ///< of edge pairs without a shared vertex
 };
 
 /// Geometry against the input layers. tolerance: distance below which two edges count as meeting.
-inline GeometryReport checkGeometry(const LatticeGraph& g, const CurvedLayers& layers, double tolerance) {
+inline GeometryReport checkGeometry(const LatticeGraph& g, const CurvedLayers& layers,
+                                    double tolerance) {
   GeometryReport r;
   const int L = static_cast<int>(g.layerValues.size());
   for (int l = 0; l < L; ++l) {
@@ -261,7 +275,8 @@ inline GeometryReport checkGeometry(const LatticeGraph& g, const CurvedLayers& l
     for (int t = t0; t < t1; ++t) {
       const auto& f = layers.triangles[t];
       extent += (layers.points[f[1]] - layers.points[f[0]]).norm();
-      for (int v : f) lo = lo.cwiseMin(layers.points[v]);
+      for (int v : f)
+        lo = lo.cwiseMin(layers.points[v]);
     }
     const double h = 2 * extent / (t1 - t0);
     BoxGrid triangles(lo, h);
@@ -278,21 +293,26 @@ inline GeometryReport checkGeometry(const LatticeGraph& g, const CurvedLayers& l
       double best = std::numeric_limits<double>::infinity(), alphaAt = 0, betaAt = 0;
       for (int t : triangles.at(g.points[v])) {
         const auto& f = layers.triangles[t];
-        const Vec3 w = closestBarycentric(g.points[v], layers.points[f[0]], layers.points[f[1]], layers.points[f[2]]);
-        const Vec3 q = w[0] * layers.points[f[0]] + w[1] * layers.points[f[1]] + w[2] * layers.points[f[2]];
+        const Vec3 w = closestBarycentric(g.points[v], layers.points[f[0]], layers.points[f[1]],
+                                          layers.points[f[2]]);
+        const Vec3 q =
+            w[0] * layers.points[f[0]] + w[1] * layers.points[f[1]] + w[2] * layers.points[f[2]];
         const double d = (q - g.points[v]).norm();
         if (d < best) {
           best = d;
-          alphaAt = w[0] * layers.alpha[f[0]] + w[1] * layers.alpha[f[1]] + w[2] * layers.alpha[f[2]];
+          alphaAt =
+              w[0] * layers.alpha[f[0]] + w[1] * layers.alpha[f[1]] + w[2] * layers.alpha[f[2]];
           betaAt = w[0] * layers.beta[f[0]] + w[1] * layers.beta[f[1]] + w[2] * layers.beta[f[2]];
         }
       }
       r.maxSurfaceDistance = std::max(r.maxSurfaceDistance, best);
       if (g.alphaLevel[v] >= 0) {
-        r.maxLevelError = std::max(r.maxLevelError, std::abs(alphaAt - g.alphaLevels[g.alphaLevel[v]]));
+        r.maxLevelError =
+            std::max(r.maxLevelError, std::abs(alphaAt - g.alphaLevels[g.alphaLevel[v]]));
       }
       if (g.betaLevel[v] >= 0) {
-        r.maxLevelError = std::max(r.maxLevelError, std::abs(betaAt - g.betaLevels[g.betaLevel[v]]));
+        r.maxLevelError =
+            std::max(r.maxLevelError, std::abs(betaAt - g.betaLevels[g.betaLevel[v]]));
       }
     }
     // Edge pairs without a shared vertex must stay apart.
@@ -300,7 +320,8 @@ inline GeometryReport checkGeometry(const LatticeGraph& g, const CurvedLayers& l
     for (int e = g.layerEdgeOffset[l]; e < g.layerEdgeOffset[l + 1]; ++e) {
       const Vec3& a = g.points[g.edges[e][0]];
       const Vec3& b = g.points[g.edges[e][1]];
-      edges.insert(e, a.cwiseMin(b) - Vec3::Constant(tolerance), a.cwiseMax(b) + Vec3::Constant(tolerance));
+      edges.insert(e, a.cwiseMin(b) - Vec3::Constant(tolerance),
+                   a.cwiseMax(b) + Vec3::Constant(tolerance));
     }
     std::vector<std::pair<int, int>> pairs;
     for (const auto& [key, list] : edges.cells()) {
@@ -318,7 +339,8 @@ inline GeometryReport checkGeometry(const LatticeGraph& g, const CurvedLayers& l
       if (E1[0] == E2[0] || E1[0] == E2[1] || E1[1] == E2[0] || E1[1] == E2[1]) {
         continue;
       }
-      const double d = segmentDistance(g.points[E1[0]], g.points[E1[1]], g.points[E2[0]], g.points[E2[1]]);
+      const double d =
+          segmentDistance(g.points[E1[0]], g.points[E1[1]], g.points[E2[0]], g.points[E2[1]]);
       r.minSeparation = std::min(r.minSeparation, d);
       if (d <= tolerance) {
         ++r.intersectingEdgePairs;
@@ -328,7 +350,7 @@ inline GeometryReport checkGeometry(const LatticeGraph& g, const CurvedLayers& l
   return r;
 }
 
-} // namespace geolattice::testing
+}  // namespace geolattice::testing
 
 namespace geolattice::testing {
 
@@ -336,8 +358,9 @@ namespace geolattice::testing {
 /// cut by a layer (PQ), the α- and β-levels strictly between the values at P and Q. The values
 /// at P and Q are interpolated exactly as the slicer does (t from the lower-γ end). Exact hits
 /// are not handled: use generic data.
-inline long paperFacePointCount(const TetMesh& mesh, const Eigen::VectorXd& gamma, const Eigen::VectorXd& alpha,
-                                const Eigen::VectorXd& beta, const LatticeGraph& g) {
+inline long paperFacePointCount(const TetMesh& mesh, const Eigen::VectorXd& gamma,
+                                const Eigen::VectorXd& alpha, const Eigen::VectorXd& beta,
+                                const LatticeGraph& g) {
   std::vector<std::array<int, 3>> faces;
   for (const auto& t : mesh.tets) {
     for (int k = 0; k < 4; ++k) {
@@ -350,7 +373,8 @@ inline long paperFacePointCount(const TetMesh& mesh, const Eigen::VectorXd& gamm
   faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
   auto between = [](const std::vector<double>& levels, double a, double b) {
     const double lo = std::min(a, b), hi = std::max(a, b);
-    return std::lower_bound(levels.begin(), levels.end(), hi) - std::upper_bound(levels.begin(), levels.end(), lo);
+    return std::lower_bound(levels.begin(), levels.end(), hi) -
+           std::upper_bound(levels.begin(), levels.end(), lo);
   };
   long count = 0;
   for (const auto& f : faces) {
@@ -363,7 +387,8 @@ inline long paperFacePointCount(const TetMesh& mesh, const Eigen::VectorXd& gamm
       double a[2], b[2];
       for (int s = 0; s < 2; ++s) {
         int u = f[lone], v = f[(lone + 1 + s) % 3];
-        if (gamma[u] > gamma[v]) std::swap(u, v);
+        if (gamma[u] > gamma[v])
+          std::swap(u, v);
         const double t = (phi - gamma[u]) / (gamma[v] - gamma[u]);
         a[s] = (1 - t) * alpha[u] + t * alpha[v];
         b[s] = (1 - t) * beta[u] + t * beta[v];
@@ -374,4 +399,4 @@ inline long paperFacePointCount(const TetMesh& mesh, const Eigen::VectorXd& gamm
   return count;
 }
 
-} // namespace geolattice::testing
+}  // namespace geolattice::testing

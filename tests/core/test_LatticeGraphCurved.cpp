@@ -74,16 +74,21 @@ void expectValidLattice(const char* name, const Pipeline& p, const Timed& t) {
   const long paper = paperFacePointCount(p.mesh, p.fields.gamma, p.fields.alpha, p.fields.beta, g);
   long onFaces = 0;
   for (size_t v = 0; v < g.points.size(); ++v) {
-    onFaces += g.vertexKind[v] == LatticeVertexKind::IsolinePoint || g.vertexKind[v] == LatticeVertexKind::BoundaryHit;
+    onFaces += g.vertexKind[v] == LatticeVertexKind::IsolinePoint ||
+               g.vertexKind[v] == LatticeVertexKind::BoundaryHit;
   }
-  std::printf("[lattice] %s: %zu tets, %zu layers (%zu triangles), lattice %zu vertices %zu edges, %d crossings, "
-              "%d boundary hits, %zu sub-graphs, irregular %d, %.3f s; max distance to layer %.2e mm, max level error "
-              "%.2e mm, min separation of disjoint edges %.2e mm, tet-face points %ld (paper count %ld), merged "
-              "diagonal points %d\n",
-              name, p.mesh.tets.size(), g.layerValues.size(), p.layers.triangles.size(), g.points.size(),
-              g.edges.size(), g.stats.crossings, g.stats.boundaryHits, g.subgraphs.size(), g.stats.irregularVertices,
-              t.seconds, geo.maxSurfaceDistance, geo.maxLevelError, geo.minSeparation, onFaces, paper,
-              g.stats.mergedDiagonalPoints);
+  std::printf(
+      "[lattice] %s: %zu tets, %zu layers (%zu triangles), lattice %zu vertices %zu edges, %d "
+      "crossings, "
+      "%d boundary hits, %zu sub-graphs, irregular %d, %.3f s; max distance to layer %.2e mm, max "
+      "level error "
+      "%.2e mm, min separation of disjoint edges %.2e mm, tet-face points %ld (paper count %ld), "
+      "merged "
+      "diagonal points %d\n",
+      name, p.mesh.tets.size(), g.layerValues.size(), p.layers.triangles.size(), g.points.size(),
+      g.edges.size(), g.stats.crossings, g.stats.boundaryHits, g.subgraphs.size(),
+      g.stats.irregularVertices, t.seconds, geo.maxSurfaceDistance, geo.maxLevelError,
+      geo.minSeparation, onFaces, paper, g.stats.mergedDiagonalPoints);
   EXPECT_GT(g.stats.crossings, 0);
   EXPECT_EQ(s.irregularVertices, 0);
   EXPECT_EQ(g.stats.irregularVertices, 0);
@@ -96,11 +101,13 @@ void expectValidLattice(const char* name, const Pipeline& p, const Timed& t) {
   EXPECT_EQ(geo.intersectingEdgePairs, 0);
   EXPECT_EQ(g.stats.openBoundaryChains, 0);
   // Generic data: no exact hits, and the graph is the paper's (one vertex per tet face and level).
-  EXPECT_EQ(g.stats.pointCrossings + g.stats.edgeCrossings + g.stats.ridgeSegments + g.stats.boundarySegments, 0);
+  EXPECT_EQ(g.stats.pointCrossings + g.stats.edgeCrossings + g.stats.ridgeSegments +
+                g.stats.boundarySegments,
+            0);
   EXPECT_EQ(onFaces, paper);
 }
 
-} // namespace
+}  // namespace
 
 TEST(LatticeGraphCurved, BallWithGeodesicLayers) {
   SlicerOptions slicer;
@@ -111,7 +118,8 @@ TEST(LatticeGraphCurved, BallWithGeodesicLayers) {
   expectValidLattice("ball r = 20 mm, width 4", p, t);
   // Each layer of a convex ball is one disc: one sub-graph per non-empty layer.
   for (size_t l = 0; l < t.graph.layerValues.size(); ++l) {
-    EXPECT_LE(t.graph.layerSubgraphOffset[l + 1] - t.graph.layerSubgraphOffset[l], 1) << "layer " << l;
+    EXPECT_LE(t.graph.layerSubgraphOffset[l + 1] - t.graph.layerSubgraphOffset[l], 1)
+        << "layer " << l;
   }
 }
 
@@ -130,7 +138,7 @@ TEST(LatticeGraphCurved, BunnyWithSeveralSubgraphsPerLayer) {
   slicer.firstLayerOffset = 1.0;
   const Pipeline p = runPipeline(bunny, 4.0, 0.5, slicer);
   LatticeOptions o;
-  o.alphaWidth = o.betaWidth = 6.0; // the paper's bunny (Table 1)
+  o.alphaWidth = o.betaWidth = 6.0;  // the paper's bunny (Table 1)
   const Timed t = timedLattice(p.layers, o);
   expectValidLattice("bunny 80 mm, width 6", p, t);
   int multi = 0;
@@ -138,7 +146,7 @@ TEST(LatticeGraphCurved, BunnyWithSeveralSubgraphsPerLayer) {
     multi += t.graph.layerSubgraphOffset[l + 1] - t.graph.layerSubgraphOffset[l] > 1;
   }
   std::printf("[lattice] bunny: %d layers with more than one sub-graph\n", multi);
-  EXPECT_GT(multi, 0); // ears
+  EXPECT_GT(multi, 0);  // ears
   // Dropping short sub-graphs.
   o.minimumSubgraphLength = 30;
   const LatticeGraph dropped = buildLatticeGraph(p.layers, o);
@@ -152,7 +160,7 @@ TEST(LatticeGraphCurved, BunnyWithSeveralSubgraphsPerLayer) {
 }
 
 TEST(LatticeGraphCurved, BranchingYSplitsIntoSubgraphsPerBranch) {
-  const TriangleSurface y = readObj(kData + "/y_shape.obj"); // generated, base on z = 0, mm
+  const TriangleSurface y = readObj(kData + "/y_shape.obj");  // generated, base on z = 0, mm
   SlicerOptions slicer;                                       // 0.6 mm layers
   const Pipeline p = runPipeline(y, 2.0, 0.05, slicer);
   const Timed t = timedLattice(p.layers, LatticeOptions{});
@@ -162,7 +170,8 @@ TEST(LatticeGraphCurved, BranchingYSplitsIntoSubgraphsPerBranch) {
   for (size_t l = 0; l < t.graph.layerValues.size(); ++l) {
     split += t.graph.layerSubgraphOffset[l + 1] - t.graph.layerSubgraphOffset[l] == 2;
   }
-  std::printf("[lattice] branching Y: %d of %zu layers have two sub-graphs\n", split, t.graph.layerValues.size());
+  std::printf("[lattice] branching Y: %d of %zu layers have two sub-graphs\n", split,
+              t.graph.layerValues.size());
   EXPECT_GT(split, 10);
 }
 
@@ -172,7 +181,7 @@ TEST(LatticeGraphCurved, TetGenBoxGivesTheGrid) {
   SlicerOptions slicer;
   slicer.interval = 2.0;
   slicer.firstLayerOffset = 1.0;
-  slicer.lastLayer = 26; // z <= 53: away from the top face
+  slicer.lastLayer = 26;  // z <= 53: away from the top face
   const Pipeline p = runPipeline(boxSurface(Vec3(40, 40, 60), 3.0), 3.0, 1e-6, slicer);
   LatticeOptions o;
   o.alphaPhase = o.betaPhase = 2.0;
@@ -191,7 +200,7 @@ TEST(LatticeGraphCurved, TetGenBoxGivesTheGrid) {
     EXPECT_EQ(crossings, 100) << "layer " << l;
     EXPECT_EQ(hits, 40) << "layer " << l;
     // Mean position of each line (length-weighted over its edges) and its straightness.
-    std::map<int, std::pair<double, double>> alphaY, betaX; // level -> (sum len*pos, sum len)
+    std::map<int, std::pair<double, double>> alphaY, betaX;  // level -> (sum len*pos, sum len)
     for (int e = g.layerEdgeOffset[l]; e < g.layerEdgeOffset[l + 1]; ++e) {
       const Vec3& a = g.points[g.edges[e][0]];
       const Vec3& b = g.points[g.edges[e][1]];
@@ -209,7 +218,8 @@ TEST(LatticeGraphCurved, TetGenBoxGivesTheGrid) {
     for (const auto* lines : {&alphaY, &betaX}) {
       ASSERT_EQ(lines->size(), 10u);
       std::vector<double> pos;
-      for (const auto& [k, sum] : *lines) pos.push_back(sum.first / sum.second);
+      for (const auto& [k, sum] : *lines)
+        pos.push_back(sum.first / sum.second);
       std::sort(pos.begin(), pos.end());
       for (size_t i = 1; i < pos.size(); ++i) {
         const double error = std::abs(pos[i] - pos[i - 1] - 4.0) / 4.0;
@@ -219,9 +229,11 @@ TEST(LatticeGraphCurved, TetGenBoxGivesTheGrid) {
       }
     }
   }
-  std::printf("[lattice] TetGen box: spacing error of the mean line positions: mean %.3g %%, worst %.3g %% (%d gaps); "
-              "worst vertex offset from the analytic line %.3g mm\n",
-              100 * sumSpacing / gaps, 100 * worstSpacing, gaps, worstLine);
+  std::printf(
+      "[lattice] TetGen box: spacing error of the mean line positions: mean %.3g %%, worst %.3g %% "
+      "(%d gaps); "
+      "worst vertex offset from the analytic line %.3g mm\n",
+      100 * sumSpacing / gaps, 100 * worstSpacing, gaps, worstLine);
   // The lattice reproduces the fields' isolines exactly (level error above); what remains is the
   // GDF's own error (α, β within ~0.3 mm of 40 - y, 40 - x on this 3 mm mesh).
   EXPECT_LT(sumSpacing / gaps, 0.005);

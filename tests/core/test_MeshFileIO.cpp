@@ -62,9 +62,10 @@ double totalVolume(const TetMesh& m) {
   return v;
 }
 
-const char* kTinyTet = "5 vertices\n2 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n4 0 1 2 3\n4 4 1 3 2\n";
+const char* kTinyTet =
+    "5 vertices\n2 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n4 0 1 2 3\n4 4 1 3 2\n";
 
-} // namespace
+}  // namespace
 
 // ---------------------------------------------------------------- OFF
 
@@ -78,7 +79,7 @@ TEST_F(MeshFileIOTest, OffFanTriangulatesAndSkipsComments) {
                               "3 0 1 2\n"
                               "\n"
                               "4 0 1 2 3 # quad\n"
-                              "5 0 5 1 2 4 255 0 0\n"); // pentagon with a trailing colour
+                              "5 0 5 1 2 4 255 0 0\n");  // pentagon with a trailing colour
   const TriangleSurface s = readOff(p);
   ASSERT_EQ(s.points.size(), 6u);
   EXPECT_DOUBLE_EQ(s.points[4].x(), -1.0);
@@ -93,18 +94,22 @@ TEST_F(MeshFileIOTest, OffFanTriangulatesAndSkipsComments) {
 
 TEST_F(MeshFileIOTest, OffHeaderVariants) {
   // COFF: colour after xyz; NOFF: normal after xyz; counts on the next line.
-  const TriangleSurface c = readOff(write("c.off", "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n"
-                                                   "0 1 0 0 0 255 255\n3 0 1 2\n"));
+  const TriangleSurface c = readOff(write("c.off",
+                                          "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n"
+                                          "0 1 0 0 0 255 255\n3 0 1 2\n"));
   ASSERT_EQ(c.points.size(), 3u);
   EXPECT_DOUBLE_EQ(c.points[1].x(), 1.0);
   EXPECT_DOUBLE_EQ(c.points[1].y(), 0.0);
-  const TriangleSurface n = readOff(write("n.off", "NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 2 0 0 0 1\n3 2 0 1\n"));
+  const TriangleSurface n =
+      readOff(write("n.off", "NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 2 0 0 0 1\n3 2 0 1\n"));
   EXPECT_DOUBLE_EQ(n.points[2].y(), 2.0);
   EXPECT_EQ(n.triangles.at(0), (std::array<int, 3>{2, 0, 1}));
   // Header keyword left out (optional in Geomview's OFF).
   EXPECT_EQ(readOff(write("bare.off", "3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")).triangles.size(), 1u);
   // 4-D and n-D variants are refused by name.
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("4.off", "4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n")); }),
+  EXPECT_CONTAINS(errorOf([&] {
+                    readOff(write("4.off", "4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n"));
+                  }),
                   "unsupported OFF variant '4OFF'");
 }
 
@@ -122,42 +127,54 @@ TEST_F(MeshFileIOTest, OffMalformedNumberNamesFileAndLine) {
 }
 
 TEST_F(MeshFileIOTest, OffTooFewCoordinates) {
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n")); }),
-                  "b.off:4: vertex 1: expected 'x y z'");
+  EXPECT_CONTAINS(
+      errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n")); }),
+      "b.off:4: vertex 1: expected 'x y z'");
 }
 
 TEST_F(MeshFileIOTest, OffNonFiniteCoordinate) {
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n")); }),
-                  "b.off:5: non-finite");
+  EXPECT_CONTAINS(
+      errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n")); }),
+      "b.off:5: non-finite");
 }
 
 TEST_F(MeshFileIOTest, OffIndexOutOfRange) {
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n")); }),
-                  "b.off:6: face 0: vertex index 3 out of range [0, 2]");
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("n.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n")); }),
-                  "vertex index -1 out of range");
+  EXPECT_CONTAINS(
+      errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n")); }),
+      "b.off:6: face 0: vertex index 3 out of range [0, 2]");
+  EXPECT_CONTAINS(
+      errorOf([&] { readOff(write("n.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n")); }),
+      "vertex index -1 out of range");
 }
 
 TEST_F(MeshFileIOTest, OffFaceWithTooFewVertices) {
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n")); }),
-                  "b.off:6: face 0 has 2 vertices");
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("s.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n")); }),
-                  "s.off:6: face 0: expected 4 vertex indices, got 3");
+  EXPECT_CONTAINS(
+      errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n")); }),
+      "b.off:6: face 0 has 2 vertices");
+  EXPECT_CONTAINS(
+      errorOf([&] { readOff(write("s.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n")); }),
+      "s.off:6: face 0: expected 4 vertex indices, got 3");
 }
 
 TEST_F(MeshFileIOTest, OffCountsDoNotMatch) {
   // Fewer faces than announced.
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("few.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")); }),
-                  "unexpected end of file: expected face 1 of 2");
+  EXPECT_CONTAINS(
+      errorOf([&] { readOff(write("few.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")); }),
+      "unexpected end of file: expected face 1 of 2");
   // More data than announced.
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("many.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 2 1 0\n")); }),
-                  "many.off:7: extra data after 3 vertices and 1 faces");
+  EXPECT_CONTAINS(
+      errorOf([&] {
+        readOff(write("many.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 2 1 0\n"));
+      }),
+      "many.off:7: extra data after 3 vertices and 1 faces");
   // Bad counts line.
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("hdr.off", "OFF\n3\n0 0 0\n")); }), "hdr.off:2: expected the counts");
+  EXPECT_CONTAINS(errorOf([&] { readOff(write("hdr.off", "OFF\n3\n0 0 0\n")); }),
+                  "hdr.off:2: expected the counts");
 }
 
 TEST_F(MeshFileIOTest, OffEmpty) {
-  EXPECT_EQ(errorOf([&] { readOff(write("e.off", "")); }), "empty mesh: " + path("e.off") + " has no data");
+  EXPECT_EQ(errorOf([&] { readOff(write("e.off", "")); }),
+            "empty mesh: " + path("e.off") + " has no data");
   EXPECT_CONTAINS(errorOf([&] { readOff(write("c.off", "# only a comment\n\n")); }), "empty mesh");
   EXPECT_CONTAINS(errorOf([&] { readOff(write("z.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n")); }),
                   "empty mesh: " + path("z.off") + " has 3 vertices and 0 faces");
@@ -181,7 +198,9 @@ TEST_F(MeshFileIOTest, TetSmallFile) {
   EXPECT_DOUBLE_EQ(m.points[4].z(), 1.0);
   EXPECT_NEAR(totalVolume(m), 1.0 / 6.0 + 1.0 / 3.0, 1e-12);
   // Counts without the words and with trailing blanks are accepted too.
-  EXPECT_EQ(readTetFile(write("bare.tet", "4\n1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2 3 \n\n")).tets.size(), 1u);
+  EXPECT_EQ(readTetFile(write("bare.tet", "4\n1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2 3 \n\n"))
+                .tets.size(),
+            1u);
 }
 
 TEST_F(MeshFileIOTest, TetRing) {
@@ -198,38 +217,59 @@ TEST_F(MeshFileIOTest, TetMalformedLines) {
                   "h.tet:1: expected an integer for vertex count, got 'five'");
   EXPECT_CONTAINS(errorOf([&] { readTetFile(write("h2.tet", "4 vertices\n1 tets extra\n")); }),
                   "h2.tet:2: expected 'M tets'");
-  EXPECT_CONTAINS(errorOf([&] { readTetFile(write("n.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n")); }),
-                  "n.tet:7: tet 0: expected '4 a b c d'");
-  EXPECT_CONTAINS(errorOf([&] { readTetFile(write("s.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2\n")); }),
-                  "s.tet:7: tet 0: expected '4 a b c d'");
-  EXPECT_CONTAINS(errorOf([&] { readTetFile(write("c.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1e\n4 0 1 2 3\n")); }),
-                  "c.tet:6: expected a number for z, got '1e'");
+  EXPECT_CONTAINS(
+      errorOf([&] {
+        readTetFile(write("n.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n"));
+      }),
+      "n.tet:7: tet 0: expected '4 a b c d'");
+  EXPECT_CONTAINS(
+      errorOf([&] {
+        readTetFile(write("s.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2\n"));
+      }),
+      "s.tet:7: tet 0: expected '4 a b c d'");
+  EXPECT_CONTAINS(
+      errorOf([&] {
+        readTetFile(write("c.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1e\n4 0 1 2 3\n"));
+      }),
+      "c.tet:6: expected a number for z, got '1e'");
 }
 
 TEST_F(MeshFileIOTest, TetIndexOutOfRange) {
-  EXPECT_CONTAINS(errorOf([&] { readTetFile(write("r.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2 4\n")); }),
-                  "r.tet:7: tet 0: vertex index 4 out of range [0, 3]");
+  EXPECT_CONTAINS(
+      errorOf([&] {
+        readTetFile(write("r.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2 4\n"));
+      }),
+      "r.tet:7: tet 0: vertex index 4 out of range [0, 3]");
 }
 
 TEST_F(MeshFileIOTest, TetCountsDoNotMatch) {
   // 3 vertex lines where 4 are announced: the tet line is read as the 4th vertex, then EOF.
-  EXPECT_CONTAINS(errorOf([&] { readTetFile(write("f.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2 3\n")); }),
-                  "unexpected end of file: expected tet 0 of 1");
+  EXPECT_CONTAINS(
+      errorOf([&] {
+        readTetFile(write("f.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2 3\n"));
+      }),
+      "unexpected end of file: expected tet 0 of 1");
   // 5 vertex lines where 4 are announced: the 5th vertex is not a tet line.
-  EXPECT_CONTAINS(errorOf([&] {
-                    readTetFile(write("m.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n4 0 1 2 3\n"));
-                  }),
-                  "m.tet:7: tet 0: expected '4 a b c d'");
+  EXPECT_CONTAINS(
+      errorOf([&] {
+        readTetFile(
+            write("m.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n4 0 1 2 3\n"));
+      }),
+      "m.tet:7: tet 0: expected '4 a b c d'");
   // A tet more than announced.
-  EXPECT_CONTAINS(errorOf([&] {
-                    readTetFile(write("x.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2 3\n4 0 1 3 2\n"));
-                  }),
-                  "x.tet:8: extra data after 4 vertices and 1 tets");
+  EXPECT_CONTAINS(
+      errorOf([&] {
+        readTetFile(write(
+            "x.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2 3\n4 0 1 3 2\n"));
+      }),
+      "x.tet:8: extra data after 4 vertices and 1 tets");
 }
 
 TEST_F(MeshFileIOTest, TetEmpty) {
-  EXPECT_EQ(errorOf([&] { readTetFile(write("e.tet", "")); }), "empty mesh: " + path("e.tet") + " has no data");
-  EXPECT_CONTAINS(errorOf([&] { readTetFile(write("h.tet", "4 vertices\n")); }), "h.tet: unexpected end of file");
+  EXPECT_EQ(errorOf([&] { readTetFile(write("e.tet", "")); }),
+            "empty mesh: " + path("e.tet") + " has no data");
+  EXPECT_CONTAINS(errorOf([&] { readTetFile(write("h.tet", "4 vertices\n")); }),
+                  "h.tet: unexpected end of file");
   EXPECT_CONTAINS(errorOf([&] { readTetFile(write("z.tet", "0 vertices\n0 tets\n")); }),
                   "empty mesh: " + path("z.tet") + " has 0 vertices and 0 tets");
 }
@@ -246,7 +286,8 @@ TEST_F(MeshFileIOTest, TetGenTinyFromEitherFile) {
     EXPECT_DOUBLE_EQ(m.points[6].x(), 1.0);
     EXPECT_DOUBLE_EQ(m.points[6].z(), 1.0);
     for (const auto& t : m.tets) {
-      EXPECT_GT(signedTetVolume(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]), 0.0);
+      EXPECT_GT(signedTetVolume(m.points[t[0]], m.points[t[1]], m.points[t[2]], m.points[t[3]]),
+                0.0);
     }
     EXPECT_NEAR(totalVolume(m), 1.0, 1e-12);
   }
@@ -269,11 +310,13 @@ TEST_F(MeshFileIOTest, TetGenZeroBasedAndQuadratic) {
 TEST_F(MeshFileIOTest, TetGenMissingPartner) {
   const std::string node = write("alone.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n");
   EXPECT_EQ(errorOf([&] { readTetGenMesh(node); }), "file not found: " + path("alone.ele"));
-  EXPECT_EQ(errorOf([&] { readTetGenMesh(path("none.ele")); }), "file not found: " + path("none.node"));
+  EXPECT_EQ(errorOf([&] { readTetGenMesh(path("none.ele")); }),
+            "file not found: " + path("none.node"));
 }
 
 TEST_F(MeshFileIOTest, TetGenBadInput) {
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("mesh.tet")); }), "expected a .node or .ele file");
+  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("mesh.tet")); }),
+                  "expected a .node or .ele file");
   // 1-based .node, but the .ele uses point number 0.
   write("a.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n");
   write("a.ele", "1 4 0\n1 0 1 2 3\n");
@@ -285,20 +328,24 @@ TEST_F(MeshFileIOTest, TetGenBadInput) {
                   "b.node:4: point numbers must be consecutive: expected 2, got 3");
   write("c.node", "4 2 0 0\n");
   write("c.ele", "1 4 0\n0 0 1 2 3\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("c.node")); }), "c.node:1: dimension 2 is not supported");
+  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("c.node")); }),
+                  "c.node:1: dimension 2 is not supported");
   write("d.node", "4 3 0 0\n2 0 0 0\n3 1 0 0\n4 0 1 0\n5 0 0 1\n");
   write("d.ele", "1 4 0\n1 2 3 4 5\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("d.node")); }), "d.node:2: first point number must be 0 or 1");
+  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("d.node")); }),
+                  "d.node:2: first point number must be 0 or 1");
   // Attribute announced in the header but missing on a point line.
   write("e.node", "2 3 1 0\n0 0 0 0 7\n1 1 0 0\n");
   write("e.ele", "1 4 0\n0 0 1 0 1\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("e.node")); }), "e.node:3: point line: expected 5 values");
+  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("e.node")); }),
+                  "e.node:3: point line: expected 5 values");
   write("f.node", "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
   write("f.ele", "2 4 0\n0 0 1 2 3\n");
   EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("f.node")); }), "expected tetrahedron 1 of 2");
   write("g.ele", "1 6 0\n0 0 1 2 3 4 5\n");
   write("g.node", "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("g.node")); }), "nodes per tetrahedron must be 4 or 10, got 6");
+  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("g.node")); }),
+                  "nodes per tetrahedron must be 4 or 10, got 6");
   write("h.node", "0 3 0 0\n");
   write("h.ele", "0 4 0\n");
   EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("h.node")); }), "empty mesh");
@@ -309,7 +356,7 @@ TEST_F(MeshFileIOTest, TetGenBadInput) {
 TEST_F(MeshFileIOTest, WriteReadRoundTripIsExact) {
   const TetMesh ring = readTetFile(kData + "/ring.tet");
   TetMesh m = ring;
-  m.points[0] = Vec3(0.1, 1.0 / 3.0, -2.5e-17); // values that a fixed "%f" would lose
+  m.points[0] = Vec3(0.1, 1.0 / 3.0, -2.5e-17);  // values that a fixed "%f" would lose
   const std::string p = path("out.tet");
   writeTetFile(p, m);
   EXPECT_FALSE(fs::exists(p + ".tmp"));
@@ -331,12 +378,14 @@ TEST_F(MeshFileIOTest, WriteRefusesBadMeshesAndLeavesNothing) {
   EXPECT_CONTAINS(errorOf([&] { writeTetFile(p, empty); }), "empty mesh");
   TetMesh m = readTetFile(write("two.tet", kTinyTet));
   m.tets[1][2] = 5;
-  EXPECT_CONTAINS(errorOf([&] { writeTetFile(p, m); }), "tet 1 has vertex index 5 out of range [0, 4]");
+  EXPECT_CONTAINS(errorOf([&] { writeTetFile(p, m); }),
+                  "tet 1 has vertex index 5 out of range [0, 4]");
   EXPECT_FALSE(fs::exists(p));
   EXPECT_FALSE(fs::exists(p + ".tmp"));
   // Unwritable location: the error names the temporary file; nothing is created.
   const std::string q = path("no_such_dir/out.tet");
-  EXPECT_CONTAINS(errorOf([&] { writeTetFile(q, readTetFile(path("two.tet"))); }), "cannot write " + q + ".tmp");
+  EXPECT_CONTAINS(errorOf([&] { writeTetFile(q, readTetFile(path("two.tet"))); }),
+                  "cannot write " + q + ".tmp");
   EXPECT_FALSE(fs::exists(q));
 }
 
@@ -349,7 +398,7 @@ TEST_F(MeshFileIOTest, ObjFaceFormsNegativeIndicesAndPolygons) {
                               "# comment\r\n"
                               "mtllib none.mtl\n"
                               "o part\n"
-                              "v 0 0 0\nv 1 0 0\nv 1 1 0 1.0\n" // optional w
+                              "v 0 0 0\nv 1 0 0\nv 1 1 0 1.0\n"  // optional w
                               "vt 0 0\nvt 1 0\nvn 0 0 1\n"
                               "g group\ns off\nusemtl red\n"
                               "f 1 2 3\n"
@@ -366,15 +415,16 @@ TEST_F(MeshFileIOTest, ObjFaceFormsNegativeIndicesAndPolygons) {
   ASSERT_EQ(s.points.size(), 5u);
   EXPECT_EQ(s.points[4], Vec3(-1, 0.5, 2));
   EXPECT_EQ(s.points[3], Vec3(0, 1, 0));
-  const std::vector<std::array<int, 3>> expected = {
-      {0, 1, 2}, {0, 1, 2}, {0, 1, 2}, {0, 1, 2}, {0, 1, 2}, {0, 1, 2}, {0, 2, 3}, {0, 1, 4}, {0, 4, 2}, {0, 2, 3}};
+  const std::vector<std::array<int, 3>> expected = {{0, 1, 2}, {0, 1, 2}, {0, 1, 2}, {0, 1, 2},
+                                                    {0, 1, 2}, {0, 1, 2}, {0, 2, 3}, {0, 1, 4},
+                                                    {0, 4, 2}, {0, 2, 3}};
   EXPECT_EQ(s.triangles, expected);
 }
 
 TEST_F(MeshFileIOTest, ObjBunny) {
   const TriangleSurface s = readObj(kData + "/bunny.obj");
   EXPECT_EQ(s.triangles.size(), 3674u);
-  EXPECT_EQ(s.points.size(), 1839u); // closed genus-0 surface: V = F/2 + 2
+  EXPECT_EQ(s.points.size(), 1839u);  // closed genus-0 surface: V = F/2 + 2
   for (const auto& t : s.triangles) {
     for (int id : t) {
       ASSERT_TRUE(id >= 0 && id < static_cast<int>(s.points.size()));
@@ -385,7 +435,8 @@ TEST_F(MeshFileIOTest, ObjBunny) {
 TEST_F(MeshFileIOTest, ObjMalformedLinesNameFileAndLine) {
   const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   const std::string a = write("a.obj", v + "v 1 2\nf 1 2 3\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(a); }), a + ":4: vertex 4: expected 'v x y z', got 2 values");
+  EXPECT_CONTAINS(errorOf([&] { readObj(a); }),
+                  a + ":4: vertex 4: expected 'v x y z', got 2 values");
   const std::string b = write("b.obj", v + "v 1 x 2\n");
   EXPECT_CONTAINS(errorOf([&] { readObj(b); }), b + ":4: expected a number for y, got 'x'");
   const std::string c = write("c.obj", v + "f 1 2\n");
@@ -393,11 +444,13 @@ TEST_F(MeshFileIOTest, ObjMalformedLinesNameFileAndLine) {
   const std::string d = write("d.obj", v + "\nf 1 2 0\n");
   EXPECT_CONTAINS(errorOf([&] { readObj(d); }), d + ":5: vertex index 0");
   const std::string e = write("e.obj", v + "f 1 2 three\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(e); }), e + ":4: expected an integer for a vertex index, got 'three'");
+  EXPECT_CONTAINS(errorOf([&] { readObj(e); }),
+                  e + ":4: expected an integer for a vertex index, got 'three'");
   const std::string f = write("f.obj", v + "f 1/1/1/1 2 3\n");
   EXPECT_CONTAINS(errorOf([&] { readObj(f); }), f + ":4: malformed vertex reference '1/1/1/1'");
   const std::string g = write("g.obj", v + "f /1 2 3\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(g); }), g + ":4: expected an integer for a vertex index, got ''");
+  EXPECT_CONTAINS(errorOf([&] { readObj(g); }),
+                  g + ":4: expected an integer for a vertex index, got ''");
   const std::string h = write("h.obj", "v inf 0 0\n");
   EXPECT_CONTAINS(errorOf([&] { readObj(h); }), h + ":1: non-finite value for x");
 }
@@ -407,7 +460,8 @@ TEST_F(MeshFileIOTest, ObjIndexOutOfRange) {
   const std::string a = write("a.obj", v + "f 1 2 3\nf 1 2 4\n");
   EXPECT_CONTAINS(errorOf([&] { readObj(a); }), a + ":5: vertex index 4 out of range [1, 3]");
   const std::string b = write("b.obj", v + "f -1 -2 -4\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(b); }), b + ":4: relative vertex index -4 reaches before the first vertex");
+  EXPECT_CONTAINS(errorOf([&] { readObj(b); }),
+                  b + ":4: relative vertex index -4 reaches before the first vertex");
   // A relative index counts only the vertices read before the face.
   const std::string c = write("c.obj", "v 0 0 0\nf -1 -2 -3\nv 1 0 0\nv 0 1 0\n");
   EXPECT_CONTAINS(errorOf([&] { readObj(c); }), c + ":2: relative vertex index -2");
@@ -418,7 +472,8 @@ TEST_F(MeshFileIOTest, ObjEmptyAndMissing) {
   EXPECT_CONTAINS(errorOf([&] { readObj(a); }), "empty mesh: " + a + " has 0 vertices and 0 faces");
   const std::string b = write("b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n");
   EXPECT_CONTAINS(errorOf([&] { readObj(b); }), "empty mesh: " + b + " has 3 vertices and 0 faces");
-  EXPECT_CONTAINS(errorOf([&] { readObj(path("missing.obj")); }), "file not found: " + path("missing.obj"));
+  EXPECT_CONTAINS(errorOf([&] { readObj(path("missing.obj")); }),
+                  "file not found: " + path("missing.obj"));
 }
 
 TEST_F(MeshFileIOTest, ObjWriteReadRoundTripIsExact) {
@@ -445,7 +500,8 @@ TEST_F(MeshFileIOTest, ObjWriteRefusesBadSurfacesAndLeavesNothing) {
   TriangleSurface s;
   s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
   s.triangles = {{0, 1, 3}};
-  EXPECT_CONTAINS(errorOf([&] { writeObj(p, s); }), "triangle 0 has vertex index 3 out of range [0, 2]");
+  EXPECT_CONTAINS(errorOf([&] { writeObj(p, s); }),
+                  "triangle 0 has vertex index 3 out of range [0, 2]");
   s.triangles = {{0, 1, 2}};
   s.points[1].y() = std::nan("");
   EXPECT_CONTAINS(errorOf([&] { writeObj(p, s); }), "vertex 1 is not finite");

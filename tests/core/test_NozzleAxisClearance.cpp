@@ -13,7 +13,9 @@ using namespace geolattice;
 
 namespace {
 
-double degreesBetween(const Vec3& a, const Vec3& b) { return std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / M_PI; }
+double degreesBetween(const Vec3& a, const Vec3& b) {
+  return std::atan2(a.cross(b).norm(), a.dot(b)) * 180 / M_PI;
+}
 
 void push(Toolpath& p, const Vec3& x, const Vec3& n, MoveKind kind, double h, double e) {
   p.points.push_back(x);
@@ -41,7 +43,8 @@ struct Scene {
       material.push_back(1);
     }
     for (double y = -6; y <= 6.01; y += 0.5) {
-      if (std::abs(y) < 1e-9) station = static_cast<int>(points.size());
+      if (std::abs(y) < 1e-9)
+        station = static_cast<int>(points.size());
       points.emplace_back(0, y, 0);
       axes.emplace_back(0, 0, 1);
       material.push_back(1);
@@ -57,17 +60,21 @@ NozzleModel cone45() {
 
 int collidingStations(const Scene& s, const std::vector<Vec3>& axes) {
   std::vector<int> time(s.points.size());
-  for (size_t i = 0; i < time.size(); ++i) time[i] = static_cast<int>(i);
-  return static_cast<int>(verifyNozzleClearance(s.points, axes, time, cone45(), 0, nullptr, &s.material).violatingStations);
+  for (size_t i = 0; i < time.size(); ++i)
+    time[i] = static_cast<int>(i);
+  return static_cast<int>(
+      verifyNozzleClearance(s.points, axes, time, cone45(), 0, nullptr, &s.material)
+          .violatingStations);
 }
 
-} // namespace
+}  // namespace
 
 TEST(PathSubdivision, RotationStepsLengthsAndExactExtrusion) {
   Toolpath p;
   push(p, Vec3(0, 0, 0), Vec3(0, 0, 1), MoveKind::Air, 0, 0);
-  push(p, Vec3(0, 0, 0.4), Vec3(0, 0, 1), MoveKind::Print, 0.4, 0);                 // arrives by air
-  push(p, Vec3(3, 0, 0.4), Vec3(std::sin(0.35), 0, std::cos(0.35)), MoveKind::Print, 0.8, 1.0);  // turns 20°
+  push(p, Vec3(0, 0, 0.4), Vec3(0, 0, 1), MoveKind::Print, 0.4, 0);  // arrives by air
+  push(p, Vec3(3, 0, 0.4), Vec3(std::sin(0.35), 0, std::cos(0.35)), MoveKind::Print, 0.8,
+       1.0);  // turns 20°
   const std::vector<Vec3> original = p.normals;
   std::vector<Vec3> reference = p.normals;
   const SubdivisionCounts c = subdivideToolpath(p, 5 * M_PI / 180, 1.0, &reference);
@@ -83,9 +90,11 @@ TEST(PathSubdivision, RotationStepsLengthsAndExactExtrusion) {
     EXPECT_EQ(p.kind[i], MoveKind::Print);
     EXPECT_NEAR(degreesBetween(p.normals[i], reference[i]), 0.0, 1e-9);
     // Eq. 14 per piece: ΔE ∝ (h_a + h_b) / 2 · L with the same constant as the whole segment.
-    const double piece = 0.5 * (p.thickness[i - 1] + p.thickness[i]) * (p.points[i] - p.points[i - 1]).norm();
+    const double piece =
+        0.5 * (p.thickness[i - 1] + p.thickness[i]) * (p.points[i] - p.points[i - 1]).norm();
     const double whole = 0.5 * (0.4 + 0.8) * 3.0;
-    EXPECT_NEAR((p.extrusion[i] - p.extrusion[i - 1]) / 1.0, piece / whole, 1e-12) << "piece ending at " << i;
+    EXPECT_NEAR((p.extrusion[i] - p.extrusion[i - 1]) / 1.0, piece / whole, 1e-12)
+        << "piece ending at " << i;
   }
   EXPECT_NEAR(degreesBetween(p.normals.back(), original.back()), 0.0, 1e-12);
   // Nothing to do: no change.
@@ -114,7 +123,8 @@ TEST(NozzleAxisClearance, TiltsTheLeastAngleAwayAndFadesAlongThePath) {
   // nearer than it turn, by less than the station.
   int faded = 0;
   for (size_t i = 0; i < s.points.size(); ++i) {
-    if (s.points[i].x() != 0) continue;  // the material line, printed before the stations
+    if (s.points[i].x() != 0)
+      continue;  // the material line, printed before the stations
     const double t = degreesBetween(axes[i], Vec3(0, 0, 1));
     EXPECT_LE(t, 15.0 + 1e-9);
     if (std::abs(s.points[i].y()) > 6 - 1e-9) {
@@ -132,7 +142,8 @@ TEST(NozzleAxisClearance, ReportsStationsNoAllowedTiltClears) {
   o.maxTiltDeg = 2;  // 3.2° would be needed
   const AxisClearanceResult r = clearNozzleAxes(s.points, axes, s.axes, s.material, cone45(), o);
   EXPECT_GT(r.unresolvedStations, 0);
-  EXPECT_NEAR(degreesBetween(axes[s.station], Vec3(0, 0, 1)), 0.0, 2.0 + 1e-9);  // within the limit, maybe faded
+  EXPECT_NEAR(degreesBetween(axes[s.station], Vec3(0, 0, 1)), 0.0,
+              2.0 + 1e-9);  // within the limit, maybe faded
   EXPECT_GT(collidingStations(s, axes), 0);
   // Off: detection only.
   axes = s.axes;
@@ -148,7 +159,8 @@ TEST(NozzleAxisClearance, BadInput) {
   std::vector<Vec3> axes = s.axes;
   AxisClearanceOptions o;
   std::vector<Vec3> shortAxes(axes.begin(), axes.end() - 1);
-  EXPECT_THROW(clearNozzleAxes(s.points, shortAxes, s.axes, s.material, cone45(), o), GeoLatticeError);
+  EXPECT_THROW(clearNozzleAxes(s.points, shortAxes, s.axes, s.material, cone45(), o),
+               GeoLatticeError);
   o.maxTiltDeg = 70;
   EXPECT_THROW(clearNozzleAxes(s.points, axes, s.axes, s.material, cone45(), o), GeoLatticeError);
   o = AxisClearanceOptions{};
@@ -156,5 +168,6 @@ TEST(NozzleAxisClearance, BadInput) {
   EXPECT_THROW(clearNozzleAxes(s.points, axes, s.axes, s.material, cone45(), o), GeoLatticeError);
   NozzleModel bad = cone45();
   bad.halfAngleDeg = 95;
-  EXPECT_THROW(clearNozzleAxes(s.points, axes, s.axes, s.material, bad, AxisClearanceOptions{}), GeoLatticeError);
+  EXPECT_THROW(clearNozzleAxes(s.points, axes, s.axes, s.material, bad, AxisClearanceOptions{}),
+               GeoLatticeError);
 }

@@ -44,13 +44,15 @@ std::vector<std::uint8_t> flagsOf(const TetMesh& mesh, const std::vector<int>& i
 
 /// The tets of boxTetMesh(size, n) whose cell centre satisfies `keep`, unused vertices removed:
 /// a conforming voxel solid.
-TetMesh voxelMesh(const Vec3& size, int nx, int ny, int nz, const std::function<bool(const Vec3&)>& keep) {
+TetMesh voxelMesh(const Vec3& size, int nx, int ny, int nz,
+                  const std::function<bool(const Vec3&)>& keep) {
   const TetMesh box = boxTetMesh(size, nx, ny, nz);
   const Vec3 cell(size.x() / nx, size.y() / ny, size.z() / nz);
   TetMesh out;
   std::vector<int> id(box.points.size(), -1);
   for (const auto& t : box.tets) {
-    const Vec3 centroid = 0.25 * (box.points[t[0]] + box.points[t[1]] + box.points[t[2]] + box.points[t[3]]);
+    const Vec3 centroid =
+        0.25 * (box.points[t[0]] + box.points[t[1]] + box.points[t[2]] + box.points[t[3]]);
     Vec3 centre;
     for (int a = 0; a < 3; ++a) {
       centre[a] = (std::floor(centroid[a] / cell[a]) + 0.5) * cell[a];
@@ -99,7 +101,8 @@ struct PipelineResult {
   OverhangResult overhang;
 };
 
-PipelineResult runPipeline(const TriangleSurface& surface, double edgeLength, double baseTolerance) {
+PipelineResult runPipeline(const TriangleSurface& surface, double edgeLength,
+                           double baseTolerance) {
   TetrahedralizeOptions options;
   options.targetEdgeLength = edgeLength;
   const TetMesh mesh = tetrahedralizeSurface(surface, options).mesh;
@@ -112,7 +115,7 @@ PipelineResult runPipeline(const TriangleSurface& surface, double edgeLength, do
   return r;
 }
 
-} // namespace
+}  // namespace
 
 TEST(OverhangAnalysis, AngleOfANormal) {
   const Vec3 up(0, 0, 1);
@@ -146,7 +149,8 @@ TEST(OverhangAnalysis, BoxHasNoOverhangAndItsBottomIsTheBase) {
     // Exact angles by face orientation: top 0°, walls 90°, bottom (on the base) 180°.
     const Vec3 c = (mesh.points[topology.boundaryFaces()[f].vertices[0]] +
                     mesh.points[topology.boundaryFaces()[f].vertices[1]] +
-                    mesh.points[topology.boundaryFaces()[f].vertices[2]]) / 3.0;
+                    mesh.points[topology.boundaryFaces()[f].vertices[2]]) /
+                   3.0;
     const double expected = c.z() == 30.0 ? 0.0 : c.z() == 0.0 ? 180.0 : 90.0;
     ASSERT_NEAR(r.planarDeg[f], expected, 1e-9) << "face " << f;
     ASSERT_EQ(r.curvedDeg[f], r.planarDeg[f]);
@@ -156,7 +160,8 @@ TEST(OverhangAnalysis, BoxHasNoOverhangAndItsBottomIsTheBase) {
   // The same box through the GDF: γ grows along +z, so the curved layers are planes too.
   const std::vector<int> sources = sourcesNearLowestZ(mesh, 1e-9);
   const GeodesicFields fields = computeGeodesicDistanceFields(mesh, sources);
-  const OverhangResult g = analyzeOverhang(mesh, topology, fields.gammaDirection, flagsOf(mesh, sources));
+  const OverhangResult g =
+      analyzeOverhang(mesh, topology, fields.gammaDirection, flagsOf(mesh, sources));
   EXPECT_EQ(g.planarFraction, 0.0);
   EXPECT_EQ(g.curvedFraction, 0.0);
   EXPECT_NEAR(g.baseArea, 40 * 40, 1e-9);
@@ -196,7 +201,7 @@ TEST(OverhangAnalysis, ThresholdIsStrict) {
   const std::vector<Vec3> up(mesh.tets.size(), Vec3(0, 0, 1));
   const auto base = flagsBelow(mesh, 0.0);
   OverhangOptions options;
-  options.thresholdDeg = 180.0; // nothing is steeper than 180°
+  options.thresholdDeg = 180.0;  // nothing is steeper than 180°
   EXPECT_EQ(analyzeOverhang(mesh, topology, up, base, options).planarFraction, 0.0);
   options.thresholdDeg = 179.999;
   EXPECT_GT(analyzeOverhang(mesh, topology, up, base, options).planarFraction, 0.0);
@@ -220,10 +225,11 @@ TEST(OverhangAnalysis, MushroomCapOverhangsOnlyUnderPlanarSlicing) {
   // Curved layers: the nozzle follows ∇γ, which turns outward into the cap.
   const std::vector<int> sources = sourcesNearLowestZ(mesh, 1e-9);
   const GeodesicFields fields = computeGeodesicDistanceFields(mesh, sources);
-  const OverhangResult r = analyzeOverhang(mesh, topology, fields.gammaDirection, flagsOf(mesh, sources));
+  const OverhangResult r =
+      analyzeOverhang(mesh, topology, fields.gammaDirection, flagsOf(mesh, sources));
   EXPECT_NEAR(r.planarFraction, planar.planarFraction, 1e-12);
-  std::printf("[overhang] mushroom (%zu tets): planar %.3g %%, curved %.3g %%\n", mesh.tets.size(), 100 * r.planarFraction,
-              100 * r.curvedFraction);
+  std::printf("[overhang] mushroom (%zu tets): planar %.3g %%, curved %.3g %%\n", mesh.tets.size(),
+              100 * r.planarFraction, 100 * r.curvedFraction);
   EXPECT_LT(r.curvedFraction, 0.25 * r.planarFraction);
 }
 
@@ -240,28 +246,33 @@ TEST(OverhangAnalysis, BadInputIsReported) {
   }
   std::vector<Vec3> shortList(up.begin(), up.end() - 1);
   EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, topology, shortList, base); }),
-                  std::to_string(up.size() - 1) + " nozzle directions for " + std::to_string(up.size()) + " tets");
+                  std::to_string(up.size() - 1) + " nozzle directions for " +
+                      std::to_string(up.size()) + " tets");
   std::vector<std::uint8_t> shortBase(base.begin(), base.end() - 1);
   EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, topology, up, shortBase); }),
-                  std::to_string(base.size() - 1) + " base flags for " + std::to_string(base.size()) + " vertices");
+                  std::to_string(base.size() - 1) + " base flags for " +
+                      std::to_string(base.size()) + " vertices");
   // A non-unit or non-finite direction of a boundary tet names the tet.
   const int tet = topology.boundaryFaces().front().tet;
   up[tet] = Vec3(0, 0, 2);
-  EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, topology, up, base); }),
-                  "nozzle direction of tet " + std::to_string(tet) + " is (0.000000, 0.000000, 2.000000)");
+  EXPECT_CONTAINS(
+      errorOf([&] { analyzeOverhang(mesh, topology, up, base); }),
+      "nozzle direction of tet " + std::to_string(tet) + " is (0.000000, 0.000000, 2.000000)");
   up[tet] = Vec3(0, std::nan(""), 1);
   EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, topology, up, base); }),
                   "nozzle direction of tet " + std::to_string(tet));
-  up[tet] = Vec3(0, 0, 1.0005); // float-precision unit vectors are accepted
+  up[tet] = Vec3(0, 0, 1.0005);  // float-precision unit vectors are accepted
   EXPECT_NO_THROW(analyzeOverhang(mesh, topology, up, base));
   up[tet] = Vec3(0, 0, 1);
   // Topology of another mesh.
   const TetMesh other = boxTetMesh(Vec3(10, 10, 10), 1, 1, 1);
   const TetMeshTopology otherTopology(other);
-  EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, otherTopology, up, base); }), "topology of another mesh");
+  EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, otherTopology, up, base); }),
+                  "topology of another mesh");
   // Every boundary vertex on the base: nothing left to analyse.
   const std::vector<std::uint8_t> all(mesh.points.size(), 1);
-  EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, topology, up, all); }), "every boundary face lies on the base");
+  EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, topology, up, all); }),
+                  "every boundary face lies on the base");
 }
 
 // The numbers of the closing note: curved layers (nozzle along ∇γ) against planar
@@ -270,16 +281,18 @@ TEST(OverhangAnalysis, CurvedLayersRemoveMostOverhangOfTheYModel) {
   // The stored copy (generated by yShapeSurface(), see testdata/README.md), so that the
   // reported numbers do not depend on how CGAL's output varies between builds.
   const PipelineResult r = runPipeline(readObj(kData + "/y_shape.obj"), 2.0, 1e-6);
-  std::printf("[overhang] Y model (%d tets): planar %.3g %%, curved %.3g %% (area > 135 deg, of %.0f mm^2 off the base); "
-              "max angle planar %.1f, curved %.1f deg\n",
-              r.tets, 100 * r.overhang.planarFraction, 100 * r.overhang.curvedFraction,
-              r.overhang.totalArea - r.overhang.baseArea, r.overhang.maxPlanarDeg, r.overhang.maxCurvedDeg);
+  std::printf(
+      "[overhang] Y model (%d tets): planar %.3g %%, curved %.3g %% (area > 135 deg, of %.0f mm^2 "
+      "off the base); "
+      "max angle planar %.1f, curved %.1f deg\n",
+      r.tets, 100 * r.overhang.planarFraction, 100 * r.overhang.curvedFraction,
+      r.overhang.totalArea - r.overhang.baseArea, r.overhang.maxPlanarDeg, r.overhang.maxCurvedDeg);
   EXPECT_GT(r.tets, 20000);
   EXPECT_LT(r.tets, 80000);
   // Base: the trunk's bottom disk (radius 6 mm, a polygon after remeshing).
   EXPECT_NEAR(r.overhang.baseArea, 3.14159265 * 36.0, 0.02 * 3.14159265 * 36.0);
-  EXPECT_GT(r.overhang.planarFraction, 0.03); // branch undersides lean 50° + round tips
-  EXPECT_GT(r.overhang.maxPlanarDeg, 138.0); // 90° + lean on the lowest line of a branch
+  EXPECT_GT(r.overhang.planarFraction, 0.03);  // branch undersides lean 50° + round tips
+  EXPECT_GT(r.overhang.maxPlanarDeg, 138.0);   // 90° + lean on the lowest line of a branch
   EXPECT_LT(r.overhang.curvedFraction, 0.1 * r.overhang.planarFraction);
 }
 
@@ -307,10 +320,10 @@ TEST(OverhangAnalysis, CurvedLayersRemoveMostOverhangOfTheBunny) {
     p = scale * (p - Vec3(0, 0, zMin));
   }
   const PipelineResult r = runPipeline(bunny, 6.0, 0.5);
-  std::printf("[overhang] bunny 80 mm (%d tets): planar %.3g %%, curved %.3g %%\n", r.tets, 100 * r.overhang.planarFraction,
-              100 * r.overhang.curvedFraction);
+  std::printf("[overhang] bunny 80 mm (%d tets): planar %.3g %%, curved %.3g %%\n", r.tets,
+              100 * r.overhang.planarFraction, 100 * r.overhang.curvedFraction);
   EXPECT_LT(r.tets, 80000);
   EXPECT_GT(r.overhang.baseArea, 0.0);
-  EXPECT_GT(r.overhang.planarFraction, 0.08); // chin, belly, ears, tail
+  EXPECT_GT(r.overhang.planarFraction, 0.08);  // chin, belly, ears, tail
   EXPECT_LT(r.overhang.curvedFraction, 0.1 * r.overhang.planarFraction);
 }

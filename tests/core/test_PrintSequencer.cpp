@@ -27,8 +27,8 @@ namespace {
 void addRing(LatticeGraph& g, int layer, double x, double y, double z, double hx, double hy) {
   const int s = static_cast<int>(g.subgraphs.size());
   const int v0 = static_cast<int>(g.points.size());
-  const Vec3 corners[4] = {Vec3(x - hx, y - hy, z), Vec3(x + hx, y - hy, z), Vec3(x + hx, y + hy, z),
-                           Vec3(x - hx, y + hy, z)};
+  const Vec3 corners[4] = {Vec3(x - hx, y - hy, z), Vec3(x + hx, y - hy, z),
+                           Vec3(x + hx, y + hy, z), Vec3(x - hx, y + hy, z)};
   LatticeSubgraph sub;
   sub.id = s;
   sub.layer = layer;
@@ -103,7 +103,7 @@ bool respectsCriterion1(const SkeletonTree& tree, const PrintSequence& s) {
   return true;
 }
 
-} // namespace
+}  // namespace
 
 TEST(PotentialCollisions, TowersBlockEachOther) {
   const TwoTowers t = twoTowers(4.0, 15);
@@ -113,7 +113,8 @@ TEST(PotentialCollisions, TowersBlockEachOther) {
   const auto& pcg = wide.pcg[1];
   EXPECT_TRUE(std::find(pcg.begin(), pcg.end(), 0) == pcg.end());
   EXPECT_TRUE(std::find(pcg.begin(), pcg.end(), 2 * 15) != pcg.end());  // B's top ring
-  EXPECT_TRUE(std::find(pcg.begin(), pcg.end(), 3) != pcg.end());       // A's own next ring is above it too
+  EXPECT_TRUE(std::find(pcg.begin(), pcg.end(), 3) !=
+              pcg.end());  // A's own next ring is above it too
   // A needle sees only what is straight above.
   const PotentialCollisions needle = computePotentialCollisions(m, cone(1), 2);
   for (int j : needle.pcg[1]) {
@@ -131,7 +132,8 @@ TEST(PotentialCollisions, MatchesTheVerifierPairwise) {
     const int K = static_cast<int>(t.tree.nodes.size());
     for (int i = 0; i < K; ++i) {
       for (int j = 0; j < K; ++j) {
-        if (i == j) continue;
+        if (i == j)
+          continue;
         std::vector<Vec3> pts, nrm;
         std::vector<int> time;
         for (int s : {j, i}) {
@@ -164,10 +166,11 @@ TEST(PrintSequencer, StrategiesOnTwoTowers) {
     const PrintSequence a4 = sequencePrint(t.tree, m, &pcg, o);
     o.strategy = SequenceStrategy::Rollout;
     const PrintSequence best = sequencePrint(t.tree, m, &pcg, o);
-    std::printf("[sequence] towers NA %4.0f: LPT %d/%.1f  DPT %d/%.1f %s  A4 %d/%.1f  best %d/%.1f\n", na,
-                lpt.retractions, lpt.airLength, dpt.retractions, dpt.airLength,
-                verified(m, dpt, n) ? "ok" : "collides", a4.retractions, a4.airLength, best.retractions,
-                best.airLength);
+    std::printf(
+        "[sequence] towers NA %4.0f: LPT %d/%.1f  DPT %d/%.1f %s  A4 %d/%.1f  best %d/%.1f\n", na,
+        lpt.retractions, lpt.airLength, dpt.retractions, dpt.airLength,
+        verified(m, dpt, n) ? "ok" : "collides", a4.retractions, a4.airLength, best.retractions,
+        best.airLength);
     for (const PrintSequence* s : {&lpt, &dpt, &a4, &best}) {
       EXPECT_TRUE(respectsCriterion1(t.tree, *s));
       EXPECT_EQ(s->forcedSteps, 0);
@@ -199,8 +202,8 @@ TEST(PrintSequencer, ThreeBranchTreeAcceptance) {
   to.targetEdgeLength = 2.0;
   const TetMesh mesh = tetrahedralizeSurface(surface, to).mesh;
   const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
-  const CurvedLayers layers =
-      sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
+  const CurvedLayers layers = sliceCurvedLayers(
+      mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
   LatticeOptions lo;
   lo.alphaWidth = lo.betaWidth = 4.0;
   const LatticeGraph lattice = buildLatticeGraph(layers, lo);
@@ -210,7 +213,9 @@ TEST(PrintSequencer, ThreeBranchTreeAcceptance) {
   const SkeletonAncestry ancestry(tree);
   CollisionExemption exemption;
   exemption.group = m.subgraph;
-  exemption.unavoidable = [&](int station, int obstacle) { return ancestry.isAncestor(obstacle, station); };
+  exemption.unavoidable = [&](int station, int obstacle) {
+    return ancestry.isAncestor(obstacle, station);
+  };
   auto check = [&](const PrintSequence& s, const NozzleModel& n) {
     std::vector<int> time(m.points.size());
     for (size_t i = 0; i < time.size(); ++i) {
@@ -231,13 +236,16 @@ TEST(PrintSequencer, ThreeBranchTreeAcceptance) {
     const PrintSequence a4 = sequencePrint(tree, m, &pcg, o);
     o.strategy = SequenceStrategy::Rollout;
     const PrintSequence best = sequencePrint(tree, m, &pcg, o);
-    const CollisionReport rl = check(lpt, n), rd = check(dpt, n), ra = check(a4, n), rb = check(best, n);
-    std::printf("[sequence] tree %zu nodes NA %.0f: LPT %d/%.0f  DPT %d/%.0f %s  A4 %d/%.0f %s  best %d/%.0f %s; "
-                "unavoidable stations %lld\n",
-                tree.nodes.size(), na, lpt.retractions, lpt.airLength, dpt.retractions, dpt.airLength,
-                rd.orderCollisionFree ? "ok" : "collides", a4.retractions, a4.airLength,
-                ra.orderCollisionFree ? "ok" : "collides", best.retractions, best.airLength,
-                rb.orderCollisionFree ? "ok" : "collides", rl.unavoidableStations);
+    const CollisionReport rl = check(lpt, n), rd = check(dpt, n), ra = check(a4, n),
+                          rb = check(best, n);
+    std::printf(
+        "[sequence] tree %zu nodes NA %.0f: LPT %d/%.0f  DPT %d/%.0f %s  A4 %d/%.0f %s  best "
+        "%d/%.0f %s; "
+        "unavoidable stations %lld\n",
+        tree.nodes.size(), na, lpt.retractions, lpt.airLength, dpt.retractions, dpt.airLength,
+        rd.orderCollisionFree ? "ok" : "collides", a4.retractions, a4.airLength,
+        ra.orderCollisionFree ? "ok" : "collides", best.retractions, best.airLength,
+        rb.orderCollisionFree ? "ok" : "collides", rl.unavoidableStations);
     EXPECT_TRUE(rl.orderCollisionFree);
     EXPECT_TRUE(ra.orderCollisionFree) << "A4 at NA " << na;
     EXPECT_TRUE(rb.orderCollisionFree) << "best at NA " << na;
@@ -250,7 +258,8 @@ TEST(PrintSequencer, ThreeBranchTreeAcceptance) {
     EXPECT_EQ(ra.unavoidableStations, rl.unavoidableStations);
     dptCollided |= !rd.orderCollisionFree;
   }
-  EXPECT_TRUE(dptCollided) << "depth first must collide with a wide nozzle on three leaning branches";
+  EXPECT_TRUE(dptCollided)
+      << "depth first must collide with a wide nozzle on three leaning branches";
 }
 
 TEST(PrintSequencer, MutualBlockingIsForcedAndReported) {

@@ -33,7 +33,9 @@ struct Recorder {
   int abortAfter = -1;
   int polls = 0;
   std::function<void(double)> progress() {
-    return [this](double f) { values.push_back(f); };
+    return [this](double f) {
+      values.push_back(f);
+    };
   }
   std::function<bool()> shouldAbort() {
     return [this] {
@@ -93,8 +95,9 @@ const YPart& yPart() {
     p->mesh = tetrahedralizeSurface(p->surface, t).mesh;
     p->sources = sourcesNearLowestZ(p->mesh, 0.5);
     p->fields = computeGeodesicDistanceFields(p->mesh, p->sources);
-    p->layers = sliceCurvedLayers(p->mesh, p->fields.gamma, p->fields.alpha, p->fields.beta,
-                                  vertexGradientDirections(p->mesh, p->fields.gamma), SlicerOptions{});
+    p->layers =
+        sliceCurvedLayers(p->mesh, p->fields.gamma, p->fields.alpha, p->fields.beta,
+                          vertexGradientDirections(p->mesh, p->fields.gamma), SlicerOptions{});
     LatticeOptions lo;
     lo.alphaWidth = lo.betaWidth = 4.0;
     p->lattice = buildLatticeGraph(p->layers, lo);
@@ -105,7 +108,7 @@ const YPart& yPart() {
   return *part;
 }
 
-} // namespace
+}  // namespace
 
 TEST(ProgressReporter, MapsPartsAndThrowsOnAbort) {
   Recorder r;
@@ -157,7 +160,8 @@ TEST(ProgressCallbacks, TetrahedralizeReportsEveryRunAndAborts) {
   stop.abortAfter = 0;
   t.progress = stop.progress();
   t.shouldAbort = stop.shouldAbort();
-  EXPECT_EQ(abortMessage([&] { tetrahedralizeSurface(y.surface, t); }), "tetrahedralization aborted");
+  EXPECT_EQ(abortMessage([&] { tetrahedralizeSurface(y.surface, t); }),
+            "tetrahedralization aborted");
 }
 
 TEST(ProgressCallbacks, GeodesicFieldsSetUpAndSolveReportAndAbort) {
@@ -180,7 +184,8 @@ TEST(ProgressCallbacks, GeodesicFieldsSetUpAndSolveReportAndAbort) {
   stop.abortAfter = 2;
   o.progress = stop.progress();
   o.shouldAbort = stop.shouldAbort();
-  EXPECT_EQ(abortMessage([&] { GeodesicDistanceFields aborted(y.mesh, o); }), "geodesic distance fields aborted");
+  EXPECT_EQ(abortMessage([&] { GeodesicDistanceFields aborted(y.mesh, o); }),
+            "geodesic distance fields aborted");
   // Aborted in a solve (after the Dirichlet factorization), then solved again.
   stop.abortAfter = -1;
   stop.values.clear();
@@ -200,7 +205,8 @@ TEST(ProgressCallbacks, SlicerReportsPerTetAndAborts) {
   o.progress = r.progress();
   o.shouldAbort = r.shouldAbort();
   const std::vector<Vec3> normals = vertexGradientDirections(y.mesh, y.fields.gamma);
-  const CurvedLayers layers = sliceCurvedLayers(y.mesh, y.fields.gamma, y.fields.alpha, y.fields.beta, normals, o);
+  const CurvedLayers layers =
+      sliceCurvedLayers(y.mesh, y.fields.gamma, y.fields.alpha, y.fields.beta, normals, o);
   r.expectComplete(40);
   EXPECT_EQ(layers.points, y.layers.points);
   EXPECT_EQ(layers.triangles, y.layers.triangles);
@@ -209,7 +215,9 @@ TEST(ProgressCallbacks, SlicerReportsPerTetAndAborts) {
   stop.abortAfter = 10;
   o.progress = stop.progress();
   o.shouldAbort = stop.shouldAbort();
-  EXPECT_EQ(abortMessage([&] { sliceCurvedLayers(y.mesh, y.fields.gamma, y.fields.alpha, y.fields.beta, normals, o); }),
+  EXPECT_EQ(abortMessage([&] {
+              sliceCurvedLayers(y.mesh, y.fields.gamma, y.fields.alpha, y.fields.beta, normals, o);
+            }),
             "curved layer slicing aborted");
   EXPECT_EQ(stop.values.size(), 10u);  // stopped at the first poll after the 10th report
 }
@@ -228,7 +236,8 @@ TEST(ProgressCallbacks, SkeletonTreeReportsAndAborts) {
   stop.abortAfter = 5;
   o.progress = stop.progress();
   o.shouldAbort = stop.shouldAbort();
-  EXPECT_EQ(abortMessage([&] { buildSkeletonTree(y.mesh, y.fields.gamma, y.lattice, o); }), "skeleton tree aborted");
+  EXPECT_EQ(abortMessage([&] { buildSkeletonTree(y.mesh, y.fields.gamma, y.lattice, o); }),
+            "skeleton tree aborted");
 }
 
 TEST(ProgressCallbacks, PotentialCollisionsOnWorkerThreadsReportAndAbort) {
@@ -249,15 +258,16 @@ TEST(ProgressCallbacks, PotentialCollisionsOnWorkerThreadsReportAndAbort) {
     stop.abortAfter = 3;
     o.progress = stop.progress();
     o.shouldAbort = stop.shouldAbort();
-    EXPECT_EQ(abortMessage([&] { computePotentialCollisions(y.material, y.nozzle, o); }), "potential collisions aborted");
+    EXPECT_EQ(abortMessage([&] { computePotentialCollisions(y.material, y.nozzle, o); }),
+              "potential collisions aborted");
   }
 }
 
 TEST(ProgressCallbacks, SequencerReportsEveryStrategyAndAborts) {
   const YPart& y = yPart();
   const PotentialCollisions pcg = computePotentialCollisions(y.material, y.nozzle, 2);
-  for (SequenceStrategy s : {SequenceStrategy::LayerPriority, SequenceStrategy::DepthPriority, SequenceStrategy::Greedy,
-                             SequenceStrategy::Rollout}) {
+  for (SequenceStrategy s : {SequenceStrategy::LayerPriority, SequenceStrategy::DepthPriority,
+                             SequenceStrategy::Greedy, SequenceStrategy::Rollout}) {
     SCOPED_TRACE(sequenceStrategyName(s));
     SequenceOptions plain;
     plain.strategy = s;
@@ -275,6 +285,7 @@ TEST(ProgressCallbacks, SequencerReportsEveryStrategyAndAborts) {
     stop.abortAfter = 8;
     o.progress = stop.progress();
     o.shouldAbort = stop.shouldAbort();
-    EXPECT_EQ(abortMessage([&] { sequencePrint(y.tree, y.material, &pcg, o); }), "print sequencing aborted");
+    EXPECT_EQ(abortMessage([&] { sequencePrint(y.tree, y.material, &pcg, o); }),
+              "print sequencing aborted");
   }
 }

@@ -28,14 +28,16 @@ struct Part {
   LatticeGraph lattice;
 };
 
-Part buildPart(const TriangleSurface& surface, double edgeLength, double sourceTolerance, double latticeWidth) {
+Part buildPart(const TriangleSurface& surface, double edgeLength, double sourceTolerance,
+               double latticeWidth) {
   Part p;
   TetrahedralizeOptions t;
   t.targetEdgeLength = edgeLength;
   p.mesh = tetrahedralizeSurface(surface, t).mesh;
   p.fields = computeGeodesicDistanceFields(p.mesh, sourcesNearLowestZ(p.mesh, sourceTolerance));
-  const CurvedLayers layers = sliceCurvedLayers(p.mesh, p.fields.gamma, p.fields.alpha, p.fields.beta,
-                                                vertexGradientDirections(p.mesh, p.fields.gamma), SlicerOptions{});
+  const CurvedLayers layers =
+      sliceCurvedLayers(p.mesh, p.fields.gamma, p.fields.alpha, p.fields.beta,
+                        vertexGradientDirections(p.mesh, p.fields.gamma), SlicerOptions{});
   LatticeOptions o;
   o.alphaWidth = o.betaWidth = latticeWidth;
   p.lattice = buildLatticeGraph(layers, o);
@@ -66,7 +68,7 @@ int nodesOnLayer(const SkeletonTree& tree, int layer) {
   return n;
 }
 
-} // namespace
+}  // namespace
 
 TEST(SkeletonTree, BoxIsAChain) {
   // Structured box with the exact fields γ = z, α = y, β = x: every layer is one sub-graph, so
@@ -82,8 +84,9 @@ TEST(SkeletonTree, BoxIsAChain) {
     p.fields.alpha[i] = p.mesh.points[i].y();
     p.fields.beta[i] = p.mesh.points[i].x();
   }
-  const CurvedLayers layers = sliceCurvedLayers(p.mesh, p.fields.gamma, p.fields.alpha, p.fields.beta,
-                                                vertexGradientDirections(p.mesh, p.fields.gamma), SlicerOptions{});
+  const CurvedLayers layers =
+      sliceCurvedLayers(p.mesh, p.fields.gamma, p.fields.alpha, p.fields.beta,
+                        vertexGradientDirections(p.mesh, p.fields.gamma), SlicerOptions{});
   LatticeOptions o;
   o.alphaWidth = o.betaWidth = 5.0;
   o.alphaPhase = o.betaPhase = 1.3;
@@ -103,8 +106,9 @@ TEST(SkeletonTree, YSplitsIntoTwoBranches) {
   Part p = buildPart(readObj(kData + "/y_shape.obj"), 2.0, 0.5, 4.0);
   const SkeletonTree tree = buildSkeletonTree(p.mesh, p.fields.gamma, p.lattice);
   expectConsistent(tree, p.lattice);
-  std::printf("[skeleton] Y: %zu nodes, %zu edges, roots %d, split %d, merge %d, floating %d\n", tree.nodes.size(),
-              tree.edges.size(), tree.roots, tree.splitNodes, tree.mergeNodes, tree.floatingNodes);
+  std::printf("[skeleton] Y: %zu nodes, %zu edges, roots %d, split %d, merge %d, floating %d\n",
+              tree.nodes.size(), tree.edges.size(), tree.roots, tree.splitNodes, tree.mergeNodes,
+              tree.floatingNodes);
   EXPECT_EQ(tree.roots, 1);
   EXPECT_EQ(tree.floatingNodes, 0);
   EXPECT_GE(tree.splitNodes, 1);
@@ -128,14 +132,16 @@ TEST(SkeletonTree, TorusOnItsSideSplitsAndMerges) {
   const SkeletonTree tree = buildSkeletonTree(p.mesh, p.fields.gamma, p.lattice);
   expectConsistent(tree, p.lattice);
   std::printf("[skeleton] torus: %zu nodes, %zu edges, roots %d, split %d, merge %d, floating %d\n",
-              tree.nodes.size(), tree.edges.size(), tree.roots, tree.splitNodes, tree.mergeNodes, tree.floatingNodes);
+              tree.nodes.size(), tree.edges.size(), tree.roots, tree.splitNodes, tree.mergeNodes,
+              tree.floatingNodes);
   EXPECT_GE(tree.splitNodes, 1);
   EXPECT_GE(tree.mergeNodes, 1);  // a DAG: the two arcs have one common upper node
   EXPECT_EQ(tree.floatingNodes, 0);
   // The merge node's lower nodes lie on opposite sides of the ring (x < 0 and x > 0).
   for (const auto& node : tree.nodes) {
     if (node.lower.size() == 2) {
-      EXPECT_LT(tree.nodes[node.lower[0]].centroid.x() * tree.nodes[node.lower[1]].centroid.x(), 0.0);
+      EXPECT_LT(tree.nodes[node.lower[0]].centroid.x() * tree.nodes[node.lower[1]].centroid.x(),
+                0.0);
     }
   }
 }
@@ -171,11 +177,16 @@ TEST(SkeletonTree, BadInput) {
     gamma[i] = box.points[i].z();
   }
   const std::vector<double> phi = {2.0, 4.0};
-  EXPECT_THROW(buildSkeletonTree(box, gamma, phi, {}), GeoLatticeError);                            // no sub-graph
-  EXPECT_THROW(buildSkeletonTree(TetMesh{}, gamma, phi, {{0, Vec3(5, 5, 2)}}), GeoLatticeError);   // empty mesh
-  EXPECT_THROW(buildSkeletonTree(box, gamma, {4.0, 2.0}, {{0, Vec3(5, 5, 2)}}), GeoLatticeError);  // descending
-  EXPECT_THROW(buildSkeletonTree(box, gamma, phi, {{5, Vec3(5, 5, 2)}}), GeoLatticeError);         // layer out of range
-  EXPECT_THROW(buildSkeletonTree(box, gamma, phi, {{0, Vec3(50, 5, 2)}}), GeoLatticeError);        // outside the part
-  const SkeletonTree ok = buildSkeletonTree(box, gamma, phi, {{0, Vec3(5, 5, 2)}, {1, Vec3(3, 3, 4)}});
+  EXPECT_THROW(buildSkeletonTree(box, gamma, phi, {}), GeoLatticeError);  // no sub-graph
+  EXPECT_THROW(buildSkeletonTree(TetMesh{}, gamma, phi, {{0, Vec3(5, 5, 2)}}),
+               GeoLatticeError);  // empty mesh
+  EXPECT_THROW(buildSkeletonTree(box, gamma, {4.0, 2.0}, {{0, Vec3(5, 5, 2)}}),
+               GeoLatticeError);  // descending
+  EXPECT_THROW(buildSkeletonTree(box, gamma, phi, {{5, Vec3(5, 5, 2)}}),
+               GeoLatticeError);  // layer out of range
+  EXPECT_THROW(buildSkeletonTree(box, gamma, phi, {{0, Vec3(50, 5, 2)}}),
+               GeoLatticeError);  // outside the part
+  const SkeletonTree ok =
+      buildSkeletonTree(box, gamma, phi, {{0, Vec3(5, 5, 2)}, {1, Vec3(3, 3, 4)}});
   EXPECT_EQ(ok.edges.size(), 1u);
 }

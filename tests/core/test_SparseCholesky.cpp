@@ -17,7 +17,9 @@ namespace {
 /// 5-point Laplacian of an m x m grid plus shift * I (SPD for shift > 0), full symmetric storage.
 SpMat gridMatrix(int m, double shift) {
   std::vector<Eigen::Triplet<double>> t;
-  auto id = [m](int i, int j) { return i * m + j; };
+  auto id = [m](int i, int j) {
+    return i * m + j;
+  };
   for (int i = 0; i < m; ++i) {
     for (int j = 0; j < m; ++j) {
       t.emplace_back(id(i, j), id(i, j), 4.0 + shift);
@@ -42,14 +44,14 @@ double relativeResidual(const SpMat& A, const Eigen::VectorXd& x, const Eigen::V
 
 class SparseCholeskyBackends : public ::testing::TestWithParam<CholeskyBackend> {};
 
-} // namespace
+}  // namespace
 
 TEST_P(SparseCholeskyBackends, SolvesAnSpdSystemFromItsLowerTriangle) {
   const SpMat A = gridMatrix(30, 0.01);
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), -1.0, 2.0);
   SparseCholesky solver(GetParam());
   EXPECT_FALSE(solver.factorized());
-  const SpMat lower = A.triangularView<Eigen::Lower>(); // only the lower triangle is read
+  const SpMat lower = A.triangularView<Eigen::Lower>();  // only the lower triangle is read
   solver.factorize(lower, "grid");
   ASSERT_TRUE(solver.factorized());
   EXPECT_LT(relativeResidual(A, solver.solve(b), b), 1e-12);
@@ -113,7 +115,7 @@ TEST(SparseCholesky, SharedAnalysisIsReusedForTheSamePatternOnly) {
   const SpMat A = gridMatrix(25, 0.01);
   SpMat B = A;
   B *= 3.0;
-  B.diagonal().array() += 1.0; // same pattern, other values
+  B.diagonal().array() += 1.0;  // same pattern, other values
   SparseCholesky first;
   EXPECT_FALSE(first.hasAnalysis());
   first.factorize(A, "A");
@@ -125,7 +127,7 @@ TEST(SparseCholesky, SharedAnalysisIsReusedForTheSamePatternOnly) {
   second.factorize(B, "B");
   const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(A.rows(), 1.0, 5.0);
   EXPECT_LT(relativeResidual(B, second.solve(b), b), 1e-12);
-  EXPECT_LT(relativeResidual(A, first.solve(b), b), 1e-12); // untouched by the sharing
+  EXPECT_LT(relativeResidual(A, first.solve(b), b), 1e-12);  // untouched by the sharing
 
   // A matrix with another pattern (and size) is analysed afresh.
   const SpMat C = gridMatrix(12, 0.2);

@@ -47,7 +47,8 @@ TriangleSurface append(TriangleSurface a, const TriangleSurface& b, const Vec3& 
 }
 
 std::string testModel(const std::string& name) {
-  for (const std::string& dir : {std::string(GEOLATTICE_TESTDATA), std::string("/work/shared/testdata")}) {
+  for (const std::string& dir :
+       {std::string(GEOLATTICE_TESTDATA), std::string("/work/shared/testdata")}) {
     if (std::filesystem::exists(dir + "/" + name)) {
       return dir + "/" + name;
     }
@@ -55,7 +56,7 @@ std::string testModel(const std::string& name) {
   return "";
 }
 
-} // namespace
+}  // namespace
 
 TEST(SurfaceCheck, ClosedBoxHasNoDefects) {
   const TriangleSurface box = boxSurface(Vec3(40, 40, 60), 7.0);
@@ -82,7 +83,7 @@ TEST(SurfaceCheck, VolumeIsTranslationInvariant) {
 }
 
 TEST(SurfaceCheck, OpenSurfaceIsRejectedWithTheBoundaryEdgeCount) {
-  TriangleSurface box = boxSurface(Vec3(1, 1, 1), 10.0); // 12 triangles
+  TriangleSurface box = boxSurface(Vec3(1, 1, 1), 10.0);  // 12 triangles
   box.triangles.pop_back();                               // a triangular hole: 3 boundary edges
   const SurfaceCheckReport r = checkSurface(box);
   EXPECT_EQ(r.boundaryEdges, 3);
@@ -104,7 +105,7 @@ TEST(SurfaceCheck, TwoBoxesSharingAnEdgeAreNonManifold) {
   const TriangleSurface a = boxSurface(Vec3(1, 1, 1), 10.0);
   // Second box touches the first only along the edge x = 1, y = 1 (welded vertices).
   const TriangleSurface both = append(a, a, Vec3(1, 1, 0), true);
-  ASSERT_EQ(both.points.size(), 14u); // 8 + 8 - 2 shared corners
+  ASSERT_EQ(both.points.size(), 14u);  // 8 + 8 - 2 shared corners
   const SurfaceCheckReport r = checkSurface(both);
   EXPECT_EQ(r.nonManifoldEdges, 1);
   EXPECT_EQ(r.boundaryEdges, 0);
@@ -120,7 +121,8 @@ TEST(SurfaceCheck, TriangleFanWithAnEdgeInThreeTrianglesIsNonManifold) {
   EXPECT_EQ(r.nonManifoldEdges, 1);
   EXPECT_EQ(r.boundaryEdges, 6);
   // Open is reported first: it is the more basic defect.
-  EXPECT_NE(errorOf([&] { requireClosedManifold(fan); }).find("open surface: 6 boundary edges"), std::string::npos);
+  EXPECT_NE(errorOf([&] { requireClosedManifold(fan); }).find("open surface: 6 boundary edges"),
+            std::string::npos);
 }
 
 TEST(SurfaceCheck, OneFlippedTriangleIsInconsistent) {
@@ -129,7 +131,9 @@ TEST(SurfaceCheck, OneFlippedTriangleIsInconsistent) {
   const SurfaceCheckReport r = checkSurface(box);
   EXPECT_EQ(r.inconsistentEdges, 3);
   EXPECT_EQ(r.boundaryEdges, 0);
-  EXPECT_NE(errorOf([&] { requireClosedManifold(box); }).find("inconsistently oriented triangles: 3 edges"),
+  EXPECT_NE(errorOf([&] {
+              requireClosedManifold(box);
+            }).find("inconsistently oriented triangles: 3 edges"),
             std::string::npos);
 }
 
@@ -143,7 +147,7 @@ TEST(SurfaceCheck, InwardSurfaceIsAcceptedAndFlippedExplicitly) {
   EXPECT_NEAR(r.signedVolume, -24.0, 1e-9);
   EXPECT_EQ(orientOutward(box), static_cast<int>(box.triangles.size()));
   EXPECT_NEAR(checkSurface(box).signedVolume, 24.0, 1e-9);
-  EXPECT_EQ(orientOutward(box), 0); // already outward
+  EXPECT_EQ(orientOutward(box), 0);  // already outward
 }
 
 TEST(SurfaceCheck, ZeroAreaTriangleInAClosedSurfaceIsDegenerate) {
@@ -174,28 +178,33 @@ TEST(SurfaceCheck, RepeatedVertexTriangleIsDegenerate) {
 
 TEST(SurfaceCheck, OutOfRangeIndicesAreCountedWithoutCrashing) {
   TriangleSurface box = boxSurface(Vec3(1, 1, 1), 10.0);
-  box.triangles[4][1] = 8;  // one past the end
-  box.triangles[7][0] = -1; // negative
+  box.triangles[4][1] = 8;   // one past the end
+  box.triangles[7][0] = -1;  // negative
   const SurfaceCheckReport r = checkSurface(box);
   EXPECT_EQ(r.outOfRangeTriangles, 2);
   EXPECT_EQ(r.firstOutOfRangeTriangle, 4);
-  EXPECT_EQ(errorOf([&] { requireClosedManifold(box); }),
-            "invalid surface: 2 triangles reference a vertex index outside 0..7 (first: triangle 4)");
+  EXPECT_EQ(
+      errorOf([&] { requireClosedManifold(box); }),
+      "invalid surface: 2 triangles reference a vertex index outside 0..7 (first: triangle 4)");
 }
 
 TEST(SurfaceCheck, NonFinitePointIsRejected) {
   TriangleSurface box = boxSurface(Vec3(1, 1, 1), 10.0);
   box.points[3].y() = NAN;
   EXPECT_EQ(checkSurface(box).nonFinitePoints, 1);
-  EXPECT_NE(errorOf([&] { requireClosedManifold(box); }).find("NaN or infinite coordinates (first: point 3)"),
+  EXPECT_NE(errorOf([&] {
+              requireClosedManifold(box);
+            }).find("NaN or infinite coordinates (first: point 3)"),
             std::string::npos);
 }
 
 TEST(SurfaceCheck, EmptySurfaceIsRejected) {
-  EXPECT_EQ(errorOf([] { requireClosedManifold(TriangleSurface{}); }), "empty surface: 0 points, 0 triangles");
+  EXPECT_EQ(errorOf([] { requireClosedManifold(TriangleSurface{}); }),
+            "empty surface: 0 points, 0 triangles");
   TriangleSurface pointsOnly;
   pointsOnly.points = {Vec3(0, 0, 0)};
-  EXPECT_NE(errorOf([&] { requireClosedManifold(pointsOnly); }).find("empty surface"), std::string::npos);
+  EXPECT_NE(errorOf([&] { requireClosedManifold(pointsOnly); }).find("empty surface"),
+            std::string::npos);
   EXPECT_FALSE(checkSurface(TriangleSurface{}).isClosedManifold());
 }
 
@@ -204,5 +213,6 @@ TEST(SurfaceCheck, DoublyCoveredTriangleEnclosesNoVolume) {
   flat.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
   flat.triangles = {{0, 1, 2}, {0, 2, 1}};
   EXPECT_TRUE(checkSurface(flat).isClosedManifold());
-  EXPECT_NE(errorOf([&] { requireClosedManifold(flat); }).find("surface encloses no volume"), std::string::npos);
+  EXPECT_NE(errorOf([&] { requireClosedManifold(flat); }).find("surface encloses no volume"),
+            std::string::npos);
 }

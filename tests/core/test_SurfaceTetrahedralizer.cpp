@@ -28,7 +28,9 @@ std::string errorOf(F&& f) {
   return "";
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+bool contains(const std::string& text, const std::string& part) {
+  return text.find(part) != std::string::npos;
+}
 
 TriangleSurface append(TriangleSurface a, const TriangleSurface& b, const Eigen::Matrix3d& rotation,
                        const Vec3& shift, bool flip) {
@@ -46,7 +48,8 @@ TriangleSurface append(TriangleSurface a, const TriangleSurface& b, const Eigen:
 }
 
 std::string testModel(const std::string& name) {
-  for (const std::string& dir : {std::string(GEOLATTICE_TESTDATA), std::string("/work/shared/testdata")}) {
+  for (const std::string& dir :
+       {std::string(GEOLATTICE_TESTDATA), std::string("/work/shared/testdata")}) {
     if (std::filesystem::exists(dir + "/" + name)) {
       return dir + "/" + name;
     }
@@ -60,18 +63,18 @@ TetrahedralizeOptions edge(double length) {
   return o;
 }
 
-} // namespace
+}  // namespace
 
 TEST(SurfaceTetrahedralizer, BoxAt1p5mmFillsTheBoxExactly) {
   const Vec3 size(40, 40, 60);
   const TetrahedralizeResult r = tetrahedralizeSurface(boxSurface(size, 100.0), edge(1.5));
-  std::printf("[ box 40x40x60 @ 1.5 mm ] %d tets, %zu points, mean edge %.3f mm, %.2f s\n", r.tetCount,
-              r.mesh.points.size(), r.meanEdgeLength, r.seconds);
+  std::printf("[ box 40x40x60 @ 1.5 mm ] %d tets, %zu points, mean edge %.3f mm, %.2f s\n",
+              r.tetCount, r.mesh.points.size(), r.meanEdgeLength, r.seconds);
   EXPECT_EQ(r.attempts, 1);
   EXPECT_DOUBLE_EQ(r.targetEdgeLength, 1.5);
   EXPECT_NEAR(r.maxTetVolume, 1.5 * 1.5 * 1.5 / (6 * std::sqrt(2.0)), 1e-12);
   EXPECT_EQ(r.tetCount, static_cast<int>(r.mesh.tets.size()));
-  EXPECT_GT(r.tetCount, 96000.0 / r.maxTetVolume); // the volume bound holds on every tet
+  EXPECT_GT(r.tetCount, 96000.0 / r.maxTetVolume);  // the volume bound holds on every tet
   EXPECT_NEAR(r.meshVolume, 96000.0, 1e-6 * 96000.0);
   EXPECT_NEAR(r.enclosedVolume, 96000.0, 1e-9 * 96000.0);
   EXPECT_GT(r.meanEdgeLength, 0.7 * 1.5);
@@ -79,7 +82,8 @@ TEST(SurfaceTetrahedralizer, BoxAt1p5mmFillsTheBoxExactly) {
   double total = 0.0;
   int nonPositive = 0;
   for (const auto& t : r.mesh.tets) {
-    const double v = signedTetVolume(r.mesh.points[t[0]], r.mesh.points[t[1]], r.mesh.points[t[2]], r.mesh.points[t[3]]);
+    const double v = signedTetVolume(r.mesh.points[t[0]], r.mesh.points[t[1]], r.mesh.points[t[2]],
+                                     r.mesh.points[t[3]]);
     nonPositive += v > 0 ? 0 : 1;
     total += v;
   }
@@ -117,8 +121,8 @@ TEST(SurfaceTetrahedralizer, BoxAt1p5mmFillsTheBoxExactly) {
 
 TEST(SurfaceTetrahedralizer, AutomaticEdgeLengthAimsAt75kTetsOnABox) {
   const TetrahedralizeResult r = tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0));
-  std::printf("[ box 40x40x60 auto ] edge %.3f mm, %d tets, %d TetGen runs, %.2f s\n", r.targetEdgeLength,
-              r.tetCount, r.attempts, r.seconds);
+  std::printf("[ box 40x40x60 auto ] edge %.3f mm, %d tets, %d TetGen runs, %.2f s\n",
+              r.targetEdgeLength, r.tetCount, r.attempts, r.seconds);
   EXPECT_GE(r.tetCount, 60000);
   EXPECT_LE(r.tetCount, 94000);
   EXPECT_LE(r.attempts, kMaxAutoAttempts);
@@ -139,8 +143,9 @@ TEST(SurfaceTetrahedralizer, AutomaticEdgeLengthOnTheBunnyAt100mm) {
   }
   const double enclosed = checkSurface(bunny).signedVolume;
   const TetrahedralizeResult r = tetrahedralizeSurface(bunny);
-  std::printf("[ bunny 100 mm auto ] edge %.3f mm, %d tets, mean edge %.3f mm, %d TetGen runs, %.2f s\n",
-              r.targetEdgeLength, r.tetCount, r.meanEdgeLength, r.attempts, r.seconds);
+  std::printf(
+      "[ bunny 100 mm auto ] edge %.3f mm, %d tets, mean edge %.3f mm, %d TetGen runs, %.2f s\n",
+      r.targetEdgeLength, r.tetCount, r.meanEdgeLength, r.attempts, r.seconds);
   EXPECT_GE(r.tetCount, 50000);
   EXPECT_LE(r.tetCount, 100000);
   EXPECT_NEAR(r.meshVolume, enclosed, 1e-6 * enclosed);
@@ -183,8 +188,9 @@ TEST(SurfaceTetrahedralizer, InwardSurfaceIsFlippedFirst) {
 
 TEST(SurfaceTetrahedralizer, CavityOfAHollowPartStaysEmpty) {
   // Outer box 10^3 with an inward-oriented inner box 4^3: a hollow part of volume 936.
-  const TriangleSurface hollow = append(boxSurface(Vec3(10, 10, 10), 20.0), boxSurface(Vec3(4, 4, 4), 20.0),
-                                        Eigen::Matrix3d::Identity(), Vec3(3, 3, 3), true);
+  const TriangleSurface hollow =
+      append(boxSurface(Vec3(10, 10, 10), 20.0), boxSurface(Vec3(4, 4, 4), 20.0),
+             Eigen::Matrix3d::Identity(), Vec3(3, 3, 3), true);
   const TetrahedralizeResult r = tetrahedralizeSurface(hollow, edge(1.0));
   EXPECT_EQ(r.removedCavityRegions, 1);
   EXPECT_NEAR(r.meshVolume, 936.0, 1e-6 * 936.0);
@@ -198,8 +204,9 @@ TEST(SurfaceTetrahedralizer, CavityOfAHollowPartStaysEmpty) {
 }
 
 TEST(SurfaceTetrahedralizer, DisjointPartsAreAllMeshed) {
-  const TriangleSurface two = append(boxSurface(Vec3(10, 10, 10), 20.0), boxSurface(Vec3(10, 10, 10), 20.0),
-                                     Eigen::Matrix3d::Identity(), Vec3(20, 0, 0), false);
+  const TriangleSurface two =
+      append(boxSurface(Vec3(10, 10, 10), 20.0), boxSurface(Vec3(10, 10, 10), 20.0),
+             Eigen::Matrix3d::Identity(), Vec3(20, 0, 0), false);
   const TetrahedralizeResult r = tetrahedralizeSurface(two, edge(1.5));
   EXPECT_NEAR(r.meshVolume, 2000.0, 1e-6 * 2000.0);
 }
@@ -207,15 +214,18 @@ TEST(SurfaceTetrahedralizer, DisjointPartsAreAllMeshed) {
 TEST(SurfaceTetrahedralizer, OverlappingBoxesAreSelfIntersecting) {
   const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 1.5);
   // Two closed boxes (each valid on its own) that overlap: shifted and rotated copy.
-  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::Matrix3d rotation =
+      Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
   const TriangleSurface both = append(box, box, rotation, Vec3(3.3, 4.1, 2.7), false);
   ASSERT_TRUE(checkSurface(both).isClosedManifold());
   const std::string message = errorOf([&] { tetrahedralizeSurface(both, edge(1.0)); });
   EXPECT_TRUE(contains(message, "self-intersecting surface: TetGen found")) << message;
   EXPECT_TRUE(contains(message, "intersecting facets")) << message;
   // The same with a plain shift (facets crossing at right angles).
-  const TriangleSurface shifted = append(box, box, Eigen::Matrix3d::Identity(), Vec3(5.3, 5.1, 4.9), false);
-  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(shifted, edge(1.0)); }), "self-intersecting surface"));
+  const TriangleSurface shifted =
+      append(box, box, Eigen::Matrix3d::Identity(), Vec3(5.3, 5.1, 4.9), false);
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(shifted, edge(1.0)); }),
+                       "self-intersecting surface"));
 }
 
 TEST(SurfaceTetrahedralizer, GridAlignedOverlapMeshesTheUnion) {
@@ -250,8 +260,9 @@ TEST(SurfaceTetrahedralizer, EmbeddedOutwardShellIsAnInterface) {
 TEST(SurfaceTetrahedralizer, InwardShellOutsideEverythingIsRejected) {
   // Two disjoint boxes, the smaller one inward: total volume positive, but the small box's
   // inside has winding number -1.
-  const TriangleSurface both = append(boxSurface(Vec3(10, 10, 10), 20.0), boxSurface(Vec3(2, 2, 2), 20.0),
-                                      Eigen::Matrix3d::Identity(), Vec3(20, 0, 0), true);
+  const TriangleSurface both =
+      append(boxSurface(Vec3(10, 10, 10), 20.0), boxSurface(Vec3(2, 2, 2), 20.0),
+             Eigen::Matrix3d::Identity(), Vec3(20, 0, 0), true);
   EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(both, edge(1.0)); }),
                        "inconsistently oriented shells: a region has winding number -1"));
 }
@@ -292,18 +303,22 @@ TEST(SurfaceTetrahedralizer, NonManifoldSurfaceIsRejected) {
 }
 
 TEST(SurfaceTetrahedralizer, EmptySurfaceIsRejected) {
-  EXPECT_EQ(errorOf([] { tetrahedralizeSurface(TriangleSurface{}); }), "empty surface: 0 points, 0 triangles");
+  EXPECT_EQ(errorOf([] { tetrahedralizeSurface(TriangleSurface{}); }),
+            "empty surface: 0 points, 0 triangles");
 }
 
 TEST(SurfaceTetrahedralizer, BadEdgeLengthIsRejected) {
   const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
   EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, edge(-1.0)); }),
                        "target edge length must be >= 0 mm (0 = automatic), got -1"));
-  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, edge(NAN)); }), "target edge length must be >= 0"));
-  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, edge(INFINITY)); }), "target edge length"));
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, edge(NAN)); }),
+                       "target edge length must be >= 0"));
+  EXPECT_TRUE(
+      contains(errorOf([&] { tetrahedralizeSurface(box, edge(INFINITY)); }), "target edge length"));
   // 1000 mm^3 at 1e-3 mm would be billions of tets: refused before TetGen runs.
   const auto start = std::chrono::steady_clock::now();
-  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, edge(1e-3)); }), "is too small for a solid of"));
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, edge(1e-3)); }),
+                       "is too small for a solid of"));
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
 }
 
@@ -312,7 +327,8 @@ TEST(SurfaceTetrahedralizer, RadiusEdgeRatioOutOfRangeIsRejected) {
   for (double ratio : {1.0, 0.5, 1.09, 10.5, -2.0, double(NAN)}) {
     TetrahedralizeOptions o = edge(2.0);
     o.radiusEdgeRatio = ratio;
-    EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, o); }), "radius-edge ratio must be in [1.1, 10]"))
+    EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, o); }),
+                         "radius-edge ratio must be in [1.1, 10]"))
         << ratio;
   }
   TetrahedralizeOptions ok = edge(2.0);
@@ -324,14 +340,17 @@ TEST(SurfaceTetrahedralizer, AutoTargetOutOfRangeIsRejected) {
   const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
   TetrahedralizeOptions o;
   o.autoTargetTets = 10;
-  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, o); }), "automatic target tet count must be in"));
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, o); }),
+                       "automatic target tet count must be in"));
   EXPECT_THROW(automaticEdgeLength(-1.0), GeoLatticeError);
   EXPECT_THROW(automaticEdgeLength(1000.0, 0), GeoLatticeError);
 }
 
 TEST(SurfaceTetrahedralizer, AbortCallbackStopsTetGen) {
-  TetrahedralizeOptions o = edge(0.6); // ~1.5M tets, seconds of TetGen: long enough to interrupt
-  o.shouldAbort = [] { return true; };
+  TetrahedralizeOptions o = edge(0.6);  // ~1.5M tets, seconds of TetGen: long enough to interrupt
+  o.shouldAbort = [] {
+    return true;
+  };
   const auto start = std::chrono::steady_clock::now();
   EXPECT_EQ(errorOf([&] { tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0), o); }),
             "tetrahedralization aborted");

@@ -20,7 +20,8 @@ SparseMatrix tripletStiffness(const TetOperators& ops, const TetMesh& mesh) {
       }
     }
   }
-  SparseMatrix K(static_cast<Eigen::Index>(mesh.points.size()), static_cast<Eigen::Index>(mesh.points.size()));
+  SparseMatrix K(static_cast<Eigen::Index>(mesh.points.size()),
+                 static_cast<Eigen::Index>(mesh.points.size()));
   K.setFromTriplets(triplets.begin(), triplets.end());
   K.makeCompressed();
   return K;
@@ -35,11 +36,11 @@ void expectIdentical(const SparseMatrix& a, const SparseMatrix& b) {
   }
   for (Eigen::Index k = 0; k < a.nonZeros(); ++k) {
     ASSERT_EQ(a.innerIndexPtr()[k], b.innerIndexPtr()[k]) << "entry " << k;
-    ASSERT_EQ(a.valuePtr()[k], b.valuePtr()[k]) << "entry " << k; // bit-identical sums
+    ASSERT_EQ(a.valuePtr()[k], b.valuePtr()[k]) << "entry " << k;  // bit-identical sums
   }
 }
 
-} // namespace
+}  // namespace
 
 TEST(TetLaplacian, StiffnessIsExactlyTheTripletAssembly) {
   TetrahedralizeOptions options;
@@ -53,8 +54,9 @@ TEST(TetLaplacian, StiffnessIsExactlyTheTripletAssembly) {
 
 TEST(TetLaplacian, UnreferencedVertexGivesAnEmptyColumn) {
   TetMesh mesh;
-  mesh.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(5, 5, 5), Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 1, 1)};
-  mesh.tets = {{0, 1, 3, 4}, {1, 5, 3, 4}}; // vertex 2 is in no tet
+  mesh.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(5, 5, 5),
+                 Vec3(0, 1, 0), Vec3(0, 0, 1), Vec3(1, 1, 1)};
+  mesh.tets = {{0, 1, 3, 4}, {1, 5, 3, 4}};  // vertex 2 is in no tet
   ASSERT_GT(signedTetVolume(mesh.points[1], mesh.points[5], mesh.points[3], mesh.points[4]), 0);
   const TetOperators ops = buildTetOperators(mesh);
   EXPECT_EQ(ops.stiffness.col(2).nonZeros(), 0);

@@ -21,7 +21,7 @@ std::string errorOf(F&& f) {
   return "";
 }
 
-} // namespace
+}  // namespace
 
 TEST(TetMeshCheck, BoxMeshIsValid) {
   const TetMesh m = boxTetMesh(Vec3(4, 3, 6), 4, 3, 5);
@@ -45,7 +45,8 @@ TEST(TetMeshCheck, InvertedTetsAreCountedWithTheFirstIndex) {
   EXPECT_EQ(r.invertedTets, 5);
   EXPECT_EQ(r.firstInvertedTet, 17);
   EXPECT_FALSE(r.isValid());
-  EXPECT_EQ(errorOf([&] { requireValidTetMesh(m); }), "tet mesh has 5 inverted tets (first: tet 17)");
+  EXPECT_EQ(errorOf([&] { requireValidTetMesh(m); }),
+            "tet mesh has 5 inverted tets (first: tet 17)");
   // A mix of orientations is not a convention: orientTetsPositively leaves it alone.
   const TetMesh before = m;
   EXPECT_EQ(orientTetsPositively(m), 0);
@@ -58,7 +59,8 @@ TEST(TetMeshCheck, AllNegativeMeshIsFlippedExplicitly) {
     std::swap(t[1], t[3]);
   }
   EXPECT_EQ(checkTetMesh(m).invertedTets, static_cast<int>(m.tets.size()));
-  EXPECT_NE(errorOf([&] { requireValidTetMesh(m); }).find("all tets are negatively oriented"), std::string::npos);
+  EXPECT_NE(errorOf([&] { requireValidTetMesh(m); }).find("all tets are negatively oriented"),
+            std::string::npos);
   EXPECT_EQ(orientTetsPositively(m), static_cast<int>(m.tets.size()));
   EXPECT_TRUE(checkTetMesh(m).isValid());
   EXPECT_NEAR(checkTetMesh(m).totalVolume, 8.0, 1e-12);
@@ -73,7 +75,8 @@ TEST(TetMeshCheck, ZeroVolumeTetsAreRejected) {
   EXPECT_EQ(r.zeroVolumeTets, 1);
   EXPECT_EQ(r.firstZeroVolumeTet, 6);
   EXPECT_EQ(r.invertedTets, 0);
-  EXPECT_EQ(errorOf([&] { requireValidTetMesh(m); }), "tet mesh has 1 zero-volume tets (first: tet 6)");
+  EXPECT_EQ(errorOf([&] { requireValidTetMesh(m); }),
+            "tet mesh has 1 zero-volume tets (first: tet 6)");
   TetMesh repeated = boxTetMesh(Vec3(1, 1, 1), 1, 1, 1);
   repeated.tets[2][3] = repeated.tets[2][0];
   EXPECT_EQ(checkTetMesh(repeated).zeroVolumeTets, 1);
@@ -81,7 +84,7 @@ TEST(TetMeshCheck, ZeroVolumeTetsAreRejected) {
 
 TEST(TetMeshCheck, DuplicatedTetMakesNonManifoldFaces) {
   TetMesh m = boxTetMesh(Vec3(1, 1, 1), 1, 1, 1);
-  m.tets.push_back(m.tets[0]); // its 2 interior faces are now in 3 tets
+  m.tets.push_back(m.tets[0]);  // its 2 interior faces are now in 3 tets
   const TetMeshCheckReport r = checkTetMesh(m);
   EXPECT_EQ(r.nonManifoldFaces, 2);
   EXPECT_EQ(errorOf([&] { requireValidTetMesh(m); }),
@@ -94,7 +97,8 @@ TEST(TetMeshCheck, UnusedVertexIsRejected) {
   const TetMeshCheckReport r = checkTetMesh(m);
   EXPECT_EQ(r.unusedPoints, 1);
   EXPECT_EQ(r.firstUnusedPoint, 8);
-  EXPECT_EQ(errorOf([&] { requireValidTetMesh(m); }), "tet mesh has 1 vertices used by no tet (first: vertex 8)");
+  EXPECT_EQ(errorOf([&] { requireValidTetMesh(m); }),
+            "tet mesh has 1 vertices used by no tet (first: vertex 8)");
 }
 
 TEST(TetMeshCheck, OutOfRangeIndexIsRejectedWithoutCrashing) {
@@ -113,8 +117,9 @@ TEST(TetMeshCheck, NonFinitePointIsRejected) {
   TetMesh m = boxTetMesh(Vec3(1, 1, 1), 1, 1, 1);
   m.points[5].x() = INFINITY;
   EXPECT_EQ(checkTetMesh(m).nonFinitePoints, 1);
-  EXPECT_NE(errorOf([&] { requireValidTetMesh(m); }).find("NaN or infinite coordinates (first: point 5)"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf([&] { requireValidTetMesh(m); }).find("NaN or infinite coordinates (first: point 5)"),
+      std::string::npos);
 }
 
 TEST(TetMeshCheck, EmptyMeshIsRejected) {
@@ -122,5 +127,6 @@ TEST(TetMeshCheck, EmptyMeshIsRejected) {
   TetMesh pointsOnly;
   pointsOnly.points = {Vec3(0, 0, 0)};
   EXPECT_FALSE(checkTetMesh(pointsOnly).isValid());
-  EXPECT_NE(errorOf([&] { requireValidTetMesh(pointsOnly); }).find("empty tet mesh"), std::string::npos);
+  EXPECT_NE(errorOf([&] { requireValidTetMesh(pointsOnly); }).find("empty tet mesh"),
+            std::string::npos);
 }

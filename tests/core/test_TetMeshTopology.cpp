@@ -12,7 +12,7 @@ TetMesh twoTets() {
   m.tets = {{0, 1, 2, 3}, {4, 1, 3, 2}};
   return m;
 }
-} // namespace
+}  // namespace
 
 TEST(TetMeshTopology, NeighboursAndOutwardBoundary) {
   const TetMesh m = twoTets();
@@ -38,7 +38,7 @@ TEST(TetMeshTopology, NeighboursAndOutwardBoundary) {
 TEST(TetMeshTopology, CountsNonManifoldFaces) {
   TetMesh m = twoTets();
   m.points.push_back(Vec3(-1, -1, -1) * 0.1 + Vec3(0.3, 0.3, 0.3));
-  m.tets.push_back({5, 1, 2, 3}); // a third tet on face (1,2,3)
+  m.tets.push_back({5, 1, 2, 3});  // a third tet on face (1,2,3)
   TetMeshTopology topo(m);
   EXPECT_EQ(topo.nonManifoldFaceCount(), 1);
 }

@@ -31,19 +31,22 @@ struct Part {
   PrintSequence sequence;
 };
 
-Part buildPart(const std::string& file, double size, double edge, double width, double nozzleAngle) {
+Part buildPart(const std::string& file, double size, double edge, double width,
+               double nozzleAngle) {
   TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/" + file);
   Eigen::AlignedBox3d box;
-  for (const Vec3& p : s.points) box.extend(p);
+  for (const Vec3& p : s.points)
+    box.extend(p);
   const double scale = size / box.sizes().maxCoeff();
-  for (Vec3& p : s.points) p = Vec3((p.x() - box.center().x()) * scale, (p.y() - box.center().y()) * scale,
-                                    (p.z() - box.min().z()) * scale);
+  for (Vec3& p : s.points)
+    p = Vec3((p.x() - box.center().x()) * scale, (p.y() - box.center().y()) * scale,
+             (p.z() - box.min().z()) * scale);
   TetrahedralizeOptions t;
   t.targetEdgeLength = edge;
   const TetMesh mesh = tetrahedralizeSurface(s, t).mesh;
   const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
-  const CurvedLayers layers =
-      sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
+  const CurvedLayers layers = sliceCurvedLayers(
+      mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
   LatticeOptions lo;
   lo.alphaWidth = lo.betaWidth = width;
   Part p;
@@ -71,7 +74,8 @@ void expectGoodToolpath(const char* name, const Part& part, double nozzleAngle) 
   // Every edge left after trimming printed exactly once: the print length is the lattice length
   // minus the trimmed boundary (rotation steps subdivide segments without changing length).
   double latticeLength = 0;
-  for (const auto& e : part.lattice.edges) latticeLength += (part.lattice.points[e[0]] - part.lattice.points[e[1]]).norm();
+  for (const auto& e : part.lattice.edges)
+    latticeLength += (part.lattice.points[e[0]] - part.lattice.points[e[1]]).norm();
   EXPECT_NEAR(path.printLength, latticeLength - path.trimmedLength, 1e-9 * latticeLength) << name;
   // One continuous path per sub-graph: retractions = tours - 1 = sub-graphs - 1 + extra pieces.
   EXPECT_EQ(path.retractions, path.tours - 1);
@@ -79,18 +83,23 @@ void expectGoodToolpath(const char* name, const Part& part, double nozzleAngle) 
   EXPECT_EQ(path.crossings, 0);
   // Thickness never above λφ.
   for (size_t i = 0; i < N; ++i) {
-    if (path.kind[i] == MoveKind::Air) continue;
+    if (path.kind[i] == MoveKind::Air)
+      continue;
     const int l = path.layer[i];
-    const double phi = l > 0 ? part.lattice.layerValues[l] - part.lattice.layerValues[l - 1] : part.lattice.layerValues[0];
+    const double phi = l > 0 ? part.lattice.layerValues[l] - part.lattice.layerValues[l - 1]
+                             : part.lattice.layerValues[0];
     ASSERT_LE(path.thickness[i], o.thicknessCap * phi * (1 + 1e-12)) << name << " point " << i;
     ASSERT_GT(path.thickness[i], 0.0);
   }
   // Mass conservation (Eq. 14) recomputed from the output arrays.
   double volume = 0, filament = 0;
   for (size_t i = 1; i < N; ++i) {
-    if (path.kind[i] == MoveKind::Air) continue;
-    const double h0 = path.kind[i - 1] == MoveKind::Air ? path.thickness[i] : path.thickness[i - 1];  // as the planner
-    volume += o.flowCorrection * path.width[i] * 0.5 * (h0 + path.thickness[i]) * (path.points[i] - path.points[i - 1]).norm();
+    if (path.kind[i] == MoveKind::Air)
+      continue;
+    const double h0 = path.kind[i - 1] == MoveKind::Air ? path.thickness[i]
+                                                        : path.thickness[i - 1];  // as the planner
+    volume += o.flowCorrection * path.width[i] * 0.5 * (h0 + path.thickness[i]) *
+              (path.points[i] - path.points[i - 1]).norm();
     filament += path.extrusion[i] - path.extrusion[i - 1];
   }
   EXPECT_NEAR(M_PI * o.filamentRadius * o.filamentRadius * filament, volume, 1e-9 * volume) << name;
@@ -99,9 +108,11 @@ void expectGoodToolpath(const char* name, const Part& part, double nozzleAngle) 
   // Consecutive axes never turn more than the limit, segments are at most maxSegmentLength and
   // the axis stays within the tilt limit of the layer normal.
   for (size_t i = 1; i < N; ++i) {
-    ASSERT_LE(std::acos(std::clamp(path.normals[i].dot(path.normals[i - 1]), -1.0, 1.0)), o.maxTurnDeg * M_PI / 180 + 1e-9)
+    ASSERT_LE(std::acos(std::clamp(path.normals[i].dot(path.normals[i - 1]), -1.0, 1.0)),
+              o.maxTurnDeg * M_PI / 180 + 1e-9)
         << name << " point " << i;
-    ASSERT_LE((path.points[i] - path.points[i - 1]).norm(), o.maxSegmentLength * (1 + 1e-9)) << name << " point " << i;
+    ASSERT_LE((path.points[i] - path.points[i - 1]).norm(), o.maxSegmentLength * (1 + 1e-9))
+        << name << " point " << i;
   }
   ASSERT_EQ(path.axisTilt.size(), N);
   EXPECT_LE(path.maxAxisTiltDeg, o.clearance.maxTiltDeg + 1e-9);
@@ -119,11 +130,13 @@ void expectGoodToolpath(const char* name, const Part& part, double nozzleAngle) 
   }
   const SkeletonAncestry ancestry(part.tree);
   ex.unavoidable = [&](int station, int obstacle) {
-    return station >= 0 && obstacle >= 0 && (station == obstacle || ancestry.isAncestor(obstacle, station));
+    return station >= 0 && obstacle >= 0 &&
+           (station == obstacle || ancestry.isAncestor(obstacle, station));
   };
   NozzleModel nozzle;
   nozzle.halfAngleDeg = nozzleAngle;
-  const CollisionReport r = verifyNozzleClearance(path.points, path.normals, time, nozzle, 5, &ex, &material);
+  const CollisionReport r =
+      verifyNozzleClearance(path.points, path.normals, time, nozzle, 5, &ex, &material);
   // Without the axis clearance (the paper's axis everywhere) the same path collides where the
   // planner said it would.
   ToolpathOptions paperAxes = o;
@@ -131,41 +144,51 @@ void expectGoodToolpath(const char* name, const Part& part, double nozzleAngle) 
   const Toolpath untilted = planToolpath(part.lattice, part.tree, part.sequence.order, paperAxes);
   EXPECT_EQ(untilted.maxAxisTiltDeg, 0.0);
   EXPECT_EQ(untilted.unclearedStations, path.collidingStations) << name;
-  std::printf("[toolpath] %s: along the layer normal %d stations collide; tilted %d (max %.2f deg) in %d rounds\n", name,
-              path.collidingStations, path.tiltedStations, path.maxAxisTiltDeg, path.clearanceRounds);
+  std::printf(
+      "[toolpath] %s: along the layer normal %d stations collide; tilted %d (max %.2f deg) in %d "
+      "rounds\n",
+      name, path.collidingStations, path.tiltedStations, path.maxAxisTiltDeg, path.clearanceRounds);
   double devSum = 0;
   int devCount = 0;
   for (const auto& l : path.thicknessStats.perLayer) {
     devSum += l.mean * l.vertices;
     devCount += l.vertices;
   }
-  std::printf("[toolpath] %s: thickness deviation e = (h - phi) / phi: min %.3f mean %.3f max %.3f over %d vertices\n",
-              name, path.thicknessStats.deviationMin, devSum / devCount, path.thicknessStats.deviationMax, devCount);
+  std::printf(
+      "[toolpath] %s: thickness deviation e = (h - phi) / phi: min %.3f mean %.3f max %.3f over %d "
+      "vertices\n",
+      name, path.thicknessStats.deviationMin, devSum / devCount, path.thicknessStats.deviationMax,
+      devCount);
   EXPECT_GT(path.perimeterLoops, 0);
   EXPECT_GT(path.perimeterLength, 0.0);
-  std::printf("[toolpath] %s: perimeter %d loops %.0f mm %d teeth\n", name, path.perimeterLoops, path.perimeterLength,
-              path.perimeterTeeth);
-  std::printf("[toolpath] %s: %zu points, print %.0f mm, air %.0f mm, %d retractions, %d tours, %d split, "
-              "%d rotation steps, filament %.0f mm, thickness deviation %.2f..%.2f (capped %d), verifier NA %.0f: "
-              "%lld/%lld stations collide (%lld unavoidable), %.3f s plan, %.3f s verify\n",
-              name, N, path.printLength, path.airLength, path.retractions, path.tours, path.splitSubgraphs,
-              path.rotationSteps, path.filamentLength, path.thicknessStats.deviationMin, path.thicknessStats.deviationMax,
-              path.thicknessStats.cappedVertices, nozzleAngle, r.violatingStations, r.stations, r.unavoidableStations,
-              path.seconds, r.seconds);
+  std::printf("[toolpath] %s: perimeter %d loops %.0f mm %d teeth\n", name, path.perimeterLoops,
+              path.perimeterLength, path.perimeterTeeth);
+  std::printf(
+      "[toolpath] %s: %zu points, print %.0f mm, air %.0f mm, %d retractions, %d tours, %d split, "
+      "%d rotation steps, filament %.0f mm, thickness deviation %.2f..%.2f (capped %d), verifier "
+      "NA %.0f: "
+      "%lld/%lld stations collide (%lld unavoidable), %.3f s plan, %.3f s verify\n",
+      name, N, path.printLength, path.airLength, path.retractions, path.tours, path.splitSubgraphs,
+      path.rotationSteps, path.filamentLength, path.thicknessStats.deviationMin,
+      path.thicknessStats.deviationMax, path.thicknessStats.cappedVertices, nozzleAngle,
+      r.violatingStations, r.stations, r.unavoidableStations, path.seconds, r.seconds);
   for (const auto& v : r.violations) {
     if (!v.unavoidable) {
-      std::printf("  station %d (%s, sub-graph %d) obstacle %d (sub-graph %d) h %.2f r %.2f\n", v.station,
-                  path.kind[v.station] == MoveKind::Air ? "air" : "print", path.subgraph[v.station], v.obstacle,
-                  path.subgraph[v.obstacle], v.height, v.radial);
+      std::printf("  station %d (%s, sub-graph %d) obstacle %d (sub-graph %d) h %.2f r %.2f\n",
+                  v.station, path.kind[v.station] == MoveKind::Air ? "air" : "print",
+                  path.subgraph[v.station], v.obstacle, path.subgraph[v.obstacle], v.height,
+                  v.radial);
     }
   }
   // Strict: no exemption needed, not even inside a sub-graph.
   EXPECT_TRUE(r.collisionFree) << name << ": " << r.violatingStations << " stations";
 }
 
-} // namespace
+}  // namespace
 
-TEST(ToolpathPlanner, YShape) { expectGoodToolpath("Y", buildPart("y_shape.obj", 52, 2.0, 4.0, 45), 45); }
+TEST(ToolpathPlanner, YShape) {
+  expectGoodToolpath("Y", buildPart("y_shape.obj", 52, 2.0, 4.0, 45), 45);
+}
 
 TEST(ToolpathPlanner, ThreeBranchTree) {
   expectGoodToolpath("three-branch tree", buildPart("three_branch_tree.obj", 50, 2.0, 4.0, 30), 30);
@@ -173,35 +196,42 @@ TEST(ToolpathPlanner, ThreeBranchTree) {
 
 TEST(ToolpathPlanner, ThreeBranchTreeWideNozzle) {
   // NA 45°: the curved tip caps rise into the nozzle inside their own sub-graph along ∇γ.
-  expectGoodToolpath("three-branch tree NA 60", buildPart("three_branch_tree.obj", 50, 2.0, 4.0, 60), 60);
+  expectGoodToolpath("three-branch tree NA 60",
+                     buildPart("three_branch_tree.obj", 50, 2.0, 4.0, 60), 60);
 }
 
 TEST(RobotPath, YShapeInTheUr5Cell) {
   // Every toolpath point of the Y at the nozzle tip with its axis along the nozzle, joints
   // continuous, within speed limits at the planner's feed rates.
   const Part part = buildPart("y_shape.obj", 52, 2.0, 4.0, 45);
-  const Toolpath path = planToolpath(part.lattice, part.tree, part.sequence.order, ToolpathOptions{});
+  const Toolpath path =
+      planToolpath(part.lattice, part.tree, part.sequence.order, ToolpathOptions{});
   for (const RobotModel& robot : {ur5Model(), ur5eModel()}) {
     RobotCell cell;
     cell.robot = robot;
     const RobotPath rp = solveRobotPath(cell, path.points, path.normals);
-    EXPECT_TRUE(rp.unreachable.empty()) << robot.name << ": " << rp.unreachable.size() << " unreachable";
+    EXPECT_TRUE(rp.unreachable.empty())
+        << robot.name << ": " << rp.unreachable.size() << " unreachable";
     double worstPosition = 0, worstAxisDeg = 0;
     for (size_t i = 0; i < path.points.size(); ++i) {
       const Isometry part = forwardKinematics(robot, rp.joints[i]) * cell.partOnFlange;
       const Eigen::Vector3d tip = part * (cell.partScale * path.points[i]);
       worstPosition = std::max(worstPosition, (tip - cell.nozzleTip).norm());
       const Eigen::Vector3d axis = part.linear() * path.normals[i].normalized();
-      worstAxisDeg = std::max(worstAxisDeg, std::acos(std::clamp(axis.dot(cell.nozzleAxis), -1.0, 1.0)) * 180 / M_PI);
+      worstAxisDeg = std::max(
+          worstAxisDeg, std::acos(std::clamp(axis.dot(cell.nozzleAxis), -1.0, 1.0)) * 180 / M_PI);
     }
     double speedDeg = 0;
     const double ratio = jointSpeedRatio(cell, rp, path.points, path.feedRate, speedDeg);
-    std::printf("[robot] %s, Y: %zu points, branch %d, max joint step %.2f deg, max joint speed %.1f deg/s (ratio %.2f), "
-                "min singularity distances shoulder %.3f m elbow %.3f wrist %.3f, tip error %.2e m, axis error %.2e deg, "
-                "%.3f s\n",
-                robot.name.c_str(), path.points.size(), rp.branch, rp.maxJointStepDeg, speedDeg, ratio,
-                rp.minSingularity.shoulder, rp.minSingularity.elbow, rp.minSingularity.wrist, worstPosition,
-                worstAxisDeg, rp.seconds);
+    std::printf(
+        "[robot] %s, Y: %zu points, branch %d, max joint step %.2f deg, max joint speed %.1f deg/s "
+        "(ratio %.2f), "
+        "min singularity distances shoulder %.3f m elbow %.3f wrist %.3f, tip error %.2e m, axis "
+        "error %.2e deg, "
+        "%.3f s\n",
+        robot.name.c_str(), path.points.size(), rp.branch, rp.maxJointStepDeg, speedDeg, ratio,
+        rp.minSingularity.shoulder, rp.minSingularity.elbow, rp.minSingularity.wrist, worstPosition,
+        worstAxisDeg, rp.seconds);
     EXPECT_LT(worstPosition, 1e-6);
     EXPECT_LT(worstAxisDeg, 0.01);
     EXPECT_LT(rp.maxJointStepDeg, 20.0);

@@ -20,14 +20,17 @@ void expectPose(const UrPose& got, const UrPose& want, double tol) {
 }
 
 double poseError(const Isometry& a, const Isometry& b) {
-  return std::max((a.translation() - b.translation()).norm(), (a.linear() - b.linear()).cwiseAbs().maxCoeff());
+  return std::max((a.translation() - b.translation()).norm(),
+                  (a.linear() - b.linear()).cwiseAbs().maxCoeff());
 }
 
-} // namespace
+}  // namespace
 
 TEST(Pose, UrscriptManualExamples) {
-  expectPose(poseTrans({.2, .5, .1, 1.57, 0, 0}, {.2, .5, .6, 1.57, 0, 0}), {0.4, -0.0996, 0.60048, 3.14, 0, 0}, 5e-6);
-  expectPose(poseInv({.2, .5, .1, 1.57, 0, 3.14}), {0.19324, 0.41794, -0.29662, 1.23993, 0, 2.47985}, 5e-6);
+  expectPose(poseTrans({.2, .5, .1, 1.57, 0, 0}, {.2, .5, .6, 1.57, 0, 0}),
+             {0.4, -0.0996, 0.60048, 3.14, 0, 0}, 5e-6);
+  expectPose(poseInv({.2, .5, .1, 1.57, 0, 3.14}),
+             {0.19324, 0.41794, -0.29662, 1.23993, 0, 2.47985}, 5e-6);
 }
 
 TEST(Pose, RotationVectorNearZeroAndPi) {
@@ -35,7 +38,8 @@ TEST(Pose, RotationVectorNearZeroAndPi) {
     const Eigen::Vector3d axis = Eigen::Vector3d(0.3, -0.5, 0.8).normalized();
     const Eigen::Vector3d rv = angle * axis;
     const Eigen::Matrix3d r = rotationMatrix(rv);
-    EXPECT_LT((r - Eigen::AngleAxisd(angle, axis).toRotationMatrix()).cwiseAbs().maxCoeff(), 1e-15) << angle;
+    EXPECT_LT((r - Eigen::AngleAxisd(angle, axis).toRotationMatrix()).cwiseAbs().maxCoeff(), 1e-15)
+        << angle;
     const Eigen::Vector3d back = rotationVector(r);
     // At exactly π the axis sign is ambiguous: compare rotations there.
     if (angle < M_PI - 1e-6) {
@@ -46,10 +50,10 @@ TEST(Pose, RotationVectorNearZeroAndPi) {
 }
 
 TEST(URKinematics, ZeroJointPoses) {
-  expectPose(toUrPose(forwardKinematics(ur5Model(), {0, 0, 0, 0, 0, 0})), {-0.81725, -0.19145, -0.00549, 1.5708, 0, 0},
-             5e-6);
-  expectPose(toUrPose(forwardKinematics(ur5eModel(), {0, 0, 0, 0, 0, 0})), {-0.8172, -0.2329, 0.0628, 1.5708, 0, 0},
-             5e-5);
+  expectPose(toUrPose(forwardKinematics(ur5Model(), {0, 0, 0, 0, 0, 0})),
+             {-0.81725, -0.19145, -0.00549, 1.5708, 0, 0}, 5e-6);
+  expectPose(toUrPose(forwardKinematics(ur5eModel(), {0, 0, 0, 0, 0, 0})),
+             {-0.8172, -0.2329, 0.0628, 1.5708, 0, 0}, 5e-5);
 }
 
 TEST(URKinematics, InverseOfForwardForRandomPoses) {
@@ -60,7 +64,8 @@ TEST(URKinematics, InverseOfForwardForRandomPoses) {
     double worst = 0;
     for (int trial = 0; trial < 10000; ++trial) {
       JointVector q;
-      for (double& v : q) v = joint(rng);
+      for (double& v : q)
+        v = joint(rng);
       const Isometry t = forwardKinematics(robot, q);
       const auto all = inverseKinematics(robot, t);
       ASSERT_FALSE(all.empty()) << robot.name << " trial " << trial;
@@ -68,7 +73,8 @@ TEST(URKinematics, InverseOfForwardForRandomPoses) {
       for (const JointVector& s : all) {
         worst = std::max(worst, poseError(forwardKinematics(robot, s), t));
         double d = 0;
-        for (int i = 0; i < 6; ++i) d = std::max(d, std::abs(std::remainder(s[i] - q[i], 2 * M_PI)));
+        for (int i = 0; i < 6; ++i)
+          d = std::max(d, std::abs(std::remainder(s[i] - q[i], 2 * M_PI)));
         found |= d < 1e-7;
       }
       solutions += static_cast<int>(all.size());
@@ -77,10 +83,11 @@ TEST(URKinematics, InverseOfForwardForRandomPoses) {
     EXPECT_LT(worst, 1e-9) << robot.name;
     EXPECT_EQ(containsOriginal, 10000) << robot.name;
     // Up to 8: poses near the edge of the workspace lose the branches that cannot reach them.
-    std::printf("[ik] %s: %.2f solutions per pose on average, worst FK(IK) error %.2e\n", robot.name.c_str(),
-                solutions / 10000.0, worst);
+    std::printf("[ik] %s: %.2f solutions per pose on average, worst FK(IK) error %.2e\n",
+                robot.name.c_str(), solutions / 10000.0, worst);
     // A pose well inside the workspace has all 8 (shoulder x wrist x elbow).
-    const auto eight = inverseKinematics(robot, forwardKinematics(robot, {0.3, -1.2, 1.4, -0.5, 1.2, 0.4}));
+    const auto eight =
+        inverseKinematics(robot, forwardKinematics(robot, {0.3, -1.2, 1.4, -0.5, 1.2, 0.4}));
     EXPECT_EQ(eight.size(), 8u) << robot.name;
   }
 }

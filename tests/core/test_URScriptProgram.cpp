@@ -30,8 +30,8 @@ const Toolpath& yToolpath() {
     t.targetEdgeLength = 2.5;
     const TetMesh mesh = tetrahedralizeSurface(s, t).mesh;
     const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
-    const CurvedLayers layers =
-        sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
+    const CurvedLayers layers = sliceCurvedLayers(
+        mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
     LatticeOptions lo;
     lo.alphaWidth = lo.betaWidth = 4.0;
     const LatticeGraph g = buildLatticeGraph(layers, lo);
@@ -44,7 +44,7 @@ const Toolpath& yToolpath() {
   return path;
 }
 
-} // namespace
+}  // namespace
 
 TEST(URScriptProgram, YPartInTheUr5Cell) {
   const Toolpath& path = yToolpath();
@@ -52,15 +52,20 @@ TEST(URScriptProgram, YPartInTheUr5Cell) {
   const RobotPath rp = solveRobotPath(cell, path.points, path.normals);
   ASSERT_TRUE(rp.unreachable.empty());
   std::vector<int> kind(path.kind.size());
-  for (size_t i = 0; i < kind.size(); ++i) kind[i] = static_cast<int>(path.kind[i]);
+  for (size_t i = 0; i < kind.size(); ++i)
+    kind[i] = static_cast<int>(path.kind[i]);
   ProgramInput in{&path.points, &path.extrusion, &path.feedRate, &kind};
   URScriptOptions o;
   o.maxFileBytes = 200000;  // force several files
   std::vector<std::ostringstream> files(64);
-  const ProgramStats stats = writeURScript(cell, rp, in, o, [&](size_t k) -> std::ostream& { return files.at(k); });
-  std::printf("[urscript] Y: %zu waypoints, %zu moves, %zu files, duration %.0f s, max joint speed %.1f deg/s, "
-              "longest line %zu\n",
-              path.points.size(), stats.moves, stats.files, stats.duration, stats.maxJointSpeedDegS, stats.maxLineLength);
+  const ProgramStats stats =
+      writeURScript(cell, rp, in, o, [&](size_t k) -> std::ostream& { return files.at(k); });
+  std::printf(
+      "[urscript] Y: %zu waypoints, %zu moves, %zu files, duration %.0f s, max joint speed %.1f "
+      "deg/s, "
+      "longest line %zu\n",
+      path.points.size(), stats.moves, stats.files, stats.duration, stats.maxJointSpeedDegS,
+      stats.maxLineLength);
   EXPECT_GT(stats.files, 1u);
   EXPECT_EQ(stats.moves, path.points.size() - 1);
   EXPECT_LE(stats.maxJointSpeedDegS, 0.5 * 180.0 + 1e-6);  // speedFactor of the 180°/s limit
@@ -70,7 +75,8 @@ TEST(URScriptProgram, YPartInTheUr5Cell) {
     EXPECT_LE(text.size(), o.maxFileBytes);
     checkURScriptSyntax(text, "", 1000);
     // A file other than the first starts right after an air move's first point.
-    for (size_t at = text.find("movel("); at != std::string::npos; at = text.find("movel(", at + 1)) ++movels;
+    for (size_t at = text.find("movel("); at != std::string::npos; at = text.find("movel(", at + 1))
+      ++movels;
   }
   EXPECT_EQ(movels, stats.moves);
 }
@@ -87,6 +93,7 @@ TEST(URScriptProgram, NumbersAndBadInput) {
   std::vector<int> k;
   ProgramInput in{&pts, &e, &f, &k};
   std::ostringstream os;
-  EXPECT_THROW(writeURScript(cell, rp, in, URScriptOptions{}, [&](size_t) -> std::ostream& { return os; }),
-               GeoLatticeError);  // empty toolpath
+  EXPECT_THROW(
+      writeURScript(cell, rp, in, URScriptOptions{}, [&](size_t) -> std::ostream& { return os; }),
+      GeoLatticeError);  // empty toolpath
 }

@@ -17,29 +17,23 @@
 
 #include <string>
 
-class GLTestErrorObserver : public vtkCommand
-{
+class GLTestErrorObserver : public vtkCommand {
 public:
   static GLTestErrorObserver* New() { return new GLTestErrorObserver; }
   vtkTypeMacro(GLTestErrorObserver, vtkCommand);
 
   /// Start recording the errors and warnings of `object`.
-  void Observe(vtkObject* object)
-  {
+  void Observe(vtkObject* object) {
     object->AddObserver(vtkCommand::ErrorEvent, this);
     object->AddObserver(vtkCommand::WarningEvent, this);
   }
 
-  void Execute(vtkObject*, unsigned long event, void* callData) override
-  {
+  void Execute(vtkObject*, unsigned long event, void* callData) override {
     const std::string text = callData ? static_cast<const char*>(callData) : "";
-    if (event == vtkCommand::ErrorEvent)
-    {
+    if (event == vtkCommand::ErrorEvent) {
       ++this->ErrorCount;
       this->ErrorText += text + "\n";
-    }
-    else if (event == vtkCommand::WarningEvent)
-    {
+    } else if (event == vtkCommand::WarningEvent) {
       ++this->WarningCount;
       this->WarningText += text + "\n";
     }
@@ -50,8 +44,7 @@ public:
   int GetWarningCount() const { return this->WarningCount; }
   const std::string& Errors() const { return this->ErrorText; }
   const std::string& Warnings() const { return this->WarningText; }
-  void Clear()
-  {
+  void Clear() {
     this->ErrorCount = this->WarningCount = 0;
     this->ErrorText.clear();
     this->WarningText.clear();

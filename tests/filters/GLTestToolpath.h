@@ -24,8 +24,7 @@
 #include <cmath>
 #include <vector>
 
-inline vtkSmartPointer<vtkPolyData> makeTestToolpath(int loops = 2, double tiltDeg = 20.0)
-{
+inline vtkSmartPointer<vtkPolyData> makeTestToolpath(int loops = 2, double tiltDeg = 20.0) {
   namespace arrays = geolattice::arrays;
   auto pd = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
@@ -43,8 +42,7 @@ inline vtkSmartPointer<vtkPolyData> makeTestToolpath(int loops = 2, double tiltD
   auto add = [&](double x, double y, double z, bool tilted, int k, int l) {
     points->InsertNextPoint(x, y, z);
     normals->InsertNextTuple3(0, tilted ? -std::sin(t) : 0.0, tilted ? std::cos(t) : 1.0);
-    if (k != geolattice::movekind::Air && points->GetNumberOfPoints() > 1)
-    {
+    if (k != geolattice::movekind::Air && points->GetNumberOfPoints() > 1) {
       e += 0.05;
     }
     extrusion->InsertNextValue(e);
@@ -52,16 +50,13 @@ inline vtkSmartPointer<vtkPolyData> makeTestToolpath(int loops = 2, double tiltD
     kind->InsertNextValue(k);
     layer->InsertNextValue(k == geolattice::movekind::Air ? -1 : l);
   };
-  add(0, 0, 5, false, geolattice::movekind::Air, -1); // the start
-  for (int l = 0; l < loops; ++l)
-  {
+  add(0, 0, 5, false, geolattice::movekind::Air, -1);  // the start
+  for (int l = 0; l < loops; ++l) {
     const double z = 1.0 + l;
     add(0, 0, z, false, geolattice::movekind::Air, l);
-    const double corners[5][2] = { { 0, 0 }, { 10, 0 }, { 10, 10 }, { 0, 10 }, { 0, 0 } };
-    for (int side = 0; side < 4; ++side)
-    {
-      for (int k = 1; k <= 10; ++k)
-      {
+    const double corners[5][2] = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {0, 0}};
+    for (int side = 0; side < 4; ++side) {
+      for (int k = 1; k <= 10; ++k) {
         const double s = k / 10.0;
         const double x = corners[side][0] + s * (corners[side + 1][0] - corners[side][0]);
         const double y = corners[side][1] + s * (corners[side + 1][1] - corners[side][1]);
@@ -71,8 +66,7 @@ inline vtkSmartPointer<vtkPolyData> makeTestToolpath(int loops = 2, double tiltD
   }
   vtkNew<vtkCellArray> lines;
   std::vector<vtkIdType> ids(static_cast<size_t>(points->GetNumberOfPoints()));
-  for (size_t i = 0; i < ids.size(); ++i)
-  {
+  for (size_t i = 0; i < ids.size(); ++i) {
     ids[i] = static_cast<vtkIdType>(i);
   }
   lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());

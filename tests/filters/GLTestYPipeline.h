@@ -37,7 +37,7 @@ struct GLTestYPipeline {
     reader->SetFileName((std::string(GEOLATTICE_TESTDATA) + "/y_shape.obj").c_str());
     place->SetInputConnection(reader->GetOutputPort());
     tets->SetInputConnection(place->GetOutputPort());
-    tets->SetTargetEdgeLength(2.0); // coarse
+    tets->SetTargetEdgeLength(2.0);  // coarse
     gdf->SetInputConnection(tets->GetOutputPort());
     slicer->SetInputConnection(gdf->GetOutputPort());
     slicer->SetLayerInterval(1.0);
@@ -51,9 +51,9 @@ struct GLTestYPipeline {
     sequencer->SetInputConnection(1, skeleton->GetOutputPort());
     sequencer->SetNozzleAngle(45.0);
     planner->SetInputConnection(0, sequencer->GetOutputPort(0));
-    planner->SetInputConnection(1, skeleton->GetOutputPort()); // the skeleton tree itself
-    for (vtkAlgorithm* a : std::initializer_list<vtkAlgorithm*>{reader, place, tets, gdf, slicer, lattice, skeleton,
-                                                                 sequencer, planner}) {
+    planner->SetInputConnection(1, skeleton->GetOutputPort());  // the skeleton tree itself
+    for (vtkAlgorithm* a : std::initializer_list<vtkAlgorithm*>{
+             reader, place, tets, gdf, slicer, lattice, skeleton, sequencer, planner}) {
       errors->Observe(a);
     }
   }

@@ -43,7 +43,8 @@ double field(vtkDataObject* d, const char* name) {
 /// Towers A (x = 0) and B (x = 3): at z = 0, 1, .., kLayers - 1 a 1 mm segment along x (own
 /// points, one line cell each), Normals +z. Cell array "PrintOrder" = time(tower, layer), point
 /// array "PointTime" the same per point. Cells: A's layers, then B's.
-vtkSmartPointer<vtkPolyData> towers(const std::function<int(int, int)>& time, double spacing = 3.0) {
+vtkSmartPointer<vtkPolyData> towers(const std::function<int(int, int)>& time,
+                                    double spacing = 3.0) {
   auto pd = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> lines;
@@ -75,8 +76,12 @@ vtkSmartPointer<vtkPolyData> towers(const std::function<int(int, int)>& time, do
   return pd;
 }
 
-int towerByTower(int tower, int layer) { return tower * kLayers + layer; }
-int layerByLayer(int tower, int layer) { return 2 * layer + tower; }
+int towerByTower(int tower, int layer) {
+  return tower * kLayers + layer;
+}
+int layerByLayer(int tower, int layer) {
+  return 2 * layer + tower;
+}
 
 struct Verified {
   vtkSmartPointer<vtkPolyData> output;
@@ -104,14 +109,14 @@ void expectEmptyWithError(const Verified& v, const std::string& text) {
   EXPECT_EQ(v.output->GetFieldData()->GetArray(arrays::CollisionFree), nullptr);
 }
 
-} // namespace
+}  // namespace
 
 TEST(vtkGLCollisionVerifier, TowerByTowerCollidesAndReportsTheViolations) {
   const Verified v = verify(towers(towerByTower));
   ASSERT_TRUE(v.errors.empty()) << v.errors;
   vtkPolyData* out = v.output;
   EXPECT_EQ(field(out, arrays::CollisionFree), 0.0);
-  EXPECT_EQ(field(out, arrays::CollisionOrderFree), 0.0); // no skeleton: every violation counts
+  EXPECT_EQ(field(out, arrays::CollisionOrderFree), 0.0);  // no skeleton: every violation counts
   EXPECT_EQ(field(out, arrays::CollisionUnavoidableStations), 0.0);
   EXPECT_EQ(out->GetFieldData()->GetArray(arrays::CollisionFree)->GetDataType(), VTK_INT);
   // 1 mm segments sampled every 1 mm: just their end points.
@@ -124,7 +129,8 @@ TEST(vtkGLCollisionVerifier, TowerByTowerCollidesAndReportsTheViolations) {
   EXPECT_LE(R, 20);
   EXPECT_EQ(out->GetNumberOfPoints(), 2 * R);
   vtkPointData* pd = out->GetPointData();
-  for (const char* name : {arrays::ViolationIndex, arrays::Role, arrays::Height, arrays::Radial, arrays::Unavoidable}) {
+  for (const char* name : {arrays::ViolationIndex, arrays::Role, arrays::Height, arrays::Radial,
+                           arrays::Unavoidable}) {
     ASSERT_NE(pd->GetArray(name), nullptr) << name;
   }
   const double tanNA = std::tan(60.0 * M_PI / 180.0);
@@ -142,11 +148,11 @@ TEST(vtkGLCollisionVerifier, TowerByTowerCollidesAndReportsTheViolations) {
     out->GetPoint(obstacle, o);
     const double height = pd->GetArray(arrays::Height)->GetTuple1(station);
     const double radial = pd->GetArray(arrays::Radial)->GetTuple1(station);
-    EXPECT_NEAR(height, o[2] - s[2], 1e-9); // axis +z
+    EXPECT_NEAR(height, o[2] - s[2], 1e-9);  // axis +z
     EXPECT_NEAR(radial, std::hypot(o[0] - s[0], o[1] - s[1]), 1e-9);
     EXPECT_GT(height, 0.0);
     EXPECT_LT(radial, height * tanNA);
-    EXPECT_GT(s[0], 1.0); // the station is on tower B, the obstacle on tower A
+    EXPECT_GT(s[0], 1.0);  // the station is on tower B, the obstacle on tower A
     EXPECT_LT(o[0], 1.0);
   }
   // A narrower nozzle clears the towers: 3 ± 0.5 mm away, 9 mm high at most.
@@ -154,9 +160,11 @@ TEST(vtkGLCollisionVerifier, TowerByTowerCollidesAndReportsTheViolations) {
   ASSERT_TRUE(narrow.errors.empty()) << narrow.errors;
   EXPECT_EQ(field(narrow.output, arrays::CollisionFree), 1.0);
   // MaxReported limits the output, not the counts.
-  const Verified few = verify(towers(towerByTower), 60.0, [](vtkGLCollisionVerifier* f) { f->SetMaxReported(3); });
+  const Verified few =
+      verify(towers(towerByTower), 60.0, [](vtkGLCollisionVerifier* f) { f->SetMaxReported(3); });
   EXPECT_EQ(few.output->GetNumberOfCells(), 3);
-  EXPECT_EQ(field(few.output, arrays::CollisionViolatingStations), field(out, arrays::CollisionViolatingStations));
+  EXPECT_EQ(field(few.output, arrays::CollisionViolatingStations),
+            field(out, arrays::CollisionViolatingStations));
 }
 
 TEST(vtkGLCollisionVerifier, LayerByLayerIsCollisionFree) {
@@ -174,14 +182,15 @@ TEST(vtkGLCollisionVerifier, PointTimeArrayAndInteriorSamples) {
   for (auto time : {towerByTower, layerByLayer}) {
     auto input = towers(time);
     input->GetCellData()->RemoveArray(arrays::PrintOrder);
-    const Verified v = verify(input, 60.0, [](vtkGLCollisionVerifier* f) { f->SetTimeArrayName("PointTime"); });
+    const Verified v =
+        verify(input, 60.0, [](vtkGLCollisionVerifier* f) { f->SetTimeArrayName("PointTime"); });
     ASSERT_TRUE(v.errors.empty()) << v.errors;
     EXPECT_EQ(field(v.output, arrays::CollisionStations), 4.0 * kLayers);
     EXPECT_EQ(field(v.output, arrays::CollisionFree), time == layerByLayer ? 1.0 : 0.0);
   }
   // Spacing 0.3 mm: ceil(1 / 0.3) - 1 = 3 interior samples per segment.
-  const Verified fine =
-      verify(towers(layerByLayer), 60.0, [](vtkGLCollisionVerifier* f) { f->SetSampleSpacing(0.3); });
+  const Verified fine = verify(towers(layerByLayer), 60.0,
+                               [](vtkGLCollisionVerifier* f) { f->SetSampleSpacing(0.3); });
   ASSERT_TRUE(fine.errors.empty()) << fine.errors;
   EXPECT_EQ(field(fine.output, arrays::CollisionStations), (4.0 + 6.0) * kLayers);
   EXPECT_EQ(field(fine.output, arrays::CollisionFree), 1.0);
@@ -194,7 +203,8 @@ TEST(vtkGLCollisionVerifier, PointTimeArrayAndInteriorSamples) {
     cellTime->SetValue(c, towerByTower(c / kLayers, c % kLayers));
   }
   both->GetCellData()->AddArray(cellTime);
-  const Verified cell = verify(both, 60.0, [](vtkGLCollisionVerifier* f) { f->SetTimeArrayName("PointTime"); });
+  const Verified cell =
+      verify(both, 60.0, [](vtkGLCollisionVerifier* f) { f->SetTimeArrayName("PointTime"); });
   EXPECT_EQ(field(cell.output, arrays::CollisionFree), 0.0);
 }
 
@@ -207,10 +217,13 @@ TEST(vtkGLCollisionVerifier, PointMoveKindAirIsNoMaterial) {
   vtkNew<vtkIntArray> kind;
   kind->SetName(arrays::MoveKind);
   for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p) {
-    kind->InsertNextValue(p < 2 * kLayers ? geolattice::movekind::Air : geolattice::movekind::Print);
+    kind->InsertNextValue(p < 2 * kLayers ? geolattice::movekind::Air
+                                          : geolattice::movekind::Print);
   }
   input->GetPointData()->AddArray(kind);
-  auto pointTime = [](vtkGLCollisionVerifier* f) { f->SetTimeArrayName("PointTime"); };
+  auto pointTime = [](vtkGLCollisionVerifier* f) {
+    f->SetTimeArrayName("PointTime");
+  };
   Verified v = verify(input, 60.0, pointTime);
   ASSERT_TRUE(v.errors.empty()) << v.errors;
   EXPECT_EQ(field(v.output, arrays::CollisionStations), 4.0 * kLayers);
@@ -257,7 +270,8 @@ TEST(vtkGLCollisionVerifier, SkeletonEdgesMakeAncestorObstaclesUnavoidable) {
   EXPECT_EQ(field(v.output, arrays::CollisionFree), 0.0);
   EXPECT_EQ(field(v.output, arrays::CollisionOrderFree), 1.0);
   EXPECT_GT(field(v.output, arrays::CollisionUnavoidableStations), 0.0);
-  EXPECT_EQ(field(v.output, arrays::CollisionUnavoidableStations), field(v.output, arrays::CollisionViolatingStations));
+  EXPECT_EQ(field(v.output, arrays::CollisionUnavoidableStations),
+            field(v.output, arrays::CollisionViolatingStations));
   EXPECT_EQ(v.output->GetPointData()->GetArray(arrays::Unavoidable)->GetRange()[0], 1.0);
   // Bad skeleton edges: a cycle, the wrong number of components.
   edges->InsertNextTuple2(kLayers, kLayers - 1);
@@ -286,21 +300,25 @@ TEST(vtkGLCollisionVerifier, DefaultsAndPrintSelf) {
 }
 
 TEST(vtkGLCollisionVerifier, BadInputIsReported) {
-  expectEmptyWithError(verify(towers(towerByTower), 0.0), "nozzle angle must be in (0, 90) degrees");
-  expectEmptyWithError(verify(towers(towerByTower), 90.0), "nozzle angle must be in (0, 90) degrees");
-  expectEmptyWithError(verify(towers(towerByTower), 60.0, [](vtkGLCollisionVerifier* f) { f->SetHolderRadius(-1); }),
-                       "holder radius must be finite and >= 0 mm");
-  expectEmptyWithError(verify(towers(towerByTower), 60.0, [](vtkGLCollisionVerifier* f) { f->SetSampleSpacing(0); }),
-                       "sample spacing must be > 0 mm");
+  expectEmptyWithError(verify(towers(towerByTower), 0.0),
+                       "nozzle angle must be in (0, 90) degrees");
+  expectEmptyWithError(verify(towers(towerByTower), 90.0),
+                       "nozzle angle must be in (0, 90) degrees");
+  expectEmptyWithError(
+      verify(towers(towerByTower), 60.0, [](vtkGLCollisionVerifier* f) { f->SetHolderRadius(-1); }),
+      "holder radius must be finite and >= 0 mm");
+  expectEmptyWithError(
+      verify(towers(towerByTower), 60.0, [](vtkGLCollisionVerifier* f) { f->SetSampleSpacing(0); }),
+      "sample spacing must be > 0 mm");
   vtkNew<vtkPolyData> empty;
   expectEmptyWithError(verify(empty), "empty input");
   auto noNormals = towers(towerByTower);
   noNormals->GetPointData()->SetNormals(nullptr);
   noNormals->GetPointData()->RemoveArray(arrays::Normals);
   expectEmptyWithError(verify(noNormals), "input has no Normals point array");
-  expectEmptyWithError(
-      verify(towers(towerByTower), 60.0, [](vtkGLCollisionVerifier* f) { f->SetTimeArrayName("NoSuchTime"); }),
-      "input has no cell or point array 'NoSuchTime'");
+  expectEmptyWithError(verify(towers(towerByTower), 60.0,
+                              [](vtkGLCollisionVerifier* f) { f->SetTimeArrayName("NoSuchTime"); }),
+                       "input has no cell or point array 'NoSuchTime'");
   auto noTime = towers(towerByTower);
   noTime->GetCellData()->RemoveArray(arrays::PrintOrder);
   expectEmptyWithError(verify(noTime), "input has no cell or point array 'PrintOrder'");

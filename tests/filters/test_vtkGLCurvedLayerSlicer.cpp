@@ -36,7 +36,7 @@ vtkSmartPointer<vtkUnstructuredGrid> fieldsOfBox() {
   return out;
 }
 
-} // namespace
+}  // namespace
 
 TEST(vtkGLCurvedLayerSlicer, LayersCarryTheDocumentedArrays) {
   auto fields = fieldsOfBox();
@@ -57,7 +57,8 @@ TEST(vtkGLCurvedLayerSlicer, LayersCarryTheDocumentedArrays) {
   ASSERT_NE(values, nullptr);
   EXPECT_EQ(values->GetNumberOfTuples(), expected);
   ASSERT_GT(all->GetNumberOfCells(), 0);
-  for (const char* name : {arrays::Gamma, arrays::Alpha, arrays::Beta, arrays::SourceEdge, arrays::EdgeParameter}) {
+  for (const char* name :
+       {arrays::Gamma, arrays::Alpha, arrays::Beta, arrays::SourceEdge, arrays::EdgeParameter}) {
     EXPECT_NE(all->GetPointData()->GetArray(name), nullptr) << name;
   }
   ASSERT_NE(all->GetPointData()->GetNormals(), nullptr);
@@ -77,7 +78,8 @@ TEST(vtkGLCurvedLayerSlicer, LayersCarryTheDocumentedArrays) {
   EXPECT_EQ(all->GetFieldData()->GetArray(arrays::LayerComponents)->GetTuple1(2), 1.0);
   EXPECT_NEAR(all->GetFieldData()->GetArray(arrays::LayerArea)->GetTuple1(2), 100.0, 2.0);
   EXPECT_NEAR(all->GetFieldData()->GetArray(arrays::LayerSpacingMean)->GetTuple1(2), 0.6, 0.05);
-  EXPECT_TRUE(std::isnan(all->GetFieldData()->GetArray(arrays::LayerSpacingMean)->GetTuple1(expected - 1)));
+  EXPECT_TRUE(
+      std::isnan(all->GetFieldData()->GetArray(arrays::LayerSpacingMean)->GetTuple1(expected - 1)));
 
   // Port 1: only layer 3, every point at γ = φ_3.
   vtkPolyData* one = slicer->GetOutput(1);
@@ -105,21 +107,33 @@ TEST(vtkGLCurvedLayerSlicer, BadInputGivesAnErrorAndEmptyOutputs) {
     const char* expected;
   };
   const std::vector<Case> cases = {
-    {"no Gamma", [](vtkUnstructuredGrid* g, vtkGLCurvedLayerSlicer*) { g->GetPointData()->RemoveArray(arrays::Gamma); },
-     "no point array 'Gamma'"},
-    {"no Beta", [](vtkUnstructuredGrid* g, vtkGLCurvedLayerSlicer*) { g->GetPointData()->RemoveArray(arrays::Beta); },
-     "no point array 'Beta'"},
-    {"zero interval", [](vtkUnstructuredGrid*, vtkGLCurvedLayerSlicer* s) { s->SetLayerInterval(0); }, "interval"},
-    {"negative interval", [](vtkUnstructuredGrid*, vtkGLCurvedLayerSlicer* s) { s->SetLayerInterval(-0.5); },
-     "interval"},
-    {"interval above the part", [](vtkUnstructuredGrid*, vtkGLCurvedLayerSlicer* s) {
-       s->SetLayerInterval(100);
-       s->SetFirstLayerOffset(100);
-     }, "no layer"},
-    {"hexahedron", [](vtkUnstructuredGrid* g, vtkGLCurvedLayerSlicer*) {
-       const vtkIdType ids[8] = {0, 1, 2, 3, 4, 5, 6, 7};
-       g->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
-     }, "not a linear tetrahedron"},
+      {"no Gamma",
+       [](vtkUnstructuredGrid* g, vtkGLCurvedLayerSlicer*) {
+         g->GetPointData()->RemoveArray(arrays::Gamma);
+       },
+       "no point array 'Gamma'"},
+      {"no Beta",
+       [](vtkUnstructuredGrid* g, vtkGLCurvedLayerSlicer*) {
+         g->GetPointData()->RemoveArray(arrays::Beta);
+       },
+       "no point array 'Beta'"},
+      {"zero interval",
+       [](vtkUnstructuredGrid*, vtkGLCurvedLayerSlicer* s) { s->SetLayerInterval(0); }, "interval"},
+      {"negative interval",
+       [](vtkUnstructuredGrid*, vtkGLCurvedLayerSlicer* s) { s->SetLayerInterval(-0.5); },
+       "interval"},
+      {"interval above the part",
+       [](vtkUnstructuredGrid*, vtkGLCurvedLayerSlicer* s) {
+         s->SetLayerInterval(100);
+         s->SetFirstLayerOffset(100);
+       },
+       "no layer"},
+      {"hexahedron",
+       [](vtkUnstructuredGrid* g, vtkGLCurvedLayerSlicer*) {
+         const vtkIdType ids[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+         g->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
+       },
+       "not a linear tetrahedron"},
   };
   for (const Case& c : cases) {
     auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
@@ -131,7 +145,8 @@ TEST(vtkGLCurvedLayerSlicer, BadInputGivesAnErrorAndEmptyOutputs) {
     errors->Observe(slicer);
     slicer->Update();
     EXPECT_TRUE(errors->HasError()) << c.what;
-    EXPECT_NE(errors->Errors().find(c.expected), std::string::npos) << c.what << ": " << errors->Errors();
+    EXPECT_NE(errors->Errors().find(c.expected), std::string::npos)
+        << c.what << ": " << errors->Errors();
     EXPECT_EQ(slicer->GetOutput(0)->GetNumberOfCells(), 0) << c.what;
     EXPECT_EQ(slicer->GetOutput(1)->GetNumberOfCells(), 0) << c.what;
   }

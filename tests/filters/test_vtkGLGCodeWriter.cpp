@@ -60,7 +60,8 @@ size_t checkMoves(const std::string& text, vtkPolyData* path, bool bc, const Eig
     EXPECT_EQ(w.count(bc ? 'A' : 'B'), 0u) << line;
     const double tilt = (bc ? w['B'] : w['A']) * M_PI / 180.0;
     const Eigen::Matrix3d r =
-        Eigen::AngleAxisd(tilt, bc ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitX()).toRotationMatrix() *
+        Eigen::AngleAxisd(tilt, bc ? Eigen::Vector3d::UnitY() : Eigen::Vector3d::UnitX())
+            .toRotationMatrix() *
         Eigen::AngleAxisd(w['C'] * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
     double n[3], p[3];
     normals->GetTuple(i, n);
@@ -81,7 +82,7 @@ size_t checkMoves(const std::string& text, vtkPolyData* path, bool bc, const Eig
   return static_cast<size_t>(i);
 }
 
-} // namespace
+}  // namespace
 
 TEST(vtkGLGCodeWriter, DefaultsAndPrintSelf) {
   vtkNew<vtkGLGCodeWriter> w;
@@ -120,7 +121,8 @@ TEST(vtkGLGCodeWriter, MovesTurnTheAxisUpAC_BC) {
     EXPECT_GE(w->GetMaxRotaryStepDeg(), 30.0 - 1e-9);
     EXPECT_LE(w->GetMaxRotaryStepDeg(), bc ? 180.0 : 30.0 + 1e-9);
     const std::string text = glReadFile(file);
-    EXPECT_NE(text.find(bc ? "B-C tilting-rotary table" : "A-C tilting-rotary table"), std::string::npos);
+    EXPECT_NE(text.find(bc ? "B-C tilting-rotary table" : "A-C tilting-rotary table"),
+              std::string::npos);
     for (const char* header : {"\nG21", "\nG90", "\nM83", "\nG93"}) {
       EXPECT_NE(text.find(header), std::string::npos) << header;
     }
@@ -149,12 +151,13 @@ TEST(vtkGLGCodeWriter, BadInputIsReported) {
     EXPECT_EQ(glListDirectory(dir), std::vector<std::string>{"part.gcode"}) << text;
     return w->GetErrorCode();
   };
-  auto nothing = [](vtkGLGCodeWriter*) {};
+  auto nothing = [](vtkGLGCodeWriter*) {
+  };
   // The 20° tilt of the second half of each loop (points 22.., 63..) is outside +-10°.
   expectError(makeTestToolpath(2, 20.0),
-              "40 of 83 toolpath points need a tilt outside the limits [-10, 10] degrees (first: 22, 23, 24", [](vtkGLGCodeWriter* w) {
-                w->SetTiltLimits(-10, 10);
-              });
+              "40 of 83 toolpath points need a tilt outside the limits [-10, 10] degrees (first: "
+              "22, 23, 24",
+              [](vtkGLGCodeWriter* w) { w->SetTiltLimits(-10, 10); });
   // A tilt above the limit on one side only: the other solution is used.
   {
     vtkNew<vtkGLGCodeWriter> w;
@@ -166,16 +169,15 @@ TEST(vtkGLGCodeWriter, BadInputIsReported) {
     EXPECT_GT(w->GetBranchFlips(), 0);
     fs::remove(ok);
   }
-  expectError(makeTestToolpath(), "the tilt limits must be finite with min < max", [](vtkGLGCodeWriter* w) {
-    w->SetTiltLimits(10, -10);
-  });
-  expectError(makeTestToolpath(), "the pivot and the part offset must be finite", [](vtkGLGCodeWriter* w) {
-    w->SetPivot(std::nan(""), 0, 0);
-  });
+  expectError(makeTestToolpath(), "the tilt limits must be finite with min < max",
+              [](vtkGLGCodeWriter* w) { w->SetTiltLimits(10, -10); });
+  expectError(makeTestToolpath(), "the pivot and the part offset must be finite",
+              [](vtkGLGCodeWriter* w) { w->SetPivot(std::nan(""), 0, 0); });
   {
     auto path = makeTestToolpath();
     path->GetPointData()->GetArray(geolattice::arrays::Normals)->SetTuple3(5, 0, std::nan(""), 1);
-    EXPECT_EQ(expectError(path, "toolpath point 5 has a NaN or zero normal", nothing), vtkErrorCode::UserError);
+    EXPECT_EQ(expectError(path, "toolpath point 5 has a NaN or zero normal", nothing),
+              vtkErrorCode::UserError);
   }
   {
     vtkNew<vtkPolyData> empty;
@@ -195,8 +197,12 @@ TEST(vtkGLGCodeWriter, ProgressAndAbortWriteNothing) {
   vtkNew<vtkGLGCodeWriter> w;
   w->SetInputData(makeTestToolpath(4));
   w->SetFileName((dir / "abort.gcode").string().c_str());
-  auto write = [&w] { EXPECT_EQ(w->Write(), 1); };
-  auto nothingWritten = [&w, &dir] { return glListDirectory(dir).empty() && w->GetNumberOfMoves() == 0; };
+  auto write = [&w] {
+    EXPECT_EQ(w->Write(), 1);
+  };
+  auto nothingWritten = [&w, &dir] {
+    return glListDirectory(dir).empty() && w->GetNumberOfMoves() == 0;
+  };
   glExpectProgressReport(w, 3, write);
   fs::remove(dir / "abort.gcode");
   for (double at : {0.1, 0.2, 0.9}) {

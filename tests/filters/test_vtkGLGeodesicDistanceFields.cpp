@@ -23,15 +23,18 @@ namespace arrays = geolattice::arrays;
 
 namespace {
 
-vtkSmartPointer<vtkUnstructuredGrid> boxGrid(double sx, double sy, double sz, int nx, int ny, int nz) {
+vtkSmartPointer<vtkUnstructuredGrid> boxGrid(double sx, double sy, double sz, int nx, int ny,
+                                             int nz) {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   geolattice::fromTetMesh(geolattice::boxTetMesh(geolattice::Vec3(sx, sy, sz), nx, ny, nz), grid);
   return grid;
 }
 
-vtkDataArray* pointArray(vtkUnstructuredGrid* g, const char* name) { return g->GetPointData()->GetArray(name); }
+vtkDataArray* pointArray(vtkUnstructuredGrid* g, const char* name) {
+  return g->GetPointData()->GetArray(name);
+}
 
-} // namespace
+}  // namespace
 
 TEST(vtkGLGeodesicDistanceFields, AddsTheDocumentedArrays) {
   auto grid = boxGrid(8, 8, 12, 4, 4, 6);
@@ -61,8 +64,9 @@ TEST(vtkGLGeodesicDistanceFields, AddsTheDocumentedArrays) {
   EXPECT_EQ(range[0], 0.0);
   EXPECT_NEAR(range[1], 12.0, 0.6);
   vtkFieldData* fd = out->GetFieldData();
-  for (const char* name : {arrays::GammaRange, arrays::AlphaRange, arrays::BetaRange, arrays::GdfTimings,
-                           arrays::OrthogonalityDeg, arrays::ReferenceFallbackTets, arrays::SourceCount}) {
+  for (const char* name :
+       {arrays::GammaRange, arrays::AlphaRange, arrays::BetaRange, arrays::GdfTimings,
+        arrays::OrthogonalityDeg, arrays::ReferenceFallbackTets, arrays::SourceCount}) {
     ASSERT_NE(fd->GetArray(name), nullptr) << name;
   }
   EXPECT_DOUBLE_EQ(fd->GetArray(arrays::GammaRange)->GetComponent(1, 0), 0.0 + range[1]);
@@ -114,37 +118,49 @@ TEST(vtkGLGeodesicDistanceFields, BadInputGivesAnErrorAndAnEmptyOutput) {
     const char* expected;
   };
   const std::vector<Case> cases = {
-    {"empty grid", [](vtkUnstructuredGrid* g, vtkGLGeodesicDistanceFields*) { g->Initialize(); }, "empty mesh"},
-    {"hexahedron", [](vtkUnstructuredGrid* g, vtkGLGeodesicDistanceFields*) {
-       const vtkIdType ids[8] = {0, 1, 2, 3, 4, 5, 6, 7};
-       g->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
-     }, "not a linear tetrahedron"},
-    {"inverted tet", [](vtkUnstructuredGrid* g, vtkGLGeodesicDistanceFields*) {
-       vtkIdType npts;
-       const vtkIdType* pts;
-       g->GetCellPoints(3, npts, pts);
-       const vtkIdType swapped[4] = {pts[1], pts[0], pts[2], pts[3]};
-       g->GetCells()->ReplaceCellAtId(3, 4, swapped);
-     }, "inverted tet 3"},
-    {"zero time factor", [](vtkUnstructuredGrid*, vtkGLGeodesicDistanceFields* f) { f->SetTimeFactor(0); },
-     "time factor"},
-    {"zero reference", [](vtkUnstructuredGrid*, vtkGLGeodesicDistanceFields* f) { f->SetReferenceVector(0, 0, 0); },
-     "reference vector"},
-    {"missing mask array", [](vtkUnstructuredGrid*, vtkGLGeodesicDistanceFields* f) {
-       f->SetSourceMode(vtkGLGeodesicDistanceFields::MASK_ARRAY);
-       f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "NoSuchArray");
-     }, "array is missing"},
-    {"all-zero mask", [](vtkUnstructuredGrid* g, vtkGLGeodesicDistanceFields* f) {
-       vtkNew<vtkDoubleArray> mask;
-       mask->SetName("Zero");
-       mask->SetNumberOfTuples(g->GetNumberOfPoints());
-       mask->FillValue(0);
-       g->GetPointData()->AddArray(mask);
-       f->SetSourceMode(vtkGLGeodesicDistanceFields::MASK_ARRAY);
-       f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Zero");
-     }, "empty source set"},
-    {"negative base tolerance", [](vtkUnstructuredGrid*, vtkGLGeodesicDistanceFields* f) { f->SetBaseTolerance(-1); },
-     "base tolerance"},
+      {"empty grid", [](vtkUnstructuredGrid* g, vtkGLGeodesicDistanceFields*) { g->Initialize(); },
+       "empty mesh"},
+      {"hexahedron",
+       [](vtkUnstructuredGrid* g, vtkGLGeodesicDistanceFields*) {
+         const vtkIdType ids[8] = {0, 1, 2, 3, 4, 5, 6, 7};
+         g->InsertNextCell(VTK_HEXAHEDRON, 8, ids);
+       },
+       "not a linear tetrahedron"},
+      {"inverted tet",
+       [](vtkUnstructuredGrid* g, vtkGLGeodesicDistanceFields*) {
+         vtkIdType npts;
+         const vtkIdType* pts;
+         g->GetCellPoints(3, npts, pts);
+         const vtkIdType swapped[4] = {pts[1], pts[0], pts[2], pts[3]};
+         g->GetCells()->ReplaceCellAtId(3, 4, swapped);
+       },
+       "inverted tet 3"},
+      {"zero time factor",
+       [](vtkUnstructuredGrid*, vtkGLGeodesicDistanceFields* f) { f->SetTimeFactor(0); },
+       "time factor"},
+      {"zero reference",
+       [](vtkUnstructuredGrid*, vtkGLGeodesicDistanceFields* f) { f->SetReferenceVector(0, 0, 0); },
+       "reference vector"},
+      {"missing mask array",
+       [](vtkUnstructuredGrid*, vtkGLGeodesicDistanceFields* f) {
+         f->SetSourceMode(vtkGLGeodesicDistanceFields::MASK_ARRAY);
+         f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "NoSuchArray");
+       },
+       "array is missing"},
+      {"all-zero mask",
+       [](vtkUnstructuredGrid* g, vtkGLGeodesicDistanceFields* f) {
+         vtkNew<vtkDoubleArray> mask;
+         mask->SetName("Zero");
+         mask->SetNumberOfTuples(g->GetNumberOfPoints());
+         mask->FillValue(0);
+         g->GetPointData()->AddArray(mask);
+         f->SetSourceMode(vtkGLGeodesicDistanceFields::MASK_ARRAY);
+         f->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Zero");
+       },
+       "empty source set"},
+      {"negative base tolerance",
+       [](vtkUnstructuredGrid*, vtkGLGeodesicDistanceFields* f) { f->SetBaseTolerance(-1); },
+       "base tolerance"},
   };
   for (const Case& c : cases) {
     auto grid = boxGrid(2, 2, 2, 2, 2, 2);
@@ -155,7 +171,8 @@ TEST(vtkGLGeodesicDistanceFields, BadInputGivesAnErrorAndAnEmptyOutput) {
     errors->Observe(filter);
     filter->Update();
     EXPECT_TRUE(errors->HasError()) << c.what;
-    EXPECT_NE(errors->Errors().find(c.expected), std::string::npos) << c.what << ": " << errors->Errors();
+    EXPECT_NE(errors->Errors().find(c.expected), std::string::npos)
+        << c.what << ": " << errors->Errors();
     EXPECT_EQ(filter->GetOutput()->GetNumberOfCells(), 0) << c.what;
     EXPECT_EQ(filter->GetOutput()->GetPointData()->GetArray(arrays::Gamma), nullptr) << c.what;
   }
@@ -172,7 +189,7 @@ TEST(vtkGLGeodesicDistanceFields, ProgressAndAbortInTheSetUpAndInTheSolve) {
 
   vtkNew<vtkGLGeodesicDistanceFields> filter;
   filter->SetInputData(grid);
-  glExpectCleanAbort(filter, glAbortAt(0.3)); // after the heat factorization
+  glExpectCleanAbort(filter, glAbortAt(0.3));  // after the heat factorization
   // The recovery run rebuilt the solver and keeps it: this abort comes inside solve().
   glExpectCleanAbort(filter, glAbortAt(0.7));
   // After both aborts the fields are those of an undisturbed run.

@@ -49,7 +49,8 @@ geolattice::CurvedLayers analyticBoxLayers() {
   geolattice::SlicerOptions o;
   o.interval = 2.0;
   o.firstLayerOffset = 1.0;
-  return geolattice::sliceCurvedLayers(mesh, gamma, alpha, beta, geolattice::vertexGradientDirections(mesh, gamma), o);
+  return geolattice::sliceCurvedLayers(mesh, gamma, alpha, beta,
+                                       geolattice::vertexGradientDirections(mesh, gamma), o);
 }
 
 /// The layers as the slicer filter writes them (optionally without some arrays).
@@ -104,7 +105,7 @@ double field(vtkPolyData* pd, const char* name) {
   return a ? a->GetTuple1(0) : std::nan("");
 }
 
-} // namespace
+}  // namespace
 
 TEST(vtkGLLatticeInfill, BoxLayersGiveTheGridWithTheDocumentedArrays) {
   const geolattice::CurvedLayers layers = analyticBoxLayers();
@@ -140,14 +141,15 @@ TEST(vtkGLLatticeInfill, BoxLayersGiveTheGridWithTheDocumentedArrays) {
   EXPECT_EQ(out->GetFieldData()->GetArray(arrays::SubgraphLayer)->GetTuple1(29), 29.0);
 
   vtkPointData* pd = out->GetPointData();
-  for (const char* name : {arrays::VertexKind, arrays::Degree, arrays::Gamma, arrays::Alpha, arrays::Beta,
-                           arrays::SubgraphId}) {
+  for (const char* name : {arrays::VertexKind, arrays::Degree, arrays::Gamma, arrays::Alpha,
+                           arrays::Beta, arrays::SubgraphId}) {
     ASSERT_NE(pd->GetArray(name), nullptr) << name;
   }
   ASSERT_NE(pd->GetNormals(), nullptr);
   EXPECT_STREQ(pd->GetNormals()->GetName(), arrays::Normals);
   vtkCellData* cd = out->GetCellData();
-  for (const char* name : {arrays::EdgeKind, arrays::LayerId, arrays::SubgraphId, arrays::IsolineLevel}) {
+  for (const char* name :
+       {arrays::EdgeKind, arrays::LayerId, arrays::SubgraphId, arrays::IsolineLevel}) {
     ASSERT_NE(cd->GetArray(name), nullptr) << name;
   }
   // Degrees recounted from the line cells; kinds against the degree rules; γ = layer z.
@@ -186,7 +188,7 @@ TEST(vtkGLLatticeInfill, PipelineFromTheTetGridThroughTheSlicer) {
   slicer->SetInputConnection(gdf->GetOutputPort());
   slicer->SetLayerInterval(1.0);
   slicer->SetFirstLayerOffset(0.5);
-  slicer->SetLastLayer(12); // z <= 12.5: clear of the top face, where the last layer is partial
+  slicer->SetLastLayer(12);  // z <= 12.5: clear of the top face, where the last layer is partial
   vtkNew<vtkGLLatticeInfill> lattice;
   lattice->SetInputConnection(slicer->GetOutputPort(0));
   lattice->SetAlphaPhase(2.0);
@@ -196,7 +198,8 @@ TEST(vtkGLLatticeInfill, PipelineFromTheTetGridThroughTheSlicer) {
   lattice->Update();
   ASSERT_FALSE(errors->HasError()) << errors->Errors();
   vtkPolyData* out = lattice->GetOutput();
-  const double layers = slicer->GetOutput(0)->GetFieldData()->GetArray(arrays::LayerValues)->GetNumberOfTuples();
+  const double layers =
+      slicer->GetOutput(0)->GetFieldData()->GetArray(arrays::LayerValues)->GetNumberOfTuples();
   // α, β ≈ 20 - y, 20 - x: levels 2, 6, .., 18 -> 5 x 5 crossings on every layer.
   EXPECT_EQ(field(out, arrays::LatticeCrossings), 25 * layers);
   EXPECT_EQ(field(out, arrays::LatticeSubgraphs), layers);
@@ -205,9 +208,10 @@ TEST(vtkGLLatticeInfill, PipelineFromTheTetGridThroughTheSlicer) {
   out->GetCellData()->GetArray(arrays::LayerId)->GetRange(range);
   EXPECT_EQ(range[0], 0.0);
   EXPECT_EQ(range[1], layers - 1);
-  std::printf("[lattice filter] GDF box 20x20x15: %g layers, %lld vertices, %lld edges, %g crossings\n", layers,
-              static_cast<long long>(out->GetNumberOfPoints()), static_cast<long long>(out->GetNumberOfLines()),
-              field(out, arrays::LatticeCrossings));
+  std::printf(
+      "[lattice filter] GDF box 20x20x15: %g layers, %lld vertices, %lld edges, %g crossings\n",
+      layers, static_cast<long long>(out->GetNumberOfPoints()),
+      static_cast<long long>(out->GetNumberOfLines()), field(out, arrays::LatticeCrossings));
 }
 
 TEST(vtkGLLatticeInfill, GradedLatticeFromAPointArray) {
@@ -226,11 +230,11 @@ TEST(vtkGLLatticeInfill, GradedLatticeFromAPointArray) {
   errors->Observe(lattice);
   lattice->Update();
   ASSERT_FALSE(errors->HasError());
-  EXPECT_EQ(field(lattice->GetOutput(), arrays::LatticeCrossings), 100.0 * 30); // uniform: 10 x 10
+  EXPECT_EQ(field(lattice->GetOutput(), arrays::LatticeCrossings), 100.0 * 30);  // uniform: 10 x 10
   lattice->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Scale");
   lattice->Update();
   ASSERT_FALSE(errors->HasError()) << errors->Errors();
-  EXPECT_EQ(field(lattice->GetOutput(), arrays::LatticeCrossings), 400.0 * 30); // 2 mm: 20 x 20
+  EXPECT_EQ(field(lattice->GetOutput(), arrays::LatticeCrossings), 400.0 * 30);  // 2 mm: 20 x 20
   lattice->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "None");
   lattice->Update();
   ASSERT_FALSE(errors->HasError());
@@ -245,7 +249,8 @@ TEST(vtkGLLatticeInfill, GradedLatticeFromAPointArray) {
   scale->Modified();
   lattice->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "Scale");
   lattice->Update();
-  EXPECT_NE(errors->Errors().find("width scale must be > 0"), std::string::npos) << errors->Errors();
+  EXPECT_NE(errors->Errors().find("width scale must be > 0"), std::string::npos)
+      << errors->Errors();
   EXPECT_EQ(lattice->GetOutput()->GetNumberOfPoints(), 0);
 }
 
@@ -266,7 +271,8 @@ TEST(vtkGLLatticeInfill, WithoutNormalsAndGammaAndWithMinimumLength) {
   EXPECT_EQ(out->GetPointData()->GetArray(arrays::Gamma), nullptr);
   ASSERT_NE(out->GetPointData()->GetNormals(), nullptr);
   for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v) {
-    ASSERT_NEAR(out->GetPointData()->GetNormals()->GetComponent(v, 2), 1.0, 1e-9); // from the triangles
+    ASSERT_NEAR(out->GetPointData()->GetNormals()->GetComponent(v, 2), 1.0,
+                1e-9);  // from the triangles
   }
   EXPECT_EQ(field(out, arrays::LatticeCrossings), 81.0 * 30);
 }
@@ -285,7 +291,7 @@ TEST(vtkGLLatticeInfill, WidthLargerThanThePartIsAnEmptyLatticeWithAWarning) {
   vtkPolyData* out = lattice->GetOutput();
   EXPECT_EQ(field(out, arrays::LatticeIsolineEdges), 0.0);
   EXPECT_EQ(field(out, arrays::LatticeCrossings), 0.0);
-  EXPECT_EQ(field(out, arrays::LatticeSubgraphs), 30.0); // the layer boundaries remain
+  EXPECT_EQ(field(out, arrays::LatticeSubgraphs), 30.0);  // the layer boundaries remain
   double range[2];
   out->GetCellData()->GetArray(arrays::EdgeKind)->GetRange(range);
   EXPECT_EQ(range[0], kind::EdgeBoundary);
@@ -327,12 +333,12 @@ TEST(vtkGLLatticeInfill, BadInputIsReported) {
 }
 
 TEST(vtkGLLatticeInfill, ProgressPerLayerAndAbort) {
-  auto layers = toPolyData(analyticBoxLayers()); // 30 layers
+  auto layers = toPolyData(analyticBoxLayers());  // 30 layers
   vtkNew<vtkGLLatticeInfill> filter;
   filter->SetInputData(layers);
-  filter->SetNumberOfThreads(1); // every layer reported by the calling thread
+  filter->SetNumberOfThreads(1);  // every layer reported by the calling thread
   glExpectProgressReport(filter, 25);
   glExpectCleanAbort(filter, glAbortAt(0.3));
-  filter->SetNumberOfThreads(2); // the other worker finishes its layer, silently
+  filter->SetNumberOfThreads(2);  // the other worker finishes its layer, silently
   glExpectCleanAbort(filter, glAbortAt(0.3));
 }

@@ -45,7 +45,8 @@ gl::TetMesh mushroom() {
   gl::TetMesh out;
   std::vector<int> id(box.points.size(), -1);
   for (const auto& t : box.tets) {
-    const gl::Vec3 c = 0.25 * (box.points[t[0]] + box.points[t[1]] + box.points[t[2]] + box.points[t[3]]);
+    const gl::Vec3 c =
+        0.25 * (box.points[t[0]] + box.points[t[1]] + box.points[t[2]] + box.points[t[3]]);
     if (!(c.z() > 20.0 || (c.x() > 10.0 && c.x() < 20.0 && c.y() > 10.0 && c.y() < 20.0))) {
       continue;
     }
@@ -106,7 +107,7 @@ void expectEmptyWithError(const FilterRun& r, const std::string& part) {
   EXPECT_EQ(r.output->GetFieldData()->GetArray(arrays::OverhangPlanarFraction), nullptr);
 }
 
-} // namespace
+}  // namespace
 
 TEST(vtkGLOverhangAnalysis, BoundarySurfaceWithTheDocumentedArraysMatchesCore) {
   auto fields = fieldsOfMushroom();
@@ -200,7 +201,7 @@ TEST(vtkGLOverhangAnalysis, ThresholdAngleProperty) {
   EXPECT_NE(print.str().find("ThresholdAngle: 135 deg"), std::string::npos) << print.str();
 
   auto fields = fieldsOfMushroom();
-  const FilterRun strict = run(fields, 180.0); // nothing exceeds 180°
+  const FilterRun strict = run(fields, 180.0);  // nothing exceeds 180°
   ASSERT_TRUE(strict.errors.empty()) << strict.errors;
   EXPECT_EQ(field(strict.output, arrays::OverhangPlanarFraction), 0.0);
   EXPECT_EQ(field(strict.output, arrays::OverhangThresholdDeg), 180.0);
@@ -237,7 +238,7 @@ TEST(vtkGLOverhangAnalysis, MissingOrMalformedArraysAreNamed) {
     scalar->SetName(arrays::GammaGradient);
     scalar->SetNumberOfTuples(g->GetNumberOfCells());
     scalar->FillValue(1.0);
-    g->GetCellData()->AddArray(scalar); // replaces the 3-component array
+    g->GetCellData()->AddArray(scalar);  // replaces the 3-component array
     expectEmptyWithError(run(g), "cell array 'GammaGradient' has 1 components, expected 3");
   }
   {

@@ -24,12 +24,10 @@
 #include <limits>
 #include <string>
 
-namespace
-{
+namespace {
 const std::string kData = GEOLATTICE_TESTDATA;
 
-vtkSmartPointer<vtkPointSet> readModel(const std::string& name)
-{
+vtkSmartPointer<vtkPointSet> readModel(const std::string& name) {
   vtkNew<vtkGLMeshReader> reader;
   reader->SetFileName((kData + "/" + name).c_str());
   reader->Update();
@@ -37,28 +35,24 @@ vtkSmartPointer<vtkPointSet> readModel(const std::string& name)
 }
 
 /// Bounds of all points.
-std::array<double, 6> pointBounds(vtkPointSet* ds)
-{
+std::array<double, 6> pointBounds(vtkPointSet* ds) {
   std::array<double, 6> b;
   ds->GetPoints()->GetBounds(b.data());
   return b;
 }
 
-double fieldValue(vtkPointSet* ds, const char* name, int i)
-{
+double fieldValue(vtkPointSet* ds, const char* name, int i) {
   vtkDataArray* a = ds->GetFieldData()->GetArray(name);
   EXPECT_NE(a, nullptr) << name;
   return a ? a->GetComponent(i, 0) : std::numeric_limits<double>::quiet_NaN();
 }
 
-struct Placed
-{
+struct Placed {
   vtkSmartPointer<vtkPointSet> Output;
   vtkSmartPointer<GLTestErrorObserver> Errors;
 };
 
-Placed place(vtkPointSet* input, double scale, double fitSize, bool centerXY)
-{
+Placed place(vtkPointSet* input, double scale, double fitSize, bool centerXY) {
   vtkNew<vtkGLPlaceOnPlatform> filter;
   Placed p;
   p.Errors = vtkSmartPointer<GLTestErrorObserver>::New();
@@ -71,10 +65,9 @@ Placed place(vtkPointSet* input, double scale, double fitSize, bool centerXY)
   p.Output = vtkPointSet::SafeDownCast(filter->GetOutputDataObject(0));
   return p;
 }
-} // namespace
+}  // namespace
 
-TEST(PlaceOnPlatform, DefaultsCentreAndSitOnPlatform)
-{
+TEST(PlaceOnPlatform, DefaultsCentreAndSitOnPlatform) {
   vtkNew<vtkGLPlaceOnPlatform> defaults;
   EXPECT_EQ(defaults->GetScale(), 1.0);
   EXPECT_EQ(defaults->GetFitSize(), 0.0);
@@ -90,55 +83,52 @@ TEST(PlaceOnPlatform, DefaultsCentreAndSitOnPlatform)
   EXPECT_EQ(p.Output->GetNumberOfPoints(), bunny->GetNumberOfPoints());
   EXPECT_EQ(p.Output->GetNumberOfCells(), bunny->GetNumberOfCells());
   const auto out = pointBounds(p.Output);
-  EXPECT_EQ(out[4], 0.0); // exactly: the base sits on the platform
+  EXPECT_EQ(out[4], 0.0);  // exactly: the base sits on the platform
   EXPECT_NEAR(out[0] + out[1], 0.0, 1e-12);
   EXPECT_NEAR(out[2] + out[3], 0.0, 1e-12);
-  for (int k = 0; k < 3; ++k)
-  {
+  for (int k = 0; k < 3; ++k) {
     EXPECT_NEAR(out[2 * k + 1] - out[2 * k], in[2 * k + 1] - in[2 * k], 1e-12) << "axis " << k;
   }
   EXPECT_EQ(fieldValue(p.Output, geolattice::arrays::PlacementScale, 0), 1.0);
-  EXPECT_EQ(p.Output->GetFieldData()->GetArray(geolattice::arrays::PlacementTranslation)->GetNumberOfTuples(), 3);
+  EXPECT_EQ(p.Output->GetFieldData()
+                ->GetArray(geolattice::arrays::PlacementTranslation)
+                ->GetNumberOfTuples(),
+            3);
   // Every point follows p_out = s p_in + t with the recorded s and t.
   const double s = fieldValue(p.Output, geolattice::arrays::PlacementScale, 0);
   double t[3];
-  for (int k = 0; k < 3; ++k)
-  {
+  for (int k = 0; k < 3; ++k) {
     t[k] = fieldValue(p.Output, geolattice::arrays::PlacementTranslation, k);
   }
   EXPECT_NEAR(t[2], -in[4], 1e-12);
-  for (vtkIdType i = 0; i < bunny->GetNumberOfPoints(); i += 97)
-  {
+  for (vtkIdType i = 0; i < bunny->GetNumberOfPoints(); i += 97) {
     double a[3], b[3];
     bunny->GetPoint(i, a);
     p.Output->GetPoint(i, b);
-    for (int k = 0; k < 3; ++k)
-    {
+    for (int k = 0; k < 3; ++k) {
       ASSERT_NEAR(b[k], s * a[k] + t[k], 1e-12) << "point " << i;
     }
   }
 }
 
-TEST(PlaceOnPlatform, FitSizeGivesLargestSideOnTetMesh)
-{
+TEST(PlaceOnPlatform, FitSizeGivesLargestSideOnTetMesh) {
   vtkSmartPointer<vtkPointSet> ring = readModel("ring.tet");
   ASSERT_TRUE(vtkUnstructuredGrid::SafeDownCast(ring));
   const auto in = pointBounds(ring);
-  const double largestIn = std::max({ in[1] - in[0], in[3] - in[2], in[5] - in[4] });
+  const double largestIn = std::max({in[1] - in[0], in[3] - in[2], in[5] - in[4]});
   Placed p = place(ring, /*scale ignored*/ 7.0, 50.0, true);
   EXPECT_FALSE(p.Errors->HasError()) << p.Errors->Errors();
   vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(p.Output);
   ASSERT_NE(grid, nullptr);
   EXPECT_EQ(grid->GetNumberOfCells(), 40064);
   const auto out = pointBounds(grid);
-  const double largestOut = std::max({ out[1] - out[0], out[3] - out[2], out[5] - out[4] });
+  const double largestOut = std::max({out[1] - out[0], out[3] - out[2], out[5] - out[4]});
   EXPECT_NEAR(largestOut, 50.0, 1e-12);
   EXPECT_EQ(out[4], 0.0);
   EXPECT_DOUBLE_EQ(fieldValue(grid, geolattice::arrays::PlacementScale, 0), 50.0 / largestIn);
 }
 
-TEST(PlaceOnPlatform, ScaleWithoutCentringKeepsXY)
-{
+TEST(PlaceOnPlatform, ScaleWithoutCentringKeepsXY) {
   vtkSmartPointer<vtkPointSet> knight = readModel("decimated-knight.off");
   ASSERT_TRUE(knight);
   const auto in = pointBounds(knight);
@@ -153,8 +143,7 @@ TEST(PlaceOnPlatform, ScaleWithoutCentringKeepsXY)
   EXPECT_EQ(fieldValue(p.Output, geolattice::arrays::PlacementTranslation, 1), 0.0);
 }
 
-TEST(PlaceOnPlatform, ArraysPassAndUnusedPointsCount)
-{
+TEST(PlaceOnPlatform, ArraysPassAndUnusedPointsCount) {
   // Two triangles plus one point no cell uses, lowest of all: it must land on z = 0 too.
   vtkNew<vtkPolyData> poly;
   vtkNew<vtkPoints> points;
@@ -162,16 +151,15 @@ TEST(PlaceOnPlatform, ArraysPassAndUnusedPointsCount)
   points->InsertNextPoint(0.1, 0.2, 1.3);
   points->InsertNextPoint(1.1, 0.2, 1.3);
   points->InsertNextPoint(0.1, 1.2, 1.7);
-  points->InsertNextPoint(5.0, 5.0, 0.7); // unused
+  points->InsertNextPoint(5.0, 5.0, 0.7);  // unused
   poly->SetPoints(points);
   vtkNew<vtkCellArray> tris;
-  const vtkIdType tri[3] = { 0, 1, 2 };
+  const vtkIdType tri[3] = {0, 1, 2};
   tris->InsertNextCell(3, tri);
   poly->SetPolys(tris);
   vtkNew<vtkDoubleArray> tag;
   tag->SetName("Tag");
-  for (int i = 0; i < 4; ++i)
-  {
+  for (int i = 0; i < 4; ++i) {
     tag->InsertNextValue(i * 2.0);
   }
   poly->GetPointData()->AddArray(tag);
@@ -188,8 +176,7 @@ TEST(PlaceOnPlatform, ArraysPassAndUnusedPointsCount)
   EXPECT_EQ(passed->GetComponent(3, 0), 6.0);
 }
 
-TEST(PlaceOnPlatform, SinglePointWithScaleIsPlaced)
-{
+TEST(PlaceOnPlatform, SinglePointWithScaleIsPlaced) {
   vtkNew<vtkPolyData> poly;
   vtkNew<vtkPoints> points;
   points->InsertNextPoint(3, 4, 5);
@@ -205,21 +192,20 @@ TEST(PlaceOnPlatform, SinglePointWithScaleIsPlaced)
 
 // ---------------------------------------------------------------- bad parameters
 
-TEST(PlaceOnPlatform, BadParametersGiveErrorAndEmptyOutput)
-{
+TEST(PlaceOnPlatform, BadParametersGiveErrorAndEmptyOutput) {
   vtkSmartPointer<vtkPointSet> cube = readModel("cube.obj");
   ASSERT_TRUE(cube && cube->GetNumberOfPoints() == 8);
-  struct BadCase
-  {
+  struct BadCase {
     double Scale;
     double FitSize;
     const char* Message;
   };
-  const BadCase cases[] = { { 0.0, 0.0, "Scale must be > 0" }, { -2.0, 0.0, "Scale must be > 0" },
-    { std::nan(""), 0.0, "Scale must be > 0" }, { 1.0, -1.0, "FitSize must be >= 0" },
-    { -1.0, 10.0, "Scale must be > 0" } };
-  for (const BadCase& c : cases)
-  {
+  const BadCase cases[] = {{0.0, 0.0, "Scale must be > 0"},
+                           {-2.0, 0.0, "Scale must be > 0"},
+                           {std::nan(""), 0.0, "Scale must be > 0"},
+                           {1.0, -1.0, "FitSize must be >= 0"},
+                           {-1.0, 10.0, "Scale must be > 0"}};
+  for (const BadCase& c : cases) {
     SCOPED_TRACE(c.Message);
     Placed p = place(cube, c.Scale, c.FitSize, true);
     EXPECT_EQ(p.Errors->GetErrorCount(), 1);
@@ -230,8 +216,7 @@ TEST(PlaceOnPlatform, BadParametersGiveErrorAndEmptyOutput)
   }
 }
 
-TEST(PlaceOnPlatform, EmptyInput)
-{
+TEST(PlaceOnPlatform, EmptyInput) {
   vtkNew<vtkUnstructuredGrid> empty;
   Placed p = place(empty, 1.0, 0.0, true);
   EXPECT_NE(p.Errors->Errors().find("empty input"), std::string::npos) << p.Errors->Errors();
@@ -239,8 +224,7 @@ TEST(PlaceOnPlatform, EmptyInput)
   EXPECT_EQ(p.Output->GetNumberOfPoints(), 0);
 }
 
-TEST(PlaceOnPlatform, FitSizeOfDegenerateModel)
-{
+TEST(PlaceOnPlatform, FitSizeOfDegenerateModel) {
   vtkNew<vtkPolyData> poly;
   vtkNew<vtkPoints> points;
   points->InsertNextPoint(1, 1, 1);
@@ -248,12 +232,11 @@ TEST(PlaceOnPlatform, FitSizeOfDegenerateModel)
   poly->SetPoints(points);
   Placed p = place(poly, 1.0, 10.0, true);
   EXPECT_NE(p.Errors->Errors().find("bounding box is a single point"), std::string::npos)
-    << p.Errors->Errors();
+      << p.Errors->Errors();
   EXPECT_EQ(p.Output->GetNumberOfPoints(), 0);
 }
 
-TEST(PlaceOnPlatform, ProgressAndAbort)
-{
+TEST(PlaceOnPlatform, ProgressAndAbort) {
   vtkNew<vtkGLMeshReader> reader;
   reader->SetFileName((kData + "/bunny.obj").c_str());
   reader->Update();

@@ -47,11 +47,13 @@ namespace {
 double field(vtkDataObject* d, const char* name, int i = 0) {
   vtkDataArray* a = d->GetFieldData()->GetArray(name);
   EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents()) : std::nan("");
+  return a ? a->GetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents())
+           : std::nan("");
 }
 
 std::string strategyName(vtkDataObject* d) {
-  auto* a = vtkStringArray::SafeDownCast(d->GetFieldData()->GetAbstractArray(arrays::SequenceStrategy));
+  auto* a =
+      vtkStringArray::SafeDownCast(d->GetFieldData()->GetAbstractArray(arrays::SequenceStrategy));
   return a && a->GetNumberOfValues() == 1 ? a->GetValue(0) : "";
 }
 
@@ -190,7 +192,8 @@ std::vector<int> checkedPrintOrder(vtkPolyData* skeleton) {
   std::vector<char> seen(N, 0);
   for (vtkIdType p = 0; p < N; ++p) {
     position[p] = static_cast<int>(order->GetTuple1(p));
-    EXPECT_TRUE(position[p] >= 0 && position[p] < N && !seen[position[p]]) << "PrintOrder is not a permutation";
+    EXPECT_TRUE(position[p] >= 0 && position[p] < N && !seen[position[p]])
+        << "PrintOrder is not a permutation";
     if (position[p] >= 0 && position[p] < N) {
       seen[position[p]] = 1;
     }
@@ -219,7 +222,7 @@ void expectEmptyOutputs(SequenceRun& run, const std::string& text) {
   EXPECT_NE(run.errors->Errors().find(text), std::string::npos) << run.errors->Errors();
 }
 
-} // namespace
+}  // namespace
 
 TEST(vtkGLPrintSequencer, TwoTowersGiveTheDocumentedOutputs) {
   const int layers = 8;
@@ -281,16 +284,18 @@ TEST(vtkGLPrintSequencer, TwoTowersGiveTheDocumentedOutputs) {
     for (int j = 0; j < 3; ++j) {
       EXPECT_EQ(p[j], field(polyline, arrays::SequenceStart, 3 * k + j));
     }
-    EXPECT_EQ(p[2], 1.0 + static_cast<int>(field(polyline, arrays::SequenceOrder, k)) / 2); // on its layer
+    EXPECT_EQ(p[2], 1.0 + static_cast<int>(field(polyline, arrays::SequenceOrder, k)) /
+                              2);  // on its layer
   }
 
   // Field data on all three outputs.
   for (int port = 0; port < 3; ++port) {
     vtkPolyData* out = run.output(port);
     EXPECT_EQ(strategyName(out), "a4") << port;
-    for (const char* name : {arrays::SequenceRetractions, arrays::SequenceAirLength, arrays::SequenceForcedSteps,
-                             arrays::SequenceSeconds, arrays::SequencePcgPairs, arrays::SequencePcgSeconds,
-                             arrays::SequenceUnavoidablePairs, arrays::NozzleAngleDeg}) {
+    for (const char* name :
+         {arrays::SequenceRetractions, arrays::SequenceAirLength, arrays::SequenceForcedSteps,
+          arrays::SequenceSeconds, arrays::SequencePcgPairs, arrays::SequencePcgSeconds,
+          arrays::SequenceUnavoidablePairs, arrays::NozzleAngleDeg}) {
       ASSERT_NE(out->GetFieldData()->GetArray(name), nullptr) << name << " on port " << port;
     }
     EXPECT_EQ(out->GetFieldData()->GetArray(arrays::SequenceOrder)->GetNumberOfTuples(), K);
@@ -309,7 +314,8 @@ TEST(vtkGLPrintSequencer, TwoTowersGiveTheDocumentedOutputs) {
   EXPECT_EQ(field(report, arrays::CollisionFree), 1.0);
   EXPECT_EQ(field(report, arrays::CollisionOrderFree), 1.0);
   EXPECT_EQ(report->GetNumberOfPoints(), 0);
-  EXPECT_EQ(field(report, arrays::CollisionStations), 4.0 * K); // the squares' corners (1 mm edges)
+  EXPECT_EQ(field(report, arrays::CollisionStations),
+            4.0 * K);  // the squares' corners (1 mm edges)
 }
 
 TEST(vtkGLPrintSequencer, DepthPriorityCollidesWhereA4DoesNot) {
@@ -326,23 +332,26 @@ TEST(vtkGLPrintSequencer, DepthPriorityCollidesWhereA4DoesNot) {
     vtkPolyData* out = run.output(1);
     expectLowerBeforeUpper(out, checkedPrintOrder(out));
     const double free = field(report, arrays::CollisionFree);
-    std::printf("  %-4s retractions %g, air %.1f mm, PCG pairs %g, collision-free %g (%g violating stations)\n",
-                strategyName(out).c_str(), field(out, arrays::SequenceRetractions),
-                field(out, arrays::SequenceAirLength), field(out, arrays::SequencePcgPairs), free,
-                field(report, arrays::CollisionViolatingStations));
+    std::printf(
+        "  %-4s retractions %g, air %.1f mm, PCG pairs %g, collision-free %g (%g violating "
+        "stations)\n",
+        strategyName(out).c_str(), field(out, arrays::SequenceRetractions),
+        field(out, arrays::SequenceAirLength), field(out, arrays::SequencePcgPairs), free,
+        field(report, arrays::CollisionViolatingStations));
     if (strategy == vtkGLPrintSequencer::DPT) {
       EXPECT_EQ(strategyName(out), "dpt");
-      EXPECT_EQ(field(out, arrays::SequencePcgPairs), 0.0); // not computed
+      EXPECT_EQ(field(out, arrays::SequencePcgPairs), 0.0);  // not computed
       EXPECT_EQ(free, 0.0);
       EXPECT_GT(report->GetNumberOfPoints(), 0);
-      EXPECT_EQ(field(out, arrays::SequenceRetractions), 1.0); // one tower, then the other
+      EXPECT_EQ(field(out, arrays::SequenceRetractions), 1.0);  // one tower, then the other
     } else {
       EXPECT_EQ(free, 1.0) << strategyName(out);
       EXPECT_EQ(field(out, arrays::SequenceForcedSteps), 0.0);
     }
     if (strategy == vtkGLPrintSequencer::LPT) {
       EXPECT_EQ(strategyName(out), "lpt");
-      EXPECT_GE(field(out, arrays::SequenceRetractions), layers); // at least once per layer, to the other tower
+      EXPECT_GE(field(out, arrays::SequenceRetractions),
+                layers);  // at least once per layer, to the other tower
     }
   }
 }
@@ -376,7 +385,8 @@ TEST(vtkGLPrintSequencer, CollisionsWithAnAncestorAreUnavoidable) {
   EXPECT_EQ(field(report, arrays::CollisionFree), 0.0);
   EXPECT_EQ(field(report, arrays::CollisionOrderFree), 1.0);
   EXPECT_GT(field(report, arrays::CollisionViolatingStations), 0.0);
-  EXPECT_EQ(field(report, arrays::CollisionUnavoidableStations), field(report, arrays::CollisionViolatingStations));
+  EXPECT_EQ(field(report, arrays::CollisionUnavoidableStations),
+            field(report, arrays::CollisionViolatingStations));
   vtkDataArray* unavoidable = report->GetPointData()->GetArray(arrays::Unavoidable);
   ASSERT_NE(unavoidable, nullptr);
   ASSERT_GT(report->GetNumberOfPoints(), 0);
@@ -410,7 +420,8 @@ TEST(vtkGLPrintSequencer, DefaultsAndPrintSelf) {
   EXPECT_EQ(s->GetStrategy(), vtkGLPrintSequencer::BEST);
   std::ostringstream os;
   s->Print(os);
-  for (const char* text : {"Strategy: 3", "NozzleAngle: 45", "SampleSpacing: 1", "RetractionCost: 20"}) {
+  for (const char* text :
+       {"Strategy: 3", "NozzleAngle: 45", "SampleSpacing: 1", "RetractionCost: 20"}) {
     EXPECT_NE(os.str().find(text), std::string::npos) << text;
   }
 }
@@ -455,12 +466,14 @@ TEST(vtkGLPrintSequencer, BadInputIsReported) {
     expectEmptyOutputs(run, "the skeleton has 6 nodes but the lattice has 8 sub-graphs");
   }
   {
-    SequenceRun run(towerLattice(layers), towerSkeleton(layers, 2, 2.0, {{0, 5}}), vtkGLPrintSequencer::LPT, 45.0);
-    expectEmptyOutputs(run, "cyclic or missing adjacency"); // node 0 (layer 0) - node 5 (layer 2)
+    SequenceRun run(towerLattice(layers), towerSkeleton(layers, 2, 2.0, {{0, 5}}),
+                    vtkGLPrintSequencer::LPT, 45.0);
+    expectEmptyOutputs(run, "cyclic or missing adjacency");  // node 0 (layer 0) - node 5 (layer 2)
   }
   {
-    SequenceRun run(towerLattice(layers), towerSkeleton(layers, 2, 2.0, {{0, 1}}), vtkGLPrintSequencer::LPT, 45.0);
-    expectEmptyOutputs(run, "cyclic or missing adjacency"); // an edge within layer 0
+    SequenceRun run(towerLattice(layers), towerSkeleton(layers, 2, 2.0, {{0, 1}}),
+                    vtkGLPrintSequencer::LPT, 45.0);
+    expectEmptyOutputs(run, "cyclic or missing adjacency");  // an edge within layer 0
   }
   {
     auto lattice = towerLattice(layers);
@@ -504,7 +517,8 @@ TEST(vtkGLPrintSequencer, BadInputIsReported) {
       }
     }
     SequenceRun run(lattice, towerSkeleton(layers), vtkGLPrintSequencer::A4, 45.0);
-    expectEmptyOutputs(run, "sub-graph ids must be 0..K-1 without gaps: no line cell has SubgraphId 6");
+    expectEmptyOutputs(run,
+                       "sub-graph ids must be 0..K-1 without gaps: no line cell has SubgraphId 6");
   }
   {
     // A skeleton whose nodes are on other layers than the lattice's sub-graphs.
@@ -514,7 +528,8 @@ TEST(vtkGLPrintSequencer, BadInputIsReported) {
       nodeId->SetTuple1(p, nodeId->GetNumberOfTuples() - 1 - p);
     }
     SequenceRun run(towerLattice(layers), skeleton, vtkGLPrintSequencer::A4, 45.0);
-    expectEmptyOutputs(run, "skeleton node 0 is on lattice layer 3 but sub-graph 0 of the lattice is on layer 0");
+    expectEmptyOutputs(
+        run, "skeleton node 0 is on lattice layer 3 but sub-graph 0 of the lattice is on layer 0");
   }
   {
     // A recovered error: the next update with good input has outputs and no new error.
@@ -579,12 +594,14 @@ TEST_F(BranchingYPipeline, SkeletonSplitsAtTheFork) {
   EXPECT_EQ(field(skeleton, arrays::SkeletonRoots), 1.0);
   EXPECT_EQ(field(skeleton, arrays::SkeletonFloatingNodes), 0.0);
   EXPECT_EQ(field(skeleton, arrays::SkeletonMergeNodes), 0.0);
-  std::printf("[sequencer filter] Y: %g layers, %lld sub-graphs, %lld skeleton edges, %g split node(s), "
-              "skeleton %.3f s\n",
-              static_cast<double>(skeleton->GetFieldData()->GetArray(arrays::LayerValues)->GetNumberOfTuples()),
-              static_cast<long long>(skeleton->GetNumberOfPoints()),
-              static_cast<long long>(skeleton->GetNumberOfCells()), field(skeleton, arrays::SkeletonSplitNodes),
-              field(skeleton, arrays::SkeletonSeconds));
+  std::printf(
+      "[sequencer filter] Y: %g layers, %lld sub-graphs, %lld skeleton edges, %g split node(s), "
+      "skeleton %.3f s\n",
+      static_cast<double>(
+          skeleton->GetFieldData()->GetArray(arrays::LayerValues)->GetNumberOfTuples()),
+      static_cast<long long>(skeleton->GetNumberOfPoints()),
+      static_cast<long long>(skeleton->GetNumberOfCells()),
+      field(skeleton, arrays::SkeletonSplitNodes), field(skeleton, arrays::SkeletonSeconds));
 }
 
 TEST_F(BranchingYPipeline, EveryStrategyGivesAPermutationInTreeOrder) {
@@ -599,14 +616,16 @@ TEST_F(BranchingYPipeline, EveryStrategyGivesAPermutationInTreeOrder) {
     expectLowerBeforeUpper(skeleton, checkedPrintOrder(skeleton));
     vtkPolyData* report = r->verifier->GetOutput();
     vtkPolyData* out = r->sequencer->GetOutput(0);
-    std::printf("[sequencer filter] Y, NA 45, %-4s: retractions %g, air %.1f mm, forced %g, PCG pairs %g (%.3f s), "
-                "order %.3f s; verifier: collision-free %g, %g stations, %g violating (%.3f s)\n",
-                strategyName(out).c_str(), field(out, arrays::SequenceRetractions),
-                field(out, arrays::SequenceAirLength), field(out, arrays::SequenceForcedSteps),
-                field(out, arrays::SequencePcgPairs), field(out, arrays::SequencePcgSeconds),
-                field(out, arrays::SequenceSeconds), field(report, arrays::CollisionFree),
-                field(report, arrays::CollisionStations), field(report, arrays::CollisionViolatingStations),
-                field(report, arrays::CollisionSeconds));
+    std::printf(
+        "[sequencer filter] Y, NA 45, %-4s: retractions %g, air %.1f mm, forced %g, PCG pairs %g "
+        "(%.3f s), "
+        "order %.3f s; verifier: collision-free %g, %g stations, %g violating (%.3f s)\n",
+        strategyName(out).c_str(), field(out, arrays::SequenceRetractions),
+        field(out, arrays::SequenceAirLength), field(out, arrays::SequenceForcedSteps),
+        field(out, arrays::SequencePcgPairs), field(out, arrays::SequencePcgSeconds),
+        field(out, arrays::SequenceSeconds), field(report, arrays::CollisionFree),
+        field(report, arrays::CollisionStations), field(report, arrays::CollisionViolatingStations),
+        field(report, arrays::CollisionSeconds));
     if (strategy != vtkGLPrintSequencer::DPT) {
       EXPECT_EQ(field(report, arrays::CollisionFree), 1.0) << strategyName(out);
     }
@@ -635,7 +654,8 @@ TEST_F(BranchingYPipeline, VerifierSamplesTheLatticeLikeTheGenericLineSampling) 
   vtkPolyData* b = generic->GetOutput();
   EXPECT_GT(field(a, arrays::CollisionStations), static_cast<double>(copy->GetNumberOfPoints()));
   EXPECT_EQ(field(a, arrays::CollisionStations), field(b, arrays::CollisionStations));
-  EXPECT_EQ(field(a, arrays::CollisionViolatingStations), field(b, arrays::CollisionViolatingStations));
+  EXPECT_EQ(field(a, arrays::CollisionViolatingStations),
+            field(b, arrays::CollisionViolatingStations));
   EXPECT_EQ(field(a, arrays::CollisionFree), field(b, arrays::CollisionFree));
   std::printf("[sequencer filter] Y, DPT at NA 70: collision-free %g, %g of %g stations violate\n",
               field(a, arrays::CollisionFree), field(a, arrays::CollisionViolatingStations),
@@ -644,7 +664,8 @@ TEST_F(BranchingYPipeline, VerifierSamplesTheLatticeLikeTheGenericLineSampling) 
 
 TEST_F(BranchingYPipeline, SequencerProgressAndAbort) {
   ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
-  for (int strategy : {vtkGLPrintSequencer::LPT, vtkGLPrintSequencer::A4, vtkGLPrintSequencer::BEST}) {
+  for (int strategy :
+       {vtkGLPrintSequencer::LPT, vtkGLPrintSequencer::A4, vtkGLPrintSequencer::BEST}) {
     SCOPED_TRACE(strategy);
     vtkNew<vtkGLPrintSequencer> sequencer;
     sequencer->SetInputConnection(0, p->lattice->GetOutputPort());
@@ -653,8 +674,9 @@ TEST_F(BranchingYPipeline, SequencerProgressAndAbort) {
     sequencer->SetNumberOfThreads(2);
     // Material, the potential collisions per sub-graph (A4, best), the order step by step.
     glExpectProgressReport(sequencer, 20);
-    glExpectCleanAbort(sequencer, glAbortAt(0.3)); // A4, best: in the potential collisions; LPT: in the order
-    glExpectCleanAbort(sequencer, glAbortAt(0.8)); // in the order
+    glExpectCleanAbort(sequencer,
+                       glAbortAt(0.3));  // A4, best: in the potential collisions; LPT: in the order
+    glExpectCleanAbort(sequencer, glAbortAt(0.8));  // in the order
   }
 }
 

@@ -42,7 +42,8 @@ namespace {
 double field(vtkDataObject* d, const char* name, int i = 0) {
   vtkDataArray* a = d->GetFieldData()->GetArray(name);
   EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents()) : std::nan("");
+  return a ? a->GetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents())
+           : std::nan("");
 }
 
 /// GDF -> slicer -> lattice on the 20 x 20 x 15 box (2 mm tets): 13 layers z = 0.5 .. 12.5, one
@@ -94,7 +95,7 @@ std::string conversionError(const std::function<void()>& f) {
   return "";
 }
 
-} // namespace
+}  // namespace
 
 TEST(vtkGLSkeletonTree, BoxLayersGiveAChainWithTheDocumentedArrays) {
   BoxPipeline p;
@@ -102,7 +103,8 @@ TEST(vtkGLSkeletonTree, BoxLayersGiveAChainWithTheDocumentedArrays) {
   ASSERT_FALSE(p.errors->HasError()) << p.errors->Errors();
   vtkPolyData* lattice = p.lattice->GetOutput();
   vtkPolyData* out = p.skeleton->GetOutput();
-  vtkDataArray* slicerValues = p.slicer->GetOutput(0)->GetFieldData()->GetArray(arrays::LayerValues);
+  vtkDataArray* slicerValues =
+      p.slicer->GetOutput(0)->GetFieldData()->GetArray(arrays::LayerValues);
   const int L = static_cast<int>(slicerValues->GetNumberOfTuples());
   ASSERT_EQ(L, 13);
   ASSERT_EQ(out->GetNumberOfPoints(), L);
@@ -115,8 +117,8 @@ TEST(vtkGLSkeletonTree, BoxLayersGiveAChainWithTheDocumentedArrays) {
   ASSERT_EQ(out->GetFieldData()->GetArray(arrays::LayerValues)->GetNumberOfTuples(), L);
 
   vtkPointData* pd = out->GetPointData();
-  for (const char* name : {arrays::NodeId, arrays::LayerId, arrays::SubgraphId, arrays::Gamma, arrays::SubgraphLength,
-                           arrays::LowerCount, arrays::UpperCount}) {
+  for (const char* name : {arrays::NodeId, arrays::LayerId, arrays::SubgraphId, arrays::Gamma,
+                           arrays::SubgraphLength, arrays::LowerCount, arrays::UpperCount}) {
     ASSERT_NE(pd->GetArray(name), nullptr) << name;
   }
   for (vtkIdType i = 0; i < L; ++i) {
@@ -133,7 +135,8 @@ TEST(vtkGLSkeletonTree, BoxLayersGiveAChainWithTheDocumentedArrays) {
     double x[3];
     out->GetPoint(i, x);
     for (int j = 0; j < 3; ++j) {
-      EXPECT_NEAR(x[j], field(lattice, arrays::SubgraphCentroid, 3 * static_cast<int>(i) + j), 1e-9);
+      EXPECT_NEAR(x[j], field(lattice, arrays::SubgraphCentroid, 3 * static_cast<int>(i) + j),
+                  1e-9);
     }
     EXPECT_NEAR(x[0], 10.0, 0.5);
     EXPECT_NEAR(x[1], 10.0, 0.5);
@@ -142,7 +145,7 @@ TEST(vtkGLSkeletonTree, BoxLayersGiveAChainWithTheDocumentedArrays) {
   for (vtkIdType c = 0; c < out->GetNumberOfCells(); ++c) {
     out->GetCellPoints(c, ids);
     ASSERT_EQ(ids->GetNumberOfIds(), 2);
-    EXPECT_EQ(ids->GetId(0), c); // (lower, upper)
+    EXPECT_EQ(ids->GetId(0), c);  // (lower, upper)
     EXPECT_EQ(ids->GetId(1), c + 1);
   }
 }
@@ -158,7 +161,7 @@ TEST(vtkGLSkeletonTree, ConversionsRestoreTheLatticeAndTheTree) {
   EXPECT_EQ(g.edges.size(), static_cast<size_t>(lattice->GetNumberOfLines()));
   ASSERT_EQ(g.layerValues.size(), static_cast<size_t>(L));
   ASSERT_EQ(g.subgraphs.size(), static_cast<size_t>(L));
-  ASSERT_EQ(g.layerVertexOffset.size(), static_cast<size_t>(L + 1)); // grouped by layer
+  ASSERT_EQ(g.layerVertexOffset.size(), static_cast<size_t>(L + 1));  // grouped by layer
   EXPECT_EQ(g.layerSubgraphOffset.back(), L);
   for (int l = 0; l < L; ++l) {
     EXPECT_EQ(g.layerIndex[l], l);
@@ -172,7 +175,8 @@ TEST(vtkGLSkeletonTree, ConversionsRestoreTheLatticeAndTheTree) {
     }
   }
   for (size_t v = 0; v < g.points.size(); ++v) {
-    EXPECT_EQ(g.vertexSubgraph[v], lattice->GetPointData()->GetArray(arrays::SubgraphId)->GetTuple1(v));
+    EXPECT_EQ(g.vertexSubgraph[v],
+              lattice->GetPointData()->GetArray(arrays::SubgraphId)->GetTuple1(v));
     EXPECT_NEAR(g.normals[v].norm(), 1.0, 1e-9);
   }
   const gl::SkeletonTree tree = gl::toSkeletonTree(p.skeleton->GetOutput());
@@ -201,7 +205,7 @@ TEST(vtkGLSkeletonTree, ConversionsRestoreTheLatticeAndTheTree) {
   normals->SetNumberOfComponents(3);
   gamma->SetName(arrays::Gamma);
   for (int k = 0; k < 3; ++k) {
-    normals->InsertNextTuple3(0, 0, 2); // normalised on conversion
+    normals->InsertNextTuple3(0, 0, 2);  // normalised on conversion
     gamma->InsertNextValue(1.0);
   }
   poly->GetPointData()->AddArray(normals);
@@ -234,20 +238,23 @@ TEST(vtkGLSkeletonTree, ConversionsRestoreTheLatticeAndTheTree) {
 
   // Conversion errors name the problem.
   poly->GetPointData()->RemoveArray(arrays::Gamma);
-  EXPECT_NE(conversionError([&] { gl::toLatticeGraph(poly); }).find("lattice has no Gamma point array"),
-            std::string::npos);
+  EXPECT_NE(
+      conversionError([&] { gl::toLatticeGraph(poly); }).find("lattice has no Gamma point array"),
+      std::string::npos);
   poly->GetPointData()->AddArray(gamma);
   subgraph->SetValue(0, 1);
-  EXPECT_NE(conversionError([&] { gl::toLatticeGraph(poly); }).find("no line cell has SubgraphId 0"),
-            std::string::npos);
+  EXPECT_NE(
+      conversionError([&] { gl::toLatticeGraph(poly); }).find("no line cell has SubgraphId 0"),
+      std::string::npos);
   subgraph->SetValue(0, -1);
   EXPECT_NE(conversionError([&] { gl::toLatticeGraph(poly); }).find("sub-graph ids must be 0..K-1"),
             std::string::npos);
   vtkNew<vtkPolyData> badSkeleton;
   badSkeleton->DeepCopy(p.skeleton->GetOutput());
   badSkeleton->GetPointData()->GetArray(arrays::NodeId)->SetTuple1(3, 2);
-  EXPECT_NE(conversionError([&] { gl::toSkeletonTree(badSkeleton); }).find("NodeId is not a permutation"),
-            std::string::npos);
+  EXPECT_NE(
+      conversionError([&] { gl::toSkeletonTree(badSkeleton); }).find("NodeId is not a permutation"),
+      std::string::npos);
 }
 
 TEST(vtkGLSkeletonTree, BadInputIsReported) {

@@ -53,7 +53,8 @@ namespace {
 double field(vtkDataObject* d, const char* name, int i = 0) {
   vtkDataArray* a = d->GetFieldData()->GetArray(name);
   EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents()) : std::nan("");
+  return a ? a->GetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents())
+           : std::nan("");
 }
 
 vtkSmartPointer<vtkIntArray> intArray(const char* name) {
@@ -160,28 +161,46 @@ void expectConsistentToolpath(vtkPolyData* path, vtkGLToolpathPlanner* planner) 
   const vtkIdType N = path->GetNumberOfPoints();
   ASSERT_GT(N, 2);
   vtkPointData* pd = path->GetPointData();
-  for (const char* name : {arrays::Normals, arrays::Thickness, arrays::Width, arrays::Extrusion, arrays::FeedRate,
-                           arrays::MoveKind, arrays::LayerId, arrays::SubgraphId, arrays::PathIndex,
-                           arrays::PointIndex}) {
+  for (const char* name : {arrays::Normals, arrays::Thickness, arrays::Width, arrays::Extrusion,
+                           arrays::FeedRate, arrays::MoveKind, arrays::LayerId, arrays::SubgraphId,
+                           arrays::PathIndex, arrays::PointIndex}) {
     ASSERT_NE(pd->GetArray(name), nullptr) << name;
     EXPECT_EQ(pd->GetArray(name)->GetNumberOfTuples(), N) << name;
   }
   EXPECT_EQ(pd->GetNormals(), pd->GetArray(arrays::Normals));
-  for (const char* name : {arrays::MoveKind, arrays::PathIndex, arrays::LayerId, arrays::SubgraphId}) {
+  for (const char* name :
+       {arrays::MoveKind, arrays::PathIndex, arrays::LayerId, arrays::SubgraphId}) {
     ASSERT_NE(path->GetCellData()->GetArray(name), nullptr) << name;
   }
-  for (const char* name :
-       {arrays::ToolpathPrintLength, arrays::ToolpathPerimeterLength, arrays::ToolpathPerimeterLoops,
-        arrays::ToolpathPerimeterTeeth, arrays::ToolpathAirLength, arrays::ToolpathRetractions, arrays::ToolpathTours,
-        arrays::ToolpathCrossings, arrays::ToolpathSplitSubgraphs, arrays::ToolpathContractedEdges,
-        arrays::ToolpathTrimmedEdges, arrays::ToolpathTrimmedLength, arrays::ToolpathFilament, arrays::ToolpathVolume,
-        arrays::ToolpathThicknessDeviation, arrays::ToolpathThicknessDeviationPerLayer,
-        arrays::ToolpathCappedVertices, arrays::ToolpathUnsupportedVertices, arrays::ToolpathRotationSteps,
-        arrays::ToolpathSeconds, arrays::SkeletonEdges}) {
+  for (const char* name : {arrays::ToolpathPrintLength,
+                           arrays::ToolpathPerimeterLength,
+                           arrays::ToolpathPerimeterLoops,
+                           arrays::ToolpathPerimeterTeeth,
+                           arrays::ToolpathAirLength,
+                           arrays::ToolpathRetractions,
+                           arrays::ToolpathTours,
+                           arrays::ToolpathCrossings,
+                           arrays::ToolpathSplitSubgraphs,
+                           arrays::ToolpathContractedEdges,
+                           arrays::ToolpathTrimmedEdges,
+                           arrays::ToolpathTrimmedLength,
+                           arrays::ToolpathFilament,
+                           arrays::ToolpathVolume,
+                           arrays::ToolpathThicknessDeviation,
+                           arrays::ToolpathThicknessDeviationPerLayer,
+                           arrays::ToolpathCappedVertices,
+                           arrays::ToolpathUnsupportedVertices,
+                           arrays::ToolpathRotationSteps,
+                           arrays::ToolpathSeconds,
+                           arrays::SkeletonEdges}) {
     ASSERT_NE(path->GetFieldData()->GetArray(name), nullptr) << name;
   }
-  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathThicknessDeviation)->GetNumberOfTuples(), 2);
-  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathThicknessDeviationPerLayer)->GetNumberOfComponents(), 3);
+  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathThicknessDeviation)->GetNumberOfTuples(),
+            2);
+  EXPECT_EQ(path->GetFieldData()
+                ->GetArray(arrays::ToolpathThicknessDeviationPerLayer)
+                ->GetNumberOfComponents(),
+            3);
 
   vtkDataArray* kind = pd->GetArray(arrays::MoveKind);
   vtkDataArray* extrusion = pd->GetArray(arrays::Extrusion);
@@ -191,7 +210,7 @@ void expectConsistentToolpath(vtkPolyData* path, vtkGLToolpathPlanner* planner) 
   vtkDataArray* layer = pd->GetArray(arrays::LayerId);
   vtkDataArray* subgraph = pd->GetArray(arrays::SubgraphId);
   vtkDataArray* tour = pd->GetArray(arrays::PathIndex);
-  EXPECT_EQ(kind->GetTuple1(0), movekind::Air); // the start
+  EXPECT_EQ(kind->GetTuple1(0), movekind::Air);  // the start
   double print = 0, perimeter = 0, air = 0, filament = 0;
   std::set<int> tours;
   for (vtkIdType i = 0; i < N; ++i) {
@@ -209,7 +228,8 @@ void expectConsistentToolpath(vtkPolyData* path, vtkGLToolpathPlanner* planner) 
       EXPECT_EQ(subgraph->GetTuple1(i), -1.0);
     } else {
       EXPECT_GT(thickness->GetTuple1(i), 0.0);
-      if (k == movekind::Print || width->GetTuple1(i) != 0) { // a perimeter's way back does not extrude
+      if (k == movekind::Print ||
+          width->GetTuple1(i) != 0) {  // a perimeter's way back does not extrude
         EXPECT_EQ(width->GetTuple1(i), planner->GetPathWidth());
       }
       EXPECT_EQ(feed->GetTuple1(i), planner->GetPrintFeedRate());
@@ -251,8 +271,10 @@ void expectConsistentToolpath(vtkPolyData* path, vtkGLToolpathPlanner* planner) 
     EXPECT_EQ(ids->GetId(0), next) << "cell " << c;
     for (vtkIdType j = 1; j < ids->GetNumberOfIds(); ++j) {
       ASSERT_EQ(ids->GetId(j), ids->GetId(0) + j);
-      for (const char* name : {arrays::MoveKind, arrays::PathIndex, arrays::LayerId, arrays::SubgraphId}) {
-        EXPECT_EQ(path->GetCellData()->GetArray(name)->GetTuple1(c), pd->GetArray(name)->GetTuple1(ids->GetId(j)))
+      for (const char* name :
+           {arrays::MoveKind, arrays::PathIndex, arrays::LayerId, arrays::SubgraphId}) {
+        EXPECT_EQ(path->GetCellData()->GetArray(name)->GetTuple1(c),
+                  pd->GetArray(name)->GetTuple1(ids->GetId(j)))
             << name << " cell " << c;
       }
     }
@@ -263,7 +285,7 @@ void expectConsistentToolpath(vtkPolyData* path, vtkGLToolpathPlanner* planner) 
   EXPECT_EQ(static_cast<double>(airRuns), field(path, arrays::ToolpathRetractions));
 }
 
-} // namespace
+}  // namespace
 
 TEST(vtkGLToolpathPlanner, TowersGiveTheDocumentedOutputs) {
   const int layers = 6;
@@ -281,14 +303,18 @@ TEST(vtkGLToolpathPlanner, TowersGiveTheDocumentedOutputs) {
   EXPECT_EQ(field(path, arrays::ToolpathSplitSubgraphs), 0.0);
   EXPECT_EQ(field(path, arrays::ToolpathRetractions), 2.0 * layers - 1);
   EXPECT_GT(field(path, arrays::ToolpathAirLength), 0.0);
-  EXPECT_EQ(field(path, arrays::ToolpathRotationSteps), 0.0); // the axis is +z everywhere
+  EXPECT_EQ(field(path, arrays::ToolpathRotationSteps), 0.0);  // the axis is +z everywhere
   // Layers 1 mm apart at z = 1, 2, ..: h = 1 everywhere, no deviation.
   EXPECT_NEAR(field(path, arrays::ToolpathThicknessDeviation, 0), 0.0, 1e-9);
   EXPECT_NEAR(field(path, arrays::ToolpathThicknessDeviation, 1), 0.0, 1e-9);
-  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathThicknessDeviationPerLayer)->GetNumberOfTuples(), layers);
+  EXPECT_EQ(path->GetFieldData()
+                ->GetArray(arrays::ToolpathThicknessDeviationPerLayer)
+                ->GetNumberOfTuples(),
+            layers);
   // Eq. 14: E = μ w h L / (π r²) with h = 1.
   const double r = 0.875;
-  EXPECT_NEAR(field(path, arrays::ToolpathFilament), 0.95 * 0.6 * 1.0 * 8.0 * layers / (M_PI * r * r), 1e-9);
+  EXPECT_NEAR(field(path, arrays::ToolpathFilament),
+              0.95 * 0.6 * 1.0 * 8.0 * layers / (M_PI * r * r), 1e-9);
   // LayerId is the lattice's (10 + layer); the sub-graphs are printed in the sequencer's order.
   vtkPointData* pd = path->GetPointData();
   std::vector<int> firstSeen;
@@ -306,7 +332,8 @@ TEST(vtkGLToolpathPlanner, TowersGiveTheDocumentedOutputs) {
   }
   ASSERT_EQ(firstSeen.size(), 2u * layers);
   for (size_t k = 0; k < firstSeen.size(); ++k) {
-    EXPECT_EQ(firstSeen[k], field(run.sequencer->GetOutput(0), arrays::SequenceOrder, static_cast<int>(k)));
+    EXPECT_EQ(firstSeen[k],
+              field(run.sequencer->GetOutput(0), arrays::SequenceOrder, static_cast<int>(k)));
   }
   // Cells: a print run per tour and an air run per retraction.
   EXPECT_EQ(path->GetNumberOfCells(), 2 * (2 * layers) - 1);
@@ -315,7 +342,8 @@ TEST(vtkGLToolpathPlanner, TowersGiveTheDocumentedOutputs) {
   run.planner->SetFilamentDiameter(3.5);
   path = run.output();
   ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
-  EXPECT_NEAR(field(path, arrays::ToolpathFilament), 0.95 * 0.6 * 8.0 * layers / (M_PI * 1.75 * 1.75), 1e-9);
+  EXPECT_NEAR(field(path, arrays::ToolpathFilament),
+              0.95 * 0.6 * 8.0 * layers / (M_PI * 1.75 * 1.75), 1e-9);
 }
 
 TEST(vtkGLToolpathPlanner, DefaultsAndPrintSelf) {
@@ -343,8 +371,9 @@ TEST(vtkGLToolpathPlanner, DefaultsAndPrintSelf) {
   EXPECT_EQ(f->GetTiltBlendLength(), 5.0);
   std::ostringstream os;
   f->Print(os);
-  for (const char* text : {"PathWidth: 0.6", "FilamentDiameter: 1.75", "SupportPerimeter: 1", "NumberOfTimeSteps: 200",
-                           "MaxAxisTilt: 15", "TipFaceRadius: 0.5", "MaxSegmentLength: 1"}) {
+  for (const char* text :
+       {"PathWidth: 0.6", "FilamentDiameter: 1.75", "SupportPerimeter: 1", "NumberOfTimeSteps: 200",
+        "MaxAxisTilt: 15", "TipFaceRadius: 0.5", "MaxSegmentLength: 1"}) {
     EXPECT_NE(os.str().find(text), std::string::npos) << text;
   }
 }
@@ -369,7 +398,8 @@ TEST(vtkGLToolpathPlanner, TimeStepsReplayThePrint) {
   ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
   const vtkIdType N = full->GetNumberOfPoints();
   ASSERT_GT(N, 10);
-  vtkDataArray* seconds = run.planner->GetOutput()->GetFieldData()->GetArray(arrays::ToolpathSeconds);
+  vtkDataArray* seconds =
+      run.planner->GetOutput()->GetFieldData()->GetArray(arrays::ToolpathSeconds);
 
   vtkIdType previousPoints = 0, previousCells = 0;
   for (double p : {0.0, 0.25, 0.5, 0.999, 1.0}) {
@@ -407,10 +437,12 @@ TEST(vtkGLToolpathPlanner, TimeStepsReplayThePrint) {
     }
     if (part->GetNumberOfCells() > 0) {
       part->GetCellPoints(part->GetNumberOfCells() - 1, ids);
-      EXPECT_EQ(ids->GetId(ids->GetNumberOfIds() - 1), n - 1) << "the last cell ends at the last point";
+      EXPECT_EQ(ids->GetId(ids->GetNumberOfIds() - 1), n - 1)
+          << "the last cell ends at the last point";
     }
     // The field data describe the whole path, from the same (cached) planning.
-    EXPECT_EQ(part->GetFieldData()->GetArray(arrays::ToolpathSeconds), seconds) << "planned again at " << p;
+    EXPECT_EQ(part->GetFieldData()->GetArray(arrays::ToolpathSeconds), seconds)
+        << "planned again at " << p;
     EXPECT_EQ(field(part, arrays::ToolpathTours), field(full, arrays::ToolpathTours));
   }
   EXPECT_EQ(previousPoints, N);
@@ -419,7 +451,8 @@ TEST(vtkGLToolpathPlanner, TimeStepsReplayThePrint) {
   // A parameter change plans again; NumberOfTimeSteps 0: no time steps, always the whole path.
   run.planner->SetNumberOfTimeSteps(0);
   run.planner->UpdateInformation();
-  EXPECT_FALSE(run.planner->GetOutputInformation(0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  EXPECT_FALSE(
+      run.planner->GetOutputInformation(0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
   run.planner->SetPathWidth(0.5);
   run.planner->UpdateTimeStep(0.3);
   ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
@@ -483,7 +516,8 @@ TEST(vtkGLToolpathPlanner, BadInputIsReported) {
     // The lattice itself instead of the sequencer's output: no SequenceOrder.
     PlannerRun run(towerLattice(layers), towerSkeleton(layers));
     run.planner->SetInputData(0, towerLattice(layers));
-    expectError(run, "no field array SequenceOrder (the printing order): run GL Print Sequencer first");
+    expectError(run,
+                "no field array SequenceOrder (the printing order): run GL Print Sequencer first");
   }
   {
     // An order that is not a permutation of the sub-graphs.
@@ -568,26 +602,32 @@ TEST_F(BranchingYToolpath, ToolpathIsConsistent) {
   ASSERT_NE(tilt, nullptr);
   EXPECT_LE(tilt->GetRange()[1], p->planner->GetMaxAxisTilt() + 1e-9);
   EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathUnclearedStations)->GetTuple1(0), 0.0);
-  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathMaxAxisTilt)->GetTuple1(0), tilt->GetRange()[1]);
+  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathMaxAxisTilt)->GetTuple1(0),
+            tilt->GetRange()[1]);
   vtkPolyData* lattice = p->lattice->GetOutput();
   // Every sub-graph printed, on its own layer: the lattice's LayerId of the sub-graph.
   std::map<int, int> layerOf;
   std::set<int> layerIds;
   for (vtkIdType c = 0; c < lattice->GetNumberOfCells(); ++c) {
-    const int layer = static_cast<int>(lattice->GetCellData()->GetArray(arrays::LayerId)->GetTuple1(c));
-    layerOf[static_cast<int>(lattice->GetCellData()->GetArray(arrays::SubgraphId)->GetTuple1(c))] = layer;
+    const int layer =
+        static_cast<int>(lattice->GetCellData()->GetArray(arrays::LayerId)->GetTuple1(c));
+    layerOf[static_cast<int>(lattice->GetCellData()->GetArray(arrays::SubgraphId)->GetTuple1(c))] =
+        layer;
     layerIds.insert(layer);
   }
   std::set<int> printed;
   for (vtkIdType i = 0; i < path->GetNumberOfPoints(); ++i) {
-    const int s = static_cast<int>(path->GetPointData()->GetArray(arrays::SubgraphId)->GetTuple1(i));
+    const int s =
+        static_cast<int>(path->GetPointData()->GetArray(arrays::SubgraphId)->GetTuple1(i));
     if (s >= 0) {
       printed.insert(s);
       ASSERT_EQ(path->GetPointData()->GetArray(arrays::LayerId)->GetTuple1(i), layerOf.at(s)) << i;
     }
   }
   EXPECT_EQ(static_cast<double>(printed.size()), field(lattice, arrays::LatticeSubgraphs));
-  EXPECT_EQ(path->GetFieldData()->GetArray(arrays::ToolpathThicknessDeviationPerLayer)->GetNumberOfTuples(),
+  EXPECT_EQ(path->GetFieldData()
+                ->GetArray(arrays::ToolpathThicknessDeviationPerLayer)
+                ->GetNumberOfTuples(),
             static_cast<vtkIdType>(layerIds.size()));
   EXPECT_GE(field(path, arrays::ToolpathTours), field(lattice, arrays::LatticeSubgraphs));
   // The lattice printed is the lattice minus what the trimming left out (contracted edges have
@@ -603,24 +643,28 @@ TEST_F(BranchingYToolpath, ToolpathIsConsistent) {
       latticeLength += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
     }
   }
-  EXPECT_NEAR(field(path, arrays::ToolpathPrintLength) + field(path, arrays::ToolpathTrimmedLength), latticeLength,
-              1e-6 * latticeLength);
+  EXPECT_NEAR(field(path, arrays::ToolpathPrintLength) + field(path, arrays::ToolpathTrimmedLength),
+              latticeLength, 1e-6 * latticeLength);
   // Trimmed boundaries get a support perimeter.
   if (field(path, arrays::ToolpathTrimmedEdges) > 0) {
     EXPECT_GT(field(path, arrays::ToolpathPerimeterLoops), 0.0);
     EXPECT_GT(field(path, arrays::ToolpathPerimeterLength), 0.0);
   }
-  std::printf("[toolpath filter] Y: %lld points, %lld cells, print %.1f mm, perimeter %.1f mm (%g loops), air %.1f mm, "
-              "%g retractions, %g tours, %g split, %g trimmed edges (%.1f mm), %g rotation steps, filament %.1f mm, "
-              "thickness deviation %.3f .. %.3f, %.3f s\n",
-              static_cast<long long>(path->GetNumberOfPoints()), static_cast<long long>(path->GetNumberOfCells()),
-              field(path, arrays::ToolpathPrintLength), field(path, arrays::ToolpathPerimeterLength),
-              field(path, arrays::ToolpathPerimeterLoops), field(path, arrays::ToolpathAirLength),
-              field(path, arrays::ToolpathRetractions), field(path, arrays::ToolpathTours),
-              field(path, arrays::ToolpathSplitSubgraphs), field(path, arrays::ToolpathTrimmedEdges),
-              field(path, arrays::ToolpathTrimmedLength), field(path, arrays::ToolpathRotationSteps),
-              field(path, arrays::ToolpathFilament), field(path, arrays::ToolpathThicknessDeviation, 0),
-              field(path, arrays::ToolpathThicknessDeviation, 1), field(path, arrays::ToolpathSeconds));
+  std::printf(
+      "[toolpath filter] Y: %lld points, %lld cells, print %.1f mm, perimeter %.1f mm (%g loops), "
+      "air %.1f mm, "
+      "%g retractions, %g tours, %g split, %g trimmed edges (%.1f mm), %g rotation steps, filament "
+      "%.1f mm, "
+      "thickness deviation %.3f .. %.3f, %.3f s\n",
+      static_cast<long long>(path->GetNumberOfPoints()),
+      static_cast<long long>(path->GetNumberOfCells()), field(path, arrays::ToolpathPrintLength),
+      field(path, arrays::ToolpathPerimeterLength), field(path, arrays::ToolpathPerimeterLoops),
+      field(path, arrays::ToolpathAirLength), field(path, arrays::ToolpathRetractions),
+      field(path, arrays::ToolpathTours), field(path, arrays::ToolpathSplitSubgraphs),
+      field(path, arrays::ToolpathTrimmedEdges), field(path, arrays::ToolpathTrimmedLength),
+      field(path, arrays::ToolpathRotationSteps), field(path, arrays::ToolpathFilament),
+      field(path, arrays::ToolpathThicknessDeviation, 0),
+      field(path, arrays::ToolpathThicknessDeviation, 1), field(path, arrays::ToolpathSeconds));
 }
 
 TEST_F(BranchingYToolpath, SequencedSkeletonGivesTheSamePath) {
@@ -631,7 +675,8 @@ TEST_F(BranchingYToolpath, SequencedSkeletonGivesTheSamePath) {
   p->errors->Observe(planner);
   planner->Update();
   ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
-  EXPECT_EQ(planner->GetOutput()->GetNumberOfPoints(), p->planner->GetOutput()->GetNumberOfPoints());
+  EXPECT_EQ(planner->GetOutput()->GetNumberOfPoints(),
+            p->planner->GetOutput()->GetNumberOfPoints());
   EXPECT_EQ(field(planner->GetOutput(), arrays::ToolpathAirLength),
             field(p->planner->GetOutput(), arrays::ToolpathAirLength));
 }
@@ -653,18 +698,22 @@ TEST_F(BranchingYToolpath, VerifierUsesOnlyPrintedPointsAsMaterial) {
     return out;
   };
   vtkSmartPointer<vtkPolyData> masked = verify(path);
-  EXPECT_EQ(field(masked, arrays::CollisionStations), static_cast<double>(path->GetNumberOfPoints()));
+  EXPECT_EQ(field(masked, arrays::CollisionStations),
+            static_cast<double>(path->GetNumberOfPoints()));
   // The same points with every air point as material: at least as many violations.
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(path);
   copy->GetPointData()->RemoveArray(arrays::MoveKind);
   vtkSmartPointer<vtkPolyData> unmasked = verify(copy);
-  EXPECT_GE(field(unmasked, arrays::CollisionViolatingStations), field(masked, arrays::CollisionViolatingStations));
-  std::printf("[toolpath filter] Y, NA 45, verifier on the toolpath: %g stations, %g violating (%g unavoidable), "
-              "collision-free %g; air points as material: %g violating\n",
-              field(masked, arrays::CollisionStations), field(masked, arrays::CollisionViolatingStations),
-              field(masked, arrays::CollisionUnavoidableStations), field(masked, arrays::CollisionFree),
-              field(unmasked, arrays::CollisionViolatingStations));
+  EXPECT_GE(field(unmasked, arrays::CollisionViolatingStations),
+            field(masked, arrays::CollisionViolatingStations));
+  std::printf(
+      "[toolpath filter] Y, NA 45, verifier on the toolpath: %g stations, %g violating (%g "
+      "unavoidable), "
+      "collision-free %g; air points as material: %g violating\n",
+      field(masked, arrays::CollisionStations), field(masked, arrays::CollisionViolatingStations),
+      field(masked, arrays::CollisionUnavoidableStations), field(masked, arrays::CollisionFree),
+      field(unmasked, arrays::CollisionViolatingStations));
 }
 
 TEST_F(BranchingYToolpath, ProgressAndAbortBeforeAndAfterThePlanning) {
@@ -680,5 +729,5 @@ TEST_F(BranchingYToolpath, ProgressAndAbortBeforeAndAfterThePlanning) {
   // Inputs converted, the planning (one core call), the output built.
   glExpectProgressReport(planner(), 3);
   glExpectCleanAbort(planner(), glAbortAt(0.1));
-  glExpectCleanAbort(planner(), glAbortAt(0.8)); // nothing cached: the recovery run plans again
+  glExpectCleanAbort(planner(), glAbortAt(0.8));  // nothing cached: the recovery run plans again
 }

@@ -72,8 +72,8 @@ TEST(vtkGLURScriptWriter, DefaultsAndPrintSelf) {
   std::ostringstream os;
   w->Print(os);
   EXPECT_EQ(w->GetMaxJointStep(), 20.0);
-  for (const char* text :
-       {"Robot: ur5", "MaxFileBytes: 4000000", "SpeedFactor: 0.5", "AllowUnreachable: 0", "MaxJointStep: 20"}) {
+  for (const char* text : {"Robot: ur5", "MaxFileBytes: 4000000", "SpeedFactor: 0.5",
+                           "AllowUnreachable: 0", "MaxJointStep: 20"}) {
     EXPECT_NE(os.str().find(text), std::string::npos) << text;
   }
 }
@@ -136,7 +136,7 @@ TEST_F(BranchingYProgram, SplitProgramPassesTheSyntaxCheck) {
   w->SetInputConnection(p->planner->GetOutputPort());
   const std::string file = (dir / "y_part.script").string();
   w->SetFileName(file.c_str());
-  w->SetMaxFileBytes(100000); // force several files
+  w->SetMaxFileBytes(100000);  // force several files
   // The pipeline asks for the middle of the print replay: the program is still the whole path.
   p->planner->UpdateTimeStep(0.5);
   ASSERT_LT(p->planner->GetOutput()->GetNumberOfPoints(), N);
@@ -146,15 +146,18 @@ TEST_F(BranchingYProgram, SplitProgramPassesTheSyntaxCheck) {
   EXPECT_EQ(w->GetNumberOfMoves(), N - 1);
   EXPECT_EQ(w->GetUnreachableCount(), 0);
   const int files = w->GetNumberOfFilesWritten();
-  std::printf("[urscript writer] Y: %lld waypoints, %d files (<= 100 kB), max joint step %.2f deg, max joint speed "
-              "%.1f deg/s, min singularity shoulder %.3f m elbow %.3f wrist %.3f, duration %.0f s, unreachable %lld, "
-              "IK branch %d, longest line %lld\n",
-              static_cast<long long>(N), files, w->GetMaxJointStepDeg(), w->GetMaxJointSpeedDegS(),
-              w->GetMinShoulderSingularity(), w->GetMinElbowSingularity(), w->GetMinWristSingularity(),
-              w->GetDuration(), static_cast<long long>(w->GetUnreachableCount()), w->GetIKBranch(),
-              static_cast<long long>(w->GetMaxLineLength()));
+  std::printf(
+      "[urscript writer] Y: %lld waypoints, %d files (<= 100 kB), max joint step %.2f deg, max "
+      "joint speed "
+      "%.1f deg/s, min singularity shoulder %.3f m elbow %.3f wrist %.3f, duration %.0f s, "
+      "unreachable %lld, "
+      "IK branch %d, longest line %lld\n",
+      static_cast<long long>(N), files, w->GetMaxJointStepDeg(), w->GetMaxJointSpeedDegS(),
+      w->GetMinShoulderSingularity(), w->GetMinElbowSingularity(), w->GetMinWristSingularity(),
+      w->GetDuration(), static_cast<long long>(w->GetUnreachableCount()), w->GetIKBranch(),
+      static_cast<long long>(w->GetMaxLineLength()));
   ASSERT_GT(files, 1);
-  EXPECT_LE(w->GetMaxJointSpeedDegS(), 0.5 * 180.0 + 1e-6); // SpeedFactor of the 180 deg/s limits
+  EXPECT_LE(w->GetMaxJointSpeedDegS(), 0.5 * 180.0 + 1e-6);  // SpeedFactor of the 180 deg/s limits
   EXPECT_GT(w->GetMaxJointStepDeg(), 0.0);
   EXPECT_LT(w->GetMaxJointStepDeg(), 90.0);
   EXPECT_GT(w->GetMinWristSingularity(), 0.0);
@@ -169,7 +172,7 @@ TEST_F(BranchingYProgram, SplitProgramPassesTheSyntaxCheck) {
     const std::string text = glReadFile(w->GetFileWritten(k));
     EXPECT_LE(text.size(), 100000u) << name;
     movels += checkURScriptSyntax(text, k == 0 ? "y_part" : "y_part_" + std::to_string(k),
-                          static_cast<size_t>(w->GetMaxLineLength()));
+                                  static_cast<size_t>(w->GetMaxLineLength()));
     // Every file sets the TCP and the analog output, and starts from a joint position.
     EXPECT_NE(text.find("  set_tcp(p[0, 0, 0.04, 0, 0, 0])\n"), std::string::npos) << name;
     EXPECT_NE(text.find("  movej(["), std::string::npos) << name;
@@ -199,14 +202,16 @@ TEST_F(BranchingYProgram, SplitProgramPassesTheSyntaxCheck) {
   errors->Clear();
   w->SetMaxJointStep(0);
   EXPECT_EQ(w->Write(), 0);
-  EXPECT_NE(errors->Errors().find("maximum joint step must be > 0"), std::string::npos) << errors->Errors();
+  EXPECT_NE(errors->Errors().find("maximum joint step must be > 0"), std::string::npos)
+      << errors->Errors();
   errors->Clear();
   w->SetMaxJointStep(20);
 
   // A cell that does not reach: an error, the earlier program stays as it was.
   w->SetNozzleTip(5.0, 0.0, 0.0);
   EXPECT_EQ(w->Write(), 0);
-  EXPECT_NE(errors->Errors().find("unreachable cell set-up"), std::string::npos) << errors->Errors();
+  EXPECT_NE(errors->Errors().find("unreachable cell set-up"), std::string::npos)
+      << errors->Errors();
   EXPECT_EQ(w->GetNumberOfFilesWritten(), 0);
   EXPECT_EQ(glReadFile(file), before);
   EXPECT_EQ(glListDirectory(dir), (std::vector<std::string>{"y_part.script", "y_part_notes.txt"}));
@@ -241,7 +246,8 @@ struct ErrorCase {
   vtkNew<vtkGLURScriptWriter> writer;
   vtkNew<GLTestErrorObserver> errors;
   fs::path dir;
-  explicit ErrorCase(const std::string& name, vtkPolyData* input) : dir(glFreshDirectory("urscript-" + name)) {
+  explicit ErrorCase(const std::string& name, vtkPolyData* input)
+      : dir(glFreshDirectory("urscript-" + name)) {
     errors->Observe(writer);
     writer->SetInputData(input);
     writer->SetFileName((dir / "part.script").string().c_str());
@@ -255,7 +261,7 @@ struct ErrorCase {
     EXPECT_TRUE(glListDirectory(dir).empty()) << "files left behind for: " << text;
   }
 };
-} // namespace
+}  // namespace
 
 TEST(vtkGLURScriptWriter, BadInputIsReported) {
   {
@@ -365,7 +371,8 @@ TEST(vtkGLURScriptWriter, UnreachablePointsAreReportedNotSkipped) {
   }
   {
     ErrorCase c("unreachable", path);
-    c.expectError("2 of 2000 toolpath points are unreachable for the ur5 in this cell (first: 6, 1001)");
+    c.expectError(
+        "2 of 2000 toolpath points are unreachable for the ur5 in this cell (first: 6, 1001)");
     EXPECT_EQ(c.writer->GetUnreachableCount(), 2);
     EXPECT_EQ(c.writer->GetUnreachablePoint(0), 6);
     EXPECT_EQ(c.writer->GetUnreachablePoint(1), 1001);
@@ -377,7 +384,8 @@ TEST(vtkGLURScriptWriter, UnreachablePointsAreReportedNotSkipped) {
     EXPECT_EQ(c.writer->Write(), 1) << c.errors->Errors();
     EXPECT_FALSE(c.errors->HasError()) << c.errors->Errors();
     EXPECT_EQ(c.errors->GetWarningCount(), 1);
-    EXPECT_NE(c.errors->Warnings().find("2 of 2000 toolpath points are unreachable"), std::string::npos);
+    EXPECT_NE(c.errors->Warnings().find("2 of 2000 toolpath points are unreachable"),
+              std::string::npos);
     EXPECT_EQ(c.writer->GetUnreachableCount(), 2);
     ASSERT_EQ(c.writer->GetNumberOfFilesWritten(), 1);
     EXPECT_EQ(checkURScriptSyntax(glReadFile(c.writer->GetFileWritten(0)), "part", 1000), 1999u);
@@ -390,8 +398,12 @@ TEST(vtkGLURScriptWriter, ProgressAndAbortWriteNothing) {
   w->SetInputData(makeTestToolpath(4));
   w->SetFileName((dir / "abort.script").string().c_str());
   w->SetRobot("ur5e");
-  auto write = [&w] { EXPECT_EQ(w->Write(), 1); };
-  auto nothingWritten = [&w, &dir] { return glListDirectory(dir).empty() && w->GetNumberOfFilesWritten() == 0; };
+  auto write = [&w] {
+    EXPECT_EQ(w->Write(), 1);
+  };
+  auto nothingWritten = [&w, &dir] {
+    return glListDirectory(dir).empty() && w->GetNumberOfFilesWritten() == 0;
+  };
   // Toolpath read, joints solved (one core call), program written.
   glExpectProgressReport(w, 3, write);
   fs::remove_all(dir);
@@ -399,7 +411,7 @@ TEST(vtkGLURScriptWriter, ProgressAndAbortWriteNothing) {
   for (double at : {0.1, 0.5, 0.9}) {
     SCOPED_TRACE(at);
     glExpectCleanAbort(w, glAbortAt(at), write, nothingWritten);
-    EXPECT_EQ(glListDirectory(dir), std::vector<std::string>{"abort.script"}); // the recovery run
+    EXPECT_EQ(glListDirectory(dir), std::vector<std::string>{"abort.script"});  // the recovery run
     fs::remove(dir / "abort.script");
   }
   fs::remove_all(dir);

@@ -92,14 +92,16 @@ TEST(vtkGLWaypointCsvWriter, BadInputIsReported) {
   };
   auto path = makeTestToolpath();
   path->GetPointData()->GetArray(geolattice::arrays::Normals)->SetTuple3(2, std::nan(""), 0, 1);
-  EXPECT_EQ(expectError(path, file, "toolpath point 2 has a NaN or zero normal"), vtkErrorCode::UserError);
+  EXPECT_EQ(expectError(path, file, "toolpath point 2 has a NaN or zero normal"),
+            vtkErrorCode::UserError);
   vtkNew<vtkPolyData> empty;
   expectError(empty, file, "empty toolpath");
   auto noLayer = makeTestToolpath();
   noLayer->GetPointData()->RemoveArray(geolattice::arrays::LayerId);
   expectError(noLayer, file, "the toolpath has no point array LayerId");
   const std::string missing = (dir / "no-such-dir" / "w.csv").string();
-  EXPECT_EQ(expectError(makeTestToolpath(), missing, "cannot create " + missing), vtkErrorCode::CannotOpenFileError);
+  EXPECT_EQ(expectError(makeTestToolpath(), missing, "cannot create " + missing),
+            vtkErrorCode::CannotOpenFileError);
   fs::remove_all(dir);
 }
 
@@ -108,8 +110,12 @@ TEST(vtkGLWaypointCsvWriter, ProgressAndAbortWriteNothing) {
   vtkNew<vtkGLWaypointCsvWriter> w;
   w->SetInputData(makeTestToolpath(4));
   w->SetFileName((dir / "abort.csv").string().c_str());
-  auto write = [&w] { EXPECT_EQ(w->Write(), 1); };
-  auto nothingWritten = [&w, &dir] { return glListDirectory(dir).empty() && w->GetNumberOfRows() == 0; };
+  auto write = [&w] {
+    EXPECT_EQ(w->Write(), 1);
+  };
+  auto nothingWritten = [&w, &dir] {
+    return glListDirectory(dir).empty() && w->GetNumberOfRows() == 0;
+  };
   glExpectProgressReport(w, 2, write);
   fs::remove(dir / "abort.csv");
   for (double at : {0.2, 0.9}) {
