@@ -1,5 +1,6 @@
 #include "OutputFiles.h"
 
+#include "common/AtomicFile.h"
 #include "common/Error.h"
 
 #include <vtkDataObject.h>
@@ -12,6 +13,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <unistd.h>
 
 namespace geolattice {
@@ -36,29 +38,6 @@ void prepareOutputDirectory(const std::string& dir) {
   fs::remove(probe, ec);
 }
 
-void writeAtomically(const std::string& path,
-                     const std::function<bool(const std::string&)>& write) {
-  const fs::path target(path);
-  const std::string tmp = (target.parent_path() / ("." + target.filename().string() + ".tmp-" +
-                                                   std::to_string(::getpid())))
-                              .string();
-  bool ok = false;
-  try {
-    ok = write(tmp);
-  } catch (...) {
-    std::remove(tmp.c_str());
-    throw;
-  }
-  std::error_code ec;
-  if (ok) {
-    fs::rename(tmp, target, ec);
-  }
-  if (!ok || ec) {
-    fs::remove(tmp, ec);
-    throw GeoLatticeError("could not write " + path);
-  }
-}
-
 void writeVtkXml(vtkDataObject* data, const std::string& path) {
   writeAtomically(path, [data](const std::string& tmp) {
     if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data)) {
@@ -80,6 +59,70 @@ void writeVtkXml(vtkDataObject* data, const std::string& path) {
     throw GeoLatticeError("cannot write a " + std::string(data ? data->GetClassName() : "null") +
                           " to " + tmp);
   });
+}
+
+namespace {
+
+/// Names of every file a GeoLattice run can write into its output directory (relative paths).
+bool isGeoLatticeOutput(const std::string& name) {
+  static const std::regex known(
+      "(tets\\.vtu|fields\\.vtu|layers\\.vtp|overhang\\.vtp|lattice\\.vtp|skeleton\\.vtp|"
+      "sequence\\.vtp|sequence\\.csv|collisions\\.vtp|toolpath\\.vtp|toolpath_collisions\\.vtp|"
+      "toolpath\\.pvd|toolpath/step_[0-9]{4}\\.vtp|print_part(_[0-9]+)?\\.script|toolpath\\.gcode|"
+      "toolpath\\.ngc|waypoints\\.csv|orientation\\.csv|orientation\\.vtp|placed\\.vtp)");
+  return std::regex_match(name, known);
+}
+
+}  // namespace
+
+void OutputRecord::add(const std::string& path, double seconds) {
+  const std::string name = fs::path(path).lexically_relative(dir_).generic_string();
+  for (auto& f : files_) {
+    if (f.first == name) {
+      f.second = seconds;
+      return;
+    }
+  }
+  files_.emplace_back(name, seconds);
+}
+
+std::vector<std::string> OutputRecord::retireStaleOutputs() const {
+  std::vector<std::string> stale;
+  std::error_code ec;
+  for (auto it = fs::recursive_directory_iterator(dir_, ec);
+       !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+    const std::string name = it->path().lexically_relative(dir_).generic_string();
+    if (name.rfind("previous", 0) == 0) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (!it->is_regular_file(ec) || !isGeoLatticeOutput(name)) {
+      continue;
+    }
+    bool written = false;
+    for (const auto& f : files_) {
+      written = written || f.first == name;
+    }
+    if (!written) {
+      stale.push_back(name);
+    }
+  }
+  if (stale.empty()) {
+    return stale;
+  }
+  const fs::path previous = fs::path(dir_) / "previous";
+  fs::remove_all(previous, ec);
+  for (const std::string& name : stale) {
+    const fs::path to = previous / name;
+    fs::create_directories(to.parent_path(), ec);
+    fs::rename(fs::path(dir_) / name, to, ec);
+  }
+  const fs::path report = fs::path(dir_) / "report.json";
+  if (fs::is_regular_file(report, ec)) {
+    fs::copy_file(report, previous / "report.json", fs::copy_options::overwrite_existing, ec);
+  }
+  fs::remove(fs::path(dir_) / "toolpath", ec);  // only if empty
+  return stale;
 }
 
 }  // namespace geolattice

@@ -25,10 +25,6 @@ vtkDataArray* fieldArray(vtkDataObject* data, const char* name) {
   return a;
 }
 
-double fieldNumber(vtkDataObject* data, const char* name) {
-  return fieldArray(data, name)->GetTuple1(0);
-}
-
 }  // namespace
 
 void writeSequenceCsv(vtkPolyData* lattice, vtkPolyData* printOrder, const std::string& path) {
@@ -60,16 +56,6 @@ void writeSequenceCsv(vtkPolyData* lattice, vtkPolyData* printOrder, const std::
     }
     return static_cast<bool>(out);
   });
-}
-
-void reportCollisions(vtkDataObject* verifier, JsonObject& s) {
-  s.set("collision_free", fieldNumber(verifier, arrays::CollisionFree) != 0);
-  s.set("order_collision_free", fieldNumber(verifier, arrays::CollisionOrderFree) != 0);
-  s.set("stations", static_cast<long long>(fieldNumber(verifier, arrays::CollisionStations)));
-  s.set("violating_stations",
-        static_cast<long long>(fieldNumber(verifier, arrays::CollisionViolatingStations)));
-  s.set("unavoidable_stations",
-        static_cast<long long>(fieldNumber(verifier, arrays::CollisionUnavoidableStations)));
 }
 
 }  // namespace geolattice

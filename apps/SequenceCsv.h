@@ -1,8 +1,6 @@
 #pragma once
 /// @file SequenceCsv.h
-/// @brief sequence.csv and the collision part of report.json from the sequence-stage outputs.
-#include "JsonWriter.h"
-
+/// @brief sequence.csv from the sequence-stage outputs.
 #include <string>
 
 class vtkDataObject;
@@ -17,10 +15,5 @@ namespace geolattice {
 /// GeoLatticeError on missing arrays or a write failure.
 void writeSequenceCsv(vtkPolyData* sequencedLattice, vtkPolyData* printOrder,
                       const std::string& path);
-
-/// Adds collision_free (strict: no earlier material inside the nozzle anywhere),
-/// order_collision_free (apart from obstacles no order can avoid), violating_stations,
-/// unavoidable_stations and stations from vtkGLCollisionVerifier's field data.
-void reportCollisions(vtkDataObject* verifierOutput, JsonObject& section);
 
 }  // namespace geolattice

@@ -26,15 +26,6 @@ namespace {
 constexpr double kReplayPointBudget =
     2e6;  // points in all step files together (~70 bytes each on disk)
 
-double fieldNumber(vtkDataObject* data, const char* name, int component = 0) {
-  vtkDataArray* a = vtkDataArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(name));
-  if (!a || a->GetNumberOfValues() <= component) {
-    throw GeoLatticeError(std::string("toolpath output has no field array ") + name);
-  }
-  return a->GetComponent(component / a->GetNumberOfComponents(),
-                         component % a->GetNumberOfComponents());
-}
-
 std::string stepName(int k) {
   char name[32];
   std::snprintf(name, sizeof name, "step_%04d.vtp", k);
@@ -114,41 +105,6 @@ std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner,
   written.push_back((dir / "step_*.vtp").string());
   written.push_back(pvd.string());
   return written;
-}
-
-void reportToolpath(vtkDataObject* toolpath, JsonObject& s) {
-  auto count = [toolpath](const char* name) {
-    return static_cast<long long>(fieldNumber(toolpath, name));
-  };
-  vtkPolyData* poly = vtkPolyData::SafeDownCast(toolpath);
-  s.set("points", static_cast<long long>(poly ? poly->GetNumberOfPoints() : 0));
-  s.set("cells", static_cast<long long>(poly ? poly->GetNumberOfCells() : 0));
-  s.set("print_length_mm", fieldNumber(toolpath, arrays::ToolpathPrintLength));
-  s.set("perimeter_length_mm", fieldNumber(toolpath, arrays::ToolpathPerimeterLength));
-  s.set("air_length_mm", fieldNumber(toolpath, arrays::ToolpathAirLength));
-  s.set("retractions", count(arrays::ToolpathRetractions));
-  s.set("tours", count(arrays::ToolpathTours));
-  s.set("crossings", count(arrays::ToolpathCrossings));
-  s.set("split_subgraphs", count(arrays::ToolpathSplitSubgraphs));
-  s.set("contracted_edges", count(arrays::ToolpathContractedEdges));
-  s.set("trimmed_edges", count(arrays::ToolpathTrimmedEdges));
-  s.set("trimmed_length_mm", fieldNumber(toolpath, arrays::ToolpathTrimmedLength));
-  s.set("perimeter_loops", count(arrays::ToolpathPerimeterLoops));
-  s.set("perimeter_teeth", count(arrays::ToolpathPerimeterTeeth));
-  s.set("rotation_steps", count(arrays::ToolpathRotationSteps));
-  s.set("subdivision_points", count(arrays::ToolpathSubdivisionPoints));
-  s.set("colliding_stations_along_normal", count(arrays::ToolpathCollidingStations));
-  s.set("tilted_stations", count(arrays::ToolpathTiltedStations));
-  s.set("uncleared_stations", count(arrays::ToolpathUnclearedStations));
-  s.set("max_axis_tilt_deg", fieldNumber(toolpath, arrays::ToolpathMaxAxisTilt));
-  s.set("replanned_hops", count(arrays::ToolpathReplannedHops));
-  s.set("thickness_dev_min", fieldNumber(toolpath, arrays::ToolpathThicknessDeviation, 0));
-  s.set("thickness_dev_max", fieldNumber(toolpath, arrays::ToolpathThicknessDeviation, 1));
-  s.set("capped_vertices", count(arrays::ToolpathCappedVertices));
-  s.set("unsupported_vertices", count(arrays::ToolpathUnsupportedVertices));
-  s.set("filament_mm", fieldNumber(toolpath, arrays::ToolpathFilament));
-  s.set("volume_mm3", fieldNumber(toolpath, arrays::ToolpathVolume));
-  s.set("planning_seconds", fieldNumber(toolpath, arrays::ToolpathSeconds));
 }
 
 }  // namespace geolattice

@@ -1,7 +1,7 @@
 #pragma once
 /// @file ToolpathOutput.h
 /// @brief The toolpath stage's files: the print replay (toolpath.pvd with cumulative step files)
-/// and the toolpath part of report.json, from vtkGLToolpathPlanner's output.
+/// from vtkGLToolpathPlanner's output.
 ///
 /// Why cumulative step files: a .pvd time series shows the data set(s) listed for the current
 /// time, so replaying a growing print needs, per step, everything printed so far. Each step file
@@ -12,8 +12,6 @@
 /// part 0), and padding every step to the same number of parts with placeholder files works but
 /// gives a multiblock of `steps` blocks and steps² entries. The price of cumulative files is disk
 /// space, about steps / 2 times toolpath.vtp, so their number is capped (replayStepCount).
-#include "JsonWriter.h"
-
 #include <string>
 #include <vector>
 
@@ -37,12 +35,5 @@ int replayStepCount(long long points, int maxSteps);
 /// Throws GeoLatticeError on a write failure or an empty step.
 std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner,
                                              const std::string& outDir, int steps);
-
-/// Adds points, cells and the planner's field data to the report section: print_length_mm,
-/// perimeter_length_mm, air_length_mm, retractions, tours, crossings, split_subgraphs,
-/// contracted_edges, trimmed_edges, trimmed_length_mm, perimeter_loops, perimeter_teeth,
-/// rotation_steps, thickness_dev_min, thickness_dev_max, capped_vertices, unsupported_vertices,
-/// filament_mm, volume_mm3, planning_seconds.
-void reportToolpath(vtkDataObject* toolpath, JsonObject& section);
 
 }  // namespace geolattice

@@ -1,6 +1,7 @@
 #include "VerifyCommand.h"
 
 #include "CliOptions.h"
+#include "GLPrintPipeline.h"
 #include "ErrorCapture.h"
 #include "common/Error.h"
 #include "vtkGLArrayNames.h"
@@ -19,7 +20,8 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
-#include <regex>
+#include <nlohmann/json.hpp>
+#include <vtkExecutive.h>
 #include <sstream>
 #include <string>
 
@@ -29,32 +31,38 @@ namespace {
 
 /// The nozzle a run used, from the "sequence" section of its report.json (missing keys keep
 /// the defaults).
-void readNozzleFromReport(const std::filesystem::path& report, NozzleOptions& n) {
+void readNozzleFromReport(const std::filesystem::path& report, GLPrintPipeline& p) {
   std::ifstream in(report);
   if (!in) {
     return;
   }
-  std::stringstream text;
-  text << in.rdbuf();
-  const std::string json = text.str();
-  const size_t section = json.find("\"sequence\"");
-  if (section == std::string::npos) {
+  const nlohmann::json json = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+  if (!json.is_object() || !json.contains("sequence") || !json["sequence"].is_object()) {
     return;
   }
-  const std::string tail = json.substr(section);
-  auto read = [&tail](const char* key, double& value) {
-    const std::regex re(std::string("\"") + key + "\"\\s*:\\s*([-+0-9.eE]+)");
-    std::smatch m;
-    if (std::regex_search(tail, m, re)) {
-      value = std::stod(m[1]);
+  const nlohmann::json& s = json["sequence"];
+  auto read = [&s](const char* key, auto setter) {
+    if (s.contains(key) && s[key].is_number()) {
+      setter(s[key].get<double>());
     }
   };
-  read("nozzle_angle_deg", n.angle);
-  read("nozzle_length_mm", n.length);
-  read("holder_radius_mm", n.holderRadius);
-  read("tip_clearance_mm", n.tipClearance);
-  read("tip_face_radius_mm", n.tipFaceRadius);
-  read("sample_spacing_mm", n.sampleSpacing);
+  vtkGLNozzle* n = p.Nozzle;
+  read("nozzle_angle_deg", [n](double v) { n->SetNozzleAngle(v); });
+  read("nozzle_length_mm", [n](double v) { n->SetNozzleLength(v); });
+  read("holder_radius_mm", [n](double v) { n->SetHolderRadius(v); });
+  read("tip_clearance_mm", [n](double v) { n->SetTipClearance(v); });
+  read("tip_face_radius_mm", [n](double v) { n->SetTipFaceRadius(v); });
+  read("sample_spacing_mm", [&p](double v) { p.Sequencer->SetSampleSpacing(v); });
+}
+
+/// The run options that describe the nozzle (and the sample spacing): verify takes those.
+const CliOption* nozzleOption(const std::string& flag) {
+  for (const CliOption& o : runOptionTable()) {
+    if (flag == o.flag && (o.property.rfind("GLNozzle.", 0) == 0 || flag == "--sample-spacing")) {
+      return &o;
+    }
+  }
+  return nullptr;
 }
 
 double fieldNumber(vtkDataObject* data, const char* name) {
@@ -67,28 +75,25 @@ double fieldNumber(vtkDataObject* data, const char* name) {
 int runVerifyCommand(int argc, char** argv) {
   std::string dir;
   bool allowUnavoidable = false, quiet = false;
-  NozzleOptions cli, nozzle;
-  std::vector<std::string> given;  // nozzle flags given on the command line override the report
+  std::vector<std::pair<const CliOption*, std::string>> given;  // override the report's nozzle
   for (int i = 2; i < argc; ++i) {
     const std::string arg = argv[i];
-    auto value = [&]() -> std::string {
+    if (arg == "--allow-unavoidable") {
+      allowUnavoidable = true;
+    } else if (arg == "-q" || arg == "--quiet") {
+      quiet = true;
+    } else if (const CliOption* o = nozzleOption(arg)) {
       if (i + 1 >= argc) {
         throw UsageError(arg + " needs a value");
       }
-      return argv[++i];
-    };
-    if (arg == "--allow-unavoidable")
-      allowUnavoidable = true;
-    else if (arg == "-q" || arg == "--quiet")
-      quiet = true;
-    else if (cli.parse(arg, value))
-      given.push_back(arg);
-    else if (!arg.empty() && arg[0] == '-')
+      given.emplace_back(o, argv[++i]);
+    } else if (!arg.empty() && arg[0] == '-') {
       throw UsageError("unknown option " + arg);
-    else if (dir.empty())
+    } else if (dir.empty()) {
       dir = arg;
-    else
+    } else {
       throw UsageError("unexpected argument '" + arg + "'");
+    }
   }
   if (dir.empty()) {
     throw UsageError("verify: missing OUTDIR");
@@ -108,21 +113,13 @@ int runVerifyCommand(int argc, char** argv) {
       haveToolpath && (!haveLattice || std::filesystem::last_write_time(toolpathPath, ec) >=
                                            std::filesystem::last_write_time(latticePath, ec));
   const std::filesystem::path checked = toolpath ? toolpathPath : latticePath;
-  readNozzleFromReport(std::filesystem::path(dir) / "report.json", nozzle);
-  for (const std::string& flag : given) {
-    if (flag == "--nozzle-angle")
-      nozzle.angle = cli.angle;
-    if (flag == "--nozzle-length")
-      nozzle.length = cli.length;
-    if (flag == "--holder-radius")
-      nozzle.holderRadius = cli.holderRadius;
-    if (flag == "--tip-clearance")
-      nozzle.tipClearance = cli.tipClearance;
-    if (flag == "--tip-face-radius")
-      nozzle.tipFaceRadius = cli.tipFaceRadius;
-    if (flag == "--sample-spacing")
-      nozzle.sampleSpacing = cli.sampleSpacing;
+  GLPrintPipeline settings;  // only its nozzle and sample spacing are used
+  readNozzleFromReport(std::filesystem::path(dir) / "report.json", settings);
+  RunOptions unused;
+  for (const auto& [option, value] : given) {
+    option->set(settings, unused, value);
   }
+  vtkGLNozzle* nozzle = settings.Nozzle;
 
   vtkNew<vtkXMLPolyDataReader> reader;
   reader->SetFileName(checked.string().c_str());
@@ -142,12 +139,13 @@ int runVerifyCommand(int argc, char** argv) {
   vtkNew<vtkGLCollisionVerifier> verifier;
   verifier->SetInputData(data);
   verifier->SetTimeArrayName(toolpath ? arrays::PointIndex : arrays::PrintOrder);
-  nozzle.apply(verifier.Get());
+  verifier->SetNozzle(nozzle);
+  verifier->SetSampleSpacing(settings.Sequencer->GetSampleSpacing());
   ErrorCapture errors;
   errors.Watch(verifier);
-  verifier->Update();
-  if (!errors.Message.empty()) {
-    throw GeoLatticeError("verify: " + errors.Message);
+  if (!verifier->GetExecutive()->Update() || !errors.Message.empty()) {
+    throw GeoLatticeError("verify: " + (errors.Message.empty() ? "the verifier failed"
+                                                               : withFlagNames(errors.Message)));
   }
   vtkPolyData* out = verifier->GetOutput();
   const long long stations = static_cast<long long>(fieldNumber(out, arrays::CollisionStations));
@@ -160,10 +158,11 @@ int runVerifyCommand(int argc, char** argv) {
               << (toolpath ? " (the toolpath; every point at its own time, air points no material)"
                            : " (the printing order of the sub-graphs)")
               << (haveLattice && haveToolpath ? ", the newer of toolpath.vtp and lattice.vtp" : "")
-              << ": " << stations << " nozzle stations, nozzle angle " << nozzle.angle << " deg";
-    if (nozzle.length > 0) {
-      std::cout << ", length " << nozzle.length << " mm, holder radius " << nozzle.holderRadius
-                << " mm";
+              << ": " << stations << " nozzle stations, nozzle angle " << nozzle->GetNozzleAngle()
+              << " deg";
+    if (nozzle->GetNozzleLength() > 0) {
+      std::cout << ", length " << nozzle->GetNozzleLength() << " mm, holder radius "
+                << nozzle->GetHolderRadius() << " mm";
     }
     std::cout << ": ";
     if (violating == 0) {

@@ -20,8 +20,8 @@
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
-#include "io/MeshFileIO.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "io/MeshReader.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <benchmark/benchmark.h>
 #include <malloc.h>

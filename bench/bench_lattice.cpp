@@ -4,10 +4,10 @@
 // Run: build/bin/bench_lattice
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
-#include "io/MeshFileIO.h"
-#include "lattice/LatticeGraph.h"
+#include "io/MeshReader.h"
+#include "lattice/LatticeInfill.h"
 #include "slicer/CurvedLayerSlicer.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <benchmark/benchmark.h>
 

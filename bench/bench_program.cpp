@@ -2,8 +2,8 @@
 // raster layers with tilting nozzle axes) through the UR5 cell's path solver (free rotation
 // optimised along the path, IK at every point) and the URScript writer (split files), plus the
 // 5-axis G-code writer. Run: build/bin/bench_program
-#include "program/FiveAxisGCode.h"
-#include "program/URScriptProgram.h"
+#include "program/GCodeWriter.h"
+#include "program/URScriptWriter.h"
 #include "robot/RobotPathSolver.h"
 
 #include <benchmark/benchmark.h>
@@ -73,17 +73,16 @@ void BM_IkAndURScript(benchmark::State& state) {
 }
 BENCHMARK(BM_IkAndURScript)->Unit(benchmark::kMillisecond)->Iterations(1);
 
-void BM_FiveAxisGCode(benchmark::State& state) {
+void BM_GCodeWriter(benchmark::State& state) {
   const Path& p = spiral();
   NullBuffer nb;
   std::ostream sink(&nb);
   for (auto _ : state) {
     benchmark::DoNotOptimize(
-        writeFiveAxisGCode(p.points, p.normals, p.extrusion, p.feed, p.kind, GCodeOptions{}, sink)
-            .moves);
+        writeGCode(p.points, p.normals, p.extrusion, p.feed, p.kind, GCodeOptions{}, sink).moves);
   }
 }
-BENCHMARK(BM_FiveAxisGCode)->Unit(benchmark::kMillisecond)->Iterations(1);
+BENCHMARK(BM_GCodeWriter)->Unit(benchmark::kMillisecond)->Iterations(1);
 
 }  // namespace
 

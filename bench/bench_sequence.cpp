@@ -8,14 +8,14 @@
 #include "collision/CollisionVerifier.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
-#include "io/MeshFileIO.h"
-#include "lattice/LatticeGraph.h"
+#include "io/MeshReader.h"
+#include "lattice/LatticeInfill.h"
 #include "sequence/PotentialCollisions.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
-#include "sequence/SkeletonTree.h"
+#include "skeleton/SkeletonTree.h"
 #include "slicer/CurvedLayerSlicer.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <benchmark/benchmark.h>
 

@@ -3,10 +3,10 @@
 // Run: build/bin/bench_slicer ; results in docs/performance.md.
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
-#include "io/MeshFileIO.h"
+#include "io/MeshReader.h"
 #include "slicer/CurvedLayerSlicer.h"
 #include "slicer/LayerStatistics.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <benchmark/benchmark.h>
 

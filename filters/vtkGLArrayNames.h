@@ -163,6 +163,9 @@ constexpr const char* CollisionStations =
     "CollisionStations";  ///< nozzle stations (sample points) checked
 constexpr const char* CollisionViolatingStations =
     "CollisionViolatingStations";  ///< stations with earlier material inside the nozzle
+/// 2 values: the smallest and largest LayerId (input point array) of the violating stations; only
+/// when the input has a LayerId point array and a station collides.
+constexpr const char* CollisionLayerRange = "CollisionLayerRange";
 constexpr const char* CollisionUnavoidableStations =
     "CollisionUnavoidableStations";  ///< of those, stations whose obstacles are all skeleton ancestors
 constexpr const char* CollisionOrderFree =
@@ -230,6 +233,10 @@ constexpr const char* ToolpathTiltedStations =
     "ToolpathTiltedStations";  ///< of those, cleared by tilting the axis
 constexpr const char* ToolpathUnclearedStations =
     "ToolpathUnclearedStations";  ///< stations still colliding after tilting
+/// 1 when the planner's own final check found no station colliding (nozzle or build plate), else
+/// 0: the verdict the program writers check before writing (vtkGLCollisionVerifier re-checks it
+/// independently).
+constexpr const char* ToolpathCollisionFree = "ToolpathCollisionFree";
 constexpr const char* ToolpathMaxAxisTilt = "ToolpathMaxAxisTilt";  ///< largest AxisTilt (degrees)
 constexpr const char* ToolpathReplannedHops =
     "ToolpathReplannedHops";  ///< hops onto an upper node sent over the safe box (they collided)

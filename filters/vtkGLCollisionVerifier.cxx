@@ -4,13 +4,14 @@
 #include "vtkGLMeshConversion.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "collision/CollisionVerifier.h"
 #include "common/Error.h"
-#include "lattice/LatticeGraph.h"
-#include "sequence/NozzleModel.h"
+#include "lattice/LatticeInfill.h"
+#include "nozzle/NozzleModel.h"
 #include "sequence/PrintMaterial.h"
-#include "sequence/SkeletonTree.h"
+#include "skeleton/SkeletonTree.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -292,6 +293,8 @@ void buildOutput(const gl::CollisionReport& report, double nozzleAngle, vtkPolyD
 
 vtkGLCollisionVerifier::vtkGLCollisionVerifier() {
   this->SetTimeArrayName(geolattice::arrays::PrintOrder);
+  this->SampleSpacing = gl::MaterialSampling{}.spacing;
+  this->MaxReported = gl::VerifierOptions{}.maxReported;
 }
 
 vtkGLCollisionVerifier::~vtkGLCollisionVerifier() {
@@ -313,10 +316,8 @@ int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** 
     return 1;  // another process has the points
   }
   vtkPolyData* input = inputs.Get<vtkPolyData>(0);
-  try {
-    const gl::NozzleModel nozzle =
-        gl::nozzleModel(this->NozzleAngle, this->NozzleLength, this->HolderRadius,
-                        this->TipClearance, this->TipFaceRadius);
+  return gl::runRequest(this, outputVector, [&] {
+    const gl::NozzleModel nozzle = gl::nozzleModel(this->Nozzle);
 
     if (!input || input->GetNumberOfPoints() == 0) {
       throw gl::GeoLatticeError("empty input: no printed points to verify");
@@ -339,9 +340,7 @@ int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** 
           "' (the print time, e.g. PrintOrder of GL Print Sequencer; set TimeArrayName)");
     }
 
-    if (gl::progressAborts(this, 0.05)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.05);
     Stations stations;
     if (cellTime) {
       if (input->GetNumberOfLines() == 0) {
@@ -386,36 +385,35 @@ int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** 
       };
     }
     // The check itself is one core call: progress before and after it.
-    if (gl::progressAborts(this, 0.2)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.2);
     const gl::CollisionReport report = gl::verifyNozzleClearance(
         stations.points, stations.normals, stations.time, nozzle, this->MaxReported,
         ancestry ? &exemption : nullptr, stations.material.empty() ? nullptr : &stations.material);
-    if (gl::progressAborts(this, 0.9)) {
-      return 1;
+    gl::checkAbort(this, 0.9);
+    buildOutput(report, nozzle.halfAngleDeg, output);
+    // Where on the part the collisions are: the layer range of the violating stations.
+    vtkDataArray* layer = pointTime ? pd->GetArray(gl::arrays::LayerId) : nullptr;
+    if (layer && !report.violatingStationIds.empty()) {
+      double lo = VTK_DOUBLE_MAX, hi = VTK_DOUBLE_MIN;
+      for (int k : report.violatingStationIds) {
+        const double l = layer->GetComponent(k, 0);
+        if (l >= 0) {  // air points carry -1
+          lo = std::min(lo, l);
+          hi = std::max(hi, l);
+        }
+      }
+      if (lo <= hi) {
+        gl::addFieldArray(output->GetFieldData(), gl::arrays::CollisionLayerRange, {lo, hi});
+      }
     }
-    buildOutput(report, this->NozzleAngle, output);
     this->UpdateProgress(1.0);
-  } catch (const std::exception& e) {
-    output->Initialize();
-    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
-    {
-      vtkErrorMacro(<< e.what());
-    }
-  }
-  return 1;
+  });
 }
 
 void vtkGLCollisionVerifier::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "TimeArrayName: " << (this->TimeArrayName ? this->TimeArrayName : "(none)")
      << "\n";
-  os << indent << "NozzleAngle: " << this->NozzleAngle << " deg\n";
-  os << indent << "NozzleLength: " << this->NozzleLength << " mm\n";
-  os << indent << "HolderRadius: " << this->HolderRadius << " mm\n";
-  os << indent << "TipClearance: " << this->TipClearance << " mm\n";
-  os << indent << "TipFaceRadius: " << this->TipFaceRadius << " mm\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << " mm\n";
   os << indent << "MaxReported: " << this->MaxReported << "\n";
 }

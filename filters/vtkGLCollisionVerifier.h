@@ -5,7 +5,7 @@
  *
  * core/collision/CollisionVerifier.h (shares no code with the sequencer's PCG envelopes): every
  * printed point is a nozzle station with its axis and print time; a violation is a point printed
- * strictly earlier that lies inside the nozzle volume at a station (core/sequence/NozzleModel.h:
+ * strictly earlier that lies inside the nozzle volume at a station (core/nozzle/NozzleModel.h:
  * cone of half-angle NozzleAngle about the axis, apex at the tip, optionally cut at NozzleLength
  * above which the holder is a cylinder of radius HolderRadius; material at most TipClearance mm
  * above the tip is ignored). A collision is a result, not an error.
@@ -53,49 +53,18 @@
 #define vtkGLCollisionVerifier_h
 
 #include "GeoLatticeFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkGLNozzleAlgorithm.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLCollisionVerifier : public vtkPolyDataAlgorithm {
+class GEOLATTICEFILTERS_EXPORT vtkGLCollisionVerifier : public vtkGLNozzleAlgorithm {
 public:
   static vtkGLCollisionVerifier* New();
-  vtkTypeMacro(vtkGLCollisionVerifier, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkGLCollisionVerifier, vtkGLNozzleAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
   /// Name of the print-time array, a cell or point array (default "PrintOrder").
   vtkSetStringMacro(TimeArrayName);
   vtkGetStringMacro(TimeArrayName);
-  ///@}
-
-  ///@{
-  /// Nozzle half-angle NA (degrees, default 45; must be in (0, 90), checked in RequestData).
-  vtkSetMacro(NozzleAngle, double);
-  vtkGetMacro(NozzleAngle, double);
-  ///@}
-
-  ///@{
-  /// Nozzle length L: the cone is cut at this height above the tip (mm, default 0 = cone only).
-  vtkSetMacro(NozzleLength, double);
-  vtkGetMacro(NozzleLength, double);
-  ///@}
-
-  ///@{
-  /// Radius of the holder cylinder above the nozzle length (mm, default 0; used when L > 0).
-  vtkSetMacro(HolderRadius, double);
-  vtkGetMacro(HolderRadius, double);
-  ///@}
-
-  ///@{
-  /// Material at most this high above the tip along the axis is ignored (mm, default 0).
-  vtkSetMacro(TipClearance, double);
-  vtkGetMacro(TipClearance, double);
-  ///@}
-
-  ///@{
-  /// Material within this distance of the tip lies under the nozzle's flat face (the bead being
-  /// pressed), not inside the nozzle (mm, default 0.3, >= 0).
-  vtkSetMacro(TipFaceRadius, double);
-  vtkGetMacro(TipFaceRadius, double);
   ///@}
 
   ///@{
@@ -118,13 +87,8 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   char* TimeArrayName = nullptr;
-  double NozzleAngle = 45.0;
-  double NozzleLength = 0.0;
-  double HolderRadius = 0.0;
-  double TipClearance = 0.1;
-  double TipFaceRadius = 0.5;
-  double SampleSpacing = 1.0;
-  int MaxReported = 20;
+  double SampleSpacing;
+  int MaxReported;
 
 private:
   vtkGLCollisionVerifier(const vtkGLCollisionVerifier&) = delete;

@@ -4,6 +4,7 @@
 #include "vtkGLMeshConversion.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
 #include "slicer/CurvedLayerSlicer.h"
@@ -114,6 +115,11 @@ void buildPolyData(const gl::CurvedLayers& layers, const std::vector<int>& trian
 
 vtkGLCurvedLayerSlicer::vtkGLCurvedLayerSlicer() {
   this->SetNumberOfOutputPorts(2);
+  const gl::SlicerOptions defaults;  // the defaults live in core
+  this->LayerInterval = defaults.interval;
+  this->FirstLayerOffset = defaults.firstLayerOffset;
+  this->FirstLayer = defaults.firstLayer;
+  this->LastLayer = defaults.lastLayer;
 }
 
 int vtkGLCurvedLayerSlicer::FillInputPortInformation(int, vtkInformation* info) {
@@ -133,18 +139,14 @@ int vtkGLCurvedLayerSlicer::RequestData(vtkInformation*, vtkInformationVector** 
     return 1;  // another process has the mesh
   }
   vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
-  try {
+  return gl::runRequest(this, outputVector, [&] {
     const gl::TetMesh mesh = gl::toTetMesh(input);
     const Eigen::VectorXd gamma = requirePointArray(input, gl::arrays::Gamma);
     const Eigen::VectorXd alpha = requirePointArray(input, gl::arrays::Alpha);
     const Eigen::VectorXd beta = requirePointArray(input, gl::arrays::Beta);
-    if (gl::progressAborts(this, 0.05)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.05);
     const std::vector<gl::Vec3> normals = gl::vertexGradientDirections(mesh, gamma);
-    if (gl::progressAborts(this, 0.1)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.1);
     gl::SlicerOptions options;
     options.interval = this->LayerInterval;
     options.firstLayerOffset = this->FirstLayerOffset;
@@ -154,33 +156,25 @@ int vtkGLCurvedLayerSlicer::RequestData(vtkInformation*, vtkInformationVector** 
     options.shouldAbort = gl::abortFlag(this);
     const gl::CurvedLayers layers =
         gl::sliceCurvedLayers(mesh, gamma, alpha, beta, normals, options);
-    if (gl::progressAborts(this, 0.6)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.6);
     const int L = static_cast<int>(layers.layerValues.size());
     std::vector<int> triangleComponent(layers.triangles.size());
     std::vector<double> componentCount(L);
     std::vector<int> local;
     const int stride = std::max(1, L / 16);
     for (int l = 0; l < L; ++l) {
-      if (l % stride == 0 && gl::progressAborts(this, 0.6 + 0.15 * l / L)) {
-        return 1;
+      if (l % stride == 0) {
+        gl::checkAbort(this, 0.6 + 0.15 * l / L);
       }
       componentCount[l] = gl::layerComponents(layers, l, local);
       std::copy(local.begin(), local.end(),
                 triangleComponent.begin() + layers.layerTriangleOffset[l]);
     }
-    if (gl::progressAborts(this, 0.75)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.75);
     buildPolyData(layers, triangleComponent, 0, L, all);
     const int s = this->SelectedLayer - layers.layerIndex.front();
     buildPolyData(layers, triangleComponent, std::max(0, s), s >= 0 && s < L ? s + 1 : 0, selected);
-    if (gl::progressAborts(this, 0.85)) {
-      all->Initialize();
-      selected->Initialize();
-      return 1;
-    }
+    gl::checkAbort(this, 0.85);
 
     vtkNew<vtkFieldData> fd;
     gl::addFieldArray(fd, gl::arrays::LayerValues, layers.layerValues);
@@ -198,24 +192,12 @@ int vtkGLCurvedLayerSlicer::RequestData(vtkInformation*, vtkInformationVector** 
       gl::addFieldArray(fd, gl::arrays::LayerSpacingMin, smin);
       gl::addFieldArray(fd, gl::arrays::LayerSpacingMean, smean);
       gl::addFieldArray(fd, gl::arrays::LayerSpacingMax, smax);
-      if (gl::progressAborts(this, 0.95)) {
-        all->Initialize();
-        selected->Initialize();
-        return 1;
-      }
+      gl::checkAbort(this, 0.95);
     }
     all->SetFieldData(fd);
     selected->GetFieldData()->PassData(fd);
     this->UpdateProgress(1.0);
-  } catch (const std::exception& e) {
-    all->Initialize();
-    selected->Initialize();
-    if (!this->GetAbortExecute())  // an abort is not an error: empty outputs, no message
-    {
-      vtkErrorMacro(<< e.what());
-    }
-  }
-  return 1;
+  });
 }
 
 void vtkGLCurvedLayerSlicer::PrintSelf(ostream& os, vtkIndent indent) {

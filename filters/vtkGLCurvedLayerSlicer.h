@@ -77,10 +77,10 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double LayerInterval = 0.6;
-  double FirstLayerOffset = 0.6;
-  int FirstLayer = 0;
-  int LastLayer = -1;
+  double LayerInterval;
+  double FirstLayerOffset;
+  int FirstLayer;
+  int LastLayer;
   int SelectedLayer = 0;
   vtkTypeBool ComputeStatistics = true;
 

@@ -4,9 +4,10 @@
 #include "vtkGLOutputFiles.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
-#include "program/FiveAxisGCode.h"
+#include "program/GCodeWriter.h"
 
 #include <vtkErrorCode.h>
 #include <vtkInformation.h>
@@ -25,7 +26,7 @@ namespace gl = geolattice;
 
 static_assert(static_cast<int>(gl::TableKinematics::AC) == vtkGLGCodeWriter::AC &&
                   static_cast<int>(gl::TableKinematics::BC) == vtkGLGCodeWriter::BC,
-              "vtkGLGCodeWriter::KinematicsType must match core/program/FiveAxisGCode.h");
+              "vtkGLGCodeWriter::KinematicsType must match core/program/GCodeWriter.h");
 
 constexpr double kPoleToleranceDeg = 0.01;  // = GCodeOptions::poleToleranceDeg
 
@@ -46,25 +47,18 @@ std::vector<vtkIdType> outOfLimits(const std::vector<Eigen::Vector3d>& normals, 
 }
 }  // namespace
 
-vtkGLGCodeWriter::vtkGLGCodeWriter() = default;
-
-vtkGLGCodeWriter::~vtkGLGCodeWriter() {
-  this->SetFileName(nullptr);
-}
-
-int vtkGLGCodeWriter::FillInputPortInformation(int, vtkInformation* info) {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
-vtkTypeBool vtkGLGCodeWriter::ProcessRequest(vtkInformation* request,
-                                             vtkInformationVector** inputVector,
-                                             vtkInformationVector* outputVector) {
-  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT())) {
-    gl::requestEndOfTimeRange(inputVector);
+vtkGLGCodeWriter::vtkGLGCodeWriter() {
+  const gl::GCodeOptions defaults;  // the defaults live in core
+  this->Kinematics = static_cast<int>(defaults.kinematics);
+  for (int k = 0; k < 3; ++k) {
+    this->Pivot[k] = defaults.pivot[k];
+    this->PartOffset[k] = defaults.partOffset[k];
   }
-  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
+  this->TiltLimits[0] = defaults.tiltMinDeg;
+  this->TiltLimits[1] = defaults.tiltMaxDeg;
 }
+
+vtkGLGCodeWriter::~vtkGLGCodeWriter() {}
 
 void vtkGLGCodeWriter::WriteData() {
   this->NumberOfMoves = 0;
@@ -78,84 +72,71 @@ void vtkGLGCodeWriter::WriteData() {
   if (!inputs.Computes()) {
     return;  // another process writes the G-code
   }
-  try {
-    if (!this->FileName || !*this->FileName) {
-      throw gl::GeoLatticeError("G-code writer: no FileName given");
-    }
-    const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
-    if (gl::progressAborts(this, 0.1)) {
-      return;
-    }
-    const double lo = this->TiltLimits[0], hi = this->TiltLimits[1];
-    if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) {
-      throw gl::GeoLatticeError(
-          "G-code writer: the tilt limits must be finite with min < max (got " +
-          std::to_string(lo) + ", " + std::to_string(hi) + ")");
-    }
-    for (const double* v : {this->Pivot, this->PartOffset}) {
-      if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
-        throw gl::GeoLatticeError("G-code writer: the pivot and the part offset must be finite");
-      }
-    }
-    const std::vector<vtkIdType> out = outOfLimits(path.normals, lo, hi);
-    if (gl::progressAborts(this, 0.2)) {
-      return;
-    }
-    this->OutOfLimitsCount = static_cast<vtkIdType>(out.size());
-    if (!out.empty()) {
-      std::ostringstream s;
-      s << "G-code writer: " << out.size() << " of " << path.points.size()
-        << " toolpath points need a tilt outside the limits [" << lo << ", " << hi
-        << "] degrees (first:";
-      for (size_t i = 0; i < out.size() && i < 10; ++i) {
-        s << (i ? ", " : " ") << out[i];
-      }
-      s << (out.size() > 10 ? ", ...)" : ")") << "; nothing written";
-      throw gl::GeoLatticeError(s.str());
-    }
+  this->SetErrorCode(gl::runWrite(
+      this,
+      [&] {
+        this->CheckFileName("G-code writer");
+        const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
+        this->CheckCollisionVerdict(inputs.Get<vtkPolyData>(0), "G-code writer");
+        gl::checkAbort(this, 0.1);
+        const double lo = this->TiltLimits[0], hi = this->TiltLimits[1];
+        if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) {
+          throw gl::GeoLatticeError(
+              "G-code writer: the tilt limits must be finite with min < max (got " +
+              std::to_string(lo) + ", " + std::to_string(hi) + ")");
+        }
+        for (const double* v : {this->Pivot, this->PartOffset}) {
+          if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
+            throw gl::GeoLatticeError(
+                "G-code writer: the pivot and the part offset must be finite");
+          }
+        }
+        const std::vector<vtkIdType> out = outOfLimits(path.normals, lo, hi);
+        gl::checkAbort(this, 0.2);
+        this->OutOfLimitsCount = static_cast<vtkIdType>(out.size());
+        if (!out.empty()) {
+          std::ostringstream s;
+          s << "G-code writer: " << out.size() << " of " << path.points.size()
+            << " toolpath points need a tilt outside the limits [" << lo << ", " << hi
+            << "] degrees (first:";
+          for (size_t i = 0; i < out.size() && i < 10; ++i) {
+            s << (i ? ", " : " ") << out[i];
+          }
+          s << (out.size() > 10 ? ", ...)" : ")") << "; nothing written";
+          throw gl::GeoLatticeError(s.str());
+        }
 
-    gl::GCodeOptions options;
-    options.kinematics = this->Kinematics == BC ? gl::TableKinematics::BC : gl::TableKinematics::AC;
-    options.pivot = Eigen::Vector3d(this->Pivot[0], this->Pivot[1], this->Pivot[2]);
-    options.partOffset =
-        Eigen::Vector3d(this->PartOffset[0], this->PartOffset[1], this->PartOffset[2]);
-    options.tiltMinDeg = lo;
-    options.tiltMaxDeg = hi;
-    options.poleToleranceDeg = kPoleToleranceDeg;
-    gl::AtomicFileSet files;
-    const gl::GCodeStats stats =
-        gl::writeFiveAxisGCode(path.points, path.normals, path.extrusion, path.feedRate, path.kind,
-                               options, files.open(this->FileName));
-    if (stats.outOfLimits > 0) {
-      throw gl::GeoLatticeError("G-code writer: " + std::to_string(stats.outOfLimits) +
-                                " toolpath points need a tilt outside the limits; nothing written");
-    }
-    if (gl::progressAborts(this, 0.9)) {
-      return;  // the temporary file goes with `files`: nothing written
-    }
-    files.commit();
-    this->NumberOfMoves = static_cast<vtkIdType>(stats.moves);
-    this->MaxRotaryStepDeg = stats.maxRotaryStepDeg;
-    this->BranchFlips = static_cast<vtkIdType>(stats.branchFlips);
-    this->MaxAxisErrorDeg = stats.maxAxisErrorDeg;
-    this->ForcedRotarySteps = static_cast<vtkIdType>(stats.forcedRotarySteps);
-  } catch (const gl::FileWriteError& e) {
-    this->NumberOfMoves = 0;
-    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    vtkErrorMacro(<< e.what());
-  } catch (const std::exception& e) {
-    this->NumberOfMoves = 0;
-    if (this->GetAbortExecute()) {
-      return;  // an abort is not an error: nothing written, no message
-    }
-    this->SetErrorCode(vtkErrorCode::UserError);
-    vtkErrorMacro(<< e.what());
-  }
+        gl::GCodeOptions options;
+        options.kinematics =
+            this->Kinematics == BC ? gl::TableKinematics::BC : gl::TableKinematics::AC;
+        options.pivot = Eigen::Vector3d(this->Pivot[0], this->Pivot[1], this->Pivot[2]);
+        options.partOffset =
+            Eigen::Vector3d(this->PartOffset[0], this->PartOffset[1], this->PartOffset[2]);
+        options.tiltMinDeg = lo;
+        options.tiltMaxDeg = hi;
+        options.poleToleranceDeg = kPoleToleranceDeg;
+        gl::AtomicFileSet files;
+        const gl::GCodeStats stats =
+            gl::writeGCode(path.points, path.normals, path.extrusion, path.feedRate, path.kind,
+                           options, files.open(this->FileName));
+        if (stats.outOfLimits > 0) {
+          throw gl::GeoLatticeError(
+              "G-code writer: " + std::to_string(stats.outOfLimits) +
+              " toolpath points need a tilt outside the limits; nothing written");
+        }
+        gl::checkAbort(this, 0.9);
+        files.commit();
+        this->NumberOfMoves = static_cast<vtkIdType>(stats.moves);
+        this->MaxRotaryStepDeg = stats.maxRotaryStepDeg;
+        this->BranchFlips = static_cast<vtkIdType>(stats.branchFlips);
+        this->MaxAxisErrorDeg = stats.maxAxisErrorDeg;
+        this->ForcedRotarySteps = static_cast<vtkIdType>(stats.forcedRotarySteps);
+      },
+      [this] { this->NumberOfMoves = 0; }, [this] { this->NumberOfMoves = 0; }));
 }
 
 void vtkGLGCodeWriter::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "Kinematics: " << (this->Kinematics == BC ? "BC" : "AC") << "\n";
   os << indent << "Pivot: " << this->Pivot[0] << " " << this->Pivot[1] << " " << this->Pivot[2]
      << " mm\n";

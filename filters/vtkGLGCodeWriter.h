@@ -3,7 +3,7 @@
  * @brief   Writes a toolpath as 5-axis G-code for a tilting-rotary table machine (A-C or B-C)
  *          with a fixed vertical nozzle.
  *
- * core/program/FiveAxisGCode.h: for each toolpath point p with nozzle axis n the table angles
+ * core/program/GCodeWriter.h: for each toolpath point p with nozzle axis n the table angles
  * turn n onto +Z (rotary C about the table normal, then the tilt A about X or B about Y; of the
  * two solutions (c, tilt) and (c + 180°, -tilt) the one nearest to the previous C, C unwrapped,
  * C kept near the pole); the machine position is X Y Z = Pivot + R_tilt R_C (p + PartOffset).
@@ -38,24 +38,18 @@
 #define vtkGLGCodeWriter_h
 
 #include "GeoLatticeFiltersModule.h"
-#include "vtkWriter.h"
+#include "vtkGLToolpathWriter.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLGCodeWriter : public vtkWriter {
+class GEOLATTICEFILTERS_EXPORT vtkGLGCodeWriter : public vtkGLToolpathWriter {
 public:
   static vtkGLGCodeWriter* New();
-  vtkTypeMacro(vtkGLGCodeWriter, vtkWriter);
+  vtkTypeMacro(vtkGLGCodeWriter, vtkGLToolpathWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   enum KinematicsType {
     AC = 0,  ///< tilt A about X, then rotary C
     BC = 1   ///< tilt B about Y, then rotary C
   };
-
-  ///@{
-  /// The G-code file (e.g. toolpath.gcode).
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
 
   ///@{
   /// Table kinematics: AC (0, default) or BC (1).
@@ -98,16 +92,12 @@ protected:
   vtkGLGCodeWriter();
   ~vtkGLGCodeWriter() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
-                             vtkInformationVector* outputVector) override;
   void WriteData() override;
 
-  char* FileName = nullptr;
-  int Kinematics = AC;
-  double Pivot[3] = {0, 0, 0};
-  double PartOffset[3] = {0, 0, 0};
-  double TiltLimits[2] = {-120.0, 120.0};
+  int Kinematics;
+  double Pivot[3];
+  double PartOffset[3];
+  double TiltLimits[2];
 
 private:
   vtkGLGCodeWriter(const vtkGLGCodeWriter&) = delete;

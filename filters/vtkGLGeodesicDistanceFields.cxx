@@ -4,6 +4,7 @@
 #include "vtkGLMeshConversion.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
@@ -69,6 +70,17 @@ vtkGLGeodesicDistanceFields::vtkGLGeodesicDistanceFields() : Cache(new SolverCac
   // Default mask array for MASK_ARRAY mode; ParaView users pick any point array.
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS,
                                geolattice::arrays::HeatSource);
+  const geolattice::GeodesicFieldOptions fields;  // the defaults live in core
+  const geolattice::BaseOptions base;
+  this->SourceMode = LOWEST_Z;
+  this->BaseTolerance = base.tolerance;
+  this->BaseFaceAngle = base.maxFaceAngleDeg;
+  this->TimeFactor = fields.timeFactor;
+  for (int k = 0; k < 3; ++k) {
+    this->ReferenceVector[k] = fields.reference[k];
+  }
+  this->ReferenceParallelAngle = fields.referenceParallelDeg;
+  this->UseCholmod = fields.backend == geolattice::CholeskyBackend::Cholmod;
 }
 
 vtkGLGeodesicDistanceFields::~vtkGLGeodesicDistanceFields() = default;
@@ -90,7 +102,7 @@ int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVect
   }
   vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
   const auto start = std::chrono::steady_clock::now();
-  try {
+  return gl::runRequest(this, outputVector, [&] {
     gl::GeodesicFieldOptions options;
     options.timeFactor = this->TimeFactor;
     options.reference =
@@ -112,18 +124,14 @@ int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVect
         !sameSetUp(cache.Options, options)) {
       cache.Solver.reset();
       const gl::TetMesh mesh = gl::toTetMesh(input);
-      if (gl::progressAborts(this, 0.05)) {
-        return 1;
-      }
+      gl::checkAbort(this, 0.05);
       cache.ProgressLo = 0.05;
       cache.ProgressHi = 0.6;
       cache.Solver = std::make_unique<gl::GeodesicDistanceFields>(mesh, options);
       cache.MeshTime = meshTime;
       cache.Options = options;
     }
-    if (gl::progressAborts(this, 0.6)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.6);
 
     const gl::TetMesh& mesh = cache.Solver->mesh();
     std::vector<int> sources;
@@ -150,9 +158,7 @@ int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVect
     cache.ProgressLo = 0.6;
     cache.ProgressHi = 0.95;
     const gl::GeodesicFields fields = cache.Solver->solve(sources);
-    if (gl::progressAborts(this, 0.95)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.95);
 
     output->ShallowCopy(input);
     vtkPointData* pd = output->GetPointData();
@@ -192,14 +198,7 @@ int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVect
     gl::addFieldArray(fd, gl::arrays::SourceCount, {static_cast<double>(sources.size())});
     output->SetFieldData(fd);
     this->UpdateProgress(1.0);
-  } catch (const std::exception& e) {
-    output->Initialize();
-    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
-    {
-      vtkErrorMacro(<< e.what());
-    }
-  }
-  return 1;
+  });
 }
 
 void vtkGLGeodesicDistanceFields::PrintSelf(ostream& os, vtkIndent indent) {

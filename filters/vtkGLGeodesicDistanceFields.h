@@ -101,13 +101,13 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int SourceMode = LOWEST_Z;
-  double BaseTolerance = 0.05;
-  double BaseFaceAngle = 10.0;
-  double TimeFactor = 4.0;
-  double ReferenceVector[3] = {1.0, 0.0, 0.0};
-  double ReferenceParallelAngle = 1.0;
-  vtkTypeBool UseCholmod = true;
+  int SourceMode;
+  double BaseTolerance;
+  double BaseFaceAngle;
+  double TimeFactor;
+  double ReferenceVector[3];
+  double ReferenceParallelAngle;
+  vtkTypeBool UseCholmod;
 
 private:
   vtkGLGeodesicDistanceFields(const vtkGLGeodesicDistanceFields&) = delete;

@@ -4,9 +4,10 @@
 #include "vtkGLMeshConversion.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
@@ -45,7 +46,7 @@ static_assert(
         static_cast<int>(gl::LatticeEdgeKind::Alpha) == gl::latticekind::EdgeAlpha &&
         static_cast<int>(gl::LatticeEdgeKind::Beta) == gl::latticekind::EdgeBeta &&
         static_cast<int>(gl::LatticeEdgeKind::Boundary) == gl::latticekind::EdgeBoundary,
-    "vtkGLArrayNames.h latticekind values must match core/lattice/LatticeGraph.h");
+    "vtkGLArrayNames.h latticekind values must match core/lattice/LatticeInfill.h");
 
 vtkDataArray* requireArray(vtkDataSetAttributes* data, const char* name, const char* where) {
   vtkDataArray* a = data->GetArray(name);
@@ -272,7 +273,16 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out) {
 }
 }  // namespace
 
-vtkGLLatticeInfill::vtkGLLatticeInfill() = default;
+vtkGLLatticeInfill::vtkGLLatticeInfill() {
+  const gl::LatticeOptions defaults;  // the defaults live in core
+  this->AlphaWidth = defaults.alphaWidth;
+  this->BetaWidth = defaults.betaWidth;
+  this->AlphaPhase = defaults.alphaPhase;
+  this->BetaPhase = defaults.betaPhase;
+  this->MinimumSubgraphLength = defaults.minimumSubgraphLength;
+  this->MergeQuadDiagonalPoints = defaults.mergeQuadDiagonalPoints;
+  this->NumberOfThreads = defaults.threads;
+}
 
 int vtkGLLatticeInfill::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
@@ -289,7 +299,7 @@ int vtkGLLatticeInfill::RequestData(vtkInformation*, vtkInformationVector** inpu
     return 1;  // another process has the layers
   }
   vtkPolyData* input = inputs.Get<vtkPolyData>(0);
-  try {
+  return gl::runRequest(this, outputVector, [&] {
     if (!(this->AlphaWidth > 0) || !(this->BetaWidth > 0)) {
       throw gl::GeoLatticeError("lattice widths must be > 0 mm (AlphaWidth " +
                                 std::to_string(this->AlphaWidth) + ", BetaWidth " +
@@ -326,14 +336,10 @@ int vtkGLLatticeInfill::RequestData(vtkInformation*, vtkInformationVector** inpu
     }
     options.progress = gl::progressRange(this, 0.1, 0.9);
     options.shouldAbort = gl::abortFlag(this);
-    if (gl::progressAborts(this, 0.1)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.1);
 
     const gl::LatticeGraph graph = gl::buildLatticeGraph(layers, options);
-    if (gl::progressAborts(this, 0.9)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.9);
     buildOutput(graph, hasGamma, output);
     if (graph.stats.isolineEdges == 0) {
       const auto [aLo, aHi] = std::minmax_element(layers.alpha.begin(), layers.alpha.end());
@@ -344,13 +350,7 @@ int vtkGLLatticeInfill::RequestData(vtkInformation*, vtkInformationVector** inpu
                       << " mm); only the layer boundaries are output (LatticeIsolineEdges = 0)");
     }
     this->UpdateProgress(1.0);
-  } catch (const std::exception& e) {
-    output->Initialize();
-    if (!this->GetAbortExecute()) {
-      vtkErrorMacro(<< e.what());
-    }
-  }
-  return 1;
+  });
 }
 
 void vtkGLLatticeInfill::PrintSelf(ostream& os, vtkIndent indent) {

@@ -4,7 +4,7 @@
  *          and the layer boundary, as a graph of line cells.
  *
  * Paper Section 2.2, Algorithm 1 (Eqs. 6-13), on the layer triangle meshes
- * (core/lattice/LatticeGraph.h): on each layer S_i the isolines α = j·AlphaWidth + AlphaPhase
+ * (core/lattice/LatticeInfill.h): on each layer S_i the isolines α = j·AlphaWidth + AlphaPhase
  * and β = k·BetaWidth + BetaPhase, their crossings, and the layer boundary (where the layer meets
  * the part surface) split at the isoline hits; then the connected sub-graphs G_{i,j}. Iso-values
  * that hit layer points or edges exactly never create duplicate vertices or broken edges.
@@ -96,13 +96,13 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double AlphaWidth = 4.0;
-  double BetaWidth = 4.0;
-  double AlphaPhase = 0.0;
-  double BetaPhase = 0.0;
-  double MinimumSubgraphLength = 0.0;
-  vtkTypeBool MergeQuadDiagonalPoints = true;
-  int NumberOfThreads = 0;
+  double AlphaWidth;
+  double BetaWidth;
+  double AlphaPhase;
+  double BetaPhase;
+  double MinimumSubgraphLength;
+  vtkTypeBool MergeQuadDiagonalPoints;
+  int NumberOfThreads;
 
 private:
   vtkGLLatticeInfill(const vtkGLLatticeInfill&) = delete;

@@ -1,4 +1,5 @@
 #include "vtkGLMeshConversion.h"
+#include "vtkGLNozzle.h"
 
 #include "vtkGLArrayNames.h"
 
@@ -550,14 +551,14 @@ ToolpathArrays toToolpathArrays(vtkPolyData* toolpath) {
   return t;
 }
 
-NozzleModel nozzleModel(double angleDeg, double length, double holderRadius, double tipClearance,
-                        double tipFaceRadius) {
+NozzleModel nozzleModel(vtkGLNozzle* n) {
   NozzleModel nozzle;
-  nozzle.halfAngleDeg = angleDeg;
-  nozzle.length = length == 0 ? std::numeric_limits<double>::infinity() : length;
-  nozzle.holderRadius = holderRadius;
-  nozzle.tipClearance = tipClearance;
-  nozzle.tipFaceRadius = tipFaceRadius;
+  nozzle.halfAngleDeg = n->GetNozzleAngle();
+  nozzle.length =
+      n->GetNozzleLength() == 0 ? std::numeric_limits<double>::infinity() : n->GetNozzleLength();
+  nozzle.holderRadius = n->GetHolderRadius();
+  nozzle.tipClearance = n->GetTipClearance();
+  nozzle.tipFaceRadius = n->GetTipFaceRadius();
   nozzle.validate();
   return nozzle;
 }

@@ -6,16 +6,17 @@
  * Each function throws geolattice::GeoLatticeError with a message that names the problem
  * (e.g. a non-tetrahedral cell) so that filters can report it with vtkErrorMacro.
  */
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 #include "mesh/TetMesh.h"
-#include "sequence/NozzleModel.h"
-#include "sequence/SkeletonTree.h"
+#include "nozzle/NozzleModel.h"
+#include "skeleton/SkeletonTree.h"
 
 #include <vtkSmartPointer.h>
 
 #include <vector>
 
 class vtkDoubleArray;
+class vtkGLNozzle;
 class vtkFieldData;
 class vtkPolyData;
 class vtkUnstructuredGrid;
@@ -86,8 +87,7 @@ ToolpathArrays toToolpathArrays(vtkPolyData* toolpath);
 /// A named double array of values.size() / components tuples holding values.
 /// The nozzle of the filters' properties (NozzleLength 0 = cone only); validated, throws
 /// GeoLatticeError naming a bad parameter.
-NozzleModel nozzleModel(double angleDeg, double length, double holderRadius, double tipClearance,
-                        double tipFaceRadius);
+NozzleModel nozzleModel(vtkGLNozzle* nozzle);
 
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values,
                                             int components = 1);

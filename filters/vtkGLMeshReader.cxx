@@ -1,9 +1,10 @@
 #include "vtkGLMeshReader.h"
 
 #include "vtkGLMeshConversion.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
-#include "io/MeshFileIO.h"
+#include "io/MeshReader.h"
 
 #include <vtkCellArray.h>
 #include <vtkCallbackCommand.h>
@@ -40,6 +41,7 @@
 vtkStandardNewMacro(vtkGLMeshReader);
 
 namespace {
+namespace gl = geolattice;
 // Surfaces first, then tet meshes; kNumSurfaceExtensions splits the list.
 constexpr const char* kExtensions[] = {".stl", ".obj", ".ply",  ".vtp", ".off",
                                        ".vtu", ".tet", ".node", ".ele"};
@@ -110,15 +112,6 @@ public:
   std::string FirstError;
   std::string FirstWarning;
 };
-
-/// Progress of this reader (UpdateProgress(f)); throws "reading aborted" if the user asked to
-/// abort (the reader's catch keeps that quiet).
-void progressOrAbort(vtkAlgorithm* reader, double f) {
-  reader->UpdateProgress(f);
-  if (reader->GetAbortExecute()) {
-    throw geolattice::GeoLatticeError("reading aborted");
-  }
-}
 
 /// Runs a VTK algorithm, turning any error it reports into a GeoLatticeError. Errors are seen
 /// through ErrorEvents (only emitted while vtkObject::GlobalWarningDisplay is on), the error
@@ -266,7 +259,7 @@ void readSurface(const std::string& path, const std::string& ext, vtkPolyData* o
     checkPointIds(raw->GetStrips(), raw->GetNumberOfPoints(), "triangle strip", path);
   }
   dropCornerAttributes(raw);
-  progressOrAbort(reporter, 0.6);
+  gl::checkAbort(reporter, 0.6);
 
   vtkNew<vtkTriangleFilter> triangles;
   triangles->SetInputData(raw);
@@ -294,14 +287,14 @@ void readTetMesh(const std::string& path, const std::string& ext, vtkUnstructure
   if (ext == ".tet" || ext == ".node" || ext == ".ele") {
     const geolattice::TetMesh mesh =
         ext == ".tet" ? geolattice::readTetFile(path) : geolattice::readTetGenMesh(path);
-    progressOrAbort(reporter, 0.8);
+    gl::checkAbort(reporter, 0.8);
     geolattice::fromTetMesh(mesh, output);
     return;
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(path.c_str());
   runChecked(reader, path, reporter, 0.02, 0.8);
-  progressOrAbort(reporter, 0.8);
+  gl::checkAbort(reporter, 0.8);
   vtkUnstructuredGrid* grid = reader->GetOutput();
   if (grid->GetNumberOfCells() == 0 || grid->GetNumberOfPoints() == 0) {
     throw geolattice::GeoLatticeError("empty mesh: " + path + " has " +
@@ -373,7 +366,7 @@ int vtkGLMeshReader::RequestDataObject(vtkInformation*, vtkInformationVector**,
 int vtkGLMeshReader::RequestData(vtkInformation*, vtkInformationVector**,
                                  vtkInformationVector* outputVector) {
   vtkDataObject* output = vtkDataObject::GetData(outputVector, 0);
-  try {
+  return gl::runRequest(this, outputVector, [&] {
     if (!this->FileName || this->FileName[0] == '\0') {
       throw geolattice::GeoLatticeError("no file name set (FileName is empty)");
     }
@@ -390,7 +383,7 @@ int vtkGLMeshReader::RequestData(vtkInformation*, vtkInformationVector**,
     if (!std::filesystem::is_regular_file(path, ec)) {
       throw geolattice::GeoLatticeError("not a regular file: " + path);
     }
-    progressOrAbort(this, 0.01);
+    gl::checkAbort(this, 0.01);
     if (IsTetMeshFile(this->FileName)) {
       vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(output);
       if (!grid) {
@@ -405,13 +398,5 @@ int vtkGLMeshReader::RequestData(vtkInformation*, vtkInformationVector**,
       readSurface(path, ext, poly, this);
     }
     this->UpdateProgress(1.0);
-  } catch (const std::exception& e) {
-    // GeoLatticeError from core and the conversions, or std errors (bad_alloc, filesystem).
-    output->Initialize();
-    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
-    {
-      vtkErrorMacro(<< e.what());
-    }
-  }
-  return 1;
+  });
 }

@@ -4,6 +4,7 @@
 #include "vtkGLMeshConversion.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
 #include "mesh/TetMeshTopology.h"
@@ -60,6 +61,10 @@ vtkNew<vtkDoubleArray> cellArray(const char* name, const std::vector<double>& va
 
 }  // namespace
 
+vtkGLOverhangAnalysis::vtkGLOverhangAnalysis() {
+  this->ThresholdAngle = gl::OverhangOptions{}.thresholdDeg;  // the default lives in core
+}
+
 int vtkGLOverhangAnalysis::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
   return 1;
@@ -75,7 +80,7 @@ int vtkGLOverhangAnalysis::RequestData(vtkInformation*, vtkInformationVector** i
     return 1;  // another process has the mesh
   }
   vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
-  try {
+  return gl::runRequest(this, outputVector, [&] {
     if (!input || input->GetNumberOfCells() == 0) {
       throw gl::GeoLatticeError("the input has no cells");
     }
@@ -96,18 +101,12 @@ int vtkGLOverhangAnalysis::RequestData(vtkInformation*, vtkInformationVector** i
     for (vtkIdType i = 0; i < static_cast<vtkIdType>(onPlatform.size()); ++i) {
       onPlatform[i] = base->GetComponent(i, 0) != 0.0;
     }
-    if (gl::progressAborts(this, 0.2)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.2);
     const gl::TetMeshTopology topology(mesh);
-    if (gl::progressAborts(this, 0.5)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.5);
     const gl::OverhangResult result =
         gl::analyzeOverhang(mesh, topology, directions, onPlatform, options);
-    if (gl::progressAborts(this, 0.7)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.7);
 
     // Boundary surface with its own, compact point numbering (first use order).
     const std::vector<gl::BoundaryFace>& faces = topology.boundaryFaces();
@@ -144,18 +143,14 @@ int vtkGLOverhangAnalysis::RequestData(vtkInformation*, vtkInformationVector** i
     for (vtkIdType i = 0; i < static_cast<vtkIdType>(oldId.size()); ++i) {
       outPD->CopyData(inPD, oldId[i], i);
     }
-    if (gl::progressAborts(this, 0.8)) {
-      output->Initialize();
-      return 1;
-    }
+    gl::checkAbort(this, 0.8);
     vtkCellData* inCD = input->GetCellData();
     vtkCellData* outCD = output->GetCellData();
     outCD->CopyAllocate(inCD, numFaces);
     for (vtkIdType f = 0; f < numFaces; ++f) {
       outCD->CopyData(inCD, faces[f].tet, f);
       if (f % 65536 == 0 && this->GetAbortExecute()) {
-        output->Initialize();
-        return 1;
+        throw gl::RequestAborted{};
       }
     }
     outCD->AddArray(cellArray(gl::arrays::OverhangPlanar, result.planarDeg));
@@ -178,14 +173,7 @@ int vtkGLOverhangAnalysis::RequestData(vtkInformation*, vtkInformationVector** i
     gl::addFieldArray(fd, gl::arrays::OverhangTotalArea, {result.totalArea});
     output->SetFieldData(fd);
     this->UpdateProgress(1.0);
-  } catch (const std::exception& e) {
-    output->Initialize();
-    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
-    {
-      vtkErrorMacro(<< e.what());
-    }
-  }
-  return 1;
+  });
 }
 
 void vtkGLOverhangAnalysis::PrintSelf(ostream& os, vtkIndent indent) {

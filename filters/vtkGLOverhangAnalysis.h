@@ -49,13 +49,13 @@ public:
   ///@}
 
 protected:
-  vtkGLOverhangAnalysis() = default;
+  vtkGLOverhangAnalysis();
   ~vtkGLOverhangAnalysis() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double ThresholdAngle = 135.0;
+  double ThresholdAngle;
 
 private:
   vtkGLOverhangAnalysis(const vtkGLOverhangAnalysis&) = delete;

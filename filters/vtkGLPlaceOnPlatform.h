@@ -17,15 +17,14 @@
  * Field data (added to the input's): `PlacementScale` (1 value: s) and
  * `PlacementTranslation` (3 values: t, mm), names in vtkGLArrayNames.h.
  *
- * Parameters:
- *   - Scale: uniform scale factor (default 1, must be > 0), e.g. 10 for a model in cm.
- *   - FitSize: target largest bounding-box side (mm, default 0 = off, must be >= 0). When > 0
- *     it replaces Scale.
- *   - CenterXY: move the bounding-box centre in x and y to 0 (default on).
+ * Parameters (core/placement/PlaceOnPlatform.h, defaults there): Scale, FitSize, CenterXY (see
+ * the Set/Get blocks below).
  *
- * Errors (vtkErrorMacro, empty output): Scale <= 0, FitSize < 0, an empty input, FitSize > 0 for
- * a model whose bounding box has no extent. Out-of-domain values are reported rather than
- * clamped so that a wrong unit is noticed.
+ * Errors (vtkErrorMacro, empty output, RequestData returns 0): Scale <= 0, FitSize < 0, an empty
+ * input, FitSize > 0 for a model whose bounding box has no extent, non-finite coordinates, a
+ * placed part whose largest side is outside 1 mm - 2 m (the likely unit mistake and its fix are
+ * named: "is the file in metres? use Scale 1000 or FitSize MM"). Out-of-domain values are
+ * reported rather than clamped so that a wrong unit is noticed.
  */
 #ifndef vtkGLPlaceOnPlatform_h
 #define vtkGLPlaceOnPlatform_h
@@ -59,14 +58,14 @@ public:
   ///@}
 
 protected:
-  vtkGLPlaceOnPlatform() = default;
+  vtkGLPlaceOnPlatform();
   ~vtkGLPlaceOnPlatform() override = default;
 
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double Scale = 1.0;
-  double FitSize = 0.0;
-  vtkTypeBool CenterXY = true;
+  double Scale;
+  double FitSize;
+  vtkTypeBool CenterXY;
 
 private:
   vtkGLPlaceOnPlatform(const vtkGLPlaceOnPlatform&) = delete;

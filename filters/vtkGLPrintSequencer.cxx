@@ -4,14 +4,15 @@
 #include "vtkGLMeshConversion.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
-#include "lattice/LatticeGraph.h"
-#include "sequence/NozzleModel.h"
+#include "lattice/LatticeInfill.h"
+#include "nozzle/NozzleModel.h"
 #include "sequence/PotentialCollisions.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
-#include "sequence/SkeletonTree.h"
+#include "skeleton/SkeletonTree.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -167,6 +168,12 @@ void printOrderPolyline(const gl::SkeletonTree& tree, const gl::PrintSequence& s
 vtkGLPrintSequencer::vtkGLPrintSequencer() {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(3);
+  const gl::SequenceOptions defaults;
+  this->Strategy = static_cast<int>(defaults.strategy);
+  this->RolloutCandidates = defaults.rolloutCandidates;
+  this->RetractionCost = defaults.retractionCost;
+  this->SampleSpacing = gl::MaterialSampling{}.spacing;
+  this->NumberOfThreads = gl::PotentialCollisionOptions{}.threads;
 }
 
 int vtkGLPrintSequencer::FillInputPortInformation(int, vtkInformation* info) {
@@ -178,40 +185,20 @@ int vtkGLPrintSequencer::RequestData(vtkInformation*, vtkInformationVector** inp
                                      vtkInformationVector* outputVector) {
   // Collective in an MPI run: the lattice and the skeleton on one process (vtkGLParallel.h).
   const gl::ParallelInputs inputs(inputVector, 2, outputVector);
-  vtkPolyData* outputs[3];
-  for (int port = 0; port < 3; ++port) {
-    outputs[port] = vtkPolyData::GetData(outputVector, port);
-    outputs[port]->Initialize();
-  }
+  gl::clearOutputs(outputVector);
   if (!inputs.Computes()) {
     return 1;  // another process has the inputs
   }
-  vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
-  vtkPolyData* skeleton = inputs.Get<vtkPolyData>(1);
-  auto aborted = [this, &outputs](double progress) {
-    if (!gl::progressAborts(this, progress)) {
-      return false;
-    }
-    for (vtkPolyData* out : outputs) {
-      out->Initialize();
-    }
-    return true;
-  };
-  try {
-    const gl::NozzleModel nozzle =
-        gl::nozzleModel(this->NozzleAngle, this->NozzleLength, this->HolderRadius,
-                        this->TipClearance, this->TipFaceRadius);
-
+  return gl::runRequest(this, outputVector, [&] {
+    vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
+    vtkPolyData* skeleton = inputs.Get<vtkPolyData>(1);
+    const gl::NozzleModel nozzle = gl::nozzleModel(this->Nozzle);
     const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
     gl::SkeletonTree tree = gl::toSkeletonTree(skeleton);
     gl::matchSkeletonToLattice(tree, graph);
-    if (aborted(0.05)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.05);
     const gl::MaterialSamples material = gl::sampleLatticeMaterial(graph, this->SampleSpacing);
-    if (aborted(0.1)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.1);
 
     gl::SequenceOptions options;
     options.strategy = static_cast<gl::SequenceStrategy>(this->Strategy);
@@ -228,43 +215,29 @@ int vtkGLPrintSequencer::RequestData(vtkInformation*, vtkInformationVector** inp
       pcgOptions.progress = gl::progressRange(this, 0.1, 0.6);
       pcgOptions.shouldAbort = gl::abortFlag(this);
       pcg = gl::computePotentialCollisions(material, nozzle, pcgOptions);
-      if (aborted(0.6)) {
-        return 1;
-      }
+      gl::checkAbort(this, 0.6);
     }
     const gl::PrintSequence seq =
         gl::sequencePrint(tree, material, needPcg ? &pcg : nullptr, options);
-    if (aborted(0.95)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.95);
 
+    vtkPolyData* outputs[3];
+    for (int port = 0; port < 3; ++port) {
+      outputs[port] = vtkPolyData::GetData(outputVector, port);
+    }
     sequencedLattice(lattice, graph, seq, outputs[0]);
     sequencedSkeleton(skeleton, seq, outputs[1]);
     printOrderPolyline(tree, seq, outputs[2]);
     for (vtkPolyData* out : outputs) {
-      addSequenceFieldData(tree, seq, pcg, this->NozzleAngle, out->GetFieldData());
+      addSequenceFieldData(tree, seq, pcg, nozzle.halfAngleDeg, out->GetFieldData());
     }
     this->UpdateProgress(1.0);
-  } catch (const std::exception& e) {
-    for (vtkPolyData* out : outputs) {
-      out->Initialize();
-    }
-    if (!this->GetAbortExecute())  // an abort is not an error: empty outputs, no message
-    {
-      vtkErrorMacro(<< e.what());
-    }
-  }
-  return 1;
+  });
 }
 
 void vtkGLPrintSequencer::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Strategy: " << this->Strategy << "\n";
-  os << indent << "NozzleAngle: " << this->NozzleAngle << " deg\n";
-  os << indent << "NozzleLength: " << this->NozzleLength << " mm\n";
-  os << indent << "HolderRadius: " << this->HolderRadius << " mm\n";
-  os << indent << "TipClearance: " << this->TipClearance << " mm\n";
-  os << indent << "TipFaceRadius: " << this->TipFaceRadius << " mm\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << " mm\n";
   os << indent << "RolloutCandidates: " << this->RolloutCandidates << "\n";
   os << indent << "RetractionCost: " << this->RetractionCost << " mm\n";

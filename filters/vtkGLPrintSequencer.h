@@ -7,7 +7,7 @@
  * material is sampled (every lattice vertex plus points every SampleSpacing mm along the edges,
  * core/sequence/PrintMaterial.h); for A4 and Best the potential collision sub-graphs (PCG: the
  * sub-graphs with material inside the nozzle volume swept over a sub-graph, which must not be
- * printed before it) are computed with the nozzle of core/sequence/NozzleModel.h (a cone of
+ * printed before it) are computed with the nozzle of core/nozzle/NozzleModel.h (a cone of
  * half-angle NozzleAngle about the layer normal, optionally cut at NozzleLength above which the
  * holder is a cylinder of radius HolderRadius). Strategies:
  *   - LPT (0): layer by layer, nearest next sub-graph within a layer;
@@ -55,12 +55,12 @@
 #define vtkGLPrintSequencer_h
 
 #include "GeoLatticeFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkGLNozzleAlgorithm.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLPrintSequencer : public vtkPolyDataAlgorithm {
+class GEOLATTICEFILTERS_EXPORT vtkGLPrintSequencer : public vtkGLNozzleAlgorithm {
 public:
   static vtkGLPrintSequencer* New();
-  vtkTypeMacro(vtkGLPrintSequencer, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkGLPrintSequencer, vtkGLNozzleAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Values of Strategy (= geolattice::SequenceStrategy).
@@ -75,37 +75,6 @@ public:
   /// Ordering strategy (default A4).
   vtkSetClampMacro(Strategy, int, LPT, BEST);
   vtkGetMacro(Strategy, int);
-  ///@}
-
-  ///@{
-  /// Nozzle half-angle NA (degrees, default 45; must be in (0, 90), checked in RequestData).
-  vtkSetMacro(NozzleAngle, double);
-  vtkGetMacro(NozzleAngle, double);
-  ///@}
-
-  ///@{
-  /// Nozzle length L: the cone is cut at this height above the tip (mm, default 0 = cone only).
-  vtkSetMacro(NozzleLength, double);
-  vtkGetMacro(NozzleLength, double);
-  ///@}
-
-  ///@{
-  /// Radius of the holder cylinder above the nozzle length (mm, default 0; used when L > 0).
-  vtkSetMacro(HolderRadius, double);
-  vtkGetMacro(HolderRadius, double);
-  ///@}
-
-  ///@{
-  /// Material at most this high above the tip along the axis is ignored (mm, default 0).
-  vtkSetMacro(TipClearance, double);
-  vtkGetMacro(TipClearance, double);
-  ///@}
-
-  ///@{
-  /// Material within this distance of the tip lies under the nozzle's flat face (the bead being
-  /// pressed), not inside the nozzle (mm, default 0.3, >= 0).
-  vtkSetMacro(TipFaceRadius, double);
-  vtkGetMacro(TipFaceRadius, double);
   ///@}
 
   ///@{
@@ -139,16 +108,11 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int Strategy = A4;
-  double NozzleAngle = 45.0;
-  double NozzleLength = 0.0;
-  double HolderRadius = 0.0;
-  double TipClearance = 0.1;
-  double TipFaceRadius = 0.5;
-  double SampleSpacing = 1.0;
-  int RolloutCandidates = 6;
-  double RetractionCost = 20.0;
-  int NumberOfThreads = 0;
+  int Strategy;
+  double SampleSpacing;
+  int RolloutCandidates;
+  double RetractionCost;
+  int NumberOfThreads;
 
 private:
   vtkGLPrintSequencer(const vtkGLPrintSequencer&) = delete;

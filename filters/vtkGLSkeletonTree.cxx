@@ -4,10 +4,11 @@
 #include "vtkGLMeshConversion.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
-#include "lattice/LatticeGraph.h"
-#include "sequence/SkeletonTree.h"
+#include "lattice/LatticeInfill.h"
+#include "skeleton/SkeletonTree.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
@@ -116,7 +117,7 @@ int vtkGLSkeletonTree::RequestData(vtkInformation*, vtkInformationVector** input
   }
   vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
   vtkUnstructuredGrid* grid = inputs.Get<vtkUnstructuredGrid>(1);
-  try {
+  return gl::runRequest(this, outputVector, [&] {
     const auto t0 = std::chrono::steady_clock::now();
     const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
     if (!grid) {
@@ -133,28 +134,17 @@ int vtkGLSkeletonTree::RequestData(vtkInformation*, vtkInformationVector** input
     for (vtkIdType i = 0; i < gammaArray->GetNumberOfTuples(); ++i) {
       gamma[i] = gammaArray->GetComponent(i, 0);
     }
-    if (gl::progressAborts(this, 0.2)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.2);
     gl::SkeletonTreeOptions options;
     options.progress = gl::progressRange(this, 0.2, 0.95);
     options.shouldAbort = gl::abortFlag(this);
     const gl::SkeletonTree tree = gl::buildSkeletonTree(mesh, gamma, graph, options);
-    if (gl::progressAborts(this, 0.95)) {
-      return 1;
-    }
+    gl::checkAbort(this, 0.95);
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     buildOutput(tree, seconds, output);
     this->UpdateProgress(1.0);
-  } catch (const std::exception& e) {
-    output->Initialize();
-    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
-    {
-      vtkErrorMacro(<< e.what());
-    }
-  }
-  return 1;
+  });
 }
 
 void vtkGLSkeletonTree::PrintSelf(ostream& os, vtkIndent indent) {

@@ -3,7 +3,7 @@
  * @brief   The skeleton tree of the lattice sub-graphs G_{i,j}: one node per connected
  *          sub-graph, an edge between adjacent sub-graphs of consecutive layers.
  *
- * Paper Section 2.3 (Algorithm 2, Figs. 9-10), core/sequence/SkeletonTree.h: G_{i,j} and
+ * Paper Section 2.3 (Algorithm 2, Figs. 9-10), core/skeleton/SkeletonTree.h: G_{i,j} and
  * G_{i+1,k} are adjacent iff they bound the same connected piece of the slab
  * φ_i <= γ <= φ_{i+1} of the tet mesh (decided volumetrically instead of by the paper's steepest
  * ascent/descent paths). The result is a DAG: where branches merge again a node has two lower

@@ -4,9 +4,10 @@
 #include "vtkGLMeshConversion.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -27,10 +28,18 @@
 
 vtkStandardNewMacro(vtkGLTetrahedralizeSurface);
 
+namespace gl = geolattice;
+
+vtkGLTetrahedralizeSurface::vtkGLTetrahedralizeSurface() {
+  const gl::TetrahedralizeOptions defaults;  // the defaults live in core
+  this->TargetEdgeLength = defaults.targetEdgeLength;
+  this->TargetTetCount = defaults.autoTargetTets;
+  this->RadiusEdgeRatio = defaults.radiusEdgeRatio;
+}
+
 namespace {
 // Circumradius / shortest edge of tet (a, b, c, d); infinity for a flat tet.
-double radiusEdgeRatio(const geolattice::Vec3& a, const geolattice::Vec3& b,
-                       const geolattice::Vec3& c, const geolattice::Vec3& d) {
+double radiusEdgeRatio(const gl::Vec3& a, const gl::Vec3& b, const gl::Vec3& c, const gl::Vec3& d) {
   // Circumcentre x - a solves 2 (p - a) . (x - a) = |p - a|^2 for p = b, c, d.
   Eigen::Matrix3d m;
   m.row(0) = 2.0 * (b - a).transpose();
@@ -71,27 +80,21 @@ int vtkGLTetrahedralizeSurface::FillInputPortInformation(int, vtkInformation* in
 int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                             vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole surface on one process (vtkGLParallel.h).
-  const geolattice::ParallelInputs inputs(inputVector, 1, outputVector);
+  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
-  if (!output) {
-    vtkErrorMacro(<< "output must be a vtkUnstructuredGrid");
-    return 1;
-  }
   output->Initialize();
   if (!inputs.Computes()) {
     return 1;  // another process has the surface
   }
   vtkPolyData* input = inputs.Get<vtkPolyData>(0);
-  try {
+  return gl::runRequest(this, outputVector, [&] {
     if (!input) {
-      throw geolattice::GeoLatticeError("input must be a vtkPolyData surface");
+      throw gl::GeoLatticeError("input must be a vtkPolyData surface");
     }
-    const geolattice::TriangleSurface surface = geolattice::toTriangleSurface(input);
-    if (geolattice::progressAborts(this, 0.05)) {
-      return 1;
-    }
+    const gl::TriangleSurface surface = gl::toTriangleSurface(input);
+    gl::checkAbort(this, 0.05);
 
-    geolattice::TetrahedralizeOptions options;
+    gl::TetrahedralizeOptions options;
     options.targetEdgeLength = this->TargetEdgeLength;
     options.autoTargetTets = this->TargetTetCount;
     options.radiusEdgeRatio = this->RadiusEdgeRatio;
@@ -110,23 +113,18 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
       }
       return this->GetAbortExecute() != 0;
     };
-    const geolattice::TetrahedralizeResult result =
-        geolattice::tetrahedralizeSurface(surface, options);
-    if (geolattice::progressAborts(this, 0.8)) {
-      return 1;
-    }
+    const gl::TetrahedralizeResult result = gl::tetrahedralizeSurface(surface, options);
+    gl::checkAbort(this, 0.8);
 
-    geolattice::fromTetMesh(result.mesh, output);
+    gl::fromTetMesh(result.mesh, output);
     vtkNew<vtkDoubleArray> quality;
-    quality->SetName(geolattice::arrays::TetQuality);
+    quality->SetName(gl::arrays::TetQuality);
     quality->SetNumberOfValues(static_cast<vtkIdType>(result.mesh.tets.size()));
     const size_t tetCount = result.mesh.tets.size();
     const size_t stride = std::max<size_t>(1, tetCount / 16);
     for (size_t t = 0; t < tetCount; ++t) {
-      if (t % stride == 0 &&
-          geolattice::progressAborts(this, 0.8 + 0.15 * static_cast<double>(t) / tetCount)) {
-        output->Initialize();
-        return 1;
+      if (t % stride == 0) {
+        gl::checkAbort(this, 0.8 + 0.15 * static_cast<double>(t) / tetCount);
       }
       const auto& tet = result.mesh.tets[t];
       const auto& p = result.mesh.points;
@@ -136,20 +134,13 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     output->GetCellData()->AddArray(quality);
 
     vtkFieldData* fd = output->GetFieldData();
-    addValue(fd, geolattice::arrays::TargetEdgeLength, result.targetEdgeLength);
-    addValue(fd, geolattice::arrays::MeanEdgeLength, result.meanEdgeLength);
+    addValue(fd, gl::arrays::TargetEdgeLength, result.targetEdgeLength);
+    addValue(fd, gl::arrays::MeanEdgeLength, result.meanEdgeLength);
     vtkNew<vtkIntArray> count;
-    count->SetName(geolattice::arrays::TetCount);
+    count->SetName(gl::arrays::TetCount);
     count->InsertNextValue(result.tetCount);
     fd->AddArray(count);
-    addValue(fd, geolattice::arrays::TetrahedralizeSeconds, result.seconds);
+    addValue(fd, gl::arrays::TetrahedralizeSeconds, result.seconds);
     this->UpdateProgress(1.0);
-  } catch (const std::exception& e) {
-    output->Initialize();
-    // An abort requested by the user is not an error: empty output, no message.
-    if (!this->GetAbortExecute()) {
-      vtkErrorMacro(<< e.what());
-    }
-  }
-  return 1;
+  });
 }

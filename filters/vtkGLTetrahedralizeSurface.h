@@ -4,7 +4,7 @@
  *
  * The geodesic distance fields of the paper (Li et al., Sec. 3) are computed on a tet mesh of
  * the part; this filter makes that mesh from the part's surface with TetGen 1.5 (constrained
- * Delaunay + Delaunay refinement, core/tetrahedralize/SurfaceTetrahedralizer.h). TetGen runs
+ * Delaunay + Delaunay refinement, core/tetrahedralize/TetrahedralizeSurface.h). TetGen runs
  * in a child process, so a TetGen failure is reported instead of ending ParaView.
  *
  * Input:  vtkPolyData whose polygons are triangles forming a closed, edge-manifold,
@@ -68,15 +68,15 @@ public:
   ///@}
 
 protected:
-  vtkGLTetrahedralizeSurface() = default;
+  vtkGLTetrahedralizeSurface();
   ~vtkGLTetrahedralizeSurface() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double TargetEdgeLength = 0.0;
-  int TargetTetCount = 75000;
-  double RadiusEdgeRatio = 1.414;
+  double TargetEdgeLength;
+  int TargetTetCount;
+  double RadiusEdgeRatio;
 
 private:
   vtkGLTetrahedralizeSurface(const vtkGLTetrahedralizeSurface&) = delete;

@@ -4,10 +4,11 @@
 #include "vtkGLMeshConversion.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
-#include "lattice/LatticeGraph.h"
-#include "sequence/SkeletonTree.h"
+#include "lattice/LatticeInfill.h"
+#include "skeleton/SkeletonTree.h"
 #include "toolpath/ToolpathPlanner.h"
 
 #include <vtkAbstractArray.h>
@@ -190,6 +191,7 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   count(gl::arrays::ToolpathCollidingStations, path.collidingStations);
   count(gl::arrays::ToolpathTiltedStations, path.tiltedStations);
   count(gl::arrays::ToolpathUnclearedStations, path.unclearedStations);
+  count(gl::arrays::ToolpathCollisionFree, path.unclearedStations == 0 ? 1 : 0);
   count(gl::arrays::ToolpathMaxAxisTilt, path.maxAxisTiltDeg);
   count(gl::arrays::ToolpathReplannedHops, path.replannedHops);
   count(gl::arrays::ToolpathSeconds, path.seconds);
@@ -247,6 +249,22 @@ void cutToolpath(vtkPolyData* full, vtkIdType last, vtkPolyData* out) {
 
 vtkGLToolpathPlanner::vtkGLToolpathPlanner() {
   this->SetNumberOfInputPorts(2);
+  const gl::ToolpathOptions d;  // the defaults live in core
+  this->PathWidth = d.pathWidth;
+  this->FilamentDiameter = 2.0 * d.filamentRadius;
+  this->FlowCorrection = d.flowCorrection;
+  this->PrintFeedRate = d.printFeedRate;
+  this->AirFeedRate = d.airFeedRate;
+  this->ThicknessCap = d.thicknessCap;
+  this->MaxTurnAngle = d.maxTurnDeg;
+  this->SafeMargin = d.safeMargin;
+  this->Lift = d.lift;
+  this->Retraction = d.retraction;
+  this->SupportPerimeter = d.supportPerimeter;
+  this->ToothLength = d.toothLength;
+  this->MaxSegmentLength = d.maxSegmentLength;
+  this->MaxAxisTilt = d.clearance.maxTiltDeg;
+  this->TiltBlendLength = d.clearance.blendLength;
 }
 
 vtkGLToolpathPlanner::~vtkGLToolpathPlanner() = default;
@@ -254,29 +272,6 @@ vtkGLToolpathPlanner::~vtkGLToolpathPlanner() = default;
 int vtkGLToolpathPlanner::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
-}
-
-std::array<double, 20> vtkGLToolpathPlanner::Parameters() const {
-  return {this->PathWidth,
-          this->FilamentDiameter,
-          this->FlowCorrection,
-          this->PrintFeedRate,
-          this->AirFeedRate,
-          this->ThicknessCap,
-          this->MaxTurnAngle,
-          this->SafeMargin,
-          this->Lift,
-          this->Retraction,
-          static_cast<double>(this->SupportPerimeter),
-          this->ToothLength,
-          this->MaxSegmentLength,
-          this->NozzleAngle,
-          this->NozzleLength,
-          this->HolderRadius,
-          this->TipClearance,
-          this->TipFaceRadius,
-          this->MaxAxisTilt,
-          this->TiltBlendLength};
 }
 
 int vtkGLToolpathPlanner::RequestInformation(vtkInformation*, vtkInformationVector**,
@@ -311,11 +306,10 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
   }
   vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
   vtkPolyData* skeleton = inputs.Get<vtkPolyData>(1);
-  try {
-    const bool cached = this->Planned && lattice && skeleton &&
-                        lattice->GetMTime() == this->PlannedLatticeTime &&
-                        skeleton->GetMTime() == this->PlannedSkeletonTime &&
-                        this->Parameters() == this->PlannedParameters;
+  const int ok = gl::runRequest(this, outputVector, [&] {
+    const bool cached =
+        this->Planned && lattice && skeleton && lattice->GetMTime() == this->PlannedLatticeTime &&
+        skeleton->GetMTime() == this->PlannedSkeletonTime && this->GetMTime() == this->PlannedMTime;
     if (!cached) {
       this->Planned = nullptr;
       if (!(this->FilamentDiameter > 0) || !std::isfinite(this->FilamentDiameter)) {
@@ -331,9 +325,7 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
       const std::vector<int> order = printOrderOf(lattice);
       gl::SkeletonTree tree = gl::toSkeletonTree(skeleton);
       gl::matchSkeletonToLattice(tree, graph);
-      if (gl::progressAborts(this, 0.1)) {
-        return 1;
-      }
+      gl::checkAbort(this, 0.1);
 
       gl::ToolpathOptions options;
       options.pathWidth = this->PathWidth;
@@ -349,28 +341,23 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
       options.supportPerimeter = this->SupportPerimeter != 0;
       options.toothLength = this->ToothLength;
       options.maxSegmentLength = this->MaxSegmentLength;
-      options.nozzle = gl::nozzleModel(this->NozzleAngle, this->NozzleLength, this->HolderRadius,
-                                       this->TipClearance, this->TipFaceRadius);
+      options.nozzle = gl::nozzleModel(this->Nozzle);
       options.clearance.maxTiltDeg = this->MaxAxisTilt;
       options.clearance.blendLength = this->TiltBlendLength;
       // The planning is one core call (core/toolpath): progress before and after it.
       const gl::Toolpath path = gl::planToolpath(graph, tree, order, options);
-      if (gl::progressAborts(this, 0.8)) {
-        return 1;  // nothing cached: the next update plans again
-      }
+      gl::checkAbort(this, 0.8);
 
       auto planned = vtkSmartPointer<vtkPolyData>::New();
       buildToolpath(path, graph, planned);
-      if (gl::progressAborts(this, 0.95)) {
-        return 1;
-      }
+      gl::checkAbort(this, 0.95);
       if (vtkDataArray* edges = lattice->GetFieldData()->GetArray(gl::arrays::SkeletonEdges)) {
         planned->GetFieldData()->AddArray(edges);
       }
       this->Planned = planned;
       this->PlannedLatticeTime = lattice->GetMTime();
       this->PlannedSkeletonTime = skeleton->GetMTime();
-      this->PlannedParameters = this->Parameters();
+      this->PlannedMTime = this->GetMTime();
     }
 
     // The print replay: at time p the points 0 .. round(p (N - 1)).
@@ -392,15 +379,11 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
       output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), p);
     }
     this->UpdateProgress(1.0);
-  } catch (const std::exception& e) {
-    this->Planned = nullptr;
-    output->Initialize();
-    if (!this->GetAbortExecute())  // an abort is not an error: empty output, no message
-    {
-      vtkErrorMacro(<< e.what());
-    }
+  });
+  if (output->GetNumberOfPoints() == 0) {
+    this->Planned = nullptr;  // failed or aborted: plan again next time
   }
-  return 1;
+  return ok;
 }
 
 void vtkGLToolpathPlanner::PrintSelf(ostream& os, vtkIndent indent) {
@@ -418,11 +401,6 @@ void vtkGLToolpathPlanner::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "SupportPerimeter: " << this->SupportPerimeter << "\n";
   os << indent << "ToothLength: " << this->ToothLength << " mm\n";
   os << indent << "MaxSegmentLength: " << this->MaxSegmentLength << " mm\n";
-  os << indent << "NozzleAngle: " << this->NozzleAngle << " deg\n";
-  os << indent << "NozzleLength: " << this->NozzleLength << " mm\n";
-  os << indent << "HolderRadius: " << this->HolderRadius << " mm\n";
-  os << indent << "TipClearance: " << this->TipClearance << " mm\n";
-  os << indent << "TipFaceRadius: " << this->TipFaceRadius << " mm\n";
   os << indent << "MaxAxisTilt: " << this->MaxAxisTilt << " deg\n";
   os << indent << "TiltBlendLength: " << this->TiltBlendLength << " mm\n";
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";

@@ -85,15 +85,13 @@
 #define vtkGLToolpathPlanner_h
 
 #include "GeoLatticeFiltersModule.h"
-#include "vtkPolyDataAlgorithm.h"
+#include "vtkGLNozzleAlgorithm.h"
 #include "vtkSmartPointer.h"  // for the cached toolpath
 
-#include <array>  // for the cached parameters
-
-class GEOLATTICEFILTERS_EXPORT vtkGLToolpathPlanner : public vtkPolyDataAlgorithm {
+class GEOLATTICEFILTERS_EXPORT vtkGLToolpathPlanner : public vtkGLNozzleAlgorithm {
 public:
   static vtkGLToolpathPlanner* New();
-  vtkTypeMacro(vtkGLToolpathPlanner, vtkPolyDataAlgorithm);
+  vtkTypeMacro(vtkGLToolpathPlanner, vtkGLNozzleAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -177,23 +175,6 @@ public:
   ///@}
 
   ///@{
-  /// The nozzle kept clear of earlier material by tilting the axis (the same parameters as
-  /// vtkGLPrintSequencer and vtkGLCollisionVerifier): half-angle NA (degrees, default 45, in
-  /// (0, 90)), length (mm, default 0 = cone only), holder radius (mm, default 0), tip clearance
-  /// (mm, default 0.1), tip face radius (mm, default 0.5).
-  vtkSetMacro(NozzleAngle, double);
-  vtkGetMacro(NozzleAngle, double);
-  vtkSetMacro(NozzleLength, double);
-  vtkGetMacro(NozzleLength, double);
-  vtkSetMacro(HolderRadius, double);
-  vtkGetMacro(HolderRadius, double);
-  vtkSetMacro(TipClearance, double);
-  vtkGetMacro(TipClearance, double);
-  vtkSetMacro(TipFaceRadius, double);
-  vtkGetMacro(TipFaceRadius, double);
-  ///@}
-
-  ///@{
   /// Largest tilt of the nozzle axis away from the layer normal where the normal would drive the
   /// nozzle into earlier material of the path (degrees, default 15, in [0, 60]; 0 = the paper's
   /// axis ∇γ everywhere). The tilt fades out over TiltBlendLength mm of path on each side
@@ -219,26 +200,21 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double PathWidth = 0.6;
-  double FilamentDiameter = 1.75;
-  double FlowCorrection = 0.95;
-  double PrintFeedRate = 10.0;
-  double AirFeedRate = 50.0;
-  double ThicknessCap = 1.5;
-  double MaxTurnAngle = 5.0;
-  double SafeMargin = 5.0;
-  double Lift = 2.0;
-  double Retraction = 1.0;
-  vtkTypeBool SupportPerimeter = 1;
-  double ToothLength = 0.0;
-  double MaxSegmentLength = 1.0;
-  double NozzleAngle = 45.0;
-  double NozzleLength = 0.0;
-  double HolderRadius = 0.0;
-  double TipClearance = 0.1;
-  double TipFaceRadius = 0.5;
-  double MaxAxisTilt = 15.0;
-  double TiltBlendLength = 5.0;
+  double PathWidth;
+  double FilamentDiameter;
+  double FlowCorrection;
+  double PrintFeedRate;
+  double AirFeedRate;
+  double ThicknessCap;
+  double MaxTurnAngle;
+  double SafeMargin;
+  double Lift;
+  double Retraction;
+  vtkTypeBool SupportPerimeter;
+  double ToothLength;
+  double MaxSegmentLength;
+  double MaxAxisTilt;
+  double TiltBlendLength;
   int NumberOfTimeSteps = 200;
 
 private:
@@ -246,13 +222,12 @@ private:
   void operator=(const vtkGLToolpathPlanner&) = delete;
 
   /// The parameters as the cache compares them.
-  std::array<double, 20> Parameters() const;
 
   // Cache of the last successful planning: a new requested time only re-cuts it.
   vtkSmartPointer<vtkPolyData> Planned;  ///< the whole toolpath
   vtkMTimeType PlannedLatticeTime = 0;   ///< MTime of input 0 it was planned from
   vtkMTimeType PlannedSkeletonTime = 0;  ///< MTime of input 1
-  std::array<double, 20> PlannedParameters{};
+  vtkMTimeType PlannedMTime = 0;         ///< this filter's MTime (parameters, nozzle)
 };
 
 #endif

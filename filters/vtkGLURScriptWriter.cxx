@@ -4,9 +4,10 @@
 #include "vtkGLOutputFiles.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
-#include "program/URScriptProgram.h"
+#include "program/URScriptWriter.h"
 #include "robot/RobotPathSolver.h"
 
 #include <vtkDemandDrivenPipeline.h>
@@ -47,26 +48,28 @@ std::string describeUnreachable(const std::vector<vtkIdType>& unreachable, size_
 }  // namespace
 
 vtkGLURScriptWriter::vtkGLURScriptWriter() {
-  this->SetRobot("ur5");
+  // The defaults live in core: the cell, the program and the path solver options.
+  const gl::RobotCell cell;
+  const gl::URScriptOptions program;
+  this->SetRobot(cell.robot.name.c_str());
+  const gl::UrPose pose = gl::toUrPose(cell.partOnFlange);
+  for (int k = 0; k < 3; ++k) {
+    this->NozzleTip[k] = cell.nozzleTip[k];
+    this->NozzleAxis[k] = cell.nozzleAxis[k];
+  }
+  for (int k = 0; k < 6; ++k) {
+    this->PartOnFlange[k] = pose[k];
+  }
+  this->MaxFileBytes = static_cast<vtkIdType>(program.maxFileBytes);
+  this->SpeedFactor = program.speedFactor;
+  this->MaxFilamentRate = program.maxFilamentRate;
+  this->MaxBlend = program.maxBlend;
+  this->MaxJointStep = gl::RobotPathOptions{}.maxJointStepDeg;
+  this->AllowUnreachable = false;
 }
 
 vtkGLURScriptWriter::~vtkGLURScriptWriter() {
-  this->SetFileName(nullptr);
   this->SetRobot(nullptr);
-}
-
-int vtkGLURScriptWriter::FillInputPortInformation(int, vtkInformation* info) {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
-vtkTypeBool vtkGLURScriptWriter::ProcessRequest(vtkInformation* request,
-                                                vtkInformationVector** inputVector,
-                                                vtkInformationVector* outputVector) {
-  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT())) {
-    gl::requestEndOfTimeRange(inputVector);
-  }
-  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
 }
 
 std::string vtkGLURScriptWriter::ProgramFileName(const std::string& fileName, int k) {
@@ -104,6 +107,7 @@ void vtkGLURScriptWriter::ResetResults() {
   this->NumberOfWaypoints = 0;
   this->NumberOfMoves = 0;
   this->MaxJointStepDeg = 0;
+  this->LargeJointSteps = 0;
   this->MaxTipError = 0;
   this->MaxAxisErrorDeg = 0;
   this->MaxJointSpeedDegS = 0;
@@ -121,158 +125,142 @@ void vtkGLURScriptWriter::WriteData() {
   if (!inputs.Computes()) {
     return;  // another process writes the program
   }
-  try {
-    if (!this->FileName || !*this->FileName) {
-      throw gl::GeoLatticeError("URScript writer: no FileName given");
-    }
-    const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
-    this->NumberOfWaypoints = static_cast<vtkIdType>(path.points.size());
-    if (gl::progressAborts(this, 0.1)) {
-      this->ResetResults();
-      return;
-    }
+  this->SetErrorCode(gl::runWrite(
+      this,
+      [&] {
+        this->CheckFileName("URScript writer");
+        const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
+        this->CheckCollisionVerdict(inputs.Get<vtkPolyData>(0), "URScript writer");
+        this->NumberOfWaypoints = static_cast<vtkIdType>(path.points.size());
+        gl::checkAbort(this, 0.1);
 
-    // The cell.
-    gl::RobotCell cell;
-    cell.robot = gl::robotModelByName(this->Robot ? this->Robot : "");
-    if (!allFinite(this->NozzleTip, 3)) {
-      throw gl::GeoLatticeError("URScript writer: the nozzle tip must be finite");
-    }
-    cell.nozzleTip = Eigen::Vector3d(this->NozzleTip[0], this->NozzleTip[1], this->NozzleTip[2]);
-    const Eigen::Vector3d axis(this->NozzleAxis[0], this->NozzleAxis[1], this->NozzleAxis[2]);
-    if (!axis.allFinite() || !(axis.norm() > 1e-12)) {
-      throw gl::GeoLatticeError(
-          "URScript writer: the nozzle axis must be a finite, non-zero vector");
-    }
-    cell.nozzleAxis = axis.normalized();
-    if (!allFinite(this->PartOnFlange, 6)) {
-      throw gl::GeoLatticeError("URScript writer: the part-on-flange pose must be finite");
-    }
-    cell.partOnFlange =
-        gl::toIsometry({this->PartOnFlange[0], this->PartOnFlange[1], this->PartOnFlange[2],
-                        this->PartOnFlange[3], this->PartOnFlange[4], this->PartOnFlange[5]});
-    cell.partScale = 0.001;  // toolpath mm -> m
+        // The cell.
+        gl::RobotCell cell;
+        cell.robot = gl::robotModelByName(this->Robot ? this->Robot : "");
+        if (!allFinite(this->NozzleTip, 3)) {
+          throw gl::GeoLatticeError("URScript writer: the nozzle tip must be finite");
+        }
+        cell.nozzleTip =
+            Eigen::Vector3d(this->NozzleTip[0], this->NozzleTip[1], this->NozzleTip[2]);
+        const Eigen::Vector3d axis(this->NozzleAxis[0], this->NozzleAxis[1], this->NozzleAxis[2]);
+        if (!axis.allFinite() || !(axis.norm() > 1e-12)) {
+          throw gl::GeoLatticeError(
+              "URScript writer: the nozzle axis must be a finite, non-zero vector");
+        }
+        cell.nozzleAxis = axis.normalized();
+        if (!allFinite(this->PartOnFlange, 6)) {
+          throw gl::GeoLatticeError("URScript writer: the part-on-flange pose must be finite");
+        }
+        cell.partOnFlange =
+            gl::toIsometry({this->PartOnFlange[0], this->PartOnFlange[1], this->PartOnFlange[2],
+                            this->PartOnFlange[3], this->PartOnFlange[4], this->PartOnFlange[5]});
+        cell.partScale = 0.001;  // toolpath mm -> m
 
-    // The program options (checked here with the property names; the core checks them again).
-    if (this->MaxFileBytes < 10000) {
-      throw gl::GeoLatticeError(
-          "URScript writer: the maximum file size must be >= 10000 bytes (got " +
-          std::to_string(this->MaxFileBytes) + ")");
-    }
-    if (!(this->SpeedFactor > 0 && this->SpeedFactor <= 1)) {
-      throw gl::GeoLatticeError("URScript writer: the speed factor must be in (0, 1] (got " +
-                                std::to_string(this->SpeedFactor) + ")");
-    }
-    if (!(this->MaxFilamentRate > 0) || !std::isfinite(this->MaxFilamentRate)) {
-      throw gl::GeoLatticeError(
-          "URScript writer: the maximum filament rate must be > 0 mm/s (got " +
-          std::to_string(this->MaxFilamentRate) + ")");
-    }
-    if (!(this->MaxBlend >= 0) || !std::isfinite(this->MaxBlend)) {
-      throw gl::GeoLatticeError("URScript writer: the maximum blend radius must be >= 0 m (got " +
-                                std::to_string(this->MaxBlend) + ")");
-    }
-    gl::URScriptOptions options;
-    options.maxFileBytes = static_cast<size_t>(this->MaxFileBytes);
-    options.speedFactor = this->SpeedFactor;
-    options.maxFilamentRate = this->MaxFilamentRate;
-    options.maxBlend = this->MaxBlend;
-    options.programName = ProgramName(this->FileName);
+        // The program options (checked here with the property names; the core checks them again).
+        if (this->MaxFileBytes < 10000) {
+          throw gl::GeoLatticeError(
+              "URScript writer: the maximum file size must be >= 10000 bytes (got " +
+              std::to_string(this->MaxFileBytes) + ")");
+        }
+        if (!(this->SpeedFactor > 0 && this->SpeedFactor <= 1)) {
+          throw gl::GeoLatticeError("URScript writer: the speed factor must be in (0, 1] (got " +
+                                    std::to_string(this->SpeedFactor) + ")");
+        }
+        if (!(this->MaxFilamentRate > 0) || !std::isfinite(this->MaxFilamentRate)) {
+          throw gl::GeoLatticeError(
+              "URScript writer: the maximum filament rate must be > 0 mm/s (got " +
+              std::to_string(this->MaxFilamentRate) + ")");
+        }
+        if (!(this->MaxBlend >= 0) || !std::isfinite(this->MaxBlend)) {
+          throw gl::GeoLatticeError(
+              "URScript writer: the maximum blend radius must be >= 0 m (got " +
+              std::to_string(this->MaxBlend) + ")");
+        }
+        gl::URScriptOptions options;
+        options.maxFileBytes = static_cast<size_t>(this->MaxFileBytes);
+        options.speedFactor = this->SpeedFactor;
+        options.maxFilamentRate = this->MaxFilamentRate;
+        options.maxBlend = this->MaxBlend;
+        options.programName = ProgramName(this->FileName);
 
-    // Joints along the path (one core call: progress before and after it).
-    if (!(this->MaxJointStep > 0) || !std::isfinite(this->MaxJointStep)) {
-      throw gl::GeoLatticeError(
-          "URScript writer: the maximum joint step must be > 0 degrees (got " +
-          std::to_string(this->MaxJointStep) + ")");
-    }
-    gl::RobotPathOptions pathOptions;
-    pathOptions.maxJointStepDeg = this->MaxJointStep;
-    const gl::RobotPath robotPath =
-        gl::solveRobotPath(cell, path.points, path.normals, pathOptions);
-    if (gl::progressAborts(this, 0.5)) {
-      this->ResetResults();
-      return;
-    }
-    this->Unreachable.assign(robotPath.unreachable.begin(), robotPath.unreachable.end());
-    std::sort(this->Unreachable.begin(), this->Unreachable.end());
-    this->IKBranch = robotPath.branch;
-    this->MaxJointStepDeg = robotPath.maxJointStepDeg;
-    this->MaxTipError = robotPath.maxTipError;
-    this->MaxAxisErrorDeg = robotPath.maxAxisErrorDeg;
-    this->MinSingularity[0] = robotPath.minSingularity.shoulder;
-    this->MinSingularity[1] = robotPath.minSingularity.elbow;
-    this->MinSingularity[2] = robotPath.minSingularity.wrist;
-    this->SolveSeconds = robotPath.seconds;
-    if (!robotPath.largeSteps.empty()) {
-      std::ostringstream text;
-      text << "URScript writer: a joint of the " << cell.robot.name << " jumps by "
-           << robotPath.maxJointStepDeg << " degrees at toolpath point " << robotPath.maxJointStepAt
-           << " (" << robotPath.largeSteps.size() << " steps above MaxJointStep "
-           << this->MaxJointStep
-           << " degrees; a wrist flip or a joint limit): nothing written; move the nozzle tip or "
-              "the part on the "
-              "flange, or raise MaxJointStep";
-      throw gl::GeoLatticeError(text.str());
-    }
-    if (!this->Unreachable.empty()) {
-      const std::string text =
-          describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name);
-      if (!this->AllowUnreachable) {
-        throw gl::GeoLatticeError(text +
-                                  ": nothing written; move the nozzle tip or the part on the "
-                                  "flange (AllowUnreachable writes it anyway)");
-      }
-      vtkWarningMacro(
-          << text << ": written anyway (AllowUnreachable); the robot holds still at those points");
-    }
+        // Joints along the path (one core call: progress before and after it).
+        // A larger bound would let a wrist flip into a print move: it is not a way out.
+        if (!(this->MaxJointStep > 0) || !(this->MaxJointStep <= 30)) {
+          throw gl::GeoLatticeError(
+              "URScript writer: MaxJointStep must be in (0, 30] degrees (got " +
+              std::to_string(this->MaxJointStep) + ")");
+        }
+        gl::RobotPathOptions pathOptions;
+        pathOptions.maxJointStepDeg = this->MaxJointStep;
+        const gl::RobotPath robotPath =
+            gl::solveRobotPath(cell, path.points, path.normals, pathOptions);
+        gl::checkAbort(this, 0.5);
+        this->Unreachable.assign(robotPath.unreachable.begin(), robotPath.unreachable.end());
+        std::sort(this->Unreachable.begin(), this->Unreachable.end());
+        this->IKBranch = robotPath.branch;
+        this->MaxJointStepDeg = robotPath.maxJointStepDeg;
+        this->MaxTipError = robotPath.maxTipError;
+        this->MaxAxisErrorDeg = robotPath.maxAxisErrorDeg;
+        this->MinSingularity[0] = robotPath.minSingularity.shoulder;
+        this->MinSingularity[1] = robotPath.minSingularity.elbow;
+        this->MinSingularity[2] = robotPath.minSingularity.wrist;
+        this->SolveSeconds = robotPath.seconds;
+        this->LargeJointSteps = static_cast<vtkIdType>(robotPath.largeSteps.size());
+        if (!robotPath.largeSteps.empty()) {
+          std::ostringstream text;
+          text << "URScript writer: a joint of the " << cell.robot.name << " jumps by "
+               << robotPath.maxJointStepDeg << " degrees at toolpath point "
+               << robotPath.maxJointStepAt << " (" << robotPath.largeSteps.size()
+               << " steps above MaxJointStep " << this->MaxJointStep
+               << " degrees: a wrist flip or a joint limit on this cell layout); nothing written: "
+                  "move the nozzle tip or the part on the flange";
+          throw gl::GeoLatticeError(text.str());
+        }
+        if (!this->Unreachable.empty()) {
+          const std::string text =
+              describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name);
+          if (!this->AllowUnreachable) {
+            throw gl::GeoLatticeError(text +
+                                      ": nothing written; move the nozzle tip or the part on the "
+                                      "flange (AllowUnreachable writes it anyway)");
+          }
+          vtkWarningMacro(
+              << text
+              << ": written anyway (AllowUnreachable); the robot holds still at those points");
+        }
 
-    // The program files, all-or-nothing.
-    std::vector<std::string> names;
-    gl::AtomicFileSet files;
-    const gl::ProgramInput input{&path.points, &path.extrusion, &path.feedRate, &path.kind};
-    const gl::ProgramStats stats =
-        gl::writeURScript(cell, robotPath, input, options, [&](size_t k) -> std::ostream& {
-          names.push_back(ProgramFileName(this->FileName, static_cast<int>(k)));
-          return files.open(names.back());
-        });
-    if (gl::progressAborts(this, 0.9)) {
-      this->ResetResults();
-      return;  // the temporary files go with `files`: nothing written
-    }
-    files.commit();
-    this->FilesWritten = names;
-    this->NumberOfMoves = static_cast<vtkIdType>(stats.moves);
-    this->MaxJointSpeedDegS = stats.maxJointSpeedDegS;
-    this->Duration = stats.duration;
-    this->MaxLineLength = static_cast<vtkIdType>(stats.maxLineLength);
+        // The program files, all-or-nothing.
+        std::vector<std::string> names;
+        gl::AtomicFileSet files;
+        const gl::ProgramInput input{&path.points, &path.extrusion, &path.feedRate, &path.kind};
+        const gl::ProgramStats stats =
+            gl::writeURScript(cell, robotPath, input, options, [&](size_t k) -> std::ostream& {
+              names.push_back(ProgramFileName(this->FileName, static_cast<int>(k)));
+              return files.open(names.back());
+            });
+        gl::checkAbort(this, 0.9);
+        files.commit();
+        this->FilesWritten = names;
+        this->NumberOfMoves = static_cast<vtkIdType>(stats.moves);
+        this->MaxJointSpeedDegS = stats.maxJointSpeedDegS;
+        this->Duration = stats.duration;
+        this->MaxLineLength = static_cast<vtkIdType>(stats.maxLineLength);
 
-    // Numbered files of an earlier, longer program.
-    std::error_code ec;
-    for (int k = static_cast<int>(names.size());; ++k) {
-      const std::string stale = ProgramFileName(this->FileName, k);
-      if (!std::filesystem::is_regular_file(stale, ec) || !std::filesystem::remove(stale, ec)) {
-        break;
-      }
-    }
-    this->UpdateProgress(1.0);
-  } catch (const gl::FileWriteError& e) {
-    this->FilesWritten.clear();
-    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    vtkErrorMacro(<< e.what());
-  } catch (const std::exception& e) {
-    this->FilesWritten.clear();
-    if (this->GetAbortExecute()) {
-      this->ResetResults();  // an abort is not an error: nothing written, no message
-      return;
-    }
-    this->SetErrorCode(vtkErrorCode::UserError);
-    vtkErrorMacro(<< e.what());
-  }
+        // Numbered files of an earlier, longer program.
+        std::error_code ec;
+        for (int k = static_cast<int>(names.size());; ++k) {
+          const std::string stale = ProgramFileName(this->FileName, k);
+          if (!std::filesystem::is_regular_file(stale, ec) || !std::filesystem::remove(stale, ec)) {
+            break;
+          }
+        }
+        this->UpdateProgress(1.0);
+      },
+      [this] { this->FilesWritten.clear(); }, [this] { this->ResetResults(); }));
 }
 
 void vtkGLURScriptWriter::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "Robot: " << (this->Robot ? this->Robot : "(none)") << "\n";
   os << indent << "NozzleTip: " << this->NozzleTip[0] << " " << this->NozzleTip[1] << " "
      << this->NozzleTip[2] << " m\n";

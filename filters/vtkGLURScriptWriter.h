@@ -4,7 +4,7 @@
  *          UR5 / UR5e holds the part under a fixed nozzle), split into numbered files below a
  *          size limit.
  *
- * Paper Section 4 (Fig. 19), core/robot/RobotPathSolver.h and core/program/URScriptProgram.h:
+ * Paper Section 4 (Fig. 19), core/robot/RobotPathSolver.h and core/program/URScriptWriter.h:
  * for every toolpath point the robot puts the part so that the point is at the nozzle tip with
  * its nozzle axis along the nozzle body; the free rotation ψ about the nozzle axis is chosen
  * along the path (dynamic programming over the 8 IK branches), joints stay continuous. The
@@ -66,24 +66,18 @@
 #define vtkGLURScriptWriter_h
 
 #include "GeoLatticeFiltersModule.h"
-#include "vtkWriter.h"
+#include "vtkGLToolpathWriter.h"
 
 #include <string>  // for the file names
 #include <vector>  // for the results
 
 class vtkPolyData;
 
-class GEOLATTICEFILTERS_EXPORT vtkGLURScriptWriter : public vtkWriter {
+class GEOLATTICEFILTERS_EXPORT vtkGLURScriptWriter : public vtkGLToolpathWriter {
 public:
   static vtkGLURScriptWriter* New();
-  vtkTypeMacro(vtkGLURScriptWriter, vtkWriter);
+  vtkTypeMacro(vtkGLURScriptWriter, vtkGLToolpathWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// The first program file (e.g. part.script); further files are STEM_1.EXT, STEM_2.EXT, ….
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
 
   ///@{
   /// Robot model: "ur5" (CB3, default) or "ur5e".
@@ -163,6 +157,9 @@ public:
   vtkIdType GetUnreachableCount() const { return static_cast<vtkIdType>(this->Unreachable.size()); }
   vtkIdType GetUnreachablePoint(vtkIdType i) const;
   double GetMaxJointStepDeg() const { return this->MaxJointStepDeg; }
+  /// Joint steps above MaxJointStep that the path solver could not avoid (then nothing is
+  /// written: a wrist flip or a joint limit on this cell layout).
+  vtkIdType GetLargeJointSteps() const { return this->LargeJointSteps; }
   /// Forward-kinematics check of the written joints: largest distance of a toolpath point from
   /// the nozzle tip (m) and largest angle between its axis and the nozzle axis (degrees).
   double GetMaxTipError() const { return this->MaxTipError; }
@@ -181,22 +178,18 @@ protected:
   vtkGLURScriptWriter();
   ~vtkGLURScriptWriter() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
-                             vtkInformationVector* outputVector) override;
   void WriteData() override;
 
-  char* FileName = nullptr;
   char* Robot = nullptr;
-  double NozzleTip[3] = {0.0, -0.40, 0.30};
-  double NozzleAxis[3] = {0.0, 0.0, 1.0};
-  double PartOnFlange[6] = {0.0, 0.0, 0.04, 0.0, 0.0, 0.0};
-  vtkIdType MaxFileBytes = 4000000;
-  double SpeedFactor = 0.5;
-  double MaxFilamentRate = 5.0;
-  double MaxBlend = 0.0005;
-  double MaxJointStep = 20.0;
-  vtkTypeBool AllowUnreachable = 0;
+  double NozzleTip[3];
+  double NozzleAxis[3];
+  double PartOnFlange[6];
+  vtkIdType MaxFileBytes;
+  double SpeedFactor;
+  double MaxFilamentRate;
+  double MaxBlend;
+  double MaxJointStep;
+  vtkTypeBool AllowUnreachable;
 
 private:
   vtkGLURScriptWriter(const vtkGLURScriptWriter&) = delete;
@@ -209,6 +202,7 @@ private:
   vtkIdType NumberOfWaypoints = 0;
   vtkIdType NumberOfMoves = 0;
   double MaxJointStepDeg = 0;
+  vtkIdType LargeJointSteps = 0;
   double MaxTipError = 0;
   double MaxAxisErrorDeg = 0;
   double MaxJointSpeedDegS = 0;

@@ -4,9 +4,10 @@
 #include "vtkGLOutputFiles.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
-#include "program/FiveAxisGCode.h"
+#include "program/WaypointCsvWriter.h"
 
 #include <vtkErrorCode.h>
 #include <vtkInformation.h>
@@ -20,23 +21,7 @@ namespace gl = geolattice;
 
 vtkGLWaypointCsvWriter::vtkGLWaypointCsvWriter() = default;
 
-vtkGLWaypointCsvWriter::~vtkGLWaypointCsvWriter() {
-  this->SetFileName(nullptr);
-}
-
-int vtkGLWaypointCsvWriter::FillInputPortInformation(int, vtkInformation* info) {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
-vtkTypeBool vtkGLWaypointCsvWriter::ProcessRequest(vtkInformation* request,
-                                                   vtkInformationVector** inputVector,
-                                                   vtkInformationVector* outputVector) {
-  if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT())) {
-    gl::requestEndOfTimeRange(inputVector);
-  }
-  return this->Superclass::ProcessRequest(request, inputVector, outputVector);
-}
+vtkGLWaypointCsvWriter::~vtkGLWaypointCsvWriter() {}
 
 void vtkGLWaypointCsvWriter::WriteData() {
   this->NumberOfRows = 0;
@@ -45,36 +30,24 @@ void vtkGLWaypointCsvWriter::WriteData() {
   if (!inputs.Computes()) {
     return;  // another process writes the waypoints
   }
-  try {
-    if (!this->FileName || !*this->FileName) {
-      throw gl::GeoLatticeError("waypoint CSV writer: no FileName given");
-    }
-    const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
-    if (gl::progressAborts(this, 0.2)) {
-      return;
-    }
-    gl::AtomicFileSet files;
-    gl::writeWaypointCsv(path.points, path.normals, path.extrusion, path.kind, path.layer,
-                         files.open(this->FileName));
-    if (gl::progressAborts(this, 0.9)) {
-      return;  // the temporary file goes with `files`: nothing written
-    }
-    files.commit();
-    this->NumberOfRows = static_cast<vtkIdType>(path.points.size());
-  } catch (const gl::FileWriteError& e) {
-    this->SetErrorCode(vtkErrorCode::CannotOpenFileError);
-    vtkErrorMacro(<< e.what());
-  } catch (const std::exception& e) {
-    if (this->GetAbortExecute()) {
-      return;  // an abort is not an error: nothing written, no message
-    }
-    this->SetErrorCode(vtkErrorCode::UserError);
-    vtkErrorMacro(<< e.what());
-  }
+  this->SetErrorCode(gl::runWrite(
+      this,
+      [&] {
+        this->CheckFileName("waypoint CSV writer");
+        const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
+        this->CheckCollisionVerdict(inputs.Get<vtkPolyData>(0), "waypoint CSV writer");
+        gl::checkAbort(this, 0.2);
+        gl::AtomicFileSet files;
+        gl::writeWaypointCsv(path.points, path.normals, path.extrusion, path.kind, path.layer,
+                             files.open(this->FileName));
+        gl::checkAbort(this, 0.9);
+        files.commit();
+        this->NumberOfRows = static_cast<vtkIdType>(path.points.size());
+      },
+      [this] { this->NumberOfRows = 0; }, [this] { this->NumberOfRows = 0; }));
 }
 
 void vtkGLWaypointCsvWriter::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
   os << indent << "NumberOfRows: " << this->NumberOfRows << "\n";
 }

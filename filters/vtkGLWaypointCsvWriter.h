@@ -2,7 +2,7 @@
  * @class   vtkGLWaypointCsvWriter
  * @brief   Writes a toolpath as a waypoint table (CSV) for other robot or machine software.
  *
- * core/program/FiveAxisGCode.h (writeWaypointCsv): the header `x,y,z,nx,ny,nz,e,kind,layer` and
+ * core/program/WaypointCsvWriter.h (writeWaypointCsv): the header `x,y,z,nx,ny,nz,e,kind,layer` and
  * one row per toolpath point in printing order: position (mm, platform frame), unit nozzle axis,
  * cumulative filament E (mm), MoveKind (0 print, 1 perimeter, 2 air) and the lattice's LayerId
  * (-1 on air moves); numbers with at most 6 decimals.
@@ -22,19 +22,13 @@
 #define vtkGLWaypointCsvWriter_h
 
 #include "GeoLatticeFiltersModule.h"
-#include "vtkWriter.h"
+#include "vtkGLToolpathWriter.h"
 
-class GEOLATTICEFILTERS_EXPORT vtkGLWaypointCsvWriter : public vtkWriter {
+class GEOLATTICEFILTERS_EXPORT vtkGLWaypointCsvWriter : public vtkGLToolpathWriter {
 public:
   static vtkGLWaypointCsvWriter* New();
-  vtkTypeMacro(vtkGLWaypointCsvWriter, vtkWriter);
+  vtkTypeMacro(vtkGLWaypointCsvWriter, vtkGLToolpathWriter);
   void PrintSelf(ostream& os, vtkIndent indent) override;
-
-  ///@{
-  /// The CSV file (e.g. waypoints.csv).
-  vtkSetStringMacro(FileName);
-  vtkGetStringMacro(FileName);
-  ///@}
 
   /// Waypoints written by the last Write() (0 after an error).
   vtkIdType GetNumberOfRows() const { return this->NumberOfRows; }
@@ -43,12 +37,7 @@ protected:
   vtkGLWaypointCsvWriter();
   ~vtkGLWaypointCsvWriter() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
-  vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
-                             vtkInformationVector* outputVector) override;
   void WriteData() override;
-
-  char* FileName = nullptr;
 
 private:
   vtkGLWaypointCsvWriter(const vtkGLWaypointCsvWriter&) = delete;

@@ -104,6 +104,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
     }
     if (hit >= 0) {
       ++report.violatingStations;
+      report.violatingStationIds.push_back(k);
       if (static_cast<int>(report.violations.size()) < maxReported) {
         report.violations.push_back({k, hit, points[k], points[hit], height, radial, unavoidable});
       }

@@ -11,7 +11,7 @@
 ///
 /// For a sub-graph order, time = the sub-graph's position (all of its points share it, a
 /// sub-graph is not tested against itself); for a toolpath, time = the point's index on it.
-#include "sequence/NozzleModel.h"
+#include "nozzle/NozzleModel.h"
 
 #include <Eigen/Core>
 #include <functional>
@@ -39,13 +39,19 @@ struct CollisionExemption {
 
 struct CollisionReport {
   bool collisionFree = true;
-  long long stations = 0;             ///< points checked
-  long long violatingStations = 0;    ///< stations with at least one obstacle inside the nozzle
-  long long unavoidableStations = 0;  ///< of those, stations whose obstacles are all exempt
-  bool orderCollisionFree = true;     ///< no station with an obstacle that is not exempt
+  long long stations = 0;                ///< points checked
+  long long violatingStations = 0;       ///< stations with at least one obstacle inside the nozzle
+  long long unavoidableStations = 0;     ///< of those, stations whose obstacles are all exempt
+  bool orderCollisionFree = true;        ///< no station with an obstacle that is not exempt
+  std::vector<int> violatingStationIds;  ///< every violating station, in print time order
   std::vector<CollisionViolation>
       violations;  ///< the first ones in print time order (at most maxReported)
   double seconds = 0;
+};
+
+/// Reporting options of the verifier.
+struct VerifierOptions {
+  int maxReported = 20;  ///< violations listed in the report (the first in print time), >= 0
 };
 
 /// points, normals (unit axes; re-normalised) and time have one entry per printed point.
@@ -56,7 +62,7 @@ struct CollisionReport {
 CollisionReport verifyNozzleClearance(const std::vector<Eigen::Vector3d>& points,
                                       const std::vector<Eigen::Vector3d>& normals,
                                       const std::vector<int>& time, const NozzleModel& nozzle,
-                                      int maxReported = 20,
+                                      int maxReported = VerifierOptions{}.maxReported,
                                       const CollisionExemption* exemption = nullptr,
                                       const std::vector<char>* material = nullptr);
 

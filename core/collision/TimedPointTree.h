@@ -4,7 +4,7 @@
 /// earliest print time below them, so a nozzle query at time t skips material printed later and
 /// space outside a cone that bounds the nozzle (NozzleBound). Used by the collision verifier and
 /// by the toolpath's nozzle axis clearance.
-#include "sequence/NozzleModel.h"
+#include "nozzle/NozzleModel.h"
 
 #include <Eigen/Core>
 #include <limits>

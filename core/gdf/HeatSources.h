@@ -10,6 +10,12 @@ namespace geolattice {
 
 class TetMeshTopology;
 
+/// How the base (the γ source) is chosen, with the defaults every front end uses.
+struct BaseOptions {
+  double tolerance = 0.05;        ///< (a): height band above the lowest point (mm, >= 0)
+  double maxFaceAngleDeg = 10.0;  ///< (c): largest angle of a base face's normal from -z (deg)
+};
+
 /// (a) Vertices with z <= min z + tolerance (mm). tolerance >= 0.
 std::vector<int> sourcesNearLowestZ(const TetMesh& mesh, double tolerance);
 

@@ -5,7 +5,7 @@
 /// and the enclosed signed volume.
 ///
 /// Data flow: input surface (reader / VTK polydata) -> checkSurface / requireClosedManifold ->
-/// orientOutward (explicit repair of an inward-oriented surface) -> SurfaceTetrahedralizer.
+/// orientOutward (explicit repair of an inward-oriented surface) -> TetrahedralizeSurface.
 #include "mesh/TetMesh.h"
 
 namespace geolattice {
@@ -39,7 +39,7 @@ SurfaceCheckReport checkSurface(const TriangleSurface& surface);
 /// out-of-range indices, non-finite coordinates, open surface (boundary edges), non-manifold
 /// edges, inconsistently oriented triangles, degenerate triangles, zero enclosed volume.
 /// An inward-oriented but otherwise valid surface (negative volume) is accepted: the surface
-/// is const here, so callers flip it with orientOutward() (SurfaceTetrahedralizer does).
+/// is const here, so callers flip it with orientOutward() (TetrahedralizeSurface does).
 /// @return the report of the accepted surface.
 SurfaceCheckReport requireClosedManifold(const TriangleSurface& surface);
 

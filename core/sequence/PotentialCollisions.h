@@ -13,7 +13,7 @@
 /// ball(c, ρ) ⊕ cone(n̄, NA* + δ), so a material cluster farther than ρ + ρ' from that cone
 /// is skipped; leaves use the exact nozzle test. The search for a pair stops at the first
 /// hit, pairs are pruned at the roots, and the sub-graphs are split over threads.
-#include "sequence/NozzleModel.h"
+#include "nozzle/NozzleModel.h"
 #include "sequence/PrintMaterial.h"
 
 #include <functional>

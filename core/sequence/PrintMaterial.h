@@ -4,7 +4,7 @@
 /// directions: every lattice vertex plus evenly spaced points inside longer edges. The
 /// sequencer (potential collisions) and the collision verifier both test these points, so
 /// their verdicts refer to the same material; each computes its own geometry.
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 
 #include <vector>
 
@@ -16,6 +16,11 @@ struct MaterialSamples {
   std::vector<Vec3> normals;  ///< #S unit nozzle axes (interpolated along edges)
   std::vector<int> subgraph;  ///< #S sub-graph id
   std::vector<int> offset;    ///< #subgraphs + 1
+};
+
+/// How densely the material is sampled (shared by the sequencer and the verifier).
+struct MaterialSampling {
+  double spacing = 1.0;  ///< mm between samples along an edge (> 0)
 };
 
 /// Samples the lattice: each vertex once, and ceil(len / spacing) - 1 interior points on an edge

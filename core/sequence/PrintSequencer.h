@@ -29,7 +29,7 @@
 /// transitions.
 #include "sequence/PotentialCollisions.h"
 #include "sequence/PrintMaterial.h"
-#include "sequence/SkeletonTree.h"
+#include "skeleton/SkeletonTree.h"
 
 #include <functional>
 #include <string>
@@ -44,7 +44,8 @@ SequenceStrategy parseSequenceStrategy(const std::string& name);
 const char* sequenceStrategyName(SequenceStrategy strategy);
 
 struct SequenceOptions {
-  SequenceStrategy strategy = SequenceStrategy::Greedy;
+  /// Rollout ("best") by default: never worse than the paper's A4 on retractions and air length.
+  SequenceStrategy strategy = SequenceStrategy::Rollout;
   int rolloutCandidates = 6;     ///< nearest candidates tried at each retraction (Rollout, >= 1)
   double retractionCost = 20.0;  ///< mm of air move one retraction is worth (Rollout, >= 0)
   /// Called on the calling thread with the fraction of the order decided. Optional.

@@ -14,7 +14,7 @@
 /// construction for 4-regular plane graphs). O(E log d) overall (sorting d edges per vertex).
 /// Vertices of degree 6 or more (irregular lattice vertices) keep their first pairing and are
 /// counted; a piece may then need more than one tour.
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 
 #include <vector>
 

@@ -13,7 +13,7 @@
 /// are paired by shortest paths inside the sub-graph (a T-join) whose edges are deleted. If
 /// no choice keeps a sub-graph connected, it is printed as several tours and counted in
 /// splitSubgraphs. O(E) per sub-graph and tried combination.
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 
 #include <vector>
 

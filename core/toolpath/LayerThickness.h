@@ -10,8 +10,8 @@
 /// built once; a vertex queries the trees of its node's lower nodes (nearest segment, pruned by
 /// sphere distance), O(log m) per vertex. A node without lower node above the first layer (its
 /// support was dropped) gets λ·φ_i and is counted.
-#include "lattice/LatticeGraph.h"
-#include "sequence/SkeletonTree.h"
+#include "lattice/LatticeInfill.h"
+#include "skeleton/SkeletonTree.h"
 
 #include <vector>
 

@@ -17,7 +17,7 @@
 ///
 /// Cost: one nozzle query per station against a kd-tree (TimedPointTree.h), O(N log N); the
 /// obstacle search and tilt only for colliding stations.
-#include "sequence/NozzleModel.h"
+#include "nozzle/NozzleModel.h"
 #include "mesh/TetMesh.h"
 
 #include <vector>

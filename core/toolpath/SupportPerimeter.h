@@ -13,7 +13,7 @@
 /// tooth length l (one tooth = out and back over l of arc length), reaching out to support the
 /// missing boundary. The perimeter meets the isoline ends near the boundary; these contacts are
 /// by design (the paper's Fig. 14d) and are not self-crossings of the Euler tours.
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 
 #include <vector>
 

@@ -20,10 +20,10 @@
 /// Finally segments are subdivided (PathSubdivision.h: axis turn <= maxTurnDeg, length <=
 /// maxSegmentLength) and, in up to four rounds, stations where the nozzle along ∇γ would hit
 /// earlier material of the path get a small tilt (NozzleAxisClearance.h); AxisTilt records it.
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 #include "sequence/PrintSequencer.h"
-#include "sequence/NozzleModel.h"
-#include "sequence/SkeletonTree.h"
+#include "nozzle/NozzleModel.h"
+#include "skeleton/SkeletonTree.h"
 #include "toolpath/LayerThickness.h"
 #include "toolpath/NozzleAxisClearance.h"
 

@@ -280,14 +280,24 @@ class CliErrorTest(unittest.TestCase):
                           out=os.path.join(blocker, "sub"))
 
     def test_failure_keeps_earlier_results(self):
-        # A good run, then a failing one into the same directory: the earlier files stay intact.
+        # A good run, then a failing one into the same directory: the earlier files the failing run
+        # did not write again are kept intact in previous/ (with their report.json), the new
+        # report.json names the failing stage, and the directory holds only the new run's files.
         good = self.run_cli(os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--until", "gdf", "-o", self.out)
         self.assertEqual(good.returncode, 0, good.stderr)
         before = {n: os.path.getsize(os.path.join(self.out, n)) for n in os.listdir(self.out)}
         self.assertEqual(sorted(before), ["fields.vtu", "report.json", "tets.vtu"])
         self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--time-factor", "0"], "time factor")
-        after = {n: os.path.getsize(os.path.join(self.out, n)) for n in os.listdir(self.out)}
-        self.assertEqual(after["fields.vtu"], before["fields.vtu"])
+        previous = os.path.join(self.out, "previous")
+        self.assertEqual(os.path.getsize(os.path.join(previous, "fields.vtu")), before["fields.vtu"])
+        self.assertTrue(os.path.isfile(os.path.join(previous, "report.json")))
+        self.assertFalse(os.path.exists(os.path.join(self.out, "fields.vtu")))
+        with open(os.path.join(self.out, "report.json")) as f:
+            report = json.load(f)
+        self.assertEqual(report["failed"]["stage"], "gdf")
+        self.assertIn("time factor", report["failed"]["message"])
+        self.assertEqual(report["exit_status"], 1)
+        self.assertEqual([f["file"] for f in report["files"]], ["tets.vtu"])
 
 
 class CliVerifyTest(unittest.TestCase):
@@ -298,7 +308,7 @@ class CliVerifyTest(unittest.TestCase):
         cls.tmp = tempfile.mkdtemp(prefix="geolattice-verify-")
         cls.out = os.path.join(cls.tmp, "y")
         run = subprocess.run([CLI, "run", os.path.join(TESTDATA, "y_shape.obj"), "-o", cls.out, "--edge-length", "2",
-                              "--strategy", "dpt", "--nozzle-angle", "75", "-q"], capture_output=True, text=True,
+                              "--strategy", "dpt", "--nozzle-angle", "75", "--allow-collisions", "-q"], capture_output=True, text=True,
                              timeout=600)
         assert run.returncode == 0, run.stderr
 

@@ -3,9 +3,9 @@
 #include "mesh/BranchingShapes.h"
 
 #include "common/Error.h"
-#include "io/MeshFileIO.h"
+#include "io/MeshReader.h"
 #include "mesh/SurfaceCheck.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <gtest/gtest.h>
 

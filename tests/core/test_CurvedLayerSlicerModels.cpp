@@ -3,9 +3,9 @@
 // no two layers intersect (checked geometrically with CGAL's AABB tree).
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
-#include "io/MeshFileIO.h"
+#include "io/MeshReader.h"
 #include "slicer/CurvedLayerSlicer.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include "LayerChecks.h"
 

@@ -4,7 +4,7 @@
 #include "gdf/HeatSources.h"
 #include "mesh/AnalyticShapes.h"
 #include "mesh/TetMeshTopology.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <gtest/gtest.h>
 

@@ -7,10 +7,10 @@
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
-#include "io/MeshFileIO.h"
+#include "io/MeshReader.h"
 #include "mesh/AnalyticShapes.h"
 #include "mesh/TetMeshTopology.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <gtest/gtest.h>
 

@@ -5,13 +5,13 @@
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
-#include "io/MeshFileIO.h"
+#include "io/MeshReader.h"
 #include "slicer/CurvedLayerSlicer.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 #include "sequence/PotentialCollisions.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
-#include "sequence/SkeletonTree.h"
+#include "skeleton/SkeletonTree.h"
 
 #include <gtest/gtest.h>
 

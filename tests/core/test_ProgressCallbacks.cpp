@@ -6,14 +6,14 @@
 #include "common/Progress.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
-#include "io/MeshFileIO.h"
-#include "lattice/LatticeGraph.h"
+#include "io/MeshReader.h"
+#include "lattice/LatticeInfill.h"
 #include "sequence/PotentialCollisions.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
-#include "sequence/SkeletonTree.h"
+#include "skeleton/SkeletonTree.h"
 #include "slicer/CurvedLayerSlicer.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <gtest/gtest.h>
 

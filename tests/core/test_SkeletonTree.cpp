@@ -4,12 +4,12 @@
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
-#include "io/MeshFileIO.h"
-#include "lattice/LatticeGraph.h"
+#include "io/MeshReader.h"
+#include "lattice/LatticeInfill.h"
 #include "mesh/AnalyticShapes.h"
-#include "sequence/SkeletonTree.h"
+#include "skeleton/SkeletonTree.h"
 #include "slicer/CurvedLayerSlicer.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <gtest/gtest.h>
 

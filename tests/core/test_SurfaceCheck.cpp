@@ -1,5 +1,5 @@
 #include "common/Error.h"
-#include "io/MeshFileIO.h"
+#include "io/MeshReader.h"
 #include "mesh/AnalyticShapes.h"
 #include "mesh/SurfaceCheck.h"
 

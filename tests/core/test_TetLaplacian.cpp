@@ -2,7 +2,7 @@
 // textbook assembly (16 triplets per tet summed by setFromTriplets), including empty columns.
 #include "gdf/TetLaplacian.h"
 #include "mesh/AnalyticShapes.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <gtest/gtest.h>
 

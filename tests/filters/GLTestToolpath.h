@@ -17,6 +17,7 @@
 #include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkFieldData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -24,7 +25,24 @@
 #include <cmath>
 #include <vector>
 
-inline vtkSmartPointer<vtkPolyData> makeTestToolpath(int loops = 2, double tiltDeg = 20.0) {
+/// Gives a hand-made toolpath the planner's collision verdict (field data ToolpathCollisionFree
+/// and, when colliding, 7 ToolpathUnclearedStations), which the program writers check.
+inline void setTestCollisionVerdict(vtkPolyData* toolpath, bool collisionFree) {
+  namespace arrays = geolattice::arrays;
+  vtkNew<vtkIntArray> verdict, stations;
+  verdict->SetName(arrays::ToolpathCollisionFree);
+  verdict->InsertNextValue(collisionFree ? 1 : 0);
+  stations->SetName(arrays::ToolpathUnclearedStations);
+  stations->InsertNextValue(collisionFree ? 0 : 7);
+  toolpath->GetFieldData()->AddArray(verdict);
+  toolpath->GetFieldData()->AddArray(stations);
+}
+
+/// A small planned-looking toolpath: `loops` square loops 1 mm apart, the last two sides tilted
+/// by tiltDeg, air moves between them; field data ToolpathCollisionFree = `collisionFree` (the
+/// planner's verdict the writers check; -1 leaves it out).
+inline vtkSmartPointer<vtkPolyData> makeTestToolpath(int loops = 2, double tiltDeg = 20.0,
+                                                     int collisionFree = 1) {
   namespace arrays = geolattice::arrays;
   auto pd = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
@@ -77,6 +95,9 @@ inline vtkSmartPointer<vtkPolyData> makeTestToolpath(int loops = 2, double tiltD
   pd->GetPointData()->AddArray(feed);
   pd->GetPointData()->AddArray(kind);
   pd->GetPointData()->AddArray(layer);
+  if (collisionFree >= 0) {
+    setTestCollisionVerdict(pd, collisionFree != 0);
+  }
   return pd;
 }
 

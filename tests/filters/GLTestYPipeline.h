@@ -49,7 +49,7 @@ struct GLTestYPipeline {
     skeleton->SetInputConnection(1, gdf->GetOutputPort());
     sequencer->SetInputConnection(0, lattice->GetOutputPort());
     sequencer->SetInputConnection(1, skeleton->GetOutputPort());
-    sequencer->SetNozzleAngle(45.0);
+    sequencer->GetNozzle()->SetNozzleAngle(45.0);
     planner->SetInputConnection(0, sequencer->GetOutputPort(0));
     planner->SetInputConnection(1, skeleton->GetOutputPort());  // the skeleton tree itself
     for (vtkAlgorithm* a : std::initializer_list<vtkAlgorithm*>{

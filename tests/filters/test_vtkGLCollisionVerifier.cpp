@@ -92,7 +92,7 @@ Verified verify(vtkPolyData* input, double angle = 60.0,
                 const std::function<void(vtkGLCollisionVerifier*)>& set = nullptr) {
   vtkNew<vtkGLCollisionVerifier> verifier;
   verifier->SetInputData(input);
-  verifier->SetNozzleAngle(angle);
+  verifier->GetNozzle()->SetNozzleAngle(angle);
   if (set) {
     set(verifier);
   }
@@ -286,10 +286,10 @@ TEST(vtkGLCollisionVerifier, SkeletonEdgesMakeAncestorObstaclesUnavoidable) {
 TEST(vtkGLCollisionVerifier, DefaultsAndPrintSelf) {
   vtkNew<vtkGLCollisionVerifier> f;
   EXPECT_STREQ(f->GetTimeArrayName(), arrays::PrintOrder);
-  EXPECT_EQ(f->GetNozzleAngle(), 45.0);
-  EXPECT_EQ(f->GetNozzleLength(), 0.0);
-  EXPECT_EQ(f->GetHolderRadius(), 0.0);
-  EXPECT_EQ(f->GetTipClearance(), 0.1);
+  EXPECT_EQ(f->GetNozzle()->GetNozzleAngle(), 45.0);
+  EXPECT_EQ(f->GetNozzle()->GetNozzleLength(), 0.0);
+  EXPECT_EQ(f->GetNozzle()->GetHolderRadius(), 0.0);
+  EXPECT_EQ(f->GetNozzle()->GetTipClearance(), 0.1);
   EXPECT_EQ(f->GetSampleSpacing(), 1.0);
   EXPECT_EQ(f->GetMaxReported(), 20);
   std::ostringstream os;
@@ -305,7 +305,8 @@ TEST(vtkGLCollisionVerifier, BadInputIsReported) {
   expectEmptyWithError(verify(towers(towerByTower), 90.0),
                        "nozzle angle must be in (0, 90) degrees");
   expectEmptyWithError(
-      verify(towers(towerByTower), 60.0, [](vtkGLCollisionVerifier* f) { f->SetHolderRadius(-1); }),
+      verify(towers(towerByTower), 60.0,
+             [](vtkGLCollisionVerifier* f) { f->GetNozzle()->SetHolderRadius(-1); }),
       "holder radius must be finite and >= 0 mm");
   expectEmptyWithError(
       verify(towers(towerByTower), 60.0, [](vtkGLCollisionVerifier* f) { f->SetSampleSpacing(0); }),
@@ -338,7 +339,7 @@ TEST(vtkGLCollisionVerifier, ProgressAndAbort) {
   auto input = towers(towerByTower);
   vtkNew<vtkGLCollisionVerifier> verifier;
   verifier->SetInputData(input);
-  verifier->SetNozzleAngle(60.0);
+  verifier->GetNozzle()->SetNozzleAngle(60.0);
   glExpectProgressReport(verifier, 3);
   glExpectCleanAbort(verifier, glAbortAt(0.2));
   glExpectCleanAbort(verifier, glAbortAt(0.9));

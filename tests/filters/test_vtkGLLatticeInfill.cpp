@@ -3,7 +3,7 @@
 #include "GLTestErrorObserver.h"
 #include "GLTestProgress.h"
 
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 #include "mesh/AnalyticShapes.h"
 #include "slicer/CurvedLayerSlicer.h"
 #include "vtkGLArrayNames.h"

@@ -176,18 +176,28 @@ TEST(PlaceOnPlatform, ArraysPassAndUnusedPointsCount) {
   EXPECT_EQ(passed->GetComponent(3, 0), 6.0);
 }
 
-TEST(PlaceOnPlatform, SinglePointWithScaleIsPlaced) {
+TEST(PlaceOnPlatform, SinglePointIsRefusedAsUnprintable) {
   vtkNew<vtkPolyData> poly;
   vtkNew<vtkPoints> points;
   points->InsertNextPoint(3, 4, 5);
   poly->SetPoints(points);
   Placed p = place(poly, 1.0, 0.0, true);
-  EXPECT_FALSE(p.Errors->HasError()) << p.Errors->Errors();
-  double q[3];
-  p.Output->GetPoint(0, q);
-  EXPECT_EQ(q[0], 0.0);
-  EXPECT_EQ(q[1], 0.0);
-  EXPECT_EQ(q[2], 0.0);
+  EXPECT_NE(p.Errors->Errors().find("0 mm across"), std::string::npos) << p.Errors->Errors();
+  EXPECT_EQ(p.Output->GetNumberOfPoints(), 0);
+}
+
+TEST(PlaceOnPlatform, UnitMistakesAreNamed) {
+  // A 0.05 model-unit part (metres): refused with the likely fix.
+  vtkSmartPointer<vtkPointSet> cube = readModel("cube.obj");
+  Placed metres = place(cube, 0.05, 0.0, true);
+  EXPECT_NE(metres.Errors->Errors().find("is the file in metres? use Scale 1000"),
+            std::string::npos)
+      << metres.Errors->Errors();
+  Placed huge = place(cube, 1e12, 0.0, true);
+  EXPECT_NE(huge.Errors->Errors().find("a printable part is 1 mm to 2000 mm"), std::string::npos)
+      << huge.Errors->Errors();
+  Placed fitted = place(cube, 0.05, 80.0, true);  // FitSize repairs it
+  EXPECT_FALSE(fitted.Errors->HasError()) << fitted.Errors->Errors();
 }
 
 // ---------------------------------------------------------------- bad parameters

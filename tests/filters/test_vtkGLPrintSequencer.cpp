@@ -164,10 +164,10 @@ struct SequenceRun {
     sequencer->SetInputData(0, lattice);
     sequencer->SetInputData(1, skeleton);
     sequencer->SetStrategy(strategy);
-    sequencer->SetNozzleAngle(angle);
+    sequencer->GetNozzle()->SetNozzleAngle(angle);
     errors->Observe(sequencer);
     verifier->SetInputConnection(sequencer->GetOutputPort(0));
-    verifier->SetNozzleAngle(angle);
+    verifier->GetNozzle()->SetNozzleAngle(angle);
     verifierErrors->Observe(verifier);
   }
   vtkPolyData* output(int port) {
@@ -407,11 +407,11 @@ TEST(vtkGLPrintSequencer, DefaultsAndPrintSelf) {
   vtkNew<vtkGLPrintSequencer> s;
   EXPECT_EQ(s->GetNumberOfInputPorts(), 2);
   EXPECT_EQ(s->GetNumberOfOutputPorts(), 3);
-  EXPECT_EQ(s->GetStrategy(), vtkGLPrintSequencer::A4);
-  EXPECT_EQ(s->GetNozzleAngle(), 45.0);
-  EXPECT_EQ(s->GetNozzleLength(), 0.0);
-  EXPECT_EQ(s->GetHolderRadius(), 0.0);
-  EXPECT_EQ(s->GetTipClearance(), 0.1);
+  EXPECT_EQ(s->GetStrategy(), vtkGLPrintSequencer::BEST);
+  EXPECT_EQ(s->GetNozzle()->GetNozzleAngle(), 45.0);
+  EXPECT_EQ(s->GetNozzle()->GetNozzleLength(), 0.0);
+  EXPECT_EQ(s->GetNozzle()->GetHolderRadius(), 0.0);
+  EXPECT_EQ(s->GetNozzle()->GetTipClearance(), 0.1);
   EXPECT_EQ(s->GetSampleSpacing(), 1.0);
   EXPECT_EQ(s->GetRolloutCandidates(), 6);
   EXPECT_EQ(s->GetRetractionCost(), 20.0);
@@ -438,7 +438,7 @@ TEST(vtkGLPrintSequencer, BadInputIsReported) {
   }
   {
     SequenceRun run(towerLattice(layers), towerSkeleton(layers), vtkGLPrintSequencer::A4, 45.0);
-    run.sequencer->SetNozzleLength(-1);
+    run.sequencer->GetNozzle()->SetNozzleLength(-1);
     expectEmptyOutputs(run, "nozzle length must be > 0 mm");
   }
   {
@@ -537,7 +537,7 @@ TEST(vtkGLPrintSequencer, BadInputIsReported) {
     run.output(0);
     EXPECT_TRUE(run.errors->HasError());
     run.errors->Clear();
-    run.sequencer->SetNozzleAngle(45.0);
+    run.sequencer->GetNozzle()->SetNozzleAngle(45.0);
     EXPECT_EQ(run.output(0)->GetNumberOfCells(),
               vtkPolyData::SafeDownCast(run.sequencer->GetInput(0))->GetNumberOfCells());
     EXPECT_FALSE(run.errors->HasError()) << run.errors->Errors();
@@ -571,9 +571,9 @@ protected:
     r->sequencer->SetInputConnection(0, p->lattice->GetOutputPort());
     r->sequencer->SetInputConnection(1, p->skeleton->GetOutputPort());
     r->sequencer->SetStrategy(strategy);
-    r->sequencer->SetNozzleAngle(angle);
+    r->sequencer->GetNozzle()->SetNozzleAngle(angle);
     r->verifier->SetInputConnection(r->sequencer->GetOutputPort(0));
-    r->verifier->SetNozzleAngle(angle);
+    r->verifier->GetNozzle()->SetNozzleAngle(angle);
     r->errors->Observe(r->sequencer);
     r->errors->Observe(r->verifier);
     r->verifier->Update();
@@ -646,7 +646,7 @@ TEST_F(BranchingYPipeline, VerifierSamplesTheLatticeLikeTheGenericLineSampling) 
   copy->GetCellData()->RemoveArray(arrays::SubgraphId);
   vtkNew<vtkGLCollisionVerifier> generic;
   generic->SetInputData(copy);
-  generic->SetNozzleAngle(70.0);
+  generic->GetNozzle()->SetNozzleAngle(70.0);
   r->errors->Observe(generic);
   generic->Update();
   ASSERT_FALSE(r->errors->HasError()) << r->errors->Errors();

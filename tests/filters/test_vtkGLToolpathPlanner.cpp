@@ -144,7 +144,7 @@ struct PlannerRun {
   PlannerRun(vtkPolyData* lattice, vtkPolyData* skeleton) {
     sequencer->SetInputData(0, lattice);
     sequencer->SetInputData(1, skeleton);
-    sequencer->SetNozzleAngle(60.0);
+    sequencer->GetNozzle()->SetNozzleAngle(60.0);
     planner->SetInputConnection(0, sequencer->GetOutputPort(0));
     planner->SetInputConnection(1, sequencer->GetOutputPort(1));
     errors->Observe(sequencer);
@@ -362,11 +362,11 @@ TEST(vtkGLToolpathPlanner, DefaultsAndPrintSelf) {
   EXPECT_EQ(f->GetToothLength(), 0.0);
   EXPECT_EQ(f->GetNumberOfTimeSteps(), 200);
   EXPECT_EQ(f->GetMaxSegmentLength(), 1.0);
-  EXPECT_EQ(f->GetNozzleAngle(), 45.0);
-  EXPECT_EQ(f->GetNozzleLength(), 0.0);
-  EXPECT_EQ(f->GetHolderRadius(), 0.0);
-  EXPECT_EQ(f->GetTipClearance(), 0.1);
-  EXPECT_EQ(f->GetTipFaceRadius(), 0.5);
+  EXPECT_EQ(f->GetNozzle()->GetNozzleAngle(), 45.0);
+  EXPECT_EQ(f->GetNozzle()->GetNozzleLength(), 0.0);
+  EXPECT_EQ(f->GetNozzle()->GetHolderRadius(), 0.0);
+  EXPECT_EQ(f->GetNozzle()->GetTipClearance(), 0.1);
+  EXPECT_EQ(f->GetNozzle()->GetTipFaceRadius(), 0.5);
   EXPECT_EQ(f->GetMaxAxisTilt(), 15.0);
   EXPECT_EQ(f->GetTiltBlendLength(), 5.0);
   std::ostringstream os;
@@ -688,7 +688,7 @@ TEST_F(BranchingYToolpath, VerifierUsesOnlyPrintedPointsAsMaterial) {
     vtkNew<vtkGLCollisionVerifier> verifier;
     verifier->SetInputData(input);
     verifier->SetTimeArrayName(arrays::PointIndex);
-    verifier->SetNozzleAngle(45.0);
+    verifier->GetNozzle()->SetNozzleAngle(45.0);
     vtkNew<GLTestErrorObserver> errors;
     errors->Observe(verifier);
     verifier->Update();

@@ -18,7 +18,7 @@ from paraview import simple, servermanager  # noqa: E402
 def array_names():
     """The constants of filters/vtkGLArrayNames.h as a dict: C++ name -> array name."""
     with open(os.path.join(SOURCE_DIR, "filters", "vtkGLArrayNames.h")) as f:
-        return dict(re.findall(r'constexpr const char\* (\w+) = "([^"]+)"', f.read()))
+        return dict(re.findall(r'constexpr const char\*\s+(\w+)\s*=\s*"([^"]+)"', f.read()))
 
 
 NAMES = array_names()
@@ -244,8 +244,16 @@ class PipelineTest(unittest.TestCase):
         toolpath.UpdatePipeline(0.5)
         out = os.path.join(self.out, "program")
         os.makedirs(out)
-        # .script -> GL URScript Writer (the writer factory picks it by extension).
+        # This coarse, wide-nozzle toolpath collides: the writers refuse it (nothing written) ...
+        collision_free = servermanager.Fetch(toolpath).GetFieldData().GetArray(NAMES["ToolpathCollisionFree"])
+        self.assertEqual(collision_free.GetValue(0), 0)
         simple.SaveData(os.path.join(out, "bunny.script"), toolpath, MaxFileBytes=500000, Robot="ur5e")
+        simple.SaveData(os.path.join(out, "bunny.gcode"), toolpath)
+        self.assertEqual(os.listdir(out), [])
+        # ... unless Allow Collisions is on. .script -> GL URScript Writer (the writer factory picks
+        # it by extension).
+        simple.SaveData(os.path.join(out, "bunny.script"), toolpath, MaxFileBytes=500000, Robot="ur5e",
+                        AllowCollisions=1)
         scripts = sorted(f for f in os.listdir(out) if f.endswith(".script"))
         self.assertGreater(len(scripts), 1)
         self.assertEqual(scripts, sorted(["bunny.script"] + ["bunny_%d.script" % k for k in range(1, len(scripts))]))
@@ -259,19 +267,20 @@ class PipelineTest(unittest.TestCase):
             movels += text.count("\n  movel(p[")
         self.assertEqual(movels, n - 1)
         # .gcode -> GL GCode Writer; the waypoint CSV writer by name (ParaView's CSV writer owns .csv).
-        simple.SaveData(os.path.join(out, "bunny.gcode"), toolpath, Kinematics=1)
+        simple.SaveData(os.path.join(out, "bunny.gcode"), toolpath, Kinematics=1, AllowCollisions=1)
         with open(os.path.join(out, "bunny.gcode")) as f:
             gcode = f.read()
         self.assertIn("B-C tilting-rotary table", gcode)
         self.assertEqual(len(re.findall(r"^G[01] X", gcode, re.M)), n)
-        csv = servermanager.writers.GLWaypointCSVWriter(Input=toolpath, FileName=os.path.join(out, "bunny.csv"))
+        csv = servermanager.writers.GLWaypointCSVWriter(Input=toolpath, FileName=os.path.join(out, "bunny.csv"),
+                                                        AllowCollisions=1)
         csv.UpdatePipeline()
         with open(os.path.join(out, "bunny.csv")) as f:
             rows = f.read().splitlines()
         self.assertEqual(rows[0], "x,y,z,nx,ny,nz,e,kind,layer")
         self.assertEqual(len(rows), n + 1)
         # A cell that cannot reach: an error, nothing written.
-        simple.SaveData(os.path.join(out, "far.script"), toolpath, NozzleTip=[5.0, 0.0, 0.0])
+        simple.SaveData(os.path.join(out, "far.script"), toolpath, NozzleTip=[5.0, 0.0, 0.0], AllowCollisions=1)
         self.assertEqual(sorted(f for f in os.listdir(out) if f.startswith("far") or f.startswith(".")), [])
 
     def test_saved_file_reads_back(self):

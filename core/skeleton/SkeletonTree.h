@@ -18,7 +18,7 @@
 /// It is a DAG, not always a tree: where branches merge again (an arch, a torus on its side) a
 /// node has two lower nodes. Sub-graphs dropped by the lattice (minimum length) leave gaps; a
 /// node above the first layer without lower node is counted in floatingNodes.
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 #include "mesh/TetMesh.h"
 
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
 #pragma once
-/// @file SurfaceTetrahedralizer.h
+/// @file TetrahedralizeSurface.h
 /// @brief Quality tetrahedral mesh of the solid enclosed by a closed triangle surface, with
 /// TetGen 1.5 (constrained Delaunay + Delaunay refinement). The paper (Li et al., Sec. 3)
 /// computes its geodesic distance fields on such a tet mesh of the input part.

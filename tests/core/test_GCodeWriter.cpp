@@ -2,7 +2,8 @@
 // continuous and does not spin near the pole, machine positions follow the table kinematics,
 // and the waypoint CSV has one row per point.
 #include "common/Error.h"
-#include "program/FiveAxisGCode.h"
+#include "program/GCodeWriter.h"
+#include "program/WaypointCsvWriter.h"
 
 #include <gtest/gtest.h>
 
@@ -25,7 +26,7 @@ Eigen::Matrix3d tableRotation(TableKinematics k, double tilt, double c) {
 
 }  // namespace
 
-TEST(FiveAxisGCode, AnglesTurnTheAxisUp) {
+TEST(GCodeWriter, AnglesTurnTheAxisUp) {
   std::mt19937 rng(3);
   std::normal_distribution<double> g;
   for (TableKinematics k : {TableKinematics::AC, TableKinematics::BC}) {
@@ -42,7 +43,7 @@ TEST(FiveAxisGCode, AnglesTurnTheAxisUp) {
   }
 }
 
-TEST(FiveAxisGCode, NoSpinNearThePole) {
+TEST(GCodeWriter, NoSpinNearThePole) {
   // Axes wobbling around +Z by 1e-5 rad: C must stay put.
   double c = 37.0, tilt = 0;
   for (int i = 0; i < 100; ++i) {
@@ -54,7 +55,7 @@ TEST(FiveAxisGCode, NoSpinNearThePole) {
   }
 }
 
-TEST(FiveAxisGCode, TableTurnsSmoothlyNearThePole) {
+TEST(GCodeWriter, TableTurnsSmoothlyNearThePole) {
   // Nearly vertical axes (tilt 0.3° in random directions), as on a flat first layer: C would
   // jump by up to 180° between neighbours; within the pole band it is interpolated instead.
   std::mt19937 rng(5);
@@ -74,13 +75,13 @@ TEST(FiveAxisGCode, TableTurnsSmoothlyNearThePole) {
   }
   std::ostringstream g;
   GCodeOptions o;
-  const GCodeStats s = writeFiveAxisGCode(p, n, e, f, kind, o, g);
+  const GCodeStats s = writeGCode(p, n, e, f, kind, o, g);
   EXPECT_LE(s.maxAxisErrorDeg, o.axisToleranceDeg + 1e-9);
   EXPECT_EQ(s.forcedRotarySteps, 0u);
   EXPECT_LT(s.maxRotaryStepDeg, 5.0);  // spread over the 100 flat points
 }
 
-TEST(FiveAxisGCode, ProgramAndCsv) {
+TEST(GCodeWriter, ProgramAndCsv) {
   std::vector<Eigen::Vector3d> p, n;
   std::vector<double> e, f;
   std::vector<int> kind, layer;
@@ -97,7 +98,7 @@ TEST(FiveAxisGCode, ProgramAndCsv) {
   o.pivot = Eigen::Vector3d(0, 0, 100);
   o.partOffset = Eigen::Vector3d(0, 0, 5);
   std::ostringstream g;
-  const GCodeStats s = writeFiveAxisGCode(p, n, e, f, kind, o, g);
+  const GCodeStats s = writeGCode(p, n, e, f, kind, o, g);
   EXPECT_EQ(s.moves, p.size());
   EXPECT_EQ(s.outOfLimits, 0u);
   EXPECT_LT(s.maxRotaryStepDeg, 10.0);
@@ -130,7 +131,7 @@ TEST(FiveAxisGCode, ProgramAndCsv) {
   EXPECT_EQ(c2.substr(0, c2.find('\n')), "x,y,z,nx,ny,nz,e,kind,layer");
   // Bad input.
   std::ostringstream sink;
-  EXPECT_THROW(writeFiveAxisGCode({}, {}, {}, {}, {}, o, sink), GeoLatticeError);
+  EXPECT_THROW(writeGCode({}, {}, {}, {}, {}, o, sink), GeoLatticeError);
   n[3] = Eigen::Vector3d(NAN, 0, 1);
-  EXPECT_THROW(writeFiveAxisGCode(p, n, e, f, kind, o, sink), GeoLatticeError);
+  EXPECT_THROW(writeGCode(p, n, e, f, kind, o, sink), GeoLatticeError);
 }

@@ -1,4 +1,4 @@
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 
 #include "common/Error.h"
 #include "common/UnionFind.h"

@@ -1,5 +1,5 @@
 #pragma once
-/// @file MeshFileIO.h
+/// @file MeshReader.h
 /// @brief Readers and writers for plain-text mesh formats: OFF and Wavefront OBJ surfaces
 /// (OBJ so that core-only code, tests and benchmarks read surfaces without VTK), the
 /// research codes' `.tet` tet meshes and TetGen `.node`/`.ele` pairs.

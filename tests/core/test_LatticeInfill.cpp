@@ -3,10 +3,10 @@
 // gives a rectangular grid on every layer, also when the iso-values hit layer points or
 // layer-mesh edges exactly. Plus hand-made layer meshes for ridges, nearly parallel isolines,
 // several sub-graphs, the graded lattice, the levels, and bad input.
-#include "test_LatticeGraphChecks.h"
+#include "LatticeInfillChecks.h"
 
 #include "common/Error.h"
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 #include "lattice/LatticeLevels.h"
 #include "mesh/AnalyticShapes.h"
 #include "slicer/CurvedLayerSlicer.h"
@@ -222,7 +222,7 @@ std::string errorOf(const std::function<void()>& f) {
 
 // Layers through the tet vertices (z = 4k with 4 mm cells): every layer mesh is the 10 x 10 grid
 // of the cell faces and every isoline runs along layer-mesh edges through layer points.
-TEST(LatticeGraph, BoxGridWithIsolinesAlongLayerMeshEdges) {
+TEST(LatticeInfill, BoxGridWithIsolinesAlongLayerMeshEdges) {
   const BoxFields b = boxFields(10, 10, 15, kAlphaOfBox, kBetaOfBox);
   const CurvedLayers layers = sliceBox(b, 4.0, 4.0);
   ASSERT_EQ(layers.layerValues.size(), 15u);
@@ -237,7 +237,7 @@ TEST(LatticeGraph, BoxGridWithIsolinesAlongLayerMeshEdges) {
 }
 
 // Layers at mid-cell heights (t = 0.5 exactly, 2 mm cells): levels y = 4k hit layer points.
-TEST(LatticeGraph, BoxGridWithLevelsThroughLayerPoints) {
+TEST(LatticeInfill, BoxGridWithLevelsThroughLayerPoints) {
   const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
   const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
   ASSERT_EQ(layers.layerValues.size(), 30u);
@@ -249,7 +249,7 @@ TEST(LatticeGraph, BoxGridWithLevelsThroughLayerPoints) {
 }
 
 // With phases the levels miss every layer point and edge: 10 x 10 lines.
-TEST(LatticeGraph, BoxGridWithPhaseAvoidingExactHits) {
+TEST(LatticeInfill, BoxGridWithPhaseAvoidingExactHits) {
   const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
   const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
   const LatticeGraph g = buildLatticeGraph(layers, phases(1.3, 2.1));
@@ -264,7 +264,7 @@ TEST(LatticeGraph, BoxGridWithPhaseAvoidingExactHits) {
 
 // α-lines along layer-mesh edges (phase 0), β-lines through edge interiors (phase 1.3): each
 // crossing is the β-point on the edge the α-segment runs along.
-TEST(LatticeGraph, BoxGridWithOneFieldAlongEdgesAndTheOtherGeneric) {
+TEST(LatticeInfill, BoxGridWithOneFieldAlongEdgesAndTheOtherGeneric) {
   const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
   const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
   for (const auto& [pa, pb] : {std::pair{0.0, 1.3}, std::pair{1.3, 0.0}}) {
@@ -278,7 +278,7 @@ TEST(LatticeGraph, BoxGridWithOneFieldAlongEdgesAndTheOtherGeneric) {
 
 // Phase 1: the crossings (odd x, odd y) are the centres of the 2 mm cells, which are layer points
 // (midpoints of the Kuhn cells' main diagonals).
-TEST(LatticeGraph, BoxGridWithCrossingsOnInteriorLayerPoints) {
+TEST(LatticeInfill, BoxGridWithCrossingsOnInteriorLayerPoints) {
   const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
   const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
   const LatticeGraph g = buildLatticeGraph(layers, phases(1.0, 1.0));
@@ -290,7 +290,7 @@ TEST(LatticeGraph, BoxGridWithCrossingsOnInteriorLayerPoints) {
 
 // Hand-made grid of 2 mm squares split along (1,1): with phase 1 every crossing lies at the
 // middle of a diagonal edge, where the α- and β-point coincide exactly (one vertex).
-TEST(LatticeGraph, CrossingsExactlyOnLayerMeshEdgesAreOneVertex) {
+TEST(LatticeInfill, CrossingsExactlyOnLayerMeshEdgesAreOneVertex) {
   const CurvedLayers layers =
       gridLayers({{{0, 0, 40, 40, 20, 20}}, {{0, 0, 40, 40, 20, 20}}}, kAlphaOfBox, kBetaOfBox);
   const LatticeGraph g = buildLatticeGraph(layers, phases(1.0, 1.0));
@@ -302,7 +302,7 @@ TEST(LatticeGraph, CrossingsExactlyOnLayerMeshEdgesAreOneVertex) {
 
 // Removing the points on the quad diagonals changes neither the crossings nor the lines, and
 // leaves exactly the paper's vertices: one per (tet face cut by the layer, level crossing it).
-TEST(LatticeGraph, QuadDiagonalPointsAreMergedIntoThePapersGraph) {
+TEST(LatticeInfill, QuadDiagonalPointsAreMergedIntoThePapersGraph) {
   const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
   const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
   LatticeOptions keep = phases(1.3, 2.1), merge = keep;
@@ -334,7 +334,7 @@ TEST(LatticeGraph, QuadDiagonalPointsAreMergedIntoThePapersGraph) {
 
 // α = 20 - |y - 20| has a ridge at y = 20 where it equals the level 20 exactly: both triangles
 // along the ridge would emit the segment; the touch is dropped and every other level appears twice.
-TEST(LatticeGraph, RidgeAtALevelIsDropped) {
+TEST(LatticeInfill, RidgeAtALevelIsDropped) {
   const Field ridge = [](const Vec3& p) {
     return 20 - std::abs(p.y() - 20);
   };
@@ -360,7 +360,7 @@ TEST(LatticeGraph, RidgeAtALevelIsDropped) {
 // alternates above / below twice: that isoline point has degree 4 and is counted as irregular.
 // (With the saddle's zero lines along the axes instead, the (1,1)-split grid resolves it: the
 // isolines cut the corner along a mesh diagonal and every degree is regular.)
-TEST(LatticeGraph, LevelThroughASaddlePointIsCountedAsIrregular) {
+TEST(LatticeInfill, LevelThroughASaddlePointIsCountedAsIrregular) {
   const Field saddle = [](const Vec3& p) {
     return 100 + 0.01 * ((p.x() - 20) * (p.x() - 20) - (p.y() - 20) * (p.y() - 20));
   };
@@ -386,7 +386,7 @@ TEST(LatticeGraph, LevelThroughASaddlePointIsCountedAsIrregular) {
 
 // β-isolines at 0.057° to the α-isolines, on a mesh (37 x 37 squares) whose rows miss the levels: each β-line
 // crosses one α-line inside a thin sliver of a triangle; the crossing is found once, inside.
-TEST(LatticeGraph, NearlyParallelIsolinesCrossOnce) {
+TEST(LatticeInfill, NearlyParallelIsolinesCrossOnce) {
   const Field alpha = [](const Vec3& p) {
     return p.y();
   };
@@ -416,7 +416,7 @@ TEST(LatticeGraph, NearlyParallelIsolinesCrossOnce) {
 }
 
 // Two parts in one layer: a 40 x 40 square and a 2 x 2 square (no isoline, boundary only).
-TEST(LatticeGraph, SubgraphsAndMinimumLength) {
+TEST(LatticeInfill, SubgraphsAndMinimumLength) {
   const std::vector<std::vector<Rect>> spec = {{{0, 0, 40, 40, 20, 20}, {50, 0, 2, 2, 2, 2}}};
   const CurvedLayers layers = gridLayers(spec, kAlphaOfBox, kBetaOfBox);
   const LatticeGraph all = buildLatticeGraph(layers, phases(1.3, 2.1));
@@ -448,7 +448,7 @@ TEST(LatticeGraph, SubgraphsAndMinimumLength) {
 }
 
 // Threads only distribute the layers: the graph is the same with 1 and 2 threads.
-TEST(LatticeGraph, ThreadCountDoesNotChangeTheGraph) {
+TEST(LatticeInfill, ThreadCountDoesNotChangeTheGraph) {
   const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
   const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
   LatticeOptions one = phases(1.3, 2.1), two = one;
@@ -463,7 +463,7 @@ TEST(LatticeGraph, ThreadCountDoesNotChangeTheGraph) {
   }
 }
 
-TEST(LatticeGraph, ProgressAndAbort) {
+TEST(LatticeInfill, ProgressAndAbort) {
   const BoxFields b = boxFields(10, 10, 15, kAlphaOfBox, kBetaOfBox);
   const CurvedLayers layers = sliceBox(b, 4.0, 4.0);
   LatticeOptions o;
@@ -483,7 +483,7 @@ TEST(LatticeGraph, ProgressAndAbort) {
 
 // Graded lattice: half the width where y < 20 (α > 20). α-lines: 2 mm apart there, 4 mm above;
 // β-lines take the smallest scale along each line (0.5 everywhere): 2 mm apart.
-TEST(LatticeGraph, GradedLatticeFollowsTheWidthScale) {
+TEST(LatticeInfill, GradedLatticeFollowsTheWidthScale) {
   const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
   const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
   LatticeOptions o = phases(1.0, 1.0);
@@ -569,7 +569,7 @@ TEST(LatticeLevels, GradedLevelsWithUnitScaleAreTheUniformOnes) {
   EXPECT_THROW(gradedLatticeLevels(f, s, 4, 0), GeoLatticeError);
 }
 
-TEST(LatticeGraph, WidthLargerThanThePartGivesAnEmptyLattice) {
+TEST(LatticeInfill, WidthLargerThanThePartGivesAnEmptyLattice) {
   const CurvedLayers layers = gridLayers({{{0, 0, 40, 40, 20, 20}}}, kAlphaOfBox, kBetaOfBox);
   LatticeOptions o;
   o.alphaWidth = o.betaWidth = 1000;
@@ -581,7 +581,7 @@ TEST(LatticeGraph, WidthLargerThanThePartGivesAnEmptyLattice) {
   EXPECT_NEAR(g.subgraphs[0].length, 160.0, 1e-9);
 }
 
-TEST(LatticeGraph, BadInputIsReported) {
+TEST(LatticeInfill, BadInputIsReported) {
   const CurvedLayers good = gridLayers({{{0, 0, 8, 8, 2, 2}}}, kAlphaOfBox, kBetaOfBox);
   LatticeOptions o;
   o.alphaWidth = 0;

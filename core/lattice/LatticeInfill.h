@@ -1,5 +1,5 @@
 #pragma once
-/// @file LatticeGraph.h
+/// @file LatticeInfill.h
 /// @brief The lattice infill pattern G_i(V_i, E_i) of every curved layer S_i (paper Section 2.2,
 /// Algorithm 1, Eqs. 6-13, Figs. 2-5) and its connected sub-graphs G_{i,j} (Section 2.3).
 ///

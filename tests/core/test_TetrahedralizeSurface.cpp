@@ -1,10 +1,10 @@
 #include "common/Error.h"
-#include "io/MeshFileIO.h"
+#include "io/MeshReader.h"
 #include "mesh/AnalyticShapes.h"
 #include "mesh/SurfaceCheck.h"
 #include "mesh/TetMeshCheck.h"
 #include "mesh/TetMeshTopology.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 #include "tetrahedralize/TetGenRunner.h"
 
 #include <gtest/gtest.h>
@@ -65,7 +65,7 @@ TetrahedralizeOptions edge(double length) {
 
 }  // namespace
 
-TEST(SurfaceTetrahedralizer, BoxAt1p5mmFillsTheBoxExactly) {
+TEST(TetrahedralizeSurface, BoxAt1p5mmFillsTheBoxExactly) {
   const Vec3 size(40, 40, 60);
   const TetrahedralizeResult r = tetrahedralizeSurface(boxSurface(size, 100.0), edge(1.5));
   std::printf("[ box 40x40x60 @ 1.5 mm ] %d tets, %zu points, mean edge %.3f mm, %.2f s\n",
@@ -119,7 +119,7 @@ TEST(SurfaceTetrahedralizer, BoxAt1p5mmFillsTheBoxExactly) {
   EXPECT_NEAR(bc.signedVolume, 96000.0, 1e-6 * 96000.0);
 }
 
-TEST(SurfaceTetrahedralizer, AutomaticEdgeLengthAimsAt75kTetsOnABox) {
+TEST(TetrahedralizeSurface, AutomaticEdgeLengthAimsAt75kTetsOnABox) {
   const TetrahedralizeResult r = tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0));
   std::printf("[ box 40x40x60 auto ] edge %.3f mm, %d tets, %d TetGen runs, %.2f s\n",
               r.targetEdgeLength, r.tetCount, r.attempts, r.seconds);
@@ -129,7 +129,7 @@ TEST(SurfaceTetrahedralizer, AutomaticEdgeLengthAimsAt75kTetsOnABox) {
   EXPECT_NEAR(r.meshVolume, 96000.0, 1e-6 * 96000.0);
 }
 
-TEST(SurfaceTetrahedralizer, AutomaticEdgeLengthOnTheBunnyAt100mm) {
+TEST(TetrahedralizeSurface, AutomaticEdgeLengthOnTheBunnyAt100mm) {
   const std::string path = testModel("bunny.obj");
   ASSERT_FALSE(path.empty()) << "bunny.obj not found in " << GEOLATTICE_TESTDATA;
   TriangleSurface bunny = readObj(path);
@@ -152,7 +152,7 @@ TEST(SurfaceTetrahedralizer, AutomaticEdgeLengthOnTheBunnyAt100mm) {
   EXPECT_TRUE(checkTetMesh(r.mesh).isValid());
 }
 
-TEST(SurfaceTetrahedralizer, AutomaticTargetTetCountIsHonoured) {
+TEST(TetrahedralizeSurface, AutomaticTargetTetCountIsHonoured) {
   TetrahedralizeOptions o;
   o.autoTargetTets = 5000;
   const TetrahedralizeResult r = tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0), o);
@@ -166,7 +166,7 @@ TEST(SurfaceTetrahedralizer, AutomaticTargetTetCountIsHonoured) {
   EXPECT_LE(s.tetCount, 10000);
 }
 
-TEST(SurfaceTetrahedralizer, SphereMeshHasThePolyhedronVolume) {
+TEST(TetrahedralizeSurface, SphereMeshHasThePolyhedronVolume) {
   const TriangleSurface sphere = sphereSurface(Vec3(-5, 0, 7), 10.0, 3);
   const double enclosed = checkSurface(sphere).signedVolume;
   const TetrahedralizeResult r = tetrahedralizeSurface(sphere, edge(2.0));
@@ -176,7 +176,7 @@ TEST(SurfaceTetrahedralizer, SphereMeshHasThePolyhedronVolume) {
   EXPECT_EQ(r.removedCavityRegions, 0);
 }
 
-TEST(SurfaceTetrahedralizer, InwardSurfaceIsFlippedFirst) {
+TEST(TetrahedralizeSurface, InwardSurfaceIsFlippedFirst) {
   TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
   for (auto& t : box.triangles) {
     std::swap(t[1], t[2]);
@@ -186,7 +186,7 @@ TEST(SurfaceTetrahedralizer, InwardSurfaceIsFlippedFirst) {
   EXPECT_NEAR(r.meshVolume, 1000.0, 1e-6 * 1000.0);
 }
 
-TEST(SurfaceTetrahedralizer, CavityOfAHollowPartStaysEmpty) {
+TEST(TetrahedralizeSurface, CavityOfAHollowPartStaysEmpty) {
   // Outer box 10^3 with an inward-oriented inner box 4^3: a hollow part of volume 936.
   const TriangleSurface hollow =
       append(boxSurface(Vec3(10, 10, 10), 20.0), boxSurface(Vec3(4, 4, 4), 20.0),
@@ -203,7 +203,7 @@ TEST(SurfaceTetrahedralizer, CavityOfAHollowPartStaysEmpty) {
   }
 }
 
-TEST(SurfaceTetrahedralizer, DisjointPartsAreAllMeshed) {
+TEST(TetrahedralizeSurface, DisjointPartsAreAllMeshed) {
   const TriangleSurface two =
       append(boxSurface(Vec3(10, 10, 10), 20.0), boxSurface(Vec3(10, 10, 10), 20.0),
              Eigen::Matrix3d::Identity(), Vec3(20, 0, 0), false);
@@ -211,7 +211,7 @@ TEST(SurfaceTetrahedralizer, DisjointPartsAreAllMeshed) {
   EXPECT_NEAR(r.meshVolume, 2000.0, 1e-6 * 2000.0);
 }
 
-TEST(SurfaceTetrahedralizer, OverlappingBoxesAreSelfIntersecting) {
+TEST(TetrahedralizeSurface, OverlappingBoxesAreSelfIntersecting) {
   const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 1.5);
   // Two closed boxes (each valid on its own) that overlap: shifted and rotated copy.
   const Eigen::Matrix3d rotation =
@@ -228,7 +228,7 @@ TEST(SurfaceTetrahedralizer, OverlappingBoxesAreSelfIntersecting) {
                        "self-intersecting surface"));
 }
 
-TEST(SurfaceTetrahedralizer, GridAlignedOverlapMeshesTheUnion) {
+TEST(TetrahedralizeSurface, GridAlignedOverlapMeshesTheUnion) {
   // Overlapping boxes whose vertices and facet lines coincide: TetGen's intersection test
   // does not flag them; it meshes the union (1875 mm^3) with the common part (winding number
   // 2) as a region of its own, which is a valid mesh of the solid {winding >= 1}.
@@ -240,7 +240,7 @@ TEST(SurfaceTetrahedralizer, GridAlignedOverlapMeshesTheUnion) {
   EXPECT_TRUE(checkTetMesh(r.mesh).isValid());
 }
 
-TEST(SurfaceTetrahedralizer, EmbeddedOutwardShellIsAnInterface) {
+TEST(TetrahedralizeSurface, EmbeddedOutwardShellIsAnInterface) {
   // An outward inner sphere inside an outer one: both sides are meshed and the inner sphere's
   // vertices are mesh vertices (the GDF tests use this to make a source region).
   TriangleSurface surface = sphereSurface(Vec3::Zero(), 20, 2);
@@ -257,7 +257,7 @@ TEST(SurfaceTetrahedralizer, EmbeddedOutwardShellIsAnInterface) {
   EXPECT_GE(onInner, static_cast<int>(inner.points.size()));
 }
 
-TEST(SurfaceTetrahedralizer, InwardShellOutsideEverythingIsRejected) {
+TEST(TetrahedralizeSurface, InwardShellOutsideEverythingIsRejected) {
   // Two disjoint boxes, the smaller one inward: total volume positive, but the small box's
   // inside has winding number -1.
   const TriangleSurface both =
@@ -267,7 +267,7 @@ TEST(SurfaceTetrahedralizer, InwardShellOutsideEverythingIsRejected) {
                        "inconsistently oriented shells: a region has winding number -1"));
 }
 
-TEST(SurfaceTetrahedralizer, UnusedInputPointsDoNotBecomeMeshVertices) {
+TEST(TetrahedralizeSurface, UnusedInputPointsDoNotBecomeMeshVertices) {
   TriangleSurface box = boxSurface(Vec3(10, 10, 10), 20.0);
   const Vec3 stray(5.123, 4.321, 6.789);
   box.points.push_back(stray);
@@ -277,14 +277,14 @@ TEST(SurfaceTetrahedralizer, UnusedInputPointsDoNotBecomeMeshVertices) {
   }
 }
 
-TEST(SurfaceTetrahedralizer, OpenSurfaceIsRejected) {
+TEST(TetrahedralizeSurface, OpenSurfaceIsRejected) {
   TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
   box.triangles.erase(box.triangles.begin() + 4);
   EXPECT_EQ(errorOf([&] { tetrahedralizeSurface(box, edge(2.0)); }),
             "open surface: 3 boundary edges (the surface must be closed / watertight)");
 }
 
-TEST(SurfaceTetrahedralizer, NonManifoldSurfaceIsRejected) {
+TEST(TetrahedralizeSurface, NonManifoldSurfaceIsRejected) {
   // Two unit boxes sharing the edge x = 1, y = 1 (vertices welded by hand).
   const TriangleSurface a = boxSurface(Vec3(1, 1, 1), 10.0);
   TriangleSurface both = append(a, a, Eigen::Matrix3d::Identity(), Vec3(1, 1, 0), false);
@@ -302,12 +302,12 @@ TEST(SurfaceTetrahedralizer, NonManifoldSurfaceIsRejected) {
   EXPECT_EQ(message, "non-manifold surface: 1 edges shared by more than two triangles");
 }
 
-TEST(SurfaceTetrahedralizer, EmptySurfaceIsRejected) {
+TEST(TetrahedralizeSurface, EmptySurfaceIsRejected) {
   EXPECT_EQ(errorOf([] { tetrahedralizeSurface(TriangleSurface{}); }),
             "empty surface: 0 points, 0 triangles");
 }
 
-TEST(SurfaceTetrahedralizer, BadEdgeLengthIsRejected) {
+TEST(TetrahedralizeSurface, BadEdgeLengthIsRejected) {
   const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
   EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, edge(-1.0)); }),
                        "target edge length must be >= 0 mm (0 = automatic), got -1"));
@@ -322,7 +322,7 @@ TEST(SurfaceTetrahedralizer, BadEdgeLengthIsRejected) {
   EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 1.0);
 }
 
-TEST(SurfaceTetrahedralizer, RadiusEdgeRatioOutOfRangeIsRejected) {
+TEST(TetrahedralizeSurface, RadiusEdgeRatioOutOfRangeIsRejected) {
   const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
   for (double ratio : {1.0, 0.5, 1.09, 10.5, -2.0, double(NAN)}) {
     TetrahedralizeOptions o = edge(2.0);
@@ -336,7 +336,7 @@ TEST(SurfaceTetrahedralizer, RadiusEdgeRatioOutOfRangeIsRejected) {
   EXPECT_NO_THROW(tetrahedralizeSurface(box, ok));
 }
 
-TEST(SurfaceTetrahedralizer, AutoTargetOutOfRangeIsRejected) {
+TEST(TetrahedralizeSurface, AutoTargetOutOfRangeIsRejected) {
   const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 3.0);
   TetrahedralizeOptions o;
   o.autoTargetTets = 10;
@@ -346,7 +346,7 @@ TEST(SurfaceTetrahedralizer, AutoTargetOutOfRangeIsRejected) {
   EXPECT_THROW(automaticEdgeLength(1000.0, 0), GeoLatticeError);
 }
 
-TEST(SurfaceTetrahedralizer, AbortCallbackStopsTetGen) {
+TEST(TetrahedralizeSurface, AbortCallbackStopsTetGen) {
   TetrahedralizeOptions o = edge(0.6);  // ~1.5M tets, seconds of TetGen: long enough to interrupt
   o.shouldAbort = [] {
     return true;

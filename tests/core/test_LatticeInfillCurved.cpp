@@ -4,15 +4,15 @@
 // their layer surface and on their isoline's level, no two edges of a layer meeting except at a
 // shared vertex, connected sub-graphs with an even number of boundary hits, the degree rules, and
 // the vertex count of the paper's per-tet construction (Eqs. 6-9 on the tet faces).
-#include "test_LatticeGraphChecks.h"
+#include "LatticeInfillChecks.h"
 
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
-#include "io/MeshFileIO.h"
-#include "lattice/LatticeGraph.h"
+#include "io/MeshReader.h"
+#include "lattice/LatticeInfill.h"
 #include "mesh/AnalyticShapes.h"
 #include "slicer/CurvedLayerSlicer.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <gtest/gtest.h>
 
@@ -109,7 +109,7 @@ void expectValidLattice(const char* name, const Pipeline& p, const Timed& t) {
 
 }  // namespace
 
-TEST(LatticeGraphCurved, BallWithGeodesicLayers) {
+TEST(LatticeInfillCurved, BallWithGeodesicLayers) {
   SlicerOptions slicer;
   slicer.interval = 1.0;
   slicer.firstLayerOffset = 0.5;
@@ -123,7 +123,7 @@ TEST(LatticeGraphCurved, BallWithGeodesicLayers) {
   }
 }
 
-TEST(LatticeGraphCurved, BunnyWithSeveralSubgraphsPerLayer) {
+TEST(LatticeInfillCurved, BunnyWithSeveralSubgraphsPerLayer) {
   TriangleSurface bunny = readObj(kData + "/bunny.obj");
   double zMin = 1e300, zMax = -1e300;
   for (const Vec3& q : bunny.points) {
@@ -159,7 +159,7 @@ TEST(LatticeGraphCurved, BunnyWithSeveralSubgraphsPerLayer) {
               dropped.stats.droppedSubgraphs, dropped.stats.droppedLength);
 }
 
-TEST(LatticeGraphCurved, BranchingYSplitsIntoSubgraphsPerBranch) {
+TEST(LatticeInfillCurved, BranchingYSplitsIntoSubgraphsPerBranch) {
   const TriangleSurface y = readObj(kData + "/y_shape.obj");  // generated, base on z = 0, mm
   SlicerOptions slicer;                                       // 0.6 mm layers
   const Pipeline p = runPipeline(y, 2.0, 0.05, slicer);
@@ -177,7 +177,7 @@ TEST(LatticeGraphCurved, BranchingYSplitsIntoSubgraphsPerBranch) {
 
 // The analytic grid test with the solved fields of a TetGen box: α ≈ 40 - y, β ≈ 40 - x. Phase 2
 // keeps the lines 2 mm away from the walls, so each layer is the 10 x 10 grid.
-TEST(LatticeGraphCurved, TetGenBoxGivesTheGrid) {
+TEST(LatticeInfillCurved, TetGenBoxGivesTheGrid) {
   SlicerOptions slicer;
   slicer.interval = 2.0;
   slicer.firstLayerOffset = 1.0;

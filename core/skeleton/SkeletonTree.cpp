@@ -1,4 +1,4 @@
-#include "sequence/SkeletonTree.h"
+#include "skeleton/SkeletonTree.h"
 
 #include "common/Error.h"
 #include "common/Progress.h"

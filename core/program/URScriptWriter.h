@@ -1,5 +1,5 @@
 #pragma once
-/// @file URScriptProgram.h
+/// @file URScriptWriter.h
 /// @brief The UR program that prints a toolpath in the robot cell (paper Section 4, Fig. 19):
 /// `def print_part(): … end` with set_tcp, time-based movel per toolpath segment, blending,
 /// extrusion synchronised with the motion, retractions and air moves; split into numbered

@@ -1,7 +1,7 @@
-#include "program/FiveAxisGCode.h"
+#include "program/GCodeWriter.h"
 
 #include "common/Error.h"
-#include "program/URScriptProgram.h"
+#include "program/URScriptWriter.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -50,11 +50,10 @@ void tableAngles(TableKinematics k, const Eigen::Vector3d& nIn, double previousC
   }
 }
 
-GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points,
-                              const std::vector<Eigen::Vector3d>& normals,
-                              const std::vector<double>& extrusion,
-                              const std::vector<double>& feedRate, const std::vector<int>& kind,
-                              const GCodeOptions& o, std::ostream& out) {
+GCodeStats writeGCode(const std::vector<Eigen::Vector3d>& points,
+                      const std::vector<Eigen::Vector3d>& normals,
+                      const std::vector<double>& extrusion, const std::vector<double>& feedRate,
+                      const std::vector<int>& kind, const GCodeOptions& o, std::ostream& out) {
   const size_t N = points.size();
   if (N == 0) {
     throw GeoLatticeError("G-code: the toolpath is empty");
@@ -199,24 +198,6 @@ GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points,
   }
   out << "G94\nM2\n";
   return stats;
-}
-
-void writeWaypointCsv(const std::vector<Eigen::Vector3d>& points,
-                      const std::vector<Eigen::Vector3d>& normals,
-                      const std::vector<double>& extrusion, const std::vector<int>& kind,
-                      const std::vector<int>& layer, std::ostream& out) {
-  const size_t N = points.size();
-  if (normals.size() != N || extrusion.size() != N || kind.size() != N || layer.size() != N) {
-    throw GeoLatticeError("waypoint CSV: toolpath arrays differ in length");
-  }
-  out << "x,y,z,nx,ny,nz,e,kind,layer\n";
-  for (size_t i = 0; i < N; ++i) {
-    const Eigen::Vector3d n = normals[i].normalized();
-    out << urNumber(points[i].x()) << ',' << urNumber(points[i].y()) << ','
-        << urNumber(points[i].z()) << ',' << urNumber(n.x()) << ',' << urNumber(n.y()) << ','
-        << urNumber(n.z()) << ',' << urNumber(extrusion[i]) << ',' << kind[i] << ',' << layer[i]
-        << '\n';
-  }
 }
 
 }  // namespace geolattice

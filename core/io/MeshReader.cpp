@@ -1,4 +1,6 @@
-#include "io/MeshFileIO.h"
+#include "io/MeshReader.h"
+
+#include "common/AtomicFile.h"
 
 #include "common/Error.h"
 
@@ -352,12 +354,9 @@ void writeObj(const std::string& path, const TriangleSurface& surface, const std
                             " is not finite");
     }
   }
-  const std::string tmpPath = path + ".tmp";
+  AtomicFileSet files;
   {
-    std::ofstream out(tmpPath, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      throw GeoLatticeError("cannot write " + tmpPath + ": " + std::strerror(errno));
-    }
+    std::ostream& out = files.open(path);
     std::istringstream lines(comment);
     for (std::string line; std::getline(lines, line);) {
       out << "# " << line << '\n';
@@ -379,20 +378,8 @@ void writeObj(const std::string& path, const TriangleSurface& surface, const std
     for (const auto& t : surface.triangles) {
       out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
     }
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(tmpPath, ignored);
-      throw GeoLatticeError("cannot write " + tmpPath + ": I/O error (disk full?)");
-    }
   }
-  std::error_code ec;
-  fs::rename(tmpPath, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(tmpPath, ignored);
-    throw GeoLatticeError("cannot rename " + tmpPath + " to " + path + ": " + ec.message());
-  }
+  files.commit();
 }
 
 TetMesh readTetFile(const std::string& path) {
@@ -570,12 +557,9 @@ void writeTetFile(const std::string& path, const TetMesh& mesh) {
     }
   }
 
-  const std::string tmpPath = path + ".tmp";
+  AtomicFileSet files;
   {
-    std::ofstream out(tmpPath, std::ios::binary | std::ios::trunc);
-    if (!out) {
-      throw GeoLatticeError("cannot write " + tmpPath + ": " + std::strerror(errno));
-    }
+    std::ostream& out = files.open(path);
     // Shortest representation that parses back to the same double (std::to_chars).
     char buf[64];
     auto put = [&](double v) {
@@ -594,20 +578,8 @@ void writeTetFile(const std::string& path, const TetMesh& mesh) {
     for (const auto& t : mesh.tets) {
       out << "4 " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
     }
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(tmpPath, ignored);
-      throw GeoLatticeError("cannot write " + tmpPath + ": I/O error (disk full?)");
-    }
   }
-  std::error_code ec;
-  fs::rename(tmpPath, path, ec);
-  if (ec) {
-    std::error_code ignored;
-    fs::remove(tmpPath, ignored);
-    throw GeoLatticeError("cannot rename " + tmpPath + " to " + path + ": " + ec.message());
-  }
+  files.commit();
 }
 
 }  // namespace geolattice

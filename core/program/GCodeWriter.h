@@ -1,5 +1,5 @@
 #pragma once
-/// @file FiveAxisGCode.h
+/// @file GCodeWriter.h
 /// @brief 5-axis G-code for tilting-rotary table machines with a fixed vertical nozzle (tool
 /// axis +Z): A–C (tilt about X, then rotary C about the table normal) or B–C (tilt about Y).
 ///
@@ -56,16 +56,9 @@ void tableAngles(TableKinematics k, const Eigen::Vector3d& n, double previousC,
 
 /// Writes the program. points/normals/extrusion/feedRate/kind as in Toolpath (kind 2 = air,
 /// rapid G0 without E). Throws GeoLatticeError for mismatched sizes, an empty path or NaN data.
-GCodeStats writeFiveAxisGCode(const std::vector<Eigen::Vector3d>& points,
-                              const std::vector<Eigen::Vector3d>& normals,
-                              const std::vector<double>& extrusion,
-                              const std::vector<double>& feedRate, const std::vector<int>& kind,
-                              const GCodeOptions& options, std::ostream& out);
-
-/// Waypoint CSV: header "x,y,z,nx,ny,nz,e,kind,layer" and one row per point (mm, unit axis, E mm).
-void writeWaypointCsv(const std::vector<Eigen::Vector3d>& points,
+GCodeStats writeGCode(const std::vector<Eigen::Vector3d>& points,
                       const std::vector<Eigen::Vector3d>& normals,
-                      const std::vector<double>& extrusion, const std::vector<int>& kind,
-                      const std::vector<int>& layer, std::ostream& out);
+                      const std::vector<double>& extrusion, const std::vector<double>& feedRate,
+                      const std::vector<int>& kind, const GCodeOptions& options, std::ostream& out);
 
 }  // namespace geolattice

@@ -4,13 +4,13 @@
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
-#include "io/MeshFileIO.h"
-#include "program/URScriptProgram.h"
+#include "io/MeshReader.h"
+#include "program/URScriptWriter.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
-#include "sequence/SkeletonTree.h"
+#include "skeleton/SkeletonTree.h"
 #include "slicer/CurvedLayerSlicer.h"
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 #include "toolpath/ToolpathPlanner.h"
 #include "../common/URScriptSyntax.h"
 
@@ -46,7 +46,7 @@ const Toolpath& yToolpath() {
 
 }  // namespace
 
-TEST(URScriptProgram, YPartInTheUr5Cell) {
+TEST(URScriptWriter, YPartInTheUr5Cell) {
   const Toolpath& path = yToolpath();
   RobotCell cell;
   const RobotPath rp = solveRobotPath(cell, path.points, path.normals);
@@ -81,7 +81,7 @@ TEST(URScriptProgram, YPartInTheUr5Cell) {
   EXPECT_EQ(movels, stats.moves);
 }
 
-TEST(URScriptProgram, NumbersAndBadInput) {
+TEST(URScriptWriter, NumbersAndBadInput) {
   EXPECT_EQ(urNumber(0.1234564), "0.123456");
   EXPECT_EQ(urNumber(-1e-9), "0");
   EXPECT_EQ(urNumber(2.0), "2");

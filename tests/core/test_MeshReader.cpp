@@ -1,4 +1,4 @@
-#include "io/MeshFileIO.h"
+#include "io/MeshReader.h"
 
 #include "common/Error.h"
 
@@ -18,7 +18,7 @@ namespace {
 const std::string kData = GEOLATTICE_TESTDATA;
 
 /// A fresh directory per test under the system temp dir, removed afterwards.
-class MeshFileIOTest : public ::testing::Test {
+class MeshReaderTest : public ::testing::Test {
 protected:
   void SetUp() override {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
@@ -69,7 +69,7 @@ const char* kTinyTet =
 
 // ---------------------------------------------------------------- OFF
 
-TEST_F(MeshFileIOTest, OffFanTriangulatesAndSkipsComments) {
+TEST_F(MeshReaderTest, OffFanTriangulatesAndSkipsComments) {
   // Counts on the header line, comments, blank lines, CRLF, a quad and a pentagon.
   const std::string p = write("poly.off",
                               "OFF 6 3 0   # header with counts\r\n"
@@ -92,7 +92,7 @@ TEST_F(MeshFileIOTest, OffFanTriangulatesAndSkipsComments) {
   EXPECT_EQ(s.triangles[5], (std::array<int, 3>{0, 2, 4}));
 }
 
-TEST_F(MeshFileIOTest, OffHeaderVariants) {
+TEST_F(MeshReaderTest, OffHeaderVariants) {
   // COFF: colour after xyz; NOFF: normal after xyz; counts on the next line.
   const TriangleSurface c = readOff(write("c.off",
                                           "COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n"
@@ -113,32 +113,32 @@ TEST_F(MeshFileIOTest, OffHeaderVariants) {
                   "unsupported OFF variant '4OFF'");
 }
 
-TEST_F(MeshFileIOTest, OffKnight) {
+TEST_F(MeshReaderTest, OffKnight) {
   const TriangleSurface s = readOff(kData + "/decimated-knight.off");
   EXPECT_EQ(s.points.size(), 502u);
   EXPECT_EQ(s.triangles.size(), 1000u);
 }
 
-TEST_F(MeshFileIOTest, OffMalformedNumberNamesFileAndLine) {
+TEST_F(MeshReaderTest, OffMalformedNumberNamesFileAndLine) {
   const std::string p = write("bad.off", "OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n");
   const std::string msg = errorOf([&] { readOff(p); });
   EXPECT_CONTAINS(msg, p + ":4:");
   EXPECT_CONTAINS(msg, "'x'");
 }
 
-TEST_F(MeshFileIOTest, OffTooFewCoordinates) {
+TEST_F(MeshReaderTest, OffTooFewCoordinates) {
   EXPECT_CONTAINS(
       errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n")); }),
       "b.off:4: vertex 1: expected 'x y z'");
 }
 
-TEST_F(MeshFileIOTest, OffNonFiniteCoordinate) {
+TEST_F(MeshReaderTest, OffNonFiniteCoordinate) {
   EXPECT_CONTAINS(
       errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n")); }),
       "b.off:5: non-finite");
 }
 
-TEST_F(MeshFileIOTest, OffIndexOutOfRange) {
+TEST_F(MeshReaderTest, OffIndexOutOfRange) {
   EXPECT_CONTAINS(
       errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n")); }),
       "b.off:6: face 0: vertex index 3 out of range [0, 2]");
@@ -147,7 +147,7 @@ TEST_F(MeshFileIOTest, OffIndexOutOfRange) {
       "vertex index -1 out of range");
 }
 
-TEST_F(MeshFileIOTest, OffFaceWithTooFewVertices) {
+TEST_F(MeshReaderTest, OffFaceWithTooFewVertices) {
   EXPECT_CONTAINS(
       errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n")); }),
       "b.off:6: face 0 has 2 vertices");
@@ -156,7 +156,7 @@ TEST_F(MeshFileIOTest, OffFaceWithTooFewVertices) {
       "s.off:6: face 0: expected 4 vertex indices, got 3");
 }
 
-TEST_F(MeshFileIOTest, OffCountsDoNotMatch) {
+TEST_F(MeshReaderTest, OffCountsDoNotMatch) {
   // Fewer faces than announced.
   EXPECT_CONTAINS(
       errorOf([&] { readOff(write("few.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")); }),
@@ -172,7 +172,7 @@ TEST_F(MeshFileIOTest, OffCountsDoNotMatch) {
                   "hdr.off:2: expected the counts");
 }
 
-TEST_F(MeshFileIOTest, OffEmpty) {
+TEST_F(MeshReaderTest, OffEmpty) {
   EXPECT_EQ(errorOf([&] { readOff(write("e.off", "")); }),
             "empty mesh: " + path("e.off") + " has no data");
   EXPECT_CONTAINS(errorOf([&] { readOff(write("c.off", "# only a comment\n\n")); }), "empty mesh");
@@ -180,7 +180,7 @@ TEST_F(MeshFileIOTest, OffEmpty) {
                   "empty mesh: " + path("z.off") + " has 3 vertices and 0 faces");
 }
 
-TEST_F(MeshFileIOTest, MissingAndUnreadableFiles) {
+TEST_F(MeshReaderTest, MissingAndUnreadableFiles) {
   const std::string missing = path("nope.off");
   EXPECT_EQ(errorOf([&] { readOff(missing); }), "file not found: " + missing);
   EXPECT_EQ(errorOf([&] { readTetFile(path("nope.tet")); }), "file not found: " + path("nope.tet"));
@@ -190,7 +190,7 @@ TEST_F(MeshFileIOTest, MissingAndUnreadableFiles) {
 
 // ---------------------------------------------------------------- .tet
 
-TEST_F(MeshFileIOTest, TetSmallFile) {
+TEST_F(MeshReaderTest, TetSmallFile) {
   const TetMesh m = readTetFile(write("two.tet", kTinyTet));
   ASSERT_EQ(m.points.size(), 5u);
   ASSERT_EQ(m.tets.size(), 2u);
@@ -203,7 +203,7 @@ TEST_F(MeshFileIOTest, TetSmallFile) {
             1u);
 }
 
-TEST_F(MeshFileIOTest, TetRing) {
+TEST_F(MeshReaderTest, TetRing) {
   const TetMesh m = readTetFile(kData + "/ring.tet");
   EXPECT_EQ(m.points.size(), 8150u);
   EXPECT_EQ(m.tets.size(), 40064u);
@@ -212,7 +212,7 @@ TEST_F(MeshFileIOTest, TetRing) {
   EXPECT_EQ(m.tets.back(), (std::array<int, 4>{7524, 8123, 8138, 8148}));
 }
 
-TEST_F(MeshFileIOTest, TetMalformedLines) {
+TEST_F(MeshReaderTest, TetMalformedLines) {
   EXPECT_CONTAINS(errorOf([&] { readTetFile(write("h.tet", "five vertices\n1 tets\n")); }),
                   "h.tet:1: expected an integer for vertex count, got 'five'");
   EXPECT_CONTAINS(errorOf([&] { readTetFile(write("h2.tet", "4 vertices\n1 tets extra\n")); }),
@@ -234,7 +234,7 @@ TEST_F(MeshFileIOTest, TetMalformedLines) {
       "c.tet:6: expected a number for z, got '1e'");
 }
 
-TEST_F(MeshFileIOTest, TetIndexOutOfRange) {
+TEST_F(MeshReaderTest, TetIndexOutOfRange) {
   EXPECT_CONTAINS(
       errorOf([&] {
         readTetFile(write("r.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2 4\n"));
@@ -242,7 +242,7 @@ TEST_F(MeshFileIOTest, TetIndexOutOfRange) {
       "r.tet:7: tet 0: vertex index 4 out of range [0, 3]");
 }
 
-TEST_F(MeshFileIOTest, TetCountsDoNotMatch) {
+TEST_F(MeshReaderTest, TetCountsDoNotMatch) {
   // 3 vertex lines where 4 are announced: the tet line is read as the 4th vertex, then EOF.
   EXPECT_CONTAINS(
       errorOf([&] {
@@ -265,7 +265,7 @@ TEST_F(MeshFileIOTest, TetCountsDoNotMatch) {
       "x.tet:8: extra data after 4 vertices and 1 tets");
 }
 
-TEST_F(MeshFileIOTest, TetEmpty) {
+TEST_F(MeshReaderTest, TetEmpty) {
   EXPECT_EQ(errorOf([&] { readTetFile(write("e.tet", "")); }),
             "empty mesh: " + path("e.tet") + " has no data");
   EXPECT_CONTAINS(errorOf([&] { readTetFile(write("h.tet", "4 vertices\n")); }),
@@ -276,7 +276,7 @@ TEST_F(MeshFileIOTest, TetEmpty) {
 
 // ---------------------------------------------------------------- TetGen
 
-TEST_F(MeshFileIOTest, TetGenTinyFromEitherFile) {
+TEST_F(MeshReaderTest, TetGenTinyFromEitherFile) {
   for (const char* name : {"/tiny.node", "/tiny.ele"}) {
     const TetMesh m = readTetGenMesh(kData + name);
     ASSERT_EQ(m.points.size(), 8u) << name;
@@ -293,7 +293,7 @@ TEST_F(MeshFileIOTest, TetGenTinyFromEitherFile) {
   }
 }
 
-TEST_F(MeshFileIOTest, TetGenZeroBasedAndQuadratic) {
+TEST_F(MeshReaderTest, TetGenZeroBasedAndQuadratic) {
   // 0-based numbering, no attributes/markers in the header, 10-node tets (corner nodes kept).
   write("q.node", "5 3\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n4 0.5 0 0\n");
   const std::string ele = write("q.ele", "1 10 0\n0 0 1 2 3 4 4 4 4 4 4\n");
@@ -307,14 +307,14 @@ TEST_F(MeshFileIOTest, TetGenZeroBasedAndQuadratic) {
   EXPECT_EQ(readTetGenMesh(path("U.NODE")).tets.size(), 1u);
 }
 
-TEST_F(MeshFileIOTest, TetGenMissingPartner) {
+TEST_F(MeshReaderTest, TetGenMissingPartner) {
   const std::string node = write("alone.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n");
   EXPECT_EQ(errorOf([&] { readTetGenMesh(node); }), "file not found: " + path("alone.ele"));
   EXPECT_EQ(errorOf([&] { readTetGenMesh(path("none.ele")); }),
             "file not found: " + path("none.node"));
 }
 
-TEST_F(MeshFileIOTest, TetGenBadInput) {
+TEST_F(MeshReaderTest, TetGenBadInput) {
   EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("mesh.tet")); }),
                   "expected a .node or .ele file");
   // 1-based .node, but the .ele uses point number 0.
@@ -353,7 +353,7 @@ TEST_F(MeshFileIOTest, TetGenBadInput) {
 
 // ---------------------------------------------------------------- writer
 
-TEST_F(MeshFileIOTest, WriteReadRoundTripIsExact) {
+TEST_F(MeshReaderTest, WriteReadRoundTripIsExact) {
   const TetMesh ring = readTetFile(kData + "/ring.tet");
   TetMesh m = ring;
   m.points[0] = Vec3(0.1, 1.0 / 3.0, -2.5e-17);  // values that a fixed "%f" would lose
@@ -372,7 +372,7 @@ TEST_F(MeshFileIOTest, WriteReadRoundTripIsExact) {
   EXPECT_EQ(readTetFile(p).tets.size(), 2u);
 }
 
-TEST_F(MeshFileIOTest, WriteRefusesBadMeshesAndLeavesNothing) {
+TEST_F(MeshReaderTest, WriteRefusesBadMeshesAndLeavesNothing) {
   TetMesh empty;
   const std::string p = path("bad.tet");
   EXPECT_CONTAINS(errorOf([&] { writeTetFile(p, empty); }), "empty mesh");
@@ -385,13 +385,13 @@ TEST_F(MeshFileIOTest, WriteRefusesBadMeshesAndLeavesNothing) {
   // Unwritable location: the error names the temporary file; nothing is created.
   const std::string q = path("no_such_dir/out.tet");
   EXPECT_CONTAINS(errorOf([&] { writeTetFile(q, readTetFile(path("two.tet"))); }),
-                  "cannot write " + q + ".tmp");
+                  "cannot create " + q);
   EXPECT_FALSE(fs::exists(q));
 }
 
 // ---------------------------------------------------------------- OBJ
 
-TEST_F(MeshFileIOTest, ObjFaceFormsNegativeIndicesAndPolygons) {
+TEST_F(MeshReaderTest, ObjFaceFormsNegativeIndicesAndPolygons) {
   // All four vertex reference forms, relative indices, a quad, a pentagon, ignored statements,
   // comments, CRLF and a forward reference (face before its last vertex).
   const std::string p = write("forms.obj",
@@ -421,7 +421,7 @@ TEST_F(MeshFileIOTest, ObjFaceFormsNegativeIndicesAndPolygons) {
   EXPECT_EQ(s.triangles, expected);
 }
 
-TEST_F(MeshFileIOTest, ObjBunny) {
+TEST_F(MeshReaderTest, ObjBunny) {
   const TriangleSurface s = readObj(kData + "/bunny.obj");
   EXPECT_EQ(s.triangles.size(), 3674u);
   EXPECT_EQ(s.points.size(), 1839u);  // closed genus-0 surface: V = F/2 + 2
@@ -432,7 +432,7 @@ TEST_F(MeshFileIOTest, ObjBunny) {
   }
 }
 
-TEST_F(MeshFileIOTest, ObjMalformedLinesNameFileAndLine) {
+TEST_F(MeshReaderTest, ObjMalformedLinesNameFileAndLine) {
   const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   const std::string a = write("a.obj", v + "v 1 2\nf 1 2 3\n");
   EXPECT_CONTAINS(errorOf([&] { readObj(a); }),
@@ -455,7 +455,7 @@ TEST_F(MeshFileIOTest, ObjMalformedLinesNameFileAndLine) {
   EXPECT_CONTAINS(errorOf([&] { readObj(h); }), h + ":1: non-finite value for x");
 }
 
-TEST_F(MeshFileIOTest, ObjIndexOutOfRange) {
+TEST_F(MeshReaderTest, ObjIndexOutOfRange) {
   const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   const std::string a = write("a.obj", v + "f 1 2 3\nf 1 2 4\n");
   EXPECT_CONTAINS(errorOf([&] { readObj(a); }), a + ":5: vertex index 4 out of range [1, 3]");
@@ -467,7 +467,7 @@ TEST_F(MeshFileIOTest, ObjIndexOutOfRange) {
   EXPECT_CONTAINS(errorOf([&] { readObj(c); }), c + ":2: relative vertex index -2");
 }
 
-TEST_F(MeshFileIOTest, ObjEmptyAndMissing) {
+TEST_F(MeshReaderTest, ObjEmptyAndMissing) {
   const std::string a = write("a.obj", "# nothing\n");
   EXPECT_CONTAINS(errorOf([&] { readObj(a); }), "empty mesh: " + a + " has 0 vertices and 0 faces");
   const std::string b = write("b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n");
@@ -476,7 +476,7 @@ TEST_F(MeshFileIOTest, ObjEmptyAndMissing) {
                   "file not found: " + path("missing.obj"));
 }
 
-TEST_F(MeshFileIOTest, ObjWriteReadRoundTripIsExact) {
+TEST_F(MeshReaderTest, ObjWriteReadRoundTripIsExact) {
   TriangleSurface s = readObj(kData + "/bunny.obj");
   s.points[0] = Vec3(0.1, 1.0 / 3.0, -2.5e-17);
   const std::string p = path("out.obj");
@@ -494,7 +494,7 @@ TEST_F(MeshFileIOTest, ObjWriteReadRoundTripIsExact) {
   EXPECT_EQ(back.triangles, s.triangles);
 }
 
-TEST_F(MeshFileIOTest, ObjWriteRefusesBadSurfacesAndLeavesNothing) {
+TEST_F(MeshReaderTest, ObjWriteRefusesBadSurfacesAndLeavesNothing) {
   const std::string p = path("bad.obj");
   EXPECT_CONTAINS(errorOf([&] { writeObj(p, TriangleSurface{}); }), "empty mesh");
   TriangleSurface s;
@@ -509,6 +509,6 @@ TEST_F(MeshFileIOTest, ObjWriteRefusesBadSurfacesAndLeavesNothing) {
   EXPECT_FALSE(fs::exists(p + ".tmp"));
   s.points[1].y() = 0.0;
   const std::string q = path("no_such_dir/out.obj");
-  EXPECT_CONTAINS(errorOf([&] { writeObj(q, s); }), "cannot write " + q + ".tmp");
+  EXPECT_CONTAINS(errorOf([&] { writeObj(q, s); }), "cannot create " + q);
   EXPECT_FALSE(fs::exists(q));
 }

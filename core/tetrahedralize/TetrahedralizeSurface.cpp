@@ -1,4 +1,4 @@
-#include "tetrahedralize/SurfaceTetrahedralizer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include "common/Error.h"
 #include "common/Progress.h"

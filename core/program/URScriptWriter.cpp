@@ -1,4 +1,4 @@
-#include "program/URScriptProgram.h"
+#include "program/URScriptWriter.h"
 
 #include "common/Error.h"
 

@@ -3,7 +3,7 @@
 // loops, duplicate vertices) and geometry (vertices on the layer surface, isolines at their
 // level, no two edges of a layer meeting except at a shared vertex). Each check recomputes what
 // it verifies from the graph's edges or from the input layers, independently of the builder.
-#include "lattice/LatticeGraph.h"
+#include "lattice/LatticeInfill.h"
 
 #include <gtest/gtest.h>
 

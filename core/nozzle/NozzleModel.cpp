@@ -1,4 +1,4 @@
-#include "sequence/NozzleModel.h"
+#include "nozzle/NozzleModel.h"
 
 #include "common/Error.h"
 

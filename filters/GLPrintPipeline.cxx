@@ -1,0 +1,83 @@
+#include "GLPrintPipeline.h"
+
+#include "vtkGLArrayNames.h"
+
+#include <vtkAlgorithm.h>
+
+GLPrintPipeline::GLPrintPipeline(bool tetMeshInput) {
+  this->Placement->SetInputConnection(this->Reader->GetOutputPort());
+  this->Tetrahedralize->SetInputConnection(this->Placement->GetOutputPort());
+  this->Slicer->SetInputConnection(this->GeodesicFields->GetOutputPort());
+  this->OverhangAnalysis->SetInputConnection(this->GeodesicFields->GetOutputPort());
+  this->LatticeInfill->SetInputConnection(this->Slicer->GetOutputPort(0));
+  this->SkeletonTree->SetInputConnection(0, this->LatticeInfill->GetOutputPort());
+  this->SkeletonTree->SetInputConnection(1, this->GeodesicFields->GetOutputPort());
+  this->Sequencer->SetInputConnection(0, this->LatticeInfill->GetOutputPort());
+  this->Sequencer->SetInputConnection(1, this->SkeletonTree->GetOutputPort());
+  this->SequenceVerifier->SetInputConnection(this->Sequencer->GetOutputPort(0));
+  this->SequenceVerifier->SetTimeArrayName(geolattice::arrays::PrintOrder);
+  this->Planner->SetInputConnection(0, this->Sequencer->GetOutputPort(0));
+  this->Planner->SetInputConnection(1, this->Sequencer->GetOutputPort(1));
+  this->ToolpathVerifier->SetInputConnection(this->Planner->GetOutputPort());
+  this->ToolpathVerifier->SetTimeArrayName(geolattice::arrays::PointIndex);
+  for (vtkGLNozzleAlgorithm* a : {static_cast<vtkGLNozzleAlgorithm*>(this->Sequencer.Get()),
+                                  static_cast<vtkGLNozzleAlgorithm*>(this->SequenceVerifier.Get()),
+                                  static_cast<vtkGLNozzleAlgorithm*>(this->Planner.Get()),
+                                  static_cast<vtkGLNozzleAlgorithm*>(this->ToolpathVerifier.Get())}) {
+    a->SetNozzle(this->Nozzle);
+  }
+  this->ScriptWriter->SetInputConnection(this->Planner->GetOutputPort());
+  this->GCodeWriter->SetInputConnection(this->Planner->GetOutputPort());
+  this->WaypointWriter->SetInputConnection(this->Planner->GetOutputPort());
+  this->TetMeshInput = !tetMeshInput;  // force the wiring below
+  this->SetTetMeshInput(tetMeshInput);
+}
+
+void GLPrintPipeline::SetTetMeshInput(bool tetMeshInput) {
+  if (tetMeshInput == this->TetMeshInput) {
+    return;
+  }
+  this->TetMeshInput = tetMeshInput;
+  vtkAlgorithm* tets = tetMeshInput ? static_cast<vtkAlgorithm*>(this->Placement.Get())
+                                    : static_cast<vtkAlgorithm*>(this->Tetrahedralize.Get());
+  this->GeodesicFields->SetInputConnection(tets->GetOutputPort());
+}
+
+vtkAlgorithm* GLPrintPipeline::Filter(Stage stage) {
+  switch (stage) {
+    case Read:
+      return this->Reader;
+    case Place:
+      return this->Placement;
+    case Mesh:
+      return this->Tetrahedralize;
+    case Fields:
+      return this->GeodesicFields;
+    case Layers:
+      return this->Slicer;
+    case Overhang:
+      return this->OverhangAnalysis;
+    case Lattice:
+      return this->LatticeInfill;
+    case Skeleton:
+      return this->SkeletonTree;
+    case Sequence:
+      return this->Sequencer;
+    case SequenceVerify:
+      return this->SequenceVerifier;
+    case Toolpath:
+      return this->Planner;
+    case ToolpathVerify:
+      return this->ToolpathVerifier;
+    case NumberOfStages:
+      break;
+  }
+  return nullptr;
+}
+
+const char* GLPrintPipeline::StageName(Stage stage) {
+  static const char* const names[NumberOfStages] = {
+      "read",    "place",    "mesh",     "fields",          "layers",   "overhang",
+      "lattice", "skeleton", "sequence", "sequence-verify", "toolpath", "toolpath-verify"};
+  return stage >= 0 && stage < NumberOfStages ? names[stage] : "";
+}

@@ -1,0 +1,97 @@
+#ifndef GLPrintPipeline_h
+#define GLPrintPipeline_h
+/**
+ * @file GLPrintPipeline.h
+ * @brief The whole GeoLattice pipeline, wired once: the command-line tool (apps/) and the filter
+ * tests build it from here; pvpython/geolattice_pipeline.py builds the same proxies in the same
+ * order (tests/pvpython/test_pipeline_description.py compares the two descriptions).
+ *
+ *   Reader -> Place -> Mesh (skipped for a tet-mesh input) -> Fields -> Layers -> Lattice
+ *          -> Skeleton (+ Fields) -> Sequence -> Toolpath -> the program writers
+ *   Overhang on Fields; SequenceVerify on Sequence; ToolpathVerify on Toolpath.
+ *
+ * Every filter keeps its own defaults (taken from the core options structs); the pipeline only
+ * connects them and gives the sequencer, both verifiers and the planner one shared nozzle
+ * (vtkGLNozzle). Construction only wires; nothing runs until a stage is updated.
+ */
+#ifndef __VTK_WRAP__
+
+#include "GeoLatticeFiltersModule.h"
+#include "vtkGLCollisionVerifier.h"
+#include "vtkGLCurvedLayerSlicer.h"
+#include "vtkGLGCodeWriter.h"
+#include "vtkGLGeodesicDistanceFields.h"
+#include "vtkGLLatticeInfill.h"
+#include "vtkGLMeshReader.h"
+#include "vtkGLNozzle.h"
+#include "vtkGLOverhangAnalysis.h"
+#include "vtkGLPlaceOnPlatform.h"
+#include "vtkGLPrintSequencer.h"
+#include "vtkGLSkeletonTree.h"
+#include "vtkGLTetrahedralizeSurface.h"
+#include "vtkGLToolpathPlanner.h"
+#include "vtkGLURScriptWriter.h"
+#include "vtkGLWaypointCsvWriter.h"
+
+#include <vtkNew.h>
+
+class vtkAlgorithm;
+
+class GEOLATTICEFILTERS_EXPORT GLPrintPipeline {
+public:
+  /// The stages in pipeline order (a CLI `--until` names one of the first group).
+  enum Stage {
+    Read,
+    Place,
+    Mesh,
+    Fields,
+    Layers,
+    Overhang,
+    Lattice,
+    Skeleton,
+    Sequence,
+    SequenceVerify,
+    Toolpath,
+    ToolpathVerify,
+    NumberOfStages
+  };
+
+  /// Wires every filter. With tetMeshInput the Mesh stage is skipped: the placed tet mesh goes
+  /// straight to Fields (and Skeleton).
+  explicit GLPrintPipeline(bool tetMeshInput = false);
+  GLPrintPipeline(const GLPrintPipeline&) = delete;
+  GLPrintPipeline& operator=(const GLPrintPipeline&) = delete;
+
+  /// Rewires for a tet-mesh input (true) or a surface (false).
+  void SetTetMeshInput(bool tetMeshInput);
+  bool GetTetMeshInput() const { return this->TetMeshInput; }
+
+  /// The filter of a stage (Mesh: the tetrahedralizer even when skipped).
+  vtkAlgorithm* Filter(Stage stage);
+  /// "read", "place", "mesh", "fields", "layers", "overhang", "lattice", "skeleton", "sequence",
+  /// "sequence-verify", "toolpath", "toolpath-verify".
+  static const char* StageName(Stage stage);
+
+  vtkNew<vtkGLNozzle> Nozzle;  ///< shared by Sequence, both verifiers and Toolpath
+  vtkNew<vtkGLMeshReader> Reader;
+  vtkNew<vtkGLPlaceOnPlatform> Placement;
+  vtkNew<vtkGLTetrahedralizeSurface> Tetrahedralize;
+  vtkNew<vtkGLGeodesicDistanceFields> GeodesicFields;
+  vtkNew<vtkGLCurvedLayerSlicer> Slicer;
+  vtkNew<vtkGLOverhangAnalysis> OverhangAnalysis;
+  vtkNew<vtkGLLatticeInfill> LatticeInfill;
+  vtkNew<vtkGLSkeletonTree> SkeletonTree;
+  vtkNew<vtkGLPrintSequencer> Sequencer;
+  vtkNew<vtkGLCollisionVerifier> SequenceVerifier;  ///< the order (time = PrintOrder)
+  vtkNew<vtkGLToolpathPlanner> Planner;
+  vtkNew<vtkGLCollisionVerifier> ToolpathVerifier;  ///< the toolpath (time = PointIndex)
+  vtkNew<vtkGLURScriptWriter> ScriptWriter;
+  vtkNew<vtkGLGCodeWriter> GCodeWriter;
+  vtkNew<vtkGLWaypointCsvWriter> WaypointWriter;
+
+private:
+  bool TetMeshInput = false;
+};
+
+#endif  // __VTK_WRAP__
+#endif

@@ -1,0 +1,77 @@
+/**
+ * @class   vtkGLNozzle
+ * @brief   The nozzle volume that must stay clear of printed material: one parameter block
+ *          shared by GL Print Sequencer, GL Collision Verifier and GL Toolpath Planner.
+ *
+ * core/nozzle/NozzleModel.h: the paper's bounding cone (Section 3.1, Fig. 13a) of half-angle
+ * NozzleAngle about the nozzle axis, apex at the tip, optionally cut at NozzleLength above which
+ * the holder is a cylinder of radius HolderRadius; material at most TipClearance above the tip
+ * (level with the nozzle's flat face) or within TipFaceRadius of it (under the face, the bead
+ * being pressed) is not an obstacle.
+ *
+ * The filters hold one of these (SetNozzle) and re-execute when it changes. In ParaView it is a
+ * sub-proxy whose properties appear in each filter's panel (plugin/xml/GLNozzle.xml); the CLI
+ * gives the same object to all three filters. Defaults are those of geolattice::NozzleModel.
+ */
+#ifndef vtkGLNozzle_h
+#define vtkGLNozzle_h
+
+#include "GeoLatticeFiltersModule.h"
+#include "vtkObject.h"
+
+class GEOLATTICEFILTERS_EXPORT vtkGLNozzle : public vtkObject {
+public:
+  static vtkGLNozzle* New();
+  vtkTypeMacro(vtkGLNozzle, vtkObject);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Nozzle half-angle NA (degrees, default 45; in (0, 90), checked when a filter runs).
+  vtkSetMacro(NozzleAngle, double);
+  vtkGetMacro(NozzleAngle, double);
+  ///@}
+
+  ///@{
+  /// Nozzle length L: the cone is cut at this height above the tip (mm, default 0 = cone only).
+  vtkSetMacro(NozzleLength, double);
+  vtkGetMacro(NozzleLength, double);
+  ///@}
+
+  ///@{
+  /// Radius of the holder cylinder above the nozzle length (mm, default 0; used when L > 0).
+  vtkSetMacro(HolderRadius, double);
+  vtkGetMacro(HolderRadius, double);
+  ///@}
+
+  ///@{
+  /// Material at most this high above the tip along the axis is ignored (mm, default 0.1).
+  vtkSetMacro(TipClearance, double);
+  vtkGetMacro(TipClearance, double);
+  ///@}
+
+  ///@{
+  /// Material within this distance of the tip lies under the nozzle's flat face (the bead being
+  /// pressed), not inside the nozzle (mm, default 0.5, >= 0).
+  vtkSetMacro(TipFaceRadius, double);
+  vtkGetMacro(TipFaceRadius, double);
+  ///@}
+
+  /// Copies every parameter of `other` (no-op for null).
+  void CopyParameters(vtkGLNozzle* other);
+
+protected:
+  vtkGLNozzle();
+  ~vtkGLNozzle() override = default;
+
+  double NozzleAngle;
+  double NozzleLength;
+  double HolderRadius;
+  double TipClearance;
+  double TipFaceRadius;
+
+private:
+  vtkGLNozzle(const vtkGLNozzle&) = delete;
+  void operator=(const vtkGLNozzle&) = delete;
+};
+
+#endif
