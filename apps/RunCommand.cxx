@@ -82,7 +82,6 @@ struct StageError : GeoLatticeError {
 
 class Run {
 public:
-
   GLPrintPipeline P;
   RunOptions R;
 
@@ -184,8 +183,8 @@ private:
     reportCollisions(pathCollisions, path);
     this->Write(toolpath, "toolpath.vtp");
     this->Write(pathCollisions, "toolpath_collisions.vtp");
-    const int steps = replayStepCount(vtkDataSet::SafeDownCast(toolpath)->GetNumberOfPoints(),
-                                      R.replaySteps);
+    const int steps =
+        replayStepCount(vtkDataSet::SafeDownCast(toolpath)->GetNumberOfPoints(), R.replaySteps);
     path["replay_steps"] = steps;
     const auto replayStart = Clock::now();
     for (const std::string& f : writeToolpathReplay(P.Planner, R.outDir, steps)) {
@@ -210,7 +209,8 @@ private:
   int Programs(vtkDataObject* pathCollisions) {
     Json& s = this->Section("program");
     Json& gates = this->Report["gates"];
-    const long long stations = static_cast<long long>(fieldValue(pathCollisions, arrays::CollisionStations));
+    const long long stations =
+        static_cast<long long>(fieldValue(pathCollisions, arrays::CollisionStations));
     const long long colliding =
         static_cast<long long>(fieldValue(pathCollisions, arrays::CollisionViolatingStations));
     if (colliding > 0) {
@@ -252,9 +252,10 @@ private:
         std::cout << " stopped\n";
       }
       if (script->GetUnreachableCount() > 0 && !script->GetAllowUnreachable()) {
-        gates["reachability"] = {{"passed", false},
-                                 {"unreachable", static_cast<long long>(script->GetUnreachableCount())},
-                                 {"stopped", {"program"}}};
+        gates["reachability"] = {
+            {"passed", false},
+            {"unreachable", static_cast<long long>(script->GetUnreachableCount())},
+            {"stopped", {"program"}}};
         this->GateLine("program: " + withFlagNames(scriptError));
         return kExitUnreachableGate;
       }
@@ -268,8 +269,9 @@ private:
       }
       throw StageError("program", scriptError);
     }
-    gates["reachability"] = {{"passed", script->GetUnreachableCount() == 0},
-                             {"unreachable", static_cast<long long>(script->GetUnreachableCount())}};
+    gates["reachability"] = {
+        {"passed", script->GetUnreachableCount() == 0},
+        {"unreachable", static_cast<long long>(script->GetUnreachableCount())}};
     gates["joints"] = {{"passed", true}, {"max_step_deg", script->GetMaxJointStepDeg()}};
     if (script->GetUnreachableCount() > 0) {
       std::cerr << "geolattice: warning: " << script->GetUnreachableCount() << " of "
@@ -375,8 +377,8 @@ private:
     }
     this->LastSeconds = secondsSince(start);
     if (!R.quiet) {
-      std::cout << (ok && errors.Message.empty() ? " done" : " failed") << " ("
-                << this->LastSeconds << " s)\n";
+      std::cout << (ok && errors.Message.empty() ? " done" : " failed") << " (" << this->LastSeconds
+                << " s)\n";
     }
     if (!ok || !errors.Message.empty()) {
       throw StageError(stage, errors.Message.empty() ? std::string(last->GetClassName()) + " failed"

@@ -30,13 +30,15 @@ long long cells(vtkDataObject* data) {
   return d ? static_cast<long long>(d->GetNumberOfCells()) : 0;
 }
 
-std::vector<double> vec(const double* v, int n) { return std::vector<double>(v, v + n); }
+std::vector<double> vec(const double* v, int n) {
+  return std::vector<double>(v, v + n);
+}
 
 /// Smallest or largest non-NaN value of a field array (NaN marks "no value" per layer).
 double extremum(vtkDataObject* data, const char* name, bool wantMin) {
   vtkDataArray* a = data->GetFieldData()->GetArray(name);
-  double best = wantMin ? std::numeric_limits<double>::infinity()
-                        : -std::numeric_limits<double>::infinity();
+  double best =
+      wantMin ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
   for (vtkIdType i = 0; a && i < a->GetNumberOfTuples(); ++i) {
     const double v = a->GetTuple1(i);
     if (!std::isnan(v)) {

@@ -2,9 +2,12 @@
 // plugin (filters/GLPrintPipeline.h) and writes every stage's output plus report.json into the
 // output directory; `verify` re-checks a saved result for nozzle collisions.
 #include "CliOptions.h"
+#include "GLPrintPipeline.h"
 #include "RunCommand.h"
 #include "VerifyCommand.h"
 
+#include <vtkAlgorithm.h>
+#include <vtkAlgorithmOutput.h>
 #include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkOutputWindow.h>
@@ -62,6 +65,40 @@ public:
   void DisplayText(const char*) override {}
 };
 
+/// "== CLASS" and the PrintSelf of a default-constructed object, for every filter and writer.
+void printFilterDefaults() {
+  GLPrintPipeline p;
+  vtkObject* objects[] = {p.Nozzle,         p.Reader,      p.Placement,        p.Tetrahedralize,
+                          p.GeodesicFields, p.Slicer,      p.OverhangAnalysis, p.LatticeInfill,
+                          p.SkeletonTree,   p.Sequencer,   p.SequenceVerifier, p.Planner,
+                          p.ScriptWriter,   p.GCodeWriter, p.WaypointWriter};
+  for (vtkObject* o : objects) {
+    std::cout << "== " << o->GetClassName() << "\n";
+    o->Print(std::cout);
+  }
+}
+
+/// One line per stage: name, class, and per input port the producing stage and its output port.
+void describePipeline() {
+  GLPrintPipeline p;
+  for (int s = 0; s < GLPrintPipeline::NumberOfStages; ++s) {
+    vtkAlgorithm* a = p.Filter(static_cast<GLPrintPipeline::Stage>(s));
+    std::cout << GLPrintPipeline::StageName(static_cast<GLPrintPipeline::Stage>(s)) << '\t'
+              << a->GetClassName();
+    for (int port = 0; port < a->GetNumberOfInputPorts(); ++port) {
+      vtkAlgorithmOutput* in = a->GetInputConnection(port, 0);
+      for (int t = 0; in && t < GLPrintPipeline::NumberOfStages; ++t) {
+        if (p.Filter(static_cast<GLPrintPipeline::Stage>(t)) == in->GetProducer()) {
+          std::cout << '\t' << port << ':'
+                    << GLPrintPipeline::StageName(static_cast<GLPrintPipeline::Stage>(t)) << '.'
+                    << in->GetIndex();
+        }
+      }
+    }
+    std::cout << '\n';
+  }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -76,6 +113,14 @@ int main(int argc, char** argv) {
     }
     if (!std::strcmp(argv[i], "--list-options")) {
       std::cout << geolattice::optionListing();
+      return 0;
+    }
+    if (!std::strcmp(argv[i], "--describe-pipeline")) {
+      describePipeline();  // for tests/pvpython/test_pipeline_description.py
+      return 0;
+    }
+    if (!std::strcmp(argv[i], "--print-filter-defaults")) {
+      printFilterDefaults();  // for tests/pvpython/test_defaults.py
       return 0;
     }
   }

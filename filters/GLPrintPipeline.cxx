@@ -20,10 +20,11 @@ GLPrintPipeline::GLPrintPipeline(bool tetMeshInput) {
   this->Planner->SetInputConnection(1, this->Sequencer->GetOutputPort(1));
   this->ToolpathVerifier->SetInputConnection(this->Planner->GetOutputPort());
   this->ToolpathVerifier->SetTimeArrayName(geolattice::arrays::PointIndex);
-  for (vtkGLNozzleAlgorithm* a : {static_cast<vtkGLNozzleAlgorithm*>(this->Sequencer.Get()),
-                                  static_cast<vtkGLNozzleAlgorithm*>(this->SequenceVerifier.Get()),
-                                  static_cast<vtkGLNozzleAlgorithm*>(this->Planner.Get()),
-                                  static_cast<vtkGLNozzleAlgorithm*>(this->ToolpathVerifier.Get())}) {
+  for (vtkGLNozzleAlgorithm* a :
+       {static_cast<vtkGLNozzleAlgorithm*>(this->Sequencer.Get()),
+        static_cast<vtkGLNozzleAlgorithm*>(this->SequenceVerifier.Get()),
+        static_cast<vtkGLNozzleAlgorithm*>(this->Planner.Get()),
+        static_cast<vtkGLNozzleAlgorithm*>(this->ToolpathVerifier.Get())}) {
     a->SetNozzle(this->Nozzle);
   }
   this->ScriptWriter->SetInputConnection(this->Planner->GetOutputPort());

@@ -40,10 +40,9 @@
  *   `CollisionOrderFree` (int: 1 when every violation is unavoidable; = CollisionFree without
  *   SkeletonEdges), `CollisionStations` (points checked), `CollisionViolatingStations`,
  *   `CollisionUnavoidableStations`, `CollisionSeconds` and `NozzleAngleDeg`.
- * Parameters: TimeArrayName (default "PrintOrder"), NozzleAngle (degrees, default 45, in
- *   (0, 90)), NozzleLength (mm, default 0 = cone only), HolderRadius (mm, default 0),
- *   TipClearance (mm, default 0.1), TipFaceRadius (mm, default 0.5: material that near the tip is
- *   under the nozzle face), SampleSpacing (mm, default 1, > 0), MaxReported (default 20).
+ * Parameters: TimeArrayName (default "PrintOrder"), the nozzle (vtkGLNozzle: NozzleAngle,
+ *   NozzleLength, HolderRadius, TipClearance, TipFaceRadius), SampleSpacing (mm, default 1, > 0),
+ *   MaxReported (default 20).
  * Errors (an empty input, missing Normals or time array, a non-integer or non-finite time, a zero
  * normal, NozzleAngle outside (0, 90) or another bad nozzle, SampleSpacing <= 0, SkeletonEdges
  * without 2 components, with a negative id or a cycle) are reported with vtkErrorMacro and give

@@ -137,7 +137,8 @@ void vtkGLGCodeWriter::WriteData() {
 
 void vtkGLGCodeWriter::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Kinematics: " << (this->Kinematics == BC ? "BC" : "AC") << "\n";
+  os << indent << "Kinematics: " << this->Kinematics
+     << (this->Kinematics == BC ? " (B-C)" : " (A-C)") << "\n";
   os << indent << "Pivot: " << this->Pivot[0] << " " << this->Pivot[1] << " " << this->Pivot[2]
      << " mm\n";
   os << indent << "PartOffset: " << this->PartOffset[0] << " " << this->PartOffset[1] << " "

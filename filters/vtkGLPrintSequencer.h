@@ -41,12 +41,10 @@
  *   `SequenceStart`, `SequenceEnd` (3 values, mm), and `SkeletonEdges` (2 values per skeleton
  *   edge: lower and upper sub-graph id; vtkGLCollisionVerifier uses it to tell unavoidable
  *   collisions from avoidable ones).
- * Parameters: Strategy (default 2 = A4), NozzleAngle (NA, degrees, default 45, in (0, 90)),
- *   NozzleLength (mm, default 0 = cone only), HolderRadius (mm, default 0), TipClearance (mm,
- *   default 0.1: material with height <= this above the tip is ignored), TipFaceRadius (mm,
- *   default 0.5: material this close to the tip is under the nozzle face), SampleSpacing (mm,
- *   default 1, > 0), RolloutCandidates (default 6, >= 1), RetractionCost (mm, default 20,
- *   >= 0), NumberOfThreads (PCG, default 0 = all cores).
+ * Parameters: Strategy (default 3 = Best), the nozzle (vtkGLNozzle: NozzleAngle, NozzleLength,
+ *   HolderRadius, TipClearance, TipFaceRadius), SampleSpacing (mm, default 1, > 0),
+ *   RolloutCandidates (default 6, >= 1), RetractionCost (mm, default 20, >= 0), NumberOfThreads
+ *   (PCG, default 0 = all cores).
  * Errors (an empty lattice, missing arrays, a skeleton that does not match the lattice (node
  * count or layers), a skeleton edge between non-consecutive layers, NozzleAngle outside (0, 90)
  * or another bad nozzle or option) are reported with vtkErrorMacro and give empty outputs.
@@ -72,7 +70,7 @@ public:
   };
 
   ///@{
-  /// Ordering strategy (default A4).
+  /// Ordering strategy (default 3 = Best).
   vtkSetClampMacro(Strategy, int, LPT, BEST);
   vtkGetMacro(Strategy, int);
   ///@}

@@ -72,8 +72,8 @@
  *   ThicknessCap (λ of Eq. 15, default 1.5, > 0), MaxTurnAngle (degrees, default 5, > 0),
  *   SafeMargin (mm, default 5, >= 0), Lift (mm, default 2, > 0), Retraction (mm of filament,
  *   default 1, >= 0), SupportPerimeter (default on), ToothLength (l, mm, default 0 = 2 PathWidth,
- *   >= 0), MaxSegmentLength (mm, default 1, >= 0; 0 = no subdivision), the nozzle NozzleAngle,
- *   NozzleLength, HolderRadius, TipClearance, TipFaceRadius (as vtkGLCollisionVerifier),
+ *   >= 0), MaxSegmentLength (mm, default 1, >= 0; 0 = no subdivision), the nozzle (vtkGLNozzle,
+ *   shared with the sequencer and the verifier),
  *   MaxAxisTilt (degrees, default 15, in [0, 60]; 0 = axis ∇γ everywhere), TiltBlendLength (mm,
  *   default 5, >= 0), NumberOfTimeSteps (default 200; 0 = no time steps, always the whole path).
  * Errors (an empty lattice or skeleton, missing arrays (EdgeKind included), no SequenceOrder

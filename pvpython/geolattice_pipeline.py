@@ -37,46 +37,91 @@ def load_plugin(path=None):
 
 STRATEGIES = ("LPT", "DPT", "A4", "Best")  # GLPrintSequencer's Strategy values, in the order of its enumeration
 
+# The pipeline of filters/GLPrintPipeline.h, stage by stage: (key, proxy, inputs as (key, port) per
+# input property). tests/pvpython/test_pipeline_description.py checks it against the C++ one
+# (`geolattice --describe-pipeline`).
+STAGES = [
+    ("reader", "GLMeshReader", {}),
+    ("place", "GLPlaceOnPlatform", {"Input": ("reader", 0)}),
+    ("tets", "GLTetrahedralizeSurface", {"Input": ("place", 0)}),
+    ("fields", "GLGeodesicDistanceFields", {"Input": ("tets", 0)}),
+    ("layers", "GLCurvedLayerSlicer", {"Input": ("fields", 0)}),
+    ("overhang", "GLOverhangAnalysis", {"Input": ("fields", 0)}),
+    ("lattice", "GLLatticeInfill", {"Input": ("layers", 0)}),
+    ("skeleton", "GLSkeletonTree", {"Input": ("lattice", 0), "TetMesh": ("fields", 0)}),
+    ("sequencer", "GLPrintSequencer", {"Input": ("lattice", 0), "Skeleton": ("skeleton", 0)}),
+    ("verifier", "GLCollisionVerifier", {"Input": ("sequencer", 0)}),
+    ("toolpath", "GLToolpathPlanner", {"Input": ("sequencer", 0), "Skeleton": ("sequencer", 1)}),
+    ("toolpath_verifier", "GLCollisionVerifier", {"Input": ("toolpath", 0)}),
+]
 
-def build_pipeline(model, scale=1.0, fit_size=0.0, center=True, edge_length=0.0, radius_edge=1.414,
-                   base_tolerance=0.05, time_factor=4.0, reference=(1.0, 0.0, 0.0), layer_interval=0.6,
-                   first_layer=None, lattice_width=4.0, strategy="A4", nozzle_angle=45.0, sample_spacing=1.0,
-                   path_width=0.6, filament_diameter=1.75, flow_correction=0.95, support_perimeter=True,
-                   time_steps=200):
-    """Returns a dict of the pipeline's proxies: reader, place, tets, fields, layers, lattice, skeleton,
-    sequencer (output ports 0 Sequenced Lattice, 1 Sequenced Skeleton, 2 Print Order), verifier (checks
-    the sequenced lattice with the same nozzle and sample spacing), toolpath (GLToolpathPlanner on the
-    sequencer's outputs 0 and 1; it has `time_steps` time steps 0..1 of print progress, so the animation
-    controls replay the print; update it with a time, e.g. toolpath.UpdatePipeline(0.5), for the part
-    printed by then), toolpath_verifier (the verifier on the toolpath: time = PointIndex, air points are no
-    material) and overhang."""
-    reader = simple.GLMeshReader(FileName=model)
-    place = simple.GLPlaceOnPlatform(Input=reader, Scale=scale, FitSize=fit_size, CenterXY=int(center))
-    if model.lower().endswith(TET_MESH_EXTENSIONS):
-        tets = place
-    else:
-        tets = simple.GLTetrahedralizeSurface(Input=place, TargetEdgeLength=edge_length,
-                                              RadiusEdgeRatio=radius_edge)
-    fields = simple.GLGeodesicDistanceFields(Input=tets, SourceMode=0, BaseTolerance=base_tolerance,
-                                             TimeFactor=time_factor, ReferenceVector=list(reference))
-    layers = simple.GLCurvedLayerSlicer(Input=fields, LayerInterval=layer_interval,
-                                        FirstLayerOffset=layer_interval if first_layer is None else first_layer)
-    lattice = simple.GLLatticeInfill(Input=layers, AlphaWidth=lattice_width, BetaWidth=lattice_width)
-    skeleton = simple.GLSkeletonTree(Input=lattice, TetMesh=fields)
-    sequencer = simple.GLPrintSequencer(Input=lattice, Skeleton=skeleton, Strategy=strategy,
-                                        NozzleAngle=nozzle_angle, SampleSpacing=sample_spacing)
-    verifier = simple.GLCollisionVerifier(Input=simple.OutputPort(sequencer, 0), TimeArrayName="PrintOrder",
-                                          NozzleAngle=nozzle_angle, SampleSpacing=sample_spacing)
-    toolpath = simple.GLToolpathPlanner(Input=simple.OutputPort(sequencer, 0),
-                                        Skeleton=simple.OutputPort(sequencer, 1), PathWidth=path_width,
-                                        FilamentDiameter=filament_diameter, FlowCorrection=flow_correction,
-                                        SupportPerimeter=int(support_perimeter), NumberOfTimeSteps=time_steps)
-    toolpath_verifier = simple.GLCollisionVerifier(Input=toolpath, TimeArrayName="PointIndex",
-                                                   NozzleAngle=nozzle_angle)
-    overhang = simple.GLOverhangAnalysis(Input=fields)
-    return {"reader": reader, "place": place, "tets": tets, "fields": fields, "layers": layers,
-            "lattice": lattice, "skeleton": skeleton, "sequencer": sequencer, "verifier": verifier,
-            "toolpath": toolpath, "toolpath_verifier": toolpath_verifier, "overhang": overhang}
+# build_pipeline keywords -> (stage key(s), property). Anything not given keeps the filter's
+# default (the XML default, checked against the filters by tests/pvpython/test_defaults.py).
+PARAMETERS = {
+    "scale": (("place",), "Scale"),
+    "fit_size": (("place",), "FitSize"),
+    "center": (("place",), "CenterXY"),
+    "edge_length": (("tets",), "TargetEdgeLength"),
+    "radius_edge": (("tets",), "RadiusEdgeRatio"),
+    "base_tolerance": (("fields",), "BaseTolerance"),
+    "time_factor": (("fields",), "TimeFactor"),
+    "reference": (("fields",), "ReferenceVector"),
+    "layer_interval": (("layers",), "LayerInterval"),
+    "first_layer": (("layers",), "FirstLayerOffset"),
+    "alpha_width": (("lattice",), "AlphaWidth"),
+    "beta_width": (("lattice",), "BetaWidth"),
+    "strategy": (("sequencer",), "Strategy"),
+    "nozzle_angle": (("sequencer", "verifier", "toolpath", "toolpath_verifier"), "NozzleAngle"),
+    "sample_spacing": (("sequencer", "verifier"), "SampleSpacing"),
+    "path_width": (("toolpath",), "PathWidth"),
+    "filament_diameter": (("toolpath",), "FilamentDiameter"),
+    "flow_correction": (("toolpath",), "FlowCorrection"),
+    "support_perimeter": (("toolpath",), "SupportPerimeter"),
+    "time_steps": (("toolpath",), "NumberOfTimeSteps"),
+}
+
+
+def build_pipeline(model, lattice_width=None, **parameters):
+    """Returns a dict of the pipeline's proxies by key (see STAGES): reader, place, tets, fields, layers,
+    overhang, lattice, skeleton, sequencer (output ports 0 Sequenced Lattice, 1 Sequenced Skeleton,
+    2 Print Order), verifier (the sequenced lattice, time PrintOrder), toolpath (GLToolpathPlanner; its
+    time steps 0..1 replay the print: e.g. toolpath.UpdatePipeline(0.5) for the part printed by then)
+    and toolpath_verifier (time PointIndex, air points no material). For a tet-mesh model "tets" is the
+    placement. Keywords (PARAMETERS; lattice_width sets both widths) set properties; everything else
+    keeps the filters' defaults, the same as the command line's. As on the command line, the first
+    layer follows layer_interval unless first_layer is given."""
+    if lattice_width is not None:
+        parameters.setdefault("alpha_width", lattice_width)
+        parameters.setdefault("beta_width", lattice_width)
+    if "layer_interval" in parameters:
+        parameters.setdefault("first_layer", parameters["layer_interval"])
+    if isinstance(parameters.get("strategy"), str) and parameters["strategy"].lower() in ("lpt", "dpt", "a4", "best"):
+        parameters["strategy"] = {"lpt": "LPT", "dpt": "DPT", "a4": "A4", "best": "Best"}[parameters["strategy"].lower()]
+    for key in ("center", "support_perimeter"):
+        if key in parameters:
+            parameters[key] = int(parameters[key])
+    unknown = sorted(set(parameters) - set(PARAMETERS))
+    if unknown:
+        raise TypeError("build_pipeline: unknown parameters %s (known: %s)" % (unknown, sorted(PARAMETERS)))
+    tet_mesh = model.lower().endswith(TET_MESH_EXTENSIONS)
+    p = {}
+    for key, proxy_name, inputs in STAGES:
+        if key == "tets" and tet_mesh:
+            p["tets"] = p["place"]
+            continue
+        properties = {}
+        for name, (source, port) in inputs.items():
+            properties[name] = simple.OutputPort(p[source], port) if port else p[source]
+        if key == "reader":
+            properties["FileName"] = model
+        if proxy_name == "GLCollisionVerifier":
+            properties["TimeArrayName"] = "PrintOrder" if key == "verifier" else "PointIndex"
+        p[key] = getattr(simple, proxy_name)(**properties)
+    for name, value in parameters.items():
+        keys, prop = PARAMETERS[name]
+        for key in keys:
+            setattr(p[key], prop, list(value) if isinstance(value, (tuple, list)) else value)
+    return p
 
 
 def save_binary(proxy, path):
@@ -99,24 +144,26 @@ def main(argv=None):
     parser.add_argument("model", help="closed surface (.stl .obj .ply .vtp .off) or tet mesh (.vtu .tet .node .ele)")
     parser.add_argument("-o", "--output", required=True, help="output directory")
     parser.add_argument("--plugin", help="path of GeoLattice.so")
-    parser.add_argument("--scale", type=float, default=1.0, help="uniform scale factor [1]")
-    parser.add_argument("--fit-size", type=float, default=0.0, help="largest bounding-box side in mm [off]")
-    parser.add_argument("--edge-length", type=float, default=0.0, help="target tet edge length in mm [auto]")
-    parser.add_argument("--base-tolerance", type=float, default=0.05,
-                        help="vertices this far above the lowest point are the base, mm [0.05]")
-    parser.add_argument("--time-factor", type=float, default=4.0, help="heat time factor [4]")
-    parser.add_argument("--layer-interval", type=float, default=0.6, help="curved layer interval, mm [0.6]")
-    parser.add_argument("--lattice-width", type=float, default=4.0, help="lattice line spacing, mm [4]")
-    parser.add_argument("--strategy", choices=STRATEGIES, default="A4", help="printing order strategy [A4]")
-    parser.add_argument("--nozzle-angle", type=float, default=45.0, help="nozzle cone half-angle, degrees [45]")
+    # No defaults here: what is not given keeps the filters' defaults (the same as the CLI's).
+    parser.add_argument("--scale", type=float, help="uniform scale factor")
+    parser.add_argument("--fit-size", type=float, help="largest bounding-box side in mm")
+    parser.add_argument("--edge-length", type=float, help="target tet edge length in mm (0 = automatic)")
+    parser.add_argument("--base-tolerance", type=float,
+                        help="vertices this far above the lowest point are the base, mm")
+    parser.add_argument("--time-factor", type=float, help="heat time factor")
+    parser.add_argument("--layer-interval", type=float, help="curved layer interval, mm")
+    parser.add_argument("--lattice-width", type=float, help="lattice line spacing, mm")
+    parser.add_argument("--strategy", choices=STRATEGIES, help="printing order strategy")
+    parser.add_argument("--nozzle-angle", type=float, help="nozzle cone half-angle, degrees")
     args = parser.parse_args(argv)
 
     load_plugin(args.plugin)
     os.makedirs(args.output, exist_ok=True)
-    p = build_pipeline(args.model, scale=args.scale, fit_size=args.fit_size, edge_length=args.edge_length,
-                       base_tolerance=args.base_tolerance, time_factor=args.time_factor,
-                       layer_interval=args.layer_interval, lattice_width=args.lattice_width,
-                       strategy=args.strategy, nozzle_angle=args.nozzle_angle)
+    given = dict(scale=args.scale, fit_size=args.fit_size, edge_length=args.edge_length,
+                 base_tolerance=args.base_tolerance, time_factor=args.time_factor,
+                 layer_interval=args.layer_interval, strategy=args.strategy, nozzle_angle=args.nozzle_angle)
+    p = build_pipeline(args.model, lattice_width=args.lattice_width,
+                       **{k: v for k, v in given.items() if v is not None})
     p["fields"].UpdatePipeline()
     fields = simple.servermanager.Fetch(p["fields"])
     if fields is None or fields.GetNumberOfCells() == 0:
@@ -147,7 +194,8 @@ def main(argv=None):
         verdict = "only unavoidable collisions (with material of skeleton ancestors, see collisions.vtp)"
     else:
         verdict = "COLLISIONS (see collisions.vtp)"
-    print("geolattice_pipeline: %s printing order at nozzle angle %g: %s" % (args.strategy, args.nozzle_angle, verdict))
+    print("geolattice_pipeline: %s printing order at nozzle angle %g: %s" %
+          (p["sequencer"].Strategy, p["sequencer"].NozzleAngle, verdict))
     tfd = simple.servermanager.Fetch(p["toolpath"]).GetFieldData()
     if tfd.GetArray("ToolpathPrintLength") is not None:
         print("geolattice_pipeline: toolpath %.1f mm printed, %.1f mm air, %d retractions, filament %.1f mm" %

@@ -33,7 +33,8 @@ Placement placeOnPlatform(const Vec3& lo, const Vec3& hi, const PlacementOptions
   p.scale = options.scale;
   if (options.fitSize > 0.0) {
     if (!(largest > 0.0)) {
-      throw GeoLatticeError("FitSize needs a model with extent: its bounding box is a single point");
+      throw GeoLatticeError(
+          "FitSize needs a model with extent: its bounding box is a single point");
     }
     p.scale = options.fitSize / largest;
   }

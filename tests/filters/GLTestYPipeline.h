@@ -1,11 +1,12 @@
 #pragma once
 /// @file GLTestYPipeline.h
-/// @brief The coarse branching-Y pipeline shared by the end-to-end filter tests: reader -> place
-/// -> tets (2 mm) -> GDF -> slicer (1 mm layers, first at 0.5 mm) -> lattice (4 mm) -> skeleton ->
-/// sequencer (NA 45°) -> toolpath planner (skeleton tree as its second input), every stage watched
-/// by one error observer. Construction only wires the filters; tests update what they need.
+/// @brief The coarse branching-Y pipeline shared by the end-to-end filter tests: GLPrintPipeline
+/// (the CLI's pipeline) on testdata/y_shape.obj with tets of 2 mm, 1 mm layers (first at 0.5 mm)
+/// and a 4 mm lattice, every stage watched by one error observer. Construction only wires the
+/// filters; tests update what they need.
 #include "GLTestErrorObserver.h"
 
+#include "GLPrintPipeline.h"
 #include "vtkGLCurvedLayerSlicer.h"
 #include "vtkGLGeodesicDistanceFields.h"
 #include "vtkGLLatticeInfill.h"
@@ -22,36 +23,25 @@
 #include <string>
 
 struct GLTestYPipeline {
-  vtkNew<vtkGLMeshReader> reader;
-  vtkNew<vtkGLPlaceOnPlatform> place;
-  vtkNew<vtkGLTetrahedralizeSurface> tets;
-  vtkNew<vtkGLGeodesicDistanceFields> gdf;
-  vtkNew<vtkGLCurvedLayerSlicer> slicer;
-  vtkNew<vtkGLLatticeInfill> lattice;
-  vtkNew<vtkGLSkeletonTree> skeleton;
-  vtkNew<vtkGLPrintSequencer> sequencer;
-  vtkNew<vtkGLToolpathPlanner> planner;
+  GLPrintPipeline pipeline;  ///< the CLI's pipeline, wired once (filters/GLPrintPipeline.h)
+  vtkGLMeshReader* reader = pipeline.Reader;
+  vtkGLPlaceOnPlatform* place = pipeline.Placement;
+  vtkGLTetrahedralizeSurface* tets = pipeline.Tetrahedralize;
+  vtkGLGeodesicDistanceFields* gdf = pipeline.GeodesicFields;
+  vtkGLCurvedLayerSlicer* slicer = pipeline.Slicer;
+  vtkGLLatticeInfill* lattice = pipeline.LatticeInfill;
+  vtkGLSkeletonTree* skeleton = pipeline.SkeletonTree;
+  vtkGLPrintSequencer* sequencer = pipeline.Sequencer;
+  vtkGLToolpathPlanner* planner = pipeline.Planner;
   vtkNew<GLTestErrorObserver> errors;
 
   GLTestYPipeline() {
     reader->SetFileName((std::string(GEOLATTICE_TESTDATA) + "/y_shape.obj").c_str());
-    place->SetInputConnection(reader->GetOutputPort());
-    tets->SetInputConnection(place->GetOutputPort());
     tets->SetTargetEdgeLength(2.0);  // coarse
-    gdf->SetInputConnection(tets->GetOutputPort());
-    slicer->SetInputConnection(gdf->GetOutputPort());
     slicer->SetLayerInterval(1.0);
     slicer->SetFirstLayerOffset(0.5);
-    lattice->SetInputConnection(slicer->GetOutputPort(0));
     lattice->SetAlphaWidth(4.0);
     lattice->SetBetaWidth(4.0);
-    skeleton->SetInputConnection(0, lattice->GetOutputPort());
-    skeleton->SetInputConnection(1, gdf->GetOutputPort());
-    sequencer->SetInputConnection(0, lattice->GetOutputPort());
-    sequencer->SetInputConnection(1, skeleton->GetOutputPort());
-    sequencer->GetNozzle()->SetNozzleAngle(45.0);
-    planner->SetInputConnection(0, sequencer->GetOutputPort(0));
-    planner->SetInputConnection(1, skeleton->GetOutputPort());  // the skeleton tree itself
     for (vtkAlgorithm* a : std::initializer_list<vtkAlgorithm*>{
              reader, place, tets, gdf, slicer, lattice, skeleton, sequencer, planner}) {
       errors->Observe(a);

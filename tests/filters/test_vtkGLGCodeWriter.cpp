@@ -95,7 +95,7 @@ TEST(vtkGLGCodeWriter, DefaultsAndPrintSelf) {
   EXPECT_EQ(w->GetKinematics(), vtkGLGCodeWriter::BC);
   std::ostringstream os;
   w->Print(os);
-  for (const char* text : {"Kinematics: BC", "TiltLimits: -120 120"}) {
+  for (const char* text : {"Kinematics: 1 (B-C)", "TiltLimits: -120 120"}) {
     EXPECT_NE(os.str().find(text), std::string::npos) << text;
   }
 }

@@ -48,8 +48,9 @@ TEST(vtkGLToolpathWriter, RefusesACollidingToolpathUnlessAllowed) {
       w->SetFileName(path.c_str());
       EXPECT_EQ(w->Write(), 0);
       EXPECT_EQ(errors->GetErrorCount(), 1);
-      EXPECT_NE(errors->Errors().find(verdict == 0 ? "the toolpath collides" : "no collision verdict"),
-                std::string::npos)
+      EXPECT_NE(
+          errors->Errors().find(verdict == 0 ? "the toolpath collides" : "no collision verdict"),
+          std::string::npos)
           << errors->Errors();
       EXPECT_NE(errors->Errors().find("nothing written"), std::string::npos);
       EXPECT_FALSE(std::filesystem::exists(path));

@@ -127,7 +127,7 @@ class PipelineTest(unittest.TestCase):
         self.assertEqual(order.GetNumberOfCells(), subgraphs - 1)
         for data in (sequenced, nodes, order):
             fd = data.GetFieldData()
-            self.assertEqual(fd.GetAbstractArray(NAMES["SequenceStrategy"]).GetValue(0), "a4")
+            self.assertEqual(fd.GetAbstractArray(NAMES["SequenceStrategy"]).GetValue(0), "best")
             for key in ("SequenceRetractions", "SequenceAirLength", "SequenceForcedSteps", "SequenceSeconds",
                         "SequencePcgPairs", "SequencePcgSeconds", "SequenceUnavoidablePairs", "NozzleAngleDeg",
                         "SequenceOrder", "SequenceStart", "SequenceEnd", "SkeletonEdges"):

@@ -1,0 +1,52 @@
+"""The pipeline is defined once: the pvpython module (pvpython/geolattice_pipeline.py, used by the
+GUI and state scripts) builds the same stages, filter classes and connections as the C++ pipeline
+the command-line tool runs (filters/GLPrintPipeline.h, `geolattice --describe-pipeline`)."""
+import os
+import subprocess
+import sys
+import unittest
+
+SOURCE_DIR = os.environ["GEOLATTICE_SOURCE_DIR"]
+CLI = os.environ["GEOLATTICE_CLI"]
+sys.path.insert(0, os.path.join(SOURCE_DIR, "pvpython"))
+
+import geolattice_pipeline as pipeline  # noqa: E402
+from paraview import servermanager  # noqa: E402
+
+# Python key -> C++ stage name.
+KEYS = {"reader": "read", "place": "place", "tets": "mesh", "fields": "fields", "layers": "layers",
+        "overhang": "overhang", "lattice": "lattice", "skeleton": "skeleton", "sequencer": "sequence",
+        "verifier": "sequence-verify", "toolpath": "toolpath", "toolpath_verifier": "toolpath-verify"}
+
+
+class PipelineDescriptionTest(unittest.TestCase):
+    def test_same_stages_classes_and_connections(self):
+        cpp = {}
+        out = subprocess.run([CLI, "--describe-pipeline"], capture_output=True, text=True, check=True).stdout
+        for line in out.splitlines():
+            name, cls, *inputs = line.split("\t")
+            cpp[name] = (cls, sorted(inputs))
+        pipeline.load_plugin()
+        p = pipeline.build_pipeline(os.path.join(SOURCE_DIR, "testdata", "cube.obj"))
+        python = {}
+        by_proxy = {}
+        for key, proxy in p.items():
+            by_proxy[proxy.SMProxy.GetGlobalIDAsString()] = KEYS[key]
+        for key, proxy in p.items():
+            inputs = []
+            for port, (name, _) in enumerate(pipeline.STAGES[[s[0] for s in pipeline.STAGES].index(key)][2].items()):
+                source = proxy.GetProperty(name)
+                producer = source.GetData()
+                producer_proxy = producer.Proxy if hasattr(producer, "Proxy") else producer
+                index = producer.Port if hasattr(producer, "Port") else 0
+                inputs.append("%d:%s.%d" % (port, by_proxy[producer_proxy.SMProxy.GetGlobalIDAsString()], index))
+            python[KEYS[key]] = (proxy.SMProxy.GetVTKClassName(), sorted(inputs))
+        self.assertEqual(sorted(python), sorted(cpp))
+        for stage in cpp:
+            with self.subTest(stage=stage):
+                self.assertEqual(python[stage], cpp[stage])
+
+
+if __name__ == "__main__":
+    result = unittest.main(exit=False, verbosity=2).result
+    sys.exit(0 if result.wasSuccessful() else 1)
