@@ -323,6 +323,19 @@ std::vector<CliOption> makeTable() {
                      "flat face, which presses the bead)",
                      "GLNozzle.TipFaceRadius", nozzle, &vtkGLNozzle::SetTipFaceRadius,
                      &vtkGLNozzle::GetTipFaceRadius));
+  t.push_back({"--no-plate", "", seq,
+               "the build plate is no obstacle (default: it is, like printed material)",
+               "GLNozzle.BuildPlate",
+               [](P& p, RunOptions&, const std::string&) { p.Nozzle->SetBuildPlate(false); },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.Nozzle->GetBuildPlate() ? "obstacle" : "none");
+               }});
+  t.push_back(number(
+      "--plate-margin", "MM", seq, "the build plate extends this far beyond the part's footprint",
+      "GLNozzle.PlateMargin", nozzle, &vtkGLNozzle::SetPlateMargin, &vtkGLNozzle::GetPlateMargin));
+  t.push_back(number("--plate-thickness", "MM", seq, "thickness of the build plate under z = 0",
+                     "GLNozzle.PlateThickness", nozzle, &vtkGLNozzle::SetPlateThickness,
+                     &vtkGLNozzle::GetPlateThickness));
   t.push_back({"--sample-spacing", "MM", seq,
                "spacing of the material samples tested for collisions",
                "GLPrintSequencer.SampleSpacing",

@@ -155,6 +155,9 @@ void reportSequence(GLPrintPipeline& p, vtkDataObject* sequenced, Json& s) {
   s["holder_radius_mm"] = n->GetHolderRadius();
   s["tip_clearance_mm"] = n->GetTipClearance();
   s["tip_face_radius_mm"] = n->GetTipFaceRadius();
+  s["build_plate"] = n->GetBuildPlate() != 0;
+  s["plate_margin_mm"] = n->GetPlateMargin();
+  s["plate_thickness_mm"] = n->GetPlateThickness();
   s["sample_spacing_mm"] = p.Sequencer->GetSampleSpacing();
   s["subgraphs"] = count(sequenced, arrays::LatticeSubgraphs);
   s["retractions"] = count(sequenced, arrays::SequenceRetractions);
@@ -218,6 +221,7 @@ void reportCollisions(vtkDataObject* v, Json& s) {
   s["stations"] = count(v, arrays::CollisionStations);
   s["violating_stations"] = count(v, arrays::CollisionViolatingStations);
   s["unavoidable_stations"] = count(v, arrays::CollisionUnavoidableStations);
+  s["plate_stations"] = count(v, arrays::CollisionPlateStations);
   if (v->GetFieldData()->GetArray(arrays::CollisionLayerRange)) {
     s["violating_layers"] = {count(v, arrays::CollisionLayerRange),
                              static_cast<long long>(fieldValue(v, arrays::CollisionLayerRange, 1))};

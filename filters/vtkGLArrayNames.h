@@ -163,6 +163,8 @@ constexpr const char* CollisionStations =
     "CollisionStations";  ///< nozzle stations (sample points) checked
 constexpr const char* CollisionViolatingStations =
     "CollisionViolatingStations";  ///< stations with earlier material inside the nozzle
+/// Of the violating stations, those where the nozzle meets the build plate (or its tip is in it).
+constexpr const char* CollisionPlateStations = "CollisionPlateStations";
 /// 2 values: the smallest and largest LayerId (input point array) of the violating stations; only
 /// when the input has a LayerId point array and a station collides.
 constexpr const char* CollisionLayerRange = "CollisionLayerRange";

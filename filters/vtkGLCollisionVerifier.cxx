@@ -287,6 +287,8 @@ void buildOutput(const gl::CollisionReport& report, double nozzleAngle, vtkPolyD
   gl::addFieldArray(fd, gl::arrays::CollisionUnavoidableStations,
                     {static_cast<double>(report.unavoidableStations)});
   gl::addFieldArray(fd, gl::arrays::CollisionSeconds, {report.seconds});
+  gl::addFieldArray(fd, gl::arrays::CollisionPlateStations,
+                    {static_cast<double>(report.plateStations)});
   gl::addFieldArray(fd, gl::arrays::NozzleAngleDeg, {nozzleAngle});
 }
 }  // namespace
@@ -318,6 +320,7 @@ int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** 
   vtkPolyData* input = inputs.Get<vtkPolyData>(0);
   return gl::runRequest(this, outputVector, [&] {
     const gl::NozzleModel nozzle = gl::nozzleModel(this->Nozzle);
+    const gl::BuildPlate plate = gl::buildPlate(this->Nozzle);
 
     if (!input || input->GetNumberOfPoints() == 0) {
       throw gl::GeoLatticeError("empty input: no printed points to verify");
@@ -386,9 +389,10 @@ int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** 
     }
     // The check itself is one core call: progress before and after it.
     gl::checkAbort(this, 0.2);
-    const gl::CollisionReport report = gl::verifyNozzleClearance(
-        stations.points, stations.normals, stations.time, nozzle, this->MaxReported,
-        ancestry ? &exemption : nullptr, stations.material.empty() ? nullptr : &stations.material);
+    const gl::CollisionReport report =
+        gl::verifyNozzleClearance(stations.points, stations.normals, stations.time, nozzle,
+                                  this->MaxReported, ancestry ? &exemption : nullptr,
+                                  stations.material.empty() ? nullptr : &stations.material, &plate);
     gl::checkAbort(this, 0.9);
     buildOutput(report, nozzle.halfAngleDeg, output);
     // Where on the part the collisions are: the layer range of the violating stations.

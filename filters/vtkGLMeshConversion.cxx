@@ -563,6 +563,15 @@ NozzleModel nozzleModel(vtkGLNozzle* n) {
   return nozzle;
 }
 
+BuildPlate buildPlate(vtkGLNozzle* n) {
+  BuildPlate plate;
+  plate.enabled = n->GetBuildPlate() != 0;
+  plate.margin = n->GetPlateMargin();
+  plate.thickness = n->GetPlateThickness();
+  plate.validate();
+  return plate;
+}
+
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values,
                                             int components) {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();

@@ -8,6 +8,7 @@
  */
 #include "lattice/LatticeInfill.h"
 #include "mesh/TetMesh.h"
+#include "nozzle/BuildPlate.h"
 #include "nozzle/NozzleModel.h"
 #include "skeleton/SkeletonTree.h"
 
@@ -88,6 +89,8 @@ ToolpathArrays toToolpathArrays(vtkPolyData* toolpath);
 /// The nozzle of the filters' properties (NozzleLength 0 = cone only); validated, throws
 /// GeoLatticeError naming a bad parameter.
 NozzleModel nozzleModel(vtkGLNozzle* nozzle);
+/// The build plate of the filters' nozzle block; validated (throws naming a bad parameter).
+BuildPlate buildPlate(vtkGLNozzle* nozzle);
 
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values,
                                             int components = 1);

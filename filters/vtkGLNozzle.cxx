@@ -1,5 +1,6 @@
 #include "vtkGLNozzle.h"
 
+#include "nozzle/BuildPlate.h"
 #include "nozzle/NozzleModel.h"
 
 #include <vtkObjectFactory.h>
@@ -15,6 +16,10 @@ vtkGLNozzle::vtkGLNozzle() {
   this->HolderRadius = defaults.holderRadius;
   this->TipClearance = defaults.tipClearance;
   this->TipFaceRadius = defaults.tipFaceRadius;
+  const geolattice::BuildPlate plate;
+  this->BuildPlate = plate.enabled;
+  this->PlateMargin = plate.margin;
+  this->PlateThickness = plate.thickness;
 }
 
 void vtkGLNozzle::CopyParameters(vtkGLNozzle* other) {
@@ -26,6 +31,9 @@ void vtkGLNozzle::CopyParameters(vtkGLNozzle* other) {
   this->SetHolderRadius(other->HolderRadius);
   this->SetTipClearance(other->TipClearance);
   this->SetTipFaceRadius(other->TipFaceRadius);
+  this->SetBuildPlate(other->BuildPlate);
+  this->SetPlateMargin(other->PlateMargin);
+  this->SetPlateThickness(other->PlateThickness);
 }
 
 void vtkGLNozzle::PrintSelf(ostream& os, vtkIndent indent) {
@@ -35,4 +43,7 @@ void vtkGLNozzle::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "HolderRadius: " << this->HolderRadius << " mm\n";
   os << indent << "TipClearance: " << this->TipClearance << " mm\n";
   os << indent << "TipFaceRadius: " << this->TipFaceRadius << " mm\n";
+  os << indent << "BuildPlate: " << (this->BuildPlate ? "on" : "off") << "\n";
+  os << indent << "PlateMargin: " << this->PlateMargin << " mm\n";
+  os << indent << "PlateThickness: " << this->PlateThickness << " mm\n";
 }

@@ -7,7 +7,8 @@
  * NozzleAngle about the nozzle axis, apex at the tip, optionally cut at NozzleLength above which
  * the holder is a cylinder of radius HolderRadius; material at most TipClearance above the tip
  * (level with the nozzle's flat face) or within TipFaceRadius of it (under the face, the bead
- * being pressed) is not an obstacle.
+ * being pressed) is not an obstacle. The build plate (BuildPlate, PlateMargin, PlateThickness;
+ * core/nozzle/BuildPlate.h) is an obstacle like printed material.
  *
  * The filters hold one of these (SetNozzle) and re-execute when it changes. In ParaView it is a
  * sub-proxy whose properties appear in each filter's panel (plugin/xml/GLNozzle.xml); the CLI
@@ -56,6 +57,26 @@ public:
   vtkGetMacro(TipFaceRadius, double);
   ///@}
 
+  ///@{
+  /// The build plate is an obstacle for the nozzle (default on): a slab under z = 0 covering the
+  /// part's footprint grown by PlateMargin (core/nozzle/BuildPlate.h).
+  vtkSetMacro(BuildPlate, vtkTypeBool);
+  vtkGetMacro(BuildPlate, vtkTypeBool);
+  vtkBooleanMacro(BuildPlate, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// How far the build plate extends beyond the part's footprint (mm, default 10, >= 0).
+  vtkSetMacro(PlateMargin, double);
+  vtkGetMacro(PlateMargin, double);
+  ///@}
+
+  ///@{
+  /// Thickness of the build plate under z = 0 (mm, default 5, > 0).
+  vtkSetMacro(PlateThickness, double);
+  vtkGetMacro(PlateThickness, double);
+  ///@}
+
   /// Copies every parameter of `other` (no-op for null).
   void CopyParameters(vtkGLNozzle* other);
 
@@ -68,6 +89,9 @@ protected:
   double HolderRadius;
   double TipClearance;
   double TipFaceRadius;
+  vtkTypeBool BuildPlate;
+  double PlateMargin;
+  double PlateThickness;
 
 private:
   vtkGLNozzle(const vtkGLNozzle&) = delete;

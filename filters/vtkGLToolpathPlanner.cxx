@@ -342,6 +342,7 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
       options.toothLength = this->ToothLength;
       options.maxSegmentLength = this->MaxSegmentLength;
       options.nozzle = gl::nozzleModel(this->Nozzle);
+      options.plate = gl::buildPlate(this->Nozzle);
       options.clearance.maxTiltDeg = this->MaxAxisTilt;
       options.clearance.blendLength = this->TiltBlendLength;
       // The planning is one core call (core/toolpath): progress before and after it.

@@ -19,7 +19,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
                                       const std::vector<Vec>& normals, const std::vector<int>& time,
                                       const NozzleModel& nozzle, int maxReported,
                                       const CollisionExemption* exemption,
-                                      const std::vector<char>* material) {
+                                      const std::vector<char>* material, const BuildPlate* plate) {
   const auto t0 = std::chrono::steady_clock::now();
   nozzle.validate();
   const size_t N = points.size();
@@ -61,7 +61,23 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
       }
     }
   }
-  const TimedPointTree tree(points, obstacleTime);
+  // The build plate: its samples after the points, present from the start.
+  std::vector<Vec> all = points;
+  Vec partLo = Vec::Constant(std::numeric_limits<double>::infinity()), partHi = -partLo;
+  if (plate && plate->enabled) {
+    std::vector<Vec> part;
+    for (size_t i = 0; i < N; ++i) {
+      if (!material || (*material)[i]) {
+        part.push_back(points[i]);
+        partLo = partLo.cwiseMin(points[i]);
+        partHi = partHi.cwiseMax(points[i]);
+      }
+    }
+    const std::vector<Vec> samples = buildPlateSamples(*plate, part);
+    all.insert(all.end(), samples.begin(), samples.end());
+    obstacleTime.resize(all.size(), std::numeric_limits<int>::min());
+  }
+  const TimedPointTree tree(all, obstacleTime);
   const NozzleVolume volume(nozzle);
   NozzleBound bound(nozzle.boundingHalfAngleRad(), nozzle.reach(), nozzle.tipClearance);
 
@@ -75,18 +91,25 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
   report.stations = static_cast<long long>(N);
   for (int k : stations) {
     bound.setStation(points[k], axis[k]);
-    int hit = -1, exemptHit = -1;
+    // hit: material some order could have kept out of the nozzle; exemptHit: material no order
+    // keeps out (a skeleton ancestor's); plateHit: the build plate (no order moves it either).
+    int hit = -1, exemptHit = -1, plateHit = -1;
     double height = 0, radial = 0, exemptHeight = 0, exemptRadial = 0;
     tree.forEachCandidate(bound, time[k], [&](int q) {
       double h = 0, r = 0;
-      if (!volume.contains(points[k], axis[k], points[q], &h, &r)) {
+      if (!volume.contains(points[k], axis[k], all[q], &h, &r)) {
         return false;
       }
-      if (exemption && exemption->unavoidable(exemption->group[k], exemption->group[q])) {
-        if (exemptHit < 0) {  // keep looking for an obstacle an order could have avoided
+      const bool onPlate = q >= static_cast<int>(N);
+      if (onPlate ||
+          (exemption && exemption->unavoidable(exemption->group[k], exemption->group[q]))) {
+        if (exemptHit < 0 || (onPlate && plateHit < 0)) {  // keep looking for an avoidable one
           exemptHit = q;
           exemptHeight = h;
           exemptRadial = r;
+        }
+        if (onPlate && plateHit < 0) {
+          plateHit = q;
         }
         return false;
       }
@@ -95,6 +118,10 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
       radial = r;
       return true;
     });
+    if (hit < 0 && exemptHit < 0 && plate && tipInsidePlate(*plate, partLo, partHi, points[k])) {
+      plateHit = exemptHit = static_cast<int>(all.size());  // the tip itself is in the plate
+      exemptHeight = exemptRadial = 0;
+    }
     const bool unavoidable = hit < 0 && exemptHit >= 0;
     if (unavoidable) {
       hit = exemptHit;
@@ -105,8 +132,13 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
     if (hit >= 0) {
       ++report.violatingStations;
       report.violatingStationIds.push_back(k);
+      const bool onPlate = unavoidable && plateHit >= 0;
+      report.plateStations += onPlate;
       if (static_cast<int>(report.violations.size()) < maxReported) {
-        report.violations.push_back({k, hit, points[k], points[hit], height, radial, unavoidable});
+        const Vec obstacle =
+            hit == static_cast<int>(all.size()) ? Vec(points[k].x(), points[k].y(), 0.0) : all[hit];
+        report.violations.push_back({k, hit >= static_cast<int>(N) ? -1 : hit, points[k], obstacle,
+                                     height, radial, unavoidable});
       }
     }
   }

@@ -11,6 +11,7 @@
 ///
 /// For a sub-graph order, time = the sub-graph's position (all of its points share it, a
 /// sub-graph is not tested against itself); for a toolpath, time = the point's index on it.
+#include "nozzle/BuildPlate.h"
 #include "nozzle/NozzleModel.h"
 
 #include <Eigen/Core>
@@ -44,6 +45,7 @@ struct CollisionReport {
   long long unavoidableStations = 0;     ///< of those, stations whose obstacles are all exempt
   bool orderCollisionFree = true;        ///< no station with an obstacle that is not exempt
   std::vector<int> violatingStationIds;  ///< every violating station, in print time order
+  long long plateStations = 0;  ///< of the violating stations, those whose obstacle is the plate
   std::vector<CollisionViolation>
       violations;  ///< the first ones in print time order (at most maxReported)
   double seconds = 0;
@@ -58,12 +60,18 @@ struct VerifierOptions {
 /// Throws GeoLatticeError for mismatched sizes, a zero or non-finite normal, non-finite points,
 /// or a bad nozzle, or an exemption or material mask whose size does not match. material
 /// (optional, one flag per point): only points with a non-zero flag are obstacles, e.g. the
-/// print points of a toolpath but not its air moves; every point is still a station.
+/// print points of a toolpath but not its air moves; every point is still a station. plate
+/// (optional): the build plate under the material's footprint is an obstacle at every station
+/// (nozzle/BuildPlate.h); violations it causes are counted in plateStations, and a station whose
+/// tip lies inside the plate is one. No printing order avoids the plate, so its violations count
+/// as unavoidable (orderCollisionFree ignores them); the reported obstacle of a plate violation
+/// is the plate sample (obstacle index -1).
 CollisionReport verifyNozzleClearance(const std::vector<Eigen::Vector3d>& points,
                                       const std::vector<Eigen::Vector3d>& normals,
                                       const std::vector<int>& time, const NozzleModel& nozzle,
                                       int maxReported = VerifierOptions{}.maxReported,
                                       const CollisionExemption* exemption = nullptr,
-                                      const std::vector<char>* material = nullptr);
+                                      const std::vector<char>* material = nullptr,
+                                      const BuildPlate* plate = nullptr);
 
 }  // namespace geolattice

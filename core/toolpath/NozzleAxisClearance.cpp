@@ -101,7 +101,8 @@ bool findClearAxis(const Obstacles& obstacles, const Vec3& reference, const Vec3
 AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector<Vec3>& axes,
                                     const std::vector<Vec3>& reference,
                                     const std::vector<char>& material, const NozzleModel& nozzle,
-                                    const AxisClearanceOptions& o) {
+                                    const AxisClearanceOptions& o,
+                                    const std::vector<Vec3>* fixedObstacles) {
   const auto t0 = std::chrono::steady_clock::now();
   nozzle.validate();
   const size_t N = points.size();
@@ -119,11 +120,18 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
     throw GeoLatticeError(s.str());
   }
   AxisClearanceResult result;
+  // Obstacles: the material points at their index along the path, then the fixed obstacles
+  // (present at every station).
+  std::vector<Vec3> all = points;
   std::vector<int> obstacleTime(N);
   for (size_t i = 0; i < N; ++i) {
     obstacleTime[i] = material[i] ? static_cast<int>(i) : std::numeric_limits<int>::max();
   }
-  const TimedPointTree tree(points, obstacleTime);
+  if (fixedObstacles) {
+    all.insert(all.end(), fixedObstacles->begin(), fixedObstacles->end());
+    obstacleTime.resize(all.size(), -1);
+  }
+  const TimedPointTree tree(all, obstacleTime);
 
   // 1. Stations with earlier material inside the nozzle.
   const NozzleVolume volume(nozzle);
@@ -133,7 +141,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
     detect.setStation(points[k], axes[k]);
     bool hit = false;
     tree.forEachCandidate(detect, static_cast<int>(k), [&](int q) {
-      hit = volume.contains(points[k], axes[k], points[q]);
+      hit = volume.contains(points[k], axes[k], all[q]);
       return hit;
     });
     if (hit) {
@@ -156,7 +164,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   NozzleBound gather(wideModel.boundingHalfAngleRad() + maxTilt, wideModel.reach(),
                      -std::numeric_limits<double>::infinity());
   const double face2 = nozzle.tipFaceRadius * nozzle.tipFaceRadius;
-  Obstacles obstacles{points, wide, Vec3::Zero(), {}};
+  Obstacles obstacles{all, wide, Vec3::Zero(), {}};
   struct Tilt {
     int station;
     Vec3 axis;      ///< the clearing axis
@@ -177,7 +185,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
     gather.setStation(points[k], reference[k]);
     bool cannot = false;
     tree.forEachCandidate(gather, k, [&](int q) {
-      const Vec3 d = points[q] - points[k];
+      const Vec3 d = all[q] - points[k];
       const double d2 = d.squaredNorm();
       if (d2 <= face2) {
         return false;

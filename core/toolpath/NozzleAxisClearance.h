@@ -43,10 +43,12 @@ struct AxisClearanceResult {
 /// One pass over the path, time = point index. axes: current unit axes (modified);
 /// reference: the untilted unit layer normals (the tilt limit is measured from them); material:
 /// per point, non-zero if it is deposited material (an obstacle for later stations). Throws
-/// GeoLatticeError for mismatched sizes or bad options.
+/// GeoLatticeError for mismatched sizes or bad options. fixedObstacles (optional): points that are
+/// obstacles at every station, e.g. the build plate's samples (nozzle/BuildPlate.h).
 AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector<Vec3>& axes,
                                     const std::vector<Vec3>& reference,
                                     const std::vector<char>& material, const NozzleModel& nozzle,
-                                    const AxisClearanceOptions& options);
+                                    const AxisClearanceOptions& options,
+                                    const std::vector<Vec3>* fixedObstacles = nullptr);
 
 }  // namespace geolattice

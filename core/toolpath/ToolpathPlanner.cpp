@@ -116,12 +116,21 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o) {
     }
     return m;
   };
+  // The build plate under the part is an obstacle like material (nozzle/BuildPlate.h).
+  std::vector<Vec3> part;
+  for (size_t i = 0; i < path.points.size(); ++i) {
+    if (path.kind[i] != MoveKind::Air) {
+      part.push_back(path.points[i]);
+    }
+  }
+  const std::vector<Vec3> plate = buildPlateSamples(o.plate, part);
+  const std::vector<Vec3>* fixed = plate.empty() ? nullptr : &plate;
   constexpr int kMaxRounds = 4;
   bool checked = false;
   std::vector<int> uncleared;
   for (int round = 0; round < kMaxRounds && o.clearance.maxTiltDeg > 0; ++round) {
-    const AxisClearanceResult r =
-        clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, o.clearance);
+    const AxisClearanceResult r = clearNozzleAxes(path.points, path.normals, reference,
+                                                  materialOf(), o.nozzle, o.clearance, fixed);
     if (round == 0) {
       path.collidingStations = r.collidingStations;
     }
@@ -140,8 +149,8 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o) {
   if (!checked) {  // count what is left (or, with clearance off, what there is)
     AxisClearanceOptions detectOnly = o.clearance;
     detectOnly.maxTiltDeg = 0;
-    const AxisClearanceResult r =
-        clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, detectOnly);
+    const AxisClearanceResult r = clearNozzleAxes(path.points, path.normals, reference,
+                                                  materialOf(), o.nozzle, detectOnly, fixed);
     path.unclearedStations = r.collidingStations;
     uncleared = r.colliding;
     if (path.clearanceRounds == 0) {

@@ -22,6 +22,7 @@
 /// earlier material of the path get a small tilt (NozzleAxisClearance.h); AxisTilt records it.
 #include "lattice/LatticeInfill.h"
 #include "sequence/PrintSequencer.h"
+#include "nozzle/BuildPlate.h"
 #include "nozzle/NozzleModel.h"
 #include "skeleton/SkeletonTree.h"
 #include "toolpath/LayerThickness.h"
@@ -49,6 +50,7 @@ struct ToolpathOptions {
   double maxSegmentLength = 1.0;  ///< longer segments are subdivided (mm, >= 0; 0 = never), so
       ///< the collision check of the path's points samples it this finely
   NozzleModel nozzle;  ///< the nozzle the axis clearance keeps earlier material out of
+  BuildPlate plate;    ///< the build plate, an obstacle like material (enabled by default)
   AxisClearanceOptions
       clearance;  ///< tilts off ∇γ where the nozzle would collide (maxTiltDeg 0 = off)
 };

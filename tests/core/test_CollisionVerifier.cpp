@@ -182,3 +182,61 @@ TEST(CollisionVerifier, BadInput) {
   EXPECT_THROW(verifyNozzleClearance(p, n, {0, 1}, bad), GeoLatticeError);
   EXPECT_TRUE(verifyNozzleClearance({}, {}, {}, cone(45)).collisionFree);  // nothing printed
 }
+
+// The build plate (nozzle/BuildPlate.h): a slab under z = 0 around the part's footprint, an
+// obstacle at every station like material, counted as unavoidable for the order.
+TEST(CollisionVerifier, BuildPlateIsAnObstacle) {
+  // A 20 mm line of points 0.6 mm above the plate, printed left to right.
+  auto line = [](const V& axis, double z) {
+    Towers t;
+    for (int i = 0; i <= 20; ++i) {
+      t.points.push_back(V(i, 0, z));
+      t.normals.push_back(axis);
+      t.time.push_back(i);
+    }
+    return t;
+  };
+  const BuildPlate plate;  // margin 10 mm, 5 mm thick
+  const NozzleModel nozzle = cone(45);
+  // Vertical axis: the plate is below the tip plane, never inside the cone.
+  Towers up = line(V(0, 0, 1), 0.6);
+  CollisionReport r =
+      verifyNozzleClearance(up.points, up.normals, up.time, nozzle, 20, nullptr, nullptr, &plate);
+  EXPECT_TRUE(r.collisionFree);
+  // Axis 60° from vertical (beyond 90° - NA): the cone's lower side reaches the plate 2 mm from
+  // the tip (0.6 mm / tan 15°) at every station.
+  const double t = 60 * M_PI / 180;
+  Towers tilted = line(V(std::sin(t), 0, std::cos(t)), 0.6);
+  r = verifyNozzleClearance(tilted.points, tilted.normals, tilted.time, nozzle, 20, nullptr,
+                            nullptr, &plate);
+  EXPECT_EQ(r.violatingStations, 21);
+  EXPECT_EQ(r.plateStations, 21);
+  EXPECT_EQ(r.unavoidableStations, 21);  // no order avoids the plate
+  EXPECT_TRUE(r.orderCollisionFree);
+  EXPECT_EQ(r.violations[0].obstacle, -1);
+  EXPECT_NEAR(r.violations[0].obstaclePoint.z(), 0.0, 1e-12);
+  // 40° from vertical: the cone's lower side rises 5° above the horizon, the plate stays out.
+  const double u = 40 * M_PI / 180;
+  Towers mild = line(V(std::sin(u), 0, std::cos(u)), 0.6);
+  EXPECT_TRUE(verifyNozzleClearance(mild.points, mild.normals, mild.time, nozzle, 20, nullptr,
+                                    nullptr, &plate)
+                  .collisionFree);
+  // Without the plate the tilted line is free (nothing printed earlier is in the way).
+  EXPECT_TRUE(
+      verifyNozzleClearance(tilted.points, tilted.normals, tilted.time, nozzle).collisionFree);
+  // A tip inside the plate (an air move below z = 0) collides even with the axis pointing down.
+  Towers dive = line(V(0, 0, 1), 0.6);
+  dive.points[10].z() = -0.3;
+  dive.normals[10] = V(0, 0, -1);
+  r = verifyNozzleClearance(dive.points, dive.normals, dive.time, nozzle, 20, nullptr, nullptr,
+                            &plate);
+  EXPECT_EQ(r.violatingStations, 1);
+  EXPECT_EQ(r.violations[0].station, 10);
+  EXPECT_EQ(r.plateStations, 1);
+  // Bad plate parameters are named.
+  BuildPlate bad;
+  bad.thickness = 0;
+  EXPECT_THROW(
+      verifyNozzleClearance(up.points, up.normals, up.time, nozzle, 20, nullptr, nullptr, &bad),
+      GeoLatticeError);
+}

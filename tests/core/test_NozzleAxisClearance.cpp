@@ -2,6 +2,7 @@
 // the nozzle axis clearance that tilts the axis off ∇γ where it would hit earlier material.
 #include "collision/CollisionVerifier.h"
 #include "common/Error.h"
+#include "nozzle/BuildPlate.h"
 #include "toolpath/NozzleAxisClearance.h"
 #include "toolpath/PathSubdivision.h"
 
@@ -170,4 +171,37 @@ TEST(NozzleAxisClearance, BadInput) {
   bad.halfAngleDeg = 95;
   EXPECT_THROW(clearNozzleAxes(s.points, axes, s.axes, s.material, bad, AxisClearanceOptions{}),
                GeoLatticeError);
+}
+
+// The build plate as a fixed obstacle: a line printed 0.6 mm above the plate with the layer normal
+// 50° from vertical hits the plate with a 45° cone; the clearance tilts each axis back towards
+// vertical by the least angle that clears the (finite: the footprint + 10 mm) plate.
+TEST(NozzleAxisClearance, TiltsAwayFromTheBuildPlate) {
+  std::vector<Vec3> points, axes, reference;
+  const double t = 50 * M_PI / 180;
+  for (int i = 0; i <= 20; ++i) {
+    points.push_back(Vec3(i, 0, 0.6));
+    axes.push_back(Vec3(0, std::sin(t), std::cos(t)));
+  }
+  reference = axes;
+  const std::vector<char> material(points.size(), 1);
+  NozzleModel nozzle;
+  BuildPlate plate;
+  const std::vector<Vec3> samples = buildPlateSamples(plate, points);
+  AxisClearanceOptions o;
+  const AxisClearanceResult r =
+      clearNozzleAxes(points, axes, reference, material, nozzle, o, &samples);
+  EXPECT_EQ(r.collidingStations, 21);
+  EXPECT_EQ(r.tiltedStations, 21);
+  for (const Vec3& a : axes) {
+    const double tilt = std::acos(a.z()) * 180 / M_PI;
+    EXPECT_LT(tilt, 49.0);  // turned back towards vertical ...
+    EXPECT_GT(tilt, 44.0);  // ... by a few degrees only
+  }
+  // Checked again: nothing left.
+  AxisClearanceOptions detect = o;
+  detect.maxTiltDeg = 0;
+  EXPECT_EQ(clearNozzleAxes(points, axes, reference, material, nozzle, detect, &samples)
+                .collidingStations,
+            0);
 }

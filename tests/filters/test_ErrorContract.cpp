@@ -61,18 +61,46 @@ TEST(ErrorContract, EveryFilterReturnsFalseOnFailure) {
          r->SetFileName("/nonexistent/part.stl");
          return vtkSmartPointer<vtkAlgorithm>(r);
        }},
-      {"GL Place On Platform", [] { return withEmptyInputs<vtkGLPlaceOnPlatform>(false); }},
+      {"GL Place On Platform",
+       [] {
+         return withEmptyInputs<vtkGLPlaceOnPlatform>(false);
+       }},
       {"GL Tetrahedralize Surface",
-       [] { return withEmptyInputs<vtkGLTetrahedralizeSurface>(false); }},
+       [] {
+         return withEmptyInputs<vtkGLTetrahedralizeSurface>(false);
+       }},
       {"GL Geodesic Distance Fields",
-       [] { return withEmptyInputs<vtkGLGeodesicDistanceFields>(true); }},
-      {"GL Curved Layer Slicer", [] { return withEmptyInputs<vtkGLCurvedLayerSlicer>(true); }},
-      {"GL Overhang Analysis", [] { return withEmptyInputs<vtkGLOverhangAnalysis>(true); }},
-      {"GL Lattice Infill", [] { return withEmptyInputs<vtkGLLatticeInfill>(false); }},
-      {"GL Skeleton Tree", [] { return withEmptyInputs<vtkGLSkeletonTree>(false, true); }},
-      {"GL Print Sequencer", [] { return withEmptyInputs<vtkGLPrintSequencer>(false); }},
-      {"GL Collision Verifier", [] { return withEmptyInputs<vtkGLCollisionVerifier>(false); }},
-      {"GL Toolpath Planner", [] { return withEmptyInputs<vtkGLToolpathPlanner>(false); }},
+       [] {
+         return withEmptyInputs<vtkGLGeodesicDistanceFields>(true);
+       }},
+      {"GL Curved Layer Slicer",
+       [] {
+         return withEmptyInputs<vtkGLCurvedLayerSlicer>(true);
+       }},
+      {"GL Overhang Analysis",
+       [] {
+         return withEmptyInputs<vtkGLOverhangAnalysis>(true);
+       }},
+      {"GL Lattice Infill",
+       [] {
+         return withEmptyInputs<vtkGLLatticeInfill>(false);
+       }},
+      {"GL Skeleton Tree",
+       [] {
+         return withEmptyInputs<vtkGLSkeletonTree>(false, true);
+       }},
+      {"GL Print Sequencer",
+       [] {
+         return withEmptyInputs<vtkGLPrintSequencer>(false);
+       }},
+      {"GL Collision Verifier",
+       [] {
+         return withEmptyInputs<vtkGLCollisionVerifier>(false);
+       }},
+      {"GL Toolpath Planner",
+       [] {
+         return withEmptyInputs<vtkGLToolpathPlanner>(false);
+       }},
   };
   for (const FilterCase& c : cases) {
     SCOPED_TRACE(c.name);

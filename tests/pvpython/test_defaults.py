@@ -29,6 +29,7 @@ CLI_CHOICES = {
     "GLPlaceOnPlatform.CenterXY": {"centred": 1, "kept": 0},
     "GLToolpathPlanner.SupportPerimeter": {"perimeter": 1, "none": 0},
     "GLURScriptWriter.AllowUnreachable": {"on": 1, "off": 0},
+    "GLNozzle.BuildPlate": {"obstacle": 1, "none": 0},
 }
 
 
