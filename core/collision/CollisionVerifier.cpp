@@ -101,6 +101,12 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
         return false;
       }
       const bool onPlate = q >= static_cast<int>(N);
+      if (onPlate && !exemption) {  // no order to blame: the first obstacle decides
+        plateHit = hit = q;
+        height = h;
+        radial = r;
+        return true;
+      }
       if (onPlate ||
           (exemption && exemption->unavoidable(exemption->group[k], exemption->group[q]))) {
         if (exemptHit < 0 || (onPlate && plateHit < 0)) {  // keep looking for an avoidable one
@@ -132,7 +138,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
     if (hit >= 0) {
       ++report.violatingStations;
       report.violatingStationIds.push_back(k);
-      const bool onPlate = unavoidable && plateHit >= 0;
+      const bool onPlate = plateHit >= 0 && (unavoidable || hit >= static_cast<int>(N));
       report.plateStations += onPlate;
       if (static_cast<int>(report.violations.size()) < maxReported) {
         const Vec obstacle =

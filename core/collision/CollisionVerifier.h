@@ -63,9 +63,10 @@ struct VerifierOptions {
 /// print points of a toolpath but not its air moves; every point is still a station. plate
 /// (optional): the build plate under the material's footprint is an obstacle at every station
 /// (nozzle/BuildPlate.h); violations it causes are counted in plateStations, and a station whose
-/// tip lies inside the plate is one. No printing order avoids the plate, so its violations count
-/// as unavoidable (orderCollisionFree ignores them); the reported obstacle of a plate violation
-/// is the plate sample (obstacle index -1).
+/// tip lies inside the plate is one. With an exemption (a printing order to judge), no order
+/// avoids the plate, so its violations count as unavoidable (orderCollisionFree ignores them);
+/// without one the first obstacle found decides. The reported obstacle of a plate violation is
+/// the plate sample (obstacle index -1).
 CollisionReport verifyNozzleClearance(const std::vector<Eigen::Vector3d>& points,
                                       const std::vector<Eigen::Vector3d>& normals,
                                       const std::vector<int>& time, const NozzleModel& nozzle,

@@ -236,6 +236,13 @@ GeodesicDistanceFields::GeodesicDistanceFields(TetMesh mesh, const GeodesicField
 
 GeodesicDistanceFields::~GeodesicDistanceFields() = default;
 
+void GeodesicDistanceFields::setReference(const Vec3& reference) {
+  if (!(reference.norm() > 0) || !reference.allFinite()) {
+    throw GeoLatticeError("reference vector r must be non-zero and finite");
+  }
+  options_.reference = reference;
+}
+
 GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) {
   const size_t nv = mesh_.points.size();
   const int nt = static_cast<int>(mesh_.tets.size());

@@ -79,6 +79,10 @@ public:
   /// holds an invalid index, or a connected component of the mesh contains no source.
   GeodesicFields solve(const std::vector<int>& sources);
 
+  /// Sets the reference vector r of Eq. 3 for the next solves (not a set-up parameter: no new
+  /// factorization). Throws GeoLatticeError for a zero or non-finite vector.
+  void setReference(const Vec3& reference);
+
   const TetMesh& mesh() const { return mesh_; }
   const TetOperators& operators() const { return ops_; }
   const TetMeshTopology& topology() const { return *topology_; }

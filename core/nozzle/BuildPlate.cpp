@@ -70,9 +70,9 @@ std::vector<Vec3> buildPlateSamples(const BuildPlate& plate, const std::vector<V
 }
 
 bool tipInsidePlate(const BuildPlate& plate, const Vec3& lo, const Vec3& hi, const Vec3& p) {
-  return plate.enabled && p.z() < 0 && p.z() > -plate.thickness &&
-         p.x() > lo.x() - plate.margin && p.x() < hi.x() + plate.margin &&
-         p.y() > lo.y() - plate.margin && p.y() < hi.y() + plate.margin;
+  return plate.enabled && p.z() < 0 && p.z() > -plate.thickness && p.x() > lo.x() - plate.margin &&
+         p.x() < hi.x() + plate.margin && p.y() > lo.y() - plate.margin &&
+         p.y() < hi.y() + plate.margin;
 }
 
 }  // namespace geolattice

@@ -1,5 +1,7 @@
 #include "tetrahedralize/TetrahedralizeSurface.h"
 
+#include "mesh/SurfaceSimplification.h"
+
 #include "common/Error.h"
 #include "common/Progress.h"
 #include "mesh/SurfaceCheck.h"
@@ -213,6 +215,22 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   const double firstEdge = automatic
                                ? automaticEdgeLength(result.enclosedVolume, options.autoTargetTets)
                                : options.targetEdgeLength;
+  result.inputTriangles = surface.triangles.size();
+  const TriangleSurface original = surface;  // if TetGen refuses the simplified one
+  if (options.simplifyFinerThan > 0) {
+    SimplificationOptions simplify;
+    simplify.targetEdgeLength = firstEdge;
+    simplify.finerThan = options.simplifyFinerThan;
+    const SimplificationResult s = simplifySurface(surface, simplify);
+    if (s.simplified) {
+      surface = s.surface;
+      result.simplified = true;
+      result.simplificationDistance = s.hausdorff;
+      result.enclosedVolume = std::abs(requireClosedManifold(surface).signedVolume);
+    }
+    result.simplificationSeconds = s.seconds;
+  }
+  result.meshedTriangles = surface.triangles.size();
   const double smallestCount =
       result.enclosedVolume / (kLargestMeanTetVolumeOverBound * regularTetVolume(firstEdge));
   if (!automatic && smallestCount > kMaxEstimatedTets) {
@@ -234,7 +252,22 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   int removedRegions = 0;  // of the last run
   int runs = 0;
   auto run = [&](double edge) {
-    TetGenOutput out = runTetGen(surface, switchesFor(edge), options.shouldAbort);
+    TetGenOutput out;
+    try {
+      out = runTetGen(surface, switchesFor(edge), options.shouldAbort);
+    } catch (const GeoLatticeError& e) {
+      if (!result.simplified || (options.shouldAbort && options.shouldAbort())) {
+        throw;
+      }
+      // TetGen failed on the simplified surface (e.g. nearly coincident vertices it made):
+      // mesh the input as it is.
+      surface = original;
+      result.simplified = false;
+      result.simplificationRefused = e.what();
+      result.enclosedVolume = std::abs(report.signedVolume);
+      result.meshedTriangles = surface.triangles.size();
+      out = runTetGen(surface, switchesFor(edge), options.shouldAbort);
+    }
     if (out.mesh.tets.empty()) {
       throw GeoLatticeError("TetGen produced no tetrahedra (switches " + switchesFor(edge) + ")");
     }

@@ -33,6 +33,10 @@ struct TetrahedralizeOptions {
   /// Upper bound of the tets' circumradius / shortest-edge ratio (TetGen switch -q).
   /// Range [kMinRadiusEdgeRatio, kMaxRadiusEdgeRatio]; 1.414 = sqrt 2 (good quality).
   double radiusEdgeRatio = 1.414;
+  /// A surface whose mean edge is shorter than this fraction of the (first) target edge length
+  /// is first simplified to about the target edge (mesh/SurfaceSimplification.h): TetGen keeps
+  /// every input triangle, so a fine scan would give far more tets than asked for. 0 = never.
+  double simplifyFinerThan = 0.5;
   /// Polled about every 50 ms while TetGen runs, and after each run; returning true stops it
   /// and throws "tetrahedralization aborted" (filters pass their AbortExecute flag). Optional.
   std::function<bool()> shouldAbort;
@@ -55,10 +59,16 @@ struct TetrahedralizeResult {
   int flippedSurfaceTriangles = 0;  ///< input triangles reversed because the surface faced inward
   int flippedTets = 0;  ///< output tets reoriented (0 in practice: TetGen 1.5 writes positive tets)
   int removedCavityRegions =
-      0;                 ///< regions TetGen filled with winding number 0 (cavities), removed
-  int attempts = 0;      ///< TetGen runs (1 unless the edge length was automatic)
-  double seconds = 0.0;  ///< wall time of the whole call
-  std::string switches;  ///< TetGen switches used
+      0;                       ///< regions TetGen filled with winding number 0 (cavities), removed
+  int attempts = 0;            ///< TetGen runs (1 unless the edge length was automatic)
+  double seconds = 0.0;        ///< wall time of the whole call
+  bool simplified = false;     ///< the surface was simplified before TetGen
+  size_t inputTriangles = 0;   ///< triangles of the input surface
+  size_t meshedTriangles = 0;  ///< triangles given to TetGen
+  double simplificationDistance = 0;  ///< largest input-vertex distance to them (mm)
+  double simplificationSeconds = 0;
+  std::string simplificationRefused;  ///< why TetGen got the input after all (empty: it did not)
+  std::string switches;               ///< TetGen switches used
 };
 
 /// Range of TetrahedralizeOptions::autoTargetTets.

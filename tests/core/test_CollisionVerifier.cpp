@@ -211,8 +211,18 @@ TEST(CollisionVerifier, BuildPlateIsAnObstacle) {
                             nullptr, &plate);
   EXPECT_EQ(r.violatingStations, 21);
   EXPECT_EQ(r.plateStations, 21);
-  EXPECT_EQ(r.unavoidableStations, 21);  // no order avoids the plate
-  EXPECT_TRUE(r.orderCollisionFree);
+  EXPECT_FALSE(r.orderCollisionFree);  // no order to judge: the first obstacle decides
+  // With an order to judge (an exemption), no order avoids the plate: unavoidable.
+  CollisionExemption exemption;
+  exemption.group.assign(tilted.points.size(), 0);
+  exemption.unavoidable = [](int, int) {
+    return false;
+  };
+  const CollisionReport judged = verifyNozzleClearance(tilted.points, tilted.normals, tilted.time,
+                                                       nozzle, 20, &exemption, nullptr, &plate);
+  EXPECT_EQ(judged.plateStations, 21);
+  EXPECT_EQ(judged.unavoidableStations, 21);
+  EXPECT_TRUE(judged.orderCollisionFree);
   EXPECT_EQ(r.violations[0].obstacle, -1);
   EXPECT_NEAR(r.violations[0].obstaclePoint.z(), 0.0, 1e-12);
   // 40° from vertical: the cone's lower side rises 5° above the horizon, the plate stays out.

@@ -1,0 +1,146 @@
+#include "mesh/SurfaceSimplification.h"
+
+#include "common/Error.h"
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_distance_placement.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_filter.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
+#include <CGAL/Surface_mesh_simplification/edge_collapse.h>
+
+#include <chrono>
+#include <cmath>
+#include <sstream>
+#include <unordered_map>
+
+namespace geolattice {
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+namespace SMS = CGAL::Surface_mesh_simplification;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+Mesh toMesh(const TriangleSurface& s) {
+  Mesh m;
+  std::vector<Mesh::Vertex_index> v;
+  v.reserve(s.points.size());
+  for (const Vec3& p : s.points) {
+    v.push_back(m.add_vertex(K::Point_3(p.x(), p.y(), p.z())));
+  }
+  for (const auto& t : s.triangles) {
+    if (m.add_face(v[t[0]], v[t[1]], v[t[2]]) == Mesh::null_face()) {
+      throw GeoLatticeError("surface simplification: the surface is not an oriented 2-manifold");
+    }
+  }
+  return m;
+}
+
+TriangleSurface fromMesh(const Mesh& m) {
+  TriangleSurface s;
+  std::unordered_map<Mesh::Vertex_index, int> id;
+  for (auto v : m.vertices()) {
+    id[v] = static_cast<int>(s.points.size());
+    const K::Point_3& p = m.point(v);
+    s.points.emplace_back(p.x(), p.y(), p.z());
+  }
+  for (auto f : m.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) {
+      t[k++] = id[v];
+    }
+    s.triangles.push_back(t);
+  }
+  return s;
+}
+
+double area(const TriangleSurface& s) {
+  double a = 0;
+  for (const auto& t : s.triangles) {
+    a += 0.5 * (s.points[t[1]] - s.points[t[0]]).cross(s.points[t[2]] - s.points[t[0]]).norm();
+  }
+  return a;
+}
+
+}  // namespace
+
+double meanEdgeLength(const TriangleSurface& s) {
+  double sum = 0;
+  for (const auto& t : s.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      sum += (s.points[t[(k + 1) % 3]] - s.points[t[k]]).norm();
+    }
+  }
+  return s.triangles.empty() ? 0.0 : sum / (3.0 * s.triangles.size());
+}
+
+SimplificationResult simplifySurface(const TriangleSurface& surface,
+                                     const SimplificationOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!(o.targetEdgeLength > 0) || !std::isfinite(o.targetEdgeLength) || !(o.tolerance >= 0) ||
+      !(o.finerThan > 0)) {
+    std::ostringstream m;
+    m << "surface simplification: the target edge length must be > 0 mm (got "
+      << o.targetEdgeLength << ") and the tolerance >= 0 mm (got " << o.tolerance << ")";
+    throw GeoLatticeError(m.str());
+  }
+  SimplificationResult r;
+  r.inputTriangles = surface.triangles.size();
+  r.inputMeanEdge = meanEdgeLength(surface);
+  r.surface = surface;
+  r.outputTriangles = r.inputTriangles;
+  r.outputMeanEdge = r.inputMeanEdge;
+  // An equilateral triangle of edge L has area √3/4 L²: the triangle count of the target.
+  const double target = area(surface) / (std::sqrt(3.0) / 4.0 * o.targetEdgeLength *
+                                         o.targetEdgeLength);
+  if (r.inputMeanEdge >= o.finerThan * o.targetEdgeLength ||
+      static_cast<double>(r.inputTriangles) < 2.0 * target) {
+    return r;
+  }
+  Mesh mesh = toMesh(surface);
+  const Mesh input = mesh;
+  const double tolerance = o.tolerance > 0 ? o.tolerance : 0.25 * o.targetEdgeLength;
+  using GH = SMS::GarlandHeckbert_plane_policies<Mesh, K>;
+  GH policies(mesh);
+  SMS::Bounded_distance_placement<GH::Get_placement, K> placement(tolerance,
+                                                                  policies.get_placement());
+  SMS::Bounded_normal_change_filter<> filter;
+  const size_t edges = static_cast<size_t>(1.5 * std::max(4.0, target));
+  SMS::Count_stop_predicate<Mesh> stop(edges);
+  SMS::edge_collapse(mesh, stop,
+                     CGAL::parameters::get_cost(policies.get_cost())
+                         .get_placement(placement)
+                         .filter(filter));
+  mesh.collect_garbage();
+  if (PMP::does_self_intersect(mesh)) {
+    r.refused = "the simplified surface self-intersects";
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+  }
+  // One-sided Hausdorff: every input vertex to the simplified surface.
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(mesh).first, faces(mesh).second,
+                                                         mesh);
+  tree.accelerate_distance_queries();
+  double h2 = 0;
+  for (auto v : input.vertices()) {
+    h2 = std::max(h2, CGAL::to_double(tree.squared_distance(input.point(v))));
+  }
+  r.surface = fromMesh(mesh);
+  r.simplified = true;
+  r.outputTriangles = r.surface.triangles.size();
+  r.outputMeanEdge = meanEdgeLength(r.surface);
+  r.hausdorff = std::sqrt(h2);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return r;
+}
+
+}  // namespace geolattice

@@ -1,0 +1,46 @@
+#pragma once
+/// @file SurfaceSimplification.h
+/// @brief Coarsening a closed triangle surface to the edge length the tet mesh needs, before
+/// TetGen: TetGen keeps every input triangle, so a 1M-triangle scan or CAD export gives millions of
+/// tets (and minutes of meshing) although the heat method and the layers need ~75k. CGAL's
+/// edge-collapse simplification (Garland-Heckbert quadric cost and placement, each new vertex
+/// within `tolerance` of the input surface, no collapse that flips a face normal by more than
+/// 90°) reduces it to about the target edge length, keeping it closed and edge-manifold; the
+/// result is refused (the input returned unchanged) if it self-intersects.
+#include "mesh/TetMesh.h"
+
+#include <functional>
+
+namespace geolattice {
+
+struct SimplificationOptions {
+  double targetEdgeLength = 0;  ///< mm (> 0): the mean edge length aimed at
+  /// Largest distance of a new vertex from the input surface (mm); 0 = a quarter of the target
+  /// edge length.
+  double tolerance = 0;
+  /// Simplify only when the input's mean edge length is below this fraction of the target.
+  double finerThan = 0.5;
+  std::function<bool()> shouldAbort;  ///< polled between passes. Optional.
+};
+
+struct SimplificationResult {
+  TriangleSurface surface;
+  bool simplified = false;  ///< false: the input was coarse enough (or the result was refused)
+  size_t inputTriangles = 0, outputTriangles = 0;
+  double inputMeanEdge = 0, outputMeanEdge = 0;  ///< mm
+  /// Largest distance from an input vertex to the output surface (mm): a sampled one-sided
+  /// Hausdorff distance.
+  double hausdorff = 0;
+  double seconds = 0;
+  std::string refused;  ///< why a simplified surface was not used (empty when used or not tried)
+};
+
+/// Mean edge length of a triangle surface (mm).
+double meanEdgeLength(const TriangleSurface& surface);
+
+/// Simplifies `surface` (closed, edge-manifold, consistently oriented) when it is much finer than
+/// the target. Throws GeoLatticeError for a bad target edge length.
+SimplificationResult simplifySurface(const TriangleSurface& surface,
+                                     const SimplificationOptions& options);
+
+}  // namespace geolattice

@@ -1,0 +1,393 @@
+#include "orient/AutoOrient.h"
+
+#include "collision/CollisionVerifier.h"
+#include "common/Error.h"
+#include "common/ParallelFor.h"
+#include "common/Progress.h"
+#include "gdf/GeodesicDistanceFields.h"
+#include "gdf/HeatSources.h"
+#include "lattice/LatticeInfill.h"
+#include "mesh/TetMeshTopology.h"
+#include "overhang/OverhangAnalysis.h"
+#include "sequence/PotentialCollisions.h"
+#include "sequence/PrintMaterial.h"
+#include "sequence/PrintSequencer.h"
+#include "skeleton/SkeletonTree.h"
+#include "slicer/CurvedLayerSlicer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_hull_3.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cmath>
+#include <memory>
+#include <sstream>
+
+namespace geolattice {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+constexpr double kDeg = M_PI / 180.0;
+
+double seconds(Clock::time_point t0) {
+  return std::chrono::duration<double>(Clock::now() - t0).count();
+}
+
+/// Outward normals of the convex hull's facets, coplanar ones merged (within 2°), largest area
+/// first: a part lying on such a facet sits flat on the plate.
+std::vector<Vec3> hullFacetNormals(const TriangleSurface& surface, int count) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Mesh = CGAL::Surface_mesh<K::Point_3>;
+  std::vector<K::Point_3> points;
+  points.reserve(surface.points.size());
+  for (const Vec3& p : surface.points) {
+    points.emplace_back(p.x(), p.y(), p.z());
+  }
+  Mesh hull;
+  CGAL::convex_hull_3(points.begin(), points.end(), hull);
+  std::vector<std::pair<double, Vec3>> groups;  // (area, area-weighted normal)
+  for (auto f : hull.faces()) {
+    Vec3 v[3];
+    int k = 0;
+    for (auto vertex : CGAL::vertices_around_face(hull.halfedge(f), hull)) {
+      const K::Point_3& p = hull.point(vertex);
+      v[k++] = Vec3(p.x(), p.y(), p.z());
+    }
+    const Vec3 cross = (v[1] - v[0]).cross(v[2] - v[0]);
+    const double area = 0.5 * cross.norm();
+    if (!(area > 0)) {
+      continue;
+    }
+    const Vec3 n = cross.normalized();
+    bool merged = false;
+    for (auto& g : groups) {
+      if (g.second.normalized().dot(n) > std::cos(2 * kDeg)) {
+        g.first += area;
+        g.second += area * n;
+        merged = true;
+        break;
+      }
+    }
+    if (!merged) {
+      groups.emplace_back(area, area * n);
+    }
+  }
+  std::sort(groups.begin(), groups.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<Vec3> normals;
+  for (size_t i = 0; i < groups.size() && static_cast<int>(normals.size()) < count; ++i) {
+    normals.push_back(groups[i].second.normalized());
+  }
+  return normals;
+}
+
+/// `count` unit directions spread evenly over the sphere (Fibonacci lattice).
+std::vector<Vec3> fibonacciSphere(int count) {
+  std::vector<Vec3> out;
+  const double golden = M_PI * (3.0 - std::sqrt(5.0));
+  for (int i = 0; i < count; ++i) {
+    const double z = 1.0 - 2.0 * (i + 0.5) / count;
+    const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+    out.emplace_back(r * std::cos(golden * i), r * std::sin(golden * i), z);
+  }
+  return out;
+}
+
+/// The scores of one candidate, with the real stages on the coarse mesh (see the file comment).
+/// `gdf` is this worker's set-up of the fields on the coarse mesh as placed.
+void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptions& o) {
+  const bool debug = std::getenv("GEOLATTICE_ORIENT_DEBUG") != nullptr;
+  auto tick = Clock::now();
+  auto lap = [&](const char* what) {
+    if (debug) {
+      std::fprintf(stderr, "  %s %.3f s\n", what, seconds(tick));
+    }
+    tick = Clock::now();
+  };
+  const TetMesh& placed = gdf.mesh();
+  TetMesh mesh = placed;
+  double zmin = std::numeric_limits<double>::infinity();
+  for (Vec3& p : mesh.points) {
+    p = c.rotation * p;
+    zmin = std::min(zmin, p.z());
+  }
+  double zmax = -std::numeric_limits<double>::infinity();
+  for (Vec3& p : mesh.points) {
+    p.z() -= zmin;
+    zmax = std::max(zmax, p.z());
+  }
+  c.height = zmax;
+  const std::vector<int> sources = sourcesNearLowestZ(mesh, o.baseTolerance);
+  // γ, α, β do not change under rotation, but the reference vector r of Eq. 3 is fixed in the
+  // printing frame: in the placed frame it is Rᵀ r.
+  gdf.setReference(c.rotation.transpose() * Vec3::UnitX());
+  GeodesicFields fields = gdf.solve(sources);
+  lap("gdf");
+  for (Vec3& d : fields.gammaDirection) {
+    d = c.rotation * d;
+  }
+
+  // Curved layers, lattice, skeleton.
+  SlicerOptions slicer;
+  slicer.interval = o.layerInterval;
+  slicer.firstLayerOffset = o.layerInterval;
+  if (fields.gamma.maxCoeff() < slicer.firstLayerOffset) {
+    c.layers = 0;
+    return;  // thinner than one evaluation layer: nothing to collide
+  }
+  const std::vector<Vec3> normals = vertexGradientDirections(mesh, fields.gamma);
+  const CurvedLayers layers =
+      sliceCurvedLayers(mesh, fields.gamma, fields.alpha, fields.beta, normals, slicer);
+  c.layers = static_cast<int>(layers.layerValues.size());
+  lap("slice");
+  std::vector<std::uint8_t> base(mesh.points.size(), 0);
+  for (int s : sources) {
+    base[s] = 1;
+  }
+  OverhangOptions overhang;
+  overhang.thresholdDeg = o.overhangThresholdDeg;
+  c.overhangFraction =
+      analyzeOverhang(mesh, gdf.topology(), fields.gammaDirection, base, overhang).curvedFraction;
+  LatticeOptions lattice;
+  lattice.alphaWidth = lattice.betaWidth = o.latticeWidth;
+  lattice.threads = 1;
+  const LatticeGraph graph = buildLatticeGraph(layers, lattice);
+  lap("overhang+lattice");
+  if (graph.subgraphs.empty()) {
+    return;
+  }
+  const SkeletonTree tree = buildSkeletonTree(mesh, fields.gamma, graph);
+  lap("skeleton");
+
+  // The paper's A4 order and the independent verifier on it, with the nozzle and the plate.
+  const MaterialSamples material = sampleLatticeMaterial(graph, o.sampleSpacing);
+  const PotentialCollisions pcg = computePotentialCollisions(material, o.nozzle, 1);
+  lap("pcg");
+  SequenceOptions order;
+  order.strategy = SequenceStrategy::Greedy;
+  const PrintSequence sequence = sequencePrint(tree, material, &pcg, order);
+  c.forcedSteps = sequence.forcedSteps;
+  lap("sequence");
+  std::vector<int> time(material.points.size());
+  for (size_t s = 0; s < time.size(); ++s) {
+    time[s] = sequence.printIndex[material.subgraph[s]];
+  }
+  const CollisionReport report =
+      verifyNozzleClearance(material.points, material.normals, time, o.nozzle, 0, nullptr,
+                            nullptr, o.plate.enabled ? &o.plate : nullptr);
+  lap("verify");
+  if (debug) {
+    std::fprintf(stderr, "candidate %s: %zu samples, %zu subgraphs, %d layers, %lld colliding\n",
+                 c.source.c_str(), material.points.size(), graph.subgraphs.size(), c.layers,
+                 report.violatingStations);
+  }
+  c.collidingStations = report.violatingStations;
+  c.plateStations = report.plateStations;
+  c.stations = report.stations;
+}
+
+/// Lexicographic "a is better than b" (see the file comment).
+bool better(const OrientCandidate& a, const OrientCandidate& b) {
+  if (a.feasible != b.feasible) {
+    return a.feasible;
+  }
+  if (a.collidingStations != b.collidingStations) {
+    return a.collidingStations < b.collidingStations;
+  }
+  if (a.forcedSteps != b.forcedSteps) {
+    return a.forcedSteps < b.forcedSteps;
+  }
+  // Overhang fractions within 0.1 % and layer counts within 2 % are ties.
+  if (std::abs(a.overhangFraction - b.overhangFraction) > 1e-3) {
+    return a.overhangFraction < b.overhangFraction;
+  }
+  if (std::abs(a.layers - b.layers) > 0.02 * std::max(a.layers, b.layers)) {
+    return a.layers < b.layers;
+  }
+  if ((a.source == "keep") != (b.source == "keep")) {
+    return a.source == "keep";
+  }
+  return a.baseArea > b.baseArea;
+}
+
+}  // namespace
+
+void OrientOptions::validate() const {
+  std::ostringstream m;
+  if (sphereCandidates < 0 || hullCandidates < 0 || sphereCandidates + hullCandidates > 100000) {
+    m << "orientation: the candidate counts must be >= 0 (got " << sphereCandidates
+      << " sphere, " << hullCandidates << " hull)";
+  } else if (!(minBaseArea >= 0) || !std::isfinite(minBaseArea)) {
+    m << "orientation: the minimum base area must be >= 0 mm^2 (got " << minBaseArea << ")";
+  } else if (!(contactHeight > 0) || !(layerInterval > 0) || !(latticeWidth > 0) ||
+             !(sampleSpacing > 0) || !(baseTolerance >= 0)) {
+    m << "orientation: contact height, layer interval, lattice width and sample spacing must be "
+         "> 0 mm and the base tolerance >= 0 mm";
+  } else if (evaluationTets < 100) {
+    m << "orientation: the evaluation mesh needs at least 100 tets (got " << evaluationTets << ")";
+  } else {
+    nozzle.validate();
+    if (plate.enabled) {
+      plate.validate();
+    }
+    return;
+  }
+  throw GeoLatticeError(m.str());
+}
+
+Eigen::Matrix3d rotationTakingDownToMinusZ(const Vec3& down) {
+  return Eigen::Quaterniond::FromTwoVectors(down.normalized(), -Vec3::UnitZ()).toRotationMatrix();
+}
+
+double baseContactArea(const TriangleSurface& surface, const Eigen::Matrix3d& R,
+                       double contactHeight) {
+  double zmin = std::numeric_limits<double>::infinity();
+  std::vector<double> z(surface.points.size());
+  for (size_t i = 0; i < z.size(); ++i) {
+    z[i] = R.row(2).dot(surface.points[i]);
+    zmin = std::min(zmin, z[i]);
+  }
+  const double cosMax = std::cos(30 * kDeg);
+  double area = 0;
+  for (const auto& t : surface.triangles) {
+    if (z[t[0]] - zmin > contactHeight || z[t[1]] - zmin > contactHeight ||
+        z[t[2]] - zmin > contactHeight) {
+      continue;
+    }
+    const Vec3 a = R * surface.points[t[0]], b = R * surface.points[t[1]],
+               c = R * surface.points[t[2]];
+    const Vec3 cross = (b - a).cross(c - a);
+    const double twice = cross.norm();
+    if (twice > 0 && -cross.z() / twice >= cosMax) {
+      area += 0.5 * twice;
+    }
+  }
+  return area;
+}
+
+TriangleSurface orientSurface(const TriangleSurface& surface, const Eigen::Matrix3d& R) {
+  TriangleSurface out = surface;
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  Vec3 rlo = lo, rhi = hi;
+  for (size_t i = 0; i < surface.points.size(); ++i) {
+    lo = lo.cwiseMin(surface.points[i]);
+    hi = hi.cwiseMax(surface.points[i]);
+    out.points[i] = R * surface.points[i];
+    rlo = rlo.cwiseMin(out.points[i]);
+    rhi = rhi.cwiseMax(out.points[i]);
+  }
+  const Vec3 shift(0.5 * (lo.x() + hi.x() - rlo.x() - rhi.x()),
+                   0.5 * (lo.y() + hi.y() - rlo.y() - rhi.y()), -rlo.z());
+  for (Vec3& p : out.points) {
+    p += shift;
+  }
+  return out;
+}
+
+OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptions& o) {
+  const auto t0 = Clock::now();
+  o.validate();
+  if (surface.points.empty() || surface.triangles.empty()) {
+    throw GeoLatticeError("orientation: the surface is empty");
+  }
+  const ProgressReporter progress(o.progress, o.shouldAbort, "orientation search");
+
+  // Candidates: as placed, the hull facets, the sphere; near-duplicates (within 2°) dropped.
+  OrientResult result;
+  auto add = [&](const Vec3& down, const char* source) {
+    for (const OrientCandidate& c : result.candidates) {
+      if (c.down.dot(down) > std::cos(2 * kDeg)) {
+        return;
+      }
+    }
+    OrientCandidate c;
+    c.source = source;
+    c.down = down.normalized();
+    c.rotation = rotationTakingDownToMinusZ(c.down);
+    result.candidates.push_back(c);
+  };
+  add(-Vec3::UnitZ(), "keep");
+  if (o.hullCandidates > 0) {
+    for (const Vec3& n : hullFacetNormals(surface, o.hullCandidates)) {
+      add(n, "hull");
+    }
+  }
+  for (const Vec3& d : fibonacciSphere(o.sphereCandidates)) {
+    add(d, "sphere");
+  }
+  for (OrientCandidate& c : result.candidates) {
+    c.baseArea = baseContactArea(surface, c.rotation, o.contactHeight);
+  }
+  progress.report(0.02);
+
+  // One coarse mesh for all candidates (rotation changes no tet).
+  TetrahedralizeOptions tetOptions;
+  tetOptions.autoTargetTets = o.evaluationTets;
+  tetOptions.simplifyFinerThan = 1.0;  // a coarse mesh: do not keep a finer surface
+  const TetrahedralizeResult tets = tetrahedralizeSurface(surface, tetOptions);
+  result.evaluationTets = static_cast<int>(tets.mesh.tets.size());
+  progress.report(0.1);
+
+  // Each worker its own set-up of the fields (the heat and Laplacian factorizations).
+  const size_t n = result.candidates.size();
+  const int workers = workerCount(o.threads, n);
+  std::vector<std::unique_ptr<GeodesicDistanceFields>> gdf(workers);
+  parallelFor(static_cast<size_t>(workers), workers, [&](size_t w, int) {
+    gdf[w] = std::make_unique<GeodesicDistanceFields>(tets.mesh);
+  });
+  progress.report(0.15);
+  const ProgressReporter candidates = progress.part(0.15, 1.0);
+  parallelFor(
+      n, workers,
+      [&](size_t i, int w) {
+        OrientCandidate& c = result.candidates[i];
+        if (c.baseArea < o.minBaseArea && c.source != "keep") {
+          return;  // cannot stick to the plate: not worth the stages
+        }
+        const auto start = Clock::now();
+        try {
+          evaluate(c, *gdf[w], o);
+          c.evaluated = true;
+          c.feasible = c.baseArea >= o.minBaseArea;
+        } catch (const GeoLatticeError& e) {
+          c.error = e.what();
+        }
+        c.seconds = seconds(start);
+      },
+      [&](size_t done) { candidates.report(static_cast<double>(done) / n); });
+
+  // Rank.
+  std::vector<int> order(n);
+  for (size_t i = 0; i < n; ++i) {
+    order[i] = static_cast<int>(i);
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return better(result.candidates[a], result.candidates[b]);
+  });
+  for (size_t r = 0; r < n; ++r) {
+    result.candidates[order[r]].rank = static_cast<int>(r);
+  }
+  result.best = order[0];
+  result.seconds = seconds(t0);
+  if (!result.candidates[result.best].feasible) {
+    const auto widest = std::max_element(
+        result.candidates.begin(), result.candidates.end(),
+        [](const OrientCandidate& a, const OrientCandidate& b) { return a.baseArea < b.baseArea; });
+    std::ostringstream m;
+    m << "orientation: no orientation has a base contact area of " << o.minBaseArea
+      << " mm^2 (the largest is " << widest->baseArea << " mm^2, with the part's side ("
+      << widest->down.x() << ", " << widest->down.y() << ", " << widest->down.z()
+      << ") down); lower MinBaseArea or give the part a flat side";
+    throw GeoLatticeError(m.str());
+  }
+  return result;
+}
+
+}  // namespace geolattice

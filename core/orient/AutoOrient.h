@@ -1,0 +1,103 @@
+#pragma once
+/// @file AutoOrient.h
+/// @brief Automatic orientation of a part on the build plate (the "free base selection" the
+/// paper names as future work, Section 5): which side of the part faces down.
+///
+/// Data flow: placed surface (mm) -> one coarse tet mesh (TetGen, ~15k tets) and one set-up of the
+/// geodesic fields (the FEM operators and the heat factorization do not change under rotation)
+/// -> for every candidate down direction d: rotate d onto -z and place the part on the plate ->
+/// the real stages on the coarse mesh: γ from the lowest vertices (heat method), the curved
+/// layers, the lattice, the skeleton tree, the paper's A4 order and the independent collision
+/// verifier with the configured nozzle and the build plate -> scores -> the best candidate by a
+/// lexicographic objective.
+///
+/// Candidates: `sphereCandidates` directions of a Fibonacci sphere (uniform), the outward
+/// normals of the largest convex-hull facets (a part lying on a facet of its hull sits flat), and
+/// the part as placed ("keep", always candidate 0).
+///
+/// Objective, lexicographic (earlier criteria decide):
+///   1. the base contact area is at least minBaseArea (the part sticks to the plate);
+///   2. fewest strict collision stations (material or plate inside the nozzle, the verifier on
+///      the printing order of the coarse lattice);
+///   3. fewest forced steps of the order (sub-graphs that block each other);
+///   4. the smallest curved-layer overhang fraction (surface that needs support, paper Fig. 8);
+///   5. the fewest layers;
+///   6. the part as placed, then the larger base area.
+/// When no candidate has the base area, the search fails naming the best area found.
+#include "mesh/TetMesh.h"
+#include "nozzle/BuildPlate.h"
+#include "nozzle/NozzleModel.h"
+
+#include <Eigen/Core>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace geolattice {
+
+struct OrientOptions {
+  int sphereCandidates = 100;  ///< Fibonacci sphere directions (>= 0)
+  int hullCandidates = 24;     ///< normals of the largest convex-hull facets (>= 0)
+  double minBaseArea = 10.0;   ///< mm² of contact with the plate a candidate needs (>= 0)
+  double contactHeight = 0.3;  ///< faces within this height of the lowest point touch (mm): half
+                               ///< a first layer, squeezed onto the plate
+  int evaluationTets = 15000;  ///< tets of the coarse evaluation mesh
+  double layerInterval = 1.5;  ///< layer spacing of the evaluation (mm, > 0; coarser than printing)
+  double latticeWidth = 8.0;   ///< lattice width of the evaluation (mm, > 0)
+  double sampleSpacing = 2.0;  ///< material samples of the evaluation's collision check (mm)
+  double baseTolerance = 0.05;  ///< the base: vertices this close to the lowest point (mm)
+  double overhangThresholdDeg = 135.0;
+  NozzleModel nozzle;  ///< the configured nozzle
+  BuildPlate plate;    ///< the build plate (an obstacle when enabled)
+  int threads = 0;     ///< candidates evaluated in parallel; 0 = hardware concurrency
+  std::function<void(double)> progress;  ///< fraction done (calling thread). Optional.
+  std::function<bool()> shouldAbort;     ///< true stops with "orientation search aborted".
+  /// Throws GeoLatticeError naming a bad option.
+  void validate() const;
+};
+
+/// One candidate orientation and its scores.
+struct OrientCandidate {
+  std::string source;       ///< "keep", "hull" or "sphere"
+  Vec3 down = -Vec3::UnitZ();  ///< the part's direction (as placed) that faces the plate
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< as placed -> printed (down -> -z)
+  double baseArea = 0;       ///< mm² of the surface touching the plate
+  bool feasible = false;     ///< baseArea >= minBaseArea (and evaluated)
+  bool evaluated = false;    ///< the stages ran (skipped below the base area)
+  long long collidingStations = 0;  ///< strict verifier, printing order of the coarse lattice
+  long long plateStations = 0;      ///< of those, where the nozzle meets the plate
+  long long stations = 0;           ///< stations checked
+  int forcedSteps = 0;
+  double overhangFraction = 0;  ///< curved-layer overhang area fraction
+  int layers = 0;
+  double height = 0;  ///< part height in this orientation (mm)
+  double seconds = 0;
+  std::string error;  ///< a stage that failed on this candidate (then it is not feasible)
+  int rank = -1;      ///< 0 = best
+};
+
+struct OrientResult {
+  std::vector<OrientCandidate> candidates;  ///< candidate 0 is "keep"
+  int best = 0;                             ///< index of the chosen candidate
+  int evaluationTets = 0;                   ///< tets of the coarse mesh
+  double seconds = 0;
+};
+
+/// Rotation that turns `down` onto -z by the smallest angle.
+Eigen::Matrix3d rotationTakingDownToMinusZ(const Vec3& down);
+
+/// Area of the faces of `surface` (rotated by R) within contactHeight of its lowest point and
+/// facing down (outward normal within 30° of -z): the contact with the plate (mm²).
+double baseContactArea(const TriangleSurface& surface, const Eigen::Matrix3d& R,
+                       double contactHeight);
+
+/// The search (see the file comment). `surface` is the placed, closed part in mm. Throws
+/// GeoLatticeError for bad options, a surface TetGen cannot mesh, or no candidate with the
+/// minimum base area (naming the largest area found and its direction).
+OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptions& options);
+
+/// `surface` rotated by R and moved so its lowest point is at z = 0 with the x/y centre of its
+/// bounding box where the original one was.
+TriangleSurface orientSurface(const TriangleSurface& surface, const Eigen::Matrix3d& R);
+
+}  // namespace geolattice
