@@ -103,6 +103,9 @@ vtkGLNozzle* nozzle(P& p) {
 vtkGLPlaceOnPlatform* placement(P& p) {
   return p.Placement;
 }
+vtkGLAutoOrient* orientation(P& p) {
+  return p.Orientation;
+}
 vtkGLTetrahedralizeSurface* tets(P& p) {
   return p.Tetrahedralize;
 }
@@ -179,6 +182,34 @@ std::vector<CliOption> makeTable() {
                [](P& p, RunOptions&, const std::string&) { p.Placement->SetCenterXY(false); },
                [](P& p, const RunOptions&) {
                  return std::string(p.Placement->GetCenterXY() ? "centred" : "kept");
+               }});
+
+  const char* orient = "Orientation (which side of the part faces the plate)";
+  t.push_back({"--orient", "MODE", orient,
+               "keep | auto: keep the placement, or search the best orientation\n"
+               "(candidates scored with the real stages on a coarse mesh;\n"
+               "orientation.csv lists them)",
+               "GLAutoOrient.Orient",
+               [](P& p, RunOptions&, const std::string& v) {
+                 p.Orientation->SetOrient(choice("--orient", v, {"keep", "auto"}));
+               },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.Orientation->GetOrient() ? "auto" : "keep");
+               }});
+  t.push_back(number("--min-base-area", "MM2", orient,
+                     "contact area with the plate an orientation needs (mm^2)",
+                     "GLAutoOrient.MinBaseArea", orientation, &vtkGLAutoOrient::SetMinBaseArea,
+                     &vtkGLAutoOrient::GetMinBaseArea));
+  t.push_back({"--orient-candidates", "N", orient,
+               "candidate directions from a uniform sphere sample (plus the\n"
+               "convex-hull facets and the placement as it is)",
+               "GLAutoOrient.SphereCandidates",
+               [](P& p, RunOptions&, const std::string& v) {
+                 p.Orientation->SetSphereCandidates(
+                     static_cast<int>(wholeNumber("--orient-candidates", v, 0, 2000)));
+               },
+               [](P& p, const RunOptions&) {
+                 return text(p.Orientation->GetSphereCandidates());
                }});
 
   t.push_back(number("--edge-length", "MM", mesh,

@@ -3,6 +3,7 @@
 #include "CliOptions.h"
 #include "ErrorCapture.h"
 #include "OutputFiles.h"
+#include "OrientationCsv.h"
 #include "SequenceCsv.h"
 #include "StageReports.h"
 #include "ToolpathOutput.h"
@@ -117,6 +118,20 @@ private:
     input["file"] = R.model;
     reportInput(placed, tetMesh, input);
 
+    if (!tetMesh) {
+      if (P.Orientation->GetOrient() == vtkGLAutoOrient::AUTO) {  // Keep: it passes the part on
+        placed = this->Update("orient", P.Orientation);
+        reportOrientation(placed, this->Section("orient"));
+        this->Write(P.Orientation->GetOutputDataObject(1), "orientation.vtp");
+        this->WriteFile("orientation.csv", [&](const std::string& path) {
+          writeOrientationCsv(vtkPolyData::SafeDownCast(P.Orientation->GetOutputDataObject(1)),
+                              path);
+        });
+      }
+    } else if (P.Orientation->GetOrient() == vtkGLAutoOrient::AUTO) {
+      throw UsageError("--orient auto needs a surface model: " + R.model +
+                       " is a tet mesh (orient its boundary surface, e.g. exported as .stl)");
+    }
     vtkDataObject* tets = placed;
     if (!tetMesh) {
       tets = this->Update("mesh", P.Tetrahedralize);

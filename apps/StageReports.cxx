@@ -84,6 +84,23 @@ void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {
   s["tets"] = cells(tets);
 }
 
+void reportOrientation(vtkDataObject* o, Json& s) {
+  s["mode"] = "auto";
+  s["up"] = {fieldValue(o, arrays::OrientUp, 0), fieldValue(o, arrays::OrientUp, 1),
+             fieldValue(o, arrays::OrientUp, 2)};
+  std::vector<double> rotation;
+  for (int k = 0; k < 9; ++k) {
+    rotation.push_back(fieldValue(o, arrays::OrientRotation, k));
+  }
+  s["rotation"] = rotation;
+  s["candidates"] = count(o, arrays::OrientCandidates);
+  s["search_seconds"] = fieldValue(o, arrays::OrientSeconds);
+  s["evaluation_tets"] = count(o, arrays::OrientEvaluationTets);
+  s["before"] = {{"colliding_stations", count(o, arrays::OrientBefore)}};
+  s["after"] = {{"colliding_stations", count(o, arrays::OrientAfter)}};
+  s["candidates_file"] = "orientation.csv";
+}
+
 void reportFields(vtkDataObject* fields, Json& s) {
   s["points"] = points(fields);
   s["tets"] = cells(fields);

@@ -16,6 +16,9 @@ double fieldValue(vtkDataObject* data, const char* name, int component = 0);
 
 void reportInput(vtkDataObject* placed, bool tetMesh, Json& section);
 void reportMesh(vtkDataObject* tets, bool meshed, Json& section);
+/// The chosen orientation: up, rotation, candidates, seconds, before / after (colliding stations
+/// as placed and chosen), evaluation tets.
+void reportOrientation(vtkDataObject* oriented, Json& section);
 void reportFields(vtkDataObject* fields, Json& section);
 void reportLayers(GLPrintPipeline& pipeline, vtkDataObject* layers, Json& section);
 void reportOverhang(vtkDataObject* surface, Json& section);

@@ -21,11 +21,10 @@ using namespace geolattice;
 namespace {
 
 TriangleSurface load(const std::string& file, double size) {
-  const std::string path = file.find('/') == std::string::npos
-                               ? std::string(GEOLATTICE_TESTDATA) + "/" + file
-                               : file;
-  TriangleSurface s = path.size() > 4 && path.substr(path.size() - 4) == ".off" ? readOff(path)
-                                                                               : readObj(path);
+  const std::string path =
+      file.find('/') == std::string::npos ? std::string(GEOLATTICE_TESTDATA) + "/" + file : file;
+  TriangleSurface s =
+      path.size() > 4 && path.substr(path.size() - 4) == ".off" ? readOff(path) : readObj(path);
   Vec3 lo = s.points[0], hi = s.points[0];
   for (const Vec3& p : s.points) {
     lo = lo.cwiseMin(p);
@@ -45,22 +44,23 @@ void printRow(const char* name, const OrientResult& r) {
   for (const OrientCandidate& c : r.candidates) {
     evaluated += c.evaluated;
   }
-  std::printf("| %s | %zu (%d evaluated) | %d | %.1f | %lld (%lld plate) / %lld, %d forced, "
-              "%.1f mm² | %s (%.2f, %.2f, %.2f) | %lld (%lld plate) / %lld, %d forced, %.1f mm², "
-              "overhang %.3f |\n",
-              name, r.candidates.size(), evaluated, r.evaluationTets, r.seconds,
-              keep.collidingStations, keep.plateStations, keep.stations, keep.forcedSteps,
-              keep.baseArea, best.source.c_str(), best.down.x(), best.down.y(), best.down.z(),
-              best.collidingStations, best.plateStations, best.stations, best.forcedSteps,
-              best.baseArea, best.overhangFraction);
+  std::printf(
+      "| %s | %zu (%d evaluated) | %d | %.1f | %lld (%lld plate) / %lld, %d forced, "
+      "%.1f mm² | %s (%.2f, %.2f, %.2f) | %lld (%lld plate) / %lld, %d forced, %.1f mm², "
+      "overhang %.3f |\n",
+      name, r.candidates.size(), evaluated, r.evaluationTets, r.seconds, keep.collidingStations,
+      keep.plateStations, keep.stations, keep.forcedSteps, keep.baseArea, best.source.c_str(),
+      best.down.x(), best.down.y(), best.down.z(), best.collidingStations, best.plateStations,
+      best.stations, best.forcedSteps, best.baseArea, best.overhangFraction);
   if (std::getenv("GEOLATTICE_ORIENT_ALL")) {
     for (const OrientCandidate& c : r.candidates) {
       if (c.evaluated) {
-        std::printf("  rank %3d %-6s down (%5.2f %5.2f %5.2f) base %6.1f colliding %6lld plate %6lld "
-                    "forced %3d overhang %.3f layers %d  %.2f s %s\n",
-                    c.rank, c.source.c_str(), c.down.x(), c.down.y(), c.down.z(), c.baseArea,
-                    c.collidingStations, c.plateStations, c.forcedSteps, c.overhangFraction,
-                    c.layers, c.seconds, c.error.c_str());
+        std::printf(
+            "  rank %3d %-6s down (%5.2f %5.2f %5.2f) base %6.1f colliding %6lld plate %6lld "
+            "forced %3d overhang %.3f layers %d  %.2f s %s\n",
+            c.rank, c.source.c_str(), c.down.x(), c.down.y(), c.down.z(), c.baseArea,
+            c.collidingStations, c.plateStations, c.forcedSteps, c.overhangFraction, c.layers,
+            c.seconds, c.error.c_str());
       }
     }
   }
@@ -84,13 +84,19 @@ int main(int argc, char** argv) {
       models.emplace_back(argv[i], std::atof(argv[i + 1]));
     }
     if (models.empty()) {
-      models = {{"bunny.obj", 80},      {"spot.obj", 80},       {"decimated-knight.off", 60},
-                {"topopt_new4_surf.obj", 0}, {"y_shape.obj", 0}, {"three_branch_tree.obj", 81},
-                {"cube.obj", 30},       {"ring_surf.obj", 0}};
+      models = {{"bunny.obj", 80},
+                {"spot.obj", 80},
+                {"decimated-knight.off", 60},
+                {"topopt_new4_surf.obj", 0},
+                {"y_shape.obj", 0},
+                {"three_branch_tree.obj", 81},
+                {"cube.obj", 30},
+                {"ring_surf.obj", 0}};
     }
-    std::printf("| model | candidates | eval tets | seconds | as placed: colliding / stations, "
-                "forced, base | chosen (down) | chosen: colliding / stations, forced, base |\n"
-                "|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| model | candidates | eval tets | seconds | as placed: colliding / stations, "
+        "forced, base | chosen (down) | chosen: colliding / stations, forced, base |\n"
+        "|---|---|---|---|---|---|---|\n");
     for (const auto& [file, size] : models) {
       try {
         OrientOptions o;

@@ -6,7 +6,8 @@
 
 GLPrintPipeline::GLPrintPipeline(bool tetMeshInput) {
   this->Placement->SetInputConnection(this->Reader->GetOutputPort());
-  this->Tetrahedralize->SetInputConnection(this->Placement->GetOutputPort());
+  this->Orientation->SetInputConnection(this->Placement->GetOutputPort());
+  this->Tetrahedralize->SetInputConnection(this->Orientation->GetOutputPort(0));
   this->Slicer->SetInputConnection(this->GeodesicFields->GetOutputPort());
   this->OverhangAnalysis->SetInputConnection(this->GeodesicFields->GetOutputPort());
   this->LatticeInfill->SetInputConnection(this->Slicer->GetOutputPort(0));
@@ -21,7 +22,8 @@ GLPrintPipeline::GLPrintPipeline(bool tetMeshInput) {
   this->ToolpathVerifier->SetInputConnection(this->Planner->GetOutputPort());
   this->ToolpathVerifier->SetTimeArrayName(geolattice::arrays::PointIndex);
   for (vtkGLNozzleAlgorithm* a :
-       {static_cast<vtkGLNozzleAlgorithm*>(this->Sequencer.Get()),
+       {static_cast<vtkGLNozzleAlgorithm*>(this->Orientation.Get()),
+        static_cast<vtkGLNozzleAlgorithm*>(this->Sequencer.Get()),
         static_cast<vtkGLNozzleAlgorithm*>(this->SequenceVerifier.Get()),
         static_cast<vtkGLNozzleAlgorithm*>(this->Planner.Get()),
         static_cast<vtkGLNozzleAlgorithm*>(this->ToolpathVerifier.Get())}) {
@@ -50,6 +52,8 @@ vtkAlgorithm* GLPrintPipeline::Filter(Stage stage) {
       return this->Reader;
     case Place:
       return this->Placement;
+    case Orient:
+      return this->Orientation;
     case Mesh:
       return this->Tetrahedralize;
     case Fields:
@@ -78,7 +82,8 @@ vtkAlgorithm* GLPrintPipeline::Filter(Stage stage) {
 
 const char* GLPrintPipeline::StageName(Stage stage) {
   static const char* const names[NumberOfStages] = {
-      "read",    "place",    "mesh",     "fields",          "layers",   "overhang",
-      "lattice", "skeleton", "sequence", "sequence-verify", "toolpath", "toolpath-verify"};
+      "read",           "place",   "orient",   "mesh",     "fields",          "layers",
+      "overhang",       "lattice", "skeleton", "sequence", "sequence-verify", "toolpath",
+      "toolpath-verify"};
   return stage >= 0 && stage < NumberOfStages ? names[stage] : "";
 }

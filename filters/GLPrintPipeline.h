@@ -6,7 +6,7 @@
  * tests build it from here; pvpython/geolattice_pipeline.py builds the same proxies in the same
  * order (tests/pvpython/test_pipeline_description.py compares the two descriptions).
  *
- *   Reader -> Place -> Mesh (skipped for a tet-mesh input) -> Fields -> Layers -> Lattice
+ *   Reader -> Place -> Orient -> Mesh (both skipped for a tet-mesh input) -> Fields -> Layers -> Lattice
  *          -> Skeleton (+ Fields) -> Sequence -> Toolpath -> the program writers
  *   Overhang on Fields; SequenceVerify on Sequence; ToolpathVerify on Toolpath.
  *
@@ -17,6 +17,7 @@
 #ifndef __VTK_WRAP__
 
 #include "GeoLatticeFiltersModule.h"
+#include "vtkGLAutoOrient.h"
 #include "vtkGLCollisionVerifier.h"
 #include "vtkGLCurvedLayerSlicer.h"
 #include "vtkGLGCodeWriter.h"
@@ -43,6 +44,7 @@ public:
   enum Stage {
     Read,
     Place,
+    Orient,
     Mesh,
     Fields,
     Layers,
@@ -56,8 +58,8 @@ public:
     NumberOfStages
   };
 
-  /// Wires every filter. With tetMeshInput the Mesh stage is skipped: the placed tet mesh goes
-  /// straight to Fields (and Skeleton).
+  /// Wires every filter. With tetMeshInput the Orient and Mesh stages are skipped: the placed tet
+  /// mesh goes straight to Fields (and Skeleton).
   explicit GLPrintPipeline(bool tetMeshInput = false);
   GLPrintPipeline(const GLPrintPipeline&) = delete;
   GLPrintPipeline& operator=(const GLPrintPipeline&) = delete;
@@ -68,13 +70,14 @@ public:
 
   /// The filter of a stage (Mesh: the tetrahedralizer even when skipped).
   vtkAlgorithm* Filter(Stage stage);
-  /// "read", "place", "mesh", "fields", "layers", "overhang", "lattice", "skeleton", "sequence",
+  /// "read", "place", "orient", "mesh", "fields", "layers", "overhang", "lattice", "skeleton", "sequence",
   /// "sequence-verify", "toolpath", "toolpath-verify".
   static const char* StageName(Stage stage);
 
   vtkNew<vtkGLNozzle> Nozzle;  ///< shared by Sequence, both verifiers and Toolpath
   vtkNew<vtkGLMeshReader> Reader;
   vtkNew<vtkGLPlaceOnPlatform> Placement;
+  vtkNew<vtkGLAutoOrient> Orientation;  ///< Keep by default: the part as placed
   vtkNew<vtkGLTetrahedralizeSurface> Tetrahedralize;
   vtkNew<vtkGLGeodesicDistanceFields> GeodesicFields;
   vtkNew<vtkGLCurvedLayerSlicer> Slicer;

@@ -243,6 +243,28 @@ constexpr const char* ToolpathMaxAxisTilt = "ToolpathMaxAxisTilt";  ///< largest
 constexpr const char* ToolpathReplannedHops =
     "ToolpathReplannedHops";  ///< hops onto an upper node sent over the safe box (they collided)
 constexpr const char* ToolpathSeconds = "ToolpathSeconds";  ///< wall time of the planning (s)
+
+// GL Auto Orient (vtkGLAutoOrient.h): field data of the oriented surface and point data of the
+// candidates.
+constexpr const char* OrientMode = "OrientMode";  ///< "keep" or "auto"
+constexpr const char* OrientUp = "OrientUp";      ///< 3: the input's direction that now points up
+constexpr const char* OrientRotation = "OrientRotation";  ///< 9, row major: input -> output
+constexpr const char* OrientCandidates = "OrientCandidates";
+constexpr const char* OrientSeconds = "OrientSeconds";
+constexpr const char* OrientBefore = "OrientBefore";  ///< colliding stations as placed
+constexpr const char* OrientAfter = "OrientAfter";    ///< colliding stations as chosen
+constexpr const char* OrientEvaluationTets = "OrientEvaluationTets";
+constexpr const char* OrientRank = "OrientRank";      ///< 0 = the chosen candidate
+constexpr const char* OrientSource = "OrientSource";  ///< "keep", "hull", "sphere" (+ an error)
+constexpr const char* CollidingStations = "CollidingStations";
+constexpr const char* PlateStations = "PlateStations";
+constexpr const char* ForcedSteps = "ForcedSteps";
+constexpr const char* BaseArea = "BaseArea";  ///< mm²
+constexpr const char* OverhangFraction = "OverhangFraction";
+constexpr const char* LayerCount = "LayerCount";
+constexpr const char* Feasible = "Feasible";
+constexpr const char* Evaluated = "Evaluated";
+
 }  // namespace arrays
 
 /// Values of the VertexKind and EdgeKind arrays (= geolattice::LatticeVertexKind / LatticeEdgeKind).

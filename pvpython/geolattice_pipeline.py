@@ -43,7 +43,8 @@ STRATEGIES = ("LPT", "DPT", "A4", "Best")  # GLPrintSequencer's Strategy values,
 STAGES = [
     ("reader", "GLMeshReader", {}),
     ("place", "GLPlaceOnPlatform", {"Input": ("reader", 0)}),
-    ("tets", "GLTetrahedralizeSurface", {"Input": ("place", 0)}),
+    ("orient", "GLAutoOrient", {"Input": ("place", 0)}),
+    ("tets", "GLTetrahedralizeSurface", {"Input": ("orient", 0)}),
     ("fields", "GLGeodesicDistanceFields", {"Input": ("tets", 0)}),
     ("layers", "GLCurvedLayerSlicer", {"Input": ("fields", 0)}),
     ("overhang", "GLOverhangAnalysis", {"Input": ("fields", 0)}),
@@ -61,6 +62,8 @@ PARAMETERS = {
     "scale": (("place",), "Scale"),
     "fit_size": (("place",), "FitSize"),
     "center": (("place",), "CenterXY"),
+    "orient": (("orient",), "Orient"),
+    "min_base_area": (("orient",), "MinBaseArea"),
     "edge_length": (("tets",), "TargetEdgeLength"),
     "radius_edge": (("tets",), "RadiusEdgeRatio"),
     "base_tolerance": (("fields",), "BaseTolerance"),
@@ -71,7 +74,7 @@ PARAMETERS = {
     "alpha_width": (("lattice",), "AlphaWidth"),
     "beta_width": (("lattice",), "BetaWidth"),
     "strategy": (("sequencer",), "Strategy"),
-    "nozzle_angle": (("sequencer", "verifier", "toolpath", "toolpath_verifier"), "NozzleAngle"),
+    "nozzle_angle": (("orient", "sequencer", "verifier", "toolpath", "toolpath_verifier"), "NozzleAngle"),
     "sample_spacing": (("sequencer", "verifier"), "SampleSpacing"),
     "path_width": (("toolpath",), "PathWidth"),
     "filament_diameter": (("toolpath",), "FilamentDiameter"),
@@ -97,6 +100,8 @@ def build_pipeline(model, lattice_width=None, **parameters):
         parameters.setdefault("first_layer", parameters["layer_interval"])
     if isinstance(parameters.get("strategy"), str) and parameters["strategy"].lower() in ("lpt", "dpt", "a4", "best"):
         parameters["strategy"] = {"lpt": "LPT", "dpt": "DPT", "a4": "A4", "best": "Best"}[parameters["strategy"].lower()]
+    if isinstance(parameters.get("orient"), str):
+        parameters["orient"] = {"keep": "Keep", "auto": "Auto"}[parameters["orient"].lower()]
     for key in ("center", "support_perimeter"):
         if key in parameters:
             parameters[key] = int(parameters[key])
@@ -106,8 +111,8 @@ def build_pipeline(model, lattice_width=None, **parameters):
     tet_mesh = model.lower().endswith(TET_MESH_EXTENSIONS)
     p = {}
     for key, proxy_name, inputs in STAGES:
-        if key == "tets" and tet_mesh:
-            p["tets"] = p["place"]
+        if key in ("orient", "tets") and tet_mesh:
+            p[key] = p["place"]
             continue
         properties = {}
         for name, (source, port) in inputs.items():

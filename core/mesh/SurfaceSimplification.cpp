@@ -88,8 +88,8 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
   if (!(o.targetEdgeLength > 0) || !std::isfinite(o.targetEdgeLength) || !(o.tolerance >= 0) ||
       !(o.finerThan > 0)) {
     std::ostringstream m;
-    m << "surface simplification: the target edge length must be > 0 mm (got "
-      << o.targetEdgeLength << ") and the tolerance >= 0 mm (got " << o.tolerance << ")";
+    m << "surface simplification: the target edge length must be > 0 mm (got " << o.targetEdgeLength
+      << ") and the tolerance >= 0 mm (got " << o.tolerance << ")";
     throw GeoLatticeError(m.str());
   }
   SimplificationResult r;
@@ -99,8 +99,8 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
   r.outputTriangles = r.inputTriangles;
   r.outputMeanEdge = r.inputMeanEdge;
   // An equilateral triangle of edge L has area √3/4 L²: the triangle count of the target.
-  const double target = area(surface) / (std::sqrt(3.0) / 4.0 * o.targetEdgeLength *
-                                         o.targetEdgeLength);
+  const double target =
+      area(surface) / (std::sqrt(3.0) / 4.0 * o.targetEdgeLength * o.targetEdgeLength);
   if (r.inputMeanEdge >= o.finerThan * o.targetEdgeLength ||
       static_cast<double>(r.inputTriangles) < 2.0 * target) {
     return r;
@@ -115,10 +115,9 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
   SMS::Bounded_normal_change_filter<> filter;
   const size_t edges = static_cast<size_t>(1.5 * std::max(4.0, target));
   SMS::Count_stop_predicate<Mesh> stop(edges);
-  SMS::edge_collapse(mesh, stop,
-                     CGAL::parameters::get_cost(policies.get_cost())
-                         .get_placement(placement)
-                         .filter(filter));
+  SMS::edge_collapse(
+      mesh, stop,
+      CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement).filter(filter));
   mesh.collect_garbage();
   if (PMP::does_self_intersect(mesh)) {
     r.refused = "the simplified surface self-intersects";
@@ -128,7 +127,7 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
   // One-sided Hausdorff: every input vertex to the simplified surface.
   using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
   CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(mesh).first, faces(mesh).second,
-                                                         mesh);
+                                                        mesh);
   tree.accelerate_distance_queries();
   double h2 = 0;
   for (auto v : input.vertices()) {

@@ -180,8 +180,8 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
     time[s] = sequence.printIndex[material.subgraph[s]];
   }
   const CollisionReport report =
-      verifyNozzleClearance(material.points, material.normals, time, o.nozzle, 0, nullptr,
-                            nullptr, o.plate.enabled ? &o.plate : nullptr);
+      verifyNozzleClearance(material.points, material.normals, time, o.nozzle, 0, nullptr, nullptr,
+                            o.plate.enabled ? &o.plate : nullptr);
   lap("verify");
   if (debug) {
     std::fprintf(stderr, "candidate %s: %zu samples, %zu subgraphs, %d layers, %lld colliding\n",
@@ -222,8 +222,8 @@ bool better(const OrientCandidate& a, const OrientCandidate& b) {
 void OrientOptions::validate() const {
   std::ostringstream m;
   if (sphereCandidates < 0 || hullCandidates < 0 || sphereCandidates + hullCandidates > 100000) {
-    m << "orientation: the candidate counts must be >= 0 (got " << sphereCandidates
-      << " sphere, " << hullCandidates << " hull)";
+    m << "orientation: the candidate counts must be >= 0 (got " << sphereCandidates << " sphere, "
+      << hullCandidates << " hull)";
   } else if (!(minBaseArea >= 0) || !std::isfinite(minBaseArea)) {
     m << "orientation: the minimum base area must be >= 0 mm^2 (got " << minBaseArea << ")";
   } else if (!(contactHeight > 0) || !(layerInterval > 0) || !(latticeWidth > 0) ||
@@ -339,9 +339,8 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
   const size_t n = result.candidates.size();
   const int workers = workerCount(o.threads, n);
   std::vector<std::unique_ptr<GeodesicDistanceFields>> gdf(workers);
-  parallelFor(static_cast<size_t>(workers), workers, [&](size_t w, int) {
-    gdf[w] = std::make_unique<GeodesicDistanceFields>(tets.mesh);
-  });
+  parallelFor(static_cast<size_t>(workers), workers,
+              [&](size_t w, int) { gdf[w] = std::make_unique<GeodesicDistanceFields>(tets.mesh); });
   progress.report(0.15);
   const ProgressReporter candidates = progress.part(0.15, 1.0);
   parallelFor(

@@ -58,12 +58,12 @@ struct OrientOptions {
 
 /// One candidate orientation and its scores.
 struct OrientCandidate {
-  std::string source;       ///< "keep", "hull" or "sphere"
+  std::string source;          ///< "keep", "hull" or "sphere"
   Vec3 down = -Vec3::UnitZ();  ///< the part's direction (as placed) that faces the plate
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< as placed -> printed (down -> -z)
-  double baseArea = 0;       ///< mm² of the surface touching the plate
-  bool feasible = false;     ///< baseArea >= minBaseArea (and evaluated)
-  bool evaluated = false;    ///< the stages ran (skipped below the base area)
+  double baseArea = 0;              ///< mm² of the surface touching the plate
+  bool feasible = false;            ///< baseArea >= minBaseArea (and evaluated)
+  bool evaluated = false;           ///< the stages ran (skipped below the base area)
   long long collidingStations = 0;  ///< strict verifier, printing order of the coarse lattice
   long long plateStations = 0;      ///< of those, where the nozzle meets the plate
   long long stations = 0;           ///< stations checked

@@ -32,7 +32,9 @@ TriangleSurface revolve(const std::vector<std::pair<double, double>>& profile, i
   }
   s.points.emplace_back(0, 0, profile.back().second);
   const int top = static_cast<int>(s.points.size()) - 1;
-  auto ring = [segments](int i, int k) { return 1 + (i - 1) * segments + (k % segments); };
+  auto ring = [segments](int i, int k) {
+    return 1 + (i - 1) * segments + (k % segments);
+  };
   for (int k = 0; k < segments; ++k) {
     s.triangles.push_back({0, ring(1, k + 1), ring(1, k)});
     for (int i = 1; i < rings; ++i) {
@@ -111,7 +113,8 @@ TEST(ParallelFor, EveryItemOnceErrorsAndProgressOnTheCallingThread) {
   size_t last = 0;
   bool onCaller = true;
   parallelFor(
-      seen.size(), 2, [&](size_t i, int worker) {
+      seen.size(), 2,
+      [&](size_t i, int worker) {
         ASSERT_LT(worker, 2);
         ++seen[i];
       },

@@ -30,6 +30,7 @@ CLI_CHOICES = {
     "GLToolpathPlanner.SupportPerimeter": {"perimeter": 1, "none": 0},
     "GLURScriptWriter.AllowUnreachable": {"on": 1, "off": 0},
     "GLNozzle.BuildPlate": {"obstacle": 1, "none": 0},
+    "GLAutoOrient.Orient": {"keep": 0, "auto": 1},
 }
 
 

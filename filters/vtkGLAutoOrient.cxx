@@ -1,0 +1,199 @@
+#include "vtkGLAutoOrient.h"
+
+#include "vtkGLArrayNames.h"
+#include "vtkGLMeshConversion.h"
+#include "vtkGLParallel.h"
+#include "vtkGLProgress.h"
+#include "vtkGLRequest.h"
+
+#include "common/Error.h"
+#include "orient/AutoOrient.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+
+vtkStandardNewMacro(vtkGLAutoOrient);
+
+namespace gl = geolattice;
+
+vtkGLAutoOrient::vtkGLAutoOrient() {
+  this->SetNumberOfOutputPorts(2);
+  const gl::OrientOptions d;  // the defaults live in core
+  this->Orient = KEEP;
+  this->MinBaseArea = d.minBaseArea;
+  this->SphereCandidates = d.sphereCandidates;
+  this->HullCandidates = d.hullCandidates;
+  this->EvaluationTets = d.evaluationTets;
+  this->EvaluationLayerInterval = d.layerInterval;
+  this->EvaluationLatticeWidth = d.latticeWidth;
+  this->NumberOfThreads = d.threads;
+}
+
+namespace {
+
+void addMode(vtkFieldData* fd, const char* mode) {
+  vtkNew<vtkStringArray> a;
+  a->SetName(gl::arrays::OrientMode);
+  a->InsertNextValue(mode);
+  fd->AddArray(a);
+}
+
+/// Output 1: the candidates as points on a sphere around the part, coloured by their scores.
+void buildCandidates(const gl::OrientResult& r, const double bounds[6], vtkPolyData* out) {
+  const gl::Vec3 centre(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+                        0.5 * (bounds[4] + bounds[5]));
+  const double radius = 0.75 * std::max({bounds[1] - bounds[0], bounds[3] - bounds[2],
+                                         bounds[5] - bounds[4]});
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  vtkNew<vtkCellArray> verts;
+  auto intArray = [](const char* name) {
+    auto a = vtkSmartPointer<vtkIntArray>::New();
+    a->SetName(name);
+    return a;
+  };
+  auto doubleArray = [](const char* name) {
+    auto a = vtkSmartPointer<vtkDoubleArray>::New();
+    a->SetName(name);
+    return a;
+  };
+  auto rank = intArray(gl::arrays::OrientRank), colliding = intArray(gl::arrays::CollidingStations),
+       plate = intArray(gl::arrays::PlateStations), forced = intArray(gl::arrays::ForcedSteps),
+       layers = intArray(gl::arrays::LayerCount), feasible = intArray(gl::arrays::Feasible),
+       evaluated = intArray(gl::arrays::Evaluated);
+  auto area = doubleArray(gl::arrays::BaseArea), overhang = doubleArray(gl::arrays::OverhangFraction),
+       seconds = doubleArray(gl::arrays::OrientSeconds), up = doubleArray(gl::arrays::OrientUp);
+  up->SetNumberOfComponents(3);
+  auto stations = intArray(gl::arrays::CollisionStations);
+  vtkNew<vtkStringArray> source;
+  source->SetName(gl::arrays::OrientSource);
+  for (const gl::OrientCandidate& c : r.candidates) {
+    const gl::Vec3 p = centre - radius * c.down;  // the up direction
+    const vtkIdType id = points->InsertNextPoint(p.data());
+    verts->InsertNextCell(1, &id);
+    rank->InsertNextValue(c.rank);
+    colliding->InsertNextValue(static_cast<int>(c.collidingStations));
+    plate->InsertNextValue(static_cast<int>(c.plateStations));
+    forced->InsertNextValue(c.forcedSteps);
+    layers->InsertNextValue(c.layers);
+    feasible->InsertNextValue(c.feasible ? 1 : 0);
+    evaluated->InsertNextValue(c.evaluated ? 1 : 0);
+    area->InsertNextValue(c.baseArea);
+    overhang->InsertNextValue(c.overhangFraction);
+    seconds->InsertNextValue(c.seconds);
+    up->InsertNextTuple3(-c.down.x(), -c.down.y(), -c.down.z());
+    stations->InsertNextValue(static_cast<int>(c.stations));
+    source->InsertNextValue(c.error.empty() ? c.source : c.source + ": " + c.error);
+  }
+  out->SetPoints(points);
+  out->SetVerts(verts);
+  vtkPointData* pd = out->GetPointData();
+  for (vtkDataArray* a : {static_cast<vtkDataArray*>(rank), static_cast<vtkDataArray*>(colliding),
+                          static_cast<vtkDataArray*>(plate), static_cast<vtkDataArray*>(forced),
+                          static_cast<vtkDataArray*>(layers), static_cast<vtkDataArray*>(feasible),
+                          static_cast<vtkDataArray*>(evaluated), static_cast<vtkDataArray*>(area),
+                          static_cast<vtkDataArray*>(overhang), static_cast<vtkDataArray*>(seconds),
+                          static_cast<vtkDataArray*>(up), static_cast<vtkDataArray*>(stations)}) {
+    pd->AddArray(a);
+  }
+  pd->AddArray(source);
+  pd->SetActiveScalars(gl::arrays::OrientRank);
+}
+
+}  // namespace
+
+int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                 vtkInformationVector* outputVector) {
+  // Collective in an MPI run: the whole surface on one process (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
+  gl::clearOutputs(outputVector);
+  if (!inputs.Computes()) {
+    return 1;  // another process has the surface
+  }
+  return gl::runRequest(this, outputVector, [&] {
+    vtkPolyData* input = inputs.Get<vtkPolyData>(0);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    vtkPolyData* candidates = vtkPolyData::GetData(outputVector, 1);
+    if (!input || input->GetNumberOfPolys() == 0) {
+      throw gl::GeoLatticeError("empty input: no surface to orient");
+    }
+    if (this->Orient == KEEP) {
+      output->ShallowCopy(input);
+      addMode(output->GetFieldData(), "keep");
+      return;
+    }
+    gl::OrientOptions options;
+    options.minBaseArea = this->MinBaseArea;
+    options.sphereCandidates = this->SphereCandidates;
+    options.hullCandidates = this->HullCandidates;
+    options.evaluationTets = this->EvaluationTets;
+    options.layerInterval = this->EvaluationLayerInterval;
+    options.latticeWidth = this->EvaluationLatticeWidth;
+    options.threads = this->NumberOfThreads;
+    options.nozzle = gl::nozzleModel(this->Nozzle);
+    options.plate = gl::buildPlate(this->Nozzle);
+    options.progress = gl::progressRange(this, 0.0, 0.95);
+    options.shouldAbort = gl::abortFlag(this);
+    const gl::TriangleSurface surface = gl::toTriangleSurface(input);
+    const gl::OrientResult r = gl::searchOrientation(surface, options);
+    gl::checkAbort(this, 0.95);
+    const gl::OrientCandidate& best = r.candidates[r.best];
+    const gl::TriangleSurface placed = gl::orientSurface(surface, best.rotation);
+    output->ShallowCopy(input);
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(placed.points.size()));
+    for (size_t i = 0; i < placed.points.size(); ++i) {
+      points->SetPoint(static_cast<vtkIdType>(i), placed.points[i].data());
+    }
+    output->SetPoints(points);  // the same triangles, rotated points (the triangle ids match)
+    vtkNew<vtkFieldData> fd;
+    fd->ShallowCopy(input->GetFieldData());
+    addMode(fd, "auto");
+    const gl::Vec3 up = -best.down;
+    std::vector<double> rotation(9);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        rotation[3 * i + j] = best.rotation(i, j);
+      }
+    }
+    gl::addFieldArray(fd, gl::arrays::OrientUp, {up.x(), up.y(), up.z()});
+    gl::addFieldArray(fd, gl::arrays::OrientRotation, rotation);
+    gl::addFieldArray(fd, gl::arrays::OrientCandidates,
+                      {static_cast<double>(r.candidates.size())});
+    gl::addFieldArray(fd, gl::arrays::OrientSeconds, {r.seconds});
+    gl::addFieldArray(fd, gl::arrays::OrientBefore,
+                      {static_cast<double>(r.candidates[0].collidingStations)});
+    gl::addFieldArray(fd, gl::arrays::OrientAfter, {static_cast<double>(best.collidingStations)});
+    gl::addFieldArray(fd, gl::arrays::OrientEvaluationTets,
+                      {static_cast<double>(r.evaluationTets)});
+    output->SetFieldData(fd);
+    double bounds[6];
+    output->GetBounds(bounds);
+    buildCandidates(r, bounds, candidates);
+    candidates->GetFieldData()->PassData(fd);
+    this->UpdateProgress(1.0);
+  });
+}
+
+void vtkGLAutoOrient::PrintSelf(ostream& os, vtkIndent indent) {
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Orient: " << this->Orient << (this->Orient == AUTO ? " (auto)" : " (keep)")
+     << "\n";
+  os << indent << "MinBaseArea: " << this->MinBaseArea << " mm2\n";
+  os << indent << "SphereCandidates: " << this->SphereCandidates << "\n";
+  os << indent << "HullCandidates: " << this->HullCandidates << "\n";
+  os << indent << "EvaluationTets: " << this->EvaluationTets << "\n";
+  os << indent << "EvaluationLayerInterval: " << this->EvaluationLayerInterval << " mm\n";
+  os << indent << "EvaluationLatticeWidth: " << this->EvaluationLatticeWidth << " mm\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+}
