@@ -3,6 +3,7 @@
 #include "GLPrintPipeline.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <regex>
@@ -553,6 +554,41 @@ std::vector<CliOption> makeTable() {
        [](P& p, const RunOptions& r) {
          return std::string(!r.gcode ? "none" : p.GCodeWriter->GetKinematics() ? "bc" : "ac");
        }});
+  t.push_back({"--gcode-flavor", "NAME", prog,
+               "linuxcnc | reprap: LinuxCNC RS274NGC (G93, extruder axis) or\n"
+               "RepRapFirmware 3 (M83, E, mm/min; needs --gcode-tcp cam)",
+               "GLGCodeWriter.Flavor",
+               [](P& p, RunOptions&, const std::string& v) {
+                 p.GCodeWriter->SetFlavor(choice("--gcode-flavor", v, {"linuxcnc", "reprap"}));
+               },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.GCodeWriter->GetFlavor() ? "reprap" : "linuxcnc");
+               }});
+  t.push_back({"--gcode-tcp", "WHO", prog,
+               "controller | cam: the controller's table kinematics turns part\n"
+               "coordinates into joints (LinuxCNC trt kins), or machine\n"
+               "coordinates are pre-computed here",
+               "GLGCodeWriter.ToolCentrePoint",
+               [](P& p, RunOptions&, const std::string& v) {
+                 p.GCodeWriter->SetToolCentrePoint(choice("--gcode-tcp", v, {"controller", "cam"}));
+               },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.GCodeWriter->GetToolCentrePoint() ? "cam" : "controller");
+               }});
+  t.push_back({"--extrusion-axis", "LETTER", prog,
+               "linuxcnc: the extruder's axis letter (U, V, W or the free rotary\n"
+               "letter of the table)",
+               "GLGCodeWriter.ExtrusionAxis",
+               [](P& p, RunOptions&, const std::string& v) {
+                 if (v.size() != 1 || !std::isalpha(static_cast<unsigned char>(v[0]))) {
+                   throw UsageError("--extrusion-axis expects one axis letter, got '" + v + "'");
+                 }
+                 const std::string upper(1, static_cast<char>(std::toupper(v[0])));
+                 p.GCodeWriter->SetExtrusionAxis(upper.c_str());
+               },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.GCodeWriter->GetExtrusionAxis());
+               }});
   t.push_back({"--gcode-pivot", "X,Y,Z", prog,
                "machine position of the rotary axes' intersection (mm)", "GLGCodeWriter.Pivot",
                [](P& p, RunOptions&, const std::string& v) {

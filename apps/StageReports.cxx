@@ -287,6 +287,11 @@ void reportScript(GLPrintPipeline& p, Json& s) {
 
 void reportGCode(GLPrintPipeline& p, Json& g) {
   vtkGLGCodeWriter* w = p.GCodeWriter;
+  g["flavor"] = w->GetFlavor() ? "reprap" : "linuxcnc";
+  g["tool_centre_point"] = w->GetToolCentrePoint() ? "cam" : "controller";
+  if (!w->GetFlavor()) {
+    g["extrusion_axis"] = w->GetExtrusionAxis();
+  }
   g["pivot_mm"] = vec(w->GetPivot(), 3);
   g["part_offset_mm"] = vec(w->GetPartOffset(), 3);
   g["tilt_limits_deg"] = vec(w->GetTiltLimits(), 2);

@@ -51,8 +51,8 @@ void addMode(vtkFieldData* fd, const char* mode) {
 void buildCandidates(const gl::OrientResult& r, const double bounds[6], vtkPolyData* out) {
   const gl::Vec3 centre(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
                         0.5 * (bounds[4] + bounds[5]));
-  const double radius = 0.75 * std::max({bounds[1] - bounds[0], bounds[3] - bounds[2],
-                                         bounds[5] - bounds[4]});
+  const double radius =
+      0.75 * std::max({bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]});
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkCellArray> verts;
@@ -70,7 +70,8 @@ void buildCandidates(const gl::OrientResult& r, const double bounds[6], vtkPolyD
        plate = intArray(gl::arrays::PlateStations), forced = intArray(gl::arrays::ForcedSteps),
        layers = intArray(gl::arrays::LayerCount), feasible = intArray(gl::arrays::Feasible),
        evaluated = intArray(gl::arrays::Evaluated);
-  auto area = doubleArray(gl::arrays::BaseArea), overhang = doubleArray(gl::arrays::OverhangFraction),
+  auto area = doubleArray(gl::arrays::BaseArea),
+       overhang = doubleArray(gl::arrays::OverhangFraction),
        seconds = doubleArray(gl::arrays::OrientSeconds), up = doubleArray(gl::arrays::OrientUp);
   up->SetNumberOfComponents(3);
   auto stations = intArray(gl::arrays::CollisionStations);
@@ -168,8 +169,7 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     }
     gl::addFieldArray(fd, gl::arrays::OrientUp, {up.x(), up.y(), up.z()});
     gl::addFieldArray(fd, gl::arrays::OrientRotation, rotation);
-    gl::addFieldArray(fd, gl::arrays::OrientCandidates,
-                      {static_cast<double>(r.candidates.size())});
+    gl::addFieldArray(fd, gl::arrays::OrientCandidates, {static_cast<double>(r.candidates.size())});
     gl::addFieldArray(fd, gl::arrays::OrientSeconds, {r.seconds});
     gl::addFieldArray(fd, gl::arrays::OrientBefore,
                       {static_cast<double>(r.candidates[0].collidingStations)});

@@ -15,6 +15,7 @@
 #include <vtkPolyData.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 
+#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <vector>
@@ -56,9 +57,15 @@ vtkGLGCodeWriter::vtkGLGCodeWriter() {
   }
   this->TiltLimits[0] = defaults.tiltMinDeg;
   this->TiltLimits[1] = defaults.tiltMaxDeg;
+  this->Flavor = static_cast<int>(defaults.flavor);
+  this->ToolCentrePoint = static_cast<int>(defaults.toolCentrePoint);
+  const char axis[2] = {defaults.extrusionAxis, '\0'};
+  this->SetExtrusionAxis(axis);
 }
 
-vtkGLGCodeWriter::~vtkGLGCodeWriter() {}
+vtkGLGCodeWriter::~vtkGLGCodeWriter() {
+  this->SetExtrusionAxis(nullptr);
+}
 
 void vtkGLGCodeWriter::WriteData() {
   this->NumberOfMoves = 0;
@@ -115,6 +122,25 @@ void vtkGLGCodeWriter::WriteData() {
         options.tiltMinDeg = lo;
         options.tiltMaxDeg = hi;
         options.poleToleranceDeg = kPoleToleranceDeg;
+        if (this->Flavor != LINUXCNC && this->Flavor != REPRAP) {
+          throw gl::GeoLatticeError(
+              "G-code writer: Flavor must be 0 (LinuxCNC) or 1 (RepRap), got " +
+              std::to_string(this->Flavor));
+        }
+        if (this->ToolCentrePoint != CONTROLLER && this->ToolCentrePoint != CAM) {
+          throw gl::GeoLatticeError(
+              "G-code writer: ToolCentrePoint must be 0 (controller) or 1 (CAM), got " +
+              std::to_string(this->ToolCentrePoint));
+        }
+        const std::string axis = this->ExtrusionAxis ? this->ExtrusionAxis : "";
+        if (axis.size() != 1 || !std::isupper(static_cast<unsigned char>(axis[0]))) {
+          throw gl::GeoLatticeError("G-code writer: ExtrusionAxis must be one axis letter (got '" +
+                                    axis + "')");
+        }
+        options.flavor = static_cast<gl::GCodeFlavor>(this->Flavor);
+        options.toolCentrePoint = static_cast<gl::ToolCentrePoint>(this->ToolCentrePoint);
+        options.extrusionAxis = axis[0];
+        options.validate();
         gl::AtomicFileSet files;
         const gl::GCodeStats stats =
             gl::writeGCode(path.points, path.normals, path.extrusion, path.feedRate, path.kind,
@@ -139,6 +165,12 @@ void vtkGLGCodeWriter::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Kinematics: " << this->Kinematics
      << (this->Kinematics == BC ? " (B-C)" : " (A-C)") << "\n";
+  os << indent << "Flavor: " << this->Flavor
+     << (this->Flavor == REPRAP ? " (reprap)" : " (linuxcnc)") << "\n";
+  os << indent << "ToolCentrePoint: " << this->ToolCentrePoint
+     << (this->ToolCentrePoint == CAM ? " (cam)" : " (controller)") << "\n";
+  os << indent << "ExtrusionAxis: " << (this->ExtrusionAxis ? this->ExtrusionAxis : "(none)")
+     << "\n";
   os << indent << "Pivot: " << this->Pivot[0] << " " << this->Pivot[1] << " " << this->Pivot[2]
      << " mm\n";
   os << indent << "PartOffset: " << this->PartOffset[0] << " " << this->PartOffset[1] << " "

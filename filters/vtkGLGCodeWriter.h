@@ -6,11 +6,15 @@
  * core/program/GCodeWriter.h: for each toolpath point p with nozzle axis n the table angles
  * turn n onto +Z (rotary C about the table normal, then the tilt A about X or B about Y; of the
  * two solutions (c, tilt) and (c + 180°, -tilt) the one nearest to the previous C, C unwrapped,
- * C kept near the pole); the machine position is X Y Z = Pivot + R_tilt R_C (p + PartOffset).
- * Header G21 G90 M83 G93: millimetres, absolute axes, relative extrusion E, inverse-time feed
- * (F = 60 / t per minute, t the toolpath segment time L / FeedRate); print and perimeter moves
- * are G1 with E, air moves G0 without E, with retraction and prime as separate G1 E moves;
- * footer G94 M2. Numbers have at most 6 decimals.
+ * C kept near the pole). Flavor LinuxCNC (default): RS274NGC for LinuxCNC 2.9 (G21 G90 G93,
+ * inverse-time F = 1 / minutes on every G1, the extruder's absolute filament position on
+ * ExtrusionAxis (default U), G0 air moves, retract / prime as G1 on that axis alone, G94 M2;
+ * machines/linuxcnc/ has a matching machine configuration). Flavor RepRap: RepRapFirmware 3
+ * (G21 G90 M83, relative E, feed in mm/min so the nozzle moves at the print speed relative to
+ * the part; not machine-verified). ToolCentrePoint Controller (default; LinuxCNC only): X Y Z
+ * are part coordinates p + PartOffset and the controller's trt kinematics computes the joints;
+ * Cam: X Y Z = Pivot + R_tilt R_C (p + PartOffset), the machine positions. Numbers are fixed
+ * point with at most 5 decimals (no exponents).
  *
  * Input: vtkPolyData, the output of vtkGLToolpathPlanner (points in point order = printing
  *   order, mm, point arrays `Normals`, `Extrusion`, `FeedRate`, `MoveKind`, `LayerId`; see
@@ -25,7 +29,9 @@
  *   GetMaxAxisErrorDeg (C may deviate near the pole while the axis stays within 1°, so the
  *   table turns at most 5° per point where possible), GetForcedRotarySteps (points where C had
  *   to turn faster than that).
- * Parameters: Kinematics (0 = AC (default): tilt A about X; 1 = BC: tilt B about Y), Pivot (mm,
+ * Parameters: Kinematics (0 = AC (default): tilt A about X; 1 = BC: tilt B about Y), Flavor
+ *   (default 0 = LinuxCNC), ToolCentrePoint (default 0 = Controller), ExtrusionAxis (default
+ *   "U"), Pivot (mm,
  *   machine position of the intersection of the rotary axes, default 0 0 0), PartOffset (mm,
  *   the part frame origin relative to the rotary centre on the table, default 0 0 0),
  *   TiltLimits (degrees, min < max, default -120 120).
@@ -57,6 +63,30 @@ public:
   vtkGetMacro(Kinematics, int);
   void SetKinematicsToAC() { this->SetKinematics(AC); }
   void SetKinematicsToBC() { this->SetKinematics(BC); }
+  ///@}
+
+  /// Values of Flavor and ToolCentrePoint (= geolattice::GCodeFlavor, ToolCentrePoint).
+  enum FlavorType { LINUXCNC = 0, REPRAP = 1 };
+  enum ToolCentrePointType { CONTROLLER = 0, CAM = 1 };
+
+  ///@{
+  /// G-code dialect: LINUXCNC (0, default) or REPRAP (1); checked when writing.
+  vtkSetMacro(Flavor, int);
+  vtkGetMacro(Flavor, int);
+  ///@}
+
+  ///@{
+  /// Who applies the table kinematics: CONTROLLER (0, default; part coordinates, LinuxCNC
+  /// trt kinematics) or CAM (1; pre-computed machine coordinates, required by REPRAP).
+  vtkSetMacro(ToolCentrePoint, int);
+  vtkGetMacro(ToolCentrePoint, int);
+  ///@}
+
+  ///@{
+  /// LinuxCNC: the axis letter of the extruder (default "U"; U, V, W or the table's free rotary
+  /// letter).
+  vtkSetStringMacro(ExtrusionAxis);
+  vtkGetStringMacro(ExtrusionAxis);
   ///@}
 
   ///@{
@@ -95,6 +125,9 @@ protected:
   void WriteData() override;
 
   int Kinematics;
+  int Flavor;
+  int ToolCentrePoint;
+  char* ExtrusionAxis = nullptr;
   double Pivot[3];
   double PartOffset[3];
   double TiltLimits[2];

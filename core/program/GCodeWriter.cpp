@@ -1,7 +1,7 @@
 #include "program/GCodeWriter.h"
 
 #include "common/Error.h"
-#include "program/URScriptWriter.h"
+#include <cstdio>
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -50,6 +50,103 @@ void tableAngles(TableKinematics k, const Eigen::Vector3d& nIn, double previousC
   }
 }
 
+GCodeFlavor parseGCodeFlavor(const std::string& name) {
+  if (name == "linuxcnc") {
+    return GCodeFlavor::LinuxCNC;
+  }
+  if (name == "reprap") {
+    return GCodeFlavor::RepRap;
+  }
+  throw GeoLatticeError("G-code flavor must be linuxcnc or reprap (got '" + name + "')");
+}
+
+const char* gcodeFlavorName(GCodeFlavor f) {
+  return f == GCodeFlavor::RepRap ? "reprap" : "linuxcnc";
+}
+
+ToolCentrePoint parseToolCentrePoint(const std::string& name) {
+  if (name == "controller") {
+    return ToolCentrePoint::Controller;
+  }
+  if (name == "cam") {
+    return ToolCentrePoint::Cam;
+  }
+  throw GeoLatticeError("the tool centre point must be controller or cam (got '" + name + "')");
+}
+
+const char* toolCentrePointName(ToolCentrePoint t) {
+  return t == ToolCentrePoint::Cam ? "cam" : "controller";
+}
+
+void GCodeOptions::validate() const {
+  const char tilt = kinematics == TableKinematics::AC ? 'A' : 'B';
+  const char freeRotary = kinematics == TableKinematics::AC ? 'B' : 'A';
+  if (flavor == GCodeFlavor::LinuxCNC) {
+    const char e = extrusionAxis;
+    if (e == 'X' || e == 'Y' || e == 'Z' || e == tilt || e == 'C') {
+      throw GeoLatticeError(std::string("G-code: the extrusion axis ") + e +
+                            " is a motion axis of the " +
+                            (kinematics == TableKinematics::AC ? "A-C" : "B-C") +
+                            " table; use U, V, W or " + freeRotary);
+    }
+    if (e != 'U' && e != 'V' && e != 'W' && e != freeRotary) {
+      throw GeoLatticeError(std::string("G-code: the extrusion axis must be U, V, W or ") +
+                            freeRotary + " (got '" + std::string(1, e) + "')");
+    }
+  }
+  if (flavor == GCodeFlavor::RepRap && toolCentrePoint == ToolCentrePoint::Controller) {
+    throw GeoLatticeError(
+        "G-code: RepRapFirmware has no tilting-table kinematics: the reprap flavor needs the tool "
+        "centre point from the CAM (cam)");
+  }
+  if (!(tiltMinDeg < tiltMaxDeg)) {
+    throw GeoLatticeError("G-code: the tilt limits must be MIN < MAX (got " +
+                          std::to_string(tiltMinDeg) + ", " + std::to_string(tiltMaxDeg) + ")");
+  }
+  if (!(retractionSeconds > 0) || !pivot.allFinite() || !partOffset.allFinite()) {
+    throw GeoLatticeError(
+        "G-code: the pivot and part offset must be finite and the retraction "
+        "time > 0");
+  }
+}
+
+namespace {
+
+/// "(text)" for LinuxCNC (no parentheses inside: "Nested comment found"), "; text" for RRF.
+std::string comment(GCodeFlavor f, std::string text) {
+  if (f == GCodeFlavor::RepRap) {
+    return "; " + text;
+  }
+  for (char& c : text) {
+    if (c == '(' || c == ')') {
+      c = c == '(' ? '[' : ']';
+    }
+  }
+  return "(" + text + ")";
+}
+
+/// Fixed-point number, at most `decimals` decimals, no exponent (RS274NGC reads "1e3" as an E
+/// word), no "-0".
+std::string num(double v, int decimals = 5) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
+  std::string s = buf;
+  if (s.find('.') != std::string::npos) {
+    while (s.back() == '0') {
+      s.pop_back();
+    }
+    if (s.back() == '.') {
+      s.pop_back();
+    }
+  }
+  if (s == "-0") {
+    s = "0";
+  }
+  return s;
+}
+
+}  // namespace
+
 GCodeStats writeGCode(const std::vector<Eigen::Vector3d>& points,
                       const std::vector<Eigen::Vector3d>& normals,
                       const std::vector<double>& extrusion, const std::vector<double>& feedRate,
@@ -61,10 +158,35 @@ GCodeStats writeGCode(const std::vector<Eigen::Vector3d>& points,
   if (normals.size() != N || extrusion.size() != N || feedRate.size() != N || kind.size() != N) {
     throw GeoLatticeError("G-code: toolpath arrays differ in length");
   }
+  o.validate();
   const char tiltAxis = o.kinematics == TableKinematics::AC ? 'A' : 'B';
-  out << "; GeoLattice 5-axis print, " << (o.kinematics == TableKinematics::AC ? "A-C" : "B-C")
-      << " tilting-rotary table, fixed vertical nozzle\n";
-  out << "G21 ; mm\nG90 ; absolute\nM83 ; relative extrusion\nG93 ; inverse-time feed\n";
+  const bool linuxcnc = o.flavor == GCodeFlavor::LinuxCNC;
+  const bool controller = o.toolCentrePoint == ToolCentrePoint::Controller;
+  const std::string table = o.kinematics == TableKinematics::AC ? "A-C" : "B-C";
+  const GCodeFlavor f = o.flavor;
+  out << comment(f, "GeoLattice 5-axis print, " + table +
+                        " tilting-rotary table, fixed vertical nozzle")
+      << '\n';
+  if (linuxcnc) {
+    out << comment(f, std::string("LinuxCNC RS274NGC, extruder on axis ") + o.extrusionAxis +
+                          " (absolute filament mm), inverse-time feed G93")
+        << '\n';
+    out << comment(f,
+                   controller
+                       ? "tool centre point: the controller (" +
+                             std::string(o.kinematics == TableKinematics::AC ? "xyzac" : "xyzbc") +
+                             "-trt-kins); X Y Z are part coordinates, see machines/linuxcnc/"
+                       : "tool centre point: pre-computed (trivial kinematics); X Y Z are machine "
+                         "coordinates")
+        << '\n';
+    out << "G21 G90 G93\n";
+  } else {
+    out << comment(f, std::string("RepRapFirmware 3: axes X Y Z ") + tiltAxis +
+                          " C (configure the rotary axes with M584 ... R1), relative extrusion E, "
+                          "feed mm/min; tool centre point pre-computed; not machine-verified")
+        << '\n';
+    out << "G21\nG90\nM83\nG92 E0\n";
+  }
   GCodeStats stats;
   // Pass 1: angles per point; points at the pole (C undefined) are marked.
   std::vector<double> tilts(N), cs(N);
@@ -161,15 +283,19 @@ GCodeStats writeGCode(const std::vector<Eigen::Vector3d>& points,
     cs[k] = c;
     tilts[k] = tilt;
   }
-  // Pass 2: machine positions and moves.
+  // Pass 2: positions and moves.
   double previousTilt = 0, previousE = extrusion[0];
   previousC = cs[0];
+  Eigen::Vector3d previousX = Eigen::Vector3d::Zero();
+  const char u = o.extrusionAxis;
   for (size_t i = 0; i < N; ++i) {
     const double tilt = tilts[i], c = cs[i];
     const Eigen::Matrix3d r =
         tiltMatrix(o.kinematics, tilt) *
         Eigen::AngleAxisd(c / kDeg, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-    const Eigen::Vector3d x = o.pivot + r * (points[i] + o.partOffset);
+    const Eigen::Vector3d x = controller
+                                  ? Eigen::Vector3d(points[i] + o.partOffset)
+                                  : Eigen::Vector3d(o.pivot + r * (points[i] + o.partOffset));
     if (i > 0) {
       stats.maxRotaryStepDeg = std::max(
           {stats.maxRotaryStepDeg, std::abs(c - previousC), std::abs(tilt - previousTilt)});
@@ -177,26 +303,47 @@ GCodeStats writeGCode(const std::vector<Eigen::Vector3d>& points,
     const double len = i > 0 ? (points[i] - points[i - 1]).norm() : 0.0;
     const double t = feedRate[i] > 0 && len > 0 ? len / feedRate[i] : 0.001;  // s
     const bool air = kind[i] == 2;
-    out << (air || i == 0 ? "G0" : "G1") << " X" << urNumber(x.x()) << " Y" << urNumber(x.y())
-        << " Z" << urNumber(x.z()) << ' ' << tiltAxis << urNumber(tilt) << " C" << urNumber(c);
+    const bool rapid = air || i == 0;
+    out << (rapid ? "G0" : "G1") << " X" << num(x.x()) << " Y" << num(x.y()) << " Z" << num(x.z())
+        << ' ' << tiltAxis << num(tilt) << " C" << num(c);
     const double de = extrusion[i] - previousE;
-    if (!air && i > 0 && de != 0) {
-      out << " E" << urNumber(de);
-    }
-    if (!air && i > 0) {
-      out << " F" << urNumber(60.0 / t);  // G93: moves per minute
+    if (!rapid) {
+      if (linuxcnc) {
+        out << ' ' << u << num(extrusion[i]) << " F" << num(60.0 / t);  // G93: 1 / minutes
+      } else {
+        if (de != 0) {
+          out << " E" << num(de);
+        }
+        // The nozzle moves `len` along the part in t seconds: the machine axes cover their own
+        // displacement in the same time (a pure table turn: its degrees).
+        const double machine = (x - previousX).norm();
+        const double rotary = std::max(std::abs(c - previousC), std::abs(tilt - previousTilt));
+        out << " F" << num(60.0 * (machine > 1e-6 ? machine : rotary) / t, 3);
+      }
+    } else if (!linuxcnc && air && i > 0) {
+      out << " F" << num(60.0 * (feedRate[i] > 0 ? feedRate[i] : 50.0), 3);  // travel speed
     }
     out << '\n';
-    if (air && de != 0) {
-      out << "G1 E" << urNumber(de) << " F" << urNumber(60.0 / 0.05) << " ; "
-          << (de < 0 ? "retract" : "prime") << '\n';
+    if (air && de != 0) {  // retract or prime at the air point
+      if (linuxcnc) {
+        out << "G1 " << u << num(extrusion[i]) << " F" << num(60.0 / o.retractionSeconds) << ' '
+            << comment(f, de < 0 ? "retract" : "prime") << '\n';
+      } else {
+        out << "G1 E" << num(de) << " F" << num(60.0 * std::abs(de) / o.retractionSeconds, 3) << ' '
+            << comment(f, de < 0 ? "retract" : "prime") << '\n';
+      }
     }
     previousE = extrusion[i];
     previousC = c;
     previousTilt = tilt;
+    previousX = x;
     ++stats.moves;
   }
-  out << "G94\nM2\n";
+  if (linuxcnc) {
+    out << "G94\nM2\n";
+  } else {
+    out << "M400\n" << comment(f, "end") << '\n';
+  }
   return stats;
 }
 

@@ -12,10 +12,28 @@
 /// axisToleranceDeg (reported as maxAxisErrorDeg), and within those tubes C is chosen to turn by
 /// at most maxRotaryStepDeg per point wherever possible (forward pass of reachable intervals,
 /// backward pass of least motion; points where C must turn faster are counted), so the table
-/// does not spin while it is almost flat. Machine position: X Y Z = pivot + R_tilt·R_C·(p + partOffset), where partOffset
-/// is the part frame origin relative to the rotary centre on the table and pivot the machine
-/// position of the intersection of the two rotary axes. Feed in inverse time (G93): F = 1 / t
-/// per move with t the toolpath segment time, so rotary moves keep the planned timing.
+/// does not spin while it is almost flat.
+///
+/// Positions (the tool centre point): with ToolCentrePoint::Controller the program holds part
+/// coordinates X Y Z = p + partOffset (partOffset: the part frame origin relative to the rotary
+/// centre on the table) and the controller's table kinematics turns them into joint positions
+/// (LinuxCNC's xyzac-trt-kins / xyzbc-trt-kins, whose rotation point is set in the machine's
+/// INI; machines/linuxcnc/). With ToolCentrePoint::Cam the program holds the machine positions
+/// X Y Z = pivot + R_tilt·R_C·(p + partOffset), pivot the machine position of the intersection of
+/// the two rotary axes (a machine with trivial kinematics). The rotations are the machine's:
+/// machine = R_tilt · R_C · part, so the nozzle axis in part coordinates is
+/// (sin C sin A, cos C sin A, cos A) for A–C and (−cos C sin B, sin C sin B, cos B) for B–C.
+///
+/// Flavors (docs/user-guide.md, "G-code for 5-axis machines"):
+///   - LinuxCNC: RS274NGC as LinuxCNC 2.9's interpreter reads it: G21 G90 G93, inverse-time feed
+///     with F (1 / minutes) on every G1, extrusion as the absolute position of an extra axis
+///     (default U), rapid G0 for air moves, comments in ( ), program end G94 M2. No E, no M83.
+///   - RepRap: RepRapFirmware 3: G21 G90 M83 (relative extrusion, E), the rotary axes as further
+///     axis letters (A/B and C, configured with M584 ... R1), feed in mm/min chosen so the
+///     nozzle moves at the print speed relative to the part (the machine XYZ displacement of a
+///     move divided by its planned time; deg/min for a move that only turns the table). Only
+///     ToolCentrePoint::Cam (RepRapFirmware has no tilting-table kinematics). Not verified on a
+///     machine: checked against RepRapFirmware's documented syntax only.
 #include <Eigen/Core>
 
 #include <ostream>
@@ -25,6 +43,15 @@
 namespace geolattice {
 
 enum class TableKinematics { AC = 0, BC = 1 };
+enum class GCodeFlavor { LinuxCNC = 0, RepRap = 1 };
+enum class ToolCentrePoint { Controller = 0, Cam = 1 };
+
+/// "linuxcnc", "reprap" <-> flavor; "controller", "cam" <-> tool centre point. The parsers throw
+/// GeoLatticeError naming the valid values.
+GCodeFlavor parseGCodeFlavor(const std::string& name);
+const char* gcodeFlavorName(GCodeFlavor flavor);
+ToolCentrePoint parseToolCentrePoint(const std::string& name);
+const char* toolCentrePointName(ToolCentrePoint tcp);
 
 struct GCodeOptions {
   TableKinematics kinematics = TableKinematics::AC;
@@ -38,6 +65,16 @@ struct GCodeOptions {
   double axisToleranceDeg = 1.0;
   /// Largest change of C between consecutive points wherever the axis tolerance allows it.
   double maxRotaryStepDeg = 5.0;
+  GCodeFlavor flavor = GCodeFlavor::LinuxCNC;
+  ToolCentrePoint toolCentrePoint = ToolCentrePoint::Controller;  ///< Cam for RepRap
+  /// LinuxCNC: the axis that carries the extruder's absolute filament position (mm). One of
+  /// U V W, or the free rotary letter (B on an A–C table, A on a B–C table); not X Y Z, the tilt
+  /// axis or C.
+  char extrusionAxis = 'U';
+  double retractionSeconds = 0.05;  ///< time of a retract or prime move (s, > 0)
+  /// Throws GeoLatticeError naming a bad option (an extrusion axis the table uses, Controller
+  /// with RepRap, limits min > max, ...).
+  void validate() const;
 };
 
 struct GCodeStats {

@@ -31,7 +31,7 @@ namespace {
 /// The letter -> value words of a G-code line ("G1 X1 Y2 ..." -> {G:1, X:1, Y:2, ...}).
 std::map<char, double> words(const std::string& line) {
   std::map<char, double> out;
-  std::istringstream in(line.substr(0, line.find(';')));
+  std::istringstream in(line.substr(0, line.find_first_of(";(")));
   std::string w;
   while (in >> w) {
     out[w[0]] = std::stod(w.substr(1));
@@ -39,10 +39,12 @@ std::map<char, double> words(const std::string& line) {
   return out;
 }
 
-/// Checks every move line against the toolpath: R n = +Z and X Y Z = pivot + R (p + offset),
-/// R = R_tilt(A or B) R_z(C). Returns the number of move lines.
+/// Checks every move line against the toolpath: R n = +Z and X Y Z = pivot + R (p + offset)
+/// (machine coordinates, `cam`) or p + offset (part coordinates, the controller's kinematics),
+/// R = R_tilt(A or B) R_z(C); print moves carry the extrusion word `e` (E or the extruder axis).
+/// Returns the number of move lines.
 size_t checkMoves(const std::string& text, vtkPolyData* path, bool bc, const Eigen::Vector3d& pivot,
-                  const Eigen::Vector3d& offset) {
+                  const Eigen::Vector3d& offset, bool cam = true, char e = 'E') {
   std::istringstream in(text);
   std::string line;
   vtkIdType i = 0;
@@ -68,14 +70,16 @@ size_t checkMoves(const std::string& text, vtkPolyData* path, bool bc, const Eig
     path->GetPoint(i, p);
     const Eigen::Vector3d axis = r * Eigen::Vector3d(n[0], n[1], n[2]).normalized();
     EXPECT_NEAR(axis.z(), 1.0, 1e-5) << line;
-    const Eigen::Vector3d x = pivot + r * (Eigen::Vector3d(p[0], p[1], p[2]) + offset);
+    const Eigen::Vector3d x =
+        cam ? Eigen::Vector3d(pivot + r * (Eigen::Vector3d(p[0], p[1], p[2]) + offset))
+            : Eigen::Vector3d(Eigen::Vector3d(p[0], p[1], p[2]) + offset);
     EXPECT_NEAR(w['X'], x.x(), 1e-4) << line;
     EXPECT_NEAR(w['Y'], x.y(), 1e-4) << line;
     EXPECT_NEAR(w['Z'], x.z(), 1e-4) << line;
     const bool air = path->GetPointData()->GetArray(geolattice::arrays::MoveKind)->GetTuple1(i) ==
                      geolattice::movekind::Air;
     EXPECT_EQ(line.rfind(air || i == 0 ? "G0 " : "G1 ", 0), 0u) << line;
-    EXPECT_EQ(w.count('E'), air || i == 0 ? 0u : 1u) << line;
+    EXPECT_EQ(w.count(e), air || i == 0 ? 0u : 1u) << line;
     ++i;
   }
   EXPECT_EQ(i, path->GetNumberOfPoints());
@@ -113,6 +117,7 @@ TEST(vtkGLGCodeWriter, MovesTurnTheAxisUpAC_BC) {
     w->SetKinematics(bc ? vtkGLGCodeWriter::BC : vtkGLGCodeWriter::AC);
     w->SetPivot(100, 50, 20);
     w->SetPartOffset(1, 2, 3);
+    w->SetToolCentrePoint(vtkGLGCodeWriter::CAM);  // machine coordinates
     ASSERT_EQ(w->Write(), 1) << errors->Errors();
     EXPECT_FALSE(errors->HasError()) << errors->Errors();
     EXPECT_EQ(w->GetNumberOfMoves(), path->GetNumberOfPoints());
@@ -123,11 +128,41 @@ TEST(vtkGLGCodeWriter, MovesTurnTheAxisUpAC_BC) {
     const std::string text = glReadFile(file);
     EXPECT_NE(text.find(bc ? "B-C tilting-rotary table" : "A-C tilting-rotary table"),
               std::string::npos);
-    for (const char* header : {"\nG21", "\nG90", "\nM83", "\nG93"}) {
-      EXPECT_NE(text.find(header), std::string::npos) << header;
-    }
+    EXPECT_NE(text.find("\nG21 G90 G93\n"), std::string::npos);
+    EXPECT_EQ(text.find("M83"), std::string::npos);  // not a LinuxCNC code
     EXPECT_EQ(text.substr(text.size() - 7), "G94\nM2\n");
-    checkMoves(text, path, bc, Eigen::Vector3d(100, 50, 20), Eigen::Vector3d(1, 2, 3));
+    checkMoves(text, path, bc, Eigen::Vector3d(100, 50, 20), Eigen::Vector3d(1, 2, 3), true, 'U');
+    // The controller's kinematics (the default): part coordinates + offset.
+    w->SetToolCentrePoint(vtkGLGCodeWriter::CONTROLLER);
+    ASSERT_EQ(w->Write(), 1) << errors->Errors();
+    checkMoves(glReadFile(file), path, bc, Eigen::Vector3d(100, 50, 20), Eigen::Vector3d(1, 2, 3),
+               false, 'U');
+    // RepRapFirmware: machine coordinates, relative E, M83, no G93.
+    w->SetFlavor(vtkGLGCodeWriter::REPRAP);
+    w->SetToolCentrePoint(vtkGLGCodeWriter::CAM);
+    ASSERT_EQ(w->Write(), 1) << errors->Errors();
+    const std::string rrf = glReadFile(file);
+    EXPECT_NE(rrf.find("\nM83\n"), std::string::npos);
+    EXPECT_EQ(rrf.find("G93"), std::string::npos);
+    checkMoves(rrf, path, bc, Eigen::Vector3d(100, 50, 20), Eigen::Vector3d(1, 2, 3), true, 'E');
+    // Flavor checks: RepRap needs the CAM tool centre point; the extruder is no motion axis.
+    w->SetToolCentrePoint(vtkGLGCodeWriter::CONTROLLER);
+    EXPECT_EQ(w->Write(), 0);
+    EXPECT_NE(errors->Errors().find("reprap flavor needs"), std::string::npos) << errors->Errors();
+    errors->Clear();
+    w->SetFlavor(vtkGLGCodeWriter::LINUXCNC);
+    w->SetExtrusionAxis("C");
+    EXPECT_EQ(w->Write(), 0);
+    EXPECT_NE(errors->Errors().find("extrusion axis C is a motion axis"), std::string::npos)
+        << errors->Errors();
+    errors->Clear();
+    w->SetExtrusionAxis("U");
+    w->SetFlavor(7);
+    EXPECT_EQ(w->Write(), 0);
+    EXPECT_NE(errors->Errors().find("Flavor must be 0 (LinuxCNC) or 1 (RepRap)"),
+              std::string::npos);
+    errors->Clear();
+    w->SetFlavor(vtkGLGCodeWriter::LINUXCNC);
   }
   EXPECT_EQ(glListDirectory(dir), (std::vector<std::string>{"part.gcode", "part.nc"}));
   fs::remove_all(dir);

@@ -31,6 +31,8 @@ CLI_CHOICES = {
     "GLURScriptWriter.AllowUnreachable": {"on": 1, "off": 0},
     "GLNozzle.BuildPlate": {"obstacle": 1, "none": 0},
     "GLAutoOrient.Orient": {"keep": 0, "auto": 1},
+    "GLGCodeWriter.Flavor": {"linuxcnc": 0, "reprap": 1},
+    "GLGCodeWriter.ToolCentrePoint": {"controller": 0, "cam": 1},
 }
 
 
