@@ -533,6 +533,15 @@ std::vector<CliOption> makeTable() {
                      "GLURScriptWriter.MaxJointStep", script, &vtkGLURScriptWriter::SetMaxJointStep,
                      &vtkGLURScriptWriter::GetMaxJointStep));
   t.push_back(
+      {"--no-layout-search", "", prog,
+       "do not search another mounting of the part on the flange when\n"
+       "the robot cannot follow the path as laid out",
+       "GLURScriptWriter.SearchCellLayout",
+       [](P& p, RunOptions&, const std::string&) { p.ScriptWriter->SetSearchCellLayout(false); },
+       [](P& p, const RunOptions&) {
+         return std::string(p.ScriptWriter->GetSearchCellLayout() ? "search" : "off");
+       }});
+  t.push_back(
       {"--allow-unreachable", "", prog,
        "write the program even if points are unreachable (the robot\n"
        "holds still there; for simulation). Default: no program",

@@ -272,6 +272,12 @@ void reportScript(GLPrintPipeline& p, Json& s) {
   }
   s["files"] = files;
   s["ik_branch"] = w->GetIKBranch();
+  s["layout"] = {{"searched", w->GetSearchCellLayout() != 0},
+                 {"changed", w->GetLayoutChanged()},
+                 {"rotation_about_flange_z_deg", w->GetLayoutRotationDeg()},
+                 {"offset_added_m", w->GetLayoutOffsetAdded()},
+                 {"layouts_tried", w->GetLayoutsTried()},
+                 {"part_on_flange_used", vec(w->GetUsedPartOnFlange(), 6)}};
   s["max_joint_step_deg"] = w->GetMaxJointStepDeg();
   s["large_joint_steps"] = static_cast<long long>(w->GetLargeJointSteps());
   s["max_tip_error_m"] = w->GetMaxTipError();

@@ -8,6 +8,8 @@
 
 #include "common/Error.h"
 #include "program/URScriptWriter.h"
+#include "robot/CellLayout.h"
+#include "robot/Pose.h"
 #include "robot/RobotPathSolver.h"
 
 #include <vtkDemandDrivenPipeline.h>
@@ -66,6 +68,7 @@ vtkGLURScriptWriter::vtkGLURScriptWriter() {
   this->MaxBlend = program.maxBlend;
   this->MaxJointStep = gl::RobotPathOptions{}.maxJointStepDeg;
   this->AllowUnreachable = false;
+  this->SearchCellLayout = gl::CellLayoutOptions{}.search;
 }
 
 vtkGLURScriptWriter::~vtkGLURScriptWriter() {
@@ -108,6 +111,11 @@ void vtkGLURScriptWriter::ResetResults() {
   this->NumberOfMoves = 0;
   this->MaxJointStepDeg = 0;
   this->LargeJointSteps = 0;
+  this->LayoutChanged = false;
+  this->LayoutRotationDeg = 0;
+  this->LayoutOffsetAdded = 0;
+  this->LayoutsTried = 0;
+  std::copy(this->PartOnFlange, this->PartOnFlange + 6, this->UsedPartOnFlange);
   this->MaxTipError = 0;
   this->MaxAxisErrorDeg = 0;
   this->MaxJointSpeedDegS = 0;
@@ -192,8 +200,40 @@ void vtkGLURScriptWriter::WriteData() {
         }
         gl::RobotPathOptions pathOptions;
         pathOptions.maxJointStepDeg = this->MaxJointStep;
-        const gl::RobotPath robotPath =
-            gl::solveRobotPath(cell, path.points, path.normals, pathOptions);
+        // The cell as given, else the best mounting of the part on the flange that the robot
+        // can follow (core/robot/CellLayout.h).
+        gl::CellLayoutOptions layoutOptions;
+        layoutOptions.search = this->SearchCellLayout != 0;
+        gl::CellLayoutResult layout;
+        try {
+          layout =
+              gl::solveWithCellLayout(cell, path.points, path.normals, pathOptions, layoutOptions);
+        } catch (const gl::GeoLatticeError& e) {
+          // No layout reaches the path continuously: every point counts as unreachable.
+          this->Unreachable.resize(path.points.size());
+          for (size_t i = 0; i < path.points.size(); ++i) {
+            this->Unreachable[i] = static_cast<vtkIdType>(i);
+          }
+          this->NumberOfWaypoints = static_cast<vtkIdType>(path.points.size());
+          throw gl::GeoLatticeError(std::string("URScript writer: ") + e.what() +
+                                    ": nothing written; move the nozzle tip or the part on the "
+                                    "flange");
+        }
+        const gl::RobotPath& robotPath = layout.path;
+        this->LayoutChanged = layout.changed;
+        this->LayoutRotationDeg = layout.rotationDeg;
+        this->LayoutOffsetAdded = layout.offsetAdded;
+        this->LayoutsTried = layout.layoutsTried;
+        const gl::UrPose mounted = gl::toUrPose(layout.cell.partOnFlange);
+        std::copy(mounted.begin(), mounted.end(), this->UsedPartOnFlange);
+        if (layout.changed) {
+          std::ostringstream line;
+          line << "cell layout: the platform turned by " << layout.rotationDeg
+               << " deg about the flange z axis and " << 1000 * layout.offsetAdded
+               << " mm further from the flange than asked (the path solver's choice: the cell as "
+                  "given flips a joint or does not reach); mount it as set_tcp says";
+          options.headerComments.push_back(line.str());
+        }
         gl::checkAbort(this, 0.5);
         this->Unreachable.assign(robotPath.unreachable.begin(), robotPath.unreachable.end());
         std::sort(this->Unreachable.begin(), this->Unreachable.end());
@@ -206,16 +246,6 @@ void vtkGLURScriptWriter::WriteData() {
         this->MinSingularity[2] = robotPath.minSingularity.wrist;
         this->SolveSeconds = robotPath.seconds;
         this->LargeJointSteps = static_cast<vtkIdType>(robotPath.largeSteps.size());
-        if (!robotPath.largeSteps.empty()) {
-          std::ostringstream text;
-          text << "URScript writer: a joint of the " << cell.robot.name << " jumps by "
-               << robotPath.maxJointStepDeg << " degrees at toolpath point "
-               << robotPath.maxJointStepAt << " (" << robotPath.largeSteps.size()
-               << " steps above MaxJointStep " << this->MaxJointStep
-               << " degrees: a wrist flip or a joint limit on this cell layout); nothing written: "
-                  "move the nozzle tip or the part on the flange";
-          throw gl::GeoLatticeError(text.str());
-        }
         if (!this->Unreachable.empty()) {
           const std::string text =
               describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name);
@@ -228,13 +258,25 @@ void vtkGLURScriptWriter::WriteData() {
               << text
               << ": written anyway (AllowUnreachable); the robot holds still at those points");
         }
+        if (!robotPath.largeSteps.empty()) {
+          std::ostringstream text;
+          text << "URScript writer: a joint of the " << cell.robot.name << " jumps by "
+               << robotPath.maxJointStepDeg << " degrees at toolpath point "
+               << robotPath.maxJointStepAt << " (" << robotPath.largeSteps.size()
+               << " steps above MaxJointStep " << this->MaxJointStep
+               << " degrees: a wrist flip or a joint limit"
+               << (layoutOptions.search ? ", also in the other mountings of the part tried"
+                                        : " on this cell layout")
+               << "); nothing written: move the nozzle tip or the part on the flange";
+          throw gl::GeoLatticeError(text.str());
+        }
 
         // The program files, all-or-nothing.
         std::vector<std::string> names;
         gl::AtomicFileSet files;
         const gl::ProgramInput input{&path.points, &path.extrusion, &path.feedRate, &path.kind};
-        const gl::ProgramStats stats =
-            gl::writeURScript(cell, robotPath, input, options, [&](size_t k) -> std::ostream& {
+        const gl::ProgramStats stats = gl::writeURScript(
+            layout.cell, robotPath, input, options, [&](size_t k) -> std::ostream& {
               names.push_back(ProgramFileName(this->FileName, static_cast<int>(k)));
               return files.open(names.back());
             });
@@ -277,6 +319,7 @@ void vtkGLURScriptWriter::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "MaxBlend: " << this->MaxBlend << " m\n";
   os << indent << "MaxJointStep: " << this->MaxJointStep << " deg\n";
   os << indent << "AllowUnreachable: " << this->AllowUnreachable << "\n";
+  os << indent << "SearchCellLayout: " << (this->SearchCellLayout ? "on" : "off") << "\n";
   os << indent << "FilesWritten: " << this->FilesWritten.size() << "\n";
   os << indent << "UnreachableCount: " << this->Unreachable.size() << "\n";
 }

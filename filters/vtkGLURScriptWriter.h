@@ -143,6 +143,15 @@ public:
   vtkBooleanMacro(AllowUnreachable, vtkTypeBool);
   ///@}
 
+  ///@{
+  /// When the robot cannot follow the path in the cell as given (a joint flip or limit,
+  /// unreachable points), search how the part is mounted on the flange: its rotation about the
+  /// flange z axis and its distance in front of it (core/robot/CellLayout.h; default on).
+  vtkSetMacro(SearchCellLayout, vtkTypeBool);
+  vtkGetMacro(SearchCellLayout, vtkTypeBool);
+  vtkBooleanMacro(SearchCellLayout, vtkTypeBool);
+  ///@}
+
   /// File name of program file k: FileName for k = 0, else STEM_k.EXT next to it.
   static std::string ProgramFileName(const std::string& fileName, int k);
   /// The def name used for FileName: its stem as a URScript identifier.
@@ -160,6 +169,15 @@ public:
   /// Joint steps above MaxJointStep that the path solver could not avoid (then nothing is
   /// written: a wrist flip or a joint limit on this cell layout).
   vtkIdType GetLargeJointSteps() const { return this->LargeJointSteps; }
+  /// The cell layout of the last Write(): whether the path solver changed the mounting of the
+  /// part (SearchCellLayout), the rotation it added about the flange z axis (degrees), the
+  /// distance it added in front of the flange (m), the layouts it tried, and the mounting used
+  /// (the program's set_tcp; a URScript pose, m and rad).
+  bool GetLayoutChanged() const { return this->LayoutChanged; }
+  double GetLayoutRotationDeg() const { return this->LayoutRotationDeg; }
+  double GetLayoutOffsetAdded() const { return this->LayoutOffsetAdded; }
+  int GetLayoutsTried() const { return this->LayoutsTried; }
+  const double* GetUsedPartOnFlange() const { return this->UsedPartOnFlange; }
   /// Forward-kinematics check of the written joints: largest distance of a toolpath point from
   /// the nozzle tip (m) and largest angle between its axis and the nozzle axis (degrees).
   double GetMaxTipError() const { return this->MaxTipError; }
@@ -190,6 +208,7 @@ protected:
   double MaxBlend;
   double MaxJointStep;
   vtkTypeBool AllowUnreachable;
+  vtkTypeBool SearchCellLayout;
 
 private:
   vtkGLURScriptWriter(const vtkGLURScriptWriter&) = delete;
@@ -203,6 +222,11 @@ private:
   vtkIdType NumberOfMoves = 0;
   double MaxJointStepDeg = 0;
   vtkIdType LargeJointSteps = 0;
+  bool LayoutChanged = false;
+  double LayoutRotationDeg = 0;
+  double LayoutOffsetAdded = 0;
+  int LayoutsTried = 0;
+  double UsedPartOnFlange[6] = {0, 0, 0, 0, 0, 0};
   double MaxTipError = 0;
   double MaxAxisErrorDeg = 0;
   double MaxJointSpeedDegS = 0;

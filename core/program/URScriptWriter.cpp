@@ -136,6 +136,9 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
          << "():\n";
     head << "  # GeoLattice multi-axis print, program " << file + 1
          << "; the robot holds the part under a fixed nozzle\n";
+    for (const std::string& line : o.headerComments) {
+      head << "  # " << line << "\n";
+    }
     head << "  set_tcp(" << poseLiteral(cell.partOnFlange) << ")\n";
     head << "  # analog out 0 drives the extruder: level 0..1 (0-10 V) = 0-"
          << urNumber(o.maxFilamentRate) << " mm/s of filament\n";

@@ -34,6 +34,9 @@ struct URScriptOptions {
   double retractionRate = 20.0;     ///< mm/s of filament while retracting / priming
   size_t maxFileBytes = 4'000'000;  ///< split programs below this size (at air moves)
   std::string programName = "print_part";
+  /// Comment lines written after the first line of every program file (e.g. the cell layout the
+  /// path solver chose). Optional.
+  std::vector<std::string> headerComments;
 };
 
 /// What one toolpath point needs (part units, see Toolpath).

@@ -276,7 +276,12 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
               previous >= 0 && std::binary_search(tree.nodes[previous].upper.begin(),
                                                   tree.nodes[previous].upper.end(), k);
           std::vector<AirWaypoint> air;
-          if (upper && !overTheBox[tourIndex]) {
+          // A hop lifts along the axes: where they point down near the plate that would go
+          // into it (the build plate is an obstacle), so such a transition goes over the box.
+          const bool liftAbovePlate =
+              !o.plate.enabled || ((b.position() + o.lift * b.axis()).z() >= 0 &&
+                                   (g.points[start] + o.lift * startAxis).z() >= 0);
+          if (upper && !overTheBox[tourIndex] && liftAbovePlate) {
             hopped[tourIndex] = 1;
             air = liftAirMove(b.position(), b.axis(), g.points[start], startAxis, o.lift);
           } else {

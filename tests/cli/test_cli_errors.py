@@ -188,10 +188,10 @@ class CliErrorTest(unittest.TestCase):
                       if n.endswith(".script") or n in ("toolpath.gcode", "waypoints.csv"))
 
     def test_unreachable_cell(self):
-        # The nozzle 5 m from the robot: one line, exit 1, no program file (nor temporary file).
+        # The nozzle 5 m from the robot: one line, the reachability gate (exit 5), no program file.
         line = self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--replay-steps", "0",
                                   "--nozzle-tip", "5,0,0"], "program", "unreachable cell set-up")
-        self.assertTrue(line.startswith("geolattice: error: program: "), line)
+        self.assertTrue(line.startswith("geolattice: stopped: program: "), line)
         self.assertEqual(self.program_files(), [])
         self.assertTrue(os.path.isfile(os.path.join(self.out, "toolpath.vtp")))  # the stages before
 
@@ -298,6 +298,98 @@ class CliErrorTest(unittest.TestCase):
         self.assertIn("time factor", report["failed"]["message"])
         self.assertEqual(report["exit_status"], 1)
         self.assertEqual([f["file"] for f in report["files"]], ["tets.vtu"])
+
+
+class CliGateTest(unittest.TestCase):
+    """The safety gates: a colliding toolpath (4), unreachable points (5), a joint flip (6) stop the
+    machine programs with exactly one line on stderr and every inspection output written; the
+    overrides write the programs and keep the warning; a cell that flips is laid out anew."""
+
+    def setUp(self):
+        self.tmp = tempfile.mkdtemp(prefix="geolattice-gates-")
+
+    def tearDown(self):
+        shutil.rmtree(self.tmp, ignore_errors=True)
+
+    def run_cli(self, model, *args):
+        out = os.path.join(self.tmp, "out")
+        result = subprocess.run([CLI, "run", os.path.join(TESTDATA, model), "-o", out, "-q", "--replay-steps", "0",
+                                 "--gcode", "none", *args], capture_output=True, text=True, timeout=600)
+        with open(os.path.join(out, "report.json")) as f:
+            report = json.load(f)
+        programs = sorted(n for n in os.listdir(out) if n.endswith((".script", ".gcode")) or n == "waypoints.csv")
+        return result, report, programs, out
+
+    def expect_gate(self, result, report, programs, out, status, gate, words):
+        self.assertEqual(result.returncode, status, result.stderr)
+        lines = [l for l in result.stderr.splitlines() if l.strip()]
+        self.assertEqual(len(lines), 1, result.stderr)
+        self.assertTrue(lines[0].startswith("geolattice: stopped: "), lines[0])
+        for w in words:
+            self.assertIn(w, lines[0])
+        self.assertEqual(programs, [])
+        for name in ("fields.vtu", "lattice.vtp", "toolpath.vtp", "toolpath_collisions.vtp"):
+            self.assertTrue(os.path.isfile(os.path.join(out, name)), name)
+        self.assertFalse(report["gates"][gate]["passed"])
+        self.assertEqual(report["gates"][gate]["stopped"], ["program"])
+        self.assertEqual(report["exit_status"], status)
+
+    def test_collision_gate_and_its_override(self):
+        args = ["--edge-length", "2", "--strategy", "dpt", "--nozzle-angle", "75"]
+        result, report, programs, out = self.run_cli("y_shape.obj", *args)
+        self.expect_gate(result, report, programs, out, 4, "collision",
+                         ["toolpath collides at", "stations", "see toolpath_collisions.vtp", "--allow-collisions"])
+        self.assertGreater(report["toolpath"]["violating_stations"], 0)
+        result, report, programs, out = self.run_cli("y_shape.obj", *args, "--allow-collisions")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        lines = [l for l in result.stderr.splitlines() if l.strip()]
+        self.assertEqual(len(lines), 1, result.stderr)
+        self.assertIn("warning: toolpath collides at", lines[0])
+        self.assertIn("print_part.script", programs)
+        self.assertIn("waypoints.csv", programs)
+        self.assertTrue(report["gates"]["collision"]["overridden"])
+
+    def test_unreachable_gate_and_its_override(self):
+        args = ["--fit-size", "30", "--nozzle-tip", "0.88,0,0.1", "--no-layout-search"]
+        result, report, programs, out = self.run_cli("cube.obj", *args)
+        self.expect_gate(result, report, programs, out, 5, "reachability", ["unreachable for the ur5"])
+        self.assertGreater(report["program"]["unreachable"], 0)
+        result, report, programs, out = self.run_cli("cube.obj", *args, "--allow-unreachable")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("unreachable", result.stderr)
+        self.assertIn("print_part.script", programs)
+        self.assertIn("waypoints.csv", programs)
+
+    def test_joint_gate_and_the_cell_layout_search(self):
+        # The nozzle pointing along the robot's x axis: the path as laid out makes the wrist flip.
+        cell = ["--nozzle-tip", "0,-0.4,0.3", "--nozzle-axis", "1,0,0", "--allow-collisions"]
+        result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-layout-search")
+        self.assertEqual(result.returncode, 6, result.stderr)
+        lines = [l for l in result.stderr.splitlines() if l.strip()]
+        # One warning (the collisions, overridden) and the gate's line.
+        self.assertEqual(len([l for l in lines if l.startswith("geolattice: stopped: ")]), 1, result.stderr)
+        self.assertIn("jumps by", result.stderr)
+        self.assertNotIn("raise", result.stderr)  # no advice to raise the bound
+        self.assertEqual(programs, [])
+        self.assertFalse(report["gates"]["joints"]["passed"])
+        # The bound is not the way out: above 30 degrees it is refused.
+        r = subprocess.run([CLI, "run", os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "-o",
+                            os.path.join(self.tmp, "bound"), "-q", "--max-joint-step", "360"],
+                           capture_output=True, text=True, timeout=300)
+        self.assertEqual(r.returncode, 1)
+        self.assertIn("--max-joint-step must be in (0, 30]", r.stderr)
+        # With the layout search (the default) the part is mounted otherwise and the program written.
+        result, report, programs, out = self.run_cli("y_shape.obj", *cell)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        layout = report["program"]["layout"]
+        self.assertTrue(layout["changed"])
+        self.assertGreater(layout["layouts_tried"], 1)
+        self.assertLessEqual(report["program"]["max_joint_step_deg"], 20.0)
+        self.assertEqual(report["program"]["unreachable"], 0)
+        with open(os.path.join(out, "print_part.script")) as f:
+            head = f.read(2000)
+        self.assertIn("# cell layout: the platform turned by", head)
+        self.assertIn("set_tcp(p[0, 0, %s" % ("%g" % layout["part_on_flange_used"][2]), head)
 
 
 class CliVerifyTest(unittest.TestCase):
