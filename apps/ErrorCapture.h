@@ -6,14 +6,27 @@
 #include <vtkCommand.h>
 #include <vtkNew.h>
 #include <vtkObject.h>
+#include <vtkSmartPointer.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace geolattice {
 
-/// Captures the first error an algorithm reports (instead of VTK's multi-line console text).
+/// Captures the first error the watched objects report (instead of VTK's multi-line console
+/// text) while it lives: the destructor removes its observers.
 class ErrorCapture {
 public:
+  ErrorCapture() = default;
+  ErrorCapture(const ErrorCapture&) = delete;
+  ErrorCapture& operator=(const ErrorCapture&) = delete;
+  ~ErrorCapture() {
+    for (const auto& [object, tag] : this->Observers) {
+      object->RemoveObserver(tag);
+    }
+  }
+
   void Watch(vtkObject* object) {
     vtkNew<vtkCallbackCommand> cb;
     cb->SetClientData(this);
@@ -23,11 +36,13 @@ public:
         me->Message = Clean(static_cast<const char*>(callData));
       }
     });
-    object->AddObserver(vtkCommand::ErrorEvent, cb);
+    this->Observers.emplace_back(object, object->AddObserver(vtkCommand::ErrorEvent, cb));
   }
   std::string Message;
 
 private:
+  std::vector<std::pair<vtkSmartPointer<vtkObject>, unsigned long>> Observers;
+
   // "ERROR: In file, line N\nvtkClass (0x...): text\n\n" -> "text"
   static std::string Clean(std::string text) {
     const size_t paren = text.find("): ");

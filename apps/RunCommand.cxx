@@ -113,6 +113,7 @@ private:
       P.WaypointWriter->SetAllowCollisions(true);
     }
 
+    this->CheckParameters();
     vtkDataObject* placed = this->Update("input", P.Placement, {P.Reader, P.Placement});
     Json& input = this->Section("input");
     input["file"] = R.model;
@@ -361,6 +362,51 @@ private:
       std::cout << " done (" << secondsSince(start) << " s)\n";
     }
     return kExitOk;
+  }
+
+  /// Checks the parameters of every stage the run will reach before the first one runs: VTK's
+  /// information pass visits every filter upstream of the last ones, and each filter checks its
+  /// own parameters there (filters/vtkGLRequest.h). Milliseconds, not minutes of meshing.
+  void CheckParameters() {
+    std::vector<vtkAlgorithm*> last = {P.Tetrahedralize};
+    if (P.GetTetMeshInput()) {
+      last = {P.Placement};
+    }
+    const std::string& u = R.until;
+    if (u != "mesh") {
+      last = {P.GeodesicFields};
+    }
+    if (u != "mesh" && u != "gdf") {
+      last = {P.Slicer, P.OverhangAnalysis};
+    }
+    if (u == "lattice") {
+      last.push_back(P.LatticeInfill);
+    } else if (u == "sequence") {
+      last.push_back(P.SequenceVerifier);
+    } else if (u == "toolpath") {
+      last.push_back(P.ToolpathVerifier);
+    } else if (u.empty() || u == "program") {
+      last.insert(last.end(), {P.ToolpathVerifier, P.ScriptWriter, P.WaypointWriter});
+      if (R.gcode) {
+        last.push_back(P.GCodeWriter);
+      }
+    }
+    ErrorCapture errors;
+    for (int s = 0; s < GLPrintPipeline::NumberOfStages; ++s) {
+      errors.Watch(P.Filter(static_cast<GLPrintPipeline::Stage>(s)));
+    }
+    for (vtkAlgorithm* a : {static_cast<vtkAlgorithm*>(P.ScriptWriter.Get()),
+                            static_cast<vtkAlgorithm*>(P.GCodeWriter.Get()),
+                            static_cast<vtkAlgorithm*>(P.WaypointWriter.Get())}) {
+      errors.Watch(a);
+    }
+    for (vtkAlgorithm* a : last) {
+      if (!a->GetExecutive()->UpdateInformation() || !errors.Message.empty()) {
+        throw StageError("parameters", errors.Message.empty()
+                                           ? std::string(a->GetClassName()) + " failed"
+                                           : errors.Message);
+      }
+    }
   }
 
   /// The report section of a stage, with its seconds first.

@@ -110,7 +110,29 @@ void buildCandidates(const gl::OrientResult& r, const double bounds[6], vtkPolyD
   pd->SetActiveScalars(gl::arrays::OrientRank);
 }
 
+/// The core options of the filter's parameters (checked by RequestInformation).
+gl::OrientOptions orientOptions(vtkGLAutoOrient* f) {
+  gl::OrientOptions o;
+  o.minBaseArea = f->GetMinBaseArea();
+  o.sphereCandidates = f->GetSphereCandidates();
+  o.hullCandidates = f->GetHullCandidates();
+  o.evaluationTets = f->GetEvaluationTets();
+  o.layerInterval = f->GetEvaluationLayerInterval();
+  o.latticeWidth = f->GetEvaluationLatticeWidth();
+  o.threads = f->GetNumberOfThreads();
+  o.nozzle = gl::nozzleModel(f->GetNozzle());
+  o.plate = gl::buildPlate(f->GetNozzle());
+  return o;
+}
+
 }  // namespace
+
+int vtkGLAutoOrient::RequestInformation(vtkInformation* request, vtkInformationVector** inputs,
+                                        vtkInformationVector* outputs) {
+  return this->Superclass::RequestInformation(request, inputs, outputs) &&
+         (this->Orient == KEEP ||
+          gl::checkParameters(this, [&] { orientOptions(this).validate(); }));
+}
 
 int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                  vtkInformationVector* outputVector) {
@@ -132,16 +154,7 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
       addMode(output->GetFieldData(), "keep");
       return;
     }
-    gl::OrientOptions options;
-    options.minBaseArea = this->MinBaseArea;
-    options.sphereCandidates = this->SphereCandidates;
-    options.hullCandidates = this->HullCandidates;
-    options.evaluationTets = this->EvaluationTets;
-    options.layerInterval = this->EvaluationLayerInterval;
-    options.latticeWidth = this->EvaluationLatticeWidth;
-    options.threads = this->NumberOfThreads;
-    options.nozzle = gl::nozzleModel(this->Nozzle);
-    options.plate = gl::buildPlate(this->Nozzle);
+    gl::OrientOptions options = orientOptions(this);
     options.progress = gl::progressRange(this, 0.0, 0.95);
     options.shouldAbort = gl::abortFlag(this);
     const gl::TriangleSurface surface = gl::toTriangleSurface(input);

@@ -98,6 +98,7 @@ protected:
   vtkGLAutoOrient();
   ~vtkGLAutoOrient() override = default;
 
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Orient;

@@ -308,6 +308,18 @@ int vtkGLCollisionVerifier::FillInputPortInformation(int, vtkInformation* info) 
   return 1;
 }
 
+int vtkGLCollisionVerifier::RequestInformation(vtkInformation* request,
+                                               vtkInformationVector** inputs,
+                                               vtkInformationVector* outputs) {
+  return this->Superclass::RequestInformation(request, inputs, outputs) &&
+         gl::checkParameters(this, [&] {
+           if (this->MaxReported < 0) {
+             throw gl::GeoLatticeError("collision verifier: MaxReported must be >= 0 (got " +
+                                       std::to_string(this->MaxReported) + ")");
+           }
+         });
+}
+
 int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                         vtkInformationVector* outputVector) {
   // Collective in an MPI run: all the printed points on one process (vtkGLParallel.h).

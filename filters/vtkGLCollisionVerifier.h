@@ -83,6 +83,7 @@ protected:
   ~vtkGLCollisionVerifier() override;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   char* TimeArrayName = nullptr;

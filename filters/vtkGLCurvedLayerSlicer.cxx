@@ -111,6 +111,16 @@ void buildPolyData(const gl::CurvedLayers& layers, const std::vector<int>& trian
   out->GetCellData()->AddArray(component);
 }
 
+/// The core options of the filter's parameters (checked by RequestInformation).
+gl::SlicerOptions slicerOptions(vtkGLCurvedLayerSlicer* f) {
+  gl::SlicerOptions o;
+  o.interval = f->GetLayerInterval();
+  o.firstLayerOffset = f->GetFirstLayerOffset();
+  o.firstLayer = f->GetFirstLayer();
+  o.lastLayer = f->GetLastLayer();
+  return o;
+}
+
 }  // namespace
 
 vtkGLCurvedLayerSlicer::vtkGLCurvedLayerSlicer() {
@@ -125,6 +135,11 @@ vtkGLCurvedLayerSlicer::vtkGLCurvedLayerSlicer() {
 int vtkGLCurvedLayerSlicer::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
   return 1;
+}
+
+int vtkGLCurvedLayerSlicer::RequestInformation(vtkInformation*, vtkInformationVector**,
+                                               vtkInformationVector*) {
+  return gl::checkParameters(this, [&] { slicerOptions(this).validate(); });
 }
 
 int vtkGLCurvedLayerSlicer::RequestData(vtkInformation*, vtkInformationVector** inputVector,
@@ -147,11 +162,7 @@ int vtkGLCurvedLayerSlicer::RequestData(vtkInformation*, vtkInformationVector** 
     gl::checkAbort(this, 0.05);
     const std::vector<gl::Vec3> normals = gl::vertexGradientDirections(mesh, gamma);
     gl::checkAbort(this, 0.1);
-    gl::SlicerOptions options;
-    options.interval = this->LayerInterval;
-    options.firstLayerOffset = this->FirstLayerOffset;
-    options.firstLayer = this->FirstLayer;
-    options.lastLayer = this->LastLayer;
+    gl::SlicerOptions options = slicerOptions(this);
     options.progress = gl::progressRange(this, 0.1, 0.6);
     options.shouldAbort = gl::abortFlag(this);
     const gl::CurvedLayers layers =

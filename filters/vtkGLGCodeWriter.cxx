@@ -67,6 +67,40 @@ vtkGLGCodeWriter::~vtkGLGCodeWriter() {
   this->SetExtrusionAxis(nullptr);
 }
 
+void vtkGLGCodeWriter::CheckParameters() {
+  const double lo = this->TiltLimits[0], hi = this->TiltLimits[1];
+  if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) {
+    throw gl::GeoLatticeError("G-code writer: the tilt limits must be finite with min < max (got " +
+                              std::to_string(lo) + ", " + std::to_string(hi) + ")");
+  }
+  for (const double* v : {this->Pivot, this->PartOffset}) {
+    if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
+      throw gl::GeoLatticeError("G-code writer: the pivot and the part offset must be finite");
+    }
+  }
+  if (this->Flavor != LINUXCNC && this->Flavor != REPRAP) {
+    throw gl::GeoLatticeError("G-code writer: Flavor must be 0 (LinuxCNC) or 1 (RepRap), got " +
+                              std::to_string(this->Flavor));
+  }
+  if (this->ToolCentrePoint != CONTROLLER && this->ToolCentrePoint != CAM) {
+    throw gl::GeoLatticeError(
+        "G-code writer: ToolCentrePoint must be 0 (controller) or 1 (CAM), got " +
+        std::to_string(this->ToolCentrePoint));
+  }
+  const std::string axis = this->ExtrusionAxis ? this->ExtrusionAxis : "";
+  if (axis.size() != 1 || !std::isupper(static_cast<unsigned char>(axis[0]))) {
+    throw gl::GeoLatticeError("G-code writer: ExtrusionAxis must be one axis letter (got '" + axis +
+                              "')");
+  }
+  gl::GCodeOptions options;  // the core's own checks of the rest
+  options.tiltMinDeg = lo;
+  options.tiltMaxDeg = hi;
+  options.flavor = static_cast<gl::GCodeFlavor>(this->Flavor);
+  options.toolCentrePoint = static_cast<gl::ToolCentrePoint>(this->ToolCentrePoint);
+  options.extrusionAxis = axis[0];
+  options.validate();
+}
+
 void vtkGLGCodeWriter::WriteData() {
   this->NumberOfMoves = 0;
   this->MaxRotaryStepDeg = 0;
@@ -82,22 +116,12 @@ void vtkGLGCodeWriter::WriteData() {
   this->SetErrorCode(gl::runWrite(
       this,
       [&] {
+        this->CheckParameters();
         this->CheckFileName("G-code writer");
         const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
         this->CheckCollisionVerdict(inputs.Get<vtkPolyData>(0), "G-code writer");
         gl::checkAbort(this, 0.1);
         const double lo = this->TiltLimits[0], hi = this->TiltLimits[1];
-        if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi)) {
-          throw gl::GeoLatticeError(
-              "G-code writer: the tilt limits must be finite with min < max (got " +
-              std::to_string(lo) + ", " + std::to_string(hi) + ")");
-        }
-        for (const double* v : {this->Pivot, this->PartOffset}) {
-          if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
-            throw gl::GeoLatticeError(
-                "G-code writer: the pivot and the part offset must be finite");
-          }
-        }
         const std::vector<vtkIdType> out = outOfLimits(path.normals, lo, hi);
         gl::checkAbort(this, 0.2);
         this->OutOfLimitsCount = static_cast<vtkIdType>(out.size());
@@ -122,21 +146,7 @@ void vtkGLGCodeWriter::WriteData() {
         options.tiltMinDeg = lo;
         options.tiltMaxDeg = hi;
         options.poleToleranceDeg = kPoleToleranceDeg;
-        if (this->Flavor != LINUXCNC && this->Flavor != REPRAP) {
-          throw gl::GeoLatticeError(
-              "G-code writer: Flavor must be 0 (LinuxCNC) or 1 (RepRap), got " +
-              std::to_string(this->Flavor));
-        }
-        if (this->ToolCentrePoint != CONTROLLER && this->ToolCentrePoint != CAM) {
-          throw gl::GeoLatticeError(
-              "G-code writer: ToolCentrePoint must be 0 (controller) or 1 (CAM), got " +
-              std::to_string(this->ToolCentrePoint));
-        }
-        const std::string axis = this->ExtrusionAxis ? this->ExtrusionAxis : "";
-        if (axis.size() != 1 || !std::isupper(static_cast<unsigned char>(axis[0]))) {
-          throw gl::GeoLatticeError("G-code writer: ExtrusionAxis must be one axis letter (got '" +
-                                    axis + "')");
-        }
+        const std::string axis = this->ExtrusionAxis;
         options.flavor = static_cast<gl::GCodeFlavor>(this->Flavor);
         options.toolCentrePoint = static_cast<gl::ToolCentrePoint>(this->ToolCentrePoint);
         options.extrusionAxis = axis[0];

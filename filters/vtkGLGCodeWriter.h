@@ -122,6 +122,7 @@ protected:
   vtkGLGCodeWriter();
   ~vtkGLGCodeWriter() override;
 
+  void CheckParameters() override;
   void WriteData() override;
 
   int Kinematics;

@@ -64,6 +64,18 @@ vtkNew<vtkDoubleArray> vectorArray(const char* name, const std::vector<geolattic
   return a;
 }
 
+/// The core options of the filter's parameters (checked by RequestInformation).
+geolattice::GeodesicFieldOptions fieldOptions(vtkGLGeodesicDistanceFields* f) {
+  geolattice::GeodesicFieldOptions o;
+  o.timeFactor = f->GetTimeFactor();
+  const double* r = f->GetReferenceVector();
+  o.reference = geolattice::Vec3(r[0], r[1], r[2]);
+  o.referenceParallelDeg = f->GetReferenceParallelAngle();
+  o.backend = f->GetUseCholmod() ? geolattice::CholeskyBackend::Cholmod
+                                 : geolattice::CholeskyBackend::EigenLDLT;
+  return o;
+}
+
 }  // namespace
 
 vtkGLGeodesicDistanceFields::vtkGLGeodesicDistanceFields() : Cache(new SolverCache) {
@@ -90,6 +102,17 @@ int vtkGLGeodesicDistanceFields::FillInputPortInformation(int, vtkInformation* i
   return 1;
 }
 
+int vtkGLGeodesicDistanceFields::RequestInformation(vtkInformation*, vtkInformationVector**,
+                                                    vtkInformationVector*) {
+  return geolattice::checkParameters(this, [&] {
+    fieldOptions(this).validate();
+    if (!(this->BaseTolerance >= 0) || !std::isfinite(this->BaseTolerance)) {
+      throw geolattice::GeoLatticeError("base tolerance must be >= 0 mm (got " +
+                                        std::to_string(this->BaseTolerance) + ")");
+    }
+  });
+}
+
 int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                              vtkInformationVector* outputVector) {
   namespace gl = geolattice;
@@ -103,13 +126,7 @@ int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVect
   vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
   const auto start = std::chrono::steady_clock::now();
   return gl::runRequest(this, outputVector, [&] {
-    gl::GeodesicFieldOptions options;
-    options.timeFactor = this->TimeFactor;
-    options.reference =
-        gl::Vec3(this->ReferenceVector[0], this->ReferenceVector[1], this->ReferenceVector[2]);
-    options.referenceParallelDeg = this->ReferenceParallelAngle;
-    options.backend =
-        this->UseCholmod ? gl::CholeskyBackend::Cholmod : gl::CholeskyBackend::EigenLDLT;
+    gl::GeodesicFieldOptions options = fieldOptions(this);
     SolverCache& cache = *this->Cache;
     // The cached solver keeps these callbacks: they read the range of the current step.
     options.progress = [this](double f) {

@@ -271,6 +271,19 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out) {
   gl::addFieldArray(fd, gl::arrays::SubgraphLength, subLength);
   gl::addFieldArray(fd, gl::arrays::SubgraphCentroid, subCentroid, 3);
 }
+/// The core options of the filter's parameters (checked by RequestInformation).
+gl::LatticeOptions latticeOptions(vtkGLLatticeInfill* f) {
+  gl::LatticeOptions o;
+  o.alphaWidth = f->GetAlphaWidth();
+  o.betaWidth = f->GetBetaWidth();
+  o.alphaPhase = f->GetAlphaPhase();
+  o.betaPhase = f->GetBetaPhase();
+  o.minimumSubgraphLength = f->GetMinimumSubgraphLength();
+  o.mergeQuadDiagonalPoints = f->GetMergeQuadDiagonalPoints();
+  o.threads = f->GetNumberOfThreads();
+  return o;
+}
+
 }  // namespace
 
 vtkGLLatticeInfill::vtkGLLatticeInfill() {
@@ -289,6 +302,11 @@ int vtkGLLatticeInfill::FillInputPortInformation(int, vtkInformation* info) {
   return 1;
 }
 
+int vtkGLLatticeInfill::RequestInformation(vtkInformation*, vtkInformationVector**,
+                                           vtkInformationVector*) {
+  return gl::checkParameters(this, [&] { latticeOptions(this).validate(); });
+}
+
 int vtkGLLatticeInfill::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                     vtkInformationVector* outputVector) {
   // Collective in an MPI run: all the layers on one process (vtkGLParallel.h).
@@ -300,23 +318,11 @@ int vtkGLLatticeInfill::RequestData(vtkInformation*, vtkInformationVector** inpu
   }
   vtkPolyData* input = inputs.Get<vtkPolyData>(0);
   return gl::runRequest(this, outputVector, [&] {
-    if (!(this->AlphaWidth > 0) || !(this->BetaWidth > 0)) {
-      throw gl::GeoLatticeError("lattice widths must be > 0 mm (AlphaWidth " +
-                                std::to_string(this->AlphaWidth) + ", BetaWidth " +
-                                std::to_string(this->BetaWidth) + ")");
-    }
     std::vector<vtkIdType> inputPoint;
     bool hasGamma = false;
     const gl::CurvedLayers layers = toCurvedLayers(input, inputPoint, hasGamma);
 
-    gl::LatticeOptions options;
-    options.alphaWidth = this->AlphaWidth;
-    options.betaWidth = this->BetaWidth;
-    options.alphaPhase = this->AlphaPhase;
-    options.betaPhase = this->BetaPhase;
-    options.minimumSubgraphLength = this->MinimumSubgraphLength;
-    options.mergeQuadDiagonalPoints = this->MergeQuadDiagonalPoints;
-    options.threads = this->NumberOfThreads;
+    gl::LatticeOptions options = latticeOptions(this);
     // Graded lattice: the width scale array, if one is selected.
     std::string scaleName;
     vtkInformation* arrayInfo = this->GetInputArrayInformation(0);

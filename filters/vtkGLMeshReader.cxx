@@ -22,6 +22,8 @@
 #include <vtkObjectFactory.h>
 #include <vtkPLYReader.h>
 #include <vtkPointData.h>
+#include <vtkPointSet.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
@@ -33,7 +35,12 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -221,21 +228,103 @@ void checkPointIds(vtkCellArray* cells, vtkIdType numPoints, const char* cellNam
   }
 }
 
+/// A binary STL is an 80-byte header, a 4-byte triangle count n and 50 bytes per triangle: the
+/// count must match the file size before anything is allocated (a garbage file would otherwise
+/// ask for billions of triangles). A file that starts with "solid" and does not match is ASCII.
+void checkBinaryStl(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char head[84] = {};
+  in.read(head, sizeof head);
+  const std::streamsize got = in.gcount();
+  in.seekg(0, std::ios::end);
+  const auto size = static_cast<unsigned long long>(in.tellg());
+  const bool solid = got >= 5 && std::string(head, 5) == "solid";
+  if (got < 84) {
+    if (!solid) {
+      throw geolattice::GeoLatticeError("not an STL file: " + path + " has " +
+                                        std::to_string(size) +
+                                        " bytes, less than a binary STL header (84 bytes)");
+    }
+    return;
+  }
+  std::uint32_t n = 0;
+  std::memcpy(&n, head + 80, 4);  // little endian, as the format says (and this machine is)
+  const unsigned long long expected = 84ull + 50ull * n;
+  if (expected == size) {
+    return;  // a consistent binary STL (even if its header happens to start with "solid")
+  }
+  if (solid) {
+    return;  // ASCII
+  }
+  throw geolattice::GeoLatticeError("not a valid binary STL: " + path + " says " +
+                                    std::to_string(n) + " triangles (" + std::to_string(expected) +
+                                    " bytes) but has " + std::to_string(size) +
+                                    " bytes (truncated, or not an STL file)");
+}
+
+/// VTK's OBJ reader does not report a coordinate it cannot parse ("nan", "inf", "1,5"): it keeps
+/// the previous vertex's value and reads on. The vertex lines are scanned first, naming the first
+/// vertex (0-based) whose coordinates are not three finite numbers.
+void checkObjVertices(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  long long vertex = 0;
+  for (long long lineNumber = 1; std::getline(in, line); ++lineNumber) {
+    const std::size_t start = line.find_first_not_of(" \t");
+    if (start == std::string::npos || line.compare(start, 2, "v ") != 0) {
+      continue;
+    }
+    const char* cursor = line.c_str() + start + 2;
+    double p[3];
+    bool ok = true;
+    for (double& c : p) {
+      char* end = nullptr;
+      c = std::strtod(cursor, &end);
+      ok = ok && end != cursor && std::isfinite(c);
+      cursor = end;
+    }
+    if (!ok) {
+      throw geolattice::GeoLatticeError(
+          "non-finite coordinates in " + path + ": vertex " + std::to_string(vertex) + " (line " +
+          std::to_string(lineNumber) + ") is '" + line.substr(start) + "'");
+    }
+    ++vertex;
+  }
+}
+
+/// Refuses NaN or infinite coordinates, naming the first such vertex (they would end as
+/// zero-volume tets or "intersecting facets", pointing at the wrong problem).
+void checkFinitePoints(vtkPointSet* data, const std::string& path) {
+  vtkPoints* points = data->GetPoints();
+  for (vtkIdType i = 0; points && i < points->GetNumberOfPoints(); ++i) {
+    double p[3];
+    points->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) {
+      throw geolattice::GeoLatticeError("non-finite coordinates in " + path + ": vertex " +
+                                        std::to_string(i) + " is (" + std::to_string(p[0]) + ", " +
+                                        std::to_string(p[1]) + ", " + std::to_string(p[2]) + ")");
+    }
+  }
+}
+
 /// Surface formats -> triangles only, coincident points merged.
 void readSurface(const std::string& path, const std::string& ext, vtkPolyData* output,
                  vtkAlgorithm* reporter) {
   vtkNew<vtkPolyData> raw;
   if (ext == ".off") {
     geolattice::fromTriangleSurface(geolattice::readOff(path), raw);
+    checkFinitePoints(raw, path);
   } else {
     vtkSmartPointer<vtkAlgorithm> reader;
     if (ext == ".stl") {
+      checkBinaryStl(path);
       auto stl = vtkSmartPointer<vtkSTLReader>::New();
       stl->SetFileName(path.c_str());
       stl->MergingOn();
       stl->ScalarTagsOff();
       reader = stl;
     } else if (ext == ".obj") {
+      checkObjVertices(path);
       auto obj = vtkSmartPointer<vtkOBJReader>::New();
       obj->SetFileName(path.c_str());
       reader = obj;
@@ -255,6 +344,7 @@ void readSurface(const std::string& path, const std::string& ext, vtkPolyData* o
                                         " gave no polydata for " + path);
     }
     raw->ShallowCopy(read);
+    checkFinitePoints(raw, path);
     checkPointIds(raw->GetPolys(), raw->GetNumberOfPoints(), "polygon", path);
     checkPointIds(raw->GetStrips(), raw->GetNumberOfPoints(), "triangle strip", path);
   }
@@ -289,6 +379,7 @@ void readTetMesh(const std::string& path, const std::string& ext, vtkUnstructure
         ext == ".tet" ? geolattice::readTetFile(path) : geolattice::readTetGenMesh(path);
     gl::checkAbort(reporter, 0.8);
     geolattice::fromTetMesh(mesh, output);
+    checkFinitePoints(output, path);
     return;
   }
   vtkNew<vtkXMLUnstructuredGridReader> reader;
@@ -302,6 +393,7 @@ void readTetMesh(const std::string& path, const std::string& ext, vtkUnstructure
                                       std::to_string(grid->GetNumberOfCells()) + " cells");
   }
   checkPointIds(grid->GetCells(), grid->GetNumberOfPoints(), "cell", path);
+  checkFinitePoints(grid, path);
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c) {
     if (grid->GetCellType(c) != VTK_TETRA) {
       throw geolattice::GeoLatticeError("cell " + std::to_string(c) + " of " + path +

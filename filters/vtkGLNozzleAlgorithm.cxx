@@ -1,5 +1,8 @@
 #include "vtkGLNozzleAlgorithm.h"
 
+#include "vtkGLMeshConversion.h"
+#include "vtkGLRequest.h"
+
 #include <algorithm>
 
 vtkGLNozzleAlgorithm::vtkGLNozzleAlgorithm() : Nozzle(vtkSmartPointer<vtkGLNozzle>::New()) {}
@@ -24,4 +27,12 @@ void vtkGLNozzleAlgorithm::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Nozzle:\n";
   this->Nozzle->PrintSelf(os, indent.GetNextIndent());
+}
+
+int vtkGLNozzleAlgorithm::RequestInformation(vtkInformation*, vtkInformationVector**,
+                                             vtkInformationVector*) {
+  return geolattice::checkParameters(this, [&] {
+    geolattice::nozzleModel(this->Nozzle);  // both validate
+    geolattice::buildPlate(this->Nozzle);
+  });
 }

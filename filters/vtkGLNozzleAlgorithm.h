@@ -31,6 +31,9 @@ protected:
   vtkGLNozzleAlgorithm();
   ~vtkGLNozzleAlgorithm() override = default;
 
+  /// Checks the nozzle and plate parameters (subclasses that override it call it first).
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
   vtkSmartPointer<vtkGLNozzle> Nozzle;
 
 private:

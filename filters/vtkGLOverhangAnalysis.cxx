@@ -70,6 +70,11 @@ int vtkGLOverhangAnalysis::FillInputPortInformation(int, vtkInformation* info) {
   return 1;
 }
 
+int vtkGLOverhangAnalysis::RequestInformation(vtkInformation*, vtkInformationVector**,
+                                              vtkInformationVector*) {
+  return gl::checkParameters(this, [&] { gl::OverhangOptions{this->ThresholdAngle}.validate(); });
+}
+
 int vtkGLOverhangAnalysis::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                        vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole tet mesh on one process (vtkGLParallel.h).

@@ -41,6 +41,22 @@ vtkGLPlaceOnPlatform::vtkGLPlaceOnPlatform() {
   this->CenterXY = defaults.centerXY;
 }
 
+namespace {
+/// The core options of the filter's parameters (checked by ExecuteInformation).
+gl::PlacementOptions placementOptions(vtkGLPlaceOnPlatform* f) {
+  gl::PlacementOptions o;
+  o.scale = f->GetScale();
+  o.fitSize = f->GetFitSize();
+  o.centerXY = f->GetCenterXY() != 0;
+  return o;
+}
+}  // namespace
+
+int vtkGLPlaceOnPlatform::ExecuteInformation(vtkInformation*, vtkInformationVector**,
+                                             vtkInformationVector*) {
+  return gl::checkParameters(this, [&] { placementOptions(this).validate(); });
+}
+
 int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                       vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole model on one process (vtkGLParallel.h), because the
@@ -56,10 +72,7 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
     if (!input || !output) {
       throw gl::GeoLatticeError("input and output must be vtkPointSet");
     }
-    gl::PlacementOptions options;
-    options.scale = this->Scale;
-    options.fitSize = this->FitSize;
-    options.centerXY = this->CenterXY != 0;
+    const gl::PlacementOptions options = placementOptions(this);
     options.validate();
     vtkPoints* inPoints = input->GetPoints();
     const vtkIdType n = inPoints ? inPoints->GetNumberOfPoints() : 0;

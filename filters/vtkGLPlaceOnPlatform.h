@@ -61,6 +61,7 @@ protected:
   vtkGLPlaceOnPlatform();
   ~vtkGLPlaceOnPlatform() override = default;
 
+  int ExecuteInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double Scale;

@@ -163,6 +163,15 @@ void printOrderPolyline(const gl::SkeletonTree& tree, const gl::PrintSequence& s
   out->GetCellData()->AddArray(retraction);
   out->GetCellData()->SetActiveScalars(gl::arrays::Retraction);
 }
+/// The core options of the filter's parameters (checked by RequestInformation).
+gl::SequenceOptions sequenceOptions(vtkGLPrintSequencer* f) {
+  gl::SequenceOptions o;
+  o.strategy = static_cast<gl::SequenceStrategy>(f->GetStrategy());  // clamped by the setter
+  o.rolloutCandidates = f->GetRolloutCandidates();
+  o.retractionCost = f->GetRetractionCost();
+  return o;
+}
+
 }  // namespace
 
 vtkGLPrintSequencer::vtkGLPrintSequencer() {
@@ -179,6 +188,22 @@ vtkGLPrintSequencer::vtkGLPrintSequencer() {
 int vtkGLPrintSequencer::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
   return 1;
+}
+
+int vtkGLPrintSequencer::RequestInformation(vtkInformation* request, vtkInformationVector** inputs,
+                                            vtkInformationVector* outputs) {
+  return this->Superclass::RequestInformation(request, inputs, outputs) &&
+         gl::checkParameters(this, [&] {
+           sequenceOptions(this).validate();
+           if (!(this->SampleSpacing > 0) || !std::isfinite(this->SampleSpacing)) {
+             throw gl::GeoLatticeError("print sequencer: the sample spacing must be > 0 mm (got " +
+                                       std::to_string(this->SampleSpacing) + ")");
+           }
+           if (this->NumberOfThreads < 0) {
+             throw gl::GeoLatticeError("print sequencer: the thread count must be >= 0 (got " +
+                                       std::to_string(this->NumberOfThreads) + ")");
+           }
+         });
 }
 
 int vtkGLPrintSequencer::RequestData(vtkInformation*, vtkInformationVector** inputVector,
@@ -200,10 +225,7 @@ int vtkGLPrintSequencer::RequestData(vtkInformation*, vtkInformationVector** inp
     const gl::MaterialSamples material = gl::sampleLatticeMaterial(graph, this->SampleSpacing);
     gl::checkAbort(this, 0.1);
 
-    gl::SequenceOptions options;
-    options.strategy = static_cast<gl::SequenceStrategy>(this->Strategy);
-    options.rolloutCandidates = this->RolloutCandidates;
-    options.retractionCost = this->RetractionCost;
+    gl::SequenceOptions options = sequenceOptions(this);
     const bool needPcg = options.strategy == gl::SequenceStrategy::Greedy ||
                          options.strategy == gl::SequenceStrategy::Rollout;
     options.progress = gl::progressRange(this, needPcg ? 0.6 : 0.1, 0.95);

@@ -13,6 +13,12 @@
  *    Output Messages, the CLI's one-line error) and the request returns 0, so `Update()` reports
  *    the failure and the filters downstream do not run on an empty output.
  * Writers use runWrite(): the same, with the writer's error code set on failure.
+ *
+ * Parameters are checked first: a filter's RequestInformation is
+ * `return geolattice::checkParameters(this, [&] { optionsOf(this).validate(); });`. VTK runs the
+ * information pass of the whole pipeline (upstream first) before any data request, so a bad
+ * parameter of any filter is reported in milliseconds, before the first expensive stage, in
+ * ParaView (on Apply) and in the CLI (which calls UpdateInformation() on its last filter first).
  */
 #include "common/AtomicFile.h"
 
@@ -47,6 +53,19 @@ inline void clearOutputs(vtkInformationVector* outputs) {
     if (vtkDataObject* data = vtkDataObject::GetData(outputs, i)) {
       data->Initialize();
     }
+  }
+}
+
+/// Runs `check` as a filter's parameter check (see the file comment): a throw goes to
+/// vtkErrorMacro and the request returns 0, so no data request of the pipeline runs.
+template <class Check>
+int checkParameters(vtkAlgorithm* algorithm, Check&& check) {
+  try {
+    check();
+    return 1;
+  } catch (const std::exception& e) {
+    vtkErrorWithObjectMacro(algorithm, << e.what());
+    return 0;
   }
 }
 

@@ -38,6 +38,15 @@ vtkGLTetrahedralizeSurface::vtkGLTetrahedralizeSurface() {
 }
 
 namespace {
+/// The core options of the filter's parameters (checked by RequestInformation).
+gl::TetrahedralizeOptions tetrahedralizeOptions(vtkGLTetrahedralizeSurface* f) {
+  gl::TetrahedralizeOptions o;
+  o.targetEdgeLength = f->GetTargetEdgeLength();
+  o.autoTargetTets = f->GetTargetTetCount();
+  o.radiusEdgeRatio = f->GetRadiusEdgeRatio();
+  return o;
+}
+
 // Circumradius / shortest edge of tet (a, b, c, d); infinity for a flat tet.
 double radiusEdgeRatio(const gl::Vec3& a, const gl::Vec3& b, const gl::Vec3& c, const gl::Vec3& d) {
   // Circumcentre x - a solves 2 (p - a) . (x - a) = |p - a|^2 for p = b, c, d.
@@ -77,6 +86,11 @@ int vtkGLTetrahedralizeSurface::FillInputPortInformation(int, vtkInformation* in
   return 1;
 }
 
+int vtkGLTetrahedralizeSurface::RequestInformation(vtkInformation*, vtkInformationVector**,
+                                                   vtkInformationVector*) {
+  return gl::checkParameters(this, [&] { tetrahedralizeOptions(this).validate(); });
+}
+
 int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                             vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole surface on one process (vtkGLParallel.h).
@@ -94,10 +108,7 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     const gl::TriangleSurface surface = gl::toTriangleSurface(input);
     gl::checkAbort(this, 0.05);
 
-    gl::TetrahedralizeOptions options;
-    options.targetEdgeLength = this->TargetEdgeLength;
-    options.autoTargetTets = this->TargetTetCount;
-    options.radiusEdgeRatio = this->RadiusEdgeRatio;
+    gl::TetrahedralizeOptions options = tetrahedralizeOptions(this);
     // After each TetGen run (the automatic edge length may need several) and at the end.
     double reported = 0.05;
     options.progress = [this, &reported](double f) {

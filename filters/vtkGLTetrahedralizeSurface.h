@@ -72,6 +72,7 @@ protected:
   ~vtkGLTetrahedralizeSurface() override = default;
 
   int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   double TargetEdgeLength;

@@ -245,6 +245,29 @@ void cutToolpath(vtkPolyData* full, vtkIdType last, vtkPolyData* out) {
   cd->SetActiveScalars(geolattice::arrays::MoveKind);
   out->GetFieldData()->ShallowCopy(full->GetFieldData());
 }
+/// The core options of the filter's parameters (checked by RequestInformation).
+gl::ToolpathOptions toolpathOptions(vtkGLToolpathPlanner* f) {
+  gl::ToolpathOptions o;
+  o.pathWidth = f->GetPathWidth();
+  o.filamentRadius = 0.5 * f->GetFilamentDiameter();
+  o.flowCorrection = f->GetFlowCorrection();
+  o.printFeedRate = f->GetPrintFeedRate();
+  o.airFeedRate = f->GetAirFeedRate();
+  o.thicknessCap = f->GetThicknessCap();
+  o.maxTurnDeg = f->GetMaxTurnAngle();
+  o.safeMargin = f->GetSafeMargin();
+  o.lift = f->GetLift();
+  o.retraction = f->GetRetraction();
+  o.supportPerimeter = f->GetSupportPerimeter() != 0;
+  o.toothLength = f->GetToothLength();
+  o.maxSegmentLength = f->GetMaxSegmentLength();
+  o.nozzle = gl::nozzleModel(f->GetNozzle());
+  o.plate = gl::buildPlate(f->GetNozzle());
+  o.clearance.maxTiltDeg = f->GetMaxAxisTilt();
+  o.clearance.blendLength = f->GetTiltBlendLength();
+  return o;
+}
+
 }  // namespace
 
 vtkGLToolpathPlanner::vtkGLToolpathPlanner() {
@@ -274,8 +297,19 @@ int vtkGLToolpathPlanner::FillInputPortInformation(int, vtkInformation* info) {
   return 1;
 }
 
-int vtkGLToolpathPlanner::RequestInformation(vtkInformation*, vtkInformationVector**,
+int vtkGLToolpathPlanner::RequestInformation(vtkInformation* request,
+                                             vtkInformationVector** inputVector,
                                              vtkInformationVector* outputVector) {
+  if (!this->Superclass::RequestInformation(request, inputVector, outputVector) ||
+      !gl::checkParameters(this, [&] {
+        if (!(this->FilamentDiameter > 0) || !std::isfinite(this->FilamentDiameter)) {
+          throw gl::GeoLatticeError("toolpath: filament diameter must be > 0 mm (got " +
+                                    std::to_string(this->FilamentDiameter) + ")");
+        }
+        toolpathOptions(this).validate();
+      })) {
+    return 0;
+  }
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   // The toolpath's time is the print progress p in [0, 1]: the point count is unknown until the
   // path is planned in RequestData.
@@ -312,10 +346,6 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
         skeleton->GetMTime() == this->PlannedSkeletonTime && this->GetMTime() == this->PlannedMTime;
     if (!cached) {
       this->Planned = nullptr;
-      if (!(this->FilamentDiameter > 0) || !std::isfinite(this->FilamentDiameter)) {
-        throw gl::GeoLatticeError("toolpath: filament diameter must be > 0 (got " +
-                                  std::to_string(this->FilamentDiameter) + ")");
-      }
       const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
       if (graph.edgeKind.size() != graph.edges.size()) {
         throw gl::GeoLatticeError(std::string("the lattice has no ") + gl::arrays::EdgeKind +
@@ -327,24 +357,7 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
       gl::matchSkeletonToLattice(tree, graph);
       gl::checkAbort(this, 0.1);
 
-      gl::ToolpathOptions options;
-      options.pathWidth = this->PathWidth;
-      options.filamentRadius = 0.5 * this->FilamentDiameter;
-      options.flowCorrection = this->FlowCorrection;
-      options.printFeedRate = this->PrintFeedRate;
-      options.airFeedRate = this->AirFeedRate;
-      options.thicknessCap = this->ThicknessCap;
-      options.maxTurnDeg = this->MaxTurnAngle;
-      options.safeMargin = this->SafeMargin;
-      options.lift = this->Lift;
-      options.retraction = this->Retraction;
-      options.supportPerimeter = this->SupportPerimeter != 0;
-      options.toothLength = this->ToothLength;
-      options.maxSegmentLength = this->MaxSegmentLength;
-      options.nozzle = gl::nozzleModel(this->Nozzle);
-      options.plate = gl::buildPlate(this->Nozzle);
-      options.clearance.maxTiltDeg = this->MaxAxisTilt;
-      options.clearance.blendLength = this->TiltBlendLength;
+      const gl::ToolpathOptions options = toolpathOptions(this);
       // The planning is one core call (core/toolpath): progress before and after it.
       const gl::Toolpath path = gl::planToolpath(graph, tree, order, options);
       gl::checkAbort(this, 0.8);

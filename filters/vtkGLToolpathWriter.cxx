@@ -2,10 +2,12 @@
 
 #include "vtkGLArrayNames.h"
 #include "vtkGLOutputFiles.h"
+#include "vtkGLRequest.h"
 
 #include "common/Error.h"
 
 #include <vtkDataArray.h>
+#include <vtkErrorCode.h>
 #include <vtkFieldData.h>
 #include <vtkInformation.h>
 #include <vtkPolyData.h>
@@ -29,6 +31,11 @@ int vtkGLToolpathWriter::FillInputPortInformation(int, vtkInformation* info) {
 vtkTypeBool vtkGLToolpathWriter::ProcessRequest(vtkInformation* request,
                                                 vtkInformationVector** inputVector,
                                                 vtkInformationVector* outputVector) {
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_INFORMATION()) &&
+      !gl::checkParameters(this, [&] { this->CheckParameters(); })) {
+    this->SetErrorCode(vtkErrorCode::UserError);  // so that Write() returns 0
+    return 0;
+  }
   if (request->Has(vtkStreamingDemandDrivenPipeline::REQUEST_UPDATE_EXTENT())) {
     gl::requestEndOfTimeRange(inputVector);
   }

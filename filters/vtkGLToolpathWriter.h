@@ -11,6 +11,9 @@
  * hit printed material) or that carries no verdict is refused with an error naming the colliding
  * station count, and nothing is written, unless AllowCollisions is on (then the program is
  * written and a warning says so).
+ *
+ * Parameters are checked in the information pass (CheckParameters), before any upstream filter
+ * computes data: a bad writer parameter fails a pipeline update at once.
  */
 #ifndef vtkGLToolpathWriter_h
 #define vtkGLToolpathWriter_h
@@ -47,6 +50,9 @@ protected:
   vtkTypeBool ProcessRequest(vtkInformation* request, vtkInformationVector** inputVector,
                              vtkInformationVector* outputVector) override;
 
+  /// Throws GeoLatticeError naming the first writer parameter out of its range (none here);
+  /// called on the information request and again by WriteData.
+  virtual void CheckParameters() {}
   /// Throws GeoLatticeError (naming `what`, e.g. "URScript writer") unless the toolpath passed
   /// the collision check or AllowCollisions is on; warns in the latter case.
   void CheckCollisionVerdict(vtkPolyData* toolpath, const char* what);

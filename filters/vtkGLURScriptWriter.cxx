@@ -126,6 +126,43 @@ void vtkGLURScriptWriter::ResetResults() {
   this->SolveSeconds = 0;
 }
 
+void vtkGLURScriptWriter::CheckParameters() {
+  gl::robotModelByName(this->Robot ? this->Robot : "");  // throws for an unknown robot
+  if (!allFinite(this->NozzleTip, 3)) {
+    throw gl::GeoLatticeError("URScript writer: the nozzle tip must be finite");
+  }
+  const Eigen::Vector3d axis(this->NozzleAxis[0], this->NozzleAxis[1], this->NozzleAxis[2]);
+  if (!axis.allFinite() || !(axis.norm() > 1e-12)) {
+    throw gl::GeoLatticeError("URScript writer: the nozzle axis must be a finite, non-zero vector");
+  }
+  if (!allFinite(this->PartOnFlange, 6)) {
+    throw gl::GeoLatticeError("URScript writer: the part-on-flange pose must be finite");
+  }
+  // The program options (checked with the property names; the core checks them again).
+  if (this->MaxFileBytes < 10000) {
+    throw gl::GeoLatticeError(
+        "URScript writer: the maximum file size must be >= 10000 bytes (got " +
+        std::to_string(this->MaxFileBytes) + ")");
+  }
+  if (!(this->SpeedFactor > 0 && this->SpeedFactor <= 1)) {
+    throw gl::GeoLatticeError("URScript writer: the speed factor must be in (0, 1] (got " +
+                              std::to_string(this->SpeedFactor) + ")");
+  }
+  if (!(this->MaxFilamentRate > 0) || !std::isfinite(this->MaxFilamentRate)) {
+    throw gl::GeoLatticeError("URScript writer: the maximum filament rate must be > 0 mm/s (got " +
+                              std::to_string(this->MaxFilamentRate) + ")");
+  }
+  if (!(this->MaxBlend >= 0) || !std::isfinite(this->MaxBlend)) {
+    throw gl::GeoLatticeError("URScript writer: the maximum blend radius must be >= 0 m (got " +
+                              std::to_string(this->MaxBlend) + ")");
+  }
+  // A larger bound would let a wrist flip into a print move: it is not a way out.
+  if (!(this->MaxJointStep > 0) || !(this->MaxJointStep <= 30)) {
+    throw gl::GeoLatticeError("URScript writer: MaxJointStep must be in (0, 30] degrees (got " +
+                              std::to_string(this->MaxJointStep) + ")");
+  }
+}
+
 void vtkGLURScriptWriter::WriteData() {
   this->ResetResults();
   // In an MPI run one process writes: the one with the toolpath (vtkGLParallel.h).
@@ -136,6 +173,7 @@ void vtkGLURScriptWriter::WriteData() {
   this->SetErrorCode(gl::runWrite(
       this,
       [&] {
+        this->CheckParameters();
         this->CheckFileName("URScript writer");
         const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
         this->CheckCollisionVerdict(inputs.Get<vtkPolyData>(0), "URScript writer");
@@ -145,45 +183,15 @@ void vtkGLURScriptWriter::WriteData() {
         // The cell.
         gl::RobotCell cell;
         cell.robot = gl::robotModelByName(this->Robot ? this->Robot : "");
-        if (!allFinite(this->NozzleTip, 3)) {
-          throw gl::GeoLatticeError("URScript writer: the nozzle tip must be finite");
-        }
         cell.nozzleTip =
             Eigen::Vector3d(this->NozzleTip[0], this->NozzleTip[1], this->NozzleTip[2]);
         const Eigen::Vector3d axis(this->NozzleAxis[0], this->NozzleAxis[1], this->NozzleAxis[2]);
-        if (!axis.allFinite() || !(axis.norm() > 1e-12)) {
-          throw gl::GeoLatticeError(
-              "URScript writer: the nozzle axis must be a finite, non-zero vector");
-        }
         cell.nozzleAxis = axis.normalized();
-        if (!allFinite(this->PartOnFlange, 6)) {
-          throw gl::GeoLatticeError("URScript writer: the part-on-flange pose must be finite");
-        }
         cell.partOnFlange =
             gl::toIsometry({this->PartOnFlange[0], this->PartOnFlange[1], this->PartOnFlange[2],
                             this->PartOnFlange[3], this->PartOnFlange[4], this->PartOnFlange[5]});
         cell.partScale = 0.001;  // toolpath mm -> m
 
-        // The program options (checked here with the property names; the core checks them again).
-        if (this->MaxFileBytes < 10000) {
-          throw gl::GeoLatticeError(
-              "URScript writer: the maximum file size must be >= 10000 bytes (got " +
-              std::to_string(this->MaxFileBytes) + ")");
-        }
-        if (!(this->SpeedFactor > 0 && this->SpeedFactor <= 1)) {
-          throw gl::GeoLatticeError("URScript writer: the speed factor must be in (0, 1] (got " +
-                                    std::to_string(this->SpeedFactor) + ")");
-        }
-        if (!(this->MaxFilamentRate > 0) || !std::isfinite(this->MaxFilamentRate)) {
-          throw gl::GeoLatticeError(
-              "URScript writer: the maximum filament rate must be > 0 mm/s (got " +
-              std::to_string(this->MaxFilamentRate) + ")");
-        }
-        if (!(this->MaxBlend >= 0) || !std::isfinite(this->MaxBlend)) {
-          throw gl::GeoLatticeError(
-              "URScript writer: the maximum blend radius must be >= 0 m (got " +
-              std::to_string(this->MaxBlend) + ")");
-        }
         gl::URScriptOptions options;
         options.maxFileBytes = static_cast<size_t>(this->MaxFileBytes);
         options.speedFactor = this->SpeedFactor;
@@ -192,12 +200,6 @@ void vtkGLURScriptWriter::WriteData() {
         options.programName = ProgramName(this->FileName);
 
         // Joints along the path (one core call: progress before and after it).
-        // A larger bound would let a wrist flip into a print move: it is not a way out.
-        if (!(this->MaxJointStep > 0) || !(this->MaxJointStep <= 30)) {
-          throw gl::GeoLatticeError(
-              "URScript writer: MaxJointStep must be in (0, 30] degrees (got " +
-              std::to_string(this->MaxJointStep) + ")");
-        }
         gl::RobotPathOptions pathOptions;
         pathOptions.maxJointStepDeg = this->MaxJointStep;
         // The cell as given, else the best mounting of the part on the flange that the robot

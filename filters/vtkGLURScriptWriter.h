@@ -196,6 +196,7 @@ protected:
   vtkGLURScriptWriter();
   ~vtkGLURScriptWriter() override;
 
+  void CheckParameters() override;
   void WriteData() override;
 
   char* Robot = nullptr;

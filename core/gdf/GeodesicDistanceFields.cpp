@@ -159,21 +159,21 @@ double percentile(std::vector<double> values, double q) {
   return values[k];
 }
 
-void validate(const GeodesicFieldOptions& o) {
-  if (!(o.timeFactor > 0) || !std::isfinite(o.timeFactor)) {
-    throw GeoLatticeError("heat time factor must be > 0 (got " + std::to_string(o.timeFactor) +
+}  // namespace
+
+void GeodesicFieldOptions::validate() const {
+  if (!(this->timeFactor > 0) || !std::isfinite(this->timeFactor)) {
+    throw GeoLatticeError("heat time factor must be > 0 (got " + std::to_string(this->timeFactor) +
                           ")");
   }
-  if (!(o.reference.norm() > 0) || !o.reference.allFinite()) {
+  if (!(this->reference.norm() > 0) || !this->reference.allFinite()) {
     throw GeoLatticeError("reference vector r must be non-zero and finite");
   }
-  if (!(o.referenceParallelDeg >= 0 && o.referenceParallelDeg < 90)) {
+  if (!(this->referenceParallelDeg >= 0 && this->referenceParallelDeg < 90)) {
     throw GeoLatticeError("reference parallel angle must be in [0, 90) degrees (got " +
-                          std::to_string(o.referenceParallelDeg) + ")");
+                          std::to_string(this->referenceParallelDeg) + ")");
   }
 }
-
-}  // namespace
 
 GeodesicDistanceFields::GeodesicDistanceFields(TetMesh mesh, const GeodesicFieldOptions& options)
     : mesh_(std::move(mesh)),
@@ -181,7 +181,7 @@ GeodesicDistanceFields::GeodesicDistanceFields(TetMesh mesh, const GeodesicField
       heat_(options.backend),
       pinnedLaplacian_(options.backend),
       dirichletLaplacian_(options.backend) {
-  validate(options_);
+  options_.validate();
   const ProgressReporter progress(options_.progress, options_.shouldAbort,
                                   "geodesic distance fields");
   progress.report(0.0);

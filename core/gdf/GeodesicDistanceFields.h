@@ -42,6 +42,8 @@ struct GeodesicFieldOptions {
   /// Polled between those steps; true stops with a GeoLatticeError "geodesic distance fields
   /// aborted" (an aborted solve() leaves the solver usable). Optional.
   std::function<bool()> shouldAbort;
+  /// Throws GeoLatticeError naming the first parameter out of its range (cheap: no data).
+  void validate() const;
 };
 
 /// @brief Seconds spent in each part of the computation.

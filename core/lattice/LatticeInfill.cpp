@@ -740,24 +740,7 @@ private:
 };
 
 void validate(const CurvedLayers& in, const LatticeOptions& o) {
-  auto positiveWidth = [](double w, const char* name) {
-    if (!(w > 0) || !std::isfinite(w)) {
-      throw GeoLatticeError(std::string(name) + " lattice width must be > 0 mm and finite (got " +
-                            std::to_string(w) + ")");
-    }
-  };
-  positiveWidth(o.alphaWidth, "α");
-  positiveWidth(o.betaWidth, "β");
-  if (!std::isfinite(o.alphaPhase) || !std::isfinite(o.betaPhase)) {
-    throw GeoLatticeError("lattice phases must be finite");
-  }
-  if (!(o.minimumSubgraphLength >= 0) || !std::isfinite(o.minimumSubgraphLength)) {
-    throw GeoLatticeError("minimum sub-graph length must be >= 0 mm (got " +
-                          std::to_string(o.minimumSubgraphLength) + ")");
-  }
-  if (o.threads < 0) {
-    throw GeoLatticeError("thread count must be >= 0 (got " + std::to_string(o.threads) + ")");
-  }
+  o.validate();
   const size_t L = in.layerValues.size(), P = in.points.size(), T = in.triangles.size();
   if (in.layerIndex.size() != L || in.layerPointOffset.size() != L + 1 ||
       in.layerTriangleOffset.size() != L + 1) {
@@ -811,6 +794,27 @@ void validate(const CurvedLayers& in, const LatticeOptions& o) {
 }
 
 }  // namespace
+
+void LatticeOptions::validate() const {
+  auto positiveWidth = [](double w, const char* name) {
+    if (!(w > 0) || !std::isfinite(w)) {
+      throw GeoLatticeError(std::string(name) + " lattice width must be > 0 mm and finite (got " +
+                            std::to_string(w) + ")");
+    }
+  };
+  positiveWidth(this->alphaWidth, "α");
+  positiveWidth(this->betaWidth, "β");
+  if (!std::isfinite(this->alphaPhase) || !std::isfinite(this->betaPhase)) {
+    throw GeoLatticeError("lattice phases must be finite");
+  }
+  if (!(this->minimumSubgraphLength >= 0) || !std::isfinite(this->minimumSubgraphLength)) {
+    throw GeoLatticeError("minimum sub-graph length must be >= 0 mm (got " +
+                          std::to_string(this->minimumSubgraphLength) + ")");
+  }
+  if (this->threads < 0) {
+    throw GeoLatticeError("thread count must be >= 0 (got " + std::to_string(this->threads) + ")");
+  }
+}
 
 LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions& options) {
   validate(layers, options);

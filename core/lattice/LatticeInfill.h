@@ -86,6 +86,8 @@ struct LatticeOptions {
   std::function<bool()> shouldAbort;
   /// Called on the calling thread with the fraction of layers done. Optional.
   std::function<void(double)> progress;
+  /// Throws GeoLatticeError naming the first parameter out of its range (cheap: no data).
+  void validate() const;
 };
 
 /// @brief A closed boundary loop of a sub-graph as a vertex sequence (the first vertex is not

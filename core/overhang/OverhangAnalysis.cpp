@@ -25,15 +25,19 @@ double overhangAngleDeg(const Vec3& nozzle, const Vec3& normal) {
   return std::acos(std::clamp(c, -1.0, 1.0)) * kRadToDeg;
 }
 
+void OverhangOptions::validate() const {
+  if (!(this->thresholdDeg > 90.0 && this->thresholdDeg <= 180.0)) {
+    throw GeoLatticeError("overhang analysis: threshold angle must be in (90, 180] degrees, got " +
+                          std::to_string(this->thresholdDeg));
+  }
+}
+
 OverhangResult analyzeOverhang(const TetMesh& mesh, const TetMeshTopology& topology,
                                const std::vector<Vec3>& nozzleDirections,
                                const std::vector<std::uint8_t>& baseVertex,
                                const OverhangOptions& options) {
+  options.validate();
   const double threshold = options.thresholdDeg;
-  if (!(threshold > 90.0 && threshold <= 180.0)) {
-    throw GeoLatticeError("overhang analysis: threshold angle must be in (90, 180] degrees, got " +
-                          std::to_string(threshold));
-  }
   const size_t numTets = mesh.tets.size();
   const size_t numPoints = mesh.points.size();
   if (nozzleDirections.size() != numTets) {

@@ -26,6 +26,8 @@ class TetMeshTopology;
 struct OverhangOptions {
   /// Overhang angle above which a face needs support (degrees), in (90, 180]. Default 135°.
   double thresholdDeg = 135.0;
+  /// Throws GeoLatticeError naming the first parameter out of its range (cheap: no data).
+  void validate() const;
 };
 
 /// @brief Per boundary face results (index f = the f-th TetMeshTopology::boundaryFaces entry)

@@ -58,9 +58,10 @@ CellLayoutResult solveWithCellLayout(const RobotCell& cell,
         continue;  // the layout as given: solved above
       }
       Candidate c{cell, rotation, offset};
-      c.cell.partOnFlange = Isometry(Eigen::Translation3d(0, 0, offset)) *
-                            Isometry(Eigen::AngleAxisd(rotation * M_PI / 180, Eigen::Vector3d::UnitZ())) *
-                            cell.partOnFlange;
+      c.cell.partOnFlange =
+          Isometry(Eigen::Translation3d(0, 0, offset)) *
+          Isometry(Eigen::AngleAxisd(rotation * M_PI / 180, Eigen::Vector3d::UnitZ())) *
+          cell.partOnFlange;
       candidates.push_back(c);
     }
   }

@@ -26,17 +26,17 @@ struct CellLayoutOptions {
   std::vector<double> offsetSteps = {0.0, 0.03, 0.06};
   double minOffset = 0.02, maxOffset = 0.15;  ///< bounds of the part's distance from the flange (m)
   size_t rankingPoints = 4000;  ///< the ranking solves every stride-th point, about this many
-  int fullSolves = 4;            ///< whole-path solves of the best ranked layouts (at most)
+  int fullSolves = 4;           ///< whole-path solves of the best ranked layouts (at most)
 };
 
 struct CellLayoutResult {
-  RobotCell cell;       ///< the layout used
-  RobotPath path;       ///< its joint path
-  double rotationDeg = 0;   ///< rotation added about the flange z axis
-  double offsetAdded = 0;   ///< metres added in front of the flange
-  bool changed = false;     ///< not the layout as given
-  int layoutsTried = 1;     ///< ranked candidates (the given one included)
-  int fullSolves = 1;       ///< whole-path solves
+  RobotCell cell;          ///< the layout used
+  RobotPath path;          ///< its joint path
+  double rotationDeg = 0;  ///< rotation added about the flange z axis
+  double offsetAdded = 0;  ///< metres added in front of the flange
+  bool changed = false;    ///< not the layout as given
+  int layoutsTried = 1;    ///< ranked candidates (the given one included)
+  int fullSolves = 1;      ///< whole-path solves
 };
 
 /// The joint path in the cell as given if it works, else in the best layout found (see the file

@@ -306,9 +306,21 @@ void evaluateSequence(const SkeletonTree& tree, const MaterialSamples& m, PrintS
   }
 }
 
+void SequenceOptions::validate() const {
+  if (this->rolloutCandidates < 1) {
+    throw GeoLatticeError("print sequencer: rollout candidates must be >= 1 (got " +
+                          std::to_string(this->rolloutCandidates) + ")");
+  }
+  if (!(this->retractionCost >= 0) || !std::isfinite(this->retractionCost)) {
+    throw GeoLatticeError("print sequencer: the retraction cost must be >= 0 mm (got " +
+                          std::to_string(this->retractionCost) + ")");
+  }
+}
+
 PrintSequence sequencePrint(const SkeletonTree& tree, const MaterialSamples& m,
                             const PotentialCollisions* pcg, const SequenceOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
+  options.validate();
   validateSkeletonTree(tree);
   const int K = static_cast<int>(tree.nodes.size());
   if (static_cast<int>(m.offset.size()) != K + 1) {
@@ -328,10 +340,6 @@ PrintSequence sequencePrint(const SkeletonTree& tree, const MaterialSamples& m,
     throw GeoLatticeError(
         "print sequencer: the a4 and best strategies need the potential collision sub-graphs of "
         "every node");
-  }
-  if (options.rolloutCandidates < 1 || !(options.retractionCost >= 0)) {
-    throw GeoLatticeError(
-        "print sequencer: rollout candidates must be >= 1 and the retraction cost >= 0");
   }
 
   const ProgressReporter progress(options.progress, options.shouldAbort, "print sequencing");

@@ -53,6 +53,8 @@ struct SequenceOptions {
   /// Polled where progress is reported; true stops with a GeoLatticeError "print sequencing
   /// aborted". Optional.
   std::function<bool()> shouldAbort;
+  /// Throws GeoLatticeError naming the first parameter out of its range (cheap: no data).
+  void validate() const;
 };
 
 struct PrintSequence {

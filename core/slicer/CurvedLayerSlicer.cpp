@@ -86,20 +86,25 @@ void validate(const TetMesh& mesh, const Eigen::VectorXd& gamma, const Eigen::Ve
   if (!gamma.allFinite()) {
     throw GeoLatticeError("γ has non-finite values");
   }
-  if (!(o.interval > 0) || !std::isfinite(o.interval)) {
-    throw GeoLatticeError("layer interval must be > 0 mm (got " + std::to_string(o.interval) + ")");
-  }
-  if (!(o.firstLayerOffset > 0) || !std::isfinite(o.firstLayerOffset)) {
-    throw GeoLatticeError("first layer offset must be > 0 mm (got " +
-                          std::to_string(o.firstLayerOffset) + ")");
-  }
-  if (o.firstLayer < 0 || (o.lastLayer >= 0 && o.lastLayer < o.firstLayer)) {
-    throw GeoLatticeError("invalid layer range [" + std::to_string(o.firstLayer) + ", " +
-                          std::to_string(o.lastLayer) + "]");
-  }
+  o.validate();
 }
 
 }  // namespace
+
+void SlicerOptions::validate() const {
+  if (!(this->interval > 0) || !std::isfinite(this->interval)) {
+    throw GeoLatticeError("layer interval must be > 0 mm (got " + std::to_string(this->interval) +
+                          ")");
+  }
+  if (!(this->firstLayerOffset > 0) || !std::isfinite(this->firstLayerOffset)) {
+    throw GeoLatticeError("first layer offset must be > 0 mm (got " +
+                          std::to_string(this->firstLayerOffset) + ")");
+  }
+  if (this->firstLayer < 0 || (this->lastLayer >= 0 && this->lastLayer < this->firstLayer)) {
+    throw GeoLatticeError("invalid layer range [" + std::to_string(this->firstLayer) + ", " +
+                          std::to_string(this->lastLayer) + "]");
+  }
+}
 
 int layerCount(double gammaMax, const SlicerOptions& o) {
   if (!(o.interval > 0) || gammaMax < o.firstLayerOffset) {

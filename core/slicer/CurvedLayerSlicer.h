@@ -32,6 +32,8 @@ struct SlicerOptions {
   /// Polled where progress is reported; true stops with a GeoLatticeError "curved layer slicing
   /// aborted". Optional.
   std::function<bool()> shouldAbort;
+  /// Throws GeoLatticeError naming the first parameter out of its range (cheap: no data).
+  void validate() const;
 };
 
 /// Number of layers φ_i <= γ_max: floor((γ_max - offset) / interval) + 1 (0 if offset > γ_max).

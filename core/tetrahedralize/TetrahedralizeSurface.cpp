@@ -180,28 +180,35 @@ double automaticEdgeLength(double enclosedVolume, int targetTets) {
                    (kGuessMeanTetVolumeOverBound * targetTets));
 }
 
-TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
-                                           const TetrahedralizeOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  if (!(options.targetEdgeLength >= 0.0) || !std::isfinite(options.targetEdgeLength)) {
+void TetrahedralizeOptions::validate() const {
+  if (!(this->targetEdgeLength >= 0.0) || !std::isfinite(this->targetEdgeLength)) {
     throw GeoLatticeError("target edge length must be >= 0 mm (0 = automatic), got " +
-                          std::to_string(options.targetEdgeLength));
+                          std::to_string(this->targetEdgeLength));
   }
-  if (!(options.radiusEdgeRatio >= kMinRadiusEdgeRatio &&
-        options.radiusEdgeRatio <= kMaxRadiusEdgeRatio)) {
+  if (!(this->radiusEdgeRatio >= kMinRadiusEdgeRatio &&
+        this->radiusEdgeRatio <= kMaxRadiusEdgeRatio)) {
     throw GeoLatticeError("radius-edge ratio must be in [" +
                           formatSwitchNumber(kMinRadiusEdgeRatio) + ", " +
                           formatSwitchNumber(kMaxRadiusEdgeRatio) + "], got " +
-                          std::to_string(options.radiusEdgeRatio));
+                          std::to_string(this->radiusEdgeRatio));
   }
-  const bool automatic = options.targetEdgeLength == 0.0;
-  if (automatic && (options.autoTargetTets < kMinAutoTargetTets ||
-                    options.autoTargetTets > kMaxAutoTargetTets)) {
+  if (this->targetEdgeLength == 0.0 &&
+      (this->autoTargetTets < kMinAutoTargetTets || this->autoTargetTets > kMaxAutoTargetTets)) {
     throw GeoLatticeError(
         "automatic target tet count must be in [" + std::to_string(kMinAutoTargetTets) + ", " +
-        std::to_string(kMaxAutoTargetTets) + "], got " + std::to_string(options.autoTargetTets));
+        std::to_string(kMaxAutoTargetTets) + "], got " + std::to_string(this->autoTargetTets));
   }
+  if (!(this->simplifyFinerThan >= 0) || !std::isfinite(this->simplifyFinerThan)) {
+    throw GeoLatticeError("surface simplification threshold must be >= 0 (0 = never), got " +
+                          std::to_string(this->simplifyFinerThan));
+  }
+}
 
+TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
+                                           const TetrahedralizeOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  options.validate();
+  const bool automatic = options.targetEdgeLength == 0.0;
   const SurfaceCheckReport report = requireClosedManifold(input);
   // Only the vertices of triangles go to TetGen: a stray point inside the solid would become a
   // mesh vertex.

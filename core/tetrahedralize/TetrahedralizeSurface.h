@@ -44,6 +44,8 @@ struct TetrahedralizeOptions {
   /// (runs / kMaxAutoAttempts of 0.9 for the automatic edge length, 0.9 for a given one) and
   /// 1 at the end. Optional.
   std::function<void(double)> progress;
+  /// Throws GeoLatticeError naming the first parameter out of its range (cheap: no data).
+  void validate() const;
 };
 
 /// @brief Mesh plus what was done to get it.

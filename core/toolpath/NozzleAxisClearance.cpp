@@ -98,6 +98,21 @@ bool findClearAxis(const Obstacles& obstacles, const Vec3& reference, const Vec3
 
 }  // namespace
 
+void AxisClearanceOptions::validate() const {
+  if (!(this->maxTiltDeg >= 0 && this->maxTiltDeg <= 60)) {
+    throw GeoLatticeError("axis clearance: the largest tilt must be in [0, 60] degrees (got " +
+                          std::to_string(this->maxTiltDeg) + ")");
+  }
+  if (!(this->marginDeg >= 0 && this->marginDeg < 10)) {
+    throw GeoLatticeError("axis clearance: the margin must be in [0, 10) degrees (got " +
+                          std::to_string(this->marginDeg) + ")");
+  }
+  if (!(this->blendLength >= 0) || !std::isfinite(this->blendLength)) {
+    throw GeoLatticeError("axis clearance: the blend length must be >= 0 mm (got " +
+                          std::to_string(this->blendLength) + ")");
+  }
+}
+
 AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector<Vec3>& axes,
                                     const std::vector<Vec3>& reference,
                                     const std::vector<char>& material, const NozzleModel& nozzle,
@@ -105,19 +120,12 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
                                     const std::vector<Vec3>* fixedObstacles) {
   const auto t0 = std::chrono::steady_clock::now();
   nozzle.validate();
+  o.validate();
   const size_t N = points.size();
   if (axes.size() != N || reference.size() != N || material.size() != N) {
     throw GeoLatticeError(
         "axis clearance: points, axes, reference axes and material flags must have the same "
         "length");
-  }
-  if (!(o.maxTiltDeg >= 0 && o.maxTiltDeg <= 60) || !(o.marginDeg >= 0 && o.marginDeg < 10) ||
-      !(o.blendLength >= 0) || !std::isfinite(o.blendLength)) {
-    std::ostringstream s;
-    s << "axis clearance: the largest tilt must be in [0, 60] degrees (got " << o.maxTiltDeg
-      << "), the margin in [0, 10) degrees (got " << o.marginDeg
-      << ") and the blend length >= 0 mm (got " << o.blendLength << ")";
-    throw GeoLatticeError(s.str());
   }
   AxisClearanceResult result;
   // Obstacles: the material points at their index along the path, then the fixed obstacles

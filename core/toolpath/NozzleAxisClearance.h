@@ -29,6 +29,8 @@ struct AxisClearanceOptions {
       15.0;  ///< largest angle between the axis and the layer normal (deg, in [0, 60]); 0 = off
   double marginDeg = 0.5;    ///< obstacles end at least this far outside the cone (deg, >= 0)
   double blendLength = 5.0;  ///< a tilt fades out over this path length on each side (mm, >= 0)
+  /// Throws GeoLatticeError naming the first parameter out of its range.
+  void validate() const;
 };
 
 struct AxisClearanceResult {

@@ -14,9 +14,7 @@
 
 namespace geolattice {
 
-namespace {
-
-void validate(const ToolpathOptions& o) {
+void ToolpathOptions::validate() const {
   auto positive = [](double v, const char* what) {
     if (!(v > 0) || !std::isfinite(v)) {
       std::ostringstream s;
@@ -24,27 +22,31 @@ void validate(const ToolpathOptions& o) {
       throw GeoLatticeError(s.str());
     }
   };
-  positive(o.pathWidth, "path width");
-  positive(o.filamentRadius, "filament radius");
-  positive(o.printFeedRate, "print feed rate");
-  positive(o.airFeedRate, "air feed rate");
-  positive(o.thicknessCap, "thickness cap lambda");
-  positive(o.maxTurnDeg, "maximum turn angle");
-  positive(o.lift, "lift");
-  if (!(o.maxSegmentLength >= 0) || !std::isfinite(o.maxSegmentLength)) {
+  positive(this->pathWidth, "path width");
+  positive(this->filamentRadius, "filament radius");
+  positive(this->printFeedRate, "print feed rate");
+  positive(this->airFeedRate, "air feed rate");
+  positive(this->thicknessCap, "thickness cap lambda");
+  positive(this->maxTurnDeg, "maximum turn angle");
+  positive(this->lift, "lift");
+  if (!(this->maxSegmentLength >= 0) || !std::isfinite(this->maxSegmentLength)) {
     throw GeoLatticeError("toolpath: the longest segment must be >= 0 mm (0 = no subdivision)");
   }
-  o.nozzle.validate();
-  if (!(o.toothLength >= 0) || !std::isfinite(o.toothLength)) {
+  this->nozzle.validate();
+  this->plate.validate();
+  this->clearance.validate();
+  if (!(this->toothLength >= 0) || !std::isfinite(this->toothLength)) {
     throw GeoLatticeError("toolpath: tooth length must be >= 0 mm (0 = twice the path width)");
   }
-  if (!(o.flowCorrection > 0 && o.flowCorrection <= 1)) {
+  if (!(this->flowCorrection > 0 && this->flowCorrection <= 1)) {
     throw GeoLatticeError("toolpath: flow correction mu must be in (0, 1]");
   }
-  if (!(o.safeMargin >= 0) || !(o.retraction >= 0)) {
+  if (!(this->safeMargin >= 0) || !(this->retraction >= 0)) {
     throw GeoLatticeError("toolpath: safe margin and retraction must be >= 0");
   }
 }
+
+namespace {
 
 class PathBuilder {
 public:
@@ -172,7 +174,7 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o) {
 Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
                       const std::vector<int>& order, const ToolpathOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
-  validate(o);
+  o.validate();
   const int K = static_cast<int>(input.subgraphs.size());
   if (K == 0) {
     throw GeoLatticeError("toolpath: the lattice has no sub-graph");

@@ -53,6 +53,8 @@ struct ToolpathOptions {
   BuildPlate plate;    ///< the build plate, an obstacle like material (enabled by default)
   AxisClearanceOptions
       clearance;  ///< tilts off ∇γ where the nozzle would collide (maxTiltDeg 0 = off)
+  /// Throws GeoLatticeError naming the first parameter out of its range (cheap: no data).
+  void validate() const;
 };
 
 struct Toolpath {

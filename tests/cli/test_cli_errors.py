@@ -7,6 +7,7 @@ import shutil
 import subprocess
 import sys
 import tempfile
+import time
 import unittest
 
 CLI = os.environ["GEOLATTICE_CLI"]
@@ -144,15 +145,92 @@ class CliErrorTest(unittest.TestCase):
             self.expect_error(cube + [flag, "abc"], flag)
         for steps in ("-1", "2.5", "abc"):
             self.expect_error(cube + ["--replay-steps", steps], "--replay-steps")
-        # Out of range: the planner's messages (as in ParaView), at the toolpath stage.
-        self.expect_error(cube + ["--path-width", "0"], "toolpath", "path width must be > 0")
-        self.expect_error(cube + ["--flow", "1.5"], "toolpath", "flow correction mu must be in (0, 1]")
-        self.expect_error(cube + ["--filament-diameter", "-1"], "toolpath", "filament diameter must be > 0")
-        self.expect_error(cube + ["--max-turn", "0"], "toolpath", "maximum turn angle must be > 0")
-        self.expect_error(cube + ["--retraction", "-1"], "toolpath", "retraction must be >= 0")
-        # The stages before the toolpath were written completely.
-        self.assertTrue(os.path.isfile(os.path.join(self.out, "lattice.vtp")))
-        self.assertFalse(os.path.exists(os.path.join(self.out, "toolpath.vtp")))
+        # Out of range: the planner's messages (as in ParaView), before the first stage runs.
+        self.expect_error(cube + ["--path-width", "0"], "parameters", "path width must be > 0")
+        self.expect_error(cube + ["--flow", "1.5"], "parameters", "flow correction mu must be in (0, 1]")
+        self.expect_error(cube + ["--filament-diameter", "-1"], "parameters", "filament diameter must be > 0")
+        self.expect_error(cube + ["--max-turn", "0"], "parameters", "maximum turn angle must be > 0")
+        self.expect_error(cube + ["--retraction", "-1"], "parameters", "retraction must be >= 0")
+        self.assertFalse(os.path.exists(os.path.join(self.out, "tets.vtu")))
+
+    def test_parameters_fail_before_the_first_stage(self):
+        # On the bunny meshing and the fields alone take seconds: a bad parameter of any stage the
+        # run reaches must stop it in well under a second, naming the flag and its range.
+        bunny = [os.path.join(TESTDATA, "bunny.obj"), "--fit-size", "80"]
+        cases = [(["--layer-interval", "0"], "layer interval must be > 0"),
+                 (["--lattice-width", "-1"], "lattice width must be > 0"),
+                 (["--nozzle-angle", "95"], "nozzle angle"),
+                 (["--max-tilt", "75"], "[0, 60]"),
+                 (["--max-joint-step", "45"], "--max-joint-step must be in (0, 30]"),
+                 (["--time-factor", "0"], "time factor"),
+                 (["--sample-spacing", "0"], "sample spacing must be > 0"),
+                 (["--edge-length", "-1"], "edge length")]
+        for args, words in cases:
+            start = time.monotonic()
+            line = self.expect_error(bunny + args, "parameters", words)
+            self.assertLess(time.monotonic() - start, 1.0, line)
+            with open(os.path.join(self.out, "report.json")) as f:
+                self.assertEqual(json.load(f)["failed"]["stage"], "parameters")
+            self.assertFalse(os.path.exists(os.path.join(self.out, "tets.vtu")), line)
+        # A stage the run does not reach is not checked.
+        result = self.run_cli(*bunny, "--max-joint-step", "45", "--until", "mesh", "--edge-length", "8",
+                              "-o", self.out, "-q")
+        self.assertEqual(result.returncode, 0, result.stderr)
+
+    def test_unit_mistakes_fail_at_input(self):
+        # A part exported in metres (0.05 across) and one with coordinates around 1e12.
+        metres = "".join("v %g %g %g\n" % tuple(0.05 * float(x) for x in line.split()[1:])
+                         for line in CUBE_OBJ.splitlines() if line.startswith("v "))
+        metres += "".join(line + "\n" for line in CUBE_OBJ.splitlines() if line.startswith("f"))
+        start = time.monotonic()
+        self.expect_error([write(os.path.join(self.tmp, "metres.obj"), metres)], "0.05 mm", "metres",
+                          "--scale 1000")
+        self.assertLess(time.monotonic() - start, 1.0)
+        huge = CUBE_OBJ.replace("v 1", "v 1e12")
+        self.expect_error([write(os.path.join(self.tmp, "huge.obj"), huge)], "across", "--fit-size")
+
+    def test_non_finite_coordinates_named_at_read_time(self):
+        for bad in ("nan", "inf", "-inf"):
+            obj = CUBE_OBJ.replace("v 1 1 0", "v 1 %s 0" % bad)
+            start = time.monotonic()
+            line = self.expect_error([write(os.path.join(self.tmp, "bad.obj"), obj)], "input",
+                                     "non-finite coordinates", "bad.obj", "vertex 2")
+            self.assertLess(time.monotonic() - start, 1.0, line)
+        off = "OFF\n4 4 0\n0 0 0\n1 0 0\n0 nan 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"
+        self.expect_error([write(os.path.join(self.tmp, "bad.off"), off)], "non-finite", "bad.off:5")
+
+    def test_binary_stl_sanity(self):
+        # Garbage named .stl (it used to abort the process allocating billions of triangles), a
+        # truncated binary STL and a file shorter than the header: a clear error, exit status 1.
+        garbage = os.path.join(self.tmp, "garbage.stl")
+        with open(garbage, "wb") as f:
+            f.write(bytes((i * 7919 + 13) % 256 for i in range(5000)))
+        start = time.monotonic()
+        result = self.run_cli(garbage, "-o", self.out)
+        self.assertEqual(result.returncode, 1, result.stderr)
+        self.assertIn("not a valid binary STL", result.stderr)
+        self.assertLess(time.monotonic() - start, 1.0)
+        # A real binary STL (the cube, 12 triangles), then cut short.
+        import struct
+        verts = [tuple(float(x) for x in l.split()[1:]) for l in CUBE_OBJ.splitlines() if l.startswith("v ")]
+        faces = [tuple(int(i) - 1 for i in l.split()[1:]) for l in CUBE_OBJ.splitlines() if l.startswith("f")]
+        data = b"binary cube".ljust(80, b" ") + struct.pack("<I", len(faces))
+        for a, b, c in faces:
+            data += struct.pack("<3f", 0, 0, 0) + b"".join(struct.pack("<3f", *verts[i]) for i in (a, b, c)) + b"\0\0"
+        self.assertEqual(len(data), 84 + 50 * 12)
+        truncated = os.path.join(self.tmp, "truncated.stl")
+        with open(truncated, "wb") as f:
+            f.write(data[:-30])
+        self.expect_error([truncated], "12 triangles", "truncated")
+        tiny = os.path.join(self.tmp, "tiny.stl")
+        with open(tiny, "wb") as f:
+            f.write(b"\x00\x01\x02")
+        self.expect_error([tiny], "not an STL file")
+        good = os.path.join(self.tmp, "cube.stl")
+        with open(good, "wb") as f:
+            f.write(data)
+        result = self.run_cli(good, "--fit-size", "10", "--until", "mesh", "-o", self.out, "-q")
+        self.assertEqual(result.returncode, 0, result.stderr)
 
     def test_replay_steps_replace_earlier_ones(self):
         cube = [os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "-o", self.out, "-q"]
@@ -208,12 +286,16 @@ class CliErrorTest(unittest.TestCase):
         self.expect_error(cube + ["--gcode", "xyz"], "--gcode", "ac, bc or none")
         self.expect_error(cube + ["--tilt-limits", "10"], "--tilt-limits", "MIN,MAX")
         self.assertFalse(os.path.exists(self.out))
-        # Out of range: the writers' messages, at the program stage.
-        self.expect_error(cube + ["--speed-factor", "0"], "program", "speed factor must be in (0, 1]")
-        self.expect_error(cube + ["--max-filament-rate", "0"], "program", "maximum filament rate must be > 0")
-        self.expect_error(cube + ["--nozzle-axis", "0,0,0"], "program", "nozzle axis")
-        self.expect_error(cube + ["--tilt-limits", "30,-30"], "program", "tilt limits", "--gcode none")
-        self.assertEqual([n for n in self.program_files() if n.endswith(".script")], [])
+        # Out of range: the writers' messages, before the first stage runs.
+        self.expect_error(cube + ["--speed-factor", "0"], "parameters", "speed factor must be in (0, 1]")
+        self.expect_error(cube + ["--max-filament-rate", "0"], "parameters", "maximum filament rate must be > 0")
+        self.expect_error(cube + ["--nozzle-axis", "0,0,0"], "parameters", "nozzle axis")
+        self.expect_error(cube + ["--tilt-limits", "30,-30"], "parameters", "tilt limits")
+        # Without G-code its writer's parameters do not matter.
+        result = self.run_cli(*cube, "--tilt-limits", "30,-30", "--gcode", "none", "-o", self.out, "-q")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("print_part.script", self.program_files())
+        self.assertNotIn("toolpath.gcode", self.program_files())
 
     def test_gcode_out_of_tilt_limits_is_reported_not_fatal(self):
         # Flat layers need tilt 0; a table limited to 5..10 degrees cannot do it. The G-code is
@@ -294,10 +376,10 @@ class CliErrorTest(unittest.TestCase):
         self.assertFalse(os.path.exists(os.path.join(self.out, "fields.vtu")))
         with open(os.path.join(self.out, "report.json")) as f:
             report = json.load(f)
-        self.assertEqual(report["failed"]["stage"], "gdf")
+        self.assertEqual(report["failed"]["stage"], "parameters")
         self.assertIn("time factor", report["failed"]["message"])
         self.assertEqual(report["exit_status"], 1)
-        self.assertEqual([f["file"] for f in report["files"]], ["tets.vtu"])
+        self.assertEqual([f["file"] for f in report["files"]], [])
 
 
 class CliGateTest(unittest.TestCase):

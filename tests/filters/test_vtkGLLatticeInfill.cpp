@@ -320,8 +320,8 @@ TEST(vtkGLLatticeInfill, BadInputIsReported) {
   auto noLayer = toPolyData(layers);
   noLayer->GetCellData()->RemoveArray(arrays::LayerId);
   expectError(noLayer, "no cell array 'LayerId'");
-  expectError(toPolyData(layers), "lattice widths must be > 0", 0.0);
-  expectError(toPolyData(layers), "lattice widths must be > 0", -4.0);
+  expectError(toPolyData(layers), "lattice width must be > 0", 0.0);
+  expectError(toPolyData(layers), "lattice width must be > 0", -4.0);
   vtkNew<vtkPolyData> empty;
   expectError(empty, "no layer triangles");
   // A quad among the triangles.
