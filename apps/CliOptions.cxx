@@ -326,6 +326,23 @@ std::vector<CliOption> makeTable() {
                      "GLLatticeInfill.MinimumSubgraphLength", lattice,
                      &vtkGLLatticeInfill::SetMinimumSubgraphLength,
                      &vtkGLLatticeInfill::GetMinimumSubgraphLength));
+  t.push_back({"--max-elements", "N", latt,
+               "refuse a stage estimated to make more elements: layer points + triangles, "
+               "lattice vertices + edges, sub-graph pairs, toolpath stations (40e6 ~ 8 GB)",
+               "GLLatticeInfill.MaximumElements",
+               [](P& p, RunOptions&, const std::string& v) {
+                 const double n = parseNumber("--max-elements", v);
+                 if (!(n >= 1)) {
+                   throw UsageError("--max-elements must be >= 1 (got " + v + ")");
+                 }
+                 p.Slicer->SetMaximumElements(n);
+                 p.LatticeInfill->SetMaximumElements(n);
+                 p.Planner->SetMaximumElements(n);
+                 p.Sequencer->SetMaximumElements(n);
+               },
+               [](P& p, const RunOptions&) {
+                 return text(p.LatticeInfill->GetMaximumElements());
+               }});
 
   t.push_back({"--strategy", "NAME", seq,
                "lpt | dpt | a4 | best (best = rollout of a4, never worse)",

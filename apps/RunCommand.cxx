@@ -2,6 +2,7 @@
 
 #include "CliOptions.h"
 #include "ErrorCapture.h"
+#include "Interrupt.h"
 #include "OutputFiles.h"
 #include "OrientationCsv.h"
 #include "SequenceCsv.h"
@@ -91,11 +92,19 @@ public:
     this->Report["geolattice_version"] = GEOLATTICE_VERSION;
     this->Report["model"] = R.model;
     prepareOutputDirectory(R.outDir);
+    const InterruptHandler interrupt;
     try {
       const int status = this->Stages();
       this->Finish(status);
       return status;
     } catch (const StageError& e) {
+      if (InterruptHandler::Interrupted()) {
+        this->Report["failed"] = {{"stage", e.Stage}, {"message", "interrupted (Ctrl-C)"}};
+        this->Finish(kExitInterrupted);
+        std::cerr << "geolattice: interrupted: the " << e.Stage
+                  << " stage was stopped by Ctrl-C (report.json names it)\n";
+        return kExitInterrupted;
+      }
       this->Report["failed"] = {{"stage", e.Stage}, {"message", withFlagNames(e.Message)}};
       this->Finish(kExitError);
       throw GeoLatticeError(e.Stage + ": " + withFlagNames(e.Message));
@@ -434,7 +443,15 @@ private:
     int ok = 0;
     {
       const ProgressPrinter percent(last, !R.quiet && IsLongStage(stage));
+      std::vector<vtkAlgorithm*> stageFilters(watched);
+      if (stageFilters.empty()) {
+        stageFilters.push_back(last);
+      }
+      const AbortOnInterrupt abort(stageFilters);
       ok = last->GetExecutive()->Update();
+    }
+    if (InterruptHandler::Interrupted()) {
+      throw StageError(stage, "interrupted");
     }
     this->LastSeconds = secondsSince(start);
     if (!R.quiet) {
@@ -459,7 +476,11 @@ private:
     ErrorCapture errors;
     errors.Watch(writer);
     const ProgressPrinter printer(writer, percent);
+    const AbortOnInterrupt abort({writer});
     const int ok = writer->Write();
+    if (InterruptHandler::Interrupted()) {
+      throw StageError("program", "interrupted");  // the writers run in the program stage
+    }
     if (errors.Message.empty() && !ok) {
       errors.Message = std::string(writer->GetClassName()) + " failed";
     }

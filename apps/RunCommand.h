@@ -9,7 +9,8 @@
 ///   2  bad usage (unknown option, malformed value), nothing written;
 ///   4  gate: the toolpath collides (nozzle or plate): inspection outputs written, no program;
 ///   5  gate: toolpath points the robot cannot reach: no program;
-///   6  gate: a joint flip or joint limit the cell layout search could not avoid: no program.
+///   6  gate: a joint flip or joint limit the cell layout search could not avoid: no program;
+///   130 interrupted by Ctrl-C: the running stage stopped, report.json names it.
 /// (3 is `geolattice verify`'s collision status.) A gate prints exactly one line on stderr.
 
 namespace geolattice {
@@ -21,7 +22,8 @@ enum ExitStatus {
   kExitVerifyCollision = 3,
   kExitCollisionGate = 4,
   kExitUnreachableGate = 5,
-  kExitJointGate = 6
+  kExitJointGate = 6,
+  kExitInterrupted = 130
 };
 
 /// Runs `geolattice run ...` (argv[1] == "run"); returns the exit status. Throws UsageError for

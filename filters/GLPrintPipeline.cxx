@@ -1,4 +1,5 @@
 #include "GLPrintPipeline.h"
+#include "vtkGLProgress.h"
 
 #include "vtkGLArrayNames.h"
 
@@ -86,4 +87,12 @@ const char* GLPrintPipeline::StageName(Stage stage) {
       "overhang",       "lattice", "skeleton", "sequence", "sequence-verify", "toolpath",
       "toolpath-verify"};
   return stage >= 0 && stage < NumberOfStages ? names[stage] : "";
+}
+
+void GLPrintPipeline::RequestStop() {
+  geolattice::stopRequest().store(true);
+}
+
+void GLPrintPipeline::ClearStopRequest() {
+  geolattice::stopRequest().store(false);
 }

@@ -74,6 +74,12 @@ public:
   /// "sequence-verify", "toolpath", "toolpath-verify".
   static const char* StageName(Stage stage);
 
+  /// Asks every running GeoLattice filter to stop at its next abort poll, as if its AbortExecute
+  /// were set (safe to call from a signal handler: it stores a lock-free atomic). Used by the
+  /// CLI for Ctrl-C; ClearStopRequest() before the next run.
+  static void RequestStop();
+  static void ClearStopRequest();
+
   vtkNew<vtkGLNozzle> Nozzle;  ///< shared by Sequence, both verifiers and Toolpath
   vtkNew<vtkGLMeshReader> Reader;
   vtkNew<vtkGLPlaceOnPlatform> Placement;

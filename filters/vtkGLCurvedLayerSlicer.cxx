@@ -118,6 +118,7 @@ gl::SlicerOptions slicerOptions(vtkGLCurvedLayerSlicer* f) {
   o.firstLayerOffset = f->GetFirstLayerOffset();
   o.firstLayer = f->GetFirstLayer();
   o.lastLayer = f->GetLastLayer();
+  o.maxElements = f->GetMaximumElements();
   return o;
 }
 
@@ -130,6 +131,7 @@ vtkGLCurvedLayerSlicer::vtkGLCurvedLayerSlicer() {
   this->FirstLayerOffset = defaults.firstLayerOffset;
   this->FirstLayer = defaults.firstLayer;
   this->LastLayer = defaults.lastLayer;
+  this->MaximumElements = defaults.maxElements;
 }
 
 int vtkGLCurvedLayerSlicer::FillInputPortInformation(int, vtkInformation* info) {
@@ -191,7 +193,8 @@ int vtkGLCurvedLayerSlicer::RequestData(vtkInformation*, vtkInformationVector** 
     gl::addFieldArray(fd, gl::arrays::LayerValues, layers.layerValues);
     gl::addFieldArray(fd, gl::arrays::LayerComponents, componentCount);
     if (this->ComputeStatistics) {
-      const auto stats = gl::computeLayerStatistics(layers);
+      const auto stats = gl::computeLayerStatistics(layers, 0, gl::progressRange(this, 0.85, 0.95),
+                                                    gl::abortFlag(this));
       std::vector<double> area(L), smin(L), smean(L), smax(L);
       for (int l = 0; l < L; ++l) {
         area[l] = stats[l].area;
@@ -217,6 +220,7 @@ void vtkGLCurvedLayerSlicer::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "FirstLayerOffset: " << this->FirstLayerOffset << " mm\n";
   os << indent << "FirstLayer: " << this->FirstLayer << "\n";
   os << indent << "LastLayer: " << this->LastLayer << "\n";
+  os << indent << "MaximumElements: " << this->MaximumElements << "\n";
   os << indent << "SelectedLayer: " << this->SelectedLayer << "\n";
   os << indent << "ComputeStatistics: " << this->ComputeStatistics << "\n";
 }

@@ -21,7 +21,8 @@
  *     from the layer's points to the next layer, mm; NaN for the last layer).
  * Parameters: LayerInterval (mm, default 0.6, > 0), FirstLayerOffset (mm, default 0.6, > 0),
  *   FirstLayer / LastLayer (index range; LastLayer -1 = to the top), SelectedLayer (default 0),
- *   ComputeStatistics (default on).
+ *   ComputeStatistics (default on), MaximumElements (default 40e6: more estimated layer points
+ *   + triangles is refused before slicing, see core/common/WorkLimit.h).
  * Errors (missing arrays, interval <= 0, an offset above max γ so that there is no layer,
  * non-tet cells) are reported with vtkErrorMacro and give empty outputs.
  */
@@ -47,6 +48,13 @@ public:
   /// γ of the first layer (mm, default 0.6).
   vtkSetMacro(FirstLayerOffset, double);
   vtkGetMacro(FirstLayerOffset, double);
+  ///@}
+
+  ///@{
+  /// Bound against runaway work (core/common/WorkLimit.h): an output estimated to have more
+  /// elements than this is refused before it is built (default 40e6, about 8 GB).
+  vtkSetClampMacro(MaximumElements, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumElements, double);
   ///@}
 
   ///@{
@@ -82,6 +90,7 @@ protected:
   double FirstLayerOffset;
   int FirstLayer;
   int LastLayer;
+  double MaximumElements;
   int SelectedLayer = 0;
   vtkTypeBool ComputeStatistics = true;
 

@@ -281,6 +281,7 @@ gl::LatticeOptions latticeOptions(vtkGLLatticeInfill* f) {
   o.minimumSubgraphLength = f->GetMinimumSubgraphLength();
   o.mergeQuadDiagonalPoints = f->GetMergeQuadDiagonalPoints();
   o.threads = f->GetNumberOfThreads();
+  o.maxElements = f->GetMaximumElements();
   return o;
 }
 
@@ -295,6 +296,7 @@ vtkGLLatticeInfill::vtkGLLatticeInfill() {
   this->MinimumSubgraphLength = defaults.minimumSubgraphLength;
   this->MergeQuadDiagonalPoints = defaults.mergeQuadDiagonalPoints;
   this->NumberOfThreads = defaults.threads;
+  this->MaximumElements = defaults.maxElements;
 }
 
 int vtkGLLatticeInfill::FillInputPortInformation(int, vtkInformation* info) {
@@ -366,6 +368,7 @@ void vtkGLLatticeInfill::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "AlphaPhase: " << this->AlphaPhase << " mm\n";
   os << indent << "BetaPhase: " << this->BetaPhase << " mm\n";
   os << indent << "MinimumSubgraphLength: " << this->MinimumSubgraphLength << " mm\n";
+  os << indent << "MaximumElements: " << this->MaximumElements << "\n";
   os << indent << "MergeQuadDiagonalPoints: " << this->MergeQuadDiagonalPoints << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -29,8 +29,9 @@
  *     per sub-graph `SubgraphLayer`, `SubgraphLength` (mm), `SubgraphCentroid` (mm).
  * Parameters: AlphaWidth, BetaWidth (lattice widths a, b in mm, default 4, > 0), AlphaPhase,
  *   BetaPhase (offset of the levels in mm, default 0), MinimumSubgraphLength (mm, default 0 =
- *   keep all; shorter sub-graphs are dropped and counted), NumberOfThreads (default 0 = all
- *   cores), and optionally a point array chosen with SetInputArrayToProcess(0, 0, 0,
+ *   keep all; shorter sub-graphs are dropped and counted), MaximumElements (default 40e6: a
+ *   lattice estimated to have more vertices + edges is refused before it is built, ~8 GB down
+ *   to the toolpath), NumberOfThreads (default 0 = all cores), and optionally a point array chosen with SetInputArrayToProcess(0, 0, 0,
  *   vtkDataObject::FIELD_ASSOCIATION_POINTS, name): a width scale per layer point (> 0; 0.5 =
  *   twice as dense) for a graded lattice (levels remapped along α and β, see
  *   core/lattice/LatticeLevels.h). No array or the name "None" gives the uniform lattice.
@@ -84,6 +85,13 @@ public:
   ///@}
 
   ///@{
+  /// Bound against runaway work (core/common/WorkLimit.h): more estimated vertices + edges than
+  /// this is refused before the lattice is built (default 40e6, about 8 GB).
+  vtkSetClampMacro(MaximumElements, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumElements, double);
+  ///@}
+
+  ///@{
   /// Worker threads over the layers (default 0 = hardware concurrency).
   vtkSetClampMacro(NumberOfThreads, int, 0, 256);
   vtkGetMacro(NumberOfThreads, int);
@@ -102,6 +110,7 @@ protected:
   double AlphaPhase;
   double BetaPhase;
   double MinimumSubgraphLength;
+  double MaximumElements;
   vtkTypeBool MergeQuadDiagonalPoints;
   int NumberOfThreads;
 

@@ -183,6 +183,7 @@ vtkGLPrintSequencer::vtkGLPrintSequencer() {
   this->RetractionCost = defaults.retractionCost;
   this->SampleSpacing = gl::MaterialSampling{}.spacing;
   this->NumberOfThreads = gl::PotentialCollisionOptions{}.threads;
+  this->MaximumElements = gl::PotentialCollisionOptions{}.maxPairs;
 }
 
 int vtkGLPrintSequencer::FillInputPortInformation(int, vtkInformation* info) {
@@ -234,6 +235,7 @@ int vtkGLPrintSequencer::RequestData(vtkInformation*, vtkInformationVector** inp
     if (needPcg) {
       gl::PotentialCollisionOptions pcgOptions;
       pcgOptions.threads = this->NumberOfThreads;
+      pcgOptions.maxPairs = this->MaximumElements;
       pcgOptions.progress = gl::progressRange(this, 0.1, 0.6);
       pcgOptions.shouldAbort = gl::abortFlag(this);
       pcg = gl::computePotentialCollisions(material, nozzle, pcgOptions);
@@ -261,6 +263,7 @@ void vtkGLPrintSequencer::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Strategy: " << this->Strategy << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << " mm\n";
+  os << indent << "MaximumElements: " << this->MaximumElements << "\n";
   os << indent << "RolloutCandidates: " << this->RolloutCandidates << "\n";
   os << indent << "RetractionCost: " << this->RetractionCost << " mm\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";

@@ -43,6 +43,7 @@
  *   collisions from avoidable ones).
  * Parameters: Strategy (default 3 = Best), the nozzle (vtkGLNozzle: NozzleAngle, NozzleLength,
  *   HolderRadius, TipClearance, TipFaceRadius), SampleSpacing (mm, default 1, > 0),
+ *   MaximumElements (default 40e6: more sub-graph pairs for the PCG is refused),
  *   RolloutCandidates (default 6, >= 1), RetractionCost (mm, default 20, >= 0), NumberOfThreads
  *   (PCG, default 0 = all cores).
  * Errors (an empty lattice, missing arrays, a skeleton that does not match the lattice (node
@@ -73,6 +74,13 @@ public:
   /// Ordering strategy (default 3 = Best).
   vtkSetClampMacro(Strategy, int, LPT, BEST);
   vtkGetMacro(Strategy, int);
+  ///@}
+
+  ///@{
+  /// Bound against runaway work (core/common/WorkLimit.h): more pairs of sub-graphs to test for
+  /// potential collisions than this is refused (default 40e6, about 9000 sub-graphs).
+  vtkSetClampMacro(MaximumElements, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumElements, double);
   ///@}
 
   ///@{
@@ -109,6 +117,7 @@ protected:
 
   int Strategy;
   double SampleSpacing;
+  double MaximumElements;
   int RolloutCandidates;
   double RetractionCost;
   int NumberOfThreads;

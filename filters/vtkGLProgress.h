@@ -7,8 +7,11 @@
  * An aborted filter returns 1 with empty outputs and reports nothing (the core throws
  * "... aborted", which the filters' catch blocks keep quiet when GetAbortExecute() is set).
  */
+#include "GeoLatticeFiltersModule.h"
+
 #include <vtkAlgorithm.h>
 
+#include <atomic>
 #include <functional>
 
 namespace geolattice {
@@ -20,10 +23,18 @@ inline std::function<void(double)> progressRange(vtkAlgorithm* algorithm, double
   };
 }
 
+/// A process-wide stop request, e.g. from the CLI's SIGINT handler (a lock-free atomic, so a
+/// signal handler may set it): every core abort callback sees it at its next poll, also where
+/// no progress event fires in between (TetGen, the axis clearance).
+GEOLATTICEFILTERS_EXPORT std::atomic<bool>& stopRequest();
+
 /// Core abort callback: the algorithm's AbortExecute flag (set by ParaView's stop button or a
-/// ProgressEvent observer).
+/// ProgressEvent observer) or the process-wide stopRequest().
 inline std::function<bool()> abortFlag(vtkAlgorithm* algorithm) {
   return [algorithm] {
+    if (stopRequest().load(std::memory_order_relaxed)) {
+      algorithm->SetAbortExecute(1);  // so the filter treats the core's "aborted" as a stop
+    }
     return algorithm->GetAbortExecute() != 0;
   };
 }
@@ -31,7 +42,7 @@ inline std::function<bool()> abortFlag(vtkAlgorithm* algorithm) {
 /// UpdateProgress(f) (observers may set AbortExecute there), then whether to abort.
 inline bool progressAborts(vtkAlgorithm* algorithm, double f) {
   algorithm->UpdateProgress(f);
-  return algorithm->GetAbortExecute() != 0;
+  return abortFlag(algorithm)();
 }
 
 }  // namespace geolattice

@@ -21,6 +21,7 @@
  * ParaView (on Apply) and in the CLI (which calls UpdateInformation() on its last filter first).
  */
 #include "common/AtomicFile.h"
+#include "vtkGLProgress.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkDataObject.h>
@@ -42,7 +43,7 @@ struct RequestAborted {};
 /// the user asked to stop.
 inline void checkAbort(vtkAlgorithm* algorithm, double fraction) {
   algorithm->UpdateProgress(fraction);
-  if (algorithm->GetAbortExecute()) {
+  if (abortFlag(algorithm)()) {
     throw RequestAborted{};
   }
 }

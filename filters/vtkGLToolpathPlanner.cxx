@@ -261,6 +261,7 @@ gl::ToolpathOptions toolpathOptions(vtkGLToolpathPlanner* f) {
   o.supportPerimeter = f->GetSupportPerimeter() != 0;
   o.toothLength = f->GetToothLength();
   o.maxSegmentLength = f->GetMaxSegmentLength();
+  o.maxElements = f->GetMaximumElements();
   o.nozzle = gl::nozzleModel(f->GetNozzle());
   o.plate = gl::buildPlate(f->GetNozzle());
   o.clearance.maxTiltDeg = f->GetMaxAxisTilt();
@@ -286,6 +287,7 @@ vtkGLToolpathPlanner::vtkGLToolpathPlanner() {
   this->SupportPerimeter = d.supportPerimeter;
   this->ToothLength = d.toothLength;
   this->MaxSegmentLength = d.maxSegmentLength;
+  this->MaximumElements = d.maxElements;
   this->MaxAxisTilt = d.clearance.maxTiltDeg;
   this->TiltBlendLength = d.clearance.blendLength;
 }
@@ -357,8 +359,9 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
       gl::matchSkeletonToLattice(tree, graph);
       gl::checkAbort(this, 0.1);
 
-      const gl::ToolpathOptions options = toolpathOptions(this);
-      // The planning is one core call (core/toolpath): progress before and after it.
+      gl::ToolpathOptions options = toolpathOptions(this);
+      options.progress = gl::progressRange(this, 0.1, 0.8);
+      options.shouldAbort = gl::abortFlag(this);
       const gl::Toolpath path = gl::planToolpath(graph, tree, order, options);
       gl::checkAbort(this, 0.8);
 
@@ -415,6 +418,7 @@ void vtkGLToolpathPlanner::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "SupportPerimeter: " << this->SupportPerimeter << "\n";
   os << indent << "ToothLength: " << this->ToothLength << " mm\n";
   os << indent << "MaxSegmentLength: " << this->MaxSegmentLength << " mm\n";
+  os << indent << "MaximumElements: " << this->MaximumElements << "\n";
   os << indent << "MaxAxisTilt: " << this->MaxAxisTilt << " deg\n";
   os << indent << "TiltBlendLength: " << this->TiltBlendLength << " mm\n";
   os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";

@@ -72,7 +72,8 @@
  *   ThicknessCap (λ of Eq. 15, default 1.5, > 0), MaxTurnAngle (degrees, default 5, > 0),
  *   SafeMargin (mm, default 5, >= 0), Lift (mm, default 2, > 0), Retraction (mm of filament,
  *   default 1, >= 0), SupportPerimeter (default on), ToothLength (l, mm, default 0 = 2 PathWidth,
- *   >= 0), MaxSegmentLength (mm, default 1, >= 0; 0 = no subdivision), the nozzle (vtkGLNozzle,
+ *   >= 0), MaxSegmentLength (mm, default 1, >= 0; 0 = no subdivision), MaximumElements (default
+ *   40e6: more estimated stations is refused before planning), the nozzle (vtkGLNozzle,
  *   shared with the sequencer and the verifier),
  *   MaxAxisTilt (degrees, default 15, in [0, 60]; 0 = axis ∇γ everywhere), TiltBlendLength (mm,
  *   default 5, >= 0), NumberOfTimeSteps (default 200; 0 = no time steps, always the whole path).
@@ -168,6 +169,13 @@ public:
   ///@}
 
   ///@{
+  /// Bound against runaway work (core/common/WorkLimit.h): an output estimated to have more
+  /// elements than this is refused before it is built (default 40e6, about 8 GB).
+  vtkSetClampMacro(MaximumElements, double, 1.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(MaximumElements, double);
+  ///@}
+
+  ///@{
   /// Longest segment of the path: longer ones are subdivided (mm, default 1, >= 0; 0 = never), so
   /// that a collision check of the path's points samples it this finely.
   vtkSetMacro(MaxSegmentLength, double);
@@ -213,6 +221,7 @@ protected:
   vtkTypeBool SupportPerimeter;
   double ToothLength;
   double MaxSegmentLength;
+  double MaximumElements;
   double MaxAxisTilt;
   double TiltBlendLength;
   int NumberOfTimeSteps = 200;

@@ -2,6 +2,7 @@
 
 #include "common/Error.h"
 #include "common/UnionFind.h"
+#include "common/WorkLimit.h"
 #include "lattice/LatticeLevels.h"
 
 #include <algorithm>
@@ -11,6 +12,7 @@
 #include <limits>
 #include <mutex>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -814,6 +816,29 @@ void LatticeOptions::validate() const {
   if (this->threads < 0) {
     throw GeoLatticeError("thread count must be >= 0 (got " + std::to_string(this->threads) + ")");
   }
+  requireValidWorkLimit(this->maxElements, "the lattice size limit");
+}
+
+LatticeSizeEstimate estimateLatticeSize(const CurvedLayers& layers,
+                                        const std::vector<double>& alphaLevels,
+                                        const std::vector<double>& betaLevels) {
+  // Levels strictly above the smallest corner value and at most the largest (an exact hit counts
+  // as above, as in the builder).
+  auto crossingLevels = [](const std::vector<double>& levels, double lo, double hi) {
+    return static_cast<double>(std::upper_bound(levels.begin(), levels.end(), hi) -
+                               std::upper_bound(levels.begin(), levels.end(), lo));
+  };
+  LatticeSizeEstimate e;
+  for (const auto& t : layers.triangles) {
+    const auto [aLo, aHi] =
+        std::minmax({layers.alpha[t[0]], layers.alpha[t[1]], layers.alpha[t[2]]});
+    const auto [bLo, bHi] = std::minmax({layers.beta[t[0]], layers.beta[t[1]], layers.beta[t[2]]});
+    const double na = crossingLevels(alphaLevels, aLo, aHi);
+    const double nb = crossingLevels(betaLevels, bLo, bHi);
+    e.segments += na + nb;
+    e.crossings += na * nb;
+  }
+  return e;
 }
 
 LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions& options) {
@@ -837,6 +862,14 @@ LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions&
     }
   }
   const std::vector<double>* levels[2] = {&out.alphaLevels, &out.betaLevels};
+  {
+    std::ostringstream because;
+    because << "at line widths " << options.alphaWidth << " and " << options.betaWidth << " mm";
+    requireWithinWorkLimit(estimateLatticeSize(layers, out.alphaLevels, out.betaLevels).elements(),
+                           options.maxElements, "lattice infill", "vertices and edges",
+                           because.str(),
+                           "use wider lattice lines or raise the size limit (MaximumElements)");
+  }
 
   // Layers are independent: workers take the next layer; the calling thread reports progress
   // and polls the abort callback.

@@ -45,6 +45,7 @@
 /// removed and their two edges joined, so V_i and E_i are exactly the paper's (points on tet
 /// faces, crossings inside tets, boundary points). Needs CurvedLayers::sourceEdge (a diagonal
 /// joins two layer points on disjoint tet edges).
+#include "common/WorkLimit.h"
 #include "slicer/CurvedLayerSlicer.h"
 
 #include <array>
@@ -81,6 +82,9 @@ struct LatticeOptions {
   std::vector<double> widthScale;
   bool mergeQuadDiagonalPoints = true;  ///< see the file comment; needs CurvedLayers::sourceEdge
   int threads = 0;                      ///< worker threads over layers; 0 = hardware concurrency
+  /// Bound against runaway work: a lattice estimated (estimateLatticeSize) to have more vertices
+  /// plus edges than this is refused before it is built (common/WorkLimit.h; > 0).
+  double maxElements = kDefaultMaxElements;
   /// Polled on the calling thread after each layer it builds; true stops with a GeoLatticeError
   /// "lattice infill aborted". Optional.
   std::function<bool()> shouldAbort;
@@ -164,12 +168,27 @@ struct LatticeGraph {
   LatticeStatistics stats;
 };
 
+/// @brief An upper estimate of the lattice's size, from the levels crossing each layer triangle.
+struct LatticeSizeEstimate {
+  double segments = 0;   ///< α- and β-segments before crossings split them
+  double crossings = 0;  ///< upper bound: n_α · n_β per triangle
+  /// Vertices + edges: every segment brings two ends and an edge, every crossing a vertex and
+  /// two more edges.
+  double elements() const { return 2 * segments + 3 * crossings; }
+};
+
+/// Counts, per triangle, the levels between its smallest and largest corner value (binary search
+/// in the sorted levels): O(F log n), no allocation.
+LatticeSizeEstimate estimateLatticeSize(const CurvedLayers& layers,
+                                        const std::vector<double>& alphaLevels,
+                                        const std::vector<double>& betaLevels);
+
 /// Builds G_i for every layer of `layers`. The levels are computed once from all layer points
 /// (uniform, or graded when options.widthScale is set), so each isoline continues from layer to
 /// layer. Throws GeoLatticeError for bad options (widths <= 0, ...), inconsistent `layers`
 /// (sizes, offsets, a triangle using a point of another layer or the same point twice,
 /// non-finite α or β), a layer mesh that is not edge-manifold (an edge of more than two
-/// triangles), or an abort.
+/// triangles), a lattice estimated larger than options.maxElements, or an abort.
 LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions& options = {});
 
 }  // namespace geolattice

@@ -161,6 +161,11 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
     throw GeoLatticeError("potential collisions: no sub-graph");
   }
   const int K = static_cast<int>(m.offset.size()) - 1;
+  requireValidWorkLimit(options.maxPairs, "the sub-graph pair limit");
+  requireWithinWorkLimit(0.5 * K * (K - 1.0), options.maxPairs, "potential collisions",
+                         "pairs of sub-graphs", "for " + std::to_string(K) + " sub-graphs",
+                         "use a larger layer interval or raise the size limit (MaximumElements)",
+                         0.0);
   std::vector<SampleTree> trees(K);
   for (int k = 0; k < K; ++k) {
     SampleTree& t = trees[k];

@@ -13,6 +13,7 @@
 /// ball(c, ρ) ⊕ cone(n̄, NA* + δ), so a material cluster farther than ρ + ρ' from that cone
 /// is skipped; leaves use the exact nozzle test. The search for a pair stops at the first
 /// hit, pairs are pruned at the roots, and the sub-graphs are split over threads.
+#include "common/WorkLimit.h"
 #include "nozzle/NozzleModel.h"
 #include "sequence/PrintMaterial.h"
 
@@ -31,6 +32,9 @@ struct PotentialCollisions {
 /// @brief Parameters of computePotentialCollisions() (the result does not depend on them).
 struct PotentialCollisionOptions {
   int threads = 0;  ///< worker threads over the sub-graphs; 0 = hardware concurrency
+  /// Bound against runaway work (common/WorkLimit.h): the pairs of sub-graphs, K (K - 1) / 2, are
+  /// what the test costs (an infinite cone holds everything above); more is refused (> 0).
+  double maxPairs = kDefaultMaxElements;
   /// Called on the calling thread with the fraction of sub-graphs done (1 at the end). Optional.
   std::function<void(double)> progress;
   /// Polled on the calling thread after each sub-graph it handles; true stops every worker and

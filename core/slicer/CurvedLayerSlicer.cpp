@@ -6,6 +6,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 namespace geolattice {
@@ -100,6 +101,7 @@ void SlicerOptions::validate() const {
     throw GeoLatticeError("first layer offset must be > 0 mm (got " +
                           std::to_string(this->firstLayerOffset) + ")");
   }
+  requireValidWorkLimit(this->maxElements, "the layer size limit");
   if (this->firstLayer < 0 || (this->lastLayer >= 0 && this->lastLayer < this->firstLayer)) {
     throw GeoLatticeError("invalid layer range [" + std::to_string(this->firstLayer) + ", " +
                           std::to_string(this->lastLayer) + "]");
@@ -181,6 +183,20 @@ CurvedLayers sliceCurvedLayers(const TetMesh& mesh, const Eigen::VectorXd& gamma
   // Points: edge crossings γ(a) < φ_i < γ(b) get slots edgeOffset[e] + (i - edgeFirst[e]);
   // vertices with γ == φ_i get one slot each.
   const int ne = static_cast<int>(edges.size());
+  {
+    // Count first, in 64 bits: the slots below are int, and a tiny interval would overflow them.
+    long long crossings = 0;
+    for (int e = 0; e < ne; ++e) {
+      crossings += std::max(
+          0, std::min(firstAbove(std::max(gamma[edges[e][0]], gamma[edges[e][1]])), last + 1) -
+                 firstAbove(std::min(gamma[edges[e][0]], gamma[edges[e][1]])));
+    }
+    std::ostringstream because;
+    because << "in " << L << " layers at a layer interval of " << options.interval << " mm";
+    requireWithinWorkLimit(3.0 * static_cast<double>(crossings), options.maxElements,
+                           "curved layer slicing", "layer points and triangles", because.str(),
+                           "use a larger layer interval or raise the size limit (MaximumElements)");
+  }
   std::vector<int> edgeFirst(ne), edgeOffset(ne + 1, 0);
   for (int e = 0; e < ne; ++e) {
     const double lo = std::min(gamma[edges[e][0]], gamma[edges[e][1]]);

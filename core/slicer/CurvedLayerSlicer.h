@@ -12,6 +12,7 @@
 /// it becomes the one layer point of that vertex, so no duplicate points arise and triangles
 /// that collapse onto it are dropped (never emitted with zero area). A mesh face that lies in
 /// the layer is emitted once, or not at all when it only touches the layer from one side.
+#include "common/WorkLimit.h"
 #include "mesh/TetMesh.h"
 
 #include <Eigen/Core>
@@ -27,6 +28,9 @@ struct SlicerOptions {
   double firstLayerOffset = 0.6;  ///< γ of layer 0 (mm, > 0)
   int firstLayer = 0;             ///< first layer index to extract (>= 0)
   int lastLayer = -1;             ///< last layer index to extract; -1 = up to the top
+  /// Bound against runaway work (common/WorkLimit.h): more estimated layer points + triangles
+  /// (three per tet-edge crossing) than this is refused before any is made (> 0).
+  double maxElements = kDefaultMaxElements;
   /// Called on the calling thread with the fraction of sliceCurvedLayers() done. Optional.
   std::function<void(double)> progress;
   /// Polled where progress is reported; true stops with a GeoLatticeError "curved layer slicing

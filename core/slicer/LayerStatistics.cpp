@@ -1,5 +1,7 @@
 #include "slicer/LayerStatistics.h"
 
+#include "common/ParallelFor.h"
+#include "common/Progress.h"
 #include "common/UnionFind.h"
 
 #include <CGAL/AABB_traits.h>
@@ -8,12 +10,8 @@
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <limits>
-#include <mutex>
-#include <thread>
 
 namespace geolattice {
 
@@ -90,7 +88,9 @@ void layerSpacing(const CurvedLayers& layers, int l, std::vector<LayerStatistics
 }
 }  // namespace
 
-std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers, int threads) {
+std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers, int threads,
+                                                    const std::function<void(double)>& progress,
+                                                    const std::function<bool()>& shouldAbort) {
   const int L = static_cast<int>(layers.layerValues.size());
   std::vector<LayerStatistics> stats(L);
   std::vector<int> components;
@@ -107,35 +107,17 @@ std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers, 
     }
   }
   // The spacing (an AABB tree of the next layer and a distance query per point) is most of the
-  // cost: layers are independent, so worker threads take them one at a time. Each layer is
-  // computed exactly as on one thread, so the result does not depend on the thread count.
-  std::atomic<int> nextLayer{0};
-  std::exception_ptr error;
-  std::mutex errorMutex;
-  auto work = [&] {
-    try {
-      for (int l = nextLayer++; l < L; l = nextLayer++) {
-        layerSpacing(layers, l, stats);
-      }
-    } catch (...) {
-      const std::lock_guard<std::mutex> lock(errorMutex);
-      error = std::current_exception();
-      nextLayer = L;
-    }
-  };
-  int workers = threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency());
-  workers = std::max(1, std::min(workers, L));
-  std::vector<std::thread> pool;
-  for (int i = 1; i < workers; ++i) {
-    pool.emplace_back(work);
-  }
-  work();
-  for (auto& t : pool) {
-    t.join();
-  }
-  if (error) {
-    std::rethrow_exception(error);
-  }
+  // cost: layers are independent, so the workers take them one at a time. Each layer is computed
+  // exactly as on one thread, so the result does not depend on the thread count.
+  const ProgressReporter report(progress, shouldAbort, "layer statistics");
+  parallelFor(
+      static_cast<size_t>(L), threads,
+      [&](size_t l, int) { layerSpacing(layers, static_cast<int>(l), stats); },
+      [&](size_t done) {
+        if (done % 64 == 0 || done == static_cast<size_t>(L)) {
+          report.report(static_cast<double>(done) / L);
+        }
+      });
   return stats;
 }
 

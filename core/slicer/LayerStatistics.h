@@ -4,6 +4,7 @@
 /// where geodesic layers thin or thicken (issue "Curved layers", item 4).
 #include "slicer/CurvedLayerSlicer.h"
 
+#include <functional>
 #include <vector>
 
 namespace geolattice {
@@ -22,8 +23,11 @@ struct LayerStatistics {
 
 /// Statistics of every layer of `layers` (AABB trees of CGAL for the spacing, O(n log n)).
 /// The spacing is computed on `threads` worker threads over layers (0 = hardware concurrency);
-/// the result is the same for every thread count.
-std::vector<LayerStatistics> computeLayerStatistics(const CurvedLayers& layers, int threads = 0);
+/// the result is the same for every thread count. progress (fraction of layers done) and
+/// shouldAbort (true stops with "layer statistics aborted") are optional, as in common/Progress.h.
+std::vector<LayerStatistics> computeLayerStatistics(
+    const CurvedLayers& layers, int threads = 0, const std::function<void(double)>& progress = {},
+    const std::function<bool()>& shouldAbort = {});
 
 /// Component id (0..count-1) of every triangle of layer l; returns the count.
 int layerComponents(const CurvedLayers& layers, int l, std::vector<int>& triangleComponent);

@@ -146,6 +146,9 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   NozzleBound detect(nozzle.boundingHalfAngleRad(), nozzle.reach(), nozzle.tipClearance);
   std::vector<int> colliding;
   for (size_t k = 0; k < N; ++k) {
+    if (k % 4096 == 0 && o.shouldAbort && o.shouldAbort()) {
+      throw GeoLatticeError("nozzle axis clearance aborted");
+    }
     detect.setStation(points[k], axes[k]);
     bool hit = false;
     tree.forEachCandidate(detect, static_cast<int>(k), [&](int q) {

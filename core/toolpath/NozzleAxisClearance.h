@@ -20,6 +20,7 @@
 #include "nozzle/NozzleModel.h"
 #include "mesh/TetMesh.h"
 
+#include <functional>
 #include <vector>
 
 namespace geolattice {
@@ -29,6 +30,9 @@ struct AxisClearanceOptions {
       15.0;  ///< largest angle between the axis and the layer normal (deg, in [0, 60]); 0 = off
   double marginDeg = 0.5;    ///< obstacles end at least this far outside the cone (deg, >= 0)
   double blendLength = 5.0;  ///< a tilt fades out over this path length on each side (mm, >= 0)
+  /// Polled every 4096 stations; true stops with GeoLatticeError "nozzle axis clearance
+  /// aborted". Optional.
+  std::function<bool()> shouldAbort;
   /// Throws GeoLatticeError naming the first parameter out of its range.
   void validate() const;
 };

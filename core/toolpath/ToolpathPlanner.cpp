@@ -1,6 +1,7 @@
 #include "toolpath/ToolpathPlanner.h"
 
 #include "common/Error.h"
+#include "common/Progress.h"
 #include "toolpath/EulerTour.h"
 #include "toolpath/EulerianTrimming.h"
 #include "toolpath/PathSubdivision.h"
@@ -44,6 +45,7 @@ void ToolpathOptions::validate() const {
   if (!(this->safeMargin >= 0) || !(this->retraction >= 0)) {
     throw GeoLatticeError("toolpath: safe margin and retraction must be >= 0");
   }
+  requireValidWorkLimit(this->maxElements, "the toolpath size limit");
 }
 
 namespace {
@@ -103,9 +105,33 @@ private:
   double e_ = 0;
 };
 
+/// Refuses a toolpath whose station count, estimated from the lattice and the options, exceeds
+/// the work limit: every edge, its subdivision by maxSegmentLength, four stations per tooth.
+void requireToolpathWithinLimit(const LatticeGraph& g, const ToolpathOptions& o) {
+  double length = 0, boundary = 0;
+  for (size_t e = 0; e < g.edges.size(); ++e) {
+    const double l = (g.points[g.edges[e][0]] - g.points[g.edges[e][1]]).norm();
+    length += l;
+    boundary += g.edgeKind[e] == LatticeEdgeKind::Boundary ? l : 0.0;
+  }
+  const double tooth = o.toothLength > 0 ? o.toothLength : 2 * o.pathWidth;
+  const double stations = static_cast<double>(g.edges.size()) +
+                          (o.maxSegmentLength > 0 ? length / o.maxSegmentLength : 0.0) +
+                          (o.supportPerimeter ? 4 * boundary / tooth : 0.0);
+  std::ostringstream because;
+  because << "for " << std::llround(length) << " mm of lattice at a longest segment of "
+          << o.maxSegmentLength << " mm and a tooth length of " << tooth << " mm";
+  requireWithinWorkLimit(
+      stations, o.maxElements, "toolpath", "stations", because.str(),
+      "use a longer segment or tooth length, or raise the size limit (MaximumElements)");
+}
+
 /// Rotation steps and subdivision, then rounds of axis clearance (each followed by the rotation
 /// steps its tilts need) until no station collides or no tilt helps.
-std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o) {
+std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
+                            const ProgressReporter& progress) {
+  AxisClearanceOptions clearance = o.clearance;
+  clearance.shouldAbort = o.shouldAbort;
   const double maxTurn = o.maxTurnDeg * M_PI / 180.0;
   SubdivisionCounts counts = subdivideToolpath(path, maxTurn, o.maxSegmentLength);
   path.rotationSteps = counts.rotationSteps;
@@ -132,7 +158,8 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o) {
   std::vector<int> uncleared;
   for (int round = 0; round < kMaxRounds && o.clearance.maxTiltDeg > 0; ++round) {
     const AxisClearanceResult r = clearNozzleAxes(path.points, path.normals, reference,
-                                                  materialOf(), o.nozzle, o.clearance, fixed);
+                                                  materialOf(), o.nozzle, clearance, fixed);
+    progress.report(static_cast<double>(round + 1) / kMaxRounds);
     if (round == 0) {
       path.collidingStations = r.collidingStations;
     }
@@ -149,7 +176,7 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o) {
     path.subdivisionPoints += counts.inserted;
   }
   if (!checked) {  // count what is left (or, with clearance off, what there is)
-    AxisClearanceOptions detectOnly = o.clearance;
+    AxisClearanceOptions detectOnly = clearance;
     detectOnly.maxTiltDeg = 0;
     const AxisClearanceResult r = clearNozzleAxes(path.points, path.normals, reference,
                                                   materialOf(), o.nozzle, detectOnly, fixed);
@@ -202,6 +229,9 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
       throw GeoLatticeError(s.str());
     }
   }
+
+  requireToolpathWithinLimit(input, o);
+  const ProgressReporter progress(o.progress, o.shouldAbort, "toolpath planning");
 
   Toolpath path;
   LatticeGraph g = input;  // contraction edits the edge arrays
@@ -334,7 +364,11 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
       previous = k;
     }
     path.tours = tourIndex;
-    const std::vector<int> uncleared = finishAxes(path, o);
+    // Attempt 0 is the usual run; a replanned attempt only moves some hops over the box.
+    const ProgressReporter attemptProgress = progress.part(
+        attempt == 0 ? 0.0 : 0.85 + 0.05 * attempt, attempt == 0 ? 0.9 : 0.9 + 0.05 * attempt);
+    attemptProgress.part(0, 0.3).report(1.0);
+    const std::vector<int> uncleared = finishAxes(path, o, attemptProgress.part(0.3, 1.0));
     int replan = 0;
     for (int i : uncleared) {
       const int tour = path.pathIndex[i];

@@ -20,6 +20,7 @@
 /// Finally segments are subdivided (PathSubdivision.h: axis turn <= maxTurnDeg, length <=
 /// maxSegmentLength) and, in up to four rounds, stations where the nozzle along ∇γ would hit
 /// earlier material of the path get a small tilt (NozzleAxisClearance.h); AxisTilt records it.
+#include "common/WorkLimit.h"
 #include "lattice/LatticeInfill.h"
 #include "sequence/PrintSequencer.h"
 #include "nozzle/BuildPlate.h"
@@ -28,6 +29,7 @@
 #include "toolpath/LayerThickness.h"
 #include "toolpath/NozzleAxisClearance.h"
 
+#include <functional>
 #include <vector>
 
 namespace geolattice {
@@ -49,10 +51,19 @@ struct ToolpathOptions {
   double toothLength = 0.0;       ///< l (mm); 0 = 2 w
   double maxSegmentLength = 1.0;  ///< longer segments are subdivided (mm, >= 0; 0 = never), so
       ///< the collision check of the path's points samples it this finely
+  /// Bound against runaway work (common/WorkLimit.h): more estimated stations (the lattice's
+  /// edges, its length / maxSegmentLength, four per perimeter tooth) than this is refused (> 0).
+  double maxElements = kDefaultMaxElements;
   NozzleModel nozzle;  ///< the nozzle the axis clearance keeps earlier material out of
   BuildPlate plate;    ///< the build plate, an obstacle like material (enabled by default)
   AxisClearanceOptions
       clearance;  ///< tilts off ∇γ where the nozzle would collide (maxTiltDeg 0 = off)
+  /// Called on the calling thread with the fraction done (the path built, each clearance
+  /// round). Optional.
+  std::function<void(double)> progress;
+  /// Polled at the same points and during the clearance; true stops with a GeoLatticeError
+  /// "... aborted". Optional.
+  std::function<bool()> shouldAbort;
   /// Throws GeoLatticeError naming the first parameter out of its range (cheap: no data).
   void validate() const;
 };

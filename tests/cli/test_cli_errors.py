@@ -4,6 +4,7 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
@@ -125,6 +126,43 @@ class CliErrorTest(unittest.TestCase):
 
     def test_zero_lattice_width(self):
         self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--lattice-width", "0"], "width")
+
+    def test_runaway_work_is_bounded(self):
+        # A 0.001 mm lattice on the bunny would be ~2 billion vertices and edges: refused from the
+        # estimate, before anything is built (it used to grow to 24 GB).
+        bunny = os.path.join(TESTDATA, "bunny.obj")
+        line = self.expect_error([bunny, "--lattice-width", "0.001"], "lattice", "million vertices and edges",
+                                 "limit of 40 million", "--max-elements")
+        with open(os.path.join(self.out, "report.json")) as f:
+            self.assertEqual(json.load(f)["failed"]["stage"], "lattice", line)
+        # A 75 degree nozzle (it used to run the toolpath stage for more than 10 minutes): the run
+        # finishes and the collision gate stops it. The bound is a guard against runaway work,
+        # not a benchmark.
+        start = time.monotonic()
+        wide = self.run_cli(bunny, "--nozzle-angle", "75", "-o", self.out, "-q")
+        self.assertEqual(wide.returncode, 4, wide.stderr)
+        self.assertLess(time.monotonic() - start, 120)
+
+    def test_ctrl_c_stops_the_running_stage(self):
+        # A toolpath subdivided every 0.5 micrometres takes minutes: Ctrl-C stops it within
+        # seconds, exit status 130, report.json names the stage, no program is written.
+        cmd = [CLI, "run", os.path.join(TESTDATA, "bunny.obj"), "--max-segment", "0.0005", "-o", self.out]
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        seen = ""
+        while "toolpath ..." not in seen:
+            c = p.stdout.read(1)
+            self.assertTrue(c, "the run ended before the toolpath stage: " + seen)
+            seen += c
+        time.sleep(1)
+        start = time.monotonic()
+        p.send_signal(signal.SIGINT)
+        _, err = p.communicate(timeout=60)
+        self.assertLess(time.monotonic() - start, 10)
+        self.assertEqual(p.returncode, 130, err)
+        self.assertIn("toolpath stage was stopped by Ctrl-C", err)
+        with open(os.path.join(self.out, "report.json")) as f:
+            self.assertEqual(json.load(f)["failed"]["stage"], "toolpath")
+        self.assertEqual(self.program_files(), [])
 
     def test_nozzle_angle_outside_range(self):
         for angle in ("0", "90", "-10"):

@@ -581,6 +581,30 @@ TEST(LatticeInfill, WidthLargerThanThePartGivesAnEmptyLattice) {
   EXPECT_NEAR(g.subgraphs[0].length, 160.0, 1e-9);
 }
 
+// The size estimate bounds the real graph from above, not by much, and refuses a runaway width
+// before anything is built.
+TEST(LatticeInfill, SizeEstimateBoundsTheGraphAndRefusesRunawayWidths) {
+  const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
+  const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
+  for (const double w : {1.0, 2.0, 4.0}) {
+    LatticeOptions o = phases(0.3, 0.7);
+    o.alphaWidth = o.betaWidth = w;
+    const LatticeGraph g = buildLatticeGraph(layers, o);
+    const double actual = static_cast<double>(g.points.size() + g.edges.size());
+    const double estimate = estimateLatticeSize(layers, g.alphaLevels, g.betaLevels).elements();
+    EXPECT_GE(estimate, 0.5 * actual) << w;
+    EXPECT_LE(estimate, 4.0 * actual) << w;
+  }
+  LatticeOptions tiny;
+  tiny.alphaWidth = tiny.betaWidth = 0.001;
+  const std::string message = errorOf([&] { buildLatticeGraph(layers, tiny); });
+  EXPECT_NE(message.find("million vertices and edges"), std::string::npos) << message;
+  EXPECT_NE(message.find("limit of 40 million"), std::string::npos) << message;
+  LatticeOptions bounded = phases(0.3, 0.7);
+  bounded.maxElements = 100;
+  EXPECT_NE(errorOf([&] { buildLatticeGraph(layers, bounded); }).find("limit"), std::string::npos);
+}
+
 TEST(LatticeInfill, BadInputIsReported) {
   const CurvedLayers good = gridLayers({{{0, 0, 8, 8, 2, 2}}}, kAlphaOfBox, kBetaOfBox);
   LatticeOptions o;
