@@ -31,7 +31,9 @@ InterruptHandler::~InterruptHandler() {
   std::signal(SIGINT, this->Previous == SIG_ERR ? SIG_DFL : this->Previous);
 }
 
-bool InterruptHandler::Interrupted() { return gInterrupted != 0; }
+bool InterruptHandler::Interrupted() {
+  return gInterrupted != 0;
+}
 
 AbortOnInterrupt::AbortOnInterrupt(const std::vector<vtkAlgorithm*>& algorithms)
     : Algorithms(algorithms) {

@@ -127,6 +127,11 @@ private:
     Json& input = this->Section("input");
     input["file"] = R.model;
     reportInput(placed, tetMesh, input);
+    if (!R.quiet && input.contains("size_mm")) {
+      std::cout << "geolattice: the part is " << input["size_mm"][0].get<double>() << " x "
+                << input["size_mm"][1].get<double>() << " x " << input["size_mm"][2].get<double>()
+                << " mm (x y z, as placed)\n";
+    }
 
     if (!tetMesh) {
       if (P.Orientation->GetOrient() == vtkGLAutoOrient::AUTO) {  // Keep: it passes the part on

@@ -79,6 +79,12 @@ void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {
     s["target_edge_length_mm"] = fieldValue(tets, arrays::TargetEdgeLength);
     s["mean_edge_length_mm"] = fieldValue(tets, arrays::MeanEdgeLength);
     s["tetgen_seconds"] = fieldValue(tets, arrays::TetrahedralizeSeconds);
+    s["input_triangles"] = fieldValue(tets, arrays::InputTriangles);
+    s["meshed_triangles"] = fieldValue(tets, arrays::MeshedTriangles);
+    s["simplified"] =
+        fieldValue(tets, arrays::MeshedTriangles) < fieldValue(tets, arrays::InputTriangles);
+    s["simplification_distance_mm"] = fieldValue(tets, arrays::SimplificationDistance);
+    s["simplification_seconds"] = fieldValue(tets, arrays::SimplificationSeconds);
   }
   s["points"] = points(tets);
   s["tets"] = cells(tets);

@@ -55,6 +55,12 @@ constexpr const char* MeanEdgeLength =
 constexpr const char* TetCount = "TetCount";  ///< 1 value: number of tets
 constexpr const char* TetrahedralizeSeconds =
     "TetrahedralizeSeconds";  ///< 1 value: wall time (s), all TetGen runs
+/// Surface simplification before TetGen (core/mesh/SurfaceSimplification.h), 1 value each:
+constexpr const char* InputTriangles = "InputTriangles";    ///< triangles of the input surface
+constexpr const char* MeshedTriangles = "MeshedTriangles";  ///< triangles given to TetGen
+constexpr const char* SimplificationDistance =
+    "SimplificationDistance";  ///< largest input-vertex distance to the meshed surface (mm)
+constexpr const char* SimplificationSeconds = "SimplificationSeconds";  ///< its wall time (s)
 // Overhang analysis (vtkGLOverhangAnalysis): cell data on the boundary surface.
 constexpr const char* OverhangPlanar =
     "OverhangPlanar";  ///< θ for d = +z, planar 2.5-axis slicing (degrees)

@@ -152,6 +152,14 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     count->InsertNextValue(result.tetCount);
     fd->AddArray(count);
     addValue(fd, gl::arrays::TetrahedralizeSeconds, result.seconds);
+    addValue(fd, gl::arrays::InputTriangles, static_cast<double>(result.inputTriangles));
+    addValue(fd, gl::arrays::MeshedTriangles, static_cast<double>(result.meshedTriangles));
+    addValue(fd, gl::arrays::SimplificationDistance, result.simplificationDistance);
+    addValue(fd, gl::arrays::SimplificationSeconds, result.simplificationSeconds);
+    if (!result.simplificationRefused.empty()) {
+      vtkWarningMacro(<< "the simplified surface was not used (" << result.simplificationRefused
+                      << "): TetGen meshed all " << result.inputTriangles << " input triangles");
+    }
     this->UpdateProgress(1.0);
   });
 }

@@ -16,7 +16,9 @@
  *     (0.612 for a regular tet; TetGen bounds it by RadiusEdgeRatio except near small input
  *     angles);
  *   - field data `TargetEdgeLength` (mm, the value used: set or automatic), `MeanEdgeLength`
- *     (mm), `TetCount`, `TetrahedralizeSeconds` (names in vtkGLArrayNames.h).
+ *     (mm), `TetCount`, `TetrahedralizeSeconds`, and of the surface simplification before TetGen
+ *     `InputTriangles`, `MeshedTriangles`, `SimplificationDistance` (mm), `SimplificationSeconds`
+ *     (names in vtkGLArrayNames.h).
  *
  * Parameters:
  *   - TargetEdgeLength: mm, default 0 = automatic (about TargetTetCount tets, see below);

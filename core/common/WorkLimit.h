@@ -46,7 +46,8 @@ inline void requireWithinWorkLimit(double estimate, double limit, const std::str
   if (bytesPerElement > 0) {
     s << "(about " << std::llround(estimate * bytesPerElement / 1e9) << " GB) ";
   }
-  s << because << ", more than the limit of " << std::setprecision(3) << limit / 1e6 << " million: " << fix;
+  s << because << ", more than the limit of " << std::setprecision(3) << limit / 1e6
+    << " million: " << fix;
   throw GeoLatticeError(s.str());
 }
 

@@ -1,6 +1,7 @@
 #include "mesh/SurfaceSimplification.h"
 
 #include "common/Error.h"
+#include "common/Progress.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -10,7 +11,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_distance_placement.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_filter.h>
-#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
+#include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 
@@ -61,6 +62,35 @@ TriangleSurface fromMesh(const Mesh& m) {
   }
   return s;
 }
+
+/// Counts the collapses for progress and abort (CGAL calls OnCollapsed after each one).
+struct CollapseVisitor : SMS::Edge_collapse_visitor_base<Mesh> {
+  CollapseVisitor(const ProgressReporter& report, double expected, bool& aborted)
+      : report_(&report), expected_(std::max(1.0, expected)), aborted_(&aborted) {}
+  void OnCollapsed(const SMS::Edge_profile<Mesh>&, Mesh::Vertex_index) {
+    if (++collapses_ % 4096 == 0 && !*aborted_) {
+      try {
+        report_->report(std::min(1.0, static_cast<double>(collapses_) / expected_));
+      } catch (const GeoLatticeError&) {
+        *aborted_ = true;  // the stop predicate ends the collapse; rethrown after it
+      }
+    }
+  }
+  const ProgressReporter* report_;
+  double expected_;
+  bool* aborted_;
+  long long collapses_ = 0;
+};
+
+/// The edge count target, or an abort.
+struct StopPredicate {
+  template <class Profile>
+  bool operator()(const double&, const Profile&, std::size_t, std::size_t current) const {
+    return *aborted || current <= edges;
+  }
+  std::size_t edges;
+  const bool* aborted;
+};
 
 double area(const TriangleSurface& s) {
   double a = 0;
@@ -114,10 +144,18 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
                                                                   policies.get_placement());
   SMS::Bounded_normal_change_filter<> filter;
   const size_t edges = static_cast<size_t>(1.5 * std::max(4.0, target));
-  SMS::Count_stop_predicate<Mesh> stop(edges);
-  SMS::edge_collapse(
-      mesh, stop,
-      CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement).filter(filter));
+  const ProgressReporter report(o.progress, o.shouldAbort, "surface simplification");
+  bool aborted = false;
+  CollapseVisitor visitor(report, (static_cast<double>(mesh.number_of_edges()) - edges) / 3.0,
+                          aborted);  // a collapse removes three edges
+  SMS::edge_collapse(mesh, StopPredicate{edges, &aborted},
+                     CGAL::parameters::get_cost(policies.get_cost())
+                         .get_placement(placement)
+                         .filter(filter)
+                         .visitor(visitor));
+  if (aborted) {
+    throw GeoLatticeError("surface simplification aborted");
+  }
   mesh.collect_garbage();
   if (PMP::does_self_intersect(mesh)) {
     r.refused = "the simplified surface self-intersects";

@@ -20,7 +20,12 @@ struct SimplificationOptions {
   double tolerance = 0;
   /// Simplify only when the input's mean edge length is below this fraction of the target.
   double finerThan = 0.5;
-  std::function<bool()> shouldAbort;  ///< polled between passes. Optional.
+  /// Polled every 4096 collapses; true stops with GeoLatticeError "surface simplification
+  /// aborted". Optional.
+  std::function<bool()> shouldAbort;
+  /// Called with the fraction of the collapses done (the count is known from the target).
+  /// Optional.
+  std::function<void(double)> progress;
 };
 
 struct SimplificationResult {

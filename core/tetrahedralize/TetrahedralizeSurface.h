@@ -40,9 +40,9 @@ struct TetrahedralizeOptions {
   /// Polled about every 50 ms while TetGen runs, and after each run; returning true stops it
   /// and throws "tetrahedralization aborted" (filters pass their AbortExecute flag). Optional.
   std::function<bool()> shouldAbort;
-  /// Called on the calling thread with the fraction done: after each TetGen run
-  /// (runs / kMaxAutoAttempts of 0.9 for the automatic edge length, 0.9 for a given one) and
-  /// 1 at the end. Optional.
+  /// Called on the calling thread with the fraction done: during the surface simplification
+  /// (when it runs, the first 70 %), after each TetGen run (runs / kMaxAutoAttempts of 0.9 for
+  /// the automatic edge length, 0.9 for a given one, of the rest) and 1 at the end. Optional.
   std::function<void(double)> progress;
   /// Throws GeoLatticeError naming the first parameter out of its range (cheap: no data).
   void validate() const;
