@@ -1,20 +1,17 @@
 #include "lattice/LatticeInfill.h"
 
 #include "common/Error.h"
+#include "common/ParallelFor.h"
 #include "common/UnionFind.h"
 #include "common/WorkLimit.h"
 #include "lattice/LatticeLevels.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
-#include <exception>
 #include <limits>
-#include <mutex>
 #include <numeric>
 #include <sstream>
 #include <string>
-#include <thread>
 
 namespace geolattice {
 
@@ -872,58 +869,21 @@ LatticeGraph buildLatticeGraph(const CurvedLayers& layers, const LatticeOptions&
   }
 
   // Layers are independent: workers take the next layer; the calling thread reports progress
-  // and polls the abort callback.
+  // and polls the abort callback after each layer finished.
   std::vector<LayerGraph> result(L);
-  std::atomic<int> nextLayer{0}, doneLayers{0};
-  std::atomic<bool> stop{false};
-  bool aborted = false;
-  std::exception_ptr error;
-  std::mutex errorMutex;
-  auto work = [&](bool caller) {
-    while (!stop) {
-      const int l = nextLayer++;
-      if (l >= L) {
-        return;
-      }
-      try {
-        result[l] = LayerBuilder(layers, l, levels, options).build();
-      } catch (...) {
-        std::lock_guard<std::mutex> lock(errorMutex);
-        if (!error) {
-          error = std::current_exception();
-        }
-        stop = true;
-        return;
-      }
-      const int done = ++doneLayers;
-      if (caller) {
+  parallelFor(
+      static_cast<size_t>(L), options.threads,
+      [&](size_t l, int) {
+        result[l] = LayerBuilder(layers, static_cast<int>(l), levels, options).build();
+      },
+      [&](size_t done) {
         if (options.progress) {
           options.progress(static_cast<double>(done) / L);
         }
         if (options.shouldAbort && options.shouldAbort()) {
-          aborted = true;
-          stop = true;
+          throw GeoLatticeError("lattice infill aborted");
         }
-      }
-    }
-  };
-  int threads =
-      options.threads > 0 ? options.threads : static_cast<int>(std::thread::hardware_concurrency());
-  threads = std::max(1, std::min(threads, L));
-  std::vector<std::thread> pool;
-  for (int i = 1; i < threads; ++i) {
-    pool.emplace_back(work, false);
-  }
-  work(true);
-  for (auto& t : pool) {
-    t.join();
-  }
-  if (error) {
-    std::rethrow_exception(error);
-  }
-  if (aborted) {
-    throw GeoLatticeError("lattice infill aborted");
-  }
+      });
 
   // Concatenate the layers.
   out.layerVertexOffset.assign(L + 1, 0);

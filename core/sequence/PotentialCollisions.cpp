@@ -1,15 +1,14 @@
 #include "sequence/PotentialCollisions.h"
 
 #include "common/Error.h"
+#include "common/ParallelFor.h"
 #include "common/Progress.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <numeric>
-#include <thread>
 
 namespace geolattice {
 
@@ -180,51 +179,36 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
 
   PotentialCollisions out;
   out.pcg.resize(K);
-  const int workers = std::max(
-      1,
-      std::min(K, threads > 0 ? threads : static_cast<int>(std::thread::hardware_concurrency())));
-  std::atomic<int> next{0}, done{0};
-  std::atomic<bool> stop{false};
-  bool aborted = false;
-  std::vector<long long> tests(workers, 0);
-  auto work = [&](int w) {
-    PairSearch search{m, nozzle, boundAngle, model.reach(), model.tipClearance};
-    std::vector<std::pair<int, int>> stack;
-    int reported = -1;  // the calling thread reports about 64 times
-    for (int i = next++; i < K && !stop; i = next++) {
-      if (!trees[i].nodes.empty()) {
+  // One pair search (and its stack) per worker; sub-graphs are handed out one at a time.
+  const int workers = workerCount(threads, static_cast<size_t>(K));
+  std::vector<PairSearch> searches(
+      workers, PairSearch{m, nozzle, boundAngle, model.reach(), model.tipClearance});
+  std::vector<std::vector<std::pair<int, int>>> stacks(workers);
+  progress.report(0.0);
+  size_t reported = 0;  // in 64ths
+  parallelFor(
+      static_cast<size_t>(K), threads,
+      [&](size_t item, int w) {
+        const int i = static_cast<int>(item);
+        if (trees[i].nodes.empty()) {
+          return;
+        }
         for (int j = 0; j < K; ++j) {
-          if (j != i && !trees[j].nodes.empty() && search.collides(trees[i], trees[j], stack)) {
+          if (j != i && !trees[j].nodes.empty() &&
+              searches[w].collides(trees[i], trees[j], stacks[w])) {
             out.pcg[i].push_back(j);
           }
         }
-      }
-      const int finished = ++done;
-      if (w == 0 && finished * 64 / K != reported) {
-        // Not ProgressReporter::report: an exception must not leave the other workers unjoined.
-        reported = finished * 64 / K;
-        if (options.progress) {
-          options.progress(static_cast<double>(finished) / K);
+      },
+      [&](size_t finished) {  // about 64 reports; an abort throws here and stops the workers
+        if (finished * 64 / K > reported) {
+          reported = finished * 64 / K;
+          progress.report(static_cast<double>(finished) / K);
         }
-        if (options.shouldAbort && options.shouldAbort()) {
-          aborted = true;
-          stop = true;
-        }
-      }
-    }
-    tests[w] = search.leafTests;
-  };
-  progress.report(0.0);
-  std::vector<std::thread> pool;
-  for (int w = 1; w < workers; ++w) {
-    pool.emplace_back(work, w);
-  }
-  work(0);
-  for (auto& t : pool) {
-    t.join();
-  }
-  if (aborted) {
-    throw GeoLatticeError("potential collisions aborted");
+      });
+  std::vector<long long> tests;
+  for (const PairSearch& search : searches) {
+    tests.push_back(search.leafTests);
   }
   for (int i = 0; i < K; ++i) {
     out.pairs += static_cast<long long>(out.pcg[i].size());

@@ -1,0 +1,166 @@
+// The general options and those of the model placement, orientation, meshing, fields and layers.
+#include "CliOptionTable.h"
+
+namespace geolattice::cli {
+
+void addModelOptions(std::vector<CliOption>& t) {
+  const char* general = "General";
+  const char* place = "Model placement (models come in arbitrary units; GeoLattice works in mm)";
+  const char* mesh = "Tetrahedral meshing (TetGen)";
+  const char* gdf = "Geodesic distance fields (heat method, paper Eqs. 1-5)";
+  const char* layers = "Curved layers (iso-surfaces of Gamma)";
+  t.push_back({"-o", "DIR", general, "output directory (created if missing) [required]", "",
+               [](P&, RunOptions& r, const std::string& v) { r.outDir = v; },
+               [](P&, const RunOptions& r) {
+                 return r.outDir;
+               }});
+  t.push_back({"--until", "STAGE", general, kStageNames, "",
+               [](P&, RunOptions& r, const std::string& v) {
+                 r.until = kStages[choice("--until", v, kStages)];
+               },
+               [](P&, const RunOptions& r) {
+                 return r.until;
+               }});
+  t.push_back({"--allow-collisions", "", general,
+               "write the machine programs even if the toolpath collides (the warning stays)", "",
+               [](P&, RunOptions& r, const std::string&) { r.allowCollisions = true; },
+               [](P&, const RunOptions& r) {
+                 return r.allowCollisions ? "on" : "off";
+               }});
+  t.push_back({"-q", "", general, "no progress lines on stdout (also --quiet)", "",
+               [](P&, RunOptions& r, const std::string&) { r.quiet = true; },
+               [](P&, const RunOptions& r) {
+                 return r.quiet ? "on" : "off";
+               }});
+
+  t.push_back(number("--scale", "F", place, "uniform scale factor applied to the model",
+                     "GLPlaceOnPlatform.Scale", placement, &vtkGLPlaceOnPlatform::SetScale,
+                     &vtkGLPlaceOnPlatform::GetScale));
+  t.push_back(number("--fit-size", "MM", place,
+                     "scale so the largest bounding-box side is MM (0 = use --scale)",
+                     "GLPlaceOnPlatform.FitSize", placement, &vtkGLPlaceOnPlatform::SetFitSize,
+                     &vtkGLPlaceOnPlatform::GetFitSize));
+  t.push_back({"--no-center", "", place,
+               "keep x and y as they are (default: bounding box centred on x = y = 0)",
+               "GLPlaceOnPlatform.CenterXY",
+               [](P& p, RunOptions&, const std::string&) { p.Placement->SetCenterXY(false); },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.Placement->GetCenterXY() ? "centred" : "kept");
+               }});
+
+  const char* orient = "Orientation (which side of the part faces the plate)";
+  t.push_back({"--orient", "MODE", orient,
+               "keep | auto: keep the placement, or search the best orientation\n"
+               "(candidates scored with the real stages on a coarse mesh;\n"
+               "orientation.csv lists them)",
+               "GLAutoOrient.Orient",
+               [](P& p, RunOptions&, const std::string& v) {
+                 p.Orientation->SetOrient(choice("--orient", v, {"keep", "auto"}));
+               },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.Orientation->GetOrient() ? "auto" : "keep");
+               }});
+  t.push_back(number("--min-base-area", "MM2", orient,
+                     "contact area with the plate an orientation needs (mm^2)",
+                     "GLAutoOrient.MinBaseArea", orientation, &vtkGLAutoOrient::SetMinBaseArea,
+                     &vtkGLAutoOrient::GetMinBaseArea));
+  t.push_back({"--orient-candidates", "N", orient,
+               "candidate directions from a uniform sphere sample (plus the\n"
+               "convex-hull facets and the placement as it is)",
+               "GLAutoOrient.SphereCandidates",
+               [](P& p, RunOptions&, const std::string& v) {
+                 p.Orientation->SetSphereCandidates(
+                     static_cast<int>(wholeNumber("--orient-candidates", v, 0, 2000)));
+               },
+               [](P& p, const RunOptions&) {
+                 return text(p.Orientation->GetSphereCandidates());
+               }});
+
+  t.push_back(number("--edge-length", "MM", mesh,
+                     "target tet edge length; 0 = automatic (see --target-tets)",
+                     "GLTetrahedralizeSurface.TargetEdgeLength", tets,
+                     &vtkGLTetrahedralizeSurface::SetTargetEdgeLength,
+                     &vtkGLTetrahedralizeSurface::GetTargetEdgeLength));
+  t.push_back({"--target-tets", "N", mesh, "tet count the automatic edge length aims at",
+               "GLTetrahedralizeSurface.TargetTetCount",
+               [](P& p, RunOptions&, const std::string& v) {
+                 p.Tetrahedralize->SetTargetTetCount(
+                     static_cast<int>(wholeNumber("--target-tets", v, 1, 2e9)));
+               },
+               [](P& p, const RunOptions&) {
+                 return text(p.Tetrahedralize->GetTargetTetCount());
+               }});
+  t.push_back(number("--radius-edge", "R", mesh,
+                     "TetGen radius-edge ratio bound (quality; 1.414 = sqrt 2)",
+                     "GLTetrahedralizeSurface.RadiusEdgeRatio", tets,
+                     &vtkGLTetrahedralizeSurface::SetRadiusEdgeRatio,
+                     &vtkGLTetrahedralizeSurface::GetRadiusEdgeRatio));
+
+  t.push_back({"--base", "MODE", gdf,
+               "base (heat source): lowest | faces\n"
+               "lowest: vertices within --base-tolerance of the lowest z;\n"
+               "faces: vertices of boundary faces facing down within --base-angle",
+               "GLGeodesicDistanceFields.SourceMode",
+               [](P& p, RunOptions&, const std::string& v) {
+                 p.GeodesicFields->SetSourceMode(choice("--base", v, {"lowest", "faces"}) == 0
+                                                     ? vtkGLGeodesicDistanceFields::LOWEST_Z
+                                                     : vtkGLGeodesicDistanceFields::DOWNWARD_FACES);
+               },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.GeodesicFields->GetSourceMode() ==
+                                            vtkGLGeodesicDistanceFields::DOWNWARD_FACES
+                                        ? "faces"
+                                        : "lowest");
+               }});
+  t.push_back(number("--base-tolerance", "MM", gdf,
+                     "height band above the lowest point that is the base",
+                     "GLGeodesicDistanceFields.BaseTolerance", fields,
+                     &vtkGLGeodesicDistanceFields::SetBaseTolerance,
+                     &vtkGLGeodesicDistanceFields::GetBaseTolerance));
+  t.push_back(number("--base-angle", "DEG", gdf,
+                     "max angle between a base face's outward normal and -z",
+                     "GLGeodesicDistanceFields.BaseFaceAngle", fields,
+                     &vtkGLGeodesicDistanceFields::SetBaseFaceAngle,
+                     &vtkGLGeodesicDistanceFields::GetBaseFaceAngle));
+  t.push_back(number("--time-factor", "F", gdf, "heat time t = F * h^2 (h = mean edge length)",
+                     "GLGeodesicDistanceFields.TimeFactor", fields,
+                     &vtkGLGeodesicDistanceFields::SetTimeFactor,
+                     &vtkGLGeodesicDistanceFields::GetTimeFactor));
+  t.push_back({"--reference", "X,Y,Z", gdf, "reference vector r of Eq. 3 (the lattice directions)",
+               "GLGeodesicDistanceFields.ReferenceVector",
+               [](P& p, RunOptions&, const std::string& v) {
+                 const auto r = parseNumbers("--reference", v, 3, "X,Y,Z");
+                 p.GeodesicFields->SetReferenceVector(r[0], r[1], r[2]);
+               },
+               [](P& p, const RunOptions&) {
+                 return text(p.GeodesicFields->GetReferenceVector(), 3);
+               }});
+  t.push_back({"--solver", "NAME", gdf, "cholmod | eigen (sparse Cholesky back end)",
+               "GLGeodesicDistanceFields.UseCholmod",
+               [](P& p, RunOptions&, const std::string& v) {
+                 p.GeodesicFields->SetUseCholmod(choice("--solver", v, {"cholmod", "eigen"}) == 0);
+               },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.GeodesicFields->GetUseCholmod() ? "cholmod" : "eigen");
+               }});
+
+  t.push_back(number(
+      "--layer-interval", "MM", layers, "gamma distance between layers (nominal layer thickness)",
+      "GLCurvedLayerSlicer.LayerInterval", slicer, &vtkGLCurvedLayerSlicer::SetLayerInterval,
+      &vtkGLCurvedLayerSlicer::GetLayerInterval));
+  t.push_back({"--first-layer", "MM", layers, "gamma of the first layer (default: the interval)",
+               "GLCurvedLayerSlicer.FirstLayerOffset",
+               [](P& p, RunOptions& r, const std::string& v) {
+                 p.Slicer->SetFirstLayerOffset(parseNumber("--first-layer", v));
+                 r.firstLayerGiven = true;
+               },
+               [](P& p, const RunOptions&) {
+                 return text(p.Slicer->GetFirstLayerOffset());
+               }});
+  t.push_back(number(
+      "--overhang-threshold", "DEG", layers, "overhang angle above which a surface needs support",
+      "GLOverhangAnalysis.ThresholdAngle", overhang, &vtkGLOverhangAnalysis::SetThresholdAngle,
+      &vtkGLOverhangAnalysis::GetThresholdAngle));
+}
+
+}  // namespace geolattice::cli

@@ -1,0 +1,179 @@
+// The options of the lattice, the print sequence and its nozzle, and the toolpath.
+#include "CliOptionTable.h"
+
+namespace geolattice::cli {
+
+void addPrintOptions(std::vector<CliOption>& t) {
+  const char* latt = "Lattice infill (iso-lines of Alpha and Beta on each layer, Algorithm 1)";
+  const char* seq = "Printing sequence (skeleton tree, Section 3.1) and the nozzle";
+  const char* path = "Toolpath (Section 3.2: Euler tours, thickness Eq. 15, extrusion Eq. 14)";
+  t.push_back({"--lattice-width", "MM", latt, "distance between lattice lines, both directions",
+               "GLLatticeInfill.AlphaWidth",
+               [](P& p, RunOptions&, const std::string& v) {
+                 const double w = parseNumber("--lattice-width", v);
+                 p.LatticeInfill->SetAlphaWidth(w);
+                 p.LatticeInfill->SetBetaWidth(w);
+               },
+               [](P& p, const RunOptions&) {
+                 return text(p.LatticeInfill->GetAlphaWidth());
+               }});
+  t.push_back(number("--alpha-width", "MM", latt, "distance between alpha lines",
+                     "GLLatticeInfill.AlphaWidth", lattice, &vtkGLLatticeInfill::SetAlphaWidth,
+                     &vtkGLLatticeInfill::GetAlphaWidth));
+  t.push_back(number("--beta-width", "MM", latt, "distance between beta lines",
+                     "GLLatticeInfill.BetaWidth", lattice, &vtkGLLatticeInfill::SetBetaWidth,
+                     &vtkGLLatticeInfill::GetBetaWidth));
+  t.push_back(number("--alpha-phase", "MM", latt, "offset of the alpha levels",
+                     "GLLatticeInfill.AlphaPhase", lattice, &vtkGLLatticeInfill::SetAlphaPhase,
+                     &vtkGLLatticeInfill::GetAlphaPhase));
+  t.push_back(number("--beta-phase", "MM", latt, "offset of the beta levels",
+                     "GLLatticeInfill.BetaPhase", lattice, &vtkGLLatticeInfill::SetBetaPhase,
+                     &vtkGLLatticeInfill::GetBetaPhase));
+  t.push_back(number("--min-subgraph", "MM", latt,
+                     "drop connected lattice pieces shorter than this",
+                     "GLLatticeInfill.MinimumSubgraphLength", lattice,
+                     &vtkGLLatticeInfill::SetMinimumSubgraphLength,
+                     &vtkGLLatticeInfill::GetMinimumSubgraphLength));
+  t.push_back({"--max-elements", "N", latt,
+               "refuse a stage estimated to make more elements: layer points + triangles, "
+               "lattice vertices + edges, sub-graph pairs, toolpath stations (40e6 ~ 8 GB)",
+               "GLLatticeInfill.MaximumElements",
+               [](P& p, RunOptions&, const std::string& v) {
+                 const double n = parseNumber("--max-elements", v);
+                 if (!(n >= 1)) {
+                   throw UsageError("--max-elements must be >= 1 (got " + v + ")");
+                 }
+                 p.Slicer->SetMaximumElements(n);
+                 p.LatticeInfill->SetMaximumElements(n);
+                 p.Planner->SetMaximumElements(n);
+                 p.Sequencer->SetMaximumElements(n);
+               },
+               [](P& p, const RunOptions&) {
+                 return text(p.LatticeInfill->GetMaximumElements());
+               }});
+
+  t.push_back({"--strategy", "NAME", seq,
+               "lpt | dpt | a4 | best (best = rollout of a4, never worse)",
+               "GLPrintSequencer.Strategy",
+               [](P& p, RunOptions&, const std::string& v) {
+                 p.Sequencer->SetStrategy(choice("--strategy", v, kStrategies));
+               },
+               [](P& p, const RunOptions&) {
+                 return kStrategies.at(p.Sequencer->GetStrategy());
+               }});
+  t.push_back(number(
+      "--nozzle-angle", "DEG", seq, "half-angle NA of the nozzle's bounding cone, in (0, 90)",
+      "GLNozzle.NozzleAngle", nozzle, &vtkGLNozzle::SetNozzleAngle, &vtkGLNozzle::GetNozzleAngle));
+  t.push_back(number("--nozzle-length", "MM", seq,
+                     "cone length; above it the holder (0 = cone only)", "GLNozzle.NozzleLength",
+                     nozzle, &vtkGLNozzle::SetNozzleLength, &vtkGLNozzle::GetNozzleLength));
+  t.push_back(number("--holder-radius", "MM", seq,
+                     "radius of the holder cylinder above the nozzle length",
+                     "GLNozzle.HolderRadius", nozzle, &vtkGLNozzle::SetHolderRadius,
+                     &vtkGLNozzle::GetHolderRadius));
+  t.push_back(number("--tip-clearance", "MM", seq,
+                     "ignore material at most this high above the nozzle tip",
+                     "GLNozzle.TipClearance", nozzle, &vtkGLNozzle::SetTipClearance,
+                     &vtkGLNozzle::GetTipClearance));
+  t.push_back(number("--tip-face-radius", "MM", seq,
+                     "ignore material this close to the tip (under the nozzle's\n"
+                     "flat face, which presses the bead)",
+                     "GLNozzle.TipFaceRadius", nozzle, &vtkGLNozzle::SetTipFaceRadius,
+                     &vtkGLNozzle::GetTipFaceRadius));
+  t.push_back({"--no-plate", "", seq,
+               "the build plate is no obstacle (default: it is, like printed material)",
+               "GLNozzle.BuildPlate",
+               [](P& p, RunOptions&, const std::string&) { p.Nozzle->SetBuildPlate(false); },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.Nozzle->GetBuildPlate() ? "obstacle" : "none");
+               }});
+  t.push_back(number(
+      "--plate-margin", "MM", seq, "the build plate extends this far beyond the part's footprint",
+      "GLNozzle.PlateMargin", nozzle, &vtkGLNozzle::SetPlateMargin, &vtkGLNozzle::GetPlateMargin));
+  t.push_back(number("--plate-thickness", "MM", seq, "thickness of the build plate under z = 0",
+                     "GLNozzle.PlateThickness", nozzle, &vtkGLNozzle::SetPlateThickness,
+                     &vtkGLNozzle::GetPlateThickness));
+  t.push_back({"--sample-spacing", "MM", seq,
+               "spacing of the material samples tested for collisions",
+               "GLPrintSequencer.SampleSpacing",
+               [](P& p, RunOptions&, const std::string& v) {
+                 const double s = parseNumber("--sample-spacing", v);
+                 p.Sequencer->SetSampleSpacing(s);
+                 p.SequenceVerifier->SetSampleSpacing(s);
+               },
+               [](P& p, const RunOptions&) {
+                 return text(p.Sequencer->GetSampleSpacing());
+               }});
+
+  t.push_back(number("--path-width", "MM", path, "path (bead) width w",
+                     "GLToolpathPlanner.PathWidth", planner, &vtkGLToolpathPlanner::SetPathWidth,
+                     &vtkGLToolpathPlanner::GetPathWidth));
+  t.push_back(number(
+      "--filament-diameter", "MM", path, "raw filament diameter; Eq. 14 uses the radius MM / 2",
+      "GLToolpathPlanner.FilamentDiameter", planner, &vtkGLToolpathPlanner::SetFilamentDiameter,
+      &vtkGLToolpathPlanner::GetFilamentDiameter));
+  t.push_back(number("--flow", "MU", path, "flow correction mu of Eq. 14, in (0, 1]",
+                     "GLToolpathPlanner.FlowCorrection", planner,
+                     &vtkGLToolpathPlanner::SetFlowCorrection,
+                     &vtkGLToolpathPlanner::GetFlowCorrection));
+  t.push_back(number("--print-speed", "MM/S", path, "nozzle feed rate of print moves",
+                     "GLToolpathPlanner.PrintFeedRate", planner,
+                     &vtkGLToolpathPlanner::SetPrintFeedRate,
+                     &vtkGLToolpathPlanner::GetPrintFeedRate));
+  t.push_back(number("--air-speed", "MM/S", path, "nozzle feed rate of air moves",
+                     "GLToolpathPlanner.AirFeedRate", planner,
+                     &vtkGLToolpathPlanner::SetAirFeedRate, &vtkGLToolpathPlanner::GetAirFeedRate));
+  t.push_back(number(
+      "--thickness-cap", "L", path, "layer thickness capped at L x the layer interval (Eq. 15)",
+      "GLToolpathPlanner.ThicknessCap", planner, &vtkGLToolpathPlanner::SetThicknessCap,
+      &vtkGLToolpathPlanner::GetThicknessCap));
+  t.push_back(number(
+      "--max-turn", "DEG", path, "largest nozzle axis change between points (rotation steps)",
+      "GLToolpathPlanner.MaxTurnAngle", planner, &vtkGLToolpathPlanner::SetMaxTurnAngle,
+      &vtkGLToolpathPlanner::GetMaxTurnAngle));
+  t.push_back(number("--max-segment", "MM", path, "subdivide longer path segments (0 = never)",
+                     "GLToolpathPlanner.MaxSegmentLength", planner,
+                     &vtkGLToolpathPlanner::SetMaxSegmentLength,
+                     &vtkGLToolpathPlanner::GetMaxSegmentLength));
+  t.push_back(number("--max-tilt", "DEG", path,
+                     "largest tilt of the nozzle axis off the layer normal where\n"
+                     "the normal would hit earlier material (0 = never tilt)",
+                     "GLToolpathPlanner.MaxAxisTilt", planner,
+                     &vtkGLToolpathPlanner::SetMaxAxisTilt, &vtkGLToolpathPlanner::GetMaxAxisTilt));
+  t.push_back(number("--tilt-blend", "MM", path, "path length over which such a tilt fades out",
+                     "GLToolpathPlanner.TiltBlendLength", planner,
+                     &vtkGLToolpathPlanner::SetTiltBlendLength,
+                     &vtkGLToolpathPlanner::GetTiltBlendLength));
+  t.push_back(number("--safe-margin", "MM", path, "margin of the safe box air moves travel on",
+                     "GLToolpathPlanner.SafeMargin", planner, &vtkGLToolpathPlanner::SetSafeMargin,
+                     &vtkGLToolpathPlanner::GetSafeMargin));
+  t.push_back(number("--lift", "MM", path, "lift along the axis for a hop onto an upper sub-graph",
+                     "GLToolpathPlanner.Lift", planner, &vtkGLToolpathPlanner::SetLift,
+                     &vtkGLToolpathPlanner::GetLift));
+  t.push_back(number("--retraction", "MM", path,
+                     "filament retracted before each air move, primed after it",
+                     "GLToolpathPlanner.Retraction", planner, &vtkGLToolpathPlanner::SetRetraction,
+                     &vtkGLToolpathPlanner::GetRetraction));
+  t.push_back(number("--tooth-length", "MM", path,
+                     "support perimeter tooth length along trimmed edges, 0 = 2w",
+                     "GLToolpathPlanner.ToothLength", planner,
+                     &vtkGLToolpathPlanner::SetToothLength, &vtkGLToolpathPlanner::GetToothLength));
+  t.push_back({"--no-perimeter", "", path, "no support perimeter where boundary edges were trimmed",
+               "GLToolpathPlanner.SupportPerimeter",
+               [](P& p, RunOptions&, const std::string&) { p.Planner->SetSupportPerimeter(false); },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.Planner->GetSupportPerimeter() ? "perimeter" : "none");
+               }});
+  t.push_back({"--replay-steps", "N", path,
+               "step files of the print replay (toolpath.pvd); fewer for long\n"
+               "paths (all steps together <= ~2 million points); 0 = none",
+               "",
+               [](P&, RunOptions& r, const std::string& v) {
+                 r.replaySteps = static_cast<int>(wholeNumber("--replay-steps", v, 0, 9999));
+               },
+               [](P&, const RunOptions& r) {
+                 return text(r.replaySteps);
+               }});
+}
+
+}  // namespace geolattice::cli
