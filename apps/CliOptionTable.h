@@ -34,7 +34,8 @@ inline std::string text(const double* v, int n) {
 }
 
 /// A whole number in [lo, hi] or UsageError.
-inline long long wholeNumber(const std::string& flag, const std::string& value, double lo, double hi) {
+inline long long wholeNumber(const std::string& flag, const std::string& value, double lo,
+                             double hi) {
   const double v = parseNumber(flag, value);
   if (v < lo || v > hi || v != std::floor(v)) {
     throw UsageError(flag + " expects a whole number from " + text(lo) + " to " + text(hi) +
@@ -45,7 +46,7 @@ inline long long wholeNumber(const std::string& flag, const std::string& value, 
 
 /// One of `names` (its index) or UsageError.
 inline int choice(const std::string& flag, const std::string& value,
-           const std::vector<std::string>& names) {
+                  const std::vector<std::string>& names) {
   const auto it = std::find(names.begin(), names.end(), value);
   if (it == names.end()) {
     std::string list;
@@ -104,10 +105,12 @@ inline vtkGLURScriptWriter* script(P& p) {
   return p.ScriptWriter;
 }
 
-inline const char* const kStageNames = "mesh | gdf | layers | lattice | sequence | toolpath | program";
+inline const char* const kStageNames =
+    "mesh | gdf | layers | lattice | sequence | toolpath | program";
 inline const std::vector<std::string> kStages = {"mesh",     "gdf",      "layers", "lattice",
-                                          "sequence", "toolpath", "program"};
-inline const std::vector<std::string> kStrategies = {"lpt", "dpt", "a4", "best"};  // = Strategy 0..3
+                                                 "sequence", "toolpath", "program"};
+inline const std::vector<std::string> kStrategies = {"lpt", "dpt", "a4",
+                                                     "best"};  // = Strategy 0..3
 
 /// The table's parts, in --help order.
 void addModelOptions(std::vector<CliOption>& t);

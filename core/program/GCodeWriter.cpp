@@ -1,6 +1,7 @@
 #include "program/GCodeWriter.h"
 
 #include "common/Error.h"
+#include "common/FixedNumber.h"
 #include <cstdio>
 
 #include <Eigen/Geometry>
@@ -128,21 +129,7 @@ std::string comment(GCodeFlavor f, std::string text) {
 /// Fixed-point number, at most `decimals` decimals, no exponent (RS274NGC reads "1e3" as an E
 /// word), no "-0".
 std::string num(double v, int decimals = 5) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*f", decimals, v);
-  std::string s = buf;
-  if (s.find('.') != std::string::npos) {
-    while (s.back() == '0') {
-      s.pop_back();
-    }
-    if (s.back() == '.') {
-      s.pop_back();
-    }
-  }
-  if (s == "-0") {
-    s = "0";
-  }
-  return s;
+  return fixedNumber(v, decimals);
 }
 
 }  // namespace

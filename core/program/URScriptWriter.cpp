@@ -1,6 +1,7 @@
 #include "program/URScriptWriter.h"
 
 #include "common/Error.h"
+#include "common/FixedNumber.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,17 +11,7 @@
 namespace geolattice {
 
 std::string urNumber(double v) {
-  if (std::abs(v) < 5e-7) {
-    return "0";
-  }
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.6f", v);
-  std::string s = buf;
-  while (!s.empty() && s.back() == '0')
-    s.pop_back();
-  if (!s.empty() && s.back() == '.')
-    s.pop_back();
-  return s;
+  return fixedNumber(v, 6);
 }
 
 namespace {

@@ -5,6 +5,7 @@
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
 #include "io/MeshReader.h"
+#include "common/FixedNumber.h"
 #include "program/URScriptWriter.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
@@ -15,6 +16,8 @@
 #include "../common/URScriptSyntax.h"
 
 #include <gtest/gtest.h>
+
+#include <cstdio>
 
 #include <regex>
 #include <sstream>
@@ -86,6 +89,26 @@ TEST(URScriptWriter, NumbersAndBadInput) {
   EXPECT_EQ(urNumber(-1e-9), "0");
   EXPECT_EQ(urNumber(2.0), "2");
   EXPECT_EQ(urNumber(-0.5), "-0.5");
+  // Never an exponent or "-0" (common/FixedNumber.h), the same digits as printf's %.6f.
+  EXPECT_EQ(urNumber(-4e-7), "0");
+  EXPECT_EQ(urNumber(6e-7), "0.000001");
+  EXPECT_EQ(urNumber(1e20), "100000000000000000000");
+  EXPECT_EQ(urNumber(-1234.5), "-1234.5");
+  EXPECT_EQ(urNumber(0.0), "0");
+  EXPECT_EQ(fixedNumber(2.5, 0), "2");  // round half to even, as %.0f
+  EXPECT_EQ(fixedNumber(-0.25, 1), "-0.2");
+  for (const double v : {0.1, 1.0 / 3, -2.0 / 3, 123.456789, 1e-5, 9.9999995}) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, "%.6f", v);
+    std::string expected = buf;
+    while (expected.back() == '0') {
+      expected.pop_back();
+    }
+    if (expected.back() == '.') {
+      expected.pop_back();
+    }
+    EXPECT_EQ(urNumber(v), expected) << v;
+  }
   RobotCell cell;
   RobotPath rp;
   std::vector<Eigen::Vector3d> pts;
