@@ -1,0 +1,163 @@
+// The program stage of `geolattice run`: the safety gates, then the URScript program, the
+// G-code and the waypoint CSV (all or none of them).
+#include "RunCommand.h"
+#include "RunSession.h"
+
+#include "vtkGLArrayNames.h"
+
+#include <vtkDataObject.h>
+#include <vtkFieldData.h>
+
+#include <algorithm>
+#include <iostream>
+#include <sstream>
+
+namespace geolattice {
+
+namespace fs = std::filesystem;
+
+int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
+  GLPrintPipeline& P = run.P;
+  const RunOptions& R = run.R;
+  Json& s = run.Section("program");
+  Json& gates = run.Report["gates"];
+  const long long stations =
+      static_cast<long long>(fieldValue(pathCollisions, arrays::CollisionStations));
+  const long long colliding =
+      static_cast<long long>(fieldValue(pathCollisions, arrays::CollisionViolatingStations));
+  if (colliding > 0) {
+    std::ostringstream line;
+    line << "toolpath collides at " << colliding << " of " << stations << " stations ("
+         << (100.0 * static_cast<double>(colliding) / std::max<long long>(stations, 1)) << " %)";
+    if (pathCollisions->GetFieldData()->GetArray(arrays::CollisionLayerRange)) {
+      line << ", layers " << fieldValue(pathCollisions, arrays::CollisionLayerRange, 0) << "-"
+           << fieldValue(pathCollisions, arrays::CollisionLayerRange, 1);
+    }
+    line << ": see toolpath_collisions.vtp";
+    gates["collision"] = {{"passed", false},
+                          {"colliding_stations", colliding},
+                          {"stations", stations},
+                          {"overridden", R.allowCollisions}};
+    if (!R.allowCollisions) {
+      gates["collision"]["stopped"] = {"program"};
+      run.GateLine(line.str() + "; no program written (--allow-collisions writes it anyway)");
+      s["written"] = false;
+      return kExitCollisionGate;
+    }
+    run.GateLine(line.str() + "; programs written anyway (--allow-collisions)", true);
+  } else {
+    gates["collision"] = {{"passed", true}, {"stations", stations}};
+  }
+
+  if (!R.quiet) {
+    std::cout << "geolattice: program ..." << std::flush;
+  }
+  const auto start = Clock::now();
+  const std::string dir = R.outDir;
+  vtkGLURScriptWriter* script = P.ScriptWriter;
+  script->SetFileName((fs::path(dir) / "print_part.script").string().c_str());
+  const std::string scriptError = run.RunWriter(script, !R.quiet);
+  reportScript(P, s);
+  const double scriptSeconds = secondsSince(start);
+  if (!scriptError.empty()) {
+    if (!R.quiet) {
+      std::cout << " stopped\n";
+    }
+    if (script->GetUnreachableCount() > 0 && !script->GetAllowUnreachable()) {
+      gates["reachability"] = {
+          {"passed", false},
+          {"unreachable", static_cast<long long>(script->GetUnreachableCount())},
+          {"stopped", {"program"}}};
+      run.GateLine("program: " + withFlagNames(scriptError));
+      return kExitUnreachableGate;
+    }
+    if (script->GetLargeJointSteps() > 0) {
+      gates["joints"] = {{"passed", false},
+                         {"large_steps", static_cast<long long>(script->GetLargeJointSteps())},
+                         {"max_step_deg", script->GetMaxJointStepDeg()},
+                         {"stopped", {"program"}}};
+      run.GateLine("program: " + withFlagNames(scriptError));
+      return kExitJointGate;
+    }
+    throw StageError("program", scriptError);
+  }
+  gates["reachability"] = {
+      {"passed", script->GetUnreachableCount() == 0},
+      {"unreachable", static_cast<long long>(script->GetUnreachableCount())}};
+  gates["joints"] = {{"passed", true}, {"max_step_deg", script->GetMaxJointStepDeg()}};
+  if (script->GetUnreachableCount() > 0) {
+    std::cerr << "geolattice: warning: " << script->GetUnreachableCount() << " of "
+              << script->GetNumberOfWaypoints()
+              << " toolpath points are unreachable: the program was written anyway "
+                 "(--allow-unreachable)\n";
+  }
+
+  Json& g = s["gcode"];
+  std::vector<std::string> programFiles;
+  for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k) {
+    programFiles.push_back(script->GetFileWritten(k));
+  }
+  const std::string gcodePath = (fs::path(dir) / "toolpath.gcode").string();
+  std::string gcodeSkipped;
+  double gcodeSeconds = 0;
+  if (!R.gcode) {
+    g = {{"kinematics", "none"}};
+  } else {
+    g["kinematics"] = P.GCodeWriter->GetKinematics() ? "bc" : "ac";
+    P.GCodeWriter->SetFileName(gcodePath.c_str());
+    const auto t0 = Clock::now();
+    const std::string error = run.RunWriter(P.GCodeWriter);
+    gcodeSeconds = secondsSince(t0);
+    if (!error.empty() && P.GCodeWriter->GetOutOfLimitsCount() > 0) {
+      // The table cannot tilt far enough for some points (axes pointing down under an
+      // overhang): no G-code, but the robot program stays valid; the report names the points.
+      g["written"] = false;
+      g["error"] = error;
+      g["out_of_limits"] = static_cast<long long>(P.GCodeWriter->GetOutOfLimitsCount());
+      gcodeSkipped = error;
+    } else if (!error.empty()) {
+      RunSession::RemoveFiles(programFiles);
+      if (!R.quiet) {
+        std::cout << " failed\n";
+      }
+      throw StageError("program", error + " (--tilt-limits, or --gcode none)");
+    } else {
+      g["written"] = true;
+      g["file"] = "toolpath.gcode";
+      reportGCode(P, g);
+      programFiles.push_back(gcodePath);
+    }
+  }
+
+  const std::string csvPath = (fs::path(dir) / "waypoints.csv").string();
+  P.WaypointWriter->SetFileName(csvPath.c_str());
+  const auto t1 = Clock::now();
+  const std::string csvError = run.RunWriter(P.WaypointWriter);
+  if (!csvError.empty()) {
+    RunSession::RemoveFiles(programFiles);
+    if (!R.quiet) {
+      std::cout << " failed\n";
+    }
+    throw StageError("program", csvError);
+  }
+  for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k) {
+    run.Files.add(script->GetFileWritten(k), scriptSeconds / script->GetNumberOfFilesWritten());
+  }
+  if (R.gcode && gcodeSkipped.empty()) {
+    run.Files.add(gcodePath, gcodeSeconds);
+  }
+  run.Files.add(csvPath, secondsSince(t1));
+  if (!gcodeSkipped.empty()) {
+    std::cout << "geolattice: warning: no G-code written: " << gcodeSkipped << "\n";
+  }
+  s["csv"] = "waypoints.csv";
+  s["csv_rows"] = static_cast<long long>(P.WaypointWriter->GetNumberOfRows());
+  s["written"] = true;
+  s["seconds"] = secondsSince(start);
+  if (!R.quiet) {
+    std::cout << " done (" << secondsSince(start) << " s)\n";
+  }
+  return kExitOk;
+}
+
+}  // namespace geolattice

@@ -1,0 +1,185 @@
+#include "RunSession.h"
+
+#include "ErrorCapture.h"
+#include "Interrupt.h"
+
+#include "common/AtomicFile.h"
+
+#include <vtkAlgorithm.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkExecutive.h>
+#include <vtkNew.h>
+#include <vtkWriter.h>
+
+#include <fstream>
+#include <iostream>
+#include <system_error>
+
+namespace geolattice {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// While alive, prints " 25%", " 50%", " 75%" on the current stage line as the progress events of
+/// `algorithm` pass them (nothing when disabled, e.g. with -q).
+class ProgressPrinter {
+public:
+  ProgressPrinter(vtkAlgorithm* algorithm, bool enabled)
+      : Algorithm(enabled ? algorithm : nullptr) {
+    if (this->Algorithm) {
+      this->Command->SetClientData(&this->Next);
+      this->Command->SetCallback([](vtkObject*, unsigned long, void* client, void* call) {
+        int& next = *static_cast<int*>(client);
+        const double p = call ? *static_cast<double*>(call) : 0.0;
+        for (; next <= 3 && p >= 0.25 * next; ++next) {
+          std::cout << " " << 25 * next << "%" << std::flush;
+        }
+      });
+      this->Tag = this->Algorithm->AddObserver(vtkCommand::ProgressEvent, this->Command);
+    }
+  }
+  ~ProgressPrinter() {
+    if (this->Algorithm) {
+      this->Algorithm->RemoveObserver(this->Tag);
+    }
+  }
+  ProgressPrinter(const ProgressPrinter&) = delete;
+  ProgressPrinter& operator=(const ProgressPrinter&) = delete;
+
+private:
+  vtkAlgorithm* Algorithm;
+  vtkNew<vtkCallbackCommand> Command;
+  unsigned long Tag = 0;
+  int Next = 1;  ///< the next quarter to print
+};
+
+}  // namespace
+
+double secondsSince(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+/// The report section of a stage, with its seconds first.
+Json& RunSession::Section(const char* name) {
+  Json& s = this->Report[name];
+  s["seconds"] = this->LastSeconds;
+  return s;
+}
+
+/// Updates `last` (watching `watched`, default `last`, for errors) and returns its output.
+/// Throws StageError with the first error message when the update fails.
+vtkDataObject* RunSession::Update(const char* stage, vtkAlgorithm* last,
+                                  std::initializer_list<vtkAlgorithm*> watched) {
+  if (!R.quiet) {
+    std::cout << "geolattice: " << stage << " ..." << std::flush;
+  }
+  ErrorCapture errors;
+  for (vtkAlgorithm* a : watched) {
+    errors.Watch(a);
+  }
+  if (watched.size() == 0) {
+    errors.Watch(last);
+  }
+  const auto start = Clock::now();
+  int ok = 0;
+  {
+    const ProgressPrinter percent(last, !R.quiet && IsLongStage(stage));
+    std::vector<vtkAlgorithm*> stageFilters(watched);
+    if (stageFilters.empty()) {
+      stageFilters.push_back(last);
+    }
+    const AbortOnInterrupt abort(stageFilters);
+    ok = last->GetExecutive()->Update();
+  }
+  if (InterruptHandler::Interrupted()) {
+    throw StageError(stage, "interrupted");
+  }
+  this->LastSeconds = secondsSince(start);
+  if (!R.quiet) {
+    std::cout << (ok && errors.Message.empty() ? " done" : " failed") << " (" << this->LastSeconds
+              << " s)\n";
+  }
+  if (!ok || !errors.Message.empty()) {
+    throw StageError(stage, errors.Message.empty() ? std::string(last->GetClassName()) + " failed"
+                                                   : errors.Message);
+  }
+  return last->GetOutputDataObject(0);
+}
+
+/// The stages that can take long enough for a percentage on their line.
+bool RunSession::IsLongStage(const std::string& stage) {
+  return stage == "mesh" || stage == "gdf" || stage == "lattice" || stage == "sequence" ||
+         stage == "toolpath";
+}
+
+/// Writes with `writer` and returns the first error reported, empty on success.
+std::string RunSession::RunWriter(vtkWriter* writer, bool percent) {
+  ErrorCapture errors;
+  errors.Watch(writer);
+  const ProgressPrinter printer(writer, percent);
+  const AbortOnInterrupt abort({writer});
+  const int ok = writer->Write();
+  if (InterruptHandler::Interrupted()) {
+    throw StageError("program", "interrupted");  // the writers run in the program stage
+  }
+  if (errors.Message.empty() && !ok) {
+    errors.Message = std::string(writer->GetClassName()) + " failed";
+  }
+  return errors.Message;
+}
+
+/// Removes program files already written: a later writer of the stage failed, and the stage
+/// leaves all its files or none.
+void RunSession::RemoveFiles(const std::vector<std::string>& files) {
+  std::error_code ec;
+  for (const std::string& f : files) {
+    fs::remove(f, ec);
+  }
+}
+
+void RunSession::GateLine(const std::string& line, bool warning) {
+  std::cerr << "geolattice: " << (warning ? "warning: " : "stopped: ") << line << "\n";
+}
+
+void RunSession::Write(vtkDataObject* data, const char* name) {
+  const std::string path = (fs::path(R.outDir) / name).string();
+  const auto start = Clock::now();
+  writeVtkXml(data, path);
+  this->Files.add(path, secondsSince(start));
+}
+
+
+/// Moves the earlier run's leftovers to previous/, then writes report.json (with every file
+/// written and its seconds, and the exit status).
+void RunSession::Finish(int status) {
+  const std::vector<std::string> retired = this->Files.retireStaleOutputs();
+  Json files = Json::array();
+  for (const auto& [name, seconds] : this->Files.files()) {
+    files.push_back({{"file", name}, {"seconds", seconds}});
+  }
+  this->Report["files"] = files;
+  if (!retired.empty()) {
+    this->Report["previous"] = retired;
+  }
+  this->Report["exit_status"] = status;
+  const std::string path = (fs::path(R.outDir) / "report.json").string();
+  writeAtomically(path, [this](const std::string& tmp) {
+    std::ofstream out(tmp);
+    out << this->Report.dump(2) << "\n";
+    return static_cast<bool>(out);
+  });
+  if (!R.quiet) {
+    std::cout << "geolattice: wrote " << this->Files.files().size() + 1 << " files in "
+              << R.outDir << " (report.json lists them)";
+    if (!retired.empty()) {
+      std::cout << "; " << retired.size() << " files of an earlier run moved to " << R.outDir
+                << "/previous";
+    }
+    std::cout << "\ngeolattice: open them in ParaView (paraview " << R.outDir
+              << "/toolpath.vtp) or load the plugin for the filters.\n";
+  }
+}
+
+}  // namespace geolattice

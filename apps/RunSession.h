@@ -1,0 +1,78 @@
+#pragma once
+/// @file RunSession.h
+/// @brief The state of one `geolattice run` and what every stage does with it: run a stage's
+/// filters with progress, Ctrl-C and error capture (Update), write files and record them, the
+/// report sections, the gate lines, and report.json at the end. RunCommand.cxx walks the stages
+/// with it; ProgramStage.cxx is the program stage behind its safety gates.
+#include "CliOptions.h"
+#include "OutputFiles.h"
+#include "StageReports.h"
+
+#include "GLPrintPipeline.h"
+#include "common/Error.h"
+
+#include <chrono>
+#include <filesystem>
+#include <initializer_list>
+#include <string>
+#include <vector>
+
+class vtkAlgorithm;
+class vtkDataObject;
+class vtkWriter;
+
+namespace geolattice {
+
+using Clock = std::chrono::steady_clock;
+double secondsSince(Clock::time_point start);
+
+/// A stage that failed: report.json names it, stderr gets "STAGE: message".
+struct StageError : GeoLatticeError {
+  StageError(const std::string& stage, const std::string& message)
+      : GeoLatticeError(stage + ": " + message), Stage(stage), Message(message) {}
+  std::string Stage, Message;
+};
+
+class RunSession {
+public:
+  GLPrintPipeline P;
+  RunOptions R;
+  OutputRecord Files{""};
+  Json Report = Json::object();
+  double LastSeconds = 0;
+
+  /// The report section of a stage, with its seconds first.
+  Json& Section(const char* name);
+  /// Updates `last` (watching `watched`, default `last`, for errors; Ctrl-C aborts them) and
+  /// returns its output. Throws StageError with the first error message when the update fails.
+  vtkDataObject* Update(const char* stage, vtkAlgorithm* last,
+                        std::initializer_list<vtkAlgorithm*> watched = {});
+  /// The stages that can take long enough for a percentage on their line.
+  static bool IsLongStage(const std::string& stage);
+  /// Writes with `writer` and returns the first error reported, empty on success.
+  static std::string RunWriter(vtkWriter* writer, bool percent = false);
+  /// Removes program files already written (a stage leaves all its files or none).
+  static void RemoveFiles(const std::vector<std::string>& files);
+  /// One stderr line of a gate: "stopped: ..." or "warning: ...".
+  void GateLine(const std::string& line, bool warning = false);
+  /// Writes `data` as OUTDIR/name (VTK XML) and records it.
+  void Write(vtkDataObject* data, const char* name);
+  /// Runs write(OUTDIR/name) and records the file.
+  template <class F>
+  void WriteFile(const char* name, F&& write) {
+    const std::string path = (std::filesystem::path(R.outDir) / name).string();
+    const auto start = Clock::now();
+    write(path);
+    this->Files.add(path, secondsSince(start));
+  }
+  /// Moves the earlier run's leftovers to previous/, then writes report.json (every file written
+  /// and its seconds, and the exit status).
+  void Finish(int status);
+};
+
+/// The program stage behind its gates: a colliding toolpath (unless --allow-collisions),
+/// unreachable points (unless --allow-unreachable) or a joint flip/limit stop it before any
+/// program file is written; the report records which gate stopped what. Returns the exit status.
+int runProgramStage(RunSession& run, vtkDataObject* pathCollisions);
+
+}  // namespace geolattice
