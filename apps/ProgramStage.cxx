@@ -81,9 +81,8 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
     }
     throw StageError("program", scriptError);
   }
-  gates["reachability"] = {
-      {"passed", script->GetUnreachableCount() == 0},
-      {"unreachable", static_cast<long long>(script->GetUnreachableCount())}};
+  gates["reachability"] = {{"passed", script->GetUnreachableCount() == 0},
+                           {"unreachable", static_cast<long long>(script->GetUnreachableCount())}};
   gates["joints"] = {{"passed", true}, {"max_step_deg", script->GetMaxJointStepDeg()}};
   if (script->GetUnreachableCount() > 0) {
     std::cerr << "geolattice: warning: " << script->GetUnreachableCount() << " of "

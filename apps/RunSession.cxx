@@ -150,7 +150,6 @@ void RunSession::Write(vtkDataObject* data, const char* name) {
   this->Files.add(path, secondsSince(start));
 }
 
-
 /// Moves the earlier run's leftovers to previous/, then writes report.json (with every file
 /// written and its seconds, and the exit status).
 void RunSession::Finish(int status) {
@@ -171,8 +170,8 @@ void RunSession::Finish(int status) {
     return static_cast<bool>(out);
   });
   if (!R.quiet) {
-    std::cout << "geolattice: wrote " << this->Files.files().size() + 1 << " files in "
-              << R.outDir << " (report.json lists them)";
+    std::cout << "geolattice: wrote " << this->Files.files().size() + 1 << " files in " << R.outDir
+              << " (report.json lists them)";
     if (!retired.empty()) {
       std::cout << "; " << retired.size() << " files of an earlier run moved to " << R.outDir
                 << "/previous";

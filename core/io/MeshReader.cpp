@@ -193,6 +193,30 @@ void checkNotEmpty(const std::string& path, size_t numPoints, size_t numCells,
   }
 }
 
+/// Before writing: a non-empty mesh whose cells index existing vertices, all finite.
+/// cellName: "triangle" / "tet" (singular, for the message).
+template <class Cells>
+void checkWritable(const std::string& path, const std::vector<Vec3>& points, const Cells& cells,
+                   const char* cellName) {
+  checkNotEmpty(path, points.size(), cells.size(), (std::string(cellName) + "s").c_str());
+  const long long numPoints = static_cast<long long>(points.size());
+  for (size_t t = 0; t < cells.size(); ++t) {
+    for (int id : cells[t]) {
+      if (id < 0 || id >= numPoints) {
+        throw GeoLatticeError("cannot write " + path + ": " + cellName + " " + std::to_string(t) +
+                              " has vertex index " + std::to_string(id) + " out of range [0, " +
+                              std::to_string(numPoints - 1) + "]");
+      }
+    }
+  }
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!points[i].allFinite()) {
+      throw GeoLatticeError("cannot write " + path + ": vertex " + std::to_string(i) +
+                            " is not finite");
+    }
+  }
+}
+
 }  // namespace
 
 TriangleSurface readOff(const std::string& path) {
@@ -337,23 +361,7 @@ TriangleSurface readObj(const std::string& path) {
 }
 
 void writeObj(const std::string& path, const TriangleSurface& surface, const std::string& comment) {
-  checkNotEmpty(path, surface.points.size(), surface.triangles.size(), "triangles");
-  const long long numPoints = static_cast<long long>(surface.points.size());
-  for (size_t t = 0; t < surface.triangles.size(); ++t) {
-    for (int id : surface.triangles[t]) {
-      if (id < 0 || id >= numPoints) {
-        throw GeoLatticeError("cannot write " + path + ": triangle " + std::to_string(t) +
-                              " has vertex index " + std::to_string(id) + " out of range [0, " +
-                              std::to_string(numPoints - 1) + "]");
-      }
-    }
-  }
-  for (size_t i = 0; i < surface.points.size(); ++i) {
-    if (!surface.points[i].allFinite()) {
-      throw GeoLatticeError("cannot write " + path + ": vertex " + std::to_string(i) +
-                            " is not finite");
-    }
-  }
+  checkWritable(path, surface.points, surface.triangles, "triangle");
   AtomicFileSet files;
   {
     std::ostream& out = files.open(path);
@@ -539,23 +547,7 @@ TetMesh readTetGenMesh(const std::string& path) {
 }
 
 void writeTetFile(const std::string& path, const TetMesh& mesh) {
-  checkNotEmpty(path, mesh.points.size(), mesh.tets.size(), "tets");
-  const long long numPoints = static_cast<long long>(mesh.points.size());
-  for (size_t t = 0; t < mesh.tets.size(); ++t) {
-    for (int id : mesh.tets[t]) {
-      if (id < 0 || id >= numPoints) {
-        throw GeoLatticeError("cannot write " + path + ": tet " + std::to_string(t) +
-                              " has vertex index " + std::to_string(id) + " out of range [0, " +
-                              std::to_string(numPoints - 1) + "]");
-      }
-    }
-  }
-  for (size_t i = 0; i < mesh.points.size(); ++i) {
-    if (!mesh.points[i].allFinite()) {
-      throw GeoLatticeError("cannot write " + path + ": vertex " + std::to_string(i) +
-                            " is not finite");
-    }
-  }
+  checkWritable(path, mesh.points, mesh.tets, "tet");
 
   AtomicFileSet files;
   {
