@@ -11,6 +11,8 @@
 #include "mesh/AnalyticShapes.h"
 #include "slicer/CurvedLayerSlicer.h"
 
+#include "../common/ErrorOf.h"
+
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -207,15 +209,6 @@ LatticeOptions phases(double a, double b) {
   o.alphaPhase = a;
   o.betaPhase = b;
   return o;
-}
-
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const GeoLatticeError& e) {
-    return e.what();
-  }
-  return "(no error)";
 }
 
 }  // namespace

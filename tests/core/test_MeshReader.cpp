@@ -2,6 +2,8 @@
 
 #include "common/Error.h"
 
+#include "../common/ErrorOf.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -38,18 +40,6 @@ protected:
 
   fs::path dir_;
 };
-
-/// Message of the GeoLatticeError thrown by f; a test failure if none is thrown.
-template <class F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const GeoLatticeError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected a GeoLatticeError";
-  return {};
-}
 
 #define EXPECT_CONTAINS(text, part) \
   EXPECT_NE(std::string(text).find(part), std::string::npos) << "message: " << (text)
@@ -107,7 +97,7 @@ TEST_F(MeshReaderTest, OffHeaderVariants) {
   // Header keyword left out (optional in Geomview's OFF).
   EXPECT_EQ(readOff(write("bare.off", "3 1\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")).triangles.size(), 1u);
   // 4-D and n-D variants are refused by name.
-  EXPECT_CONTAINS(errorOf([&] {
+  EXPECT_CONTAINS(expectedErrorOf([&] {
                     readOff(write("4.off", "4OFF\n3 1 0\n0 0 0 1\n1 0 0 1\n0 1 0 1\n3 0 1 2\n"));
                   }),
                   "unsupported OFF variant '4OFF'");
@@ -121,71 +111,79 @@ TEST_F(MeshReaderTest, OffKnight) {
 
 TEST_F(MeshReaderTest, OffMalformedNumberNamesFileAndLine) {
   const std::string p = write("bad.off", "OFF\n3 1 0\n0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n");
-  const std::string msg = errorOf([&] { readOff(p); });
+  const std::string msg = expectedErrorOf([&] { readOff(p); });
   EXPECT_CONTAINS(msg, p + ":4:");
   EXPECT_CONTAINS(msg, "'x'");
 }
 
 TEST_F(MeshReaderTest, OffTooFewCoordinates) {
   EXPECT_CONTAINS(
-      errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n")); }),
+      expectedErrorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2\n")); }),
       "b.off:4: vertex 1: expected 'x y z'");
 }
 
 TEST_F(MeshReaderTest, OffNonFiniteCoordinate) {
-  EXPECT_CONTAINS(
-      errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n")); }),
-      "b.off:5: non-finite");
+  EXPECT_CONTAINS(expectedErrorOf([&] {
+                    readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 nan 0\n3 0 1 2\n"));
+                  }),
+                  "b.off:5: non-finite");
 }
 
 TEST_F(MeshReaderTest, OffIndexOutOfRange) {
-  EXPECT_CONTAINS(
-      errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n")); }),
-      "b.off:6: face 0: vertex index 3 out of range [0, 2]");
-  EXPECT_CONTAINS(
-      errorOf([&] { readOff(write("n.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n")); }),
-      "vertex index -1 out of range");
+  EXPECT_CONTAINS(expectedErrorOf([&] {
+                    readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"));
+                  }),
+                  "b.off:6: face 0: vertex index 3 out of range [0, 2]");
+  EXPECT_CONTAINS(expectedErrorOf([&] {
+                    readOff(write("n.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n"));
+                  }),
+                  "vertex index -1 out of range");
 }
 
 TEST_F(MeshReaderTest, OffFaceWithTooFewVertices) {
   EXPECT_CONTAINS(
-      errorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n")); }),
+      expectedErrorOf([&] { readOff(write("b.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n")); }),
       "b.off:6: face 0 has 2 vertices");
-  EXPECT_CONTAINS(
-      errorOf([&] { readOff(write("s.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n")); }),
-      "s.off:6: face 0: expected 4 vertex indices, got 3");
+  EXPECT_CONTAINS(expectedErrorOf([&] {
+                    readOff(write("s.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n"));
+                  }),
+                  "s.off:6: face 0: expected 4 vertex indices, got 3");
 }
 
 TEST_F(MeshReaderTest, OffCountsDoNotMatch) {
   // Fewer faces than announced.
-  EXPECT_CONTAINS(
-      errorOf([&] { readOff(write("few.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")); }),
-      "unexpected end of file: expected face 1 of 2");
+  EXPECT_CONTAINS(expectedErrorOf([&] {
+                    readOff(write("few.off", "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n"));
+                  }),
+                  "unexpected end of file: expected face 1 of 2");
   // More data than announced.
   EXPECT_CONTAINS(
-      errorOf([&] {
+      expectedErrorOf([&] {
         readOff(write("many.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 2 1 0\n"));
       }),
       "many.off:7: extra data after 3 vertices and 1 faces");
   // Bad counts line.
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("hdr.off", "OFF\n3\n0 0 0\n")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readOff(write("hdr.off", "OFF\n3\n0 0 0\n")); }),
                   "hdr.off:2: expected the counts");
 }
 
 TEST_F(MeshReaderTest, OffEmpty) {
-  EXPECT_EQ(errorOf([&] { readOff(write("e.off", "")); }),
+  EXPECT_EQ(expectedErrorOf([&] { readOff(write("e.off", "")); }),
             "empty mesh: " + path("e.off") + " has no data");
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("c.off", "# only a comment\n\n")); }), "empty mesh");
-  EXPECT_CONTAINS(errorOf([&] { readOff(write("z.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n")); }),
-                  "empty mesh: " + path("z.off") + " has 3 vertices and 0 faces");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readOff(write("c.off", "# only a comment\n\n")); }),
+                  "empty mesh");
+  EXPECT_CONTAINS(
+      expectedErrorOf([&] { readOff(write("z.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n")); }),
+      "empty mesh: " + path("z.off") + " has 3 vertices and 0 faces");
 }
 
 TEST_F(MeshReaderTest, MissingAndUnreadableFiles) {
   const std::string missing = path("nope.off");
-  EXPECT_EQ(errorOf([&] { readOff(missing); }), "file not found: " + missing);
-  EXPECT_EQ(errorOf([&] { readTetFile(path("nope.tet")); }), "file not found: " + path("nope.tet"));
+  EXPECT_EQ(expectedErrorOf([&] { readOff(missing); }), "file not found: " + missing);
+  EXPECT_EQ(expectedErrorOf([&] { readTetFile(path("nope.tet")); }),
+            "file not found: " + path("nope.tet"));
   fs::create_directories(dir_ / "folder.tet");
-  EXPECT_CONTAINS(errorOf([&] { readTetFile(path("folder.tet")); }), "is a directory");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetFile(path("folder.tet")); }), "is a directory");
 }
 
 // ---------------------------------------------------------------- .tet
@@ -213,22 +211,23 @@ TEST_F(MeshReaderTest, TetRing) {
 }
 
 TEST_F(MeshReaderTest, TetMalformedLines) {
-  EXPECT_CONTAINS(errorOf([&] { readTetFile(write("h.tet", "five vertices\n1 tets\n")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetFile(write("h.tet", "five vertices\n1 tets\n")); }),
                   "h.tet:1: expected an integer for vertex count, got 'five'");
-  EXPECT_CONTAINS(errorOf([&] { readTetFile(write("h2.tet", "4 vertices\n1 tets extra\n")); }),
-                  "h2.tet:2: expected 'M tets'");
   EXPECT_CONTAINS(
-      errorOf([&] {
+      expectedErrorOf([&] { readTetFile(write("h2.tet", "4 vertices\n1 tets extra\n")); }),
+      "h2.tet:2: expected 'M tets'");
+  EXPECT_CONTAINS(
+      expectedErrorOf([&] {
         readTetFile(write("n.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n"));
       }),
       "n.tet:7: tet 0: expected '4 a b c d'");
   EXPECT_CONTAINS(
-      errorOf([&] {
+      expectedErrorOf([&] {
         readTetFile(write("s.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2\n"));
       }),
       "s.tet:7: tet 0: expected '4 a b c d'");
   EXPECT_CONTAINS(
-      errorOf([&] {
+      expectedErrorOf([&] {
         readTetFile(write("c.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1e\n4 0 1 2 3\n"));
       }),
       "c.tet:6: expected a number for z, got '1e'");
@@ -236,7 +235,7 @@ TEST_F(MeshReaderTest, TetMalformedLines) {
 
 TEST_F(MeshReaderTest, TetIndexOutOfRange) {
   EXPECT_CONTAINS(
-      errorOf([&] {
+      expectedErrorOf([&] {
         readTetFile(write("r.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2 4\n"));
       }),
       "r.tet:7: tet 0: vertex index 4 out of range [0, 3]");
@@ -245,20 +244,20 @@ TEST_F(MeshReaderTest, TetIndexOutOfRange) {
 TEST_F(MeshReaderTest, TetCountsDoNotMatch) {
   // 3 vertex lines where 4 are announced: the tet line is read as the 4th vertex, then EOF.
   EXPECT_CONTAINS(
-      errorOf([&] {
+      expectedErrorOf([&] {
         readTetFile(write("f.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2 3\n"));
       }),
       "unexpected end of file: expected tet 0 of 1");
   // 5 vertex lines where 4 are announced: the 5th vertex is not a tet line.
   EXPECT_CONTAINS(
-      errorOf([&] {
+      expectedErrorOf([&] {
         readTetFile(
             write("m.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 1 1\n4 0 1 2 3\n"));
       }),
       "m.tet:7: tet 0: expected '4 a b c d'");
   // A tet more than announced.
   EXPECT_CONTAINS(
-      errorOf([&] {
+      expectedErrorOf([&] {
         readTetFile(write(
             "x.tet", "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 1 2 3\n4 0 1 3 2\n"));
       }),
@@ -266,11 +265,11 @@ TEST_F(MeshReaderTest, TetCountsDoNotMatch) {
 }
 
 TEST_F(MeshReaderTest, TetEmpty) {
-  EXPECT_EQ(errorOf([&] { readTetFile(write("e.tet", "")); }),
+  EXPECT_EQ(expectedErrorOf([&] { readTetFile(write("e.tet", "")); }),
             "empty mesh: " + path("e.tet") + " has no data");
-  EXPECT_CONTAINS(errorOf([&] { readTetFile(write("h.tet", "4 vertices\n")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetFile(write("h.tet", "4 vertices\n")); }),
                   "h.tet: unexpected end of file");
-  EXPECT_CONTAINS(errorOf([&] { readTetFile(write("z.tet", "0 vertices\n0 tets\n")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetFile(write("z.tet", "0 vertices\n0 tets\n")); }),
                   "empty mesh: " + path("z.tet") + " has 0 vertices and 0 tets");
 }
 
@@ -309,46 +308,47 @@ TEST_F(MeshReaderTest, TetGenZeroBasedAndQuadratic) {
 
 TEST_F(MeshReaderTest, TetGenMissingPartner) {
   const std::string node = write("alone.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n");
-  EXPECT_EQ(errorOf([&] { readTetGenMesh(node); }), "file not found: " + path("alone.ele"));
-  EXPECT_EQ(errorOf([&] { readTetGenMesh(path("none.ele")); }),
+  EXPECT_EQ(expectedErrorOf([&] { readTetGenMesh(node); }), "file not found: " + path("alone.ele"));
+  EXPECT_EQ(expectedErrorOf([&] { readTetGenMesh(path("none.ele")); }),
             "file not found: " + path("none.node"));
 }
 
 TEST_F(MeshReaderTest, TetGenBadInput) {
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("mesh.tet")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("mesh.tet")); }),
                   "expected a .node or .ele file");
   // 1-based .node, but the .ele uses point number 0.
   write("a.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n");
   write("a.ele", "1 4 0\n1 0 1 2 3\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("a.node")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("a.node")); }),
                   "a.ele:2: tetrahedron 0: vertex index 0 out of range [1, 4]");
   write("b.node", "4 3 0 0\n0 0 0 0\n1 1 0 0\n3 0 1 0\n4 0 0 1\n");
   write("b.ele", "1 4 0\n0 0 1 2 3\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("b.ele")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("b.ele")); }),
                   "b.node:4: point numbers must be consecutive: expected 2, got 3");
   write("c.node", "4 2 0 0\n");
   write("c.ele", "1 4 0\n0 0 1 2 3\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("c.node")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("c.node")); }),
                   "c.node:1: dimension 2 is not supported");
   write("d.node", "4 3 0 0\n2 0 0 0\n3 1 0 0\n4 0 1 0\n5 0 0 1\n");
   write("d.ele", "1 4 0\n1 2 3 4 5\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("d.node")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("d.node")); }),
                   "d.node:2: first point number must be 0 or 1");
   // Attribute announced in the header but missing on a point line.
   write("e.node", "2 3 1 0\n0 0 0 0 7\n1 1 0 0\n");
   write("e.ele", "1 4 0\n0 0 1 0 1\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("e.node")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("e.node")); }),
                   "e.node:3: point line: expected 5 values");
   write("f.node", "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
   write("f.ele", "2 4 0\n0 0 1 2 3\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("f.node")); }), "expected tetrahedron 1 of 2");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("f.node")); }),
+                  "expected tetrahedron 1 of 2");
   write("g.ele", "1 6 0\n0 0 1 2 3 4 5\n");
   write("g.node", "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("g.node")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("g.node")); }),
                   "nodes per tetrahedron must be 4 or 10, got 6");
   write("h.node", "0 3 0 0\n");
   write("h.ele", "0 4 0\n");
-  EXPECT_CONTAINS(errorOf([&] { readTetGenMesh(path("h.node")); }), "empty mesh");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("h.node")); }), "empty mesh");
 }
 
 // ---------------------------------------------------------------- writer
@@ -375,16 +375,16 @@ TEST_F(MeshReaderTest, WriteReadRoundTripIsExact) {
 TEST_F(MeshReaderTest, WriteRefusesBadMeshesAndLeavesNothing) {
   TetMesh empty;
   const std::string p = path("bad.tet");
-  EXPECT_CONTAINS(errorOf([&] { writeTetFile(p, empty); }), "empty mesh");
+  EXPECT_CONTAINS(expectedErrorOf([&] { writeTetFile(p, empty); }), "empty mesh");
   TetMesh m = readTetFile(write("two.tet", kTinyTet));
   m.tets[1][2] = 5;
-  EXPECT_CONTAINS(errorOf([&] { writeTetFile(p, m); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { writeTetFile(p, m); }),
                   "tet 1 has vertex index 5 out of range [0, 4]");
   EXPECT_FALSE(fs::exists(p));
   EXPECT_FALSE(fs::exists(p + ".tmp"));
   // Unwritable location: the error names the temporary file; nothing is created.
   const std::string q = path("no_such_dir/out.tet");
-  EXPECT_CONTAINS(errorOf([&] { writeTetFile(q, readTetFile(path("two.tet"))); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { writeTetFile(q, readTetFile(path("two.tet"))); }),
                   "cannot create " + q);
   EXPECT_FALSE(fs::exists(q));
 }
@@ -435,44 +435,49 @@ TEST_F(MeshReaderTest, ObjBunny) {
 TEST_F(MeshReaderTest, ObjMalformedLinesNameFileAndLine) {
   const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   const std::string a = write("a.obj", v + "v 1 2\nf 1 2 3\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(a); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(a); }),
                   a + ":4: vertex 4: expected 'v x y z', got 2 values");
   const std::string b = write("b.obj", v + "v 1 x 2\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(b); }), b + ":4: expected a number for y, got 'x'");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(b); }), b + ":4: expected a number for y, got 'x'");
   const std::string c = write("c.obj", v + "f 1 2\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(c); }), c + ":4: face with 2 vertices; at least 3 needed");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(c); }),
+                  c + ":4: face with 2 vertices; at least 3 needed");
   const std::string d = write("d.obj", v + "\nf 1 2 0\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(d); }), d + ":5: vertex index 0");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(d); }), d + ":5: vertex index 0");
   const std::string e = write("e.obj", v + "f 1 2 three\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(e); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(e); }),
                   e + ":4: expected an integer for a vertex index, got 'three'");
   const std::string f = write("f.obj", v + "f 1/1/1/1 2 3\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(f); }), f + ":4: malformed vertex reference '1/1/1/1'");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(f); }),
+                  f + ":4: malformed vertex reference '1/1/1/1'");
   const std::string g = write("g.obj", v + "f /1 2 3\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(g); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(g); }),
                   g + ":4: expected an integer for a vertex index, got ''");
   const std::string h = write("h.obj", "v inf 0 0\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(h); }), h + ":1: non-finite value for x");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(h); }), h + ":1: non-finite value for x");
 }
 
 TEST_F(MeshReaderTest, ObjIndexOutOfRange) {
   const std::string v = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   const std::string a = write("a.obj", v + "f 1 2 3\nf 1 2 4\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(a); }), a + ":5: vertex index 4 out of range [1, 3]");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(a); }),
+                  a + ":5: vertex index 4 out of range [1, 3]");
   const std::string b = write("b.obj", v + "f -1 -2 -4\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(b); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(b); }),
                   b + ":4: relative vertex index -4 reaches before the first vertex");
   // A relative index counts only the vertices read before the face.
   const std::string c = write("c.obj", "v 0 0 0\nf -1 -2 -3\nv 1 0 0\nv 0 1 0\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(c); }), c + ":2: relative vertex index -2");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(c); }), c + ":2: relative vertex index -2");
 }
 
 TEST_F(MeshReaderTest, ObjEmptyAndMissing) {
   const std::string a = write("a.obj", "# nothing\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(a); }), "empty mesh: " + a + " has 0 vertices and 0 faces");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(a); }),
+                  "empty mesh: " + a + " has 0 vertices and 0 faces");
   const std::string b = write("b.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\n");
-  EXPECT_CONTAINS(errorOf([&] { readObj(b); }), "empty mesh: " + b + " has 3 vertices and 0 faces");
-  EXPECT_CONTAINS(errorOf([&] { readObj(path("missing.obj")); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(b); }),
+                  "empty mesh: " + b + " has 3 vertices and 0 faces");
+  EXPECT_CONTAINS(expectedErrorOf([&] { readObj(path("missing.obj")); }),
                   "file not found: " + path("missing.obj"));
 }
 
@@ -496,19 +501,19 @@ TEST_F(MeshReaderTest, ObjWriteReadRoundTripIsExact) {
 
 TEST_F(MeshReaderTest, ObjWriteRefusesBadSurfacesAndLeavesNothing) {
   const std::string p = path("bad.obj");
-  EXPECT_CONTAINS(errorOf([&] { writeObj(p, TriangleSurface{}); }), "empty mesh");
+  EXPECT_CONTAINS(expectedErrorOf([&] { writeObj(p, TriangleSurface{}); }), "empty mesh");
   TriangleSurface s;
   s.points = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0)};
   s.triangles = {{0, 1, 3}};
-  EXPECT_CONTAINS(errorOf([&] { writeObj(p, s); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { writeObj(p, s); }),
                   "triangle 0 has vertex index 3 out of range [0, 2]");
   s.triangles = {{0, 1, 2}};
   s.points[1].y() = std::nan("");
-  EXPECT_CONTAINS(errorOf([&] { writeObj(p, s); }), "vertex 1 is not finite");
+  EXPECT_CONTAINS(expectedErrorOf([&] { writeObj(p, s); }), "vertex 1 is not finite");
   EXPECT_FALSE(fs::exists(p));
   EXPECT_FALSE(fs::exists(p + ".tmp"));
   s.points[1].y() = 0.0;
   const std::string q = path("no_such_dir/out.obj");
-  EXPECT_CONTAINS(errorOf([&] { writeObj(q, s); }), "cannot create " + q);
+  EXPECT_CONTAINS(expectedErrorOf([&] { writeObj(q, s); }), "cannot create " + q);
   EXPECT_FALSE(fs::exists(q));
 }

@@ -12,6 +12,8 @@
 #include "mesh/TetMeshTopology.h"
 #include "tetrahedralize/TetrahedralizeSurface.h"
 
+#include "../common/ErrorOf.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -79,17 +81,6 @@ TetMesh mushroom() {
   return voxelMesh(Vec3(30, 30, 30), 15, 15, 15, [](const Vec3& c) {
     return c.z() > 20.0 || (c.x() > 10.0 && c.x() < 20.0 && c.y() > 10.0 && c.y() < 20.0);
   });
-}
-
-template <class F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const GeoLatticeError& e) {
-    return e.what();
-  }
-  ADD_FAILURE() << "expected a GeoLatticeError";
-  return {};
 }
 
 #define EXPECT_CONTAINS(text, part) \
@@ -241,25 +232,25 @@ TEST(OverhangAnalysis, BadInputIsReported) {
   for (double bad : {90.0, 80.0, 180.5, std::nan("")}) {
     OverhangOptions options;
     options.thresholdDeg = bad;
-    EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, topology, up, base, options); }),
+    EXPECT_CONTAINS(expectedErrorOf([&] { analyzeOverhang(mesh, topology, up, base, options); }),
                     "threshold angle must be in (90, 180] degrees");
   }
   std::vector<Vec3> shortList(up.begin(), up.end() - 1);
-  EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, topology, shortList, base); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { analyzeOverhang(mesh, topology, shortList, base); }),
                   std::to_string(up.size() - 1) + " nozzle directions for " +
                       std::to_string(up.size()) + " tets");
   std::vector<std::uint8_t> shortBase(base.begin(), base.end() - 1);
-  EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, topology, up, shortBase); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { analyzeOverhang(mesh, topology, up, shortBase); }),
                   std::to_string(base.size() - 1) + " base flags for " +
                       std::to_string(base.size()) + " vertices");
   // A non-unit or non-finite direction of a boundary tet names the tet.
   const int tet = topology.boundaryFaces().front().tet;
   up[tet] = Vec3(0, 0, 2);
   EXPECT_CONTAINS(
-      errorOf([&] { analyzeOverhang(mesh, topology, up, base); }),
+      expectedErrorOf([&] { analyzeOverhang(mesh, topology, up, base); }),
       "nozzle direction of tet " + std::to_string(tet) + " is (0.000000, 0.000000, 2.000000)");
   up[tet] = Vec3(0, std::nan(""), 1);
-  EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, topology, up, base); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { analyzeOverhang(mesh, topology, up, base); }),
                   "nozzle direction of tet " + std::to_string(tet));
   up[tet] = Vec3(0, 0, 1.0005);  // float-precision unit vectors are accepted
   EXPECT_NO_THROW(analyzeOverhang(mesh, topology, up, base));
@@ -267,11 +258,11 @@ TEST(OverhangAnalysis, BadInputIsReported) {
   // Topology of another mesh.
   const TetMesh other = boxTetMesh(Vec3(10, 10, 10), 1, 1, 1);
   const TetMeshTopology otherTopology(other);
-  EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, otherTopology, up, base); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { analyzeOverhang(mesh, otherTopology, up, base); }),
                   "topology of another mesh");
   // Every boundary vertex on the base: nothing left to analyse.
   const std::vector<std::uint8_t> all(mesh.points.size(), 1);
-  EXPECT_CONTAINS(errorOf([&] { analyzeOverhang(mesh, topology, up, all); }),
+  EXPECT_CONTAINS(expectedErrorOf([&] { analyzeOverhang(mesh, topology, up, all); }),
                   "every boundary face lies on the base");
 }
 

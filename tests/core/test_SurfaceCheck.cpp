@@ -3,6 +3,8 @@
 #include "mesh/AnalyticShapes.h"
 #include "mesh/SurfaceCheck.h"
 
+#include "../common/ErrorOf.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,17 +14,6 @@
 using namespace geolattice;
 
 namespace {
-
-// Message of the GeoLatticeError thrown by f, or "" if none was thrown.
-template <typename F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const GeoLatticeError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 // Append b to a; with weld, points of b that coincide with points of a reuse a's ids.
 TriangleSurface append(TriangleSurface a, const TriangleSurface& b, const Vec3& shift, bool weld) {

@@ -2,26 +2,14 @@
 #include "mesh/AnalyticShapes.h"
 #include "mesh/TetMeshCheck.h"
 
+#include "../common/ErrorOf.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <string>
 
 using namespace geolattice;
-
-namespace {
-
-template <typename F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const GeoLatticeError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-}  // namespace
 
 TEST(TetMeshCheck, BoxMeshIsValid) {
   const TetMesh m = boxTetMesh(Vec3(4, 3, 6), 4, 3, 5);

@@ -7,6 +7,8 @@
 #include "tetrahedralize/TetrahedralizeSurface.h"
 #include "tetrahedralize/TetGenRunner.h"
 
+#include "../common/ErrorOf.h"
+
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -17,16 +19,6 @@
 using namespace geolattice;
 
 namespace {
-
-template <typename F>
-std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const GeoLatticeError& e) {
-    return e.what();
-  }
-  return "";
-}
 
 bool contains(const std::string& text, const std::string& part) {
   return text.find(part) != std::string::npos;
