@@ -71,6 +71,11 @@ void addPrintOptions(std::vector<CliOption>& t) {
                      "radius of the holder cylinder above the nozzle length",
                      "GLNozzle.HolderRadius", nozzle, &vtkGLNozzle::SetHolderRadius,
                      &vtkGLNozzle::GetHolderRadius));
+  t.push_back(
+      number("--holder-length", "MM", seq,
+             "holder length above the nozzle length: the printhead ends there (0 = unbounded)",
+             "GLNozzle.HolderLength", nozzle, &vtkGLNozzle::SetHolderLength,
+             &vtkGLNozzle::GetHolderLength));
   t.push_back(number("--tip-clearance", "MM", seq,
                      "ignore material at most this high above the nozzle tip",
                      "GLNozzle.TipClearance", nozzle, &vtkGLNozzle::SetTipClearance,

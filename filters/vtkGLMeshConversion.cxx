@@ -557,6 +557,8 @@ NozzleModel nozzleModel(vtkGLNozzle* n) {
   nozzle.length =
       n->GetNozzleLength() == 0 ? std::numeric_limits<double>::infinity() : n->GetNozzleLength();
   nozzle.holderRadius = n->GetHolderRadius();
+  nozzle.holderLength =
+      n->GetHolderLength() == 0 ? std::numeric_limits<double>::infinity() : n->GetHolderLength();
   nozzle.tipClearance = n->GetTipClearance();
   nozzle.tipFaceRadius = n->GetTipFaceRadius();
   nozzle.validate();

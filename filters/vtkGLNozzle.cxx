@@ -14,6 +14,7 @@ vtkGLNozzle::vtkGLNozzle() {
   this->NozzleAngle = defaults.halfAngleDeg;
   this->NozzleLength = std::isfinite(defaults.length) ? defaults.length : 0.0;
   this->HolderRadius = defaults.holderRadius;
+  this->HolderLength = std::isfinite(defaults.holderLength) ? defaults.holderLength : 0.0;
   this->TipClearance = defaults.tipClearance;
   this->TipFaceRadius = defaults.tipFaceRadius;
   const geolattice::BuildPlate plate;
@@ -29,6 +30,7 @@ void vtkGLNozzle::CopyParameters(vtkGLNozzle* other) {
   this->SetNozzleAngle(other->NozzleAngle);
   this->SetNozzleLength(other->NozzleLength);
   this->SetHolderRadius(other->HolderRadius);
+  this->SetHolderLength(other->HolderLength);
   this->SetTipClearance(other->TipClearance);
   this->SetTipFaceRadius(other->TipFaceRadius);
   this->SetBuildPlate(other->BuildPlate);
@@ -41,6 +43,7 @@ void vtkGLNozzle::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "NozzleAngle: " << this->NozzleAngle << " deg\n";
   os << indent << "NozzleLength: " << this->NozzleLength << " mm\n";
   os << indent << "HolderRadius: " << this->HolderRadius << " mm\n";
+  os << indent << "HolderLength: " << this->HolderLength << " mm\n";
   os << indent << "TipClearance: " << this->TipClearance << " mm\n";
   os << indent << "TipFaceRadius: " << this->TipFaceRadius << " mm\n";
   os << indent << "BuildPlate: " << (this->BuildPlate ? "on" : "off") << "\n";

@@ -5,7 +5,8 @@
  *
  * core/nozzle/NozzleModel.h: the paper's bounding cone (Section 3.1, Fig. 13a) of half-angle
  * NozzleAngle about the nozzle axis, apex at the tip, optionally cut at NozzleLength above which
- * the holder is a cylinder of radius HolderRadius; material at most TipClearance above the tip
+ * the holder is a cylinder of radius HolderRadius and length HolderLength (0 = unbounded);
+ * material at most TipClearance above the tip
  * (level with the nozzle's flat face) or within TipFaceRadius of it (under the face, the bead
  * being pressed) is not an obstacle. The build plate (BuildPlate, PlateMargin, PlateThickness;
  * core/nozzle/BuildPlate.h) is an obstacle like printed material.
@@ -42,6 +43,13 @@ public:
   /// Radius of the holder cylinder above the nozzle length (mm, default 0; used when L > 0).
   vtkSetMacro(HolderRadius, double);
   vtkGetMacro(HolderRadius, double);
+  ///@}
+
+  ///@{
+  /// Length of the holder above the nozzle length (mm, default 0 = unbounded): with it the
+  /// printhead ends NozzleLength + HolderLength above the tip.
+  vtkSetMacro(HolderLength, double);
+  vtkGetMacro(HolderLength, double);
   ///@}
 
   ///@{
@@ -87,6 +95,7 @@ protected:
   double NozzleAngle;
   double NozzleLength;
   double HolderRadius;
+  double HolderLength;
   double TipClearance;
   double TipFaceRadius;
   vtkTypeBool BuildPlate;

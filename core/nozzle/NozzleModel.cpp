@@ -24,6 +24,9 @@ void NozzleModel::validate() const {
   if (!(holderRadius >= 0.0) || !std::isfinite(holderRadius)) {
     fail("holder radius must be finite and >= 0 mm", holderRadius);
   }
+  if (!(holderLength > 0.0)) {  // infinity is allowed
+    fail("holder length must be > 0 mm", holderLength);
+  }
   if (!(tipClearance >= 0.0) || !std::isfinite(tipClearance)) {
     fail("tip clearance must be finite and >= 0 mm", tipClearance);
   }
@@ -43,6 +46,10 @@ double NozzleModel::boundingHalfAngleRad() const {
 double NozzleModel::reach() const {
   if (std::isfinite(length) && holderRadius == 0.0) {
     return length / std::cos(halfAngleDeg * M_PI / 180.0);
+  }
+  if (std::isfinite(length) && std::isfinite(holderLength)) {
+    return std::max(length / std::cos(halfAngleDeg * M_PI / 180.0),
+                    std::hypot(length + holderLength, holderRadius));
   }
   return std::numeric_limits<double>::infinity();
 }

@@ -3,11 +3,13 @@
 /// @brief The nozzle volume used for collision tests (paper Section 3.1, Fig. 13a): its
 /// bounding cone with half-angle NA about the nozzle axis (the layer normal at the tip), apex at
 /// the tip, optionally cut at the nozzle length L above which the holder is a cylinder of
-/// radius R about the same axis (unbounded upwards). With L = ∞ it is the paper's cone.
+/// radius R about the same axis, H long (unbounded upwards when H = ∞): with a finite H the
+/// printhead ends L + H above the tip (the cell's nozzle is fixed; nothing that moves with the
+/// part is above it). With L = ∞ it is the paper's cone.
 ///
 /// In coordinates of a tip p and unit axis n, a point x with h = (x - p)·n and
 /// r = |x - p - h n| is inside iff h > tipClearance and
-///   (h <= L and r < h tan NA)  or  (h > L and r < R).
+///   (h <= L and r < h tan NA)  or  (L < h <= L + H and r < R).
 /// tipClearance (>= 0, default 0.1 mm) ignores material level with the tip: the nozzle's flat
 /// face rides on the layer being printed, so beads of the same layer next to the tip (their tops
 /// within a fraction of a layer of the tip, e.g. where the path passes a crossing the second
@@ -26,7 +28,9 @@ namespace geolattice {
 struct NozzleModel {
   double halfAngleDeg = 45.0;                               ///< NA, in (0, 90) degrees
   double length = std::numeric_limits<double>::infinity();  ///< L (mm, > 0), ∞ = cone only
-  double holderRadius = 0.0;   ///< R (mm, >= 0), used when length is finite; 0 = no holder
+  double holderRadius = 0.0;  ///< R (mm, >= 0), used when length is finite; 0 = no holder
+  /// H (mm, > 0): the holder's length above L; ∞ = unbounded (the printhead never ends).
+  double holderLength = std::numeric_limits<double>::infinity();
   double tipClearance = 0.1;   ///< material with h <= this is ignored (mm, >= 0)
   double tipFaceRadius = 0.5;  ///< material within this distance of the tip is ignored (mm, >= 0)
 
@@ -36,7 +40,8 @@ struct NozzleModel {
   /// max(NA, atan(R / L)). Used for conservative bounds only.
   double boundingHalfAngleRad() const;
   /// Distance from the tip beyond which nothing is inside: L / cos NA for a finite nozzle
-  /// without holder (holderRadius 0), else ∞.
+  /// without holder (holderRadius 0), max(L / cos NA, |(L + H, R)|) with a finite holder,
+  /// else ∞.
   double reach() const;
 };
 
@@ -48,6 +53,7 @@ struct NozzleVolume {
       : cos2(std::cos(m.halfAngleDeg * M_PI / 180.0) * std::cos(m.halfAngleDeg * M_PI / 180.0)),
         length(m.length),
         holder2(m.holderRadius * m.holderRadius),
+        top(m.length + m.holderLength),
         clearance(m.tipClearance),
         face2(m.tipFaceRadius * m.tipFaceRadius) {}
 
@@ -65,7 +71,8 @@ struct NozzleVolume {
       return false;
     }
     const double r2 = std::max(0.0, d2 - h * h);
-    const bool inside = h <= length ? h * h > d2 * cos2 : r2 < holder2;  // angle(d, n) < NA, h > 0
+    // angle(d, n) < NA (h > 0) in the cone, r < R along the holder
+    const bool inside = h <= length ? h * h > d2 * cos2 : h <= top && r2 < holder2;
     if (inside && height) {
       *height = h;
     }
@@ -75,7 +82,7 @@ struct NozzleVolume {
     return inside;
   }
 
-  double cos2, length, holder2, clearance, face2;
+  double cos2, length, holder2, top, clearance, face2;
 };
 
 }  // namespace geolattice

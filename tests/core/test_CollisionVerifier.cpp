@@ -130,36 +130,40 @@ TEST(CollisionVerifier, ManyPointsMatchBruteForce) {
     n.push_back(V(rnd() - 0.5, rnd() - 0.5, 1.0).normalized());
     time.push_back(static_cast<int>(30 * rnd()));
   }
-  NozzleModel nz = cone(20);
-  nz.length = 4;
-  nz.holderRadius = 3;
-  nz.tipClearance = 0.05;
-  nz.tipFaceRadius = 0.2;
-  const CollisionReport r = verifyNozzleClearance(p, n, time, nz, 100000);
-  long long brute = 0, nearTip = 0;
-  const double c2 = std::pow(std::cos(20 * M_PI / 180), 2);
-  for (size_t k = 0; k < p.size(); ++k) {
-    bool hit = false;
-    for (size_t q = 0; q < p.size() && !hit; ++q) {
-      if (time[q] >= time[k])
-        continue;
-      const V d = p[q] - p[k];
-      const double h = d.dot(n[k]);
-      if (h <= 0.05)
-        continue;
-      if (d.norm() <= 0.2) {
-        nearTip += h * h > d.squaredNorm() * c2;  // inside the cone but under the tip face
-        continue;
+  // An unbounded holder, and one that ends 4 + 6 mm above the tip (the printhead's top).
+  for (const double holderLength : {std::numeric_limits<double>::infinity(), 6.0}) {
+    NozzleModel nz = cone(20);
+    nz.length = 4;
+    nz.holderRadius = 3;
+    nz.holderLength = holderLength;
+    nz.tipClearance = 0.05;
+    nz.tipFaceRadius = 0.2;
+    const CollisionReport r = verifyNozzleClearance(p, n, time, nz, 100000);
+    long long brute = 0, nearTip = 0;
+    const double c2 = std::pow(std::cos(20 * M_PI / 180), 2);
+    for (size_t k = 0; k < p.size(); ++k) {
+      bool hit = false;
+      for (size_t q = 0; q < p.size() && !hit; ++q) {
+        if (time[q] >= time[k])
+          continue;
+        const V d = p[q] - p[k];
+        const double h = d.dot(n[k]);
+        if (h <= 0.05)
+          continue;
+        if (d.norm() <= 0.2) {
+          nearTip += h * h > d.squaredNorm() * c2;  // inside the cone but under the tip face
+          continue;
+        }
+        const double r2 = d.squaredNorm() - h * h;
+        hit = h <= 4 ? h * h > d.squaredNorm() * c2 : h <= 4 + holderLength && r2 < 9;
       }
-      const double r2 = d.squaredNorm() - h * h;
-      hit = h <= 4 ? h * h > d.squaredNorm() * c2 : r2 < 9;
+      brute += hit;
     }
-    brute += hit;
+    EXPECT_EQ(r.violatingStations, brute) << holderLength;
+    EXPECT_GT(nearTip, 0);  // the face radius was exercised
+    EXPECT_GT(brute, 0);
+    EXPECT_LT(brute, static_cast<long long>(p.size()));
   }
-  EXPECT_EQ(r.violatingStations, brute);
-  EXPECT_GT(nearTip, 0);  // the face radius was exercised
-  EXPECT_GT(brute, 0);
-  EXPECT_LT(brute, static_cast<long long>(p.size()));
 }
 
 TEST(CollisionVerifier, BadInput) {
