@@ -98,6 +98,20 @@ void addPrintOptions(std::vector<CliOption>& t) {
   t.push_back(number("--plate-thickness", "MM", seq, "thickness of the build plate under z = 0",
                      "GLNozzle.PlateThickness", nozzle, &vtkGLNozzle::SetPlateThickness,
                      &vtkGLNozzle::GetPlateThickness));
+  t.push_back({"--printhead", "FILE", seq,
+               "printhead mesh (.stl .obj .ply .vtp .off; tip at the origin, axis +z,\n"
+               "mm) instead of the cone and holder, e.g. testdata/printhead_slim.obj",
+               "GLNozzle.PrintheadFile",
+               [](P& p, RunOptions&, const std::string& v) {
+                 if (v.empty()) {
+                   throw UsageError("--printhead needs a file name");
+                 }
+                 p.Nozzle->SetPrintheadFile(v.c_str());
+               },
+               [](P& p, const RunOptions&) {
+                 const char* f = p.Nozzle->GetPrintheadFile();
+                 return std::string(f && *f ? f : "none");
+               }});
   t.push_back({"--sample-spacing", "MM", seq,
                "spacing of the material samples tested for collisions",
                "GLPrintSequencer.SampleSpacing",

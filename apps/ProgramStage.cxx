@@ -33,7 +33,24 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
       line << ", layers " << fieldValue(pathCollisions, arrays::CollisionLayerRange, 0) << "-"
            << fieldValue(pathCollisions, arrays::CollisionLayerRange, 1);
     }
+    const long long plate =
+        static_cast<long long>(fieldValue(pathCollisions, arrays::CollisionPlateStations));
+    if (plate > 0) {
+      line << " (" << plate << " of them at the build plate)";
+    }
     line << ": see toolpath_collisions.vtp";
+    // What to try, cheapest first: the orientation search, then the real printhead's shape.
+    std::string hint;
+    if (P.Orientation->GetOrient() == vtkGLAutoOrient::KEEP) {
+      hint = "--orient auto";
+    }
+    const char* head = P.Nozzle->GetPrintheadFile();
+    if (!head || !*head) {
+      hint += std::string(hint.empty() ? "" : " or ") + "--printhead FILE";
+    }
+    if (!hint.empty()) {
+      line << "; try " << hint;
+    }
     gates["collision"] = {{"passed", false},
                           {"colliding_stations", colliding},
                           {"stations", stations},

@@ -1,6 +1,7 @@
 #include "StageReports.h"
 
 #include "GLPrintPipeline.h"
+#include "GLPrintheadFile.h"
 #include "vtkGLArrayNames.h"
 
 #include <vtkDataArray.h>
@@ -46,6 +47,23 @@ double extremum(vtkDataObject* data, const char* name, bool wantMin) {
     }
   }
   return std::isfinite(best) ? best : 0.0;
+}
+
+/// The printhead of the nozzle block, if any: its file and size (read once, cached).
+void reportPrinthead(vtkGLNozzle* n, Json& s) {
+  const char* file = n->GetPrintheadFile();
+  if (!file || !*file) {
+    s["printhead"] = nullptr;
+    return;
+  }
+  const auto head = readPrintheadFile(file);
+  s["printhead"] = {{"file", head->name()},
+                    {"height_mm", head->height()},
+                    {"max_radius_mm", head->maxRadius()},
+                    {"reach_mm", head->reach()},
+                    {"face_radius_mm", head->faceRadius()},
+                    {"volume_mm3", head->volume()},
+                    {"triangles", head->triangles()}};
 }
 
 }  // namespace
@@ -181,6 +199,7 @@ void reportSequence(GLPrintPipeline& p, vtkDataObject* sequenced, Json& s) {
   s["build_plate"] = n->GetBuildPlate() != 0;
   s["plate_margin_mm"] = n->GetPlateMargin();
   s["plate_thickness_mm"] = n->GetPlateThickness();
+  reportPrinthead(n, s);
   s["sample_spacing_mm"] = p.Sequencer->GetSampleSpacing();
   s["subgraphs"] = count(sequenced, arrays::LatticeSubgraphs);
   s["retractions"] = count(sequenced, arrays::SequenceRetractions);

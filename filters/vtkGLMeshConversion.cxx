@@ -1,4 +1,6 @@
 #include "vtkGLMeshConversion.h"
+
+#include "GLPrintheadFile.h"
 #include "vtkGLNozzle.h"
 
 #include "vtkGLArrayNames.h"
@@ -561,6 +563,9 @@ NozzleModel nozzleModel(vtkGLNozzle* n) {
       n->GetHolderLength() == 0 ? std::numeric_limits<double>::infinity() : n->GetHolderLength();
   nozzle.tipClearance = n->GetTipClearance();
   nozzle.tipFaceRadius = n->GetTipFaceRadius();
+  if (n->GetPrintheadFile() && n->GetPrintheadFile()[0] != '\0') {
+    nozzle.printhead = readPrintheadFile(n->GetPrintheadFile());
+  }
   nozzle.validate();
   return nozzle;
 }

@@ -371,6 +371,22 @@ void readSurface(const std::string& path, const std::string& ext, vtkPolyData* o
   output->ShallowCopy(cleaned);
 }
 
+/// Refuses an unsupported extension (listing `supported`), a missing or irregular file.
+void requireReadableFile(const std::string& path, const std::string& supported) {
+  const std::string ext = lowerExtension(path.c_str());
+  if (ext.empty() || (" " + supported + " ").find(" " + ext + " ") == std::string::npos) {
+    throw geolattice::GeoLatticeError("unsupported file extension '" + ext + "' of " + path +
+                                      "; supported: " + supported);
+  }
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) {
+    throw geolattice::GeoLatticeError("file not found: " + path);
+  }
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw geolattice::GeoLatticeError("not a regular file: " + path);
+  }
+}
+
 /// Tet formats -> VTK_TETRA cells only.
 void readTetMesh(const std::string& path, const std::string& ext, vtkUnstructuredGrid* output,
                  vtkAlgorithm* reporter) {
@@ -420,6 +436,16 @@ void vtkGLMeshReader::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "FileName: " << (this->FileName ? this->FileName : "(none)") << "\n";
 }
 
+void vtkGLMeshReader::ReadSurfaceFile(const std::string& path, vtkPolyData* output,
+                                      vtkAlgorithm* reporter) {
+  std::string surfaces;
+  for (int i = 0; i < kNumSurfaceExtensions; ++i) {
+    surfaces += std::string(i ? " " : "") + kExtensions[i];
+  }
+  requireReadableFile(path, surfaces);
+  readSurface(path, lowerExtension(path.c_str()), output, reporter);
+}
+
 int vtkGLMeshReader::GetNumberOfSupportedExtensions() {
   return kNumExtensions;
 }
@@ -464,17 +490,7 @@ int vtkGLMeshReader::RequestData(vtkInformation*, vtkInformationVector**,
     }
     const std::string path = this->FileName;
     const std::string ext = lowerExtension(this->FileName);
-    if (!IsSupportedFile(this->FileName)) {
-      throw geolattice::GeoLatticeError("unsupported file extension '" + ext + "' of " + path +
-                                        "; supported: " + kExtensionsString);
-    }
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) {
-      throw geolattice::GeoLatticeError("file not found: " + path);
-    }
-    if (!std::filesystem::is_regular_file(path, ec)) {
-      throw geolattice::GeoLatticeError("not a regular file: " + path);
-    }
+    requireReadableFile(path, kExtensionsString);
     gl::checkAbort(this, 0.01);
     if (IsTetMeshFile(this->FileName)) {
       vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(output);

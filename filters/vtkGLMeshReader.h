@@ -31,6 +31,9 @@
 
 #include "GeoLatticeFiltersModule.h"
 #include "vtkDataObjectAlgorithm.h"
+#include "vtkWrappingHints.h"
+
+class vtkPolyData;
 
 #include <string>
 
@@ -65,6 +68,13 @@ public:
   static const char* GetSupportedExtension(int i);
   static const char* GetSupportedExtensionsString();
   ///@}
+
+  /// Reads a surface file (a supported surface extension) into `output` as triangles with
+  /// coincident points merged, as RequestData does; `reporter` receives the inner readers'
+  /// progress and warnings. Throws geolattice::GeoLatticeError naming the file and the problem
+  /// (used for files that are not the model, e.g. a printhead mesh).
+  VTK_WRAPEXCLUDE static void ReadSurfaceFile(const std::string& path, vtkPolyData* output,
+                                              vtkAlgorithm* reporter);
 
 protected:
   vtkGLMeshReader();

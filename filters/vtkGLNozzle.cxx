@@ -23,6 +23,10 @@ vtkGLNozzle::vtkGLNozzle() {
   this->PlateThickness = plate.thickness;
 }
 
+vtkGLNozzle::~vtkGLNozzle() {
+  this->SetPrintheadFile(nullptr);
+}
+
 void vtkGLNozzle::CopyParameters(vtkGLNozzle* other) {
   if (!other) {
     return;
@@ -36,6 +40,7 @@ void vtkGLNozzle::CopyParameters(vtkGLNozzle* other) {
   this->SetBuildPlate(other->BuildPlate);
   this->SetPlateMargin(other->PlateMargin);
   this->SetPlateThickness(other->PlateThickness);
+  this->SetPrintheadFile(other->PrintheadFile);
 }
 
 void vtkGLNozzle::PrintSelf(ostream& os, vtkIndent indent) {
@@ -49,4 +54,6 @@ void vtkGLNozzle::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "BuildPlate: " << (this->BuildPlate ? "on" : "off") << "\n";
   os << indent << "PlateMargin: " << this->PlateMargin << " mm\n";
   os << indent << "PlateThickness: " << this->PlateThickness << " mm\n";
+  os << indent << "PrintheadFile: " << (this->PrintheadFile ? this->PrintheadFile : "(none)")
+     << "\n";
 }

@@ -8,7 +8,10 @@
  * the holder is a cylinder of radius HolderRadius and length HolderLength (0 = unbounded);
  * material at most TipClearance above the tip
  * (level with the nozzle's flat face) or within TipFaceRadius of it (under the face, the bead
- * being pressed) is not an obstacle. The build plate (BuildPlate, PlateMargin, PlateThickness;
+ * being pressed) is not an obstacle. With PrintheadFile (a closed triangle mesh in the nozzle
+ * frame: tip at the origin, axis +z, mm; core/nozzle/Printhead.h) the printhead replaces the
+ * cone and the holder: material inside the solid it sweeps turning about its axis is an
+ * obstacle. The build plate (BuildPlate, PlateMargin, PlateThickness;
  * core/nozzle/BuildPlate.h) is an obstacle like printed material.
  *
  * The filters hold one of these (SetNozzle) and re-execute when it changes. In ParaView it is a
@@ -85,12 +88,20 @@ public:
   vtkGetMacro(PlateThickness, double);
   ///@}
 
+  ///@{
+  /// A printhead mesh file (.stl .obj .ply .vtp .off; default empty = the cone model): a closed
+  /// triangle mesh in the nozzle frame, the tip at the origin, the axis +z up into the printhead,
+  /// millimetres. It replaces NozzleAngle, NozzleLength and the holder; the tip exemptions stay.
+  vtkSetFilePathMacro(PrintheadFile);
+  vtkGetFilePathMacro(PrintheadFile);
+  ///@}
+
   /// Copies every parameter of `other` (no-op for null).
   void CopyParameters(vtkGLNozzle* other);
 
 protected:
   vtkGLNozzle();
-  ~vtkGLNozzle() override = default;
+  ~vtkGLNozzle() override;
 
   double NozzleAngle;
   double NozzleLength;
@@ -101,6 +112,7 @@ protected:
   vtkTypeBool BuildPlate;
   double PlateMargin;
   double PlateThickness;
+  char* PrintheadFile = nullptr;
 
 private:
   vtkGLNozzle(const vtkGLNozzle&) = delete;

@@ -79,7 +79,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
   }
   const TimedPointTree tree(all, obstacleTime);
   const NozzleVolume volume(nozzle);
-  NozzleBound bound(nozzle.boundingHalfAngleRad(), nozzle.reach(), nozzle.tipClearance);
+  NozzleBound bound(nozzle, volume);
 
   // Stations in print-time order, so the reported violations are the first ones.
   std::vector<int> stations(N);

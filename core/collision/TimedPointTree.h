@@ -13,10 +13,15 @@
 namespace geolattice {
 
 /// Conservative reject test for a nozzle at (tip, axis): can any point of a ball be inside a cone
-/// of half-angle `angle` about the axis (cut at `reach` from the tip, above the tip plane by more
-/// than `clearance`)? angle >= 90° keeps only the reach test.
+/// of half-angle `angle` about the axis with its apex `apexOffset` below the tip (cut at `reach`
+/// from the tip, above the tip plane by more than `clearance`)? angle >= 90° keeps only the reach
+/// test. With `volume` (a printhead's swept profile) the ball must also reach into that profile.
 struct NozzleBound {
-  NozzleBound(double angleRad, double reachMm, double clearanceMm);
+  NozzleBound(double angleRad, double reachMm, double clearanceMm, double apexOffsetMm = 0.0,
+              const NozzleVolume* profile = nullptr);
+  /// The bound of a nozzle model: its bounding cone, reach and tip clearance, and the printhead
+  /// profile test through `volume` (made from the same model) when it has a printhead.
+  NozzleBound(const NozzleModel& model, const NozzleVolume& volume);
   void setStation(const Eigen::Vector3d& tipPoint, const Eigen::Vector3d& unitAxis) {
     tip = tipPoint;
     axis = unitAxis;
@@ -28,6 +33,8 @@ struct NozzleBound {
   bool halfSpaceOrMore = false;
   double reach = std::numeric_limits<double>::infinity();
   double clearance = 0;  ///< -infinity disables the tip-plane test
+  double apexOffset = 0;
+  const NozzleVolume* volume = nullptr;
 };
 
 class TimedPointTree {
@@ -46,8 +53,9 @@ public:
 
   /// Calls visit(q) for every point q with time[q] < now in a leaf whose sphere the bound may
   /// touch (candidates: the caller applies its exact test); stops when visit returns true.
-  template <class Visit>
-  void forEachCandidate(const NozzleBound& bound, int now, Visit&& visit) const {
+  /// Bound: anything with `bool mayTouch(centre, radius) const`, e.g. NozzleBound.
+  template <class Bound, class Visit>
+  void forEachCandidate(const Bound& bound, int now, Visit&& visit) const {
     if (nodes_.empty()) {
       return;
     }

@@ -33,9 +33,29 @@ void NozzleModel::validate() const {
   if (!(tipFaceRadius >= 0.0) || !std::isfinite(tipFaceRadius)) {
     fail("nozzle tip face radius must be finite and >= 0 mm", tipFaceRadius);
   }
+  if (!(printheadMarginRad >= 0.0 && printheadMarginRad < 0.5 * M_PI)) {
+    fail("printhead margin must be in [0, 90) degrees", printheadMarginRad * 180.0 / M_PI);
+  }
+}
+
+NozzleModel NozzleModel::widened(double marginDeg) const {
+  NozzleModel wide = *this;
+  if (printhead) {
+    wide.printheadMarginRad = printheadMarginRad + marginDeg * M_PI / 180.0;
+  } else {
+    wide.halfAngleDeg = std::min(89.9, halfAngleDeg + marginDeg);
+  }
+  return wide;
+}
+
+double NozzleModel::boundingApexOffset() const {
+  return printhead ? printhead->boundApexOffset() : 0.0;
 }
 
 double NozzleModel::boundingHalfAngleRad() const {
+  if (printhead) {
+    return std::min(0.5 * M_PI, printhead->boundHalfAngleRad() + printheadMarginRad);
+  }
   const double cone = halfAngleDeg * M_PI / 180.0;
   if (!std::isfinite(length)) {
     return cone;
@@ -44,6 +64,9 @@ double NozzleModel::boundingHalfAngleRad() const {
 }
 
 double NozzleModel::reach() const {
+  if (printhead) {
+    return printhead->reach() * (1.0 + std::tan(printheadMarginRad));
+  }
   if (std::isfinite(length) && holderRadius == 0.0) {
     return length / std::cos(halfAngleDeg * M_PI / 180.0);
   }

@@ -18,10 +18,17 @@
 /// lies under the nozzle's flat face around the orifice (a 0.4-0.6 mm nozzle's face is about
 /// 1 mm across), which presses the bead being printed and its overlapping neighbours; it is
 /// not inside the nozzle body. 0 makes the cone start at the tip point.
+///
+/// With a printhead mesh (nozzle/Printhead.h) the cone and holder parameters are not used: a
+/// point is inside iff r < R(h), the printhead's swept radius at that height, with the same
+/// two exemptions.
+#include "nozzle/Printhead.h"
+
 #include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 namespace geolattice {
 
@@ -33,15 +40,28 @@ struct NozzleModel {
   double holderLength = std::numeric_limits<double>::infinity();
   double tipClearance = 0.1;   ///< material with h <= this is ignored (mm, >= 0)
   double tipFaceRadius = 0.5;  ///< material within this distance of the tip is ignored (mm, >= 0)
+  /// A printhead mesh; when set it replaces the cone and the holder (null = the cone model).
+  std::shared_ptr<const Printhead> printhead;
+  /// Widening used by the toolpath's axis clearance to keep a margin (see widened()): the
+  /// printhead's radius grows by h tan(margin) at height h. 0 for the nozzle itself.
+  double printheadMarginRad = 0.0;
 
   /// Throws GeoLatticeError naming the bad parameter.
   void validate() const;
-  /// Half-angle of a cone with the same apex and axis that contains the whole nozzle volume:
-  /// max(NA, atan(R / L)). Used for conservative bounds only.
+  /// True for the paper's unbounded cone (no length, no printhead).
+  bool isConeOnly() const { return !printhead && !std::isfinite(length); }
+  /// The same nozzle widened by marginDeg: the cone's half-angle grows by it (at most 89.9°), a
+  /// printhead's radius by h tan(margin) at height h.
+  NozzleModel widened(double marginDeg) const;
+  /// Half-angle of a cone that contains the whole nozzle volume, its apex
+  /// boundingApexOffset() below the tip on the axis: max(NA, atan(R / L)) with the apex at the
+  /// tip for the cone model. Used for conservative bounds only.
   double boundingHalfAngleRad() const;
+  /// How far below the tip (mm, >= 0) the apex of the bounding cone lies.
+  double boundingApexOffset() const;
   /// Distance from the tip beyond which nothing is inside: L / cos NA for a finite nozzle
   /// without holder (holderRadius 0), max(L / cos NA, |(L + H, R)|) with a finite holder,
-  /// else ∞.
+  /// the printhead's reach with a printhead, else ∞.
   double reach() const;
 };
 
@@ -55,7 +75,15 @@ struct NozzleVolume {
         holder2(m.holderRadius * m.holderRadius),
         top(m.length + m.holderLength),
         clearance(m.tipClearance),
-        face2(m.tipFaceRadius * m.tipFaceRadius) {}
+        face2(m.tipFaceRadius * m.tipFaceRadius),
+        head(m.printhead.get()),
+        headSlope(std::tan(m.printheadMarginRad)),
+        coneAngle(m.halfAngleDeg * M_PI / 180.0) {
+    if (head) {
+      length = -std::numeric_limits<double>::infinity();  // never the cone branch
+      top = head->height();
+    }
+  }
 
   /// Is x inside the nozzle with its tip at p and unit axis n? Sets height (along n) and radial
   /// distance when it is.
@@ -71,8 +99,14 @@ struct NozzleVolume {
       return false;
     }
     const double r2 = std::max(0.0, d2 - h * h);
-    // angle(d, n) < NA (h > 0) in the cone, r < R along the holder
-    const bool inside = h <= length ? h * h > d2 * cos2 : h <= top && r2 < holder2;
+    // angle(d, n) < NA (h > 0) in the cone, r < R along the holder, r < R(h) in a printhead
+    bool inside;
+    if (head) {
+      const double R = head->radiusAt(h) + h * headSlope;
+      inside = h <= top && r2 < R * R;
+    } else {
+      inside = h <= length ? h * h > d2 * cos2 : h <= top && r2 < holder2;
+    }
     if (inside && height) {
       *height = h;
     }
@@ -82,7 +116,34 @@ struct NozzleVolume {
     return inside;
   }
 
+  /// Conservative test for a ball whose points lie at heights within h ± slack and at least
+  /// r - slack from the axis: false when no such point can be inside the printhead's swept
+  /// solid. Always true for the cone model (its bounding cone does this job).
+  bool mayContainBall(double h, double r, double slack) const {
+    if (!head) {
+      return true;
+    }
+    const double hi = h + slack;
+    if (hi <= clearance) {
+      return false;
+    }
+    return head->maxRadiusBetween(h - slack, hi) + std::max(hi, 0.0) * headSlope > r - slack;
+  }
+
+  /// Turning the axis so that a point at distance rho from the tip is this far (rad) from it
+  /// puts the point outside (cone: NA; printhead: its tabulated clear angle, plus the margin).
+  double clearAngleAt(double rho) const {
+    return head ? head->clearAngleAt(rho) + std::atan(headSlope) : coneAngle;
+  }
+  /// The largest clearAngleAt over distances in [rho0, rho1].
+  double maxClearAngleBetween(double rho0, double rho1) const {
+    return head ? head->maxClearAngleBetween(rho0, rho1) + std::atan(headSlope) : coneAngle;
+  }
+
   double cos2, length, holder2, top, clearance, face2;
+  const Printhead* head;  ///< owned by the NozzleModel this volume was made from
+  double headSlope;
+  double coneAngle;
 };
 
 }  // namespace geolattice

@@ -93,8 +93,9 @@ struct PairSearch {
   const MaterialSamples& m;
   const NozzleVolume& nozzle;
   double boundAngle;
-  double reach;      ///< nothing farther than this from a tip is inside the nozzle
-  double clearance;  ///< material with h <= clearance is ignored
+  double apexOffset;  ///< the bounding cone's apex lies this far below each tip
+  double reach;       ///< nothing farther than this from a tip is inside the nozzle
+  double clearance;   ///< material with h <= clearance is ignored
   long long leafTests = 0;
 
   /// Does any station of tree A (sub-graph i) have material of tree B (sub-graph j) inside its
@@ -108,11 +109,22 @@ struct PairSearch {
       const auto& b = B.nodes[ib];
       const Vec3 d = b.centre - a.centre;
       const double dn = d.norm();
-      // Highest h = (x - p)·n over the clusters: the material lies below every tip plane.
-      const double hMax = d.dot(a.axis) + b.radius +
-                          (dn + b.radius) * 2 * std::sin(0.5 * std::min(a.spread, M_PI)) + a.radius;
-      if (hMax <= clearance || dn > a.radius + b.radius + reach ||
-          distanceToCone(d, a.axis, boundAngle + a.spread) > a.radius + b.radius) {
+      // h = (x - p)·n and the distance from the axis for a station p of A with axis n and a
+      // point x of B differ from those of the centres along the mean axis by at most `slack`.
+      const double axisSlack = 2 * std::sin(0.5 * std::min(a.spread, M_PI));
+      const double slack = a.radius + b.radius + (dn + b.radius) * axisSlack;
+      const double h = d.dot(a.axis);
+      // Highest h over the clusters: the material lies below every tip plane.
+      if (h + slack <= clearance || dn > a.radius + b.radius + reach) {
+        continue;
+      }
+      if (!nozzle.mayContainBall(h, std::sqrt(std::max(0.0, dn * dn - h * h)), slack)) {
+        continue;  // outside the printhead's profile
+      }
+      // The bounding cone's apexes (apexOffset below each tip) lie within a.radius +
+      // apexOffset * axisSlack of the mean apex.
+      if (distanceToCone(d + apexOffset * a.axis, a.axis, boundAngle + a.spread) >
+          a.radius + apexOffset * axisSlack + b.radius) {
         continue;
       }
       const bool leafA = a.left < 0, leafB = b.left < 0;
@@ -182,7 +194,8 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
   // One pair search (and its stack) per worker; sub-graphs are handed out one at a time.
   const int workers = workerCount(threads, static_cast<size_t>(K));
   std::vector<PairSearch> searches(
-      workers, PairSearch{m, nozzle, boundAngle, model.reach(), model.tipClearance});
+      workers, PairSearch{m, nozzle, boundAngle, model.boundingApexOffset(), model.reach(),
+                          model.tipClearance});
   std::vector<std::vector<std::pair<int, int>>> stacks(workers);
   progress.report(0.0);
   size_t reported = 0;  // in 64ths

@@ -6,6 +6,7 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -43,16 +44,47 @@ struct Obstacles {
     }
     return best;
   }
-  bool clear(const Vec3& n) const {
-    return std::none_of(ids.begin(), ids.end(),
-                        [&](int q) { return wide.contains(tip, n, points[q]); });
+  /// No obstacle inside the wide nozzle at axis n. The blocking obstacle found moves to the
+  /// front: neighbouring candidate axes are mostly blocked by the same one.
+  bool clear(const Vec3& n) {
+    for (size_t i = 0; i < ids.size(); ++i) {
+      if (wide.contains(tip, n, points[ids[i]])) {
+        std::swap(ids[i], ids[0]);
+        return false;
+      }
+    }
+    return true;
+  }
+};
+
+/// Conservative test for the obstacle search: can a ball hold a point inside the wide nozzle
+/// for some axis within maxTilt of the reference? Besides the bounding cone widened by maxTilt,
+/// the ball's points lie at least (angle of its centre) - asin(radius / distance) from the
+/// reference, so at least that minus maxTilt from every allowed axis: none is inside when that
+/// is at least the largest clear angle over the ball's distances.
+struct TiltedNozzleBound {
+  NozzleBound cone;
+  const NozzleVolume& wide;
+  double maxTilt;
+  bool mayTouch(const Vec3& c, double rho) const {
+    if (!cone.mayTouch(c, rho)) {
+      return false;
+    }
+    const Vec3 v = c - cone.tip;
+    const double distance = v.norm();
+    if (distance <= rho) {
+      return true;
+    }
+    const double angle = std::acos(std::clamp(v.dot(cone.axis) / distance, -1.0, 1.0)) -
+                         std::asin(rho / distance) - maxTilt;
+    return angle < wide.maxClearAngleBetween(distance - rho, distance + rho);
   }
 };
 
 /// The least tilt from `reference` (<= maxTilt) whose wide nozzle holds no obstacle; starts from
 /// `current`. Returns false when none is found.
-bool findClearAxis(const Obstacles& obstacles, const Vec3& reference, const Vec3& current,
-                   double coneAngle, double maxTilt, Vec3& result) {
+bool findClearAxis(Obstacles& obstacles, const Vec3& reference, const Vec3& current, double maxTilt,
+                   Vec3& result) {
   // Projection: turn the axis off the deepest obstacle until it sits on the cone's surface.
   Vec3 n = current;
   for (int iteration = 0; iteration < 30; ++iteration) {
@@ -61,13 +93,14 @@ bool findClearAxis(const Obstacles& obstacles, const Vec3& reference, const Vec3
       result = n;
       return true;
     }
-    const Vec3 u = (obstacles.points[q] - obstacles.tip).normalized();
+    const Vec3 toObstacle = obstacles.points[q] - obstacles.tip;
+    const Vec3 u = toObstacle.normalized();
     Vec3 w = n - u.dot(n) * u;
     if (w.norm() < 1e-12) {
       w = u.unitOrthogonal();
     }
     w.normalize();
-    const double theta = coneAngle + 1e-6;
+    const double theta = obstacles.wide.clearAngleAt(toObstacle.norm()) + 1e-6;
     n = (std::cos(theta) * u + std::sin(theta) * w).normalized();
     if (angleBetween(n, reference) > maxTilt) {
       break;
@@ -77,13 +110,19 @@ bool findClearAxis(const Obstacles& obstacles, const Vec3& reference, const Vec3
   const Vec3 e1 = reference.unitOrthogonal();
   const Vec3 e2 = reference.cross(e1);
   const double step = 0.5 * kDeg;
-  const int azimuths = 48;
+  constexpr int azimuths = 48;
+  static const std::array<std::pair<double, double>, azimuths> ring = [] {
+    std::array<std::pair<double, double>, azimuths> r;
+    for (int a = 0; a < azimuths; ++a) {
+      r[a] = {std::cos(2 * M_PI * a / azimuths), std::sin(2 * M_PI * a / azimuths)};
+    }
+    return r;
+  }();
   for (double tilt = step; tilt <= maxTilt + 1e-12; tilt += step) {
     double bestDot = -2;
-    for (int a = 0; a < azimuths; ++a) {
-      const double phi = 2 * M_PI * a / azimuths;
-      const Vec3 candidate =
-          std::cos(tilt) * reference + std::sin(tilt) * (std::cos(phi) * e1 + std::sin(phi) * e2);
+    const double cosTilt = std::cos(tilt), sinTilt = std::sin(tilt);
+    for (const auto& [cosPhi, sinPhi] : ring) {
+      const Vec3 candidate = cosTilt * reference + sinTilt * (cosPhi * e1 + sinPhi * e2);
       if (candidate.dot(current) > bestDot && obstacles.clear(candidate)) {
         bestDot = candidate.dot(current);
         result = candidate;
@@ -117,15 +156,17 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
                                     const std::vector<Vec3>& reference,
                                     const std::vector<char>& material, const NozzleModel& nozzle,
                                     const AxisClearanceOptions& o,
-                                    const std::vector<Vec3>* fixedObstacles) {
+                                    const std::vector<Vec3>* fixedObstacles,
+                                    std::vector<char>* unresolvable) {
   const auto t0 = std::chrono::steady_clock::now();
   nozzle.validate();
   o.validate();
   const size_t N = points.size();
-  if (axes.size() != N || reference.size() != N || material.size() != N) {
+  if (axes.size() != N || reference.size() != N || material.size() != N ||
+      (unresolvable && unresolvable->size() != N)) {
     throw GeoLatticeError(
-        "axis clearance: points, axes, reference axes and material flags must have the same "
-        "length");
+        "axis clearance: points, axes, reference axes, material and unresolvable flags must have "
+        "the same length");
   }
   AxisClearanceResult result;
   // Obstacles: the material points at their index along the path, then the fixed obstacles
@@ -143,7 +184,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
 
   // 1. Stations with earlier material inside the nozzle.
   const NozzleVolume volume(nozzle);
-  NozzleBound detect(nozzle.boundingHalfAngleRad(), nozzle.reach(), nozzle.tipClearance);
+  NozzleBound detect(nozzle, volume);
   std::vector<int> colliding;
   for (size_t k = 0; k < N; ++k) {
     if (k % 4096 == 0 && o.shouldAbort && o.shouldAbort()) {
@@ -168,12 +209,13 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   }
 
   // 2. The least clearing tilt of each colliding station.
-  NozzleModel wideModel = nozzle;
-  wideModel.halfAngleDeg = std::min(89.9, nozzle.halfAngleDeg + o.marginDeg);
+  const NozzleModel wideModel = nozzle.widened(o.marginDeg);
   const NozzleVolume wide(wideModel);
   const double maxTilt = o.maxTiltDeg * kDeg;
-  NozzleBound gather(wideModel.boundingHalfAngleRad() + maxTilt, wideModel.reach(),
-                     -std::numeric_limits<double>::infinity());
+  TiltedNozzleBound gather{
+      NozzleBound(wideModel.boundingHalfAngleRad() + maxTilt, wideModel.reach(),
+                  -std::numeric_limits<double>::infinity(), wideModel.boundingApexOffset()),
+      wide, maxTilt};
   const double face2 = nozzle.tipFaceRadius * nozzle.tipFaceRadius;
   Obstacles obstacles{all, wide, Vec3::Zero(), {}};
   struct Tilt {
@@ -186,14 +228,24 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   // An obstacle closer to the reference axis than NA + margin - maxTilt is inside the cone for
   // every allowed axis (cone-only nozzle): the station cannot be cleared, stop looking.
   const double hopeless = wideModel.halfAngleDeg * kDeg - maxTilt;
-  const bool coneOnly = !std::isfinite(nozzle.length);
+  const bool coneOnly = nozzle.isConeOnly();
   const double cosHopeless = hopeless > 0 ? std::cos(hopeless) : 2.0;
   std::vector<std::pair<double, int>> byAngle;
+  auto giveUp = [&](int k) {
+    ++result.unresolvedStations;
+    if (unresolvable) {
+      (*unresolvable)[k] = 1;
+    }
+  };
   for (int k : colliding) {
+    if (unresolvable && (*unresolvable)[k]) {
+      ++result.unresolvedStations;
+      continue;
+    }
     obstacles.tip = points[k];
     obstacles.ids.clear();
     byAngle.clear();
-    gather.setStation(points[k], reference[k]);
+    gather.cone.setStation(points[k], reference[k]);
     bool cannot = false;
     tree.forEachCandidate(gather, k, [&](int q) {
       const Vec3 d = all[q] - points[k];
@@ -208,25 +260,28 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
         cannot = true;  // above the tip plane for every allowed axis, and inside every cone
         return true;
       }
+      // Outside the wide nozzle for every axis within maxTilt of the reference: no obstacle.
+      if (std::acos(std::clamp(c, -1.0, 1.0)) - maxTilt >= wide.clearAngleAt(std::sqrt(d2))) {
+        return false;
+      }
       byAngle.emplace_back(-c, q);
       return false;
     });
     if (cannot) {
-      ++result.unresolvedStations;
+      giveUp(k);
       continue;
     }
-    // Those inside the cone about the reference first, so a blocked candidate axis is usually
+    // Those inside the nozzle about the reference first, so a blocked candidate axis is usually
     // rejected by the first few (a partition, not a sort: linear).
-    const double cosWide = std::cos(wideModel.halfAngleDeg * kDeg);
-    std::partition(byAngle.begin(), byAngle.end(),
-                   [cosWide](const std::pair<double, int>& a) { return -a.first > cosWide; });
+    std::partition(byAngle.begin(), byAngle.end(), [&](const std::pair<double, int>& a) {
+      return wide.contains(points[k], reference[k], all[a.second]);
+    });
     for (const auto& [negCos, q] : byAngle) {
       obstacles.ids.push_back(q);
     }
     Vec3 axis;
-    if (!findClearAxis(obstacles, reference[k], axes[k], wideModel.halfAngleDeg * kDeg, maxTilt,
-                       axis)) {
-      ++result.unresolvedStations;
+    if (!findClearAxis(obstacles, reference[k], axes[k], maxTilt, axis)) {
+      giveUp(k);
       continue;
     }
     ++result.tiltedStations;

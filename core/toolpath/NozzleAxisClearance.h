@@ -51,10 +51,15 @@ struct AxisClearanceResult {
 /// per point, non-zero if it is deposited material (an obstacle for later stations). Throws
 /// GeoLatticeError for mismatched sizes or bad options. fixedObstacles (optional): points that are
 /// obstacles at every station, e.g. the build plate's samples (nozzle/BuildPlate.h).
+/// unresolvable (optional, one flag per point, in/out): a flagged station that collides is
+/// counted unresolved without a new search, and every station found unresolved is flagged. For
+/// repeated passes over one path: a station's obstacles only grow between passes (points are
+/// inserted, none move), so one no tilt cleared stays so.
 AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector<Vec3>& axes,
                                     const std::vector<Vec3>& reference,
                                     const std::vector<char>& material, const NozzleModel& nozzle,
                                     const AxisClearanceOptions& options,
-                                    const std::vector<Vec3>* fixedObstacles = nullptr);
+                                    const std::vector<Vec3>* fixedObstacles = nullptr,
+                                    std::vector<char>* unresolvable = nullptr);
 
 }  // namespace geolattice

@@ -18,7 +18,7 @@ Vec3 slerpAxis(const Vec3& a, const Vec3& b, double t) {
 }
 
 SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLength,
-                                    std::vector<Vec3>* extra) {
+                                    std::vector<Vec3>* extra, std::vector<char>* flags) {
   SubdivisionCounts counts;
   const size_t N = p.points.size();
   if (N < 2) {
@@ -46,6 +46,7 @@ SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLe
   Toolpath q;  // the subdivided arrays; report fields stay in p
   q.points.reserve(total);
   std::vector<Vec3> extraOut;
+  std::vector<char> flagsOut;
   auto pushCopy = [&](size_t i) {
     q.points.push_back(p.points[i]);
     q.normals.push_back(p.normals[i]);
@@ -59,6 +60,9 @@ SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLe
     q.pathIndex.push_back(p.pathIndex[i]);
     if (extra) {
       extraOut.push_back((*extra)[i]);
+    }
+    if (flags) {
+      flagsOut.push_back((*flags)[i]);
     }
   };
   pushCopy(0);
@@ -87,6 +91,9 @@ SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLe
       if (extra) {
         extraOut.push_back(slerpAxis((*extra)[i - 1], (*extra)[i], t));
       }
+      if (flags) {
+        flagsOut.push_back(0);
+      }
     }
     pushCopy(i);
   }
@@ -102,6 +109,9 @@ SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLe
   p.pathIndex.swap(q.pathIndex);
   if (extra) {
     extra->swap(extraOut);
+  }
+  if (flags) {
+    flags->swap(flagsOut);
   }
   return counts;
 }

@@ -21,9 +21,11 @@ struct SubdivisionCounts {
 };
 
 /// maxTurnRad > 0; maxLength > 0 or 0 for no length limit. extraAxes (optional, one unit
-/// vector per point, e.g. the untilted layer normals) are interpolated like the axes.
+/// vector per point, e.g. the untilted layer normals) are interpolated like the axes. flags
+/// (optional, one per point) stay with their points; inserted points get 0.
 SubdivisionCounts subdivideToolpath(Toolpath& path, double maxTurnRad, double maxLength,
-                                    std::vector<Vec3>* extraAxes = nullptr);
+                                    std::vector<Vec3>* extraAxes = nullptr,
+                                    std::vector<char>* flags = nullptr);
 
 /// Spherical interpolation between unit vectors a and b (t in [0, 1]); antipodal vectors turn
 /// about an arbitrary perpendicular.

@@ -156,9 +156,11 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
   constexpr int kMaxRounds = 4;
   bool checked = false;
   std::vector<int> uncleared;
+  std::vector<char> unresolvable(path.points.size(), 0);  // no tilt clears them: not retried
   for (int round = 0; round < kMaxRounds && o.clearance.maxTiltDeg > 0; ++round) {
-    const AxisClearanceResult r = clearNozzleAxes(path.points, path.normals, reference,
-                                                  materialOf(), o.nozzle, clearance, fixed);
+    const AxisClearanceResult r =
+        clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, clearance,
+                        fixed, &unresolvable);
     progress.report(static_cast<double>(round + 1) / kMaxRounds);
     if (round == 0) {
       path.collidingStations = r.collidingStations;
@@ -171,7 +173,7 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
       checked = true;
       break;
     }
-    counts = subdivideToolpath(path, maxTurn, 0.0, &reference);
+    counts = subdivideToolpath(path, maxTurn, 0.0, &reference, &unresolvable);
     path.rotationSteps += counts.rotationSteps;
     path.subdivisionPoints += counts.inserted;
   }

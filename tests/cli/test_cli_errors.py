@@ -215,6 +215,30 @@ class CliErrorTest(unittest.TestCase):
                               "-o", self.out, "-q")
         self.assertEqual(result.returncode, 0, result.stderr)
 
+    def test_bad_printhead_files_fail_before_the_first_stage(self):
+        # A printhead mesh is read and validated with the parameters: missing, open, in metres,
+        # or with its tip off the origin, the run stops in well under a second naming the file.
+        bunny = [os.path.join(TESTDATA, "bunny.obj"), "--fit-size", "80"]
+        cube_at = lambda dx, dz, scale=10.0: "".join(
+            "v %g %g %g\n" % (scale * (float(x) - 0.5) + dx, scale * (float(y) - 0.5), scale * float(z) + dz)
+            for x, y, z in (line.split()[1:] for line in CUBE_OBJ.splitlines() if line.startswith("v "))) + \
+            "".join(line + "\n" for line in CUBE_OBJ.splitlines() if line.startswith("f"))
+        cases = [(os.path.join(self.tmp, "nope.stl"), ["printhead file", "file not found"]),
+                 (write(os.path.join(self.tmp, "open.obj"), "\n".join(cube_at(0, 0).splitlines()[:-2]) + "\n"),
+                  ["printhead", "open.obj", "closed"]),
+                 (write(os.path.join(self.tmp, "metres.obj"), cube_at(0, 0, 0.01)), ["metres"]),
+                 (write(os.path.join(self.tmp, "lifted.obj"), cube_at(0, 3)), ["lowest point is at z = 3"]),
+                 (write(os.path.join(self.tmp, "aside.obj"), cube_at(20, 0)), ["the origin is", "from its surface"]),
+                 (write(os.path.join(self.tmp, "head.xyz"), "1 2 3\n"), ["printhead file", "extension"])]
+        for path, words in cases:
+            start = time.monotonic()
+            line = self.expect_error(bunny + ["--printhead", path], "parameters", *words)
+            self.assertLess(time.monotonic() - start, 1.0, line)
+        # The same cube centred on the axis is a (blunt) printhead: the run gets past the parameters.
+        good = write(os.path.join(self.tmp, "block.obj"), cube_at(0, 0))
+        result = self.run_cli(*bunny, "--printhead", good, "--until", "mesh", "-o", self.out, "-q")
+        self.assertEqual(result.returncode, 0, result.stderr)
+
     def test_unit_mistakes_fail_at_input(self):
         # A part exported in metres (0.05 across) and one with coordinates around 1e12.
         metres = "".join("v %g %g %g\n" % tuple(0.05 * float(x) for x in line.split()[1:])

@@ -1,0 +1,86 @@
+#!/usr/bin/env python3
+"""Printability on every bundled model: model x nozzle {45° cone, example printhead} x orientation
+{as placed, auto} (docs/performance.md, "Printability"; issue 14's table).
+
+Runs `geolattice run MODEL -o OUT/... --until toolpath --replay-steps 0 -q` for each combination,
+one after the other, and prints a Markdown table from report.json: colliding toolpath stations
+(strict verifier, no exemption; of them at the build plate), forced sequence steps, retractions,
+air length, and the seconds of the orientation search, the sequence, the toolpath and the whole
+run.
+
+Usage: scripts/printability-run.py [OUTDIR] [--bin PATH] [--models a,b] [--extra ARGS...]
+       (OUTDIR default /tmp/geolattice-printability; --extra passes the rest to every run)
+"""
+import json
+import os
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+PRINTHEAD = os.path.join(ROOT, "testdata", "printhead_slim.obj")
+MODELS = [  # name, file, placement options
+    ("bunny", "bunny.obj", ["--fit-size", "80"]),
+    ("spot", "spot.obj", ["--fit-size", "80"]),
+    ("knight", "decimated-knight.off", ["--fit-size", "80"]),
+    ("topopt", "topopt_new4_surf.obj", []),
+    ("Y", "y_shape.obj", []),
+    ("three-branch", "three_branch_tree.obj", ["--scale", "1.5"]),
+    ("cube", "cube.obj", ["--fit-size", "30"]),
+    ("ring", "ring_surf.obj", []),
+]
+NOZZLES = [("cone 45°", []), ("printhead", ["--printhead", PRINTHEAD])]
+ORIENTS = [("as placed", []), ("auto", ["--orient", "auto"])]
+
+
+def main():
+    args = sys.argv[1:]
+    extra = []
+    if "--extra" in args:
+        i = args.index("--extra")
+        extra = args[i + 1:]
+        del args[i:]
+    binary = os.path.join(ROOT, "build", "bin", "geolattice")
+    if "--bin" in args:
+        i = args.index("--bin")
+        binary = args[i + 1]
+        del args[i:i + 2]
+    only = None
+    if "--models" in args:
+        i = args.index("--models")
+        only = args[i + 1].split(",")
+        del args[i:i + 2]
+    out = args[0] if args else "/tmp/geolattice-printability"
+    print("| model | nozzle | orientation | colliding stations (plate) | of stations | forced steps "
+          "| retractions | air (mm) | orient s | sequence s | toolpath s | total s |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for name, file, placement in MODELS:
+        if only and name not in only:
+            continue
+        for nozzle, nozzle_args in NOZZLES:
+            for orient, orient_args in ORIENTS:
+                d = os.path.join(out, f"{name}-{nozzle.split()[0]}-{orient.split()[0]}")
+                os.makedirs(d, exist_ok=True)
+                cmd = [binary, "run", os.path.join(ROOT, "testdata", file), "-o", d, "--until", "toolpath",
+                       "--replay-steps", "0", "-q"] + placement + nozzle_args + orient_args + extra
+                start = time.monotonic()
+                p = subprocess.run(cmd, capture_output=True, text=True)
+                wall = time.monotonic() - start
+                try:
+                    r = json.load(open(os.path.join(d, "report.json")))
+                except (OSError, ValueError):
+                    r = {}
+                if p.returncode != 0 or "toolpath" not in r:
+                    err = (p.stderr.strip().splitlines() or ["?"])[0]
+                    print(f"| {name} | {nozzle} | {orient} | exit {p.returncode}: {err} |||||||| {wall:.1f} |")
+                    continue
+                t, s = r["toolpath"], r.get("sequence", {})
+                o = r.get("orient", {})
+                print(f"| {name} | {nozzle} | {orient} | {t['violating_stations']} ({t['plate_stations']}) "
+                      f"| {t['stations']} | {s.get('forced_steps')} | {t['retractions']} | {t['air_length_mm']:.0f} "
+                      f"| {o.get('seconds', 0):.1f} | {s.get('seconds', 0):.2f} | {t['seconds']:.2f} | {wall:.1f} |",
+                      flush=True)
+
+
+if __name__ == "__main__":
+    main()
