@@ -85,6 +85,11 @@ void addPrintOptions(std::vector<CliOption>& t) {
                      "flat face, which presses the bead)",
                      "GLNozzle.TipFaceRadius", nozzle, &vtkGLNozzle::SetTipFaceRadius,
                      &vtkGLNozzle::GetTipFaceRadius));
+  t.push_back(number("--face-contact", "MM", seq,
+                     "with --printhead: ignore neighbouring beads at most this high above\n"
+                     "the tip under the face's rim (within its radius + MM of the axis)",
+                     "GLNozzle.FaceContact", nozzle, &vtkGLNozzle::SetFaceContact,
+                     &vtkGLNozzle::GetFaceContact));
   t.push_back({"--no-plate", "", seq,
                "the build plate is no obstacle (default: it is, like printed material)",
                "GLNozzle.BuildPlate",

@@ -10,6 +10,7 @@
 #include <vtkPolyData.h>
 
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <vector>
 
@@ -57,7 +58,7 @@ void reportPrinthead(vtkGLNozzle* n, Json& s) {
     return;
   }
   const auto head = readPrintheadFile(file);
-  s["printhead"] = {{"file", head->name()},
+  s["printhead"] = {{"file", std::filesystem::absolute(head->name()).string()},
                     {"height_mm", head->height()},
                     {"max_radius_mm", head->maxRadius()},
                     {"reach_mm", head->reach()},
@@ -194,8 +195,10 @@ void reportSequence(GLPrintPipeline& p, vtkDataObject* sequenced, Json& s) {
   s["nozzle_angle_deg"] = n->GetNozzleAngle();
   s["nozzle_length_mm"] = n->GetNozzleLength();
   s["holder_radius_mm"] = n->GetHolderRadius();
+  s["holder_length_mm"] = n->GetHolderLength();
   s["tip_clearance_mm"] = n->GetTipClearance();
   s["tip_face_radius_mm"] = n->GetTipFaceRadius();
+  s["face_contact_mm"] = n->GetFaceContact();
   s["build_plate"] = n->GetBuildPlate() != 0;
   s["plate_margin_mm"] = n->GetPlateMargin();
   s["plate_thickness_mm"] = n->GetPlateThickness();

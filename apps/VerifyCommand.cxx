@@ -51,7 +51,18 @@ void readNozzleFromReport(const std::filesystem::path& report, GLPrintPipeline& 
   read("nozzle_length_mm", [n](double v) { n->SetNozzleLength(v); });
   read("holder_radius_mm", [n](double v) { n->SetHolderRadius(v); });
   read("tip_clearance_mm", [n](double v) { n->SetTipClearance(v); });
+  read("holder_length_mm", [n](double v) { n->SetHolderLength(v); });
   read("tip_face_radius_mm", [n](double v) { n->SetTipFaceRadius(v); });
+  read("face_contact_mm", [n](double v) { n->SetFaceContact(v); });
+  read("plate_margin_mm", [n](double v) { n->SetPlateMargin(v); });
+  read("plate_thickness_mm", [n](double v) { n->SetPlateThickness(v); });
+  if (s.contains("build_plate") && s["build_plate"].is_boolean()) {
+    n->SetBuildPlate(s["build_plate"].get<bool>());
+  }
+  if (s.contains("printhead") && s["printhead"].is_object() && s["printhead"].contains("file") &&
+      s["printhead"]["file"].is_string()) {
+    n->SetPrintheadFile(s["printhead"]["file"].get<std::string>().c_str());
+  }
   read("sample_spacing_mm", [&p](double v) { p.Sequencer->SetSampleSpacing(v); });
 }
 
@@ -158,9 +169,14 @@ int runVerifyCommand(int argc, char** argv) {
               << (toolpath ? " (the toolpath; every point at its own time, air points no material)"
                            : " (the printing order of the sub-graphs)")
               << (haveLattice && haveToolpath ? ", the newer of toolpath.vtp and lattice.vtp" : "")
-              << ": " << stations << " nozzle stations, nozzle angle " << nozzle->GetNozzleAngle()
-              << " deg";
-    if (nozzle->GetNozzleLength() > 0) {
+              << ": " << stations << " nozzle stations, ";
+    const char* head = nozzle->GetPrintheadFile();
+    if (head && *head) {
+      std::cout << "printhead " << head;
+    } else {
+      std::cout << "nozzle angle " << nozzle->GetNozzleAngle() << " deg";
+    }
+    if (!(head && *head) && nozzle->GetNozzleLength() > 0) {
       std::cout << ", length " << nozzle->GetNozzleLength() << " mm, holder radius "
                 << nozzle->GetHolderRadius() << " mm";
     }

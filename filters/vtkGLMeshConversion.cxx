@@ -563,6 +563,7 @@ NozzleModel nozzleModel(vtkGLNozzle* n) {
       n->GetHolderLength() == 0 ? std::numeric_limits<double>::infinity() : n->GetHolderLength();
   nozzle.tipClearance = n->GetTipClearance();
   nozzle.tipFaceRadius = n->GetTipFaceRadius();
+  nozzle.faceContact = n->GetFaceContact();
   if (n->GetPrintheadFile() && n->GetPrintheadFile()[0] != '\0') {
     nozzle.printhead = readPrintheadFile(n->GetPrintheadFile());
   }

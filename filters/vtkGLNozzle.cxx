@@ -17,6 +17,7 @@ vtkGLNozzle::vtkGLNozzle() {
   this->HolderLength = std::isfinite(defaults.holderLength) ? defaults.holderLength : 0.0;
   this->TipClearance = defaults.tipClearance;
   this->TipFaceRadius = defaults.tipFaceRadius;
+  this->FaceContact = defaults.faceContact;
   const geolattice::BuildPlate plate;
   this->BuildPlate = plate.enabled;
   this->PlateMargin = plate.margin;
@@ -37,6 +38,7 @@ void vtkGLNozzle::CopyParameters(vtkGLNozzle* other) {
   this->SetHolderLength(other->HolderLength);
   this->SetTipClearance(other->TipClearance);
   this->SetTipFaceRadius(other->TipFaceRadius);
+  this->SetFaceContact(other->FaceContact);
   this->SetBuildPlate(other->BuildPlate);
   this->SetPlateMargin(other->PlateMargin);
   this->SetPlateThickness(other->PlateThickness);
@@ -51,6 +53,7 @@ void vtkGLNozzle::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "HolderLength: " << this->HolderLength << " mm\n";
   os << indent << "TipClearance: " << this->TipClearance << " mm\n";
   os << indent << "TipFaceRadius: " << this->TipFaceRadius << " mm\n";
+  os << indent << "FaceContact: " << this->FaceContact << " mm\n";
   os << indent << "BuildPlate: " << (this->BuildPlate ? "on" : "off") << "\n";
   os << indent << "PlateMargin: " << this->PlateMargin << " mm\n";
   os << indent << "PlateThickness: " << this->PlateThickness << " mm\n";

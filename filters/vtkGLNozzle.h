@@ -69,6 +69,14 @@ public:
   ///@}
 
   ///@{
+  /// With a printhead: material at most this high above the tip and within the printhead's face
+  /// radius + this of the axis is a neighbouring bead the face presses, not an obstacle (mm,
+  /// default 0.3, >= 0). Not used by the cone.
+  vtkSetMacro(FaceContact, double);
+  vtkGetMacro(FaceContact, double);
+  ///@}
+
+  ///@{
   /// The build plate is an obstacle for the nozzle (default on): a slab under z = 0 covering the
   /// part's footprint grown by PlateMargin (core/nozzle/BuildPlate.h).
   vtkSetMacro(BuildPlate, vtkTypeBool);
@@ -109,6 +117,7 @@ protected:
   double HolderLength;
   double TipClearance;
   double TipFaceRadius;
+  double FaceContact;
   vtkTypeBool BuildPlate;
   double PlateMargin;
   double PlateThickness;

@@ -2,13 +2,12 @@
 
 #include "common/Error.h"
 #include "common/Progress.h"
+#include "mesh/CgalSurfaceMesh.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_distance_placement.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_filter.h>
 #include <CGAL/Surface_mesh_simplification/Edge_collapse_visitor_base.h>
@@ -24,25 +23,10 @@ namespace geolattice {
 
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using K = cgal::Kernel;
+using Mesh = cgal::SurfaceMesh;
 namespace SMS = CGAL::Surface_mesh_simplification;
 namespace PMP = CGAL::Polygon_mesh_processing;
-
-Mesh toMesh(const TriangleSurface& s) {
-  Mesh m;
-  std::vector<Mesh::Vertex_index> v;
-  v.reserve(s.points.size());
-  for (const Vec3& p : s.points) {
-    v.push_back(m.add_vertex(K::Point_3(p.x(), p.y(), p.z())));
-  }
-  for (const auto& t : s.triangles) {
-    if (m.add_face(v[t[0]], v[t[1]], v[t[2]]) == Mesh::null_face()) {
-      throw GeoLatticeError("surface simplification: the surface is not an oriented 2-manifold");
-    }
-  }
-  return m;
-}
 
 TriangleSurface fromMesh(const Mesh& m) {
   TriangleSurface s;
@@ -135,7 +119,7 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
       static_cast<double>(r.inputTriangles) < 2.0 * target) {
     return r;
   }
-  Mesh mesh = toMesh(surface);
+  Mesh mesh = cgal::toSurfaceMesh(surface, "surface simplification");
   const Mesh input = mesh;
   const double tolerance = o.tolerance > 0 ? o.tolerance : 0.25 * o.targetEdgeLength;
   using GH = SMS::GarlandHeckbert_plane_policies<Mesh, K>;

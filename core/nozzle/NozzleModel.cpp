@@ -33,6 +33,9 @@ void NozzleModel::validate() const {
   if (!(tipFaceRadius >= 0.0) || !std::isfinite(tipFaceRadius)) {
     fail("nozzle tip face radius must be finite and >= 0 mm", tipFaceRadius);
   }
+  if (!(faceContact >= 0.0) || !std::isfinite(faceContact)) {
+    fail("face contact must be finite and >= 0 mm", faceContact);
+  }
   if (!(printheadMarginRad >= 0.0 && printheadMarginRad < 0.5 * M_PI)) {
     fail("printhead margin must be in [0, 90) degrees", printheadMarginRad * 180.0 / M_PI);
   }

@@ -21,7 +21,11 @@
 ///
 /// With a printhead mesh (nozzle/Printhead.h) the cone and holder parameters are not used: a
 /// point is inside iff r < R(h), the printhead's swept radius at that height, with the same
-/// two exemptions.
+/// two exemptions and a third that the real face needs: faceContact (>= 0, default 0.3 mm)
+/// ignores material at most faceContact above the tip within the printhead's face radius +
+/// faceContact of the axis: the neighbouring beads (their top a fraction of a layer higher on a
+/// curved layer, their centre a bead width away) under the rim of the flat face, which presses
+/// (irons) them. The cone has no face (its apex is the tip), so it does not use this.
 #include "nozzle/Printhead.h"
 
 #include <Eigen/Core>
@@ -40,6 +44,9 @@ struct NozzleModel {
   double holderLength = std::numeric_limits<double>::infinity();
   double tipClearance = 0.1;   ///< material with h <= this is ignored (mm, >= 0)
   double tipFaceRadius = 0.5;  ///< material within this distance of the tip is ignored (mm, >= 0)
+  /// Printhead only: material at most this high above the tip and within the face radius + this
+  /// of the axis is a neighbouring bead under the face's rim (mm, >= 0).
+  double faceContact = 0.3;
   /// A printhead mesh; when set it replaces the cone and the holder (null = the cone model).
   std::shared_ptr<const Printhead> printhead;
   /// Widening used by the toolpath's axis clearance to keep a margin (see widened()): the
@@ -76,6 +83,8 @@ struct NozzleVolume {
         top(m.length + m.holderLength),
         clearance(m.tipClearance),
         face2(m.tipFaceRadius * m.tipFaceRadius),
+        contact(m.faceContact),
+        contactRadius2(m.printhead ? std::pow(m.printhead->faceRadius() + m.faceContact, 2) : 0.0),
         head(m.printhead.get()),
         headSlope(std::tan(m.printheadMarginRad)),
         coneAngle(m.halfAngleDeg * M_PI / 180.0) {
@@ -102,6 +111,9 @@ struct NozzleVolume {
     // angle(d, n) < NA (h > 0) in the cone, r < R along the holder, r < R(h) in a printhead
     bool inside;
     if (head) {
+      if (h <= contact && r2 <= contactRadius2) {
+        return false;  // a neighbouring bead under the face's rim
+      }
       const double R = head->radiusAt(h) + h * headSlope;
       inside = h <= top && r2 < R * R;
     } else {
@@ -140,7 +152,7 @@ struct NozzleVolume {
     return head ? head->maxClearAngleBetween(rho0, rho1) + std::atan(headSlope) : coneAngle;
   }
 
-  double cos2, length, holder2, top, clearance, face2;
+  double cos2, length, holder2, top, clearance, face2, contact, contactRadius2;
   const Printhead* head;  ///< owned by the NozzleModel this volume was made from
   double headSlope;
   double coneAngle;

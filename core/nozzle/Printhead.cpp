@@ -1,15 +1,14 @@
 #include "nozzle/Printhead.h"
 
 #include "common/Error.h"
+#include "mesh/CgalSurfaceMesh.h"
 #include "mesh/SurfaceCheck.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Side_of_triangle_mesh.h>
-#include <CGAL/Surface_mesh.h>
 
 #include <cmath>
 #include <sstream>
@@ -18,8 +17,8 @@ namespace geolattice {
 
 namespace {
 
-using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using K = cgal::Kernel;
+using Mesh = cgal::SurfaceMesh;
 using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
 using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
 
@@ -28,19 +27,6 @@ std::string fmt(double v) {
   s.precision(4);
   s << v;
   return s.str();
-}
-
-Mesh toCgalMesh(const TriangleSurface& s) {
-  Mesh m;
-  std::vector<Mesh::Vertex_index> v;
-  v.reserve(s.points.size());
-  for (const Vec3& p : s.points) {
-    v.push_back(m.add_vertex(K::Point_3(p.x(), p.y(), p.z())));
-  }
-  for (const auto& t : s.triangles) {
-    m.add_face(v[t[0]], v[t[1]], v[t[2]]);  // a closed, edge-manifold surface (checked before)
-  }
-  return m;
 }
 
 /// Squared distance from the z axis.
@@ -81,8 +67,8 @@ Printhead::Printhead(const TriangleSurface& mesh, const std::string& name) : nam
                           " mm across; a printhead is given in millimetres (1 mm - 2 m)" +
                           (size < 1.0 ? ": was it exported in metres?" : ""));
   }
-  const Mesh cgal = toCgalMesh(mesh);
-  if (CGAL::Polygon_mesh_processing::does_self_intersect(cgal)) {
+  const Mesh solid = cgal::toSurfaceMesh(mesh, what + "CGAL");
+  if (CGAL::Polygon_mesh_processing::does_self_intersect(solid)) {
     throw GeoLatticeError(what +
                           "the mesh intersects itself; repair it (or export the printhead as "
                           "one solid body) so that its inside is well defined");
@@ -95,7 +81,7 @@ Printhead::Printhead(const TriangleSurface& mesh, const std::string& name) : nam
                           " mm; the tip (the centre of the orifice face) must be at the origin "
                           "with the nozzle axis along +z, up into the printhead");
   }
-  const Tree tree(faces(cgal).first, faces(cgal).second, cgal);
+  const Tree tree(faces(solid).first, faces(solid).second, solid);
   const double tipDistance = std::sqrt(tree.squared_distance(K::Point_3(0, 0, 0)));
   if (tipDistance > tolerance) {
     throw GeoLatticeError(what + "the origin is " + fmt(tipDistance) +
@@ -103,7 +89,7 @@ Printhead::Printhead(const TriangleSurface& mesh, const std::string& name) : nam
                           "at the origin with the nozzle axis along +z");
   }
   height_ = hi.z();
-  const CGAL::Side_of_triangle_mesh<Mesh, K> inside(cgal);
+  const CGAL::Side_of_triangle_mesh<Mesh, K> inside(solid);
   const double probe = std::min(0.05, 0.01 * height_);
   if (inside(K::Point_3(0, 0, probe)) != CGAL::ON_BOUNDED_SIDE) {
     throw GeoLatticeError(what +

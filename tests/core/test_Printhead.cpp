@@ -160,6 +160,7 @@ TEST(Printhead, ContainsEveryPointOfTheMeshAtEveryTurnAboutTheAxis) {
     model.printhead = std::make_shared<const Printhead>(head);
     model.tipClearance = 0;
     model.tipFaceRadius = 0;
+    model.faceContact = 0;
     const NozzleVolume volume(model);
     std::mt19937 rng(11);
     std::uniform_real_distribution<double> u(-1, 1);
@@ -191,6 +192,29 @@ TEST(Printhead, ContainsEveryPointOfTheMeshAtEveryTurnAboutTheAxis) {
     }
     EXPECT_GT(insideMesh, 100);
   }
+}
+
+TEST(Printhead, NeighbouringBeadsUnderTheFaceRimAreNotObstacles) {
+  NozzleModel model;
+  model.printhead = std::make_shared<const Printhead>(slimHead(48), "slim");
+  const Vec3 tip(1, 2, 3), axis = Vec3(0.2, 0.1, 1).normalized();
+  const Vec3 side = axis.unitOrthogonal();
+  auto at = [&](double h, double r) {
+    return Vec3(tip + h * axis + r * side);
+  };
+  const NozzleVolume volume(model);
+  // A bead a path width (0.6 mm) away whose top is 0.2 mm higher: pressed by the face's rim.
+  EXPECT_FALSE(volume.contains(tip, axis, at(0.2, 0.6)));
+  EXPECT_FALSE(volume.contains(tip, axis, at(0.3, 0.79)));
+  // Higher, or farther out under the tip cone: the nozzle's body.
+  EXPECT_TRUE(volume.contains(tip, axis, at(0.35, 0.6)));
+  EXPECT_TRUE(volume.contains(tip, axis, at(0.8, 0.9)));
+  model.faceContact = 0;  // no contact zone: the rim's neighbour is inside the tip cone
+  EXPECT_TRUE(NozzleVolume(model).contains(tip, axis, at(0.2, 0.6)));
+  // The cone model has no face: the zone does not apply, its own exemptions decide.
+  NozzleModel cone;
+  cone.halfAngleDeg = 80;
+  EXPECT_TRUE(NozzleVolume(cone).contains(tip, axis, at(0.2, 0.6)));
 }
 
 TEST(Printhead, TheShippedSlimPrintheadIsValid) {
