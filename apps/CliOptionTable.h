@@ -77,6 +77,9 @@ CliOption number(const char* flag, const char* value, const char* section, const
 inline vtkGLNozzle* nozzle(P& p) {
   return p.Nozzle;
 }
+inline vtkGLPedestal* pedestal(P& p) {
+  return p.Pedestal;
+}
 inline vtkGLPlaceOnPlatform* placement(P& p) {
   return p.Placement;
 }

@@ -64,6 +64,11 @@ void addModelOptions(std::vector<CliOption>& t) {
                      "contact area with the plate an orientation needs (mm^2)",
                      "GLAutoOrient.MinBaseArea", orientation, &vtkGLAutoOrient::SetMinBaseArea,
                      &vtkGLAutoOrient::GetMinBaseArea));
+  t.push_back(number("--pedestal", "MM", orient,
+                     "raise the part on a printed column of its footprint, MM tall, so\n"
+                     "overhangs right above the plate can be printed (0 = none)",
+                     "GLPedestal.Height", pedestal, &vtkGLPedestal::SetHeight,
+                     &vtkGLPedestal::GetHeight));
   t.push_back({"--orient-candidates", "N", orient,
                "candidate directions from a uniform sphere sample (plus the\n"
                "convex-hull facets and the placement as it is)",

@@ -48,6 +48,9 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
     if (!head || !*head) {
       hint += std::string(hint.empty() ? "" : " or ") + "--printhead FILE";
     }
+    if (plate > 0 && P.Pedestal->GetHeight() == 0 && !P.GetTetMeshInput()) {
+      hint += std::string(hint.empty() ? "" : " or ") + "--pedestal 10";
+    }
     if (!hint.empty()) {
       line << "; try " << hint;
     }

@@ -100,9 +100,16 @@ private:
     } else if (P.Orientation->GetOrient() == vtkGLAutoOrient::AUTO) {
       throw UsageError("--orient auto needs a surface model: " + R.model +
                        " is a tet mesh (orient its boundary surface, e.g. exported as .stl)");
+    } else if (P.Pedestal->GetHeight() > 0) {
+      throw UsageError("--pedestal needs a surface model: " + R.model +
+                       " is a tet mesh (raise its boundary surface, e.g. exported as .stl)");
     }
     vtkDataObject* tets = placed;
     if (!tetMesh) {
+      if (P.Pedestal->GetHeight() > 0) {  // Height 0: it passes the part on
+        vtkDataObject* raised = this->Update("pedestal", P.Pedestal);
+        reportPedestal(raised, this->Section("pedestal"));
+      }
       tets = this->Update("mesh", P.Tetrahedralize);
     } else {
       this->LastSeconds = 0;

@@ -126,6 +126,12 @@ void reportOrientation(vtkDataObject* o, Json& s) {
   s["candidates_file"] = "orientation.csv";
 }
 
+void reportPedestal(vtkDataObject* raised, Json& s) {
+  s["height_mm"] = fieldValue(raised, arrays::PedestalHeight);
+  s["footprint_area_mm2"] = fieldValue(raised, arrays::PedestalFootprintArea);
+  s["footprint_loops"] = count(raised, arrays::PedestalFootprintPieces);
+}
+
 void reportFields(vtkDataObject* fields, Json& s) {
   s["points"] = points(fields);
   s["tets"] = cells(fields);

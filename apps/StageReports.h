@@ -19,6 +19,7 @@ void reportMesh(vtkDataObject* tets, bool meshed, Json& section);
 /// The chosen orientation: up, rotation, candidates, seconds, before / after (colliding stations
 /// as placed and chosen), evaluation tets.
 void reportOrientation(vtkDataObject* oriented, Json& section);
+void reportPedestal(vtkDataObject* raised, Json& section);
 void reportFields(vtkDataObject* fields, Json& section);
 void reportLayers(GLPrintPipeline& pipeline, vtkDataObject* layers, Json& section);
 void reportOverhang(vtkDataObject* surface, Json& section);

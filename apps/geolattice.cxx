@@ -68,10 +68,11 @@ public:
 /// "== CLASS" and the PrintSelf of a default-constructed object, for every filter and writer.
 void printFilterDefaults() {
   GLPrintPipeline p;
-  vtkObject* objects[] = {p.Nozzle,         p.Reader,         p.Placement,   p.Orientation,
-                          p.Tetrahedralize, p.GeodesicFields, p.Slicer,      p.OverhangAnalysis,
-                          p.LatticeInfill,  p.SkeletonTree,   p.Sequencer,   p.SequenceVerifier,
-                          p.Planner,        p.ScriptWriter,   p.GCodeWriter, p.WaypointWriter};
+  vtkObject* objects[] = {p.Nozzle,           p.Reader,         p.Placement,      p.Orientation,
+                          p.Pedestal,         p.Tetrahedralize, p.GeodesicFields, p.Slicer,
+                          p.OverhangAnalysis, p.LatticeInfill,  p.SkeletonTree,   p.Sequencer,
+                          p.SequenceVerifier, p.Planner,        p.ScriptWriter,   p.GCodeWriter,
+                          p.WaypointWriter};
   for (vtkObject* o : objects) {
     std::cout << "== " << o->GetClassName() << "\n";
     o->Print(std::cout);

@@ -8,7 +8,8 @@
 GLPrintPipeline::GLPrintPipeline(bool tetMeshInput) {
   this->Placement->SetInputConnection(this->Reader->GetOutputPort());
   this->Orientation->SetInputConnection(this->Placement->GetOutputPort());
-  this->Tetrahedralize->SetInputConnection(this->Orientation->GetOutputPort(0));
+  this->Pedestal->SetInputConnection(this->Orientation->GetOutputPort(0));
+  this->Tetrahedralize->SetInputConnection(this->Pedestal->GetOutputPort());
   this->Slicer->SetInputConnection(this->GeodesicFields->GetOutputPort());
   this->OverhangAnalysis->SetInputConnection(this->GeodesicFields->GetOutputPort());
   this->LatticeInfill->SetInputConnection(this->Slicer->GetOutputPort(0));
@@ -55,6 +56,8 @@ vtkAlgorithm* GLPrintPipeline::Filter(Stage stage) {
       return this->Placement;
     case Orient:
       return this->Orientation;
+    case Raise:
+      return this->Pedestal;
     case Mesh:
       return this->Tetrahedralize;
     case Fields:
@@ -83,9 +86,9 @@ vtkAlgorithm* GLPrintPipeline::Filter(Stage stage) {
 
 const char* GLPrintPipeline::StageName(Stage stage) {
   static const char* const names[NumberOfStages] = {
-      "read",           "place",   "orient",   "mesh",     "fields",          "layers",
-      "overhang",       "lattice", "skeleton", "sequence", "sequence-verify", "toolpath",
-      "toolpath-verify"};
+      "read",     "place",           "orient",   "pedestal",       "mesh",
+      "fields",   "layers",          "overhang", "lattice",        "skeleton",
+      "sequence", "sequence-verify", "toolpath", "toolpath-verify"};
   return stage >= 0 && stage < NumberOfStages ? names[stage] : "";
 }
 

@@ -6,7 +6,8 @@
  * tests build it from here; pvpython/geolattice_pipeline.py builds the same proxies in the same
  * order (tests/pvpython/test_pipeline_description.py compares the two descriptions).
  *
- *   Reader -> Place -> Orient -> Mesh (both skipped for a tet-mesh input) -> Fields -> Layers -> Lattice
+ *   Reader -> Place -> Orient -> Pedestal -> Mesh (the three skipped for a tet-mesh input) -> Fields
+ *          -> Layers -> Lattice
  *          -> Skeleton (+ Fields) -> Sequence -> Toolpath -> the program writers
  *   Overhang on Fields; SequenceVerify on Sequence; ToolpathVerify on Toolpath.
  *
@@ -26,6 +27,7 @@
 #include "vtkGLMeshReader.h"
 #include "vtkGLNozzle.h"
 #include "vtkGLOverhangAnalysis.h"
+#include "vtkGLPedestal.h"
 #include "vtkGLPlaceOnPlatform.h"
 #include "vtkGLPrintSequencer.h"
 #include "vtkGLSkeletonTree.h"
@@ -45,6 +47,7 @@ public:
     Read,
     Place,
     Orient,
+    Raise,  ///< the pedestal (vtkGLPedestal; Height 0 passes the part through)
     Mesh,
     Fields,
     Layers,
@@ -58,7 +61,7 @@ public:
     NumberOfStages
   };
 
-  /// Wires every filter. With tetMeshInput the Orient and Mesh stages are skipped: the placed tet
+  /// Wires every filter. With tetMeshInput the Orient, Raise and Mesh stages are skipped: the placed tet
   /// mesh goes straight to Fields (and Skeleton).
   explicit GLPrintPipeline(bool tetMeshInput = false);
   GLPrintPipeline(const GLPrintPipeline&) = delete;
@@ -70,7 +73,7 @@ public:
 
   /// The filter of a stage (Mesh: the tetrahedralizer even when skipped).
   vtkAlgorithm* Filter(Stage stage);
-  /// "read", "place", "orient", "mesh", "fields", "layers", "overhang", "lattice", "skeleton", "sequence",
+  /// "read", "place", "orient", "pedestal", "mesh", "fields", "layers", "overhang", "lattice", "skeleton", "sequence",
   /// "sequence-verify", "toolpath", "toolpath-verify".
   static const char* StageName(Stage stage);
 
@@ -84,6 +87,7 @@ public:
   vtkNew<vtkGLMeshReader> Reader;
   vtkNew<vtkGLPlaceOnPlatform> Placement;
   vtkNew<vtkGLAutoOrient> Orientation;  ///< Keep by default: the part as placed
+  vtkNew<vtkGLPedestal> Pedestal;       ///< Height 0 by default: no pedestal
   vtkNew<vtkGLTetrahedralizeSurface> Tetrahedralize;
   vtkNew<vtkGLGeodesicDistanceFields> GeodesicFields;
   vtkNew<vtkGLCurvedLayerSlicer> Slicer;

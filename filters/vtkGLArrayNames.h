@@ -250,6 +250,11 @@ constexpr const char* ToolpathReplannedHops =
     "ToolpathReplannedHops";  ///< hops onto an upper node sent over the safe box (they collided)
 constexpr const char* ToolpathSeconds = "ToolpathSeconds";  ///< wall time of the planning (s)
 
+// GL Pedestal (vtkGLPedestal.h): field data of the raised surface.
+constexpr const char* PedestalHeight = "PedestalHeight";  ///< mm the part is raised (0 = none)
+constexpr const char* PedestalFootprintArea = "PedestalFootprintArea";      ///< mm²
+constexpr const char* PedestalFootprintPieces = "PedestalFootprintPieces";  ///< boundary loops
+
 // GL Auto Orient (vtkGLAutoOrient.h): field data of the oriented surface and point data of the
 // candidates.
 constexpr const char* OrientMode = "OrientMode";  ///< "keep" or "auto"

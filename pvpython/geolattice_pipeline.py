@@ -44,7 +44,8 @@ STAGES = [
     ("reader", "GLMeshReader", {}),
     ("place", "GLPlaceOnPlatform", {"Input": ("reader", 0)}),
     ("orient", "GLAutoOrient", {"Input": ("place", 0)}),
-    ("tets", "GLTetrahedralizeSurface", {"Input": ("orient", 0)}),
+    ("pedestal", "GLPedestal", {"Input": ("orient", 0)}),
+    ("tets", "GLTetrahedralizeSurface", {"Input": ("pedestal", 0)}),
     ("fields", "GLGeodesicDistanceFields", {"Input": ("tets", 0)}),
     ("layers", "GLCurvedLayerSlicer", {"Input": ("fields", 0)}),
     ("overhang", "GLOverhangAnalysis", {"Input": ("fields", 0)}),
@@ -64,6 +65,7 @@ PARAMETERS = {
     "center": (("place",), "CenterXY"),
     "orient": (("orient",), "Orient"),
     "min_base_area": (("orient",), "MinBaseArea"),
+    "pedestal": (("pedestal",), "Height"),
     "edge_length": (("tets",), "TargetEdgeLength"),
     "radius_edge": (("tets",), "RadiusEdgeRatio"),
     "base_tolerance": (("fields",), "BaseTolerance"),
@@ -111,7 +113,7 @@ def build_pipeline(model, lattice_width=None, **parameters):
     tet_mesh = model.lower().endswith(TET_MESH_EXTENSIONS)
     p = {}
     for key, proxy_name, inputs in STAGES:
-        if key in ("orient", "tets") and tet_mesh:
+        if key in ("orient", "pedestal", "tets") and tet_mesh:
             p[key] = p["place"]
             continue
         properties = {}

@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Printability on every bundled model: model x nozzle {45° cone, example printhead} x orientation
-{as placed, auto} (docs/performance.md, "Printability"; issue 14's table).
+{as placed, auto}, and the printhead auto-oriented on a 10 mm pedestal (docs/performance.md,
+"Printability"; issue 14's table).
 
 Runs `geolattice run MODEL -o OUT/... --until toolpath --replay-steps 0 -q` for each combination,
 one after the other, and prints a Markdown table from report.json: colliding toolpath stations
@@ -29,8 +30,13 @@ MODELS = [  # name, file, placement options
     ("cube", "cube.obj", ["--fit-size", "30"]),
     ("ring", "ring_surf.obj", []),
 ]
-NOZZLES = [("cone 45°", []), ("printhead", ["--printhead", PRINTHEAD])]
-ORIENTS = [("as placed", []), ("auto", ["--orient", "auto"])]
+CONFIGS = [  # nozzle, orientation (and pedestal), options
+    ("cone 45°", "as placed", []),
+    ("cone 45°", "auto", ["--orient", "auto"]),
+    ("printhead", "as placed", ["--printhead", PRINTHEAD]),
+    ("printhead", "auto", ["--printhead", PRINTHEAD, "--orient", "auto"]),
+    ("printhead", "auto + pedestal 10 mm", ["--printhead", PRINTHEAD, "--orient", "auto", "--pedestal", "10"]),
+]
 
 
 def main():
@@ -57,29 +63,28 @@ def main():
     for name, file, placement in MODELS:
         if only and name not in only:
             continue
-        for nozzle, nozzle_args in NOZZLES:
-            for orient, orient_args in ORIENTS:
-                d = os.path.join(out, f"{name}-{nozzle.split()[0]}-{orient.split()[0]}")
-                os.makedirs(d, exist_ok=True)
-                cmd = [binary, "run", os.path.join(ROOT, "testdata", file), "-o", d, "--until", "toolpath",
-                       "--replay-steps", "0", "-q"] + placement + nozzle_args + orient_args + extra
-                start = time.monotonic()
-                p = subprocess.run(cmd, capture_output=True, text=True)
-                wall = time.monotonic() - start
-                try:
-                    r = json.load(open(os.path.join(d, "report.json")))
-                except (OSError, ValueError):
-                    r = {}
-                if p.returncode != 0 or "toolpath" not in r:
-                    err = (p.stderr.strip().splitlines() or ["?"])[0]
-                    print(f"| {name} | {nozzle} | {orient} | exit {p.returncode}: {err} |||||||| {wall:.1f} |")
-                    continue
-                t, s = r["toolpath"], r.get("sequence", {})
-                o = r.get("orient", {})
-                print(f"| {name} | {nozzle} | {orient} | {t['violating_stations']} ({t['plate_stations']}) "
-                      f"| {t['stations']} | {s.get('forced_steps')} | {t['retractions']} | {t['air_length_mm']:.0f} "
-                      f"| {o.get('seconds', 0):.1f} | {s.get('seconds', 0):.2f} | {t['seconds']:.2f} | {wall:.1f} |",
-                      flush=True)
+        for nozzle, orient, config_args in CONFIGS:
+            d = os.path.join(out, f"{name}-{nozzle.split()[0]}-{'-'.join(orient.split()[:3:2])}")
+            os.makedirs(d, exist_ok=True)
+            cmd = [binary, "run", os.path.join(ROOT, "testdata", file), "-o", d, "--until", "toolpath",
+                   "--replay-steps", "0", "-q"] + placement + config_args + extra
+            start = time.monotonic()
+            p = subprocess.run(cmd, capture_output=True, text=True)
+            wall = time.monotonic() - start
+            try:
+                r = json.load(open(os.path.join(d, "report.json")))
+            except (OSError, ValueError):
+                r = {}
+            if p.returncode != 0 or "toolpath" not in r:
+                err = (p.stderr.strip().splitlines() or ["?"])[0]
+                print(f"| {name} | {nozzle} | {orient} | exit {p.returncode}: {err} |||||||| {wall:.1f} |")
+                continue
+            t, s = r["toolpath"], r.get("sequence", {})
+            o = r.get("orient", {})
+            print(f"| {name} | {nozzle} | {orient} | {t['violating_stations']} ({t['plate_stations']}) "
+                  f"| {t['stations']} | {s.get('forced_steps')} | {t['retractions']} | {t['air_length_mm']:.0f} "
+                  f"| {o.get('seconds', 0):.1f} | {s.get('seconds', 0):.2f} | {t['seconds']:.2f} | {wall:.1f} |",
+                  flush=True)
 
 
 if __name__ == "__main__":

@@ -8,6 +8,7 @@
 #include "gdf/HeatSources.h"
 #include "lattice/LatticeInfill.h"
 #include "mesh/TetMeshTopology.h"
+#include "placement/PlaceOnPlatform.h"
 #include "overhang/OverhangAnalysis.h"
 #include "sequence/PotentialCollisions.h"
 #include "sequence/PrintMaterial.h"
@@ -248,26 +249,12 @@ Eigen::Matrix3d rotationTakingDownToMinusZ(const Vec3& down) {
 
 double baseContactArea(const TriangleSurface& surface, const Eigen::Matrix3d& R,
                        double contactHeight) {
-  double zmin = std::numeric_limits<double>::infinity();
-  std::vector<double> z(surface.points.size());
-  for (size_t i = 0; i < z.size(); ++i) {
-    z[i] = R.row(2).dot(surface.points[i]);
-    zmin = std::min(zmin, z[i]);
-  }
-  const double cosMax = std::cos(30 * kDeg);
   double area = 0;
-  for (const auto& t : surface.triangles) {
-    if (z[t[0]] - zmin > contactHeight || z[t[1]] - zmin > contactHeight ||
-        z[t[2]] - zmin > contactHeight) {
-      continue;
-    }
-    const Vec3 a = R * surface.points[t[0]], b = R * surface.points[t[1]],
-               c = R * surface.points[t[2]];
-    const Vec3 cross = (b - a).cross(c - a);
-    const double twice = cross.norm();
-    if (twice > 0 && -cross.z() / twice >= cosMax) {
-      area += 0.5 * twice;
-    }
+  for (int f : baseContactFaces(surface, R, contactHeight)) {
+    const auto& t = surface.triangles[f];
+    area += 0.5 * (surface.points[t[1]] - surface.points[t[0]])
+                      .cross(surface.points[t[2]] - surface.points[t[0]])
+                      .norm();
   }
   return area;
 }

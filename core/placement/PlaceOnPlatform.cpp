@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace geolattice {
@@ -61,6 +62,32 @@ Placement placeOnPlatform(const Vec3& lo, const Vec3& hi, const PlacementOptions
   p.translation = Vec3(options.centerXY ? -(p.scale * centre.x()) : 0.0,
                        options.centerXY ? -(p.scale * centre.y()) : 0.0, -(p.scale * lo.z()));
   return p;
+}
+
+std::vector<int> baseContactFaces(const TriangleSurface& surface, const Eigen::Matrix3d& R,
+                                  double contactHeight) {
+  double zmin = std::numeric_limits<double>::infinity();
+  std::vector<double> z(surface.points.size());
+  for (size_t i = 0; i < z.size(); ++i) {
+    z[i] = R.row(2).dot(surface.points[i]);
+    zmin = std::min(zmin, z[i]);
+  }
+  const double cosMax = std::cos(30 * M_PI / 180.0);
+  std::vector<int> faces;
+  for (size_t f = 0; f < surface.triangles.size(); ++f) {
+    const auto& t = surface.triangles[f];
+    if (z[t[0]] - zmin > contactHeight || z[t[1]] - zmin > contactHeight ||
+        z[t[2]] - zmin > contactHeight) {
+      continue;
+    }
+    const Vec3 cross = (R * (surface.points[t[1]] - surface.points[t[0]]))
+                           .cross(R * (surface.points[t[2]] - surface.points[t[0]]));
+    const double twice = cross.norm();
+    if (twice > 0 && -cross.z() / twice >= cosMax) {
+      faces.push_back(static_cast<int>(f));
+    }
+  }
+  return faces;
 }
 
 }  // namespace geolattice

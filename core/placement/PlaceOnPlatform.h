@@ -11,6 +11,7 @@
 #include "mesh/TetMesh.h"
 
 #include <string>
+#include <vector>
 
 namespace geolattice {
 
@@ -37,5 +38,12 @@ struct Placement {
 /// or a placed part outside the printable size range (naming the likely unit mistake and the fix:
 /// "use Scale 1000 or FitSize MM").
 Placement placeOnPlatform(const Vec3& lo, const Vec3& hi, const PlacementOptions& options);
+
+/// The faces of `surface` (rotated by R) that touch the plate: all three corners within
+/// contactHeight of the lowest point and the outward normal within 30° of -z (a first layer is
+/// squeezed onto the plate over them). Used by the orientation search (base area) and the
+/// pedestal (its footprint). Indices ascending.
+std::vector<int> baseContactFaces(const TriangleSurface& surface, const Eigen::Matrix3d& R,
+                                  double contactHeight);
 
 }  // namespace geolattice

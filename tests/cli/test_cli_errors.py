@@ -239,6 +239,24 @@ class CliErrorTest(unittest.TestCase):
         result = self.run_cli(*bunny, "--printhead", good, "--until", "mesh", "-o", self.out, "-q")
         self.assertEqual(result.returncode, 0, result.stderr)
 
+    def test_pedestal(self):
+        # A bad height fails with the parameters; a tet mesh cannot be raised; the cube stands on a
+        # column of its whole bottom face, 5 mm taller, and report.json says so.
+        start = time.monotonic()
+        self.expect_error([os.path.join(TESTDATA, "bunny.obj"), "--pedestal", "-1"], "parameters", "[0, 500]")
+        self.assertLess(time.monotonic() - start, 1.0)
+        self.expect_error([os.path.join(TESTDATA, "ring.tet"), "--pedestal", "5"], "surface model")
+        result = self.run_cli(os.path.join(TESTDATA, "cube.obj"), "--fit-size", "30", "--pedestal", "5",
+                              "--until", "mesh", "-o", self.out, "-q")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(self.out, "report.json")) as f:
+            report = json.load(f)
+        self.assertEqual(report["pedestal"]["height_mm"], 5)
+        self.assertAlmostEqual(report["pedestal"]["footprint_area_mm2"], 900, places=6)
+        self.assertEqual(report["pedestal"]["footprint_loops"], 1)
+        # 12 triangles of the cube (its bottom moved down) + one ring of 4 x 2 wall triangles.
+        self.assertEqual(report["mesh"]["input_triangles"], 20)
+
     def test_unit_mistakes_fail_at_input(self):
         # A part exported in metres (0.05 across) and one with coordinates around 1e12.
         metres = "".join("v %g %g %g\n" % tuple(0.05 * float(x) for x in line.split()[1:])

@@ -11,6 +11,7 @@
 #include "vtkGLLatticeInfill.h"
 #include "vtkGLMeshReader.h"
 #include "vtkGLOverhangAnalysis.h"
+#include "vtkGLPedestal.h"
 #include "vtkGLPlaceOnPlatform.h"
 #include "vtkGLPrintSequencer.h"
 #include "vtkGLSkeletonTree.h"
@@ -64,6 +65,12 @@ TEST(ErrorContract, EveryFilterReturnsFalseOnFailure) {
       {"GL Place On Platform",
        [] {
          return withEmptyInputs<vtkGLPlaceOnPlatform>(false);
+       }},
+      {"GL Pedestal",
+       [] {
+         auto f = withEmptyInputs<vtkGLPedestal>(false);
+         vtkGLPedestal::SafeDownCast(f)->SetHeight(5);
+         return f;
        }},
       {"GL Tetrahedralize Surface",
        [] {

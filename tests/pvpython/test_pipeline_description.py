@@ -14,7 +14,7 @@ import geolattice_pipeline as pipeline  # noqa: E402
 from paraview import servermanager  # noqa: E402
 
 # Python key -> C++ stage name.
-KEYS = {"reader": "read", "place": "place", "orient": "orient", "tets": "mesh", "fields": "fields", "layers": "layers",
+KEYS = {"reader": "read", "place": "place", "orient": "orient", "pedestal": "pedestal", "tets": "mesh", "fields": "fields", "layers": "layers",
         "overhang": "overhang", "lattice": "lattice", "skeleton": "skeleton", "sequencer": "sequence",
         "verifier": "sequence-verify", "toolpath": "toolpath", "toolpath_verifier": "toolpath-verify"}
 

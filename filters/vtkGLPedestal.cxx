@@ -1,0 +1,73 @@
+#include "vtkGLPedestal.h"
+
+#include "vtkGLArrayNames.h"
+#include "vtkGLMeshConversion.h"
+#include "vtkGLParallel.h"
+#include "vtkGLRequest.h"
+
+#include "common/Error.h"
+#include "pedestal/Pedestal.h"
+
+#include <vtkFieldData.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+
+vtkStandardNewMacro(vtkGLPedestal);
+
+namespace gl = geolattice;
+
+namespace {
+/// The core options of the filter's parameters (checked by RequestInformation).
+gl::PedestalOptions pedestalOptions(vtkGLPedestal* f) {
+  gl::PedestalOptions o;
+  o.height = f->GetHeight();
+  o.contactHeight = f->GetContactHeight();
+  return o;
+}
+}  // namespace
+
+vtkGLPedestal::vtkGLPedestal() {
+  const gl::PedestalOptions defaults;
+  this->Height = defaults.height;
+  this->ContactHeight = defaults.contactHeight;
+}
+
+void vtkGLPedestal::PrintSelf(ostream& os, vtkIndent indent) {
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Height: " << this->Height << " mm\n";
+  os << indent << "ContactHeight: " << this->ContactHeight << " mm\n";
+}
+
+int vtkGLPedestal::RequestInformation(vtkInformation*, vtkInformationVector**,
+                                      vtkInformationVector*) {
+  return gl::checkParameters(this, [&] { pedestalOptions(this).validate(); });
+}
+
+int vtkGLPedestal::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                               vtkInformationVector* outputVector) {
+  // Collective in an MPI run: the whole surface on one process (vtkGLParallel.h).
+  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
+  gl::clearOutputs(outputVector);
+  if (!inputs.Computes()) {
+    return 1;
+  }
+  return gl::runRequest(this, outputVector, [&] {
+    vtkPolyData* input = inputs.Get<vtkPolyData>(0);
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    const gl::PedestalOptions options = pedestalOptions(this);
+    if (options.height == 0.0) {
+      output->ShallowCopy(input);  // no pedestal: the part as it is
+    } else {
+      const gl::PedestalResult r = gl::addPedestal(gl::toTriangleSurface(input), options);
+      gl::checkAbort(this, 0.8);
+      gl::fromTriangleSurface(r.surface, output);
+      output->GetFieldData()->PassData(input->GetFieldData());
+      gl::addFieldArray(output->GetFieldData(), gl::arrays::PedestalFootprintArea,
+                        {r.footprintArea});
+      gl::addFieldArray(output->GetFieldData(), gl::arrays::PedestalFootprintPieces,
+                        {static_cast<double>(r.footprintPieces)});
+    }
+    gl::addFieldArray(output->GetFieldData(), gl::arrays::PedestalHeight, {options.height});
+    this->UpdateProgress(1.0);
+  });
+}

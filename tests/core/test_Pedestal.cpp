@@ -1,0 +1,112 @@
+// The pedestal (core/pedestal/Pedestal.h): a box grows by exactly its footprint times the height;
+// a sphere flattened at the bottom stands on a column of its contact disk, the overhang above the
+// plate now that much higher; the result is always closed and outward; bad input is refused.
+#include "common/Error.h"
+#include "mesh/AnalyticShapes.h"
+#include "mesh/SurfaceCheck.h"
+#include "pedestal/Pedestal.h"
+#include "placement/PlaceOnPlatform.h"
+
+#include "../common/ErrorOf.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace geolattice;
+
+namespace {
+
+double lowest(const TriangleSurface& s) {
+  double z = 1e300;
+  for (const Vec3& p : s.points)
+    z = std::min(z, p.z());
+  return z;
+}
+
+double highest(const TriangleSurface& s) {
+  double z = -1e300;
+  for (const Vec3& p : s.points)
+    z = std::max(z, p.z());
+  return z;
+}
+
+/// A sphere of radius r with its bottom cut flat at height `cut` above its lowest point: the
+/// points below the cut are projected onto it (a flat contact disk of radius sqrt(2 r cut - cut²)).
+TriangleSurface flattenedSphere(double r, double cut) {
+  TriangleSurface s = sphereSurface(Vec3(0, 0, r), r, 4);
+  for (Vec3& p : s.points)
+    p.z() = std::max(p.z(), cut);
+  for (Vec3& p : s.points)
+    p.z() -= cut;
+  return s;
+}
+
+}  // namespace
+
+TEST(Pedestal, ABoxGrowsByItsFootprintTimesTheHeight) {
+  const TriangleSurface box = boxSurface(Vec3(20, 10, 8), 2.0);
+  const double before = checkSurface(box).signedVolume;
+  PedestalOptions o;
+  o.height = 6;
+  const PedestalResult r = addPedestal(box, o);
+  const SurfaceCheckReport check = checkSurface(r.surface);
+  EXPECT_TRUE(check.isClosedManifold());
+  EXPECT_NEAR(r.footprintArea, 200, 1e-9);
+  EXPECT_EQ(r.footprintPieces, 1);
+  EXPECT_NEAR(check.signedVolume, before + 200 * 6, 1e-6);
+  EXPECT_NEAR(lowest(r.surface), 0, 1e-12);
+  EXPECT_NEAR(highest(r.surface), 14, 1e-12);
+  EXPECT_EQ(check.unusedPoints, 0);
+  EXPECT_GE(r.wallRings, 3);  // rings about as tall as the 2 mm edges
+}
+
+TEST(Pedestal, ASphereStandsOnAColumnOfItsContactDisk) {
+  const TriangleSurface sphere = flattenedSphere(15, 1.0);
+  const double disk = M_PI * (2 * 15 * 1.0 - 1.0);
+  PedestalOptions o;
+  o.height = 10;
+  const PedestalResult r = addPedestal(sphere, o);
+  const SurfaceCheckReport check = checkSurface(r.surface);
+  ASSERT_TRUE(check.isClosedManifold());
+  EXPECT_GT(check.signedVolume, checkSurface(sphere).signedVolume);
+  EXPECT_NEAR(r.footprintArea, disk, 0.1 * disk);  // the polygonal disk
+  EXPECT_NEAR(lowest(r.surface), 0, 1e-12);
+  EXPECT_NEAR(highest(r.surface), highest(sphere) + 10, 1e-9);
+  // Nothing but the column is below the part's old lowest point, now at z = 10: every point
+  // below it lies inside the footprint's radius (the contact faces reach 0.3 mm up the sphere).
+  const double footprintRadius = std::sqrt(2 * 15 * 1.3 - 1.3 * 1.3) + 1e-9;
+  for (const Vec3& p : r.surface.points) {
+    if (p.z() < 10 - 1e-9) {
+      EXPECT_LE(std::hypot(p.x(), p.y()), footprintRadius) << p.transpose();
+    }
+  }
+  // The new contact with the plate is the column's bottom: the same footprint.
+  EXPECT_NEAR(baseContactFaces(r.surface, Eigen::Matrix3d::Identity(), 0.3).size(),
+              baseContactFaces(sphere, Eigen::Matrix3d::Identity(), 0.3).size(), 0);
+}
+
+TEST(Pedestal, HeightZeroKeepsThePartAndBadInputIsRefused) {
+  const TriangleSurface box = boxSurface(Vec3(5, 5, 5), 5.0);
+  const PedestalResult same = addPedestal(box, PedestalOptions{});
+  EXPECT_EQ(same.surface.points, box.points);
+  EXPECT_NEAR(same.footprintArea, 25, 1e-9);
+  PedestalOptions o;
+  o.height = -1;
+  EXPECT_NE(errorOf([&] { addPedestal(box, o); }).find("[0, 500]"), std::string::npos);
+  o.height = 5;
+  o.contactHeight = 0;
+  EXPECT_NE(errorOf([&] { addPedestal(box, o); }).find("contact height"), std::string::npos);
+  // A sphere touches the plate at a point: no face to stand a column on.
+  o.contactHeight = 0.3;
+  const TriangleSurface ball = sphereSurface(Vec3(0, 0, 5), 5, 1);
+  const TriangleSurface tilted = [&] {
+    TriangleSurface t = ball;
+    const double z0 = lowest(t);
+    for (Vec3& p : t.points)
+      p.z() -= z0;
+    return t;
+  }();
+  EXPECT_NE(errorOf([&] { addPedestal(tilted, o); }).find("--orient auto"), std::string::npos);
+}
