@@ -87,7 +87,7 @@ struct NozzleVolume {
         contactRadius2(m.printhead ? std::pow(m.printhead->faceRadius() + m.faceContact, 2) : 0.0),
         head(m.printhead.get()),
         headSlope(std::tan(m.printheadMarginRad)),
-        coneAngle(m.halfAngleDeg * M_PI / 180.0) {
+        coneAngle(m.printhead ? 0.0 : m.boundingHalfAngleRad()) {
     if (head) {
       length = -std::numeric_limits<double>::infinity();  // never the cone branch
       top = head->height();
@@ -143,7 +143,8 @@ struct NozzleVolume {
   }
 
   /// Turning the axis so that a point at distance rho from the tip is this far (rad) from it
-  /// puts the point outside (cone: NA; printhead: its tabulated clear angle, plus the margin).
+  /// puts the point outside (cone: NA, with a holder the bounding angle max(NA, atan(R / L));
+  /// printhead: its tabulated clear angle, plus the margin).
   double clearAngleAt(double rho) const {
     return head ? head->clearAngleAt(rho) + std::atan(headSlope) : coneAngle;
   }
@@ -155,7 +156,7 @@ struct NozzleVolume {
   double cos2, length, holder2, top, clearance, face2, contact, contactRadius2;
   const Printhead* head;  ///< owned by the NozzleModel this volume was made from
   double headSlope;
-  double coneAngle;
+  double coneAngle;  ///< the parametric model's bounding half-angle (rad)
 };
 
 }  // namespace geolattice

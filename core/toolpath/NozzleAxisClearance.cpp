@@ -81,6 +81,40 @@ struct TiltedNozzleBound {
   }
 };
 
+/// Per distance from the tip, the cosine of (largest clear angle + maxTilt): a point whose angle
+/// to the reference axis has a cosine at most this is outside the wide nozzle for every allowed
+/// axis. Tabulated once (the largest clear angle over each distance bin, so conservative): the
+/// obstacle search tests every gathered point with a lookup instead of an arc cosine.
+class OutsideCosine {
+public:
+  OutsideCosine(const NozzleVolume& wide, double reach, double maxTilt) {
+    auto cosine = [maxTilt](double angle) {
+      return std::cos(std::min(M_PI, angle + maxTilt));
+    };
+    if (!std::isfinite(reach)) {  // the cone: one angle at every distance
+      constant_ = cosine(wide.maxClearAngleBetween(0, 1));
+      return;
+    }
+    bin_ = reach / kBins;
+    table_.resize(kBins + 1);
+    for (int j = 0; j <= kBins; ++j) {
+      table_[j] = cosine(wide.maxClearAngleBetween(j * bin_, (j + 1) * bin_));
+    }
+  }
+  double at(double distance) const {
+    if (table_.empty()) {
+      return constant_;
+    }
+    const int j = static_cast<int>(distance / bin_);
+    return j < kBins ? table_[j] : 1.0;  // beyond the reach: outside
+  }
+
+private:
+  static constexpr int kBins = 4096;
+  double constant_ = 1.0, bin_ = 0;
+  std::vector<double> table_;
+};
+
 /// The least tilt from `reference` (<= maxTilt) whose wide nozzle holds no obstacle; starts from
 /// `current`. Returns false when none is found.
 bool findClearAxis(Obstacles& obstacles, const Vec3& reference, const Vec3& current, double maxTilt,
@@ -237,6 +271,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
       (*unresolvable)[k] = 1;
     }
   };
+  const OutsideCosine outside(wide, wideModel.reach(), maxTilt);
   for (int k : colliding) {
     if (unresolvable && (*unresolvable)[k]) {
       ++result.unresolvedStations;
@@ -261,7 +296,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
         return true;
       }
       // Outside the wide nozzle for every axis within maxTilt of the reference: no obstacle.
-      if (std::acos(std::clamp(c, -1.0, 1.0)) - maxTilt >= wide.clearAngleAt(std::sqrt(d2))) {
+      if (c <= outside.at(std::sqrt(d2))) {
         return false;
       }
       byAngle.emplace_back(-c, q);

@@ -3,6 +3,7 @@
 #include "collision/CollisionVerifier.h"
 #include "common/Error.h"
 #include "nozzle/BuildPlate.h"
+#include "nozzle/Printhead.h"
 #include "toolpath/NozzleAxisClearance.h"
 #include "toolpath/PathSubdivision.h"
 
@@ -204,4 +205,74 @@ TEST(NozzleAxisClearance, TiltsAwayFromTheBuildPlate) {
   EXPECT_EQ(clearNozzleAxes(points, axes, reference, material, nozzle, detect, &samples)
                 .collidingStations,
             0);
+}
+
+TEST(NozzleAxisClearance, EveryTiltedStationIsClearOfEveryNozzleShape) {
+  // A random path with random axes; for a cone, a cone with a holder wider than the cone (its
+  // angle atan(R / L) above NA) and a printhead mesh, every station the clearance tilted has no
+  // earlier material inside the nozzle at its new axis (brute force), and the clearance finds
+  // some stations to tilt and some it cannot clear.
+  std::srand(17);
+  auto rnd = [] {
+    return std::rand() / double(RAND_MAX);
+  };
+  std::vector<Vec3> points, reference;
+  for (int i = 0; i < 900; ++i) {
+    points.push_back(i % 3 ? Vec3(points.back() + Vec3(rnd() - 0.5, rnd() - 0.5, 0.6 * rnd()))
+                           : Vec3(30 * rnd(), 30 * rnd(), 20 * rnd()));
+    reference.push_back(Vec3(0.4 * (rnd() - 0.5), 0.4 * (rnd() - 0.5), 1).normalized());
+  }
+  const std::vector<char> material(points.size(), 1);
+  NozzleModel holder;
+  holder.halfAngleDeg = 15;
+  holder.length = 3;
+  holder.holderRadius = 4;  // atan(4 / 3) = 53° > 15°
+  holder.holderLength = 10;
+  NozzleModel head;
+  TriangleSurface mesh;  // a stepped body of revolution: r 0.5 -> 1.5 at z 1, r 5 from z 6 to 12
+  {
+    const std::vector<std::pair<double, double>> profile = {{0, 0}, {0.5, 0}, {1.5, 1}, {1.5, 6},
+                                                            {5, 6}, {5, 12},  {0, 12}};
+    const int n = 32;
+    mesh.points.push_back(Vec3(0, 0, 0));
+    for (size_t i = 1; i + 1 < profile.size(); ++i) {
+      for (int j = 0; j < n; ++j) {
+        mesh.points.push_back(Vec3(profile[i].first * std::cos(2 * M_PI * j / n),
+                                   profile[i].first * std::sin(2 * M_PI * j / n),
+                                   profile[i].second));
+      }
+    }
+    mesh.points.push_back(Vec3(0, 0, 12));
+    const int rings = static_cast<int>(profile.size()) - 2, top = 1 + rings * n;
+    for (int j = 0; j < n; ++j) {
+      const int jn = (j + 1) % n;
+      mesh.triangles.push_back({0, 1 + jn, 1 + j});
+      for (int i = 0; i + 1 < rings; ++i) {
+        mesh.triangles.push_back({1 + i * n + j, 1 + i * n + jn, 1 + (i + 1) * n + jn});
+        mesh.triangles.push_back({1 + i * n + j, 1 + (i + 1) * n + jn, 1 + (i + 1) * n + j});
+      }
+      mesh.triangles.push_back({1 + (rings - 1) * n + j, 1 + (rings - 1) * n + jn, top});
+    }
+  }
+  head.printhead = std::make_shared<const Printhead>(mesh, "stepped");
+  for (const NozzleModel& nozzle : {cone45(), holder, head}) {
+    std::vector<Vec3> axes = reference;
+    AxisClearanceOptions o;
+    o.blendLength = 0;  // only the stations move
+    const AxisClearanceResult r = clearNozzleAxes(points, axes, reference, material, nozzle, o);
+    EXPECT_GT(r.tiltedStations, 0);
+    EXPECT_GT(r.unresolvedStations, 0);
+    const NozzleVolume volume(nozzle);
+    int checked = 0;
+    for (int k : r.colliding) {
+      if ((axes[k] - reference[k]).norm() < 1e-12) {
+        continue;  // not tilted (unresolved)
+      }
+      ++checked;
+      for (int q = 0; q < k; ++q) {
+        EXPECT_FALSE(volume.contains(points[k], axes[k], points[q])) << k << " " << q;
+      }
+    }
+    EXPECT_EQ(checked, r.tiltedStations);
+  }
 }
