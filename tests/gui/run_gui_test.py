@@ -67,6 +67,7 @@ CHAIN = [
     ("GLToolpathPlanner", "GLPrintSequencer1", {"Skeleton": "GLSkeletonTree1"}),
     ("GLOverhangAnalysis", "GLGeodesicDistanceFields1", {}),
     ("GLAutoOrient", "GLPlaceOnPlatform1", {}),
+    ("GLPedestal", "GLPlaceOnPlatform1", {}),
 ]
 # Where the second inputs are in the "Select Input" dialog's pipeline tree (pqFlatTreeView rows from the
 # server item down; an item with several output ports has one child per port): builtin server / y_shape /
