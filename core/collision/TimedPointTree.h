@@ -2,40 +2,15 @@
 /// @file TimedPointTree.h
 /// @brief A static kd-tree over printed points whose nodes know their bounding sphere and the
 /// earliest print time below them, so a nozzle query at time t skips material printed later and
-/// space outside a cone that bounds the nozzle (NozzleBound). Used by the collision verifier and
-/// by the toolpath's nozzle axis clearance.
-#include "nozzle/NozzleModel.h"
+/// space outside a cone that bounds the nozzle (nozzle/NozzleBound.h). Used by the collision
+/// verifier and by the toolpath's nozzle axis clearance.
+#include "nozzle/NozzleBound.h"
 
 #include <Eigen/Core>
 #include <limits>
 #include <vector>
 
 namespace geolattice {
-
-/// Conservative reject test for a nozzle at (tip, axis): can any point of a ball be inside a cone
-/// of half-angle `angle` about the axis with its apex `apexOffset` below the tip (cut at `reach`
-/// from the tip, above the tip plane by more than `clearance`)? angle >= 90° keeps only the reach
-/// test. With `volume` (a printhead's swept profile) the ball must also reach into that profile.
-struct NozzleBound {
-  NozzleBound(double angleRad, double reachMm, double clearanceMm, double apexOffsetMm = 0.0,
-              const NozzleVolume* profile = nullptr);
-  /// The bound of a nozzle model: its bounding cone, reach and tip clearance, and the printhead
-  /// profile test through `volume` (made from the same model) when it has a printhead.
-  NozzleBound(const NozzleModel& model, const NozzleVolume& volume);
-  void setStation(const Eigen::Vector3d& tipPoint, const Eigen::Vector3d& unitAxis) {
-    tip = tipPoint;
-    axis = unitAxis;
-  }
-  bool mayTouch(const Eigen::Vector3d& centre, double radius) const;
-
-  Eigen::Vector3d tip = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::UnitZ();
-  double sinAngle = 0, cosAngle = 1;
-  bool halfSpaceOrMore = false;
-  double reach = std::numeric_limits<double>::infinity();
-  double clearance = 0;  ///< -infinity disables the tip-plane test
-  double apexOffset = 0;
-  const NozzleVolume* volume = nullptr;
-};
 
 class TimedPointTree {
 public:

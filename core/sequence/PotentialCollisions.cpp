@@ -3,6 +3,7 @@
 #include "common/Error.h"
 #include "common/ParallelFor.h"
 #include "common/Progress.h"
+#include "nozzle/NozzleBound.h"
 
 #include <algorithm>
 #include <chrono>
@@ -22,6 +23,8 @@ struct SampleTree {
     double radius = 0;
     Vec3 axis = Vec3::UnitZ();
     double spread = 0;
+    double axisSlack = 0;             ///< 2 sin(spread / 2): |n - axis| for every axis n below
+    double coneSin = 0, coneCos = 1;  ///< of the bounding angle + spread (set per search)
     int begin = 0, end = 0;
     int left = -1, right = -1;
   };
@@ -66,6 +69,7 @@ int buildNode(SampleTree& tree, const MaterialSamples& m, int begin, int end) {
   n.radius = std::sqrt(r2);
   n.axis = axis;
   n.spread = axisNorm > 0 ? std::acos(std::clamp(minCos, -1.0, 1.0)) + 1e-12 : M_PI;
+  n.axisSlack = 2 * std::sin(0.5 * std::min(n.spread, M_PI));
   n.begin = begin;
   n.end = end;
   n.left = left;
@@ -89,13 +93,31 @@ double distanceToCone(const Vec3& v, const Vec3& a, double phi) {
   return psi - phi >= M_PI / 2 ? len : len * std::sin(psi - phi);
 }
 
+/// Is point v (relative to the apex) farther than `margin` from the solid cone about the node's
+/// axis with its half-angle (bounding angle + spread; sine and cosine cached on the node)? Below
+/// 90° in dot products (the distance to the cone's surface line), else as distanceToCone.
+bool outsideCone(const Vec3& v, const SampleTree::Node& node, double margin) {
+  if (node.coneCos <= 0) {
+    return distanceToCone(v, node.axis, std::atan2(node.coneSin, node.coneCos)) > margin;
+  }
+  const double h = v.dot(node.axis);
+  const double r = std::sqrt(std::max(0.0, v.squaredNorm() - h * h));
+  if (r * node.coneCos <= h * node.coneSin) {
+    return false;  // inside the cone
+  }
+  const double along = r * node.coneSin + h * node.coneCos;
+  const double distance = along <= 0 ? v.norm() : r * node.coneCos - h * node.coneSin;
+  return distance > margin;
+}
+
 struct PairSearch {
   const MaterialSamples& m;
   const NozzleVolume& nozzle;
   double boundAngle;
-  double apexOffset;  ///< the bounding cone's apex lies this far below each tip
-  double reach;       ///< nothing farther than this from a tip is inside the nozzle
-  double clearance;   ///< material with h <= clearance is ignored
+  double apexOffset;    ///< the bounding cone's apex lies this far below each tip
+  double reach;         ///< nothing farther than this from a tip is inside the nozzle
+  double clearance;     ///< material with h <= clearance is ignored
+  NozzleBound station;  ///< the bound at one station (the leaf-leaf pre-test)
   long long leafTests = 0;
 
   /// Does any station of tree A (sub-graph i) have material of tree B (sub-graph j) inside its
@@ -111,7 +133,7 @@ struct PairSearch {
       const double dn = d.norm();
       // h = (x - p)·n and the distance from the axis for a station p of A with axis n and a
       // point x of B differ from those of the centres along the mean axis by at most `slack`.
-      const double axisSlack = 2 * std::sin(0.5 * std::min(a.spread, M_PI));
+      const double axisSlack = a.axisSlack;
       const double slack = a.radius + b.radius + (dn + b.radius) * axisSlack;
       const double h = d.dot(a.axis);
       // Highest h over the clusters: the material lies below every tip plane.
@@ -123,14 +145,17 @@ struct PairSearch {
       }
       // The bounding cone's apexes (apexOffset below each tip) lie within a.radius +
       // apexOffset * axisSlack of the mean apex.
-      if (distanceToCone(d + apexOffset * a.axis, a.axis, boundAngle + a.spread) >
-          a.radius + apexOffset * axisSlack + b.radius) {
+      if (outsideCone(d + apexOffset * a.axis, a, a.radius + apexOffset * axisSlack + b.radius)) {
         continue;
       }
       const bool leafA = a.left < 0, leafB = b.left < 0;
       if (leafA && leafB) {
         for (int i = a.begin; i < a.end; ++i) {
           const int s = A.order[i];
+          station.setStation(m.points[s], m.normals[s]);  // this station against B's ball
+          if (!station.mayTouch(b.centre, b.radius)) {
+            continue;
+          }
           for (int j = b.begin; j < b.end; ++j) {
             ++leafTests;
             if (nozzle.contains(m.points[s], m.normals[s], m.points[B.order[j]])) {
@@ -188,6 +213,13 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
   }
   const NozzleVolume nozzle(model);
   const double boundAngle = model.boundingHalfAngleRad();
+  for (SampleTree& t : trees) {  // the station clusters' bounding cones
+    for (SampleTree::Node& n : t.nodes) {
+      const double angle = std::min(M_PI, boundAngle + n.spread);
+      n.coneSin = std::sin(angle);
+      n.coneCos = std::cos(angle);
+    }
+  }
 
   PotentialCollisions out;
   out.pcg.resize(K);
@@ -195,7 +227,7 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
   const int workers = workerCount(threads, static_cast<size_t>(K));
   std::vector<PairSearch> searches(
       workers, PairSearch{m, nozzle, boundAngle, model.boundingApexOffset(), model.reach(),
-                          model.tipClearance});
+                          model.tipClearance, NozzleBound(model, nozzle)});
   std::vector<std::vector<std::pair<int, int>>> stacks(workers);
   progress.report(0.0);
   size_t reported = 0;  // in 64ths
