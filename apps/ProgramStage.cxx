@@ -9,6 +9,7 @@
 #include <vtkFieldData.h>
 
 #include <algorithm>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 
@@ -27,16 +28,19 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
       static_cast<long long>(fieldValue(pathCollisions, arrays::CollisionViolatingStations));
   if (colliding > 0) {
     std::ostringstream line;
+    const long long plate =
+        static_cast<long long>(fieldValue(pathCollisions, arrays::CollisionPlateStations));
     line << "toolpath collides at " << colliding << " of " << stations << " stations ("
-         << (100.0 * static_cast<double>(colliding) / std::max<long long>(stations, 1)) << " %)";
+         << std::setprecision(2)
+         << (100.0 * static_cast<double>(colliding) / std::max<long long>(stations, 1))
+         << std::setprecision(6) << " %";
+    if (plate > 0) {
+      line << ", " << plate << " of them at the build plate";
+    }
+    line << ")";
     if (pathCollisions->GetFieldData()->GetArray(arrays::CollisionLayerRange)) {
       line << ", layers " << fieldValue(pathCollisions, arrays::CollisionLayerRange, 0) << "-"
            << fieldValue(pathCollisions, arrays::CollisionLayerRange, 1);
-    }
-    const long long plate =
-        static_cast<long long>(fieldValue(pathCollisions, arrays::CollisionPlateStations));
-    if (plate > 0) {
-      line << " (" << plate << " of them at the build plate)";
     }
     line << ": see toolpath_collisions.vtp";
     // What to try, cheapest first: the orientation search, then the real printhead's shape.

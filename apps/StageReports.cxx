@@ -217,6 +217,10 @@ void reportSequence(GLPrintPipeline& p, vtkDataObject* sequenced, Json& s) {
   s["pcg_seconds"] = fieldValue(sequenced, arrays::SequencePcgSeconds);
   s["unavoidable_pcg_pairs"] = count(sequenced, arrays::SequenceUnavoidablePairs);
   s["forced_steps"] = count(sequenced, arrays::SequenceForcedSteps);
+  s["forced_steps_before_split"] = count(sequenced, arrays::SequenceForcedStepsBefore);
+  s["pieces"] = count(sequenced, arrays::SequencePieces);
+  s["split_for_order"] = count(sequenced, arrays::SequenceSplitSubgraphs);
+  s["split_rounds"] = p.Sequencer->GetSplitRounds();
 }
 
 void reportToolpath(GLPrintPipeline& p, vtkDataObject* t, Json& s) {

@@ -148,6 +148,15 @@ constexpr const char* SequenceUnavoidablePairs = "SequenceUnavoidablePairs";
 constexpr const char* SkeletonEdges = "SkeletonEdges";
 constexpr const char* NozzleAngleDeg = "NozzleAngleDeg";  ///< nozzle half-angle NA used (degrees)
 constexpr const char* SequenceOrder = "SequenceOrder";    ///< per position: sub-graph id
+/// With split sub-graphs (sequence/SubgraphSplitting.h): per position the piece printed there;
+/// the lattice's cell array PieceId gives each edge's piece.
+constexpr const char* SequencePieceOrder = "SequencePieceOrder";
+constexpr const char* PieceId = "PieceId";  ///< cell data: the piece of a split sub-graph
+constexpr const char* SequencePieces = "SequencePieces";  ///< pieces printed (>= sub-graphs)
+constexpr const char* SequenceSplitSubgraphs =
+    "SequenceSplitSubgraphs";  ///< sub-graphs printed as more than one piece
+constexpr const char* SequenceForcedStepsBefore =
+    "SequenceForcedStepsBefore";  ///< forced steps of the order of whole sub-graphs
 constexpr const char* SequenceStart =
     "SequenceStart";  ///< per position: 3 values, first printed point (mm)
 constexpr const char* SequenceEnd =

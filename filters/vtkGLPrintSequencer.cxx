@@ -12,9 +12,11 @@
 #include "sequence/PotentialCollisions.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
+#include "sequence/SubgraphSplitting.h"
 #include "skeleton/SkeletonTree.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -62,9 +64,10 @@ int positionOf(double value, const std::vector<int>& printIndex) {
 }
 
 /// The field data shared by the three outputs.
-void addSequenceFieldData(const gl::SkeletonTree& tree, const gl::PrintSequence& seq,
-                          const gl::PotentialCollisions& pcg, double nozzleAngle,
-                          vtkFieldData* fd) {
+void addSequenceFieldData(const gl::SkeletonTree& tree, const gl::PieceSequence& pieces,
+                          double nozzleAngle, vtkFieldData* fd) {
+  const gl::PrintSequence& seq = pieces.sequence;
+  const gl::PotentialCollisions& pcg = pieces.pcg;
   vtkNew<vtkStringArray> strategy;
   strategy->SetName(gl::arrays::SequenceStrategy);
   strategy->InsertNextValue(gl::sequenceStrategyName(seq.strategy));
@@ -78,12 +81,23 @@ void addSequenceFieldData(const gl::SkeletonTree& tree, const gl::PrintSequence&
   gl::addFieldArray(fd, gl::arrays::SequenceUnavoidablePairs,
                     {static_cast<double>(seq.unavoidablePairs)});
   gl::addFieldArray(fd, gl::arrays::NozzleAngleDeg, {nozzleAngle});
-  std::vector<double> order(seq.order.begin(), seq.order.end()), start, end;
+  std::vector<double> order, pieceOrder(seq.order.begin(), seq.order.end()), start, end;
+  for (int p : seq.order) {
+    order.push_back(pieces.pieceSubgraph[p]);
+  }
   for (size_t k = 0; k < seq.order.size(); ++k) {
     start.insert(start.end(), seq.start[k].data(), seq.start[k].data() + 3);
     end.insert(end.end(), seq.end[k].data(), seq.end[k].data() + 3);
   }
   gl::addFieldArray(fd, gl::arrays::SequenceOrder, order);
+  gl::addFieldArray(fd, gl::arrays::SequencePieces, {static_cast<double>(seq.order.size())});
+  gl::addFieldArray(fd, gl::arrays::SequenceSplitSubgraphs,
+                    {static_cast<double>(pieces.splitSubgraphs)});
+  gl::addFieldArray(fd, gl::arrays::SequenceForcedStepsBefore,
+                    {static_cast<double>(pieces.forcedStepsBefore)});
+  if (pieces.splitSubgraphs > 0) {
+    gl::addFieldArray(fd, gl::arrays::SequencePieceOrder, pieceOrder);
+  }
   gl::addFieldArray(fd, gl::arrays::SequenceStart, start, 3);
   gl::addFieldArray(fd, gl::arrays::SequenceEnd, end, 3);
   std::vector<double> edges;
@@ -94,15 +108,21 @@ void addSequenceFieldData(const gl::SkeletonTree& tree, const gl::PrintSequence&
   gl::addFieldArray(fd, gl::arrays::SkeletonEdges, edges, 2);
 }
 
-/// Output 0: the lattice with PrintOrder per cell (from its SubgraphId) and per point.
+/// Output 0: the lattice with PrintOrder per cell (its piece's position: the piece of its first
+/// edge) and per point (the earliest of its edges' pieces), and PieceId per cell when sub-graphs
+/// were split. Without split sub-graphs, pieces are sub-graphs.
 void sequencedLattice(vtkPolyData* input, const gl::LatticeGraph& graph,
-                      const gl::PrintSequence& seq, vtkPolyData* out) {
+                      const gl::PieceSequence& pieces, vtkPolyData* out) {
+  const gl::PrintSequence& seq = pieces.sequence;
   out->ShallowCopy(input);
-  vtkDataArray* cellSubgraph = input->GetCellData()->GetArray(gl::arrays::SubgraphId);
   const vtkIdType C = input->GetNumberOfCells();
   auto cellOrder = intArray(gl::arrays::PrintOrder, C);
-  for (vtkIdType c = 0; c < C; ++c) {
-    cellOrder->SetValue(c, positionOf(cellSubgraph->GetComponent(c, 0), seq.printIndex));
+  auto cellPiece = intArray(gl::arrays::PieceId, C);
+  vtkDataArray* cellSubgraph = input->GetCellData()->GetArray(gl::arrays::SubgraphId);
+  for (vtkIdType c = 0; c < C; ++c) {  // every cell by its sub-graph; lines below by their piece
+    const int position = positionOf(cellSubgraph->GetComponent(c, 0), seq.printIndex);
+    cellOrder->SetValue(c, position);
+    cellPiece->SetValue(c, position >= 0 ? seq.order[position] : -1);
   }
   const vtkIdType V = input->GetNumberOfPoints();
   auto pointOrder = intArray(gl::arrays::PrintOrder, V);
@@ -110,36 +130,73 @@ void sequencedLattice(vtkPolyData* input, const gl::LatticeGraph& graph,
     const int s = graph.vertexSubgraph[v];
     pointOrder->SetValue(v, s >= 0 ? seq.printIndex[s] : -1);
   }
+  // Line cells in the order toLatticeGraph read them: n - 1 edges per cell.
+  const vtkIdType firstLine = input->GetNumberOfVerts();
+  auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
+  size_t edge = 0;
+  std::vector<int> earliest(static_cast<size_t>(V), std::numeric_limits<int>::max());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
+    const vtkIdType cell = firstLine + it->GetCurrentCellId();
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    const int piece = pieces.edgePiece[edge];
+    cellPiece->SetValue(cell, piece);
+    cellOrder->SetValue(cell, seq.printIndex[piece]);
+    for (vtkIdType k = 0; k + 1 < n; ++k, ++edge) {
+      for (const int v : graph.edges[edge]) {
+        earliest[v] = std::min(earliest[v], seq.printIndex[pieces.edgePiece[edge]]);
+      }
+    }
+  }
+  for (vtkIdType v = 0; v < V; ++v) {
+    if (earliest[v] != std::numeric_limits<int>::max()) {
+      pointOrder->SetValue(v, earliest[v]);
+    }
+  }
   out->GetCellData()->AddArray(cellOrder);
   out->GetPointData()->AddArray(pointOrder);
+  if (pieces.splitSubgraphs > 0) {
+    out->GetCellData()->AddArray(cellPiece);
+  }
 }
 
-/// Output 1: the skeleton with PrintOrder per node.
-void sequencedSkeleton(vtkPolyData* input, const gl::PrintSequence& seq, vtkPolyData* out) {
+/// Output 1: the skeleton (of the sub-graphs) with PrintOrder per node: the position of its
+/// first piece.
+void sequencedSkeleton(vtkPolyData* input, const gl::PieceSequence& pieces, int subgraphs,
+                       vtkPolyData* out) {
   out->ShallowCopy(input);
+  std::vector<int> first(static_cast<size_t>(subgraphs), std::numeric_limits<int>::max());
+  for (size_t p = 0; p < pieces.pieceSubgraph.size(); ++p) {
+    int& f = first[pieces.pieceSubgraph[p]];
+    f = std::min(f, pieces.sequence.printIndex[p]);
+  }
   vtkDataArray* nodeId = input->GetPointData()->GetArray(gl::arrays::NodeId);
   const vtkIdType N = input->GetNumberOfPoints();
   auto order = intArray(gl::arrays::PrintOrder, N);
   for (vtkIdType p = 0; p < N; ++p) {
-    order->SetValue(p, positionOf(nodeId ? nodeId->GetComponent(p, 0) : static_cast<double>(p),
-                                  seq.printIndex));
+    order->SetValue(
+        p, positionOf(nodeId ? nodeId->GetComponent(p, 0) : static_cast<double>(p), first));
   }
   out->GetPointData()->AddArray(order);
 }
 
 /// Output 2: the order as a polyline through the start points, one line cell per transition.
-void printOrderPolyline(const gl::SkeletonTree& tree, const gl::PrintSequence& seq,
-                        vtkPolyData* out) {
+void printOrderPolyline(const gl::PieceSequence& pieces, vtkPolyData* out) {
+  const gl::SkeletonTree& tree = pieces.tree;
+  const gl::PrintSequence& seq = pieces.sequence;
   const vtkIdType K = static_cast<vtkIdType>(seq.order.size());
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(K);
   auto position = intArray(gl::arrays::PrintOrder, K);
   auto subgraph = intArray(gl::arrays::SubgraphId, K);
+  auto piece = intArray(gl::arrays::PieceId, K);
   for (vtkIdType k = 0; k < K; ++k) {
     points->SetPoint(k, seq.start[k].data());
     position->SetValue(k, static_cast<int>(k));
-    subgraph->SetValue(k, seq.order[k]);
+    subgraph->SetValue(k, pieces.pieceSubgraph[seq.order[k]]);
+    piece->SetValue(k, seq.order[k]);
   }
   out->SetPoints(points);
   const vtkIdType T = std::max<vtkIdType>(K - 1, 0);
@@ -158,6 +215,7 @@ void printOrderPolyline(const gl::SkeletonTree& tree, const gl::PrintSequence& s
   out->SetLines(lines);
   out->GetPointData()->AddArray(position);
   out->GetPointData()->AddArray(subgraph);
+  out->GetPointData()->AddArray(piece);
   out->GetPointData()->SetActiveScalars(gl::arrays::PrintOrder);
   out->GetCellData()->AddArray(from);
   out->GetCellData()->AddArray(retraction);
@@ -184,6 +242,7 @@ vtkGLPrintSequencer::vtkGLPrintSequencer() {
   this->SampleSpacing = gl::MaterialSampling{}.spacing;
   this->NumberOfThreads = gl::PotentialCollisionOptions{}.threads;
   this->MaximumElements = gl::PotentialCollisionOptions{}.maxPairs;
+  this->SplitRounds = gl::SplitOptions{}.maxRounds;
 }
 
 int vtkGLPrintSequencer::FillInputPortInformation(int, vtkInformation* info) {
@@ -196,6 +255,9 @@ int vtkGLPrintSequencer::RequestInformation(vtkInformation* request, vtkInformat
   return this->Superclass::RequestInformation(request, inputs, outputs) &&
          gl::checkParameters(this, [&] {
            sequenceOptions(this).validate();
+           gl::SplitOptions split;
+           split.maxRounds = this->SplitRounds;
+           split.validate();
            if (!(this->SampleSpacing > 0) || !std::isfinite(this->SampleSpacing)) {
              throw gl::GeoLatticeError("print sequencer: the sample spacing must be > 0 mm (got " +
                                        std::to_string(this->SampleSpacing) + ")");
@@ -231,29 +293,38 @@ int vtkGLPrintSequencer::RequestData(vtkInformation*, vtkInformationVector** inp
                          options.strategy == gl::SequenceStrategy::Rollout;
     options.progress = gl::progressRange(this, needPcg ? 0.6 : 0.1, 0.95);
     options.shouldAbort = gl::abortFlag(this);
-    gl::PotentialCollisions pcg;
+    // The pieces: the sub-graphs themselves unless A4/Best split some (SubgraphSplitting.h).
+    gl::PieceSequence pieces;
     if (needPcg) {
       gl::PotentialCollisionOptions pcgOptions;
       pcgOptions.threads = this->NumberOfThreads;
       pcgOptions.maxPairs = this->MaximumElements;
       pcgOptions.progress = gl::progressRange(this, 0.1, 0.6);
       pcgOptions.shouldAbort = gl::abortFlag(this);
-      pcg = gl::computePotentialCollisions(material, nozzle, pcgOptions);
-      gl::checkAbort(this, 0.6);
+      gl::SplitOptions split;
+      split.maxRounds = this->SplitRounds;
+      pieces =
+          gl::sequencePieces(graph, tree, this->SampleSpacing, nozzle, pcgOptions, options, split);
+    } else {
+      pieces.edgePiece = graph.edgeSubgraph;
+      for (size_t k = 0; k < tree.nodes.size(); ++k) {
+        pieces.pieceSubgraph.push_back(static_cast<int>(k));
+      }
+      pieces.tree = tree;
+      pieces.sequence = gl::sequencePrint(tree, material, nullptr, options);
+      pieces.forcedStepsBefore = pieces.sequence.forcedSteps;
     }
-    const gl::PrintSequence seq =
-        gl::sequencePrint(tree, material, needPcg ? &pcg : nullptr, options);
     gl::checkAbort(this, 0.95);
 
     vtkPolyData* outputs[3];
     for (int port = 0; port < 3; ++port) {
       outputs[port] = vtkPolyData::GetData(outputVector, port);
     }
-    sequencedLattice(lattice, graph, seq, outputs[0]);
-    sequencedSkeleton(skeleton, seq, outputs[1]);
-    printOrderPolyline(tree, seq, outputs[2]);
+    sequencedLattice(lattice, graph, pieces, outputs[0]);
+    sequencedSkeleton(skeleton, pieces, static_cast<int>(tree.nodes.size()), outputs[1]);
+    printOrderPolyline(pieces, outputs[2]);
     for (vtkPolyData* out : outputs) {
-      addSequenceFieldData(tree, seq, pcg, nozzle.halfAngleDeg, out->GetFieldData());
+      addSequenceFieldData(tree, pieces, nozzle.halfAngleDeg, out->GetFieldData());
     }
     this->UpdateProgress(1.0);
   });
@@ -267,4 +338,5 @@ void vtkGLPrintSequencer::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "RolloutCandidates: " << this->RolloutCandidates << "\n";
   os << indent << "RetractionCost: " << this->RetractionCost << " mm\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "SplitRounds: " << this->SplitRounds << "\n";
 }

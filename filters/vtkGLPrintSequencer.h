@@ -20,7 +20,13 @@
  * A PCG entry j of i where j is a skeleton ancestor of i (a wide nozzle over a curved layer
  * reaching the layer below) is a collision no order avoids, since Criterion 1 prints j first: it
  * is left out of Criterion 2 and counted in SequenceUnavoidablePairs. When no candidate satisfies
- * Criterion 2 (mutual PCGs) one is forced and counted in SequenceForcedSteps.
+ * Criterion 2 (mutual PCGs) one is forced and counted in SequenceForcedSteps. With SplitRounds
+ * > 0 (A4 and Best) sub-graphs that block each other are split along the lattice into
+ * pieces that can be ordered (core/sequence/SubgraphSplitting.h): the order becomes an order of
+ * pieces; the lattice gets the cell array `PieceId`, the field data `SequencePieceOrder` (per
+ * position the piece; SequenceOrder gives its sub-graph), `SequencePieces`,
+ * `SequenceSplitSubgraphs` and `SequenceForcedStepsBefore`, and GL Toolpath Planner prints each
+ * piece as the runs of its sub-graph's tour in it.
  *
  * Input port 0: vtkPolyData, the output of vtkGLLatticeInfill (line cells with cell arrays
  *         `SubgraphId`, `LayerId`, point arrays `Normals`, `Gamma`).
@@ -45,7 +51,7 @@
  *   HolderRadius, TipClearance, TipFaceRadius), SampleSpacing (mm, default 1, > 0),
  *   MaximumElements (default 40e6: more sub-graph pairs for the PCG is refused),
  *   RolloutCandidates (default 6, >= 1), RetractionCost (mm, default 20, >= 0), NumberOfThreads
- *   (PCG, default 0 = all cores).
+ *   (PCG, default 0 = all cores), SplitRounds (default 0 = never split).
  * Errors (an empty lattice, missing arrays, a skeleton that does not match the lattice (node
  * count or layers), a skeleton edge between non-consecutive layers, NozzleAngle outside (0, 90)
  * or another bad nozzle or option) are reported with vtkErrorMacro and give empty outputs.
@@ -102,6 +108,13 @@ public:
   ///@}
 
   ///@{
+  /// A4 and Best: rounds of sub-graph splitting while forced steps remain (default 0 = sub-graphs
+  /// are never split, in [0, 100]). core/sequence/SubgraphSplitting.h.
+  vtkSetMacro(SplitRounds, int);
+  vtkGetMacro(SplitRounds, int);
+  ///@}
+
+  ///@{
   /// Worker threads of the PCG computation (default 0 = hardware concurrency).
   vtkSetClampMacro(NumberOfThreads, int, 0, 256);
   vtkGetMacro(NumberOfThreads, int);
@@ -121,6 +134,7 @@ protected:
   int RolloutCandidates;
   double RetractionCost;
   int NumberOfThreads;
+  int SplitRounds;
 
 private:
   vtkGLPrintSequencer(const vtkGLPrintSequencer&) = delete;

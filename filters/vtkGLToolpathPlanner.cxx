@@ -13,6 +13,8 @@
 
 #include <vtkAbstractArray.h>
 #include <vtkCellArray.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDoubleArray.h>
@@ -79,6 +81,35 @@ std::vector<int> printOrderOf(vtkPolyData* lattice) {
     out.push_back(static_cast<int>(v));
   }
   return out;
+}
+
+/// The pieces of split sub-graphs, when the sequencer made any: the cell array PieceId (per
+/// lattice edge, in the order toLatticeGraph reads the line cells) and the field array
+/// SequencePieceOrder. False without them.
+bool piecesOf(vtkPolyData* lattice, size_t edges, gl::ToolpathPieces& pieces) {
+  vtkDataArray* piece = lattice->GetCellData()->GetArray(gl::arrays::PieceId);
+  vtkDataArray* order = lattice->GetFieldData()->GetArray(gl::arrays::SequencePieceOrder);
+  if (!piece || !order) {
+    return false;
+  }
+  const vtkIdType firstLine = lattice->GetNumberOfVerts();
+  auto it = vtk::TakeSmartPointer(lattice->GetLines()->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    const double p = piece->GetComponent(firstLine + it->GetCurrentCellId(), 0);
+    for (vtkIdType k = 0; k + 1 < n; ++k) {
+      pieces.edgePiece.push_back(std::isfinite(p) ? static_cast<int>(p) : -1);
+    }
+  }
+  for (vtkIdType k = 0; k < order->GetNumberOfTuples(); ++k) {
+    pieces.pieceOrder.push_back(static_cast<int>(order->GetComponent(k, 0)));
+  }
+  if (pieces.edgePiece.size() != edges) {
+    throw gl::GeoLatticeError("the lattice's PieceId does not match its edges");
+  }
+  return true;
 }
 
 /// The whole toolpath as polydata (see the class documentation).
@@ -362,7 +393,10 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
       gl::ToolpathOptions options = toolpathOptions(this);
       options.progress = gl::progressRange(this, 0.1, 0.8);
       options.shouldAbort = gl::abortFlag(this);
-      const gl::Toolpath path = gl::planToolpath(graph, tree, order, options);
+      gl::ToolpathPieces pieces;
+      const bool split = piecesOf(lattice, graph.edges.size(), pieces);
+      const gl::Toolpath path =
+          gl::planToolpath(graph, tree, order, options, split ? &pieces : nullptr);
       gl::checkAbort(this, 0.8);
 
       auto planned = vtkSmartPointer<vtkPolyData>::New();

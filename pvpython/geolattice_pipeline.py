@@ -76,6 +76,7 @@ PARAMETERS = {
     "alpha_width": (("lattice",), "AlphaWidth"),
     "beta_width": (("lattice",), "BetaWidth"),
     "strategy": (("sequencer",), "Strategy"),
+    "split_rounds": (("sequencer",), "SplitRounds"),
     "nozzle_angle": (("orient", "sequencer", "verifier", "toolpath", "toolpath_verifier"), "NozzleAngle"),
     "sample_spacing": (("sequencer", "verifier"), "SampleSpacing"),
     "path_width": (("toolpath",), "PathWidth"),

@@ -28,4 +28,13 @@ struct MaterialSampling {
 /// per-edge arrays do not match its points. Vertices without a sub-graph (-1) are skipped.
 MaterialSamples sampleLatticeMaterial(const LatticeGraph& lattice, double spacing);
 
+/// The same samples grouped by `edgeGroup` (one group id in [0, groups) per edge, -1 for an edge
+/// without a sub-graph), e.g. the pieces of split sub-graphs: an edge's interior samples go to
+/// its group, a vertex is sampled once for every group among its edges (a vertex where a
+/// sub-graph was cut belongs to each piece), and a vertex without edges to the group of its
+/// sub-graph id. MaterialSamples::subgraph then holds the group. Throws as above, and for an
+/// edgeGroup of the wrong size or with ids out of range.
+MaterialSamples sampleLatticeMaterial(const LatticeGraph& lattice, double spacing,
+                                      const std::vector<int>& edgeGroup, int groups);
+
 }  // namespace geolattice

@@ -47,7 +47,7 @@ int componentsOfKept(const Subgraph& s, const LatticeGraph& g, const std::vector
 
 }  // namespace
 
-int contractShortEdges(LatticeGraph& g, double tolerance) {
+int contractShortEdges(LatticeGraph& g, double tolerance, std::vector<int>* edgeValues) {
   const size_t V = g.points.size(), E = g.edges.size();
   UnionFind uf(static_cast<int>(V));
   int contracted = 0;
@@ -89,6 +89,9 @@ int contractShortEdges(LatticeGraph& g, double tolerance) {
   keepIf(g.edgeLayer, keep);
   keepIf(g.edgeSubgraph, keep);
   keepIf(g.edges, keep);
+  if (edgeValues) {
+    keepIf(*edgeValues, keep);
+  }
   // Degrees of the merged vertices.
   if (g.degree.size() == V) {
     std::fill(g.degree.begin(), g.degree.end(), 0);

@@ -35,8 +35,9 @@ struct TrimResult {
 /// diagonals): the crossing and the isoline point are then two vertices at one position.
 /// Contracting merges them (degrees 4 + 2 - 2 = 4) and removes the edge from every per-edge
 /// array of g; vertex arrays keep their size (the merged vertex keeps its edges, the other is
-/// left without edges). Returns the number of contracted edges.
-int contractShortEdges(LatticeGraph& g, double tolerance);
+/// left without edges). `edgeValues` (optional, one per edge, e.g. the pieces of split
+/// sub-graphs) is compacted with the edges. Returns the number of contracted edges.
+int contractShortEdges(LatticeGraph& g, double tolerance, std::vector<int>* edgeValues = nullptr);
 
 /// Trims every sub-graph of g. Needs edges, edgeKind, edgeSubgraph, vertexSubgraph, points and
 /// subgraphs. Throws GeoLatticeError for inconsistent arrays or a zero-length edge.

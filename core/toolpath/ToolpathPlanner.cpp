@@ -198,10 +198,78 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
   return uncleared;
 }
 
+/// What one continuous print path prints: a whole closed tour, or a run of one in a piece.
+struct Walk {
+  int tour = 0;
+  int piece = -1;
+  bool closed = true;
+  std::vector<int> vertices;  ///< closed: first == last
+};
+
+/// The tours as they are, or cut into the maximal runs of consecutive edges of one piece.
+std::vector<Walk> printWalks(const EulerTours& tours, const ToolpathPieces* pieces) {
+  std::vector<Walk> walks;
+  for (size_t t = 0; t < tours.vertices.size(); ++t) {
+    const std::vector<int>& vs = tours.vertices[t];
+    const std::vector<int>& es = tours.edges[t];
+    const size_t n = es.size();
+    auto pieceOf = [&](size_t i) {
+      return pieces->edgePiece[es[i % n]];
+    };
+    size_t first = n;  // an edge whose predecessor is of another piece
+    for (size_t i = 0; pieces && i < n && first == n; ++i) {
+      if (pieceOf(i) != pieceOf(i + n - 1)) {
+        first = i;
+      }
+    }
+    if (first == n) {  // one piece (or none): the closed tour
+      walks.push_back({static_cast<int>(t), pieces && n ? pieceOf(0) : -1, true, vs});
+      continue;
+    }
+    for (size_t i = first; i < first + n;) {
+      Walk run{static_cast<int>(t), pieceOf(i), false, {vs[i % n]}};
+      for (; i < first + n && pieceOf(i) == run.piece; ++i) {
+        run.vertices.push_back(vs[(i + 1) % n]);
+      }
+      walks.push_back(std::move(run));
+    }
+  }
+  return walks;
+}
+
+/// The pieces must cover the lattice's edges, each with a piece of its own sub-graph printed
+/// once, at a position whose sub-graph is that one.
+void checkPieces(const LatticeGraph& g, const std::vector<int>& order, const ToolpathPieces& p) {
+  const size_t P = p.pieceOrder.size();
+  if (p.edgePiece.size() != g.edges.size() || order.size() != P) {
+    throw GeoLatticeError(
+        "toolpath: the pieces need one piece per lattice edge and one per position of the order");
+  }
+  std::vector<int> positionOf(P, -1);
+  for (size_t i = 0; i < P; ++i) {
+    const int piece = p.pieceOrder[i];
+    if (piece < 0 || piece >= static_cast<int>(P) || positionOf[piece] >= 0 || order[i] < 0 ||
+        order[i] >= static_cast<int>(g.subgraphs.size())) {
+      throw GeoLatticeError("toolpath: the print order must list every piece exactly once");
+    }
+    positionOf[piece] = static_cast<int>(i);
+  }
+  for (size_t e = 0; e < g.edges.size(); ++e) {
+    const int piece = p.edgePiece[e];
+    if (g.edgeSubgraph[e] >= 0 && (piece < 0 || piece >= static_cast<int>(P) ||
+                                   order[positionOf[piece]] != g.edgeSubgraph[e])) {
+      throw GeoLatticeError("toolpath: lattice edge " + std::to_string(e) + " is in piece " +
+                            std::to_string(piece) + ", which is not a piece of its sub-graph " +
+                            std::to_string(g.edgeSubgraph[e]));
+    }
+  }
+}
+
 }  // namespace
 
 Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
-                      const std::vector<int>& order, const ToolpathOptions& o) {
+                      const std::vector<int>& order, const ToolpathOptions& o,
+                      const ToolpathPieces* pieces) {
   const auto t0 = std::chrono::steady_clock::now();
   o.validate();
   const int K = static_cast<int>(input.subgraphs.size());
@@ -214,15 +282,19 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
   if (input.normals.size() != input.points.size()) {
     throw GeoLatticeError("toolpath: the lattice has no nozzle direction (Normals) per vertex");
   }
-  std::vector<char> seen(K, 0);
-  if (static_cast<int>(order.size()) != K) {
-    throw GeoLatticeError("toolpath: the print order must list every sub-graph exactly once");
-  }
-  for (int k : order) {
-    if (k < 0 || k >= K || seen[k]) {
+  if (pieces) {
+    checkPieces(input, order, *pieces);
+  } else {
+    std::vector<char> seen(K, 0);
+    if (static_cast<int>(order.size()) != K) {
       throw GeoLatticeError("toolpath: the print order must list every sub-graph exactly once");
     }
-    seen[k] = 1;
+    for (int k : order) {
+      if (k < 0 || k >= K || seen[k]) {
+        throw GeoLatticeError("toolpath: the print order must list every sub-graph exactly once");
+      }
+      seen[k] = 1;
+    }
   }
   for (size_t v = 0; v < input.normals.size(); ++v) {
     if (input.vertexSubgraph[v] >= 0 && !(input.normals[v].norm() > 0)) {
@@ -241,7 +313,12 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
   for (const Vec3& x : g.points) {
     all.extend(x);
   }
-  path.contractedEdges = contractShortEdges(g, 1e-9 * std::max(1.0, all.diagonal().norm()));
+  ToolpathPieces contractedPieces;  // the pieces on the contracted edges
+  if (pieces) {
+    contractedPieces = *pieces;
+  }
+  path.contractedEdges = contractShortEdges(g, 1e-9 * std::max(1.0, all.diagonal().norm()),
+                                            pieces ? &contractedPieces.edgePiece : nullptr);
   const TrimResult trim = trimToEulerian(g);
   const EulerTours tours = nonCrossingEulerTours(g, trim.kept);
   path.crossings = countTourCrossovers(g, tours);
@@ -262,9 +339,32 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
   }
   const std::vector<double>& h = path.thicknessStats.thickness;
 
-  std::vector<std::vector<int>> toursOf(K);
-  for (size_t t = 0; t < tours.subgraph.size(); ++t) {
-    toursOf[tours.subgraph[t]].push_back(static_cast<int>(t));
+  // What each position of the order prints: its sub-graph's tours, or the runs of them in its
+  // piece.
+  const std::vector<Walk> walks = printWalks(tours, pieces ? &contractedPieces : nullptr);
+  std::vector<std::vector<int>> walksAt(order.size());
+  {
+    std::vector<std::vector<int>> walksOf(pieces ? pieces->pieceOrder.size() : K);
+    std::vector<int> positionOfPiece;
+    if (pieces) {
+      positionOfPiece.assign(pieces->pieceOrder.size(), 0);
+      for (size_t i = 0; i < pieces->pieceOrder.size(); ++i) {
+        positionOfPiece[pieces->pieceOrder[i]] = static_cast<int>(i);
+      }
+    }
+    for (size_t w = 0; w < walks.size(); ++w) {
+      const int at = pieces ? positionOfPiece[walks[w].piece] : -1;
+      if (pieces) {
+        walksAt[at].push_back(static_cast<int>(w));
+      } else {
+        walksOf[tours.subgraph[walks[w].tour]].push_back(static_cast<int>(w));
+      }
+    }
+    if (!pieces) {
+      for (size_t i = 0; i < order.size(); ++i) {
+        walksAt[i] = walksOf[order[i]];
+      }
+    }
   }
 
   // Built once; if stations of a hop (the short lift onto an upper node) still collide after
@@ -272,7 +372,7 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
   // the safe box instead and the path is built again.
   const Toolpath base = path;
   const std::vector<std::vector<int>> loopsAtStart = loopsAt;
-  std::vector<char> overTheBox(tours.subgraph.size() + 1, 0);
+  std::vector<char> overTheBox(walks.size() + 1, 0);
   int replannedHops = 0;
   for (int attempt = 0;; ++attempt) {
     path = base;
@@ -281,27 +381,41 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
     Eigen::AlignedBox3d printed;  // everything printed so far
     int previous = -1, tourIndex = 0;
     std::vector<char> hopped(overTheBox.size(), 0);
-    for (int k : order) {
-      std::vector<int> remaining = toursOf[k];
+    for (size_t position = 0; position < order.size(); ++position) {
+      const int k = order[position];
+      std::vector<int> remaining = walksAt[position];
       while (!remaining.empty()) {
-        // The tour of this sub-graph with the vertex nearest to the nozzle; start there.
-        size_t bestTour = 0, bestAt = 0;
+        // The walk with the vertex nearest to the nozzle (a closed tour: any vertex; an open
+        // run: either end); start there.
+        size_t bestWalk = 0, bestAt = 0;
         double bestDistance = std::numeric_limits<double>::infinity();
         for (size_t r = 0; r < remaining.size(); ++r) {
-          const auto& vs = tours.vertices[remaining[r]];
-          for (size_t i = 0; i + 1 < vs.size(); ++i) {
-            const double d =
-                b.empty() ? static_cast<double>(i) : (g.points[vs[i]] - b.position()).squaredNorm();
+          const Walk& walk = walks[remaining[r]];
+          const size_t last = walk.vertices.size() - 1;
+          for (size_t i = 0; i < last || (!walk.closed && i == last); ++i) {
+            if (!walk.closed && i != 0 && i != last) {
+              continue;
+            }
+            const double d = b.empty() ? static_cast<double>(i)
+                                       : (g.points[walk.vertices[i]] - b.position()).squaredNorm();
             if (d < bestDistance) {
               bestDistance = d;
-              bestTour = r;
+              bestWalk = r;
               bestAt = i;
             }
           }
         }
-        const auto& vs = tours.vertices[remaining[bestTour]];
-        remaining.erase(remaining.begin() + static_cast<long>(bestTour));
-        const size_t n = vs.size() - 1;  // closed: vs[n] == vs[0]
+        const Walk& walk = walks[remaining[bestWalk]];
+        remaining.erase(remaining.begin() + static_cast<long>(bestWalk));
+        const std::vector<int>& vs = walk.vertices;
+        const size_t n = vs.size() - 1;  // closed: vs[n] == vs[0]; open: n edges
+        // The j-th vertex after the start: around a closed tour, or along (or back along) a run.
+        auto vertexAfter = [&](size_t j) {
+          if (walk.closed) {
+            return vs[(bestAt + j) % n];
+          }
+          return bestAt == 0 ? vs[j] : vs[n - j];
+        };
         const int start = vs[bestAt];
         const Vec3 startAxis = g.normals[start].normalized();
         if (!b.empty()) {
@@ -355,7 +469,7 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
         };
         splicePerimeters(start);
         for (size_t j = 1; j <= n; ++j) {
-          const int v = vs[(bestAt + j) % n];
+          const int v = vertexAfter(j);
           b.add(g.points[v], g.normals[v].normalized(), MoveKind::Print, h[v], layer, k, tourIndex);
           printed.extend(g.points[v]);
           splicePerimeters(v);

@@ -109,12 +109,23 @@ struct Toolpath {
   double seconds = 0;
 };
 
+/// Pieces of split sub-graphs in the printing order (sequence/SubgraphSplitting.h): a piece is
+/// printed as the runs of its sub-graph's Euler tours that lie in it (open paths that end at the
+/// cut vertices), at its own place in the order.
+struct ToolpathPieces {
+  std::vector<int> edgePiece;   ///< per lattice edge: its piece
+  std::vector<int> pieceOrder;  ///< per position of the order: the piece printed there
+};
+
 /// Plans the path. lattice: from buildLatticeGraph or the VTK conversion (points, normals,
 /// edges, edgeKind, edgeSubgraph, vertexSubgraph, subgraphs, layerValues); tree: its skeleton;
-/// order: sub-graph ids in printing order (a permutation, e.g. PrintSequence::order). Throws
-/// GeoLatticeError for bad options, mismatched inputs, an order that is not a permutation, or
-/// what trimming and tours reject (odd vertices left, missing normals).
+/// order: sub-graph ids in printing order (a permutation, e.g. PrintSequence::order; with
+/// pieces, the sub-graph of the piece at each position, each sub-graph once per piece). Throws
+/// GeoLatticeError for bad options, mismatched inputs, an order that is not a permutation (of
+/// the pieces, with pieces), a piece whose edges are not of its sub-graph, or what trimming and
+/// tours reject (odd vertices left, missing normals).
 Toolpath planToolpath(const LatticeGraph& lattice, const SkeletonTree& tree,
-                      const std::vector<int>& order, const ToolpathOptions& options = {});
+                      const std::vector<int>& order, const ToolpathOptions& options = {},
+                      const ToolpathPieces* pieces = nullptr);
 
 }  // namespace geolattice

@@ -496,6 +496,39 @@ class CliGateTest(unittest.TestCase):
         self.assertEqual(report["gates"][gate]["stopped"], ["program"])
         self.assertEqual(report["exit_status"], status)
 
+    def test_the_bunny_keeps_the_printhead_out_of_the_plate(self):
+        # Issue 15's acceptance for the bunny: with the example printhead on a 10 mm pedestal, no
+        # station and no air move of the 80 mm bunny (as placed) has the printhead in the build
+        # plate (the strict verifier counts plate stations separately), and the run is written.
+        result, report, programs, out = self.run_cli(
+            "bunny.obj", "--fit-size", "80", "--printhead", os.path.join(TESTDATA, "printhead_slim.obj"),
+            "--pedestal", "10", "--until", "toolpath")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        t = report["toolpath"]
+        self.assertEqual(t["plate_stations"], 0)
+        self.assertGreater(t["stations"], 200000)
+        self.assertLess(t["violating_stations"], 100)  # 34 measured: beads at the face's rim
+        self.assertEqual(report["pedestal"]["height_mm"], 10)
+
+    def test_split_sub_graphs_are_printed_as_pieces(self):
+        # The knight auto-oriented under the example printhead has sub-graphs that block each other;
+        # with --split-rounds some are cut into pieces: fewer forced steps, the lattice carries
+        # PieceId, and the toolpath prints every piece (the gate decides as usual).
+        result, report, programs, out = self.run_cli(
+            "decimated-knight.off", "--fit-size", "80", "--orient", "auto", "--printhead",
+            os.path.join(TESTDATA, "printhead_slim.obj"), "--split-rounds", "3", "--until", "toolpath")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        s = report["sequence"]
+        self.assertGreater(s["split_for_order"], 0)
+        self.assertGreater(s["pieces"], s["subgraphs"])
+        self.assertLess(s["forced_steps"], s["forced_steps_before_split"])
+        self.assertEqual(s["split_rounds"], 3)
+        with open(os.path.join(out, "lattice.vtp"), "rb") as f:
+            self.assertIn(b'Name="PieceId"', f.read())
+        # Every piece printed: one tour per piece at least, one retraction fewer than tours.
+        self.assertGreaterEqual(report["toolpath"]["tours"], s["pieces"])
+        self.assertEqual(report["toolpath"]["retractions"], report["toolpath"]["tours"] - 1)
+
     def test_collision_gate_and_its_override(self):
         args = ["--edge-length", "2", "--strategy", "dpt", "--nozzle-angle", "75"]
         result, report, programs, out = self.run_cli("y_shape.obj", *args)

@@ -251,3 +251,59 @@ TEST(ToolpathPlanner, BadInput) {
   o.pathWidth = 0;
   EXPECT_THROW(planToolpath(g, tree, {}, o), GeoLatticeError);
 }
+
+TEST(ToolpathPlanner, PiecesArePrintedAsRunsOfTheirTourInTheirPlace) {
+  // The Y's largest sub-graph cut in two by a plane through its centroid; its second half printed
+  // last. Every kept edge is still printed exactly once (the same print length), the two halves
+  // are printed as open runs that meet at the cut vertices, and the half printed last comes
+  // after every other sub-graph.
+  const Part part = buildPart("y_shape.obj", 52, 2.0, 4.0, 45);
+  const LatticeGraph& g = part.lattice;
+  int big = 0;
+  for (const LatticeSubgraph& s : g.subgraphs) {
+    if (s.length > g.subgraphs[big].length)
+      big = s.id;
+  }
+  const int K = static_cast<int>(g.subgraphs.size());
+  ToolpathPieces pieces;
+  pieces.edgePiece = g.edgeSubgraph;
+  const Vec3 c = g.subgraphs[big].centroid;
+  int halfEdges = 0;
+  for (size_t e = 0; e < g.edges.size(); ++e) {
+    if (g.edgeSubgraph[e] == big &&
+        0.5 * (g.points[g.edges[e][0]] + g.points[g.edges[e][1]]).x() > c.x()) {
+      pieces.edgePiece[e] = K;  // the new piece
+      ++halfEdges;
+    }
+  }
+  ASSERT_GT(halfEdges, 3);
+  std::vector<int> order = part.sequence.order;
+  pieces.pieceOrder = order;
+  order.push_back(big);
+  pieces.pieceOrder.push_back(K);
+  ToolpathOptions o;
+  const Toolpath whole = planToolpath(g, part.tree, part.sequence.order, o);
+  const Toolpath split = planToolpath(g, part.tree, order, o, &pieces);
+  EXPECT_NEAR(split.printLength, whole.printLength, 1e-9 * whole.printLength);
+  EXPECT_GT(split.tours, whole.tours);
+  EXPECT_GT(split.retractions, whole.retractions);
+  // The last print points belong to the big sub-graph, right of the cut.
+  int last = static_cast<int>(split.points.size()) - 1;
+  while (split.kind[last] == MoveKind::Air)
+    --last;
+  EXPECT_EQ(split.subgraph[last], big);
+  EXPECT_GE(split.points[last].x(), c.x() - 4.0);
+  // Bad pieces: an edge in a piece of another sub-graph, a piece listed twice.
+  ToolpathPieces wrong = pieces;
+  const int other = big == 0 ? 1 : 0;
+  for (size_t e = 0; e < g.edges.size(); ++e) {
+    if (g.edgeSubgraph[e] == other) {
+      wrong.edgePiece[e] = K;
+      break;
+    }
+  }
+  EXPECT_THROW(planToolpath(g, part.tree, order, o, &wrong), GeoLatticeError);
+  wrong = pieces;
+  wrong.pieceOrder.back() = big;
+  EXPECT_THROW(planToolpath(g, part.tree, order, o, &wrong), GeoLatticeError);
+}
