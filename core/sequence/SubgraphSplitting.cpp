@@ -4,6 +4,7 @@
 #include "common/UnionFind.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <set>
 #include <string>
@@ -47,9 +48,10 @@ void insertSorted(std::vector<int>& list, int value) {
 
 /// Cuts piece `victim` between its samples that see `partner` and those `partner` sees. Returns
 /// false (nothing changed) when either set is empty, they overlap, or the cut leaves one piece.
+/// `touch`: a lower or upper node within this distance of a piece supports it or rests on it.
 bool cutPiece(const LatticeGraph& g, const MaterialSamples& m, const NozzleVolume& nozzle,
-              int victim, int partner, std::vector<int>& edgePiece, std::vector<int>& pieceSubgraph,
-              SkeletonTree& tree) {
+              double touch, int victim, int partner, std::vector<int>& edgePiece,
+              std::vector<int>& pieceSubgraph, SkeletonTree& tree) {
   std::vector<Vec3> seeing, seen;
   bool overlap = false;
   blockingSamples(m, nozzle, victim, partner, seeing, seen, overlap);
@@ -100,18 +102,64 @@ bool cutPiece(const LatticeGraph& g, const MaterialSamples& m, const NozzleVolum
   if (pieces.size() < 2) {
     return false;
   }
-  // The new pieces are skeleton nodes with the victim's lower and upper nodes.
+  // The new pieces are skeleton nodes on the victim's layer. Each keeps only the lower and upper
+  // nodes it touches (Criterion 1 for the material that really supports it, or that it
+  // supports), and the nearest of them when it touches none: a piece must not wait for an
+  // upper node's support elsewhere on the layer.
   const SkeletonNode node = tree.nodes[victim];
   for (size_t p = 1; p < pieces.size(); ++p) {
     pieceSubgraph.push_back(pieceSubgraph[victim]);
     tree.nodes.push_back(node);
-    for (int l : node.lower) {
-      insertSorted(tree.nodes[l].upper, pieces[p]);
-      tree.edges.push_back({l, pieces[p]});
+  }
+  std::vector<std::vector<Vec3>> piecePoints(pieces.size());
+  for (int e : edges) {
+    const size_t k = std::find(pieces.begin(), pieces.end(), edgePiece[e]) - pieces.begin();
+    const auto [a, b] = g.edges[e];
+    piecePoints[k].push_back(g.points[a]);
+    piecePoints[k].push_back(0.5 * (g.points[a] + g.points[b]));
+    piecePoints[k].push_back(g.points[b]);
+  }
+  auto distanceTo = [&](size_t k, int other) {
+    double best = std::numeric_limits<double>::infinity();
+    for (int q = m.offset[other]; q < m.offset[other + 1]; ++q) {
+      best = std::min(best, nearest(piecePoints[k], m.points[q]));
     }
-    for (int u : node.upper) {
-      insertSorted(tree.nodes[u].lower, pieces[p]);
-      tree.edges.push_back({pieces[p], u});
+    return std::sqrt(best);
+  };
+  auto relink = [&](const std::vector<int>& neighbours, bool lower) {
+    for (int n : neighbours) {
+      std::vector<int>& back = lower ? tree.nodes[n].upper : tree.nodes[n].lower;
+      back.erase(std::remove(back.begin(), back.end(), victim), back.end());
+    }
+    for (size_t k = 0; k < pieces.size(); ++k) {
+      std::vector<int>& mine = lower ? tree.nodes[pieces[k]].lower : tree.nodes[pieces[k]].upper;
+      mine.clear();
+      int closest = -1;
+      double closestDistance = std::numeric_limits<double>::infinity();
+      for (int n : neighbours) {
+        const double d = distanceTo(k, n);
+        if (d <= touch) {
+          mine.push_back(n);
+        }
+        if (d < closestDistance) {
+          closestDistance = d;
+          closest = n;
+        }
+      }
+      if (mine.empty() && closest >= 0) {
+        mine.push_back(closest);
+      }
+      for (int n : mine) {
+        insertSorted(lower ? tree.nodes[n].upper : tree.nodes[n].lower, pieces[k]);
+      }
+    }
+  };
+  relink(node.lower, true);
+  relink(node.upper, false);
+  tree.edges.clear();
+  for (size_t n = 0; n < tree.nodes.size(); ++n) {
+    for (int u : tree.nodes[n].upper) {
+      tree.edges.push_back({static_cast<int>(n), u});
     }
   }
   std::sort(tree.edges.begin(), tree.edges.end());
@@ -163,6 +211,12 @@ PieceSequence sequencePieces(const LatticeGraph& g, const SkeletonTree& tree, do
   }
   state.tree = tree;
   const NozzleVolume volume(nozzle);
+  // Adjacent layers touch within about a layer's spacing (plus the samples' own spacing).
+  double layerGap = 0;
+  for (size_t l = 1; l < tree.layerValues.size(); ++l) {
+    layerGap = std::max(layerGap, tree.layerValues[l] - tree.layerValues[l - 1]);
+  }
+  const double touch = 2.0 * layerGap + spacing;
   PieceSequence best;
   // Progress is reported by the first round only (later rounds would run it backwards).
   PotentialCollisionOptions pcgLater = pcgOptions;
@@ -212,12 +266,25 @@ PieceSequence sequencePieces(const LatticeGraph& g, const SkeletonTree& tree, do
         }
         const int victim = state.tree.nodes[i].length >= state.tree.nodes[j].length ? i : j;
         const int partner = victim == i ? j : i;
-        if (cutPiece(g, state.material, volume, victim, partner, state.edgePiece,
+        // The skeleton neighbours of both: not cut again this round (their links now name new
+        // pieces, whose samples come with the next round).
+        std::vector<int> around;
+        for (int n : {i, j}) {
+          around.insert(around.end(), state.tree.nodes[n].lower.begin(),
+                        state.tree.nodes[n].lower.end());
+          around.insert(around.end(), state.tree.nodes[n].upper.begin(),
+                        state.tree.nodes[n].upper.end());
+        }
+        if (std::any_of(around.begin(), around.end(), [&](int n) { return touched.count(n); })) {
+          continue;  // a neighbour was cut this round
+        }
+        if (cutPiece(g, state.material, volume, touch, victim, partner, state.edgePiece,
                      state.pieceSubgraph, state.tree) ||
-            cutPiece(g, state.material, volume, partner, victim, state.edgePiece,
+            cutPiece(g, state.material, volume, touch, partner, victim, state.edgePiece,
                      state.pieceSubgraph, state.tree)) {
           touched.insert(i);
           touched.insert(j);
+          touched.insert(around.begin(), around.end());
           cut = true;
         }
       }
