@@ -3,6 +3,7 @@
 #include "collision/TimedPointTree.h"
 
 #include "common/Error.h"
+#include "common/ParallelFor.h"
 
 #include <algorithm>
 #include <chrono>
@@ -89,62 +90,83 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
 
   CollisionReport report;
   report.stations = static_cast<long long>(N);
-  for (int k : stations) {
-    bound.setStation(points[k], axis[k]);
-    // hit: material some order could have kept out of the nozzle; exemptHit: material no order
-    // keeps out (a skeleton ancestor's); plateHit: the build plate (no order moves it either).
-    int hit = -1, exemptHit = -1, plateHit = -1;
-    double height = 0, radial = 0, exemptHeight = 0, exemptRadial = 0;
-    tree.forEachCandidate(bound, time[k], [&](int q) {
-      double h = 0, r = 0;
-      if (!volume.contains(points[k], axis[k], all[q], &h, &r)) {
-        return false;
-      }
-      const bool onPlate = q >= static_cast<int>(N);
-      if (onPlate && !exemption) {  // no order to blame: the first obstacle decides
-        plateHit = hit = q;
+  // One station's verdict (stations are independent: chunks of them over the workers, the
+  // verdicts merged in print time order afterwards).
+  struct Verdict {
+    int station, hit;
+    double height, radial;
+    bool unavoidable, onPlate;
+  };
+  constexpr size_t kChunk = 2048;
+  const size_t chunks = (N + kChunk - 1) / kChunk;
+  std::vector<std::vector<Verdict>> verdicts(chunks);
+  parallelFor(chunks, 0, [&](size_t c, int) {
+    NozzleBound station = bound;
+    for (size_t i = c * kChunk; i < std::min(N, (c + 1) * kChunk); ++i) {
+      const int k = stations[i];
+      station.setStation(points[k], axis[k]);
+      // hit: material some order could have kept out of the nozzle; exemptHit: material no
+      // order keeps out (a skeleton ancestor's); plateHit: the build plate (no order moves it).
+      int hit = -1, exemptHit = -1, plateHit = -1;
+      double height = 0, radial = 0, exemptHeight = 0, exemptRadial = 0;
+      tree.forEachCandidate(station, time[k], [&](int q) {
+        double h = 0, r = 0;
+        if (!volume.contains(points[k], axis[k], all[q], &h, &r)) {
+          return false;
+        }
+        const bool onPlate = q >= static_cast<int>(N);
+        if (onPlate && !exemption) {  // no order to blame: the first obstacle decides
+          plateHit = hit = q;
+          height = h;
+          radial = r;
+          return true;
+        }
+        if (onPlate ||
+            (exemption && exemption->unavoidable(exemption->group[k], exemption->group[q]))) {
+          if (exemptHit < 0 || (onPlate && plateHit < 0)) {  // keep looking for an avoidable one
+            exemptHit = q;
+            exemptHeight = h;
+            exemptRadial = r;
+          }
+          if (onPlate && plateHit < 0) {
+            plateHit = q;
+          }
+          return false;
+        }
+        hit = q;
         height = h;
         radial = r;
         return true;
+      });
+      if (hit < 0 && exemptHit < 0 && plate && tipInsidePlate(*plate, partLo, partHi, points[k])) {
+        plateHit = exemptHit = static_cast<int>(all.size());  // the tip itself is in the plate
+        exemptHeight = exemptRadial = 0;
       }
-      if (onPlate ||
-          (exemption && exemption->unavoidable(exemption->group[k], exemption->group[q]))) {
-        if (exemptHit < 0 || (onPlate && plateHit < 0)) {  // keep looking for an avoidable one
-          exemptHit = q;
-          exemptHeight = h;
-          exemptRadial = r;
-        }
-        if (onPlate && plateHit < 0) {
-          plateHit = q;
-        }
-        return false;
+      const bool unavoidable = hit < 0 && exemptHit >= 0;
+      if (unavoidable) {
+        hit = exemptHit;
+        height = exemptHeight;
+        radial = exemptRadial;
       }
-      hit = q;
-      height = h;
-      radial = r;
-      return true;
-    });
-    if (hit < 0 && exemptHit < 0 && plate && tipInsidePlate(*plate, partLo, partHi, points[k])) {
-      plateHit = exemptHit = static_cast<int>(all.size());  // the tip itself is in the plate
-      exemptHeight = exemptRadial = 0;
+      if (hit >= 0) {
+        const bool onPlate = plateHit >= 0 && (unavoidable || hit >= static_cast<int>(N));
+        verdicts[c].push_back({k, hit, height, radial, unavoidable, onPlate});
+      }
     }
-    const bool unavoidable = hit < 0 && exemptHit >= 0;
-    if (unavoidable) {
-      hit = exemptHit;
-      height = exemptHeight;
-      radial = exemptRadial;
-      ++report.unavoidableStations;
-    }
-    if (hit >= 0) {
+  });
+  for (const std::vector<Verdict>& chunk : verdicts) {
+    for (const Verdict& v : chunk) {
+      report.unavoidableStations += v.unavoidable;
       ++report.violatingStations;
-      report.violatingStationIds.push_back(k);
-      const bool onPlate = plateHit >= 0 && (unavoidable || hit >= static_cast<int>(N));
-      report.plateStations += onPlate;
+      report.violatingStationIds.push_back(v.station);
+      report.plateStations += v.onPlate;
       if (static_cast<int>(report.violations.size()) < maxReported) {
-        const Vec obstacle =
-            hit == static_cast<int>(all.size()) ? Vec(points[k].x(), points[k].y(), 0.0) : all[hit];
-        report.violations.push_back({k, hit >= static_cast<int>(N) ? -1 : hit, points[k], obstacle,
-                                     height, radial, unavoidable});
+        const int k = v.station;
+        const Vec obstacle = v.hit == static_cast<int>(all.size())
+                                 ? Vec(points[k].x(), points[k].y(), 0.0)
+                                 : all[v.hit];
+        report.violations.push_back({k, v.hit >= static_cast<int>(N) ? -1 : v.hit, points[k],
+                                     obstacle, v.height, v.radial, v.unavoidable});
       }
     }
   }

@@ -34,16 +34,17 @@ public:
     if (nodes_.empty()) {
       return;
     }
-    stack_.assign(1, 0);
-    while (!stack_.empty()) {
-      const Node& node = nodes_[stack_.back()];
-      stack_.pop_back();
+    static thread_local std::vector<int> stack;  // query scratch: queries may run on many threads
+    stack.assign(1, 0);
+    while (!stack.empty()) {
+      const Node& node = nodes_[stack.back()];
+      stack.pop_back();
       if (node.minTime >= now || !bound.mayTouch(node.centre, node.radius)) {
         continue;
       }
       if (node.left >= 0) {
-        stack_.push_back(node.left);
-        stack_.push_back(node.right);
+        stack.push_back(node.left);
+        stack.push_back(node.right);
         continue;
       }
       for (int i = node.begin; i < node.end; ++i) {
@@ -63,7 +64,6 @@ private:
   const std::vector<int>& time_;
   std::vector<int> order_;
   std::vector<Node> nodes_;
-  mutable std::vector<int> stack_;  ///< query scratch: one tree per thread
 };
 
 }  // namespace geolattice

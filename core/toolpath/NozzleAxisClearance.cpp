@@ -2,6 +2,7 @@
 
 #include "collision/TimedPointTree.h"
 #include "common/Error.h"
+#include "common/ParallelFor.h"
 #include "toolpath/PathSubdivision.h"
 
 #include <Eigen/Geometry>
@@ -216,23 +217,37 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   }
   const TimedPointTree tree(all, obstacleTime);
 
-  // 1. Stations with earlier material inside the nozzle.
+  // 1. Stations with earlier material inside the nozzle: chunks of stations over the workers.
   const NozzleVolume volume(nozzle);
-  NozzleBound detect(nozzle, volume);
-  std::vector<int> colliding;
-  for (size_t k = 0; k < N; ++k) {
-    if (k % 4096 == 0 && o.shouldAbort && o.shouldAbort()) {
+  const NozzleBound detect(nozzle, volume);
+  constexpr size_t kChunk = 4096;
+  const size_t chunks = (N + kChunk - 1) / kChunk;
+  auto abortPoll = [&](size_t) {  // on the calling thread; a throw stops the workers
+    if (o.shouldAbort && o.shouldAbort()) {
       throw GeoLatticeError("nozzle axis clearance aborted");
     }
-    detect.setStation(points[k], axes[k]);
-    bool hit = false;
-    tree.forEachCandidate(detect, static_cast<int>(k), [&](int q) {
-      hit = volume.contains(points[k], axes[k], all[q]);
-      return hit;
-    });
-    if (hit) {
-      colliding.push_back(static_cast<int>(k));
-    }
+  };
+  std::vector<std::vector<int>> found(chunks);
+  parallelFor(
+      chunks, o.threads,
+      [&](size_t c, int) {
+        NozzleBound bound = detect;
+        for (size_t k = c * kChunk; k < std::min(N, (c + 1) * kChunk); ++k) {
+          bound.setStation(points[k], axes[k]);
+          bool hit = false;
+          tree.forEachCandidate(bound, static_cast<int>(k), [&](int q) {
+            hit = volume.contains(points[k], axes[k], all[q]);
+            return hit;
+          });
+          if (hit) {
+            found[c].push_back(static_cast<int>(k));
+          }
+        }
+      },
+      abortPoll);
+  std::vector<int> colliding;
+  for (const std::vector<int>& f : found) {
+    colliding.insert(colliding.end(), f.begin(), f.end());
   }
   result.collidingStations = static_cast<int>(colliding.size());
   result.colliding = colliding;
@@ -251,78 +266,97 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
                   -std::numeric_limits<double>::infinity(), wideModel.boundingApexOffset()),
       wide, maxTilt};
   const double face2 = nozzle.tipFaceRadius * nozzle.tipFaceRadius;
-  Obstacles obstacles{all, wide, Vec3::Zero(), {}};
   struct Tilt {
     int station;
     Vec3 axis;      ///< the clearing axis
     Vec3 rotation;  ///< unit rotation axis from the old to the new axis
     double angle;   ///< rotation angle (rad)
   };
-  std::vector<Tilt> tilts;
   // An obstacle closer to the reference axis than NA + margin - maxTilt is inside the cone for
   // every allowed axis (cone-only nozzle): the station cannot be cleared, stop looking.
   const double hopeless = wideModel.halfAngleDeg * kDeg - maxTilt;
   const bool coneOnly = nozzle.isConeOnly();
   const double cosHopeless = hopeless > 0 ? std::cos(hopeless) : 2.0;
-  std::vector<std::pair<double, int>> byAngle;
-  auto giveUp = [&](int k) {
-    ++result.unresolvedStations;
-    if (unresolvable) {
-      (*unresolvable)[k] = 1;
-    }
-  };
   const OutsideCosine outside(wide, wideModel.reach(), maxTilt);
-  for (int k : colliding) {
-    if (unresolvable && (*unresolvable)[k]) {
+  // Each colliding station on its own (its obstacles are fixed): chunks over the workers, the
+  // outcome per station, collected in path order afterwards.
+  enum Outcome : char { Known, Unresolved, Tilted };
+  std::vector<char> outcome(colliding.size(), Known);
+  std::vector<Vec3> clearAxis(colliding.size());
+  const size_t searchChunks = (colliding.size() + 63) / 64;
+  const int workers = workerCount(o.threads, searchChunks);
+  std::vector<Obstacles> scratch(workers, Obstacles{all, wide, Vec3::Zero(), {}});
+  std::vector<std::vector<std::pair<double, int>>> byAngleOf(workers);
+  parallelFor(
+      searchChunks, o.threads,
+      [&](size_t c, int w) {
+        TiltedNozzleBound bound = gather;
+        Obstacles& obstacles = scratch[w];
+        std::vector<std::pair<double, int>>& byAngle = byAngleOf[w];
+        for (size_t i = c * 64; i < std::min(colliding.size(), (c + 1) * 64); ++i) {
+          const int k = colliding[i];
+          if (unresolvable && (*unresolvable)[k]) {
+            outcome[i] = Known;
+            continue;
+          }
+          obstacles.tip = points[k];
+          obstacles.ids.clear();
+          byAngle.clear();
+          bound.cone.setStation(points[k], reference[k]);
+          bool cannot = false;
+          tree.forEachCandidate(bound, k, [&](int q) {
+            const Vec3 d = all[q] - points[k];
+            const double d2 = d.squaredNorm();
+            if (d2 <= face2) {
+              return false;
+            }
+            const double cosine = d.dot(reference[k]) / std::sqrt(d2);  // to the reference
+            if (coneOnly && cosine > cosHopeless &&
+                d.dot(reference[k]) * std::cos(maxTilt) >
+                    nozzle.tipClearance + std::sqrt(d2) * std::sin(maxTilt)) {
+              cannot = true;  // above the tip plane for every allowed axis, inside every cone
+              return true;
+            }
+            // Outside the wide nozzle for every axis within maxTilt of the reference.
+            if (cosine <= outside.at(std::sqrt(d2))) {
+              return false;
+            }
+            byAngle.emplace_back(-cosine, q);
+            return false;
+          });
+          if (cannot) {
+            outcome[i] = Unresolved;
+            continue;
+          }
+          // Those inside the nozzle about the reference first, so a blocked candidate axis is
+          // usually rejected by the first few (a partition, not a sort: linear).
+          std::partition(byAngle.begin(), byAngle.end(), [&](const std::pair<double, int>& a) {
+            return wide.contains(points[k], reference[k], all[a.second]);
+          });
+          for (const auto& [negCos, q] : byAngle) {
+            obstacles.ids.push_back(q);
+          }
+          outcome[i] = findClearAxis(obstacles, reference[k], axes[k], maxTilt, clearAxis[i])
+                           ? Tilted
+                           : Unresolved;
+        }
+      },
+      abortPoll);
+  std::vector<Tilt> tilts;
+  for (size_t i = 0; i < colliding.size(); ++i) {
+    const int k = colliding[i];
+    if (outcome[i] != Tilted) {
       ++result.unresolvedStations;
-      continue;
-    }
-    obstacles.tip = points[k];
-    obstacles.ids.clear();
-    byAngle.clear();
-    gather.cone.setStation(points[k], reference[k]);
-    bool cannot = false;
-    tree.forEachCandidate(gather, k, [&](int q) {
-      const Vec3 d = all[q] - points[k];
-      const double d2 = d.squaredNorm();
-      if (d2 <= face2) {
-        return false;
+      if (outcome[i] == Unresolved && unresolvable) {
+        (*unresolvable)[k] = 1;
       }
-      const double c = d.dot(reference[k]) / std::sqrt(d2);  // cos of the angle to the reference
-      if (coneOnly && c > cosHopeless &&
-          d.dot(reference[k]) * std::cos(maxTilt) >
-              nozzle.tipClearance + std::sqrt(d2) * std::sin(maxTilt)) {
-        cannot = true;  // above the tip plane for every allowed axis, and inside every cone
-        return true;
-      }
-      // Outside the wide nozzle for every axis within maxTilt of the reference: no obstacle.
-      if (c <= outside.at(std::sqrt(d2))) {
-        return false;
-      }
-      byAngle.emplace_back(-c, q);
-      return false;
-    });
-    if (cannot) {
-      giveUp(k);
-      continue;
-    }
-    // Those inside the nozzle about the reference first, so a blocked candidate axis is usually
-    // rejected by the first few (a partition, not a sort: linear).
-    std::partition(byAngle.begin(), byAngle.end(), [&](const std::pair<double, int>& a) {
-      return wide.contains(points[k], reference[k], all[a.second]);
-    });
-    for (const auto& [negCos, q] : byAngle) {
-      obstacles.ids.push_back(q);
-    }
-    Vec3 axis;
-    if (!findClearAxis(obstacles, reference[k], axes[k], maxTilt, axis)) {
-      giveUp(k);
       continue;
     }
     ++result.tiltedStations;
-    const Vec3 c = axes[k].cross(axis);
-    const double angle = std::atan2(c.norm(), axes[k].dot(axis));
-    tilts.push_back({k, axis, c.norm() > 1e-15 ? Vec3(c.normalized()) : Vec3::Zero(), angle});
+    const Vec3 c = axes[k].cross(clearAxis[i]);
+    const double angle = std::atan2(c.norm(), axes[k].dot(clearAxis[i]));
+    tilts.push_back(
+        {k, clearAxis[i], c.norm() > 1e-15 ? Vec3(c.normalized()) : Vec3::Zero(), angle});
   }
 
   // 3. Fade each tilt out along the path; the largest faded tilt wins, stations keep their own.

@@ -30,6 +30,7 @@ struct AxisClearanceOptions {
       15.0;  ///< largest angle between the axis and the layer normal (deg, in [0, 60]); 0 = off
   double marginDeg = 0.5;    ///< obstacles end at least this far outside the cone (deg, >= 0)
   double blendLength = 5.0;  ///< a tilt fades out over this path length on each side (mm, >= 0)
+  int threads = 0;           ///< workers over the stations (0 = hardware concurrency); same result
   /// Polled every 4096 stations; true stops with GeoLatticeError "nozzle axis clearance
   /// aborted". Optional.
   std::function<bool()> shouldAbort;
