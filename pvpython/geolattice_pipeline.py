@@ -78,6 +78,7 @@ PARAMETERS = {
     "strategy": (("sequencer",), "Strategy"),
     "split_rounds": (("sequencer",), "SplitRounds"),
     "nozzle_angle": (("orient", "sequencer", "verifier", "toolpath", "toolpath_verifier"), "NozzleAngle"),
+    "printhead": (("orient", "sequencer", "verifier", "toolpath", "toolpath_verifier"), "PrintheadFile"),
     "sample_spacing": (("sequencer", "verifier"), "SampleSpacing"),
     "path_width": (("toolpath",), "PathWidth"),
     "filament_diameter": (("toolpath",), "FilamentDiameter"),

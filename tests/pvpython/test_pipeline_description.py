@@ -46,6 +46,18 @@ class PipelineDescriptionTest(unittest.TestCase):
             with self.subTest(stage=stage):
                 self.assertEqual(python[stage], cpp[stage])
 
+    def test_shared_nozzle_parameters_reach_every_nozzle_filter(self):
+        # The printhead (like the nozzle angle) is one keyword for the five filters with a nozzle.
+        pipeline.load_plugin()
+        head = os.path.join(SOURCE_DIR, "testdata", "printhead_slim.obj")
+        p = pipeline.build_pipeline(os.path.join(SOURCE_DIR, "testdata", "cube.obj"), printhead=head,
+                                    pedestal=5, split_rounds=2)
+        for key in ("orient", "sequencer", "verifier", "toolpath", "toolpath_verifier"):
+            with self.subTest(stage=key):
+                self.assertEqual(p[key].PrintheadFile, head)
+        self.assertEqual(p["pedestal"].Height, 5)
+        self.assertEqual(p["sequencer"].SplitRounds, 2)
+
 
 if __name__ == "__main__":
     result = unittest.main(exit=False, verbosity=2).result
