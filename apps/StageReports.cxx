@@ -104,6 +104,8 @@ void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {
         fieldValue(tets, arrays::MeshedTriangles) < fieldValue(tets, arrays::InputTriangles);
     s["simplification_distance_mm"] = fieldValue(tets, arrays::SimplificationDistance);
     s["simplification_seconds"] = fieldValue(tets, arrays::SimplificationSeconds);
+    s["tetgen_runs"] = fieldValue(tets, arrays::TetGenRuns);
+    s["removed_flat_tets"] = fieldValue(tets, arrays::RemovedFlatTets);
   }
   s["points"] = points(tets);
   s["tets"] = cells(tets);

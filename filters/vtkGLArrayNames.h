@@ -61,6 +61,8 @@ constexpr const char* MeshedTriangles = "MeshedTriangles";  ///< triangles given
 constexpr const char* SimplificationDistance =
     "SimplificationDistance";  ///< largest input-vertex distance to the meshed surface (mm)
 constexpr const char* SimplificationSeconds = "SimplificationSeconds";  ///< its wall time (s)
+constexpr const char* TetGenRuns = "TetGenRuns";  ///< TetGen runs (edge search and retries)
+constexpr const char* RemovedFlatTets = "RemovedFlatTets";  ///< zero-volume slivers dropped
 // Overhang analysis (vtkGLOverhangAnalysis): cell data on the boundary surface.
 constexpr const char* OverhangPlanar =
     "OverhangPlanar";  ///< θ for d = +z, planar 2.5-axis slicing (degrees)

@@ -156,6 +156,9 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::MeshedTriangles, static_cast<double>(result.meshedTriangles));
     addValue(fd, gl::arrays::SimplificationDistance, result.simplificationDistance);
     addValue(fd, gl::arrays::SimplificationSeconds, result.simplificationSeconds);
+    addValue(fd, gl::arrays::TetGenRuns,
+             static_cast<double>(result.attempts + result.tetgenRetries));
+    addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
     if (!result.simplificationRefused.empty()) {
       vtkWarningMacro(<< "the simplified surface was not used (" << result.simplificationRefused
                       << "): TetGen meshed all " << result.inputTriangles << " input triangles");

@@ -147,4 +147,40 @@ int orientTetsPositively(TetMesh& mesh) {
   return static_cast<int>(mesh.tets.size());
 }
 
+size_t removeFlatTets(TetMesh& mesh) {
+  const double tolerance = checkTetMesh(mesh).zeroVolumeTolerance;
+  const size_t before = mesh.tets.size();
+  mesh.tets.erase(
+      std::remove_if(mesh.tets.begin(), mesh.tets.end(),
+                     [&](const std::array<int, 4>& t) {
+                       return !(std::abs(signedTetVolume(mesh.points[t[0]], mesh.points[t[1]],
+                                                         mesh.points[t[2]], mesh.points[t[3]])) >=
+                                tolerance);
+                     }),
+      mesh.tets.end());
+  const size_t removed = before - mesh.tets.size();
+  if (removed > 0) {  // a point only flat tets used goes too
+    std::vector<int> id(mesh.points.size(), -1);
+    for (const auto& t : mesh.tets) {
+      for (int v : t) {
+        id[v] = 0;
+      }
+    }
+    std::vector<Vec3> kept;
+    for (size_t v = 0; v < id.size(); ++v) {
+      if (id[v] == 0) {
+        id[v] = static_cast<int>(kept.size());
+        kept.push_back(mesh.points[v]);
+      }
+    }
+    for (auto& t : mesh.tets) {
+      for (int& v : t) {
+        v = id[v];
+      }
+    }
+    mesh.points = std::move(kept);
+  }
+  return removed;
+}
+
 }  // namespace geolattice

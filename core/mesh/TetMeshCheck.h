@@ -47,4 +47,9 @@ TetMeshCheckReport requireValidTetMesh(const TetMesh& mesh);
 /// orientations is a tangled mesh, not a convention, and requireValidTetMesh reports it).
 int orientTetsPositively(TetMesh& mesh);
 
+/// @brief Documented repair of TetGen output: drops the tets whose four corners lie in one plane
+/// (|volume| below checkTetMesh's zero-volume tolerance; they hold no volume) and the points no
+/// other tet uses. Returns the number of tets dropped.
+size_t removeFlatTets(TetMesh& mesh);
+
 }  // namespace geolattice

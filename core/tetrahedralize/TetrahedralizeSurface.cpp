@@ -26,14 +26,30 @@ namespace {
 constexpr double kSimplificationShare = 0.7;
 
 // Mean tet volume over the bound "a" = L^3/(6 sqrt 2) with q1.414: ~0.5 on a 40x40x60 box,
-// ~0.25 on the bunny at 100 mm (whose finely triangulated surface adds small tets). 0.4 is the
-// first guess of the automatic edge length; 0.55 (above every measured value) gives the
-// smallest plausible count for the size guard.
-constexpr double kGuessMeanTetVolumeOverBound = 0.4;
+// ~0.25 on the bunny at 100 mm (whose finely triangulated surface adds small tets). Measured at
+// the first guess on the bundled parts near 75k tets (bunny, spot, knight, topopt, Y,
+// three-branch): 0.17-0.24, median 0.21, so 0.21 is the first guess of the automatic edge
+// length (0.4 overshot the count by about 2x, costing two or three more TetGen runs); 0.55
+// (above every measured value) gives the smallest plausible count for the size guard.
+constexpr double kGuessMeanTetVolumeOverBound = 0.21;
+// log(count) / log(edge) near the target, for the first correction: -3 for a volume-filling
+// mesh, measured -0.5 to -3.2 (median -1.6) on the parts above, flatter where the surface's own
+// triangles drive the refinement. Later corrections use the measured slope.
+constexpr double kFirstSlope = -1.6;
+// TetGen runs on one edge length when its output is not a valid mesh (a flat sliver where
+// boundary facets are nearly coplanar): the edge is changed by these factors and it runs again.
+constexpr double kRetryEdgeFactors[] = {0.93, 1.07, 0.87, 1.15};
+// A TetGen run's time limit: this much plus this much per expected tet (a 1M-tet mesh takes
+// 9-11 s, so the limit is 5x its time; a 75k-tet one 1-3 s, limit 13 s).
+constexpr double kTetGenBaseSeconds = 10.0;
+constexpr double kTetGenSecondsPerTet = 40e-6;
+
 constexpr double kLargestMeanTetVolumeOverBound = 0.55;
 // Largest accepted relative difference between the winding-weighted tet volume and the
-// enclosed (divergence-theorem) volume of the surface.
-constexpr double kVolumeTolerance = 1e-5;
+// enclosed (divergence-theorem) volume of the surface. Steiner points TetGen puts on finely
+// curved facets move the volume by up to ~2e-5 relative (measured on generated parts of
+// 12k triangles); overlapping parts or merged vertices change it by far more.
+constexpr double kVolumeTolerance = 1e-3;
 // The automatic search accepts a count within this factor of the target.
 constexpr double kAutoTolerance = 1.25;
 
@@ -268,22 +284,43 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   const ProgressReporter progress(options.progress, options.shouldAbort, "tetrahedralization");
   int removedRegions = 0;  // of the last run
   int runs = 0;
-  auto run = [&](double edge) {
+  // TetGen's refinement can loop without end on some inputs (seen on a generated genus-3 block
+  // simplified for one edge length): each run gets a time limit far above its expected time,
+  // and a run past it counts as failed.
+  bool timedOut = false;
+  auto runOnce = [&](double edge) {
+    const double limit =
+        kTetGenBaseSeconds + kTetGenSecondsPerTet * result.enclosedVolume /
+                                 (kGuessMeanTetVolumeOverBound * regularTetVolume(edge));
+    auto started = std::chrono::steady_clock::now();
+    timedOut = false;
+    const std::function<bool()> abortOrTimeout = [&] {
+      if (options.shouldAbort && options.shouldAbort()) {
+        return true;
+      }
+      timedOut =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > limit;
+      return timedOut;
+    };
     TetGenOutput out;
     try {
-      out = runTetGen(surface, switchesFor(edge), options.shouldAbort);
+      out = runTetGen(surface, switchesFor(edge), abortOrTimeout);
     } catch (const GeoLatticeError& e) {
       if (!result.simplified || (options.shouldAbort && options.shouldAbort())) {
         throw;
       }
-      // TetGen failed on the simplified surface (e.g. nearly coincident vertices it made):
-      // mesh the input as it is.
+      // TetGen failed on the simplified surface (e.g. nearly coincident vertices it made, or a
+      // refinement that does not end: seen on a generated genus-3 block, where the input as it
+      // is meshes in 3 s): mesh the input as it is, with a new time limit.
+      result.simplificationRefused =
+          timedOut ? "TetGen did not finish on it within its time limit" : e.what();
+      started = std::chrono::steady_clock::now();
+      timedOut = false;
       surface = original;
       result.simplified = false;
-      result.simplificationRefused = e.what();
       result.enclosedVolume = std::abs(report.signedVolume);
       result.meshedTriangles = surface.triangles.size();
-      out = runTetGen(surface, switchesFor(edge), options.shouldAbort);
+      out = runTetGen(surface, switchesFor(edge), abortOrTimeout);
     }
     if (out.mesh.tets.empty()) {
       throw GeoLatticeError("TetGen produced no tetrahedra (switches " + switchesFor(edge) + ")");
@@ -309,6 +346,43 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
                                       : tetgen);
     return std::move(out.mesh);
   };
+  // TetGen's output must be a valid mesh. Flat slivers (zero volume: all four corners in one
+  // plane, where boundary facets are nearly coplanar) are dropped, a documented repair that
+  // changes no volume; inverted or overlapping tets, or a run past its time limit, make the same
+  // target run again with the edge length changed by kRetryEdgeFactors.
+  auto run = [&](double edge) {
+    std::string failure;
+    std::vector<double> factors = {1.0};
+    factors.insert(factors.end(), std::begin(kRetryEdgeFactors), std::end(kRetryEdgeFactors));
+    for (double factor : factors) {
+      if (factor != 1.0) {
+        ++result.tetgenRetries;
+      }
+      TetMesh mesh;
+      try {
+        mesh = runOnce(edge * factor);
+      } catch (const GeoLatticeError& e) {
+        if (!timedOut) {
+          throw;
+        }
+        failure = "TetGen did not finish within its time limit at edge length " +
+                  formatSwitchNumber(edge * factor) + " mm";
+        continue;
+      }
+      orientTetsPositively(mesh);
+      result.removedFlatTets += removeFlatTets(mesh);
+      const TetMeshCheckReport check = checkTetMesh(mesh);
+      if (check.invertedTets == 0 && check.nonManifoldFaces == 0 && check.tetCount > 0) {
+        return mesh;
+      }
+      failure = "TetGen's mesh at edge length " + formatSwitchNumber(edge * factor) + " mm has " +
+                std::to_string(check.invertedTets) + " inverted tets and " +
+                std::to_string(check.nonManifoldFaces) + " overlapping faces";
+    }
+    throw GeoLatticeError(failure +
+                          ", and at 7 % and 15 % shorter and longer edges; give "
+                          "another edge length (--edge-length) or repair the surface");
+  };
 
   TetMesh best = run(firstEdge);
   double bestEdge = firstEdge;
@@ -325,7 +399,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       return std::abs(std::log(static_cast<double>(count) / target));
     };
     double edge = firstEdge, count = static_cast<double>(best.tets.size());
-    double slope = -3.0;
+    double slope = kFirstSlope;
     double tooFine = 0.0,
            tooCoarse = 0.0;  // largest edge with count > target, smallest with count < target
     auto updateBracket = [&](double e, double n) {

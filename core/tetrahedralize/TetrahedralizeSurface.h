@@ -63,6 +63,8 @@ struct TetrahedralizeResult {
   int removedCavityRegions =
       0;                       ///< regions TetGen filled with winding number 0 (cavities), removed
   int attempts = 0;            ///< TetGen runs (1 unless the edge length was automatic)
+  int tetgenRetries = 0;       ///< extra runs: TetGen's output was invalid or it ran too long
+  size_t removedFlatTets = 0;  ///< zero-volume slivers dropped from TetGen's output
   double seconds = 0.0;        ///< wall time of the whole call
   bool simplified = false;     ///< the surface was simplified before TetGen
   size_t inputTriangles = 0;   ///< triangles of the input surface

@@ -511,11 +511,12 @@ class CliGateTest(unittest.TestCase):
         self.assertEqual(report["pedestal"]["height_mm"], 10)
 
     def test_split_sub_graphs_are_printed_as_pieces(self):
-        # The knight auto-oriented under the example printhead has sub-graphs that block each other;
-        # with --split-rounds some are cut into pieces: fewer forced steps, the lattice carries
-        # PieceId, and the toolpath prints every piece (the gate decides as usual).
+        # The knight as placed under the example printhead has sub-graphs that block each other
+        # (58 forced steps measured); with --split-rounds some are cut into pieces (5 sub-graphs,
+        # 55 forced steps): fewer forced steps, the lattice carries PieceId, and the toolpath
+        # prints every piece (the gate decides as usual).
         result, report, programs, out = self.run_cli(
-            "decimated-knight.off", "--fit-size", "80", "--orient", "auto", "--printhead",
+            "decimated-knight.off", "--fit-size", "80", "--printhead",
             os.path.join(TESTDATA, "printhead_slim.obj"), "--split-rounds", "3", "--until", "toolpath")
         self.assertEqual(result.returncode, 0, result.stderr)
         s = report["sequence"]

@@ -118,3 +118,18 @@ TEST(TetMeshCheck, EmptyMeshIsRejected) {
   EXPECT_NE(errorOf([&] { requireValidTetMesh(pointsOnly); }).find("empty tet mesh"),
             std::string::npos);
 }
+
+TEST(TetMeshCheck, FlatTetsAndTheirOwnPointsAreRemoved) {
+  // A box mesh plus a flat sliver on one of its faces (four corners in the plane z = 0, one of
+  // them a new point nothing else uses): the sliver and that point go, the box stays valid.
+  TetMesh mesh = boxTetMesh(Vec3(2, 2, 2), 2, 2, 2);
+  const size_t tets = mesh.tets.size(), points = mesh.points.size();
+  mesh.points.push_back(Vec3(0.5, 0.5, 0.0));
+  mesh.tets.push_back({0, 1, 3, static_cast<int>(points)});  // corners (0,0,0) (1,0,0) (0,1,0)
+  EXPECT_EQ(checkTetMesh(mesh).zeroVolumeTets, 1);
+  EXPECT_EQ(removeFlatTets(mesh), 1u);
+  EXPECT_EQ(mesh.tets.size(), tets);
+  EXPECT_EQ(mesh.points.size(), points);
+  EXPECT_NO_THROW(requireValidTetMesh(mesh));
+  EXPECT_EQ(removeFlatTets(mesh), 0u);  // nothing left to remove
+}
