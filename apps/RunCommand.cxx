@@ -174,11 +174,12 @@ private:
     reportCollisions(pathCollisions, path);
     this->Write(toolpath, "toolpath.vtp");
     this->Write(pathCollisions, "toolpath_collisions.vtp");
+    reportSummary(this->Update("summary", P.PrintSummary), this->Section("summary"));
     const int steps =
         replayStepCount(vtkDataSet::SafeDownCast(toolpath)->GetNumberOfPoints(), R.replaySteps);
     path["replay_steps"] = steps;
     const auto replayStart = Clock::now();
-    for (const std::string& f : writeToolpathReplay(P.Planner, R.outDir, steps)) {
+    for (const std::string& f : writeToolpathReplay(P.ToolpathReplay, R.outDir, steps)) {
       if (f.find('*') == std::string::npos) {
         this->Files.add(f, secondsSince(replayStart));
       }

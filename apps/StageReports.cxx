@@ -8,6 +8,8 @@
 #include <vtkDataSet.h>
 #include <vtkFieldData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
 
 #include <cmath>
 #include <filesystem>
@@ -282,6 +284,22 @@ void reportCollisions(vtkDataObject* v, Json& s) {
   if (v->GetFieldData()->GetArray(arrays::CollisionLayerRange)) {
     s["violating_layers"] = {count(v, arrays::CollisionLayerRange),
                              static_cast<long long>(fieldValue(v, arrays::CollisionLayerRange, 1))};
+  }
+}
+
+void reportSummary(vtkDataObject* summary, Json& s) {
+  vtkTable* table = vtkTable::SafeDownCast(summary);
+  if (!table) {
+    return;
+  }
+  auto* key = vtkStringArray::SafeDownCast(table->GetColumnByName("Key"));
+  vtkDataArray* value = vtkDataArray::SafeDownCast(table->GetColumnByName("Value"));
+  for (vtkIdType r = 0; key && value && r < table->GetNumberOfRows(); ++r) {
+    s[key->GetValue(r)] = value->GetTuple1(r);
+  }
+  if (auto* verdict = vtkStringArray::SafeDownCast(
+          table->GetFieldData()->GetAbstractArray(arrays::SummaryVerdict))) {
+    s["verdict"] = verdict->GetValue(0);
   }
 }
 

@@ -32,6 +32,9 @@ void reportToolpath(GLPrintPipeline& pipeline, vtkDataObject* toolpath, Json& se
 /// collision_free (strict), order_collision_free, stations, violating_stations,
 /// unavoidable_stations, and the layer range of the violating stations when known.
 void reportCollisions(vtkDataObject* verifierOutput, Json& section);
+/// GL Print Summary's table as key: value (its Key and Value columns) and "verdict" (its
+/// SummaryVerdict): the numbers the GUI's spreadsheet shows.
+void reportSummary(vtkDataObject* summaryTable, Json& section);
 /// The robot cell and URScript parameters, and the writer's results.
 void reportScript(GLPrintPipeline& pipeline, Json& section);
 /// The G-code writer's parameters and results (when it wrote a file).

@@ -3,7 +3,7 @@
 #include "OutputFiles.h"
 #include "common/Error.h"
 #include "vtkGLArrayNames.h"
-#include "vtkGLToolpathPlanner.h"
+#include "vtkGLToolpathReplay.h"
 
 #include <vtkDataArray.h>
 #include <vtkFieldData.h>
@@ -63,8 +63,8 @@ int replayStepCount(long long points, int maxSteps) {
   return std::max(1, std::min(maxSteps, static_cast<int>(std::floor(fit))));
 }
 
-std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner,
-                                             const std::string& outDir, int steps) {
+std::vector<std::string> writeToolpathReplay(vtkGLToolpathReplay* replay, const std::string& outDir,
+                                             int steps) {
   const fs::path dir = fs::path(outDir) / "toolpath";
   const fs::path pvd = fs::path(outDir) / "toolpath.pvd";
   std::vector<std::string> written;
@@ -75,11 +75,15 @@ std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner,
     return written;
   }
   prepareOutputDirectory(dir.string());
+  replay->SetStepBy(vtkGLToolpathReplay::Points);
+  replay->SetKeepUnprintedPoints(false);  // smaller files
   std::vector<double> times;
   for (int k = 1; k <= steps; ++k) {
     const double p = k == steps ? 1.0 : static_cast<double>(k) / steps;
-    planner->UpdateTimeStep(p);
-    vtkPolyData* part = planner->GetOutput();
+    if (!replay->UpdateTimeStep(p)) {
+      throw GeoLatticeError("toolpath: replay step " + std::to_string(k) + " failed");
+    }
+    vtkPolyData* part = replay->GetOutput();
     if (!part || part->GetNumberOfPoints() == 0) {
       throw GeoLatticeError("toolpath: replay step " + std::to_string(k) + " is empty");
     }

@@ -1,7 +1,7 @@
 #pragma once
 /// @file ToolpathOutput.h
 /// @brief The toolpath stage's files: the print replay (toolpath.pvd with cumulative step files)
-/// from vtkGLToolpathPlanner's output.
+/// from vtkGLToolpathPlanner's output, cut by vtkGLToolpathReplay.
 ///
 /// Why cumulative step files: a .pvd time series shows the data set(s) listed for the current
 /// time, so replaying a growing print needs, per step, everything printed so far. Each step file
@@ -16,7 +16,7 @@
 #include <vector>
 
 class vtkDataObject;
-class vtkGLToolpathPlanner;
+class vtkGLToolpathReplay;
 
 namespace geolattice {
 
@@ -26,14 +26,14 @@ namespace geolattice {
 int replayStepCount(long long points, int maxSteps);
 
 /// Writes OUTDIR/toolpath/step_0001.vtp .. step_NNNN.vtp, step k holding the toolpath printed up
-/// to progress k / steps (the planner's output at that time, vtkGLToolpathPlanner's replay), and
-/// OUTDIR/toolpath.pvd listing them with timestep = k / steps (the same times as the filter's in
-/// ParaView; the last step is the whole path). Every file is written atomically, the .pvd last;
-/// step files of an earlier run beyond the new count are removed, and with steps == 0 the .pvd
-/// and all step files. The planner must have been updated without a time (whole path) before;
-/// it is left at time 1 (the whole path). Returns the paths written (the steps as one pattern).
-/// Throws GeoLatticeError on a write failure or an empty step.
-std::vector<std::string> writeToolpathReplay(vtkGLToolpathPlanner* planner,
-                                             const std::string& outDir, int steps);
+/// to progress k / steps (vtkGLToolpathReplay at that time, StepBy Points, the printed points
+/// only), and OUTDIR/toolpath.pvd listing them with timestep = k / steps (the same times as the
+/// filter's in ParaView; the last step is the whole path). Every file is written atomically, the
+/// .pvd last; step files of an earlier run beyond the new count are removed, and with steps == 0
+/// the .pvd and all step files. `replay` is the pipeline's (its input, the toolpath, updated
+/// before); it is set to StepBy Points and the printed points only. Returns the paths written (the steps as one pattern). Throws
+/// GeoLatticeError on a write failure or an empty step.
+std::vector<std::string> writeToolpathReplay(vtkGLToolpathReplay* replay, const std::string& outDir,
+                                             int steps);
 
 }  // namespace geolattice

@@ -72,7 +72,7 @@ void printFilterDefaults() {
                           p.Pedestal,         p.Tetrahedralize, p.GeodesicFields, p.Slicer,
                           p.OverhangAnalysis, p.LatticeInfill,  p.SkeletonTree,   p.Sequencer,
                           p.SequenceVerifier, p.Planner,        p.ScriptWriter,   p.GCodeWriter,
-                          p.WaypointWriter};
+                          p.WaypointWriter,   p.ToolpathReplay, p.PrintSummary};
   for (vtkObject* o : objects) {
     std::cout << "== " << o->GetClassName() << "\n";
     o->Print(std::cout);

@@ -23,6 +23,9 @@ GLPrintPipeline::GLPrintPipeline(bool tetMeshInput) {
   this->Planner->SetInputConnection(1, this->Sequencer->GetOutputPort(1));
   this->ToolpathVerifier->SetInputConnection(this->Planner->GetOutputPort());
   this->ToolpathVerifier->SetTimeArrayName(geolattice::arrays::PointIndex);
+  this->PrintSummary->SetInputConnection(0, this->Planner->GetOutputPort());
+  this->PrintSummary->SetInputConnection(1, this->ToolpathVerifier->GetOutputPort());
+  this->ToolpathReplay->SetInputConnection(this->Planner->GetOutputPort());
   for (vtkGLNozzleAlgorithm* a :
        {static_cast<vtkGLNozzleAlgorithm*>(this->Orientation.Get()),
         static_cast<vtkGLNozzleAlgorithm*>(this->Sequencer.Get()),
@@ -78,6 +81,10 @@ vtkAlgorithm* GLPrintPipeline::Filter(Stage stage) {
       return this->Planner;
     case ToolpathVerify:
       return this->ToolpathVerifier;
+    case Summary:
+      return this->PrintSummary;
+    case Replay:
+      return this->ToolpathReplay;
     case NumberOfStages:
       break;
   }
@@ -86,9 +93,9 @@ vtkAlgorithm* GLPrintPipeline::Filter(Stage stage) {
 
 const char* GLPrintPipeline::StageName(Stage stage) {
   static const char* const names[NumberOfStages] = {
-      "read",     "place",           "orient",   "pedestal",       "mesh",
-      "fields",   "layers",          "overhang", "lattice",        "skeleton",
-      "sequence", "sequence-verify", "toolpath", "toolpath-verify"};
+      "read",     "place",           "orient",  "pedestal", "mesh",     "fields",
+      "layers",   "overhang",        "lattice", "skeleton", "sequence", "sequence-verify",
+      "toolpath", "toolpath-verify", "summary", "replay"};
   return stage >= 0 && stage < NumberOfStages ? names[stage] : "";
 }
 

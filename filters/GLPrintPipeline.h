@@ -9,7 +9,8 @@
  *   Reader -> Place -> Orient -> Pedestal -> Mesh (the three skipped for a tet-mesh input) -> Fields
  *          -> Layers -> Lattice
  *          -> Skeleton (+ Fields) -> Sequence -> Toolpath -> the program writers
- *   Overhang on Fields; SequenceVerify on Sequence; ToolpathVerify on Toolpath.
+ *   Overhang on Fields; SequenceVerify on Sequence; ToolpathVerify and Replay on Toolpath;
+ *   Summary on Toolpath and ToolpathVerify.
  *
  * Every filter keeps its own defaults (taken from the core options structs); the pipeline only
  * connects them and gives the sequencer, both verifiers and the planner one shared nozzle
@@ -30,9 +31,11 @@
 #include "vtkGLPedestal.h"
 #include "vtkGLPlaceOnPlatform.h"
 #include "vtkGLPrintSequencer.h"
+#include "vtkGLPrintSummary.h"
 #include "vtkGLSkeletonTree.h"
 #include "vtkGLTetrahedralizeSurface.h"
 #include "vtkGLToolpathPlanner.h"
+#include "vtkGLToolpathReplay.h"
 #include "vtkGLURScriptWriter.h"
 #include "vtkGLWaypointCsvWriter.h"
 
@@ -58,6 +61,8 @@ public:
     SequenceVerify,
     Toolpath,
     ToolpathVerify,
+    Summary,  ///< the numbers a slicer shows (vtkGLPrintSummary on Toolpath + ToolpathVerify)
+    Replay,   ///< the print replay of the toolpath (vtkGLToolpathReplay)
     NumberOfStages
   };
 
@@ -74,7 +79,7 @@ public:
   /// The filter of a stage (Mesh: the tetrahedralizer even when skipped).
   vtkAlgorithm* Filter(Stage stage);
   /// "read", "place", "orient", "pedestal", "mesh", "fields", "layers", "overhang", "lattice", "skeleton", "sequence",
-  /// "sequence-verify", "toolpath", "toolpath-verify".
+  /// "sequence-verify", "toolpath", "toolpath-verify", "summary", "replay".
   static const char* StageName(Stage stage);
 
   /// Asks every running GeoLattice filter to stop at its next abort poll, as if its AbortExecute
@@ -98,6 +103,8 @@ public:
   vtkNew<vtkGLCollisionVerifier> SequenceVerifier;  ///< the order (time = PrintOrder)
   vtkNew<vtkGLToolpathPlanner> Planner;
   vtkNew<vtkGLCollisionVerifier> ToolpathVerifier;  ///< the toolpath (time = PointIndex)
+  vtkNew<vtkGLPrintSummary> PrintSummary;           ///< the summary table (report.json "summary")
+  vtkNew<vtkGLToolpathReplay> ToolpathReplay;       ///< the print over time (toolpath.pvd)
   vtkNew<vtkGLURScriptWriter> ScriptWriter;
   vtkNew<vtkGLGCodeWriter> GCodeWriter;
   vtkNew<vtkGLWaypointCsvWriter> WaypointWriter;

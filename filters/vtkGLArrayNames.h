@@ -35,8 +35,13 @@ constexpr const char* PlacementScale = "PlacementScale";  ///< 1 value, uniform 
 constexpr const char* PlacementTranslation =
     "PlacementTranslation";  ///< 3 values (mm), applied after scaling
 // Curved layer slicer output (vtkGLCurvedLayerSlicer).
-constexpr const char* Normals = "Normals";        ///< point data: unit nozzle direction (+∇γ)
-constexpr const char* SourceEdge = "SourceEdge";  ///< point data: tet-mesh edge (2 point ids)
+constexpr const char* Normals =
+    "Normals";  ///< point data: unit layer normal = nozzle direction (+∇γ)
+/// Lattice and toolpath point data: the unit nozzle axis. Not named Normals (and not the active
+/// normals) on lines: ParaView lights lines with their normals, and layers facing away from the
+/// camera would render black. Readers accept Normals too (files written before the rename).
+constexpr const char* NozzleAxis = "NozzleAxis";
+constexpr const char* SourceEdge = "SourceEdge";        ///< point data: tet-mesh edge (2 point ids)
 constexpr const char* EdgeParameter = "EdgeParameter";  ///< point data: t along SourceEdge
 constexpr const char* LayerId = "LayerId";              ///< cell data: layer index i
 constexpr const char* LayerComponent =
@@ -191,7 +196,7 @@ constexpr const char* CollisionOrderFree =
     "CollisionOrderFree";  ///< int: 1 = no violation except unavoidable ones
 constexpr const char* CollisionSeconds = "CollisionSeconds";  ///< wall time (s)
 // Toolpath planner (vtkGLToolpathPlanner): the points in printing order, one polyline cell per
-// run of moves of the same kind on the same path. Its point data also holds Normals (nozzle
+// run of moves of the same kind on the same path. Its point data also holds NozzleAxis (nozzle
 // axis), LayerId (the lattice's LayerId, -1 on air moves) and SubgraphId (-1 on air moves); its
 // cell data MoveKind, PathIndex, LayerId and SubgraphId of the run.
 constexpr const char* Thickness =
@@ -206,6 +211,8 @@ constexpr const char* PathIndex =
     "PathIndex";  ///< point + cell data (int): continuous print path (tour); air moves carry the next one
 constexpr const char* PointIndex =
     "PointIndex";  ///< point data (int): position along the toolpath (print time for the verifier)
+/// Field data of vtkGLToolpathReplay: the last printed point index at the shown time (-1: none).
+constexpr const char* ReplayLastPoint = "ReplayLastPoint";
 constexpr const char* AxisTilt =
     "AxisTilt";  ///< point data: angle between the nozzle axis and the layer normal ∇γ (degrees)
 // Field data of vtkGLToolpathPlanner (1 value each unless noted).
@@ -232,7 +239,9 @@ constexpr const char* ToolpathTrimmedEdges =
     "ToolpathTrimmedEdges";  ///< boundary edges left out to make the sub-graphs Eulerian
 constexpr const char* ToolpathTrimmedLength = "ToolpathTrimmedLength";  ///< mm of those edges
 constexpr const char* ToolpathFilament =
-    "ToolpathFilament";                                   ///< filament length extruded (mm, Eq. 14)
+    "ToolpathFilament";  ///< filament length extruded (mm, Eq. 14)
+constexpr const char* ToolpathFilamentDiameter =
+    "ToolpathFilamentDiameter";                           ///< the planner's filament diameter (mm)
 constexpr const char* ToolpathVolume = "ToolpathVolume";  ///< deposited volume (mm^3)
 constexpr const char* ToolpathThicknessDeviation =
     "ToolpathThicknessDeviation";  ///< 2 values: min, max of e = (h - φ)/φ (Eq. 15)
@@ -260,6 +269,9 @@ constexpr const char* ToolpathMaxAxisTilt = "ToolpathMaxAxisTilt";  ///< largest
 constexpr const char* ToolpathReplannedHops =
     "ToolpathReplannedHops";  ///< hops onto an upper node sent over the safe box (they collided)
 constexpr const char* ToolpathSeconds = "ToolpathSeconds";  ///< wall time of the planning (s)
+
+/// Field data of vtkGLPrintSummary's table: the verdict in words (one string).
+constexpr const char* SummaryVerdict = "SummaryVerdict";
 
 // GL Pedestal (vtkGLPedestal.h): field data of the raised surface.
 constexpr const char* PedestalHeight = "PedestalHeight";  ///< mm the part is raised (0 = none)

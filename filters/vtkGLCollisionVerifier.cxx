@@ -338,13 +338,10 @@ int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** 
       throw gl::GeoLatticeError("empty input: no printed points to verify");
     }
     vtkPointData* pd = input->GetPointData();
-    vtkDataArray* normals = pd->GetArray(gl::arrays::Normals);
+    vtkDataArray* normals = gl::nozzleAxisOf(pd);
     if (!normals) {
-      normals = pd->GetNormals();
-    }
-    if (!normals || normals->GetNumberOfComponents() != 3) {
-      throw gl::GeoLatticeError(
-          "input has no Normals point array with 3 components (the nozzle directions)");
+      throw gl::GeoLatticeError(std::string("input has no ") + gl::arrays::NozzleAxis +
+                                " point array with 3 components (the nozzle directions)");
     }
     const std::string name = this->TimeArrayName ? this->TimeArrayName : "";
     vtkDataArray* cellTime = name.empty() ? nullptr : input->GetCellData()->GetArray(name.c_str());

@@ -18,7 +18,7 @@
  * (CollisionFree stays strict) but flagged, and CollisionOrderFree ignores them: it says whether
  * the order itself is at fault.
  *
- * Input:  vtkPolyData with line cells, point array `Normals` (3 components: the nozzle axis) and
+ * Input:  vtkPolyData with line cells, point array `NozzleAxis` (3 components: the nozzle axis) and
  *         a print-time array named by TimeArrayName (default `PrintOrder`, as written by
  *         vtkGLPrintSequencer on its Sequenced Lattice output); values must be integers.
  *   - If it is a cell array (looked for first), the material is sampled: every point of each
@@ -43,7 +43,7 @@
  * Parameters: TimeArrayName (default "PrintOrder"), the nozzle (vtkGLNozzle: NozzleAngle,
  *   NozzleLength, HolderRadius, TipClearance, TipFaceRadius), SampleSpacing (mm, default 1, > 0),
  *   MaxReported (default 20).
- * Errors (an empty input, missing Normals or time array, a non-integer or non-finite time, a zero
+ * Errors (an empty input, missing NozzleAxis or time array, a non-integer or non-finite time, a zero
  * normal, NozzleAngle outside (0, 90) or another bad nozzle, SampleSpacing <= 0, SkeletonEdges
  * without 2 components, with a negative id or a cycle) are reported with vtkErrorMacro and give
  * an empty output without field data.

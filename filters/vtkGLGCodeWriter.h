@@ -17,7 +17,7 @@
  * point with at most 5 decimals (no exponents).
  *
  * Input: vtkPolyData, the output of vtkGLToolpathPlanner (points in point order = printing
- *   order, mm, point arrays `Normals`, `Extrusion`, `FeedRate`, `MoveKind`, `LayerId`; see
+ *   order, mm, point arrays `NozzleAxis`, `Extrusion`, `FeedRate`, `MoveKind`, `LayerId`; see
  *   vtkGLURScriptWriter). A time-dependent input is requested at the end of its time range:
  *   the whole toolpath.
  * Output: FileName (e.g. toolpath.gcode or .nc), written to a temporary name first and renamed

@@ -189,7 +189,7 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out) {
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(V);
   vtkNew<vtkDoubleArray> normals, gamma, alpha, beta;
-  normals->SetName(gl::arrays::Normals);
+  normals->SetName(gl::arrays::NozzleAxis);
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(V);
   gamma->SetName(gl::arrays::Gamma);
@@ -235,7 +235,7 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out) {
   vtkPointData* pd = out->GetPointData();
   pd->AddArray(kind);
   pd->AddArray(degree);
-  pd->SetNormals(normals);
+  pd->AddArray(normals);
   if (hasGamma) {
     pd->AddArray(gamma);
   }

@@ -18,7 +18,7 @@
  * Output: vtkPolyData, one line cell per graph edge, points shared within a layer, with
  *   - point data `VertexKind` (int: 0 isoline point, 1 crossing, 2 boundary hit, 3 boundary;
  *     see geolattice::latticekind), `Degree` (int: 4 at crossings, 3 at boundary hits, 2
- *     elsewhere except at exact tangential touches), `Normals` (unit nozzle direction,
+ *     elsewhere except at exact tangential touches), `NozzleAxis` (unit nozzle direction,
  *     interpolated), `Gamma` (φ_i of the layer, mm), `Alpha`, `Beta` (mm), `SubgraphId`;
  *   - cell data `EdgeKind` (int: 0 α, 1 β, 2 boundary), `LayerId` (layer index i),
  *     `SubgraphId` (connected sub-graph, numbered over all layers), `IsolineLevel` (mm, NaN on

@@ -150,6 +150,16 @@ bool groupOffsets(const std::vector<int>& values, int groups, std::vector<int>& 
 }
 }  // namespace
 
+vtkDataArray* nozzleAxisOf(vtkPointData* pd) {
+  for (vtkDataArray* a :
+       {pd->GetArray(arrays::NozzleAxis), pd->GetArray(arrays::Normals), pd->GetNormals()}) {
+    if (a && a->GetNumberOfComponents() == 3) {
+      return a;
+    }
+  }
+  return nullptr;
+}
+
 LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
   if (!lattice || lattice->GetNumberOfLines() == 0 || lattice->GetNumberOfPoints() == 0) {
     throw GeoLatticeError(
@@ -165,13 +175,10 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
   if (!cellLayer) {
     throw GeoLatticeError("lattice has no LayerId cell array (apply GL Lattice Infill first)");
   }
-  vtkDataArray* normals = pd->GetArray(arrays::Normals);
+  vtkDataArray* normals = nozzleAxisOf(pd);
   if (!normals) {
-    normals = pd->GetNormals();
-  }
-  if (!normals || normals->GetNumberOfComponents() != 3) {
-    throw GeoLatticeError(
-        "lattice has no Normals point array with 3 components (the nozzle directions)");
+    throw GeoLatticeError(std::string("lattice has no ") + arrays::NozzleAxis +
+                          " point array with 3 components (the nozzle directions)");
   }
   vtkDataArray* gamma = pd->GetArray(arrays::Gamma);
   if (!gamma) {
@@ -508,7 +515,7 @@ ToolpathArrays toToolpathArrays(vtkPolyData* toolpath) {
     }
     return a;
   };
-  vtkDataArray* normals = array(arrays::Normals, 3);
+  vtkDataArray* normals = nozzleAxisOf(pd) ? nozzleAxisOf(pd) : array(arrays::NozzleAxis, 3);
   vtkDataArray* extrusion = array(arrays::Extrusion, 1);
   vtkDataArray* feedRate = array(arrays::FeedRate, 1);
   vtkDataArray* kind = array(arrays::MoveKind, 1);
@@ -530,7 +537,7 @@ ToolpathArrays toToolpathArrays(vtkPolyData* toolpath) {
     const Vec3 axis(v[0], v[1], v[2]);
     const double length = axis.norm();
     if (!std::isfinite(length) || !(length > 1e-12)) {
-      throw GeoLatticeError(at + " has a NaN or zero normal (" + arrays::Normals + ")");
+      throw GeoLatticeError(at + " has a NaN or zero nozzle axis (" + arrays::NozzleAxis + ")");
     }
     t.normals[i] = axis / length;
     t.extrusion[i] = extrusion->GetComponent(i, 0);

@@ -16,9 +16,11 @@
 
 #include <vector>
 
+class vtkDataArray;
 class vtkDoubleArray;
 class vtkGLNozzle;
 class vtkFieldData;
+class vtkPointData;
 class vtkPolyData;
 class vtkUnstructuredGrid;
 class vtkPoints;
@@ -36,7 +38,7 @@ void fromTetMesh(const TetMesh& mesh, vtkUnstructuredGrid* grid);
 void fromTriangleSurface(const TriangleSurface& surface, vtkPolyData* poly);
 
 /// The lattice graph as the sequencing code needs it, rebuilt from the output of
-/// vtkGLLatticeInfill: points; normals (point array Normals, 3 components); one edge per line
+/// vtkGLLatticeInfill: points; normals (point array NozzleAxis, 3 components); one edge per line
 /// cell (a polyline of n points gives n - 1 edges, vertex and polygon cells are ignored) with
 /// edgeSubgraph from cell array SubgraphId; layers = the distinct cell LayerId values sorted
 /// ascending, mapped to 0..L-1 (layerIndex holds the LayerId values, layerValues the mean point
@@ -50,6 +52,10 @@ void fromTriangleSurface(const TriangleSurface& surface, vtkPolyData* poly);
 /// needs edgeKind, the sequencing does not). α, β and levels are not restored. Throws
 /// GeoLatticeError naming the problem ("lattice has no SubgraphId cell array", ...).
 LatticeGraph toLatticeGraph(vtkPolyData* lattice);
+
+/// The nozzle axis of a lattice or toolpath: point array NozzleAxis, or (files written before it
+/// was renamed) Normals / the active normals; nullptr when none has 3 components.
+vtkDataArray* nozzleAxisOf(vtkPointData* pd);
 
 /// The skeleton tree from the output of vtkGLSkeletonTree: one node per point (node index =
 /// point data NodeId if present, which must then be a permutation of 0..N-1, else the point
@@ -78,10 +84,10 @@ struct ToolpathArrays {
 };
 
 /// The toolpath from the output of vtkGLToolpathPlanner: its points in point order (the printing
-/// order; cells are not used) with the point arrays Normals (3 components), Extrusion, FeedRate,
+/// order; cells are not used) with the point arrays NozzleAxis (3 components), Extrusion, FeedRate,
 /// MoveKind and LayerId. Throws GeoLatticeError naming the problem: an empty toolpath, a missing
 /// array or one with the wrong number of components ("run GL Toolpath Planner first"), a point
-/// with a NaN coordinate or a NaN or zero normal (naming its index), non-finite extrusion, a
+/// with a NaN coordinate or a NaN or zero nozzle axis (naming its index), non-finite extrusion, a
 /// feed rate that is not finite and > 0 after the first point, a MoveKind other than 0, 1 or 2.
 ToolpathArrays toToolpathArrays(vtkPolyData* toolpath);
 

@@ -29,7 +29,7 @@
  * piece as the runs of its sub-graph's tour in it.
  *
  * Input port 0: vtkPolyData, the output of vtkGLLatticeInfill (line cells with cell arrays
- *         `SubgraphId`, `LayerId`, point arrays `Normals`, `Gamma`).
+ *         `SubgraphId`, `LayerId`, point arrays `NozzleAxis`, `Gamma`).
  * Input port 1: vtkPolyData, the output of vtkGLSkeletonTree built from the same lattice (point
  *         data `LayerId`, optionally `NodeId`, `SubgraphLength`; line cells (lower, upper)).
  * Output port 0 (Sequenced Lattice): the lattice (shallow copy) with cell and point data

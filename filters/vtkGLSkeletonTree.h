@@ -10,7 +10,7 @@
  * nodes. It drives the printing order (vtkGLPrintSequencer).
  *
  * Input port 0: vtkPolyData, the output of vtkGLLatticeInfill (line cells with cell arrays
- *         `SubgraphId`, `LayerId`, point arrays `Normals`, `Gamma`).
+ *         `SubgraphId`, `LayerId`, point arrays `NozzleAxis`, `Gamma`).
  * Input port 1: vtkUnstructuredGrid of tets with point array `Gamma` (the output of
  *         vtkGLGeodesicDistanceFields that the layers were sliced from).
  * Output: vtkPolyData, one point per node (node index = sub-graph id) at the length-weighted

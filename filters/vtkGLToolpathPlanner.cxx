@@ -119,7 +119,7 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(N);
   vtkNew<vtkDoubleArray> normals;
-  normals->SetName(gl::arrays::Normals);
+  normals->SetName(gl::arrays::NozzleAxis);
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(N);
   auto kind = intArray(gl::arrays::MoveKind, N);
@@ -141,7 +141,7 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   }
   out->SetPoints(points);
   vtkPointData* pd = out->GetPointData();
-  pd->SetNormals(normals);
+  pd->AddArray(normals);
   pd->AddArray(pointDoubles(gl::arrays::Thickness, path.thickness));
   pd->AddArray(pointDoubles(gl::arrays::Width, path.width));
   pd->AddArray(pointDoubles(gl::arrays::Extrusion, path.extrusion));
@@ -228,54 +228,6 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   count(gl::arrays::ToolpathSeconds, path.seconds);
 }
 
-/// The first `n` tuples of `a` in a new array of the same type and name.
-vtkSmartPointer<vtkAbstractArray> prefixOf(vtkAbstractArray* a, vtkIdType n) {
-  auto b = vtkSmartPointer<vtkAbstractArray>::Take(a->NewInstance());
-  b->SetName(a->GetName());
-  b->SetNumberOfComponents(a->GetNumberOfComponents());
-  b->InsertTuples(0, n, 0, a);
-  return b;
-}
-
-/// The toolpath printed up to point `last` (inclusive): points 0..last, the cells that start
-/// before it, the last of them cut there; all field data.
-void cutToolpath(vtkPolyData* full, vtkIdType last, vtkPolyData* out) {
-  const vtkIdType n = last + 1;
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->GetData()->InsertTuples(0, n, 0, full->GetPoints()->GetData());
-  out->SetPoints(points);
-  vtkPointData* from = full->GetPointData();
-  vtkPointData* pd = out->GetPointData();
-  for (int i = 0; i < from->GetNumberOfArrays(); ++i) {
-    pd->AddArray(prefixOf(from->GetAbstractArray(i), n));
-  }
-  pd->SetNormals(vtkDataArray::SafeDownCast(pd->GetAbstractArray(geolattice::arrays::Normals)));
-  pd->SetActiveScalars(geolattice::arrays::MoveKind);
-
-  vtkNew<vtkCellArray> lines;
-  vtkIdType cells = 0;
-  vtkIdType count;
-  const vtkIdType* ids;
-  vtkCellArray* fullLines = full->GetLines();
-  for (vtkIdType c = 0; c < fullLines->GetNumberOfCells(); ++c) {
-    fullLines->GetCellAtId(c, count, ids);
-    if (count == 0 || ids[0] >= last) {
-      break;  // cells are in printing order
-    }
-    const vtkIdType kept = std::min(count, last - ids[0] + 1);
-    lines->InsertNextCell(kept, ids);
-    ++cells;
-  }
-  out->SetLines(lines);
-  vtkCellData* fromCells = full->GetCellData();
-  vtkCellData* cd = out->GetCellData();
-  for (int i = 0; i < fromCells->GetNumberOfArrays(); ++i) {
-    cd->AddArray(prefixOf(fromCells->GetAbstractArray(i), cells));
-  }
-  cd->SetActiveScalars(geolattice::arrays::MoveKind);
-  out->GetFieldData()->ShallowCopy(full->GetFieldData());
-}
 /// The core options of the filter's parameters (checked by RequestInformation).
 gl::ToolpathOptions toolpathOptions(vtkGLToolpathPlanner* f) {
   gl::ToolpathOptions o;
@@ -343,21 +295,6 @@ int vtkGLToolpathPlanner::RequestInformation(vtkInformation* request,
       })) {
     return 0;
   }
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  // The toolpath's time is the print progress p in [0, 1]: the point count is unknown until the
-  // path is planned in RequestData.
-  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
-  outInfo->Remove(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
-  if (this->NumberOfTimeSteps > 0) {
-    const int n = std::max(this->NumberOfTimeSteps, 2);
-    std::vector<double> steps(static_cast<size_t>(n));
-    for (int k = 0; k < n; ++k) {
-      steps[k] = static_cast<double>(k) / (n - 1);
-    }
-    const double range[2] = {0.0, 1.0};
-    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_STEPS(), steps.data(), n);
-    outInfo->Set(vtkStreamingDemandDrivenPipeline::TIME_RANGE(), range, 2);
-  }
   return 1;
 }
 
@@ -365,7 +302,6 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
                                       vtkInformationVector* outputVector) {
   // Collective in an MPI run: the lattice and the skeleton on one process (vtkGLParallel.h).
   const gl::ParallelInputs inputs(inputVector, 2, outputVector);
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
   if (!inputs.Computes()) {
@@ -373,68 +309,35 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
   }
   vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
   vtkPolyData* skeleton = inputs.Get<vtkPolyData>(1);
-  const int ok = gl::runRequest(this, outputVector, [&] {
-    const bool cached =
-        this->Planned && lattice && skeleton && lattice->GetMTime() == this->PlannedLatticeTime &&
-        skeleton->GetMTime() == this->PlannedSkeletonTime && this->GetMTime() == this->PlannedMTime;
-    if (!cached) {
-      this->Planned = nullptr;
-      const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
-      if (graph.edgeKind.size() != graph.edges.size()) {
-        throw gl::GeoLatticeError(std::string("the lattice has no ") + gl::arrays::EdgeKind +
-                                  " cell array (alpha, beta or boundary edge, written by GL "
-                                  "Lattice Infill; the trimming needs it)");
-      }
-      const std::vector<int> order = printOrderOf(lattice);
-      gl::SkeletonTree tree = gl::toSkeletonTree(skeleton);
-      gl::matchSkeletonToLattice(tree, graph);
-      gl::checkAbort(this, 0.1);
-
-      gl::ToolpathOptions options = toolpathOptions(this);
-      options.progress = gl::progressRange(this, 0.1, 0.8);
-      options.shouldAbort = gl::abortFlag(this);
-      gl::ToolpathPieces pieces;
-      const bool split = piecesOf(lattice, graph.edges.size(), pieces);
-      const gl::Toolpath path =
-          gl::planToolpath(graph, tree, order, options, split ? &pieces : nullptr);
-      gl::checkAbort(this, 0.8);
-
-      auto planned = vtkSmartPointer<vtkPolyData>::New();
-      buildToolpath(path, graph, planned);
-      gl::checkAbort(this, 0.95);
-      if (vtkDataArray* edges = lattice->GetFieldData()->GetArray(gl::arrays::SkeletonEdges)) {
-        planned->GetFieldData()->AddArray(edges);
-      }
-      this->Planned = planned;
-      this->PlannedLatticeTime = lattice->GetMTime();
-      this->PlannedSkeletonTime = skeleton->GetMTime();
-      this->PlannedMTime = this->GetMTime();
+  return gl::runRequest(this, outputVector, [&] {
+    const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
+    if (graph.edgeKind.size() != graph.edges.size()) {
+      throw gl::GeoLatticeError(std::string("the lattice has no ") + gl::arrays::EdgeKind +
+                                " cell array (alpha, beta or boundary edge, written by GL "
+                                "Lattice Infill; the trimming needs it)");
     }
+    const std::vector<int> order = printOrderOf(lattice);
+    gl::SkeletonTree tree = gl::toSkeletonTree(skeleton);
+    gl::matchSkeletonToLattice(tree, graph);
+    gl::checkAbort(this, 0.1);
 
-    // The print replay: at time p the points 0 .. round(p (N - 1)).
-    const vtkIdType N = this->Planned->GetNumberOfPoints();
-    vtkIdType last = N - 1;
-    const bool timed = this->NumberOfTimeSteps > 0 &&
-                       outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP());
-    const double p =
-        timed ? outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_TIME_STEP()) : 1.0;
-    if (std::isfinite(p) && p < 1) {
-      last = static_cast<vtkIdType>(std::llround(std::max(p, 0.0) * static_cast<double>(N - 1)));
-    }
-    if (last >= N - 1) {
-      output->ShallowCopy(this->Planned);
-    } else {
-      cutToolpath(this->Planned, last, output);
-    }
-    if (timed) {
-      output->GetInformation()->Set(vtkDataObject::DATA_TIME_STEP(), p);
+    gl::ToolpathOptions options = toolpathOptions(this);
+    options.progress = gl::progressRange(this, 0.1, 0.8);
+    options.shouldAbort = gl::abortFlag(this);
+    gl::ToolpathPieces pieces;
+    const bool split = piecesOf(lattice, graph.edges.size(), pieces);
+    const gl::Toolpath path =
+        gl::planToolpath(graph, tree, order, options, split ? &pieces : nullptr);
+    gl::checkAbort(this, 0.8);
+
+    buildToolpath(path, graph, output);
+    gl::addFieldArray(output->GetFieldData(), gl::arrays::ToolpathFilamentDiameter,
+                      {this->FilamentDiameter});
+    if (vtkDataArray* edges = lattice->GetFieldData()->GetArray(gl::arrays::SkeletonEdges)) {
+      output->GetFieldData()->AddArray(edges);
     }
     this->UpdateProgress(1.0);
   });
-  if (output->GetNumberOfPoints() == 0) {
-    this->Planned = nullptr;  // failed or aborted: plan again next time
-  }
-  return ok;
 }
 
 void vtkGLToolpathPlanner::PrintSelf(ostream& os, vtkIndent indent) {
@@ -455,5 +358,4 @@ void vtkGLToolpathPlanner::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "MaximumElements: " << this->MaximumElements << "\n";
   os << indent << "MaxAxisTilt: " << this->MaxAxisTilt << " deg\n";
   os << indent << "TiltBlendLength: " << this->TiltBlendLength << " mm\n";
-  os << indent << "NumberOfTimeSteps: " << this->NumberOfTimeSteps << "\n";
 }

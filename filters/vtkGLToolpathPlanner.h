@@ -2,7 +2,7 @@
  * @class   vtkGLToolpathPlanner
  * @brief   The printing path of the whole part: the sub-graphs in printing order, each printed
  *          as closed crossover-free Euler tours, with layer thickness, extrusion, nozzle axes
- *          and safe air moves between them; a time-dependent output replays the print.
+ *          and safe air moves between them (GL Toolpath Replay replays it over time).
  *
  * Paper Section 3.2 (Figs. 14-18, Eqs. 14-15), core/toolpath/ToolpathPlanner.h: zero-length
  * lattice edges are contracted, each sub-graph is trimmed to an Eulerian graph and printed as
@@ -25,7 +25,7 @@
  *
  * Input port 0: vtkPolyData, the Sequenced Lattice output of vtkGLPrintSequencer: the lattice
  *         (line cells with cell arrays `SubgraphId`, `LayerId`, `EdgeKind` (the trimming keeps
- *         or drops boundary edges), point arrays `Normals`, `Gamma`) with field data
+ *         or drops boundary edges), point arrays `NozzleAxis`, `Gamma`) with field data
  *         `SequenceOrder` (sub-graph id per position), which is the printing order used. Its
  *         field data `SkeletonEdges` is passed to the output.
  * Input port 1: vtkPolyData, the skeleton of the same lattice: the output of vtkGLSkeletonTree or
@@ -36,7 +36,7 @@
  *   with few cells and can be tubed, thresholded and coloured by cell MoveKind without
  *   interpolation across kinds.
  *   - point data (the move that ends at the point; the first point is the start, MoveKind Air):
- *     `Normals` (3 components: unit nozzle axis; the active normals), `Thickness` (h, mm, 0 on air
+ *     `NozzleAxis` (3 components: unit nozzle axis; not the active normals, which ParaView would light the lines with), `Thickness` (h, mm, 0 on air
  *     moves), `Width` (w, mm, 0 on air moves and on the way back from a perimeter, which does
  *     not extrude), `Extrusion` (cumulative filament E, mm, after the retractions and primes),
  *     `FeedRate` (mm/s), `MoveKind` (int: 0 print, 1 perimeter, 2 air; geolattice::movekind),
@@ -50,7 +50,8 @@
  *     `ToolpathTours`, `ToolpathCrossings` (self-crossings of the tours, 0 expected),
  *     `ToolpathSplitSubgraphs` (sub-graphs printed as more than one tour),
  *     `ToolpathContractedEdges`, `ToolpathTrimmedEdges`, `ToolpathTrimmedLength` (mm),
- *     `ToolpathFilament` (mm), `ToolpathVolume` (mm³), `ToolpathThicknessDeviation` (2 values:
+ *     `ToolpathFilament` (mm), `ToolpathFilamentDiameter` (mm, the parameter),
+ *     `ToolpathVolume` (mm³), `ToolpathThicknessDeviation` (2 values:
  *     min and max of e = (h - φ)/φ), `ToolpathThicknessDeviationPerLayer` (3 components min,
  *     mean, max per lattice layer 0..L-1), `ToolpathCappedVertices`,
  *     `ToolpathUnsupportedVertices`, `ToolpathRotationSteps`, `ToolpathSubdivisionPoints`,
@@ -58,14 +59,8 @@
  *     `ToolpathUnclearedStations`, `ToolpathMaxAxisTilt` (degrees), `ToolpathReplannedHops`
  *     (hops onto an upper node that collided and went over the safe box), `ToolpathSeconds` (planning wall
  *     time) and `SkeletonEdges` from input 0; always of the whole toolpath.
- * Time (print replay): unless NumberOfTimeSteps is 0 the output advertises NumberOfTimeSteps
- *   time steps p = k / (NumberOfTimeSteps - 1) in [0, 1] (TIME_STEPS, TIME_RANGE): the print
- *   progress by point count. (The point count is only known after planning, so the steps cannot
- *   be point indices.) When a time p is requested (UPDATE_TIME_STEP) the output holds the points
- *   0 .. round(p (N - 1)) and the cells printed up to there (the last one cut), with
- *   DATA_TIME_STEP = p; with no time requested, or p >= 1, the whole toolpath. The planned path
- *   is cached: a new time only re-cuts it; the planner runs again when an input or a parameter
- *   changes.
+ * No time: the output is always the whole toolpath (GL Toolpath Replay adds the print replay's
+ *   time steps).
  * Parameters: PathWidth (w, mm, default 0.6, > 0), FilamentDiameter (mm, default 1.75, > 0; the
  *   core takes the radius r_m = diameter / 2), FlowCorrection (μ, default 0.95, in (0, 1]),
  *   PrintFeedRate (f_p, mm/s, default 10, > 0), AirFeedRate (mm/s, default 50, > 0),
@@ -76,7 +71,7 @@
  *   40e6: more estimated stations is refused before planning), the nozzle (vtkGLNozzle,
  *   shared with the sequencer and the verifier),
  *   MaxAxisTilt (degrees, default 15, in [0, 60]; 0 = axis ∇γ everywhere), TiltBlendLength (mm,
- *   default 5, >= 0), NumberOfTimeSteps (default 200; 0 = no time steps, always the whole path).
+ *   default 5, >= 0).
  * Errors (an empty lattice or skeleton, missing arrays (EdgeKind included), no SequenceOrder
  * ("run GL Print Sequencer first"), an order that is not a permutation of the sub-graphs, a
  * skeleton that does not match the lattice, a bad parameter, or what the core rejects, e.g. odd
@@ -193,13 +188,6 @@ public:
   vtkGetMacro(TiltBlendLength, double);
   ///@}
 
-  ///@{
-  /// Time steps advertised for the print replay (default 200; 0 = none, always the whole path;
-  /// 1 is taken as 2).
-  vtkSetClampMacro(NumberOfTimeSteps, int, 0, 100000);
-  vtkGetMacro(NumberOfTimeSteps, int);
-  ///@}
-
 protected:
   vtkGLToolpathPlanner();
   ~vtkGLToolpathPlanner() override;
@@ -224,19 +212,10 @@ protected:
   double MaximumElements;
   double MaxAxisTilt;
   double TiltBlendLength;
-  int NumberOfTimeSteps = 200;
 
 private:
   vtkGLToolpathPlanner(const vtkGLToolpathPlanner&) = delete;
   void operator=(const vtkGLToolpathPlanner&) = delete;
-
-  /// The parameters as the cache compares them.
-
-  // Cache of the last successful planning: a new requested time only re-cuts it.
-  vtkSmartPointer<vtkPolyData> Planned;  ///< the whole toolpath
-  vtkMTimeType PlannedLatticeTime = 0;   ///< MTime of input 0 it was planned from
-  vtkMTimeType PlannedSkeletonTime = 0;  ///< MTime of input 1
-  vtkMTimeType PlannedMTime = 0;         ///< this filter's MTime (parameters, nozzle)
 };
 
 #endif

@@ -3,7 +3,7 @@
  * @brief   Base of the machine-program writers (GL URScript Writer, GL G-Code Writer, GL Waypoint
  *          CSV Writer): a toolpath input, a file name, and the safety gate.
  *
- * Input: vtkPolyData, the output of vtkGLToolpathPlanner (point arrays Normals, Extrusion,
+ * Input: vtkPolyData, the output of vtkGLToolpathPlanner (point arrays NozzleAxis, Extrusion,
  * FeedRate, MoveKind, LayerId; field data ToolpathCollisionFree, the planner's verdict). A
  * time-dependent input (the planner's replay) is written whole.
  *

@@ -15,7 +15,7 @@
  *
  * Input: vtkPolyData, the output of vtkGLToolpathPlanner: its points in point order (the
  *   printing order; cells are not used), in mm in the platform (part) frame, with the point
- *   arrays `Normals` (3 components, nozzle axis), `Extrusion` (cumulative filament, mm),
+ *   arrays `NozzleAxis` (3 components, nozzle axis), `Extrusion` (cumulative filament, mm),
  *   `FeedRate` (mm/s), `MoveKind` (0 print, 1 perimeter, 2 air) and `LayerId`. A time-dependent
  *   input (the planner's print replay) is requested at the end of its time range, i.e. the
  *   whole toolpath, whatever time the pipeline asks for: a program is always of the whole path.

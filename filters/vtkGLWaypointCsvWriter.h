@@ -8,7 +8,7 @@
  * (-1 on air moves); numbers with at most 6 decimals.
  *
  * Input: vtkPolyData, the output of vtkGLToolpathPlanner (points in point order = printing
- *   order, point arrays `Normals`, `Extrusion`, `FeedRate`, `MoveKind`, `LayerId`; see
+ *   order, point arrays `NozzleAxis`, `Extrusion`, `FeedRate`, `MoveKind`, `LayerId`; see
  *   vtkGLURScriptWriter). A time-dependent input is requested at the end of its time range:
  *   the whole toolpath.
  * Output: FileName (e.g. waypoints.csv), written to a temporary name first and renamed when

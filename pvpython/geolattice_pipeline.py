@@ -5,7 +5,8 @@ Builds the same pipeline as the `geolattice` command-line tool from the plugin's
     GLMeshReader -> GLPlaceOnPlatform -> GLTetrahedralizeSurface -> GLGeodesicDistanceFields
     -> GLCurvedLayerSlicer -> GLLatticeInfill -> GLSkeletonTree (with the fields)
     -> GLPrintSequencer -> GLCollisionVerifier, GLPrintSequencer -> GLToolpathPlanner ->
-    GLCollisionVerifier (time = PointIndex), and GLOverhangAnalysis on the fields
+    GLCollisionVerifier (time = PointIndex), GLToolpathPlanner -> GLToolpathReplay, GLToolpathPlanner + its verifier -> GLPrintSummary, and
+    GLOverhangAnalysis on the fields
 
 and saves the tet mesh and the fields as VTK XML files (binary mode: ParaView 5.11 on Debian 12
 cannot read appended-mode files). Run it with pvpython (no X server needed):
@@ -55,6 +56,8 @@ STAGES = [
     ("verifier", "GLCollisionVerifier", {"Input": ("sequencer", 0)}),
     ("toolpath", "GLToolpathPlanner", {"Input": ("sequencer", 0), "Skeleton": ("sequencer", 1)}),
     ("toolpath_verifier", "GLCollisionVerifier", {"Input": ("toolpath", 0)}),
+    ("summary", "GLPrintSummary", {"Input": ("toolpath", 0), "Verifier": ("toolpath_verifier", 0)}),
+    ("replay", "GLToolpathReplay", {"Input": ("toolpath", 0)}),
 ]
 
 # build_pipeline keywords -> (stage key(s), property). Anything not given keeps the filter's
@@ -84,16 +87,18 @@ PARAMETERS = {
     "filament_diameter": (("toolpath",), "FilamentDiameter"),
     "flow_correction": (("toolpath",), "FlowCorrection"),
     "support_perimeter": (("toolpath",), "SupportPerimeter"),
-    "time_steps": (("toolpath",), "NumberOfTimeSteps"),
+    "time_steps": (("replay",), "NumberOfTimeSteps"),
+    "filament_density": (("summary",), "FilamentDensity"),
 }
 
 
 def build_pipeline(model, lattice_width=None, **parameters):
     """Returns a dict of the pipeline's proxies by key (see STAGES): reader, place, tets, fields, layers,
     overhang, lattice, skeleton, sequencer (output ports 0 Sequenced Lattice, 1 Sequenced Skeleton,
-    2 Print Order), verifier (the sequenced lattice, time PrintOrder), toolpath (GLToolpathPlanner; its
-    time steps 0..1 replay the print: e.g. toolpath.UpdatePipeline(0.5) for the part printed by then)
-    and toolpath_verifier (time PointIndex, air points no material). For a tet-mesh model "tets" is the
+    2 Print Order), verifier (the sequenced lattice, time PrintOrder), toolpath (GLToolpathPlanner, the whole
+    toolpath), toolpath_verifier (time PointIndex, air points no material) and replay (GLToolpathReplay:
+    its time steps 0..1 replay the print, e.g. replay.UpdatePipeline(0.5) for the part printed by then) and
+    summary (GLPrintSummary: a table of layers, print time, filament and the strict verdict). For a tet-mesh model "tets" is the
     placement. Keywords (PARAMETERS; lattice_width sets both widths) set properties; everything else
     keeps the filters' defaults, the same as the command line's. As on the command line, the first
     layer follows layer_interval unless first_layer is given."""

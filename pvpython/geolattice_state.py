@@ -5,7 +5,7 @@ linked views in one layout:
     lattice by SubgraphId | sequenced lattice by PrintOrder
 
 The overhang analysis, the collision checks, the print order and the toolpath are in the pipeline
-too, hidden (the animation time is set to the end: the toolpath's time is the print progress). Saving needs no X server:
+too, hidden (the animation time is set to the end: the print replay's time is the print progress). Saving needs no X server:
 
     pvpython pvpython/geolattice_state.py [MODEL] [-o docs/geolattice_y_shape.pvsm] [--screenshot x.png]
 
@@ -36,7 +36,7 @@ NAMES = {
     "reader": "Model", "place": "Placed on platform", "tets": "Tet mesh", "fields": "Geodesic fields",
     "layers": "Curved layers", "lattice": "Lattice", "skeleton": "Skeleton tree", "sequencer": "Print sequence",
     "verifier": "Collision check", "overhang": "Overhang", "toolpath": "Toolpath",
-    "toolpath_verifier": "Toolpath collision check",
+    "toolpath_verifier": "Toolpath collision check", "replay": "Print replay",
     "surface": "Part surface", "every4": "Layer index mod 4", "some_layers": "Every 4th layer",
 }
 # (view title, source key, output port, association, array): the coloured representation of each view.
@@ -142,7 +142,7 @@ def build_state(model=DEFAULT_MODEL, fit_size=0.0, edge_length=0.0, layer_interv
         _camera(view)
     for i, view in enumerate(views[1:]):
         simple.AddCameraLink(views[0], view, CAMERA_LINK % (i + 1))
-    if "toolpath" in p:  # its time steps are the print progress 0..1: start the GUI at the whole path
+    if "replay" in p:  # its time steps are the print progress 0..1: start the GUI at the whole path
         scene = simple.GetAnimationScene()
         views_of_scene = list(scene.ViewModules)
         scene.ViewModules = []  # a time change renders the scene's views, which needs an X server

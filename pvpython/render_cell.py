@@ -339,7 +339,7 @@ def main():
     pd = toolpath.GetPointData()
     kind = numpy_support.vtk_to_numpy(pd.GetArray("MoveKind")).astype(int)
     layer = numpy_support.vtk_to_numpy(pd.GetArray("LayerId")).astype(float)
-    normals = numpy_support.vtk_to_numpy(pd.GetArray("Normals")).astype(float)
+    normals = numpy_support.vtk_to_numpy(pd.GetArray("NozzleAxis") or pd.GetArray("Normals")).astype(float)
     n_points = len(pts_mm)
     if len(movel) != n_points:
         raise SystemExit("render_cell: %d movel + start in the program but %d toolpath points: different runs?"

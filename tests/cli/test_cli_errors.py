@@ -633,6 +633,21 @@ class CliVerifyTest(unittest.TestCase):
         self.assertGreaterEqual(tp["tours"], report["sequence"]["subgraphs"])
         self.assertEqual(tp["stations"], tp["points"])  # every toolpath point is a nozzle station
         self.assertLessEqual(tp["thickness_dev_min"], tp["thickness_dev_max"])
+        # GL Print Summary's table (what the GUI's spreadsheet shows) agrees with the stage's report.
+        summary = report["summary"]
+        self.assertEqual(summary["points"], tp["points"])
+        self.assertEqual(summary["tours"], tp["tours"])
+        self.assertEqual(summary["retractions"], tp["retractions"])
+        self.assertTrue(0 < summary["layers"] <= report["layers"]["count"])
+        self.assertAlmostEqual(summary["filament_m"] * 1000, tp["filament_mm"], places=6)
+        self.assertAlmostEqual(summary["air_length_mm"], tp["air_length_mm"], delta=1e-6 * tp["air_length_mm"])
+        self.assertEqual(bool(summary["collision_free"]), tp["collision_free"])
+        self.assertEqual(summary["stations"], tp["stations"])
+        self.assertEqual(summary["colliding_stations"], tp["violating_stations"])
+        self.assertEqual(summary["plate_stations"], tp["plate_stations"])
+        self.assertGreater(summary["print_time_min"], tp["print_length_mm"] / tp["print_speed_mm_s"] / 60 * 0.99)
+        self.assertGreater(summary["filament_g"], 0)
+        self.assertIsInstance(summary["verdict"], str)
         for name in ("toolpath.vtp", "toolpath.pvd", "toolpath_collisions.vtp"):
             self.assertTrue(os.path.isfile(os.path.join(self.out, name)), name)
 
@@ -750,7 +765,7 @@ class CliProgressTest(unittest.TestCase):
     progress as 25% 50% 75% on the long stages; -q prints nothing."""
 
     STAGES = ["input", "mesh", "gdf", "layers", "overhang", "lattice", "skeleton", "sequence", "verify", "toolpath",
-              "verify toolpath", "program"]
+              "verify toolpath", "summary", "program"]
     WITH_PERCENT = {"mesh", "gdf", "lattice", "sequence", "toolpath", "program"}
 
     def setUp(self):

@@ -3,7 +3,7 @@
 /**
  * @file GLTestToolpath.h
  * @brief Test helper: a small hand-made toolpath with the point arrays of vtkGLToolpathPlanner's
- * output (Normals, Extrusion, FeedRate, MoveKind, LayerId), for the program writers' tests.
+ * output (NozzleAxis, Extrusion, FeedRate, MoveKind, LayerId), for the program writers' tests.
  *
  * `loops` square loops of 10 mm side, one per layer at z = 1, 2, …, each printed from an air
  * move onto its first corner (10 points per side); normals tilted by `tiltDeg` about +x on the
@@ -48,7 +48,7 @@ inline vtkSmartPointer<vtkPolyData> makeTestToolpath(int loops = 2, double tiltD
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkDoubleArray> normals, extrusion, feed;
-  normals->SetName(arrays::Normals);
+  normals->SetName(arrays::NozzleAxis);
   normals->SetNumberOfComponents(3);
   extrusion->SetName(arrays::Extrusion);
   feed->SetName(arrays::FeedRate);
@@ -90,7 +90,7 @@ inline vtkSmartPointer<vtkPolyData> makeTestToolpath(int loops = 2, double tiltD
   lines->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
   pd->SetPoints(points);
   pd->SetLines(lines);
-  pd->GetPointData()->SetNormals(normals);
+  pd->GetPointData()->AddArray(normals);
   pd->GetPointData()->AddArray(extrusion);
   pd->GetPointData()->AddArray(feed);
   pd->GetPointData()->AddArray(kind);

@@ -12,6 +12,8 @@
 #include "vtkGLMeshReader.h"
 #include "vtkGLOverhangAnalysis.h"
 #include "vtkGLPedestal.h"
+#include "vtkGLToolpathReplay.h"
+#include "vtkGLPrintSummary.h"
 #include "vtkGLPlaceOnPlatform.h"
 #include "vtkGLPrintSequencer.h"
 #include "vtkGLSkeletonTree.h"
@@ -71,6 +73,16 @@ TEST(ErrorContract, EveryFilterReturnsFalseOnFailure) {
          auto f = withEmptyInputs<vtkGLPedestal>(false);
          vtkGLPedestal::SafeDownCast(f)->SetHeight(5);
          return f;
+       }},
+      {"GL Print Summary",
+       [] {
+         auto f = vtkSmartPointer<vtkGLPrintSummary>::New();
+         f->SetInputDataObject(0, vtkSmartPointer<vtkPolyData>::New());
+         return vtkSmartPointer<vtkAlgorithm>(f);
+       }},
+      {"GL Toolpath Replay",
+       [] {
+         return withEmptyInputs<vtkGLToolpathReplay>(false);
        }},
       {"GL Tetrahedralize Surface",
        [] {

@@ -1,5 +1,5 @@
 // vtkGLCollisionVerifier on hand-built towers: two vertical stacks of short horizontal segments
-// 3 mm apart (Normals +z). Printing tower A completely before tower B collides at NA 60;
+// 3 mm apart (NozzleAxis +z). Printing tower A completely before tower B collides at NA 60;
 // alternating layer by layer does not. Cell and point time arrays, the output arrays, and bad input.
 #include "GLTestErrorObserver.h"
 #include "GLTestProgress.h"
@@ -41,7 +41,7 @@ double field(vtkDataObject* d, const char* name) {
 }
 
 /// Towers A (x = 0) and B (x = 3): at z = 0, 1, .., kLayers - 1 a 1 mm segment along x (own
-/// points, one line cell each), Normals +z. Cell array "PrintOrder" = time(tower, layer), point
+/// points, one line cell each), NozzleAxis +z. Cell array "PrintOrder" = time(tower, layer), point
 /// array "PointTime" the same per point. Cells: A's layers, then B's.
 vtkSmartPointer<vtkPolyData> towers(const std::function<int(int, int)>& time,
                                     double spacing = 3.0) {
@@ -49,7 +49,7 @@ vtkSmartPointer<vtkPolyData> towers(const std::function<int(int, int)>& time,
   vtkNew<vtkPoints> points;
   vtkNew<vtkCellArray> lines;
   vtkNew<vtkDoubleArray> normals;
-  normals->SetName(arrays::Normals);
+  normals->SetName(arrays::NozzleAxis);
   normals->SetNumberOfComponents(3);
   vtkNew<vtkIntArray> cellTime, pointTime;
   cellTime->SetName(arrays::PrintOrder);
@@ -70,7 +70,7 @@ vtkSmartPointer<vtkPolyData> towers(const std::function<int(int, int)>& time,
   }
   pd->SetPoints(points);
   pd->SetLines(lines);
-  pd->GetPointData()->SetNormals(normals);
+  pd->GetPointData()->AddArray(normals);
   pd->GetPointData()->AddArray(pointTime);
   pd->GetCellData()->AddArray(cellTime);
   return pd;
@@ -314,9 +314,8 @@ TEST(vtkGLCollisionVerifier, BadInputIsReported) {
   vtkNew<vtkPolyData> empty;
   expectEmptyWithError(verify(empty), "empty input");
   auto noNormals = towers(towerByTower);
-  noNormals->GetPointData()->SetNormals(nullptr);
-  noNormals->GetPointData()->RemoveArray(arrays::Normals);
-  expectEmptyWithError(verify(noNormals), "input has no Normals point array");
+  noNormals->GetPointData()->RemoveArray(arrays::NozzleAxis);
+  expectEmptyWithError(verify(noNormals), "input has no NozzleAxis point array");
   expectEmptyWithError(verify(towers(towerByTower), 60.0,
                               [](vtkGLCollisionVerifier* f) { f->SetTimeArrayName("NoSuchTime"); }),
                        "input has no cell or point array 'NoSuchTime'");
@@ -331,7 +330,7 @@ TEST(vtkGLCollisionVerifier, BadInputIsReported) {
   fractional->GetCellData()->AddArray(t);
   expectEmptyWithError(verify(fractional), "print times must be integers");
   auto zeroNormal = towers(towerByTower);
-  zeroNormal->GetPointData()->GetNormals()->SetTuple3(0, 0, 0, 0);
+  zeroNormal->GetPointData()->GetArray(arrays::NozzleAxis)->SetTuple3(0, 0, 0, 0);
   expectEmptyWithError(verify(zeroNormal), "normal");
 }
 

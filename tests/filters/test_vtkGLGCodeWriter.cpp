@@ -48,7 +48,7 @@ size_t checkMoves(const std::string& text, vtkPolyData* path, bool bc, const Eig
   std::istringstream in(text);
   std::string line;
   vtkIdType i = 0;
-  vtkDataArray* normals = path->GetPointData()->GetArray(geolattice::arrays::Normals);
+  vtkDataArray* normals = path->GetPointData()->GetArray(geolattice::arrays::NozzleAxis);
   while (std::getline(in, line)) {
     if (line.rfind("G0 X", 0) != 0 && line.rfind("G1 X", 0) != 0) {
       continue;
@@ -210,8 +210,10 @@ TEST(vtkGLGCodeWriter, BadInputIsReported) {
               [](vtkGLGCodeWriter* w) { w->SetPivot(std::nan(""), 0, 0); });
   {
     auto path = makeTestToolpath();
-    path->GetPointData()->GetArray(geolattice::arrays::Normals)->SetTuple3(5, 0, std::nan(""), 1);
-    EXPECT_EQ(expectError(path, "toolpath point 5 has a NaN or zero normal", nothing),
+    path->GetPointData()
+        ->GetArray(geolattice::arrays::NozzleAxis)
+        ->SetTuple3(5, 0, std::nan(""), 1);
+    EXPECT_EQ(expectError(path, "toolpath point 5 has a NaN or zero nozzle axis", nothing),
               vtkErrorCode::UserError);
   }
   {

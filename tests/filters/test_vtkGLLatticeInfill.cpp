@@ -145,8 +145,8 @@ TEST(vtkGLLatticeInfill, BoxLayersGiveTheGridWithTheDocumentedArrays) {
                            arrays::Beta, arrays::SubgraphId}) {
     ASSERT_NE(pd->GetArray(name), nullptr) << name;
   }
-  ASSERT_NE(pd->GetNormals(), nullptr);
-  EXPECT_STREQ(pd->GetNormals()->GetName(), arrays::Normals);
+  ASSERT_NE(pd->GetArray(arrays::NozzleAxis), nullptr);
+  EXPECT_EQ(pd->GetNormals(), nullptr);  // not lit by the nozzle axis in ParaView
   vtkCellData* cd = out->GetCellData();
   for (const char* name :
        {arrays::EdgeKind, arrays::LayerId, arrays::SubgraphId, arrays::IsolineLevel}) {
@@ -174,7 +174,7 @@ TEST(vtkGLLatticeInfill, BoxLayersGiveTheGridWithTheDocumentedArrays) {
     EXPECT_EQ(degree[v], k == kind::VertexCrossing ? 4 : k == kind::VertexBoundaryHit ? 3 : 2);
     crossings += k == kind::VertexCrossing;
     EXPECT_NEAR(pd->GetArray(arrays::Gamma)->GetTuple1(v), out->GetPoint(v)[2], 1e-9);
-    EXPECT_NEAR(pd->GetNormals()->GetComponent(v, 2), 1.0, 1e-9);
+    EXPECT_NEAR(pd->GetArray(arrays::NozzleAxis)->GetComponent(v, 2), 1.0, 1e-9);
   }
   EXPECT_EQ(crossings, 3000);
 }
@@ -269,9 +269,9 @@ TEST(vtkGLLatticeInfill, WithoutNormalsAndGammaAndWithMinimumLength) {
   lattice->Update();
   vtkPolyData* out = lattice->GetOutput();
   EXPECT_EQ(out->GetPointData()->GetArray(arrays::Gamma), nullptr);
-  ASSERT_NE(out->GetPointData()->GetNormals(), nullptr);
+  ASSERT_NE(out->GetPointData()->GetArray(arrays::NozzleAxis), nullptr);
   for (vtkIdType v = 0; v < out->GetNumberOfPoints(); ++v) {
-    ASSERT_NEAR(out->GetPointData()->GetNormals()->GetComponent(v, 2), 1.0,
+    ASSERT_NEAR(out->GetPointData()->GetArray(arrays::NozzleAxis)->GetComponent(v, 2), 1.0,
                 1e-9);  // from the triangles
   }
   EXPECT_EQ(field(out, arrays::LatticeCrossings), 81.0 * 30);

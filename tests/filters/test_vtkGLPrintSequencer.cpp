@@ -65,13 +65,13 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name) {
 
 /// A lattice as vtkGLLatticeInfill writes it: `towers` columns of unit squares (one closed loop
 /// of 4 line cells = one sub-graph per tower and layer), `gap` mm between the squares' sides,
-/// layers at z = 1, 2, .., with Normals +z, Gamma = z. Sub-graph id = layer * towers + tower.
+/// layers at z = 1, 2, .., with NozzleAxis +z, Gamma = z. Sub-graph id = layer * towers + tower.
 vtkSmartPointer<vtkPolyData> towerLattice(int layers, int towers = 2, double gap = 2.0) {
   auto pd = vtkSmartPointer<vtkPolyData>::New();
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkDoubleArray> normals, gamma;
-  normals->SetName(arrays::Normals);
+  normals->SetName(arrays::NozzleAxis);
   normals->SetNumberOfComponents(3);
   gamma->SetName(arrays::Gamma);
   auto pointSubgraph = intArray(arrays::SubgraphId);
@@ -101,7 +101,7 @@ vtkSmartPointer<vtkPolyData> towerLattice(int layers, int towers = 2, double gap
   }
   pd->SetPoints(points);
   pd->SetLines(lines);
-  pd->GetPointData()->SetNormals(normals);
+  pd->GetPointData()->AddArray(normals);
   pd->GetPointData()->AddArray(gamma);
   pd->GetPointData()->AddArray(pointSubgraph);
   pd->GetCellData()->AddArray(layerId);
@@ -360,7 +360,7 @@ TEST(vtkGLPrintSequencer, CollisionsWithAnAncestorAreUnavoidable) {
   // One tower of two layers; the upper square is moved 4 mm to -x and its nozzle axis turned to
   // +x, so the lower square (its skeleton parent, printed first in every order) is in its nozzle.
   auto lattice = towerLattice(2, 1);
-  vtkDataArray* normals = lattice->GetPointData()->GetNormals();
+  vtkDataArray* normals = lattice->GetPointData()->GetArray(arrays::NozzleAxis);
   for (vtkIdType v = 4; v < 8; ++v) {
     double p[3];
     lattice->GetPoint(v, p);
@@ -489,9 +489,17 @@ TEST(vtkGLPrintSequencer, BadInputIsReported) {
   }
   {
     auto lattice = towerLattice(layers);
-    lattice->GetPointData()->SetNormals(nullptr);
+    lattice->GetPointData()->RemoveArray(arrays::NozzleAxis);
     SequenceRun run(lattice, towerSkeleton(layers), vtkGLPrintSequencer::A4, 45.0);
-    expectEmptyOutputs(run, "lattice has no Normals point array");
+    expectEmptyOutputs(run, "lattice has no NozzleAxis point array");
+  }
+  {
+    // A lattice written before the nozzle axis was renamed (point array Normals) still reads.
+    auto lattice = towerLattice(layers);
+    lattice->GetPointData()->GetArray(arrays::NozzleAxis)->SetName(arrays::Normals);
+    SequenceRun run(lattice, towerSkeleton(layers), vtkGLPrintSequencer::A4, 45.0);
+    EXPECT_GT(run.output(0)->GetNumberOfCells(), 0);
+    EXPECT_FALSE(run.errors->HasError());
   }
   {
     auto lattice = towerLattice(layers);

@@ -201,7 +201,7 @@ TEST(vtkGLSkeletonTree, ConversionsRestoreTheLatticeAndTheTree) {
   lines->InsertNextCell(3, ids);
   poly->SetLines(lines);
   vtkNew<vtkDoubleArray> normals, gamma;
-  normals->SetName(arrays::Normals);
+  normals->SetName(arrays::NozzleAxis);
   normals->SetNumberOfComponents(3);
   gamma->SetName(arrays::Gamma);
   for (int k = 0; k < 3; ++k) {
@@ -281,9 +281,8 @@ TEST(vtkGLSkeletonTree, BadInputIsReported) {
 
   auto noNormals = vtkSmartPointer<vtkPolyData>::New();
   noNormals->DeepCopy(lattice);
-  noNormals->GetPointData()->SetNormals(nullptr);
-  noNormals->GetPointData()->RemoveArray(arrays::Normals);
-  expectError(noNormals, fields, "lattice has no Normals point array");
+  noNormals->GetPointData()->RemoveArray(arrays::NozzleAxis);
+  expectError(noNormals, fields, "lattice has no NozzleAxis point array");
 
   // A lattice layer outside the tet mesh's γ range: no tet contains its sub-graph.
   auto lifted = vtkSmartPointer<vtkPolyData>::New();

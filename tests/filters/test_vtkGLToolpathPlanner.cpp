@@ -16,6 +16,8 @@
 #include "vtkGLSkeletonTree.h"
 #include "vtkGLTetrahedralizeSurface.h"
 #include "vtkGLToolpathPlanner.h"
+#include "vtkGLPrintSummary.h"
+#include "vtkGLToolpathReplay.h"
 
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
@@ -32,6 +34,8 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <gtest/gtest.h>
@@ -64,7 +68,7 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name) {
 }
 
 /// Two towers of unit squares (one closed loop of 4 line cells = one sub-graph per tower and
-/// layer), 2 mm apart, layers at z = 1, 2, .., Normals +z, Gamma = z, LayerId = 10 + layer (not
+/// layer), 2 mm apart, layers at z = 1, 2, .., NozzleAxis +z, Gamma = z, LayerId = 10 + layer (not
 /// 0-based, to see the lattice's LayerId pass through). Sub-graph id = layer * 2 + tower. No
 /// isoline ends on the squares: nothing is trimmed and there is no support perimeter.
 vtkSmartPointer<vtkPolyData> towerLattice(int layers) {
@@ -72,7 +76,7 @@ vtkSmartPointer<vtkPolyData> towerLattice(int layers) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   vtkNew<vtkDoubleArray> normals, gamma;
-  normals->SetName(arrays::Normals);
+  normals->SetName(arrays::NozzleAxis);
   normals->SetNumberOfComponents(3);
   gamma->SetName(arrays::Gamma);
   auto pointSubgraph = intArray(arrays::SubgraphId);
@@ -101,7 +105,7 @@ vtkSmartPointer<vtkPolyData> towerLattice(int layers) {
   }
   pd->SetPoints(points);
   pd->SetLines(lines);
-  pd->GetPointData()->SetNormals(normals);
+  pd->GetPointData()->AddArray(normals);
   pd->GetPointData()->AddArray(gamma);
   pd->GetPointData()->AddArray(pointSubgraph);
   pd->GetCellData()->AddArray(layerId);
@@ -161,13 +165,13 @@ void expectConsistentToolpath(vtkPolyData* path, vtkGLToolpathPlanner* planner) 
   const vtkIdType N = path->GetNumberOfPoints();
   ASSERT_GT(N, 2);
   vtkPointData* pd = path->GetPointData();
-  for (const char* name : {arrays::Normals, arrays::Thickness, arrays::Width, arrays::Extrusion,
+  for (const char* name : {arrays::NozzleAxis, arrays::Thickness, arrays::Width, arrays::Extrusion,
                            arrays::FeedRate, arrays::MoveKind, arrays::LayerId, arrays::SubgraphId,
                            arrays::PathIndex, arrays::PointIndex}) {
     ASSERT_NE(pd->GetArray(name), nullptr) << name;
     EXPECT_EQ(pd->GetArray(name)->GetNumberOfTuples(), N) << name;
   }
-  EXPECT_EQ(pd->GetNormals(), pd->GetArray(arrays::Normals));
+  EXPECT_EQ(pd->GetNormals(), nullptr);  // the nozzle axis does not light the lines
   for (const char* name :
        {arrays::MoveKind, arrays::PathIndex, arrays::LayerId, arrays::SubgraphId}) {
     ASSERT_NE(path->GetCellData()->GetArray(name), nullptr) << name;
@@ -216,7 +220,7 @@ void expectConsistentToolpath(vtkPolyData* path, vtkGLToolpathPlanner* planner) 
   for (vtkIdType i = 0; i < N; ++i) {
     EXPECT_EQ(pd->GetArray(arrays::PointIndex)->GetTuple1(i), i);
     double n[3];
-    pd->GetNormals()->GetTuple(i, n);
+    pd->GetArray(arrays::NozzleAxis)->GetTuple(i, n);
     EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-9) << i;
     const int k = static_cast<int>(kind->GetTuple1(i));
     ASSERT_TRUE(k == movekind::Print || k == movekind::Perimeter || k == movekind::Air) << k;
@@ -360,7 +364,6 @@ TEST(vtkGLToolpathPlanner, DefaultsAndPrintSelf) {
   EXPECT_EQ(f->GetRetraction(), 1.0);
   EXPECT_EQ(f->GetSupportPerimeter(), 1);
   EXPECT_EQ(f->GetToothLength(), 0.0);
-  EXPECT_EQ(f->GetNumberOfTimeSteps(), 200);
   EXPECT_EQ(f->GetMaxSegmentLength(), 1.0);
   EXPECT_EQ(f->GetNozzle()->GetNozzleAngle(), 45.0);
   EXPECT_EQ(f->GetNozzle()->GetNozzleLength(), 0.0);
@@ -371,18 +374,44 @@ TEST(vtkGLToolpathPlanner, DefaultsAndPrintSelf) {
   EXPECT_EQ(f->GetTiltBlendLength(), 5.0);
   std::ostringstream os;
   f->Print(os);
-  for (const char* text :
-       {"PathWidth: 0.6", "FilamentDiameter: 1.75", "SupportPerimeter: 1", "NumberOfTimeSteps: 200",
-        "MaxAxisTilt: 15", "TipFaceRadius: 0.5", "MaxSegmentLength: 1"}) {
+  for (const char* text : {"PathWidth: 0.6", "FilamentDiameter: 1.75", "SupportPerimeter: 1",
+                           "MaxAxisTilt: 15", "TipFaceRadius: 0.5", "MaxSegmentLength: 1"}) {
     EXPECT_NE(os.str().find(text), std::string::npos) << text;
   }
 }
 
-TEST(vtkGLToolpathPlanner, TimeStepsReplayThePrint) {
+// GL Toolpath Replay, on the planner's output (the tower fixtures above).
+TEST(vtkGLToolpathReplay, DefaultsAndPrintSelf) {
+  vtkNew<vtkGLToolpathReplay> f;
+  EXPECT_EQ(f->GetStepBy(), vtkGLToolpathReplay::Points);
+  EXPECT_EQ(f->GetNumberOfTimeSteps(), 200);
+  EXPECT_EQ(f->GetKeepUnprintedPoints(), 1);
+  std::ostringstream os;
+  f->Print(os);
+  for (const char* text :
+       {"StepBy: 0 (Points)", "NumberOfTimeSteps: 200", "KeepUnprintedPoints: 1"}) {
+    EXPECT_NE(os.str().find(text), std::string::npos) << text;
+  }
+}
+
+TEST(vtkGLToolpathReplay, TimeStepsReplayThePrint) {
   const int layers = 5;
   PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+  // The planner has no time: Apply in ParaView shows the whole toolpath.
   run.planner->UpdateInformation();
-  vtkInformation* info = run.planner->GetOutputInformation(0);
+  EXPECT_FALSE(
+      run.planner->GetOutputInformation(0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
+  vtkNew<vtkPolyData> full;
+  full->DeepCopy(run.output());
+  ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
+  const vtkIdType N = full->GetNumberOfPoints();
+  ASSERT_GT(N, 10);
+
+  vtkNew<vtkGLToolpathReplay> replay;
+  replay->SetInputConnection(run.planner->GetOutputPort());
+  run.errors->Observe(replay);
+  replay->UpdateInformation();
+  vtkInformation* info = replay->GetOutputInformation(0);
   ASSERT_TRUE(info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
   ASSERT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), 200);
   const double* steps = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
@@ -391,73 +420,170 @@ TEST(vtkGLToolpathPlanner, TimeStepsReplayThePrint) {
   const double* range = info->Get(vtkStreamingDemandDrivenPipeline::TIME_RANGE());
   EXPECT_EQ(range[0], 0.0);
   EXPECT_EQ(range[1], 1.0);
-
-  // Without a requested time: everything. Keep a copy to compare the prefixes with.
-  vtkNew<vtkPolyData> full;
-  full->DeepCopy(run.output());
-  ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
-  const vtkIdType N = full->GetNumberOfPoints();
-  ASSERT_GT(N, 10);
   vtkDataArray* seconds =
       run.planner->GetOutput()->GetFieldData()->GetArray(arrays::ToolpathSeconds);
 
-  vtkIdType previousPoints = 0, previousCells = 0;
-  for (double p : {0.0, 0.25, 0.5, 0.999, 1.0}) {
-    run.planner->UpdateTimeStep(p);
-    vtkPolyData* part = run.planner->GetOutput();
-    ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
-    const vtkIdType n = std::llround(p * (N - 1)) + 1;
-    ASSERT_EQ(part->GetNumberOfPoints(), n) << p;
-    EXPECT_EQ(part->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), p);
-    EXPECT_GE(part->GetNumberOfPoints(), previousPoints);
-    EXPECT_GE(part->GetNumberOfCells(), previousCells);
-    previousPoints = part->GetNumberOfPoints();
-    previousCells = part->GetNumberOfCells();
-    // The same points and point data as the whole path, cells cut at the last point.
-    for (vtkIdType i = 0; i < n; ++i) {
-      double a[3], b[3];
-      part->GetPoint(i, a);
-      full->GetPoint(i, b);
-      ASSERT_EQ(a[0], b[0]);
-      ASSERT_EQ(a[2], b[2]);
-      for (const char* name : {arrays::Extrusion, arrays::MoveKind, arrays::PointIndex}) {
-        ASSERT_EQ(part->GetPointData()->GetArray(name)->GetTuple1(i),
-                  full->GetPointData()->GetArray(name)->GetTuple1(i));
+  for (bool keep : {true, false}) {
+    replay->SetKeepUnprintedPoints(keep);
+    vtkIdType previousCells = 0;
+    for (double p : {0.0, 0.25, 0.5, 0.999, 1.0}) {
+      replay->UpdateTimeStep(p);
+      vtkPolyData* part = replay->GetOutput();
+      ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
+      const vtkIdType n = std::llround(p * (N - 1)) + 1;
+      // Kept points: all of them (the colour range of every point array is the whole print's);
+      // else the printed ones.
+      ASSERT_EQ(part->GetNumberOfPoints(), keep ? N : (part->GetNumberOfCells() ? n : 0)) << p;
+      EXPECT_EQ(part->GetInformation()->Get(vtkDataObject::DATA_TIME_STEP()), p);
+      EXPECT_GE(part->GetNumberOfCells(), previousCells);
+      previousCells = part->GetNumberOfCells();
+      if (keep) {
+        EXPECT_EQ(part->GetPointData()->GetArray(arrays::PointIndex)->GetRange()[1], N - 1.0);
+      }
+      for (vtkIdType i = 0; i < part->GetNumberOfPoints(); ++i) {
+        double a[3], b[3];
+        part->GetPoint(i, a);
+        full->GetPoint(i, b);
+        ASSERT_EQ(a[0], b[0]);
+        ASSERT_EQ(a[2], b[2]);
+        for (const char* name : {arrays::Extrusion, arrays::MoveKind, arrays::PointIndex}) {
+          ASSERT_EQ(part->GetPointData()->GetArray(name)->GetTuple1(i),
+                    full->GetPointData()->GetArray(name)->GetTuple1(i));
+        }
+      }
+      EXPECT_NE(part->GetPointData()->GetArray(arrays::NozzleAxis), nullptr);
+      vtkNew<vtkIdList> ids, fullIds;
+      for (vtkIdType c = 0; c < part->GetNumberOfCells(); ++c) {
+        part->GetCellPoints(c, ids);
+        full->GetCellPoints(c, fullIds);
+        EXPECT_EQ(ids->GetId(0), fullIds->GetId(0));
+        EXPECT_LE(ids->GetId(ids->GetNumberOfIds() - 1), n - 1);
+        EXPECT_EQ(part->GetCellData()->GetArray(arrays::MoveKind)->GetTuple1(c),
+                  full->GetCellData()->GetArray(arrays::MoveKind)->GetTuple1(c));
+      }
+      const double lastPoint = field(part, arrays::ReplayLastPoint);
+      if (part->GetNumberOfCells() > 0) {
+        part->GetCellPoints(part->GetNumberOfCells() - 1, ids);
+        EXPECT_EQ(ids->GetId(ids->GetNumberOfIds() - 1), n - 1)
+            << "the last cell ends at the last point";
+        EXPECT_EQ(lastPoint, n - 1.0);
+      } else {
+        EXPECT_EQ(lastPoint, -1.0);
+      }
+      // The field data describe the whole path, from the same planning.
+      EXPECT_EQ(part->GetFieldData()->GetArray(arrays::ToolpathSeconds), seconds)
+          << "planned again at " << p;
+    }
+    EXPECT_EQ(previousCells, full->GetNumberOfCells());
+  }
+
+  // Step by layer: one step per LayerId (10 + layer), the print cells of the layers up to it.
+  replay->SetStepBy(vtkGLToolpathReplay::Layers);
+  replay->SetKeepUnprintedPoints(false);  // ignored: layers keep every point
+  replay->UpdateInformation();
+  ASSERT_EQ(info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS()), layers);
+  EXPECT_EQ(info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS())[0], 10.0);
+  replay->UpdateTimeStep(11.0);
+  vtkPolyData* twoLayers = replay->GetOutput();
+  ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
+  EXPECT_EQ(twoLayers->GetNumberOfPoints(), N);
+  vtkIdType expected = 0;
+  vtkDataArray* fullLayer = full->GetCellData()->GetArray(arrays::LayerId);
+  for (vtkIdType c = 0; c < full->GetNumberOfCells(); ++c) {
+    expected += fullLayer->GetTuple1(c) >= 0 && fullLayer->GetTuple1(c) <= 11 ? 1 : 0;
+  }
+  EXPECT_GT(expected, 0);
+  EXPECT_EQ(twoLayers->GetNumberOfCells(), expected);
+  vtkDataArray* shownLayer = twoLayers->GetCellData()->GetArray(arrays::LayerId);
+  EXPECT_EQ(shownLayer->GetRange()[0], 10.0);
+  EXPECT_EQ(shownLayer->GetRange()[1], 11.0);
+
+  // A planner parameter change plans again, and the replay follows.
+  run.planner->SetPathWidth(0.5);
+  replay->SetStepBy(vtkGLToolpathReplay::Points);
+  replay->UpdateTimeStep(1.0);
+  ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
+  EXPECT_EQ(replay->GetOutput()->GetNumberOfCells(), full->GetNumberOfCells());
+  EXPECT_NE(replay->GetOutput()->GetFieldData()->GetArray(arrays::ToolpathSeconds), seconds);
+}
+
+TEST(vtkGLToolpathReplay, AnEmptyInputIsReported) {
+  vtkNew<vtkPolyData> empty;
+  vtkNew<vtkGLToolpathReplay> replay;
+  replay->SetInputData(empty);
+  vtkNew<GLTestErrorObserver> errors;
+  errors->Observe(replay);
+  EXPECT_EQ(replay->GetExecutive()->Update(), 0);
+  EXPECT_NE(errors->Errors().find("no toolpath to replay"), std::string::npos) << errors->Errors();
+}
+
+// GL Print Summary, on the planner's tower toolpath and its verifier.
+TEST(vtkGLPrintSummary, TheTableAgreesWithThePlannerAndTheVerifier) {
+  const int layers = 5;
+  PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+  vtkPolyData* path = run.output();
+  ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
+  vtkNew<vtkGLCollisionVerifier> verifier;
+  verifier->SetInputConnection(run.planner->GetOutputPort());
+  verifier->SetTimeArrayName(arrays::PointIndex);
+  verifier->GetNozzle()->SetNozzleAngle(60.0);
+  vtkNew<vtkGLPrintSummary> summary;
+  summary->SetInputConnection(0, run.planner->GetOutputPort());
+  summary->SetInputConnection(1, verifier->GetOutputPort());
+  run.errors->Observe(summary);
+  summary->Update();
+  ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
+  vtkTable* table = summary->GetOutput();
+  auto* key = vtkStringArray::SafeDownCast(table->GetColumnByName("Key"));
+  vtkDataArray* value = vtkDataArray::SafeDownCast(table->GetColumnByName("Value"));
+  ASSERT_NE(key, nullptr);
+  ASSERT_NE(value, nullptr);
+  ASSERT_NE(table->GetColumnByName("Quantity"), nullptr);
+  ASSERT_NE(table->GetColumnByName("Unit"), nullptr);
+  auto row = [&](const std::string& k) {
+    for (vtkIdType r = 0; r < table->GetNumberOfRows(); ++r) {
+      if (key->GetValue(r) == k) {
+        return value->GetTuple1(r);
       }
     }
-    EXPECT_EQ(part->GetPointData()->GetNormals(), part->GetPointData()->GetArray(arrays::Normals));
-    vtkNew<vtkIdList> ids, fullIds;
-    for (vtkIdType c = 0; c < part->GetNumberOfCells(); ++c) {
-      part->GetCellPoints(c, ids);
-      full->GetCellPoints(c, fullIds);
-      EXPECT_EQ(ids->GetId(0), fullIds->GetId(0));
-      EXPECT_LE(ids->GetId(ids->GetNumberOfIds() - 1), n - 1);
-      EXPECT_EQ(part->GetCellData()->GetArray(arrays::MoveKind)->GetTuple1(c),
-                full->GetCellData()->GetArray(arrays::MoveKind)->GetTuple1(c));
-    }
-    if (part->GetNumberOfCells() > 0) {
-      part->GetCellPoints(part->GetNumberOfCells() - 1, ids);
-      EXPECT_EQ(ids->GetId(ids->GetNumberOfIds() - 1), n - 1)
-          << "the last cell ends at the last point";
-    }
-    // The field data describe the whole path, from the same (cached) planning.
-    EXPECT_EQ(part->GetFieldData()->GetArray(arrays::ToolpathSeconds), seconds)
-        << "planned again at " << p;
-    EXPECT_EQ(field(part, arrays::ToolpathTours), field(full, arrays::ToolpathTours));
-  }
-  EXPECT_EQ(previousPoints, N);
-  EXPECT_EQ(previousCells, full->GetNumberOfCells());
+    ADD_FAILURE() << "no row " << k;
+    return std::nan("");
+  };
+  EXPECT_EQ(row("layers"), layers);
+  EXPECT_EQ(row("points"), path->GetNumberOfPoints());
+  EXPECT_EQ(row("tours"), field(path, arrays::ToolpathTours));
+  EXPECT_EQ(row("retractions"), field(path, arrays::ToolpathRetractions));
+  EXPECT_NEAR(
+      row("print_length_mm"),
+      field(path, arrays::ToolpathPrintLength) + field(path, arrays::ToolpathPerimeterLength),
+      1e-6 * row("print_length_mm"));
+  EXPECT_NEAR(row("air_length_mm"), field(path, arrays::ToolpathAirLength),
+              1e-6 * row("air_length_mm"));
+  // Print moves at 10 mm/s, air moves at 50 mm/s (the planner's defaults).
+  EXPECT_NEAR(row("print_time_min"),
+              (row("print_length_mm") / 10.0 + row("air_length_mm") / 50.0) / 60.0, 1e-9);
+  EXPECT_NEAR(row("filament_m"), field(path, arrays::ToolpathFilament) / 1000.0, 1e-12);
+  EXPECT_NEAR(row("filament_g"),
+              field(path, arrays::ToolpathFilament) * M_PI * 0.875 * 0.875 * 1e-3 * 1.24, 1e-9);
+  vtkPolyData* verdict = verifier->GetOutput();
+  EXPECT_EQ(row("collision_free"), field(verdict, arrays::CollisionFree));
+  EXPECT_EQ(row("stations"), field(verdict, arrays::CollisionStations));
+  EXPECT_EQ(row("colliding_stations"), field(verdict, arrays::CollisionViolatingStations));
+  auto* text =
+      vtkStringArray::SafeDownCast(table->GetFieldData()->GetAbstractArray(arrays::SummaryVerdict));
+  ASSERT_NE(text, nullptr);
+  EXPECT_NE(text->GetValue(0).find(row("collision_free") ? "collision-free" : "COLLIDES"),
+            std::string::npos)
+      << text->GetValue(0);
 
-  // A parameter change plans again; NumberOfTimeSteps 0: no time steps, always the whole path.
-  run.planner->SetNumberOfTimeSteps(0);
-  run.planner->UpdateInformation();
-  EXPECT_FALSE(
-      run.planner->GetOutputInformation(0)->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()));
-  run.planner->SetPathWidth(0.5);
-  run.planner->UpdateTimeStep(0.3);
-  ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
-  EXPECT_EQ(run.planner->GetOutput()->GetNumberOfPoints(), N);
-  EXPECT_NE(run.planner->GetOutput()->GetFieldData()->GetArray(arrays::ToolpathSeconds), seconds);
+  // Without the verifier: the planner's own check.
+  vtkNew<vtkGLPrintSummary> alone;
+  alone->SetInputConnection(run.planner->GetOutputPort());
+  alone->Update();
+  EXPECT_EQ(alone->GetOutput()->GetNumberOfRows(), table->GetNumberOfRows());
+  EXPECT_NE(
+      std::string(alone->GetOutput()->GetValueByName(11, "Quantity").ToString()).find("planner"),
+      std::string::npos);
 }
 
 TEST(vtkGLToolpathPlanner, BadInputIsReported) {

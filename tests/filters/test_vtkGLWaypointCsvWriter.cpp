@@ -28,7 +28,7 @@ TEST(vtkGLWaypointCsvWriter, OneRowPerPoint) {
   const fs::path dir = glFreshDirectory("csv");
   auto path = makeTestToolpath(2, 25.0);
   // Not unit length: the rows hold the unit axis.
-  path->GetPointData()->GetArray(geolattice::arrays::Normals)->SetTuple3(0, 0, 0, 3);
+  path->GetPointData()->GetArray(geolattice::arrays::NozzleAxis)->SetTuple3(0, 0, 0, 3);
   vtkNew<vtkGLWaypointCsvWriter> w;
   vtkNew<GLTestErrorObserver> errors;
   errors->Observe(w);
@@ -54,7 +54,7 @@ TEST(vtkGLWaypointCsvWriter, OneRowPerPoint) {
     ASSERT_EQ(v.size(), 9u) << line;
     double p[3], n[3];
     path->GetPoint(i, p);
-    pd->GetArray(geolattice::arrays::Normals)->GetTuple(i, n);
+    pd->GetArray(geolattice::arrays::NozzleAxis)->GetTuple(i, n);
     const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
     for (int k = 0; k < 3; ++k) {
       EXPECT_NEAR(v[k], p[k], 1e-6) << line;
@@ -91,8 +91,8 @@ TEST(vtkGLWaypointCsvWriter, BadInputIsReported) {
     return w->GetErrorCode();
   };
   auto path = makeTestToolpath();
-  path->GetPointData()->GetArray(geolattice::arrays::Normals)->SetTuple3(2, std::nan(""), 0, 1);
-  EXPECT_EQ(expectError(path, file, "toolpath point 2 has a NaN or zero normal"),
+  path->GetPointData()->GetArray(geolattice::arrays::NozzleAxis)->SetTuple3(2, std::nan(""), 0, 1);
+  EXPECT_EQ(expectError(path, file, "toolpath point 2 has a NaN or zero nozzle axis"),
             vtkErrorCode::UserError);
   vtkNew<vtkPolyData> empty;
   expectError(empty, file, "empty toolpath");

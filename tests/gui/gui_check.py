@@ -9,12 +9,16 @@ the part by Gamma and the sequenced lattice by PrintOrder, saves the screenshot 
 Writes {"failures": [...], "outputs": {...}} to plan["check_result"]."""
 import json
 import os
+import time
 import traceback
 
 from paraview import servermanager, simple
 
 
 def _geolattice_port_summary(data):
+    if data.IsA("vtkTable"):  # GL Print Summary: rows and columns
+        return {"class": data.GetClassName(), "points": data.GetNumberOfRows(), "cells": data.GetNumberOfColumns(),
+                "arrays": data.GetNumberOfColumns()}
     n_arrays = sum(data.GetAttributes(a).GetNumberOfArrays() for a in (0, 1)) + data.GetFieldData().GetNumberOfArrays()
     return {"class": data.GetClassName(), "points": data.GetNumberOfPoints(), "cells": data.GetNumberOfCells(),
             "arrays": n_arrays}
@@ -25,7 +29,9 @@ def _geolattice_gui_check():
         plan = json.load(f)
     failures, outputs = [], {}
     try:
-        view = simple.GetActiveViewOrCreate("RenderView")
+        # The render view the filters were applied in (GL Print Summary opened a spreadsheet view beside it).
+        render_views = simple.GetViews("RenderView")
+        view = render_views[0] if render_views else simple.GetActiveViewOrCreate("RenderView")
         scene = simple.GetAnimationScene()
         scene.UpdateAnimationUsingDataTimeSteps()
         scene.AnimationTime = scene.EndTime  # the toolpath replay: last frame = the whole path
@@ -57,7 +63,13 @@ def _geolattice_gui_check():
                         "%s1.%s is %r after Apply in the GUI, but its XML default is %r: the GUI picked the first "
                         "array of the domain, so a GUI user gets a different result than pvpython. Fix in the "
                         "plugin XML: <Hints><NoDefault/></Hints> in that property" % (name, prop, chosen, none))
-            if servermanager.GetRepresentation(src, view) is None:
+            if name == "GLPrintSummary":
+                # A table: ParaView shows it in a spreadsheet view (the XML's View hint), not the render view.
+                shown = [v for v in simple.GetViews() if v.GetXMLName() == "SpreadSheetView"
+                         and servermanager.GetRepresentation(src, v) is not None]
+                if not shown:
+                    failures.append("GLPrintSummary1 is not shown in a spreadsheet view")
+            elif servermanager.GetRepresentation(src, view) is None:
                 failures.append("%s1 has no representation in the render view (was Apply pressed?)" % name)
             src.UpdatePipeline(scene.AnimationTime)
             ports = []
@@ -74,6 +86,31 @@ def _geolattice_gui_check():
                 elif summary["points"] == 0 or summary["cells"] == 0:
                     failures.append("%s1 output port %d is empty: %s" % (name, port, summary))
             outputs[name] = ports
+
+        # The replay plays: at each animation time the GUI shows the print so far (cells up to point
+        # round(t (N - 1)), which ReplayLastPoint names), with every point kept, so the PointIndex range -
+        # the colour map's - stays that of the whole print. Seconds per step recorded, not asserted.
+        replay = simple.FindSource("GLToolpathReplay1")
+        if replay is not None:
+            simple.ColorBy(servermanager.GetRepresentation(replay, view), ("POINTS", "PointIndex"))
+            ranges, seconds, cells = set(), [], []
+            for t in (0.25, 0.5, 0.75, 1.0):
+                start = time.time()
+                scene.AnimationTime = t
+                simple.Render(view)
+                seconds.append(round(time.time() - start, 3))
+                data = servermanager.Fetch(replay)
+                n = data.GetNumberOfPoints()
+                last = data.GetFieldData().GetArray("ReplayLastPoint").GetValue(0)
+                if last != int(t * (n - 1) + 0.5):  # C++ llround: halves away from zero
+                    failures.append("replay at %g shows up to point %d, not %d" % (t, last, int(t * (n - 1) + 0.5)))
+                if data.GetLines().GetConnectivityArray().GetRange()[1] > last:
+                    failures.append("replay at %g has cells beyond its last printed point %d" % (t, last))
+                ranges.add(tuple(data.GetPointData().GetArray("PointIndex").GetRange()))
+                cells.append(data.GetNumberOfCells())
+            if len(ranges) != 1 or cells != sorted(cells):
+                failures.append("replay: PointIndex ranges %s (one expected), cells per step %s" % (ranges, cells))
+            outputs["replay_step_seconds"] = seconds
 
         # The picture: the part (surface of the fields' tet mesh) by Gamma, translucent, over the
         # sequenced lattice by PrintOrder.

@@ -65,9 +65,13 @@ CHAIN = [
     ("GLPrintSequencer", "GLLatticeInfill1", {"Skeleton": "GLSkeletonTree1"}),
     ("GLCollisionVerifier", "GLPrintSequencer1", {}),
     ("GLToolpathPlanner", "GLPrintSequencer1", {"Skeleton": "GLSkeletonTree1"}),
+    ("GLToolpathReplay", None, {}),
     ("GLOverhangAnalysis", "GLGeodesicDistanceFields1", {}),
     ("GLAutoOrient", "GLPlaceOnPlatform1", {}),
     ("GLPedestal", "GLPlaceOnPlatform1", {}),
+    # Last: its table opens a spreadsheet view, which becomes the active view. Its Verifier input is
+    # optional, so the GUI asks for no second input (no Select Input dialog).
+    ("GLPrintSummary", "GLToolpathPlanner1", {}),
 ]
 # Where the second inputs are in the "Select Input" dialog's pipeline tree (pqFlatTreeView rows from the
 # server item down; an item with several output ports has one child per port): builtin server / y_shape /

@@ -64,8 +64,8 @@ class StateFileTest(unittest.TestCase):
                         self.assertIsNotNone(data.GetFieldData().GetArray("CollisionFree"))
                     else:
                         self.assertGreater(data.GetNumberOfCells(), 0, "%s port %d" % (key, port))
-        toolpath = simple.FindSource(state.NAMES["toolpath"])
-        self.assertAlmostEqual(time_value, max(toolpath.TimestepValues))  # the whole path
+        replay = simple.FindSource(state.NAMES["replay"])
+        self.assertAlmostEqual(time_value, max(replay.TimestepValues))  # the whole path
 
     def test_four_views_in_one_layout_coloured_by_their_arrays(self):
         layouts = simple.GetLayouts()

@@ -90,8 +90,11 @@ class PipelineTest(unittest.TestCase):
         self.proxies["lattice"].UpdatePipeline()
         lattice = servermanager.Fetch(self.proxies["lattice"])
         self.assertGreater(lattice.GetNumberOfCells(), 100)
-        for key in ("VertexKind", "Degree", "Normals", "Gamma"):
+        for key in ("VertexKind", "Degree", "NozzleAxis", "Gamma"):
             self.assertIsNotNone(lattice.GetPointData().GetArray(NAMES[key]), key)
+        # Not the active normals: ParaView would light the lines with them (layers facing away
+        # from the camera render black).
+        self.assertIsNone(lattice.GetPointData().GetNormals())
         for key in ("EdgeKind", "LayerId", "SubgraphId"):
             self.assertIsNotNone(lattice.GetCellData().GetArray(NAMES[key]), key)
         fd = lattice.GetFieldData()
@@ -186,7 +189,7 @@ class PipelineTest(unittest.TestCase):
         self.assertGreater(n, 1000)
         self.assertGreater(path.GetNumberOfCells(), 10)
         pd, cd, fd = path.GetPointData(), path.GetCellData(), path.GetFieldData()
-        for key in ("Normals", "Thickness", "Width", "Extrusion", "FeedRate", "MoveKind", "LayerId", "SubgraphId",
+        for key in ("NozzleAxis", "Thickness", "Width", "Extrusion", "FeedRate", "MoveKind", "LayerId", "SubgraphId",
                     "PathIndex", "PointIndex"):
             self.assertIsNotNone(pd.GetArray(NAMES[key]), key)
             self.assertEqual(pd.GetArray(NAMES[key]).GetNumberOfTuples(), n, key)
@@ -204,23 +207,45 @@ class PipelineTest(unittest.TestCase):
         self.assertEqual(fd.GetArray(NAMES["ToolpathCrossings"]).GetValue(0), 0)
         self.assertGreater(fd.GetArray(NAMES["ToolpathPrintLength"]).GetValue(0), 100)
         self.assertEqual(fd.GetArray(NAMES["ToolpathThicknessDeviationPerLayer"]).GetNumberOfComponents(), 3)
-        # Time steps 0..1 of print progress (the TimestepValues information property); a time gives the
-        # part printed by then, from the same (cached) plan.
-        steps = list(toolpath.TimestepValues)
+        # The planner has no time (Apply shows the whole path); GL Toolpath Replay has time steps 0..1
+        # of print progress (the TimestepValues information property); a time gives the part printed by
+        # then, with every point kept (colour ranges of the whole print), from the same plan.
+        toolpath.UpdatePipeline(0.0)
+        self.assertEqual(servermanager.Fetch(toolpath).GetNumberOfPoints(), n)  # time 0: the whole path too
+        replay = self.proxies["replay"]
+        steps = list(replay.TimestepValues)
         self.assertEqual(len(steps), 200)
         self.assertEqual((steps[0], steps[-1]), (0.0, 1.0))
-        time_range = toolpath.GetProperty("TimeRange")  # information only, not a Python attribute
+        time_range = replay.GetProperty("TimeRange")  # information only, not a Python attribute
         self.assertEqual([time_range[0], time_range[1]], [0.0, 1.0])
-        toolpath.UpdatePipeline(0.5)
-        half = servermanager.Fetch(toolpath)
-        self.assertEqual(half.GetNumberOfPoints(), round(0.5 * (n - 1)) + 1)
+        replay.UpdatePipeline(0.5)
+        half = servermanager.Fetch(replay)
+        self.assertEqual(half.GetNumberOfPoints(), n)
+        self.assertEqual(half.GetFieldData().GetArray(NAMES["ReplayLastPoint"]).GetValue(0), int(0.5 * (n - 1) + 0.5))
         self.assertLess(half.GetNumberOfCells(), path.GetNumberOfCells())
         self.assertEqual(half.GetFieldData().GetArray(NAMES["ToolpathSeconds"]).GetValue(0),
                          fd.GetArray(NAMES["ToolpathSeconds"]).GetValue(0))
-        toolpath.UpdatePipeline(0.0)
-        self.assertEqual(servermanager.Fetch(toolpath).GetNumberOfPoints(), 1)
-        # Saved at time 1: the whole path.
-        toolpath.UpdatePipeline(1.0)
+        replay.UpdatePipeline(0.0)
+        self.assertEqual(servermanager.Fetch(replay).GetNumberOfCells(), 0)
+        replay.StepBy = "Layers"
+        replay.UpdatePipelineInformation()
+        layer_steps = list(replay.TimestepValues)
+        layer_ids = pd.GetArray(NAMES["LayerId"]).GetRange()
+        self.assertEqual((layer_steps[0], layer_steps[-1]), (max(layer_ids[0], 0.0), layer_ids[1]))
+        replay.UpdatePipeline(layer_steps[1])
+        shown = servermanager.Fetch(replay).GetCellData().GetArray(NAMES["LayerId"]).GetRange()
+        self.assertEqual(shown, (layer_steps[0], layer_steps[1]))
+        replay.StepBy = "Points"
+        # GL Print Summary: a table keyed like report.json's "summary", with the verifier's strict verdict.
+        self.proxies["summary"].UpdatePipeline()
+        table = servermanager.Fetch(self.proxies["summary"])
+        rows = {table.GetValueByName(r, "Key").ToString(): table.GetValueByName(r, "Value").ToDouble()
+                for r in range(table.GetNumberOfRows())}
+        self.assertEqual(rows["points"], n)
+        self.assertEqual(rows["stations"], n)
+        self.assertGreater(rows["print_time_min"], 0)
+        self.assertEqual(rows["filament_m"] * 1000, fd.GetArray(NAMES["ToolpathFilament"]).GetValue(0))
+        toolpath.UpdatePipeline()
         saved = os.path.join(self.out, "toolpath.vtp")
         pipeline.save_binary(toolpath, saved)
         back = simple.XMLPolyDataReader(FileName=[saved])

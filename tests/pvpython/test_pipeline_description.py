@@ -16,7 +16,8 @@ from paraview import servermanager  # noqa: E402
 # Python key -> C++ stage name.
 KEYS = {"reader": "read", "place": "place", "orient": "orient", "pedestal": "pedestal", "tets": "mesh", "fields": "fields", "layers": "layers",
         "overhang": "overhang", "lattice": "lattice", "skeleton": "skeleton", "sequencer": "sequence",
-        "verifier": "sequence-verify", "toolpath": "toolpath", "toolpath_verifier": "toolpath-verify"}
+        "verifier": "sequence-verify", "toolpath": "toolpath", "toolpath_verifier": "toolpath-verify",
+        "summary": "summary", "replay": "replay"}
 
 
 class PipelineDescriptionTest(unittest.TestCase):
