@@ -5,6 +5,7 @@ import os
 import subprocess
 import sys
 import unittest
+import xml.etree.ElementTree as ET
 
 SOURCE_DIR = os.environ["GEOLATTICE_SOURCE_DIR"]
 CLI = os.environ["GEOLATTICE_CLI"]
@@ -58,6 +59,25 @@ class PipelineDescriptionTest(unittest.TestCase):
                 self.assertEqual(p[key].PrintheadFile, head)
         self.assertEqual(p["pedestal"].Height, 5)
         self.assertEqual(p["sequencer"].SplitRounds, 2)
+
+    def test_the_filters_menu_lists_every_filter_once_in_pipeline_order(self):
+        # plugin/GeoLatticeMenu.xml (Filters > GeoLattice, preserve_order) against the stages and the
+        # plugin's filter proxies: a new filter must be placed in the menu too.
+        menu = ET.parse(os.path.join(SOURCE_DIR, "plugin", "GeoLatticeMenu.xml")).getroot()
+        listed = [p.get("name") for p in menu.iter("Proxy")]
+        declared = set()
+        for name in os.listdir(os.path.join(SOURCE_DIR, "plugin", "xml")):
+            root = ET.parse(os.path.join(SOURCE_DIR, "plugin", "xml", name)).getroot()
+            for group in root.iter("ProxyGroup"):
+                if group.get("name") == "filters":
+                    declared.update(proxy.get("name") for proxy in group if proxy.get("name"))
+        in_stage_order = []
+        for _, proxy, _ in pipeline.STAGES:
+            if proxy in declared and proxy not in in_stage_order:
+                in_stage_order.append(proxy)
+        self.assertEqual(listed, in_stage_order)
+        self.assertEqual(set(listed), declared)
+        self.assertEqual(menu.find("Category").get("preserve_order"), "1")
 
 
 if __name__ == "__main__":
