@@ -5,6 +5,7 @@
 #include "GLPrintPipeline.h"
 #include "RunCommand.h"
 #include "VerifyCommand.h"
+#include "vtkGLPrintPart.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkAlgorithmOutput.h>
@@ -73,10 +74,13 @@ void printFilterDefaults() {
                           p.OverhangAnalysis, p.LatticeInfill,  p.SkeletonTree,   p.Sequencer,
                           p.SequenceVerifier, p.Planner,        p.ScriptWriter,   p.GCodeWriter,
                           p.WaypointWriter,   p.ToolpathReplay, p.PrintSummary};
+  vtkNew<vtkGLPrintPart> part;
   for (vtkObject* o : objects) {
     std::cout << "== " << o->GetClassName() << "\n";
     o->Print(std::cout);
   }
+  std::cout << "== " << part->GetClassName() << "\n";
+  part->Print(std::cout);
 }
 
 /// One line per stage: name, class, and per input port the producing stage and its output port.

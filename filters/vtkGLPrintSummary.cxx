@@ -54,7 +54,8 @@ gl::PrintSummaryInput summaryInput(vtkPolyData* toolpath) {
   vtkDataArray* subgraph = toolpath->GetPointData()->GetArray(gl::arrays::SubgraphId);
   if (!subgraph) {
     throw gl::GeoLatticeError(std::string("the toolpath has no point array ") +
-                              gl::arrays::SubgraphId + ": connect the output of GL Toolpath Planner");
+                              gl::arrays::SubgraphId +
+                              ": connect the output of GL Toolpath Planner");
   }
   in.subgraph.resize(in.points.size());
   for (size_t i = 0; i < in.subgraph.size(); ++i) {
@@ -112,9 +113,8 @@ int vtkGLPrintSummary::RequestData(vtkInformation*, vtkInformationVector** input
 
     // The strict verdict: the independent verifier's when connected, else the planner's check.
     const bool strict = verifier && verifier->GetFieldData()->GetArray(gl::arrays::CollisionFree);
-    const bool collisionFree =
-        strict ? fieldOf(verifier, gl::arrays::CollisionFree) != 0
-               : fieldOf(toolpath, gl::arrays::ToolpathCollisionFree) != 0;
+    const bool collisionFree = strict ? fieldOf(verifier, gl::arrays::CollisionFree) != 0
+                                      : fieldOf(toolpath, gl::arrays::ToolpathCollisionFree) != 0;
     const double colliding = strict ? fieldOf(verifier, gl::arrays::CollisionViolatingStations)
                                     : fieldOf(toolpath, gl::arrays::ToolpathUnclearedStations);
     const double plate = strict ? fieldOf(verifier, gl::arrays::CollisionPlateStations) : 0.0;

@@ -82,8 +82,8 @@ int vtkGLToolpathReplay::RequestInformation(vtkInformation*, vtkInformationVecto
     // The layers are known only once the toolpath is planned: the upstream runs here, once (its
     // output is cached for the data pass that follows).
     input->GetProducer()->Update(input->GetIndex());
-    steps = layerSteps(vtkPolyData::SafeDownCast(input->GetProducer()->GetOutputDataObject(
-        input->GetIndex())));
+    steps = layerSteps(
+        vtkPolyData::SafeDownCast(input->GetProducer()->GetOutputDataObject(input->GetIndex())));
   }
   if (steps.empty()) {
     outInfo->Remove(SDDP::TIME_STEPS());
@@ -114,8 +114,8 @@ int vtkGLToolpathReplay::RequestData(vtkInformation*, vtkInformationVector** inp
     }
     const vtkIdType N = input->GetNumberOfPoints();
     const bool timed = outInfo->Has(SDDP::UPDATE_TIME_STEP());
-    const double t = timed ? outInfo->Get(SDDP::UPDATE_TIME_STEP())
-                           : std::numeric_limits<double>::infinity();
+    const double t =
+        timed ? outInfo->Get(SDDP::UPDATE_TIME_STEP()) : std::numeric_limits<double>::infinity();
     vtkDataArray* cellLayer = input->GetCellData()->GetArray(gl::arrays::LayerId);
     if (this->StepBy == Layers && !cellLayer) {
       throw gl::GeoLatticeError(std::string("the toolpath has no ") + gl::arrays::LayerId +
@@ -126,8 +126,8 @@ int vtkGLToolpathReplay::RequestData(vtkInformation*, vtkInformationVector** inp
     // The cells printed at time t (cells are in printing order).
     vtkIdType last = -1;  // the last printed point
     const vtkIdType lastPoint =
-        std::isfinite(t) ? static_cast<vtkIdType>(std::llround(
-                               std::clamp(t, 0.0, 1.0) * static_cast<double>(N - 1)))
+        std::isfinite(t) ? static_cast<vtkIdType>(
+                               std::llround(std::clamp(t, 0.0, 1.0) * static_cast<double>(N - 1)))
                          : N - 1;
     vtkNew<vtkCellArray> lines;
     vtkCellData* inCells = input->GetCellData();

@@ -35,9 +35,9 @@ PrintSummary summarizePrint(const PrintSummaryInput& in, const PrintSummaryOptio
     if (i == 0) {
       continue;
     }
-    const double length = std::hypot(in.points[i][0] - in.points[i - 1][0],
-                                     in.points[i][1] - in.points[i - 1][1],
-                                     in.points[i][2] - in.points[i - 1][2]);
+    const double length =
+        std::hypot(in.points[i][0] - in.points[i - 1][0], in.points[i][1] - in.points[i - 1][1],
+                   in.points[i][2] - in.points[i - 1][2]);
     if (length == 0.0) {
       continue;
     }

@@ -21,24 +21,24 @@ struct PrintSummaryOptions {
 /// The toolpath as plain arrays, in printing order (the planner's output point arrays).
 struct PrintSummaryInput {
   std::vector<std::array<double, 3>> points;  ///< mm
-  std::vector<double> feedRate;                ///< mm/s of the move ending at each point
-  std::vector<int> moveKind;                   ///< MoveKind: 0 print, 1 perimeter, 2 air
-  std::vector<int> layer;                      ///< lattice layer id (-1 on air moves)
-  std::vector<int> subgraph;                   ///< sub-graph id (-1 on air moves)
-  double filamentLength = 0.0;                 ///< mm (the last cumulative extrusion value)
-  double filamentDiameter = 1.75;              ///< mm
+  std::vector<double> feedRate;               ///< mm/s of the move ending at each point
+  std::vector<int> moveKind;                  ///< MoveKind: 0 print, 1 perimeter, 2 air
+  std::vector<int> layer;                     ///< lattice layer id (-1 on air moves)
+  std::vector<int> subgraph;                  ///< sub-graph id (-1 on air moves)
+  double filamentLength = 0.0;                ///< mm (the last cumulative extrusion value)
+  double filamentDiameter = 1.75;             ///< mm
 };
 
 struct PrintSummary {
-  int layers = 0;                 ///< distinct layer ids >= 0 printed
-  int subgraphs = 0;              ///< distinct sub-graph ids >= 0 printed
-  long long points = 0;           ///< toolpath points
-  double printLength = 0.0;       ///< mm of print and perimeter moves
-  double airLength = 0.0;         ///< mm of air moves
-  double printSeconds = 0.0;      ///< Σ length / feed rate over print and perimeter moves
-  double airSeconds = 0.0;        ///< the same over air moves
-  double filamentLength = 0.0;    ///< mm
-  double filamentMass = 0.0;      ///< g
+  int layers = 0;               ///< distinct layer ids >= 0 printed
+  int subgraphs = 0;            ///< distinct sub-graph ids >= 0 printed
+  long long points = 0;         ///< toolpath points
+  double printLength = 0.0;     ///< mm of print and perimeter moves
+  double airLength = 0.0;       ///< mm of air moves
+  double printSeconds = 0.0;    ///< Σ length / feed rate over print and perimeter moves
+  double airSeconds = 0.0;      ///< the same over air moves
+  double filamentLength = 0.0;  ///< mm
+  double filamentMass = 0.0;    ///< g
 };
 
 /// The summary of a toolpath. Throws GeoLatticeError when the arrays' lengths differ or a move

@@ -13,6 +13,7 @@
 #include "vtkGLOverhangAnalysis.h"
 #include "vtkGLPedestal.h"
 #include "vtkGLToolpathReplay.h"
+#include "vtkGLPrintPart.h"
 #include "vtkGLPrintSummary.h"
 #include "vtkGLPlaceOnPlatform.h"
 #include "vtkGLPrintSequencer.h"
@@ -73,6 +74,10 @@ TEST(ErrorContract, EveryFilterReturnsFalseOnFailure) {
          auto f = withEmptyInputs<vtkGLPedestal>(false);
          vtkGLPedestal::SafeDownCast(f)->SetHeight(5);
          return f;
+       }},
+      {"GL Print Part",
+       [] {
+         return withEmptyInputs<vtkGLPrintPart>(false);
        }},
       {"GL Print Summary",
        [] {

@@ -63,7 +63,12 @@ def _geolattice_gui_check():
                         "%s1.%s is %r after Apply in the GUI, but its XML default is %r: the GUI picked the first "
                         "array of the domain, so a GUI user gets a different result than pvpython. Fix in the "
                         "plugin XML: <Hints><NoDefault/></Hints> in that property" % (name, prop, chosen, none))
-            if name == "GLPrintSummary":
+            if name == "GLPrintPart":
+                # One Apply, five outputs, shown in whichever view was active (the spreadsheet here).
+                if not any(servermanager.GetRepresentation(simple.OutputPort(src, port), v) is not None
+                           for v in simple.GetViews() for port in range(5)):
+                    failures.append("GLPrintPart1 is shown in no view (was Apply pressed?)")
+            elif name == "GLPrintSummary":
                 # A table: ParaView shows it in a spreadsheet view (the XML's View hint), not the render view.
                 shown = [v for v in simple.GetViews() if v.GetXMLName() == "SpreadSheetView"
                          and servermanager.GetRepresentation(src, v) is not None]
@@ -86,6 +91,19 @@ def _geolattice_gui_check():
                 elif summary["points"] == 0 or summary["cells"] == 0:
                     failures.append("%s1 output port %d is empty: %s" % (name, port, summary))
             outputs[name] = ports
+
+        # One Apply = the filters one by one: GL Print Part's summary equals GL Print Summary's on the chain
+        # built from the menu (same model, same defaults).
+        part, single = simple.FindSource("GLPrintPart1"), simple.FindSource("GLPrintSummary1")
+        if part is not None and single is not None:
+            def rows(table):
+                return {table.GetValueByName(r, "Key").ToString(): table.GetValueByName(r, "Value").ToDouble()
+                        for r in range(table.GetNumberOfRows())}
+            a, b = rows(servermanager.Fetch(part, idx=1)), rows(servermanager.Fetch(single))
+            for key in ("layers", "subgraphs", "points", "tours", "retractions", "print_time_min", "filament_g"):
+                if a.get(key) != b.get(key):
+                    failures.append("GL Print Part's %s is %s, the single filters' %s" % (key, a.get(key), b.get(key)))
+            outputs["print_part_summary"] = {k: a.get(k) for k in ("layers", "points", "print_time_min", "collision_free")}
 
         # The replay plays: at each animation time the GUI shows the print so far (cells up to point
         # round(t (N - 1)), which ReplayLastPoint names), with every point kept, so the PointIndex range -

@@ -72,6 +72,8 @@ CHAIN = [
     # Last: its table opens a spreadsheet view, which becomes the active view. Its Verifier input is
     # optional, so the GUI asks for no second input (no Select Input dialog).
     ("GLPrintSummary", "GLToolpathPlanner1", {}),
+    # One Apply: the whole pipeline again from the reader (its outputs go to the active view).
+    ("GLPrintPart", READER_NAME, {}),
 ]
 # Where the second inputs are in the "Select Input" dialog's pipeline tree (pqFlatTreeView rows from the
 # server item down; an item with several output ports has one child per port): builtin server / y_shape /

@@ -1,7 +1,10 @@
 """The pipeline is defined once: the pvpython module (pvpython/geolattice_pipeline.py, used by the
 GUI and state scripts) builds the same stages, filter classes and connections as the C++ pipeline
 the command-line tool runs (filters/GLPrintPipeline.h, `geolattice --describe-pipeline`)."""
+import json
 import os
+import shutil
+import tempfile
 import subprocess
 import sys
 import unittest
@@ -12,7 +15,7 @@ CLI = os.environ["GEOLATTICE_CLI"]
 sys.path.insert(0, os.path.join(SOURCE_DIR, "pvpython"))
 
 import geolattice_pipeline as pipeline  # noqa: E402
-from paraview import servermanager  # noqa: E402
+from paraview import servermanager, simple  # noqa: E402
 
 # Python key -> C++ stage name.
 KEYS = {"reader": "read", "place": "place", "orient": "orient", "pedestal": "pedestal", "tets": "mesh", "fields": "fields", "layers": "layers",
@@ -75,9 +78,35 @@ class PipelineDescriptionTest(unittest.TestCase):
         for _, proxy, _ in pipeline.STAGES:
             if proxy in declared and proxy not in in_stage_order:
                 in_stage_order.append(proxy)
-        self.assertEqual(listed, in_stage_order)
+        self.assertEqual(listed, ["GLPrintPart"] + in_stage_order)  # the whole pipeline first
         self.assertEqual(set(listed), declared)
         self.assertEqual(menu.find("Category").get("preserve_order"), "1")
+
+    def test_print_part_summary_equals_the_command_lines_report(self):
+        # One Apply in ParaView (GL Print Part, defaults) and `geolattice run` (defaults) on the Y:
+        # the same summary, value for value (issue 20's acceptance, without the GUI around it).
+        model = os.path.join(SOURCE_DIR, "testdata", "y_shape.obj")
+        out = tempfile.mkdtemp(prefix="geolattice-part-")
+        try:
+            subprocess.run([CLI, "run", model, "-o", out, "-q", "--until", "toolpath", "--replay-steps", "0"],
+                           check=True, capture_output=True, text=True)
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)["summary"]
+        finally:
+            shutil.rmtree(out, ignore_errors=True)
+        pipeline.load_plugin()
+        part = simple.GLPrintPart(Input=simple.GLMeshReader(FileName=model))
+        part.UpdatePipeline()
+        table = servermanager.Fetch(part, idx=1)
+        rows = {table.GetValueByName(r, "Key").ToString(): table.GetValueByName(r, "Value").ToDouble()
+                for r in range(table.GetNumberOfRows())}
+        verdict = table.GetFieldData().GetAbstractArray("SummaryVerdict").GetValue(0)
+        self.assertEqual(verdict, report.pop("verdict"))
+        report.pop("seconds")  # the stage time the command line adds to every section
+        self.assertEqual(sorted(rows), sorted(report))
+        for key, value in report.items():
+            with self.subTest(key=key):
+                self.assertAlmostEqual(rows[key], value, delta=1e-9 * max(1.0, abs(value)))
 
 
 if __name__ == "__main__":

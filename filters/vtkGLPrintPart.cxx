@@ -1,0 +1,209 @@
+#include "vtkGLPrintPart.h"
+
+#include "GLPrintPipeline.h"
+#include "vtkGLRequest.h"
+
+#include "common/Error.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkDataObject.h>
+#include <vtkDemandDrivenPipeline.h>
+#include <vtkExecutive.h>
+#include <vtkInformation.h>
+#include <vtkInformationVector.h>
+#include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
+#include <vtkTable.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <string>
+
+vtkStandardNewMacro(vtkGLPrintPart);
+
+namespace gl = geolattice;
+
+struct vtkGLPrintPart::Internals {
+  GLPrintPipeline pipeline;
+  vtkNew<vtkPolyData> input;  ///< the input surface, copied only when it changed
+  vtkMTimeType inputTime = 0;
+  vtkDataObject* inputObject = nullptr;
+  /// The first error a stage filter reported (caught instead of printed: the composite reports
+  /// it once, naming the stage).
+  std::string error;
+  vtkNew<vtkCallbackCommand> onError;
+
+  Internals() {
+    onError->SetClientData(this);
+    onError->SetCallback([](vtkObject*, unsigned long, void* self, void* text) {
+      auto* in = static_cast<Internals*>(self);
+      if (in->error.empty() && text) {
+        // vtkErrorMacro's text: "ERROR: In FILE, line N\nCLASS (0x...): MESSAGE\n\n".
+        std::string message = static_cast<const char*>(text);
+        const size_t start = message.find("): ");
+        if (start != std::string::npos) {
+          message = message.substr(start + 3);
+        }
+        while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) {
+          message.pop_back();
+        }
+        in->error = message;
+      }
+    });
+    for (int s = GLPrintPipeline::Place; s < GLPrintPipeline::NumberOfStages; ++s) {
+      pipeline.Filter(static_cast<GLPrintPipeline::Stage>(s))->AddObserver(vtkCommand::ErrorEvent,
+                                                                            onError);
+    }
+    pipeline.Placement->SetInputData(input);
+  }
+};
+
+vtkGLPrintPart::vtkGLPrintPart() : Internal(new Internals) {
+  this->SetNumberOfInputPorts(1);
+  this->SetNumberOfOutputPorts(NumberOfPorts);
+}
+
+vtkGLPrintPart::~vtkGLPrintPart() = default;
+
+GLPrintPipeline& vtkGLPrintPart::Pipeline() {
+  return this->Internal->pipeline;
+}
+
+// Each parameter lives in its stage filter (its default is that filter's); the setters forward
+// and mark this filter modified, the getters read back.
+#define GL_FORWARD(Type, Name, Filter, Member)     \
+  void vtkGLPrintPart::Set##Name(Type v) {         \
+    if (this->Pipeline().Filter->Get##Member() != v) { \
+      this->Pipeline().Filter->Set##Member(v);     \
+      this->Modified();                            \
+    }                                              \
+  }                                                \
+  Type vtkGLPrintPart::Get##Name() {               \
+    return this->Pipeline().Filter->Get##Member(); \
+  }
+GL_FORWARD(double, Scale, Placement, Scale)
+GL_FORWARD(double, FitSize, Placement, FitSize)
+GL_FORWARD(int, Orient, Orientation, Orient)
+GL_FORWARD(double, PedestalHeight, Pedestal, Height)
+GL_FORWARD(double, TargetEdgeLength, Tetrahedralize, TargetEdgeLength)
+GL_FORWARD(int, Strategy, Sequencer, Strategy)
+GL_FORWARD(double, NozzleAngle, Nozzle, NozzleAngle)
+#undef GL_FORWARD
+
+void vtkGLPrintPart::SetLatticeWidth(double v) {
+  GLPrintPipeline& p = this->Pipeline();
+  if (p.LatticeInfill->GetAlphaWidth() != v || p.LatticeInfill->GetBetaWidth() != v) {
+    p.LatticeInfill->SetAlphaWidth(v);
+    p.LatticeInfill->SetBetaWidth(v);
+    this->Modified();
+  }
+}
+
+double vtkGLPrintPart::GetLatticeWidth() {
+  return this->Pipeline().LatticeInfill->GetAlphaWidth();
+}
+
+// The first layer follows the interval, as on the command line (--layer-interval).
+void vtkGLPrintPart::SetLayerInterval(double v) {
+  GLPrintPipeline& p = this->Pipeline();
+  if (p.Slicer->GetLayerInterval() != v || p.Slicer->GetFirstLayerOffset() != v) {
+    p.Slicer->SetLayerInterval(v);
+    p.Slicer->SetFirstLayerOffset(v);
+    this->Modified();
+  }
+}
+
+double vtkGLPrintPart::GetLayerInterval() {
+  return this->Pipeline().Slicer->GetLayerInterval();
+}
+
+void vtkGLPrintPart::SetPrintheadFile(const char* path) {
+  const std::string now = this->GetPrintheadFile() ? this->GetPrintheadFile() : "";
+  if (now != (path ? path : "")) {
+    this->Pipeline().Nozzle->SetPrintheadFile(path);
+    this->Modified();
+  }
+}
+
+const char* vtkGLPrintPart::GetPrintheadFile() {
+  return this->Pipeline().Nozzle->GetPrintheadFile();
+}
+
+void vtkGLPrintPart::PrintSelf(ostream& os, vtkIndent indent) {
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "Scale: " << this->GetScale() << "\n";
+  os << indent << "FitSize: " << this->GetFitSize() << " mm\n";
+  os << indent << "Orient: " << this->GetOrient() << "\n";
+  os << indent << "PedestalHeight: " << this->GetPedestalHeight() << " mm\n";
+  os << indent << "TargetEdgeLength: " << this->GetTargetEdgeLength() << " mm\n";
+  os << indent << "LayerInterval: " << this->GetLayerInterval() << " mm\n";
+  os << indent << "LatticeWidth: " << this->GetLatticeWidth() << " mm\n";
+  os << indent << "Strategy: " << this->GetStrategy() << "\n";
+  os << indent << "NozzleAngle: " << this->GetNozzleAngle() << " deg\n";
+  os << indent << "PrintheadFile: " << (this->GetPrintheadFile() ? this->GetPrintheadFile() : "")
+     << "\n";
+}
+
+int vtkGLPrintPart::FillInputPortInformation(int, vtkInformation* info) {
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+int vtkGLPrintPart::FillOutputPortInformation(int port, vtkInformation* info) {
+  const char* type = port == SummaryPort ? "vtkTable"
+                     : port == PartPort  ? "vtkUnstructuredGrid"
+                                         : "vtkPolyData";
+  info->Set(vtkDataObject::DATA_TYPE_NAME(), type);
+  return 1;
+}
+
+vtkTypeBool vtkGLPrintPart::ProcessRequest(vtkInformation* request, vtkInformationVector** in,
+                                           vtkInformationVector* out) {
+  if (request->Has(vtkDemandDrivenPipeline::REQUEST_DATA())) {
+    return this->RequestData(request, in, out);
+  }
+  return this->Superclass::ProcessRequest(request, in, out);
+}
+
+int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVector,
+                                vtkInformationVector* outputVector) {
+  gl::clearOutputs(outputVector);
+  Internals& I = *this->Internal;
+  GLPrintPipeline& p = I.pipeline;
+  return gl::runRequest(this, outputVector, [&] {
+    vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
+    if (!input || input->GetNumberOfPolys() == 0) {
+      throw gl::GeoLatticeError("empty input: GL Print Part needs a closed triangle surface (open "
+                                "the model with File > Open or GL Mesh Reader)");
+    }
+    // Copied only when it changed: a parameter change then re-runs only the stages after it.
+    if (input != I.inputObject || input->GetMTime() != I.inputTime) {
+      I.input->ShallowCopy(input);
+      I.inputObject = input;
+      I.inputTime = input->GetMTime();
+    }
+    GLPrintPipeline::ClearStopRequest();
+    I.error.clear();
+    // Each stage in order, so a failure names its stage.
+    for (GLPrintPipeline::Stage s :
+         {GLPrintPipeline::Place, GLPrintPipeline::Orient, GLPrintPipeline::Raise,
+          GLPrintPipeline::Mesh, GLPrintPipeline::Fields, GLPrintPipeline::Layers,
+          GLPrintPipeline::Lattice, GLPrintPipeline::Skeleton, GLPrintPipeline::Sequence,
+          GLPrintPipeline::Toolpath, GLPrintPipeline::ToolpathVerify, GLPrintPipeline::Summary}) {
+      vtkAlgorithm* stage = p.Filter(s);
+      if (!stage->GetExecutive()->Update() || !I.error.empty()) {
+        throw gl::GeoLatticeError(std::string(GLPrintPipeline::StageName(s)) + ": " +
+                                  (I.error.empty() ? "the stage failed" : I.error));
+      }
+      gl::checkAbort(this, static_cast<double>(s) / GLPrintPipeline::NumberOfStages);
+    }
+    vtkPolyData::GetData(outputVector, ToolpathPort)->ShallowCopy(p.Planner->GetOutputDataObject(0));
+    vtkTable::GetData(outputVector, SummaryPort)->ShallowCopy(p.PrintSummary->GetOutputDataObject(0));
+    vtkPolyData::GetData(outputVector, LatticePort)
+        ->ShallowCopy(p.Sequencer->GetOutputDataObject(0));
+    vtkPolyData::GetData(outputVector, LayersPort)->ShallowCopy(p.Slicer->GetOutputDataObject(0));
+    vtkUnstructuredGrid::GetData(outputVector, PartPort)
+        ->ShallowCopy(p.GeodesicFields->GetOutputDataObject(0));
+    this->UpdateProgress(1.0);
+  });
+}

@@ -1,0 +1,98 @@
+// GL Print Part: the whole pipeline in one filter (issue 20, "one Apply"), on the bundled Y.
+#include "GLTestErrorObserver.h"
+
+#include "GLPrintPipeline.h"
+#include "vtkGLArrayNames.h"
+#include "vtkGLMeshReader.h"
+#include "vtkGLPrintPart.h"
+
+#include <vtkCellData.h>
+#include <vtkDataArray.h>
+#include <vtkExecutive.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkStringArray.h>
+#include <vtkTable.h>
+#include <vtkUnstructuredGrid.h>
+
+#include <gtest/gtest.h>
+
+#include <sstream>
+#include <string>
+
+namespace arrays = geolattice::arrays;
+
+namespace {
+double summaryRow(vtkTable* table, const std::string& key) {
+  auto* keys = vtkStringArray::SafeDownCast(table->GetColumnByName("Key"));
+  vtkDataArray* values = vtkDataArray::SafeDownCast(table->GetColumnByName("Value"));
+  for (vtkIdType r = 0; keys && values && r < table->GetNumberOfRows(); ++r) {
+    if (keys->GetValue(r) == key) {
+      return values->GetTuple1(r);
+    }
+  }
+  ADD_FAILURE() << "no summary row " << key;
+  return -1;
+}
+}  // namespace
+
+TEST(vtkGLPrintPart, DefaultsAreThoseOfTheStageFilters) {
+  vtkNew<vtkGLPrintPart> part;
+  GLPrintPipeline reference;
+  EXPECT_EQ(part->GetLayerInterval(), reference.Slicer->GetLayerInterval());
+  EXPECT_EQ(part->GetLatticeWidth(), reference.LatticeInfill->GetAlphaWidth());
+  EXPECT_EQ(part->GetStrategy(), reference.Sequencer->GetStrategy());
+  EXPECT_EQ(part->GetNozzleAngle(), reference.Nozzle->GetNozzleAngle());
+  EXPECT_EQ(part->GetOrient(), reference.Orientation->GetOrient());
+  EXPECT_EQ(part->GetPedestalHeight(), 0.0);
+  std::ostringstream os;
+  part->Print(os);
+  for (const char* text : {"LayerInterval: 0.6", "LatticeWidth: 4", "Strategy: 3", "NozzleAngle: 45"}) {
+    EXPECT_NE(os.str().find(text), std::string::npos) << text;
+  }
+}
+
+TEST(vtkGLPrintPart, OneUpdatePrintsTheYAndATuningRerunsOnlyTheLaterStages) {
+  vtkNew<vtkGLMeshReader> reader;
+  reader->SetFileName((std::string(GEOLATTICE_TESTDATA) + "/y_shape.obj").c_str());
+  vtkNew<vtkGLPrintPart> part;
+  part->SetInputConnection(reader->GetOutputPort());
+  vtkNew<GLTestErrorObserver> errors;
+  errors->Observe(part);
+  ASSERT_EQ(part->GetExecutive()->Update(), 1) << errors->Errors();
+  auto* toolpath = vtkPolyData::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::ToolpathPort));
+  auto* summary = vtkTable::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::SummaryPort));
+  auto* lattice = vtkPolyData::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::LatticePort));
+  auto* layers = vtkPolyData::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::LayersPort));
+  auto* tets = vtkUnstructuredGrid::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::PartPort));
+  ASSERT_TRUE(toolpath && summary && lattice && layers && tets);
+  EXPECT_GT(toolpath->GetNumberOfPoints(), 10000);
+  EXPECT_EQ(summaryRow(summary, "points"), toolpath->GetNumberOfPoints());
+  EXPECT_GT(summaryRow(summary, "layers"), 50);
+  EXPECT_NE(lattice->GetCellData()->GetArray(arrays::PrintOrder), nullptr);
+  EXPECT_NE(layers->GetCellData()->GetArray(arrays::LayerId), nullptr);
+  EXPECT_NE(tets->GetPointData()->GetArray(arrays::Gamma), nullptr);
+  EXPECT_GT(summaryRow(summary, "stations"), 0);  // the strict verifier's count
+
+  // A lattice change re-runs from the lattice on: the tet mesh and the layers are kept.
+  GLPrintPipeline& p = part->Pipeline();
+  const vtkMTimeType meshTime = p.Tetrahedralize->GetOutputDataObject(0)->GetMTime();
+  const vtkMTimeType layersTime = p.Slicer->GetOutputDataObject(0)->GetMTime();
+  const double layerCount = summaryRow(summary, "layers");
+  part->SetLatticeWidth(5.0);
+  ASSERT_EQ(part->GetExecutive()->Update(), 1) << errors->Errors();
+  EXPECT_EQ(p.Tetrahedralize->GetOutputDataObject(0)->GetMTime(), meshTime);
+  EXPECT_EQ(p.Slicer->GetOutputDataObject(0)->GetMTime(), layersTime);
+  EXPECT_EQ(p.LatticeInfill->GetBetaWidth(), 5.0);
+  summary = vtkTable::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::SummaryPort));
+  EXPECT_EQ(summaryRow(summary, "layers"), layerCount);
+
+  // A stage's error is reported once, naming the stage; the outputs are empty.
+  part->SetNozzleAngle(95.0);
+  EXPECT_EQ(part->GetExecutive()->Update(), 0);
+  EXPECT_NE(errors->Errors().find("nozzle angle"), std::string::npos) << errors->Errors();
+  EXPECT_EQ(vtkPolyData::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::ToolpathPort))
+                ->GetNumberOfPoints(),
+            0);
+}
