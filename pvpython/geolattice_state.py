@@ -1,8 +1,8 @@
-"""Builds the GeoLattice pipeline on a model and saves it as a ParaView state file (.pvsm) with four
-linked views in one layout:
+"""Builds the GeoLattice pipeline on a model and saves it as a ParaView state file (.pvsm) with five
+linked render views and the print summary in one layout:
 
-    part by Gamma | curved layers by LayerId (every 4th layer)
-    lattice by SubgraphId | sequenced lattice by PrintOrder
+    part by Gamma                       | curved layers by LayerId (every 4th layer)
+    lattice by SubgraphId | summary     | sequenced lattice by PrintOrder | toolpath replay by PointIndex
 
 The overhang analysis, the collision checks, the print order and the toolpath are in the pipeline
 too, hidden (the animation time is set to the end: the print replay's time is the print progress). Saving needs no X server:
@@ -37,6 +37,7 @@ NAMES = {
     "layers": "Curved layers", "lattice": "Lattice", "skeleton": "Skeleton tree", "sequencer": "Print sequence",
     "verifier": "Collision check", "overhang": "Overhang", "toolpath": "Toolpath",
     "toolpath_verifier": "Toolpath collision check", "replay": "Print replay",
+    "summary": "Summary table",
     "surface": "Part surface", "every4": "Layer index mod 4", "some_layers": "Every 4th layer",
 }
 # (view title, source key, output port, association, array): the coloured representation of each view.
@@ -45,7 +46,9 @@ COLOURING = [
     ("Curved layers by LayerId", "some_layers", 0, "CELLS", "LayerId"),
     ("Lattice by SubgraphId", "lattice", 0, "CELLS", "SubgraphId"),
     ("Sequenced lattice by PrintOrder", "sequencer", 0, "CELLS", "PrintOrder"),
+    ("Toolpath replay by PointIndex", "replay", 0, "POINTS", "PointIndex"),
 ]
+SUMMARY_VIEW = "Print summary"
 CAMERA_LINK = "GeoLatticeCamera%d"
 SUBGRAPH_PALETTE = "Brewer Qualitative Paired"  # 12 colours, cycled over the sub-graph ids
 
@@ -104,7 +107,9 @@ def build_state(model=DEFAULT_MODEL, fit_size=0.0, edge_length=0.0, layer_interv
     layout.SplitHorizontal(0, 0.5)  # 1 left, 2 right
     layout.SplitVertical(1, 0.5)  # 3 top left, 4 bottom left
     layout.SplitVertical(2, 0.5)  # 5 top right, 6 bottom right
-    cells = [3, 5, 4, 6]
+    layout.SplitHorizontal(4, 0.6)  # 9 lattice, 10 the summary table
+    layout.SplitHorizontal(6, 0.5)  # 13 print order, 14 the toolpath replay
+    cells = [3, 5, 9, 13, 14]
     views = []
     for (title, key, port, association, array), cell in zip(COLOURING, cells):
         view = simple.CreateView("RenderView")
@@ -113,7 +118,7 @@ def build_state(model=DEFAULT_MODEL, fit_size=0.0, edge_length=0.0, layer_interv
         simple.RenameView(title, view)
         views.append(view)
 
-    v_gamma, v_layers, v_lattice, v_order = views
+    v_gamma, v_layers, v_lattice, v_order, v_toolpath = views
     rep = simple.Show(p["surface"], v_gamma)
     _colour(rep, v_gamma, "POINTS", "Gamma", "Viridis (matplotlib)", "Gamma (mm)")
 
@@ -123,7 +128,7 @@ def build_state(model=DEFAULT_MODEL, fit_size=0.0, edge_length=0.0, layer_interv
 
     _ghost(p["surface"], v_lattice, 0.1)
     rep = simple.Show(p["lattice"], v_lattice)
-    lut = _colour(rep, v_lattice, "CELLS", "SubgraphId", SUBGRAPH_PALETTE, "SubgraphId", bar=False)
+    lut = _colour(rep, v_lattice, "CELLS", "SubgraphId", SUBGRAPH_PALETTE, "SubgraphId (colours repeat)")
     p["lattice"].UpdatePipeline()
     lo, hi = p["lattice"].CellData["SubgraphId"].GetRange()
     lut.InterpretValuesAsCategories = 1
@@ -134,9 +139,24 @@ def build_state(model=DEFAULT_MODEL, fit_size=0.0, edge_length=0.0, layer_interv
     n = len(palette) // 3
     lut.IndexedColors = [palette[3 * (k % n) + c] for k in range(len(ids)) for c in range(3)]
 
+    # A categorical legend would list every sub-graph: the bar shows the palette, without labels.
+    simple.GetScalarBar(lut, v_lattice).DrawAnnotations = 0
+
     _ghost(p["surface"], v_order, 0.1)
     rep = simple.Show(simple.OutputPort(p["sequencer"], 0), v_order)
     _colour(rep, v_order, "CELLS", "PrintOrder", "Turbo", "PrintOrder")
+
+    # The toolpath as the replay shows it, by print progress (every point kept: the range is the
+    # whole print's; by PointIndex, not LayerId, whose -1 on air moves would stretch the layers' legend).
+    _ghost(p["surface"], v_toolpath, 0.1)
+    rep = simple.Show(p["replay"], v_toolpath)
+    _colour(rep, v_toolpath, "POINTS", "PointIndex", "Turbo", "PointIndex (print progress)")
+
+    # The numbers a slicer shows, in a spreadsheet next to the lattice.
+    sheet = simple.CreateView("SpreadSheetView")
+    layout.AssignView(10, sheet)
+    simple.RenameView(SUMMARY_VIEW, sheet)
+    simple.Show(p["summary"], sheet)
 
     for view in views:
         _camera(view)

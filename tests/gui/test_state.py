@@ -53,7 +53,7 @@ class StateFileTest(unittest.TestCase):
         scene = simple.GetAnimationScene()
         time_value = scene.AnimationTime
         for key in ("reader", "place", "tets", "fields", "layers", "lattice", "skeleton", "sequencer", "verifier",
-                    "overhang", "toolpath", "surface", "some_layers"):
+                    "overhang", "toolpath", "replay", "surface", "some_layers"):
             with self.subTest(key=key):
                 source = simple.FindSource(state.NAMES[key])
                 self.assertIsNotNone(source, state.NAMES[key])
@@ -67,7 +67,7 @@ class StateFileTest(unittest.TestCase):
         replay = simple.FindSource(state.NAMES["replay"])
         self.assertAlmostEqual(time_value, max(replay.TimestepValues))  # the whole path
 
-    def test_four_views_in_one_layout_coloured_by_their_arrays(self):
+    def test_the_render_views_in_one_layout_coloured_by_their_arrays(self):
         layouts = simple.GetLayouts()
         self.assertEqual(len(layouts), 1)
         layout = list(layouts.values())[0]
@@ -92,6 +92,23 @@ class StateFileTest(unittest.TestCase):
             "LatticeSubgraphs").GetValue(0)
         self.assertEqual(len(lut.Annotations) // 2, subgraphs)
         self.assertEqual(len(lut.IndexedColors) // 3, subgraphs)
+
+    def test_the_summary_is_in_a_spreadsheet_view(self):
+        sheet = simple.FindView(state.SUMMARY_VIEW)
+        self.assertIsNotNone(sheet)
+        self.assertEqual(sheet.GetXMLName(), "SpreadSheetView")
+        summary = simple.FindSource(state.NAMES["summary"])
+        self.assertIsNotNone(servermanager.GetRepresentation(summary, sheet))
+        summary.UpdatePipeline()
+        self.assertGreater(servermanager.Fetch(summary).GetNumberOfRows(), 10)
+
+    def test_every_coloured_view_has_a_legend(self):
+        for title, key, port, association, array in state.COLOURING:
+            with self.subTest(view=title):
+                view = simple.FindView(title)
+                rep = servermanager.GetRepresentation(
+                    simple.OutputPort(simple.FindSource(state.NAMES[key]), port), view)
+                self.assertTrue(rep.IsScalarBarVisible(view))
 
     def test_cameras_are_linked(self):
         pxm = servermanager.ProxyManager().SMProxyManager
