@@ -1,7 +1,7 @@
 """Builds the GeoLattice pipeline on a model and saves it as a ParaView state file (.pvsm) with five
 linked render views and the print summary in one layout:
 
-    part by Gamma                       | curved layers by LayerId (every 4th layer)
+    part by Gamma, the verdict in words | curved layers by LayerId (every 4th layer)
     lattice by SubgraphId | summary     | sequenced lattice by PrintOrder | toolpath replay by PointIndex
 
 The overhang analysis, the collision checks, the print order and the toolpath are in the pipeline
@@ -37,7 +37,7 @@ NAMES = {
     "layers": "Curved layers", "lattice": "Lattice", "skeleton": "Skeleton tree", "sequencer": "Print sequence",
     "verifier": "Collision check", "overhang": "Overhang", "toolpath": "Toolpath",
     "toolpath_verifier": "Toolpath collision check", "replay": "Print replay",
-    "summary": "Summary table",
+    "summary": "Summary table", "verdict": "Verdict",
     "surface": "Part surface", "every4": "Layer index mod 4", "some_layers": "Every 4th layer",
 }
 # (view title, source key, output port, association, array): the coloured representation of each view.
@@ -151,6 +151,14 @@ def build_state(model=DEFAULT_MODEL, fit_size=0.0, edge_length=0.0, layer_interv
     _ghost(p["surface"], v_toolpath, 0.1)
     rep = simple.Show(p["replay"], v_toolpath)
     _colour(rep, v_toolpath, "POINTS", "PointIndex", "Turbo", "PointIndex (print progress)")
+
+    # The verdict in words (GL Print Summary's SummaryVerdict) where a user looks first: over the part.
+    p["verdict"] = simple.PythonAnnotation(
+        registrationName=NAMES["verdict"], Input=p["summary"], ArrayAssociation="Field Data",
+        Expression='input.FieldData.GetAbstractArray("SummaryVerdict").GetValue(0)')
+    text = simple.Show(p["verdict"], v_gamma)
+    text.WindowLocation = "Upper Left Corner"
+    text.FontSize = 13
 
     # The numbers a slicer shows, in a spreadsheet next to the lattice.
     sheet = simple.CreateView("SpreadSheetView")

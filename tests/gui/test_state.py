@@ -102,6 +102,17 @@ class StateFileTest(unittest.TestCase):
         summary.UpdatePipeline()
         self.assertGreater(servermanager.Fetch(summary).GetNumberOfRows(), 10)
 
+    def test_the_verdict_is_written_over_the_part(self):
+        verdict = simple.FindSource(state.NAMES["verdict"])
+        self.assertIsNotNone(verdict)
+        view = simple.FindView(state.COLOURING[0][0])
+        rep = servermanager.GetRepresentation(verdict, view)
+        self.assertIsNotNone(rep)
+        self.assertEqual(rep.Visibility, 1)
+        verdict.UpdatePipeline()
+        text = servermanager.Fetch(verdict).GetValue(0, 0).ToString()
+        self.assertTrue(text.startswith("collision-free") or text.startswith("COLLIDES"), text)
+
     def test_every_coloured_view_has_a_legend(self):
         for title, key, port, association, array in state.COLOURING:
             with self.subTest(view=title):
