@@ -51,8 +51,8 @@ struct vtkGLPrintPart::Internals {
       }
     });
     for (int s = GLPrintPipeline::Place; s < GLPrintPipeline::NumberOfStages; ++s) {
-      pipeline.Filter(static_cast<GLPrintPipeline::Stage>(s))->AddObserver(vtkCommand::ErrorEvent,
-                                                                            onError);
+      pipeline.Filter(static_cast<GLPrintPipeline::Stage>(s))
+          ->AddObserver(vtkCommand::ErrorEvent, onError);
     }
     pipeline.Placement->SetInputData(input);
   }
@@ -71,15 +71,15 @@ GLPrintPipeline& vtkGLPrintPart::Pipeline() {
 
 // Each parameter lives in its stage filter (its default is that filter's); the setters forward
 // and mark this filter modified, the getters read back.
-#define GL_FORWARD(Type, Name, Filter, Member)     \
-  void vtkGLPrintPart::Set##Name(Type v) {         \
+#define GL_FORWARD(Type, Name, Filter, Member)         \
+  void vtkGLPrintPart::Set##Name(Type v) {             \
     if (this->Pipeline().Filter->Get##Member() != v) { \
-      this->Pipeline().Filter->Set##Member(v);     \
-      this->Modified();                            \
-    }                                              \
-  }                                                \
-  Type vtkGLPrintPart::Get##Name() {               \
-    return this->Pipeline().Filter->Get##Member(); \
+      this->Pipeline().Filter->Set##Member(v);         \
+      this->Modified();                                \
+    }                                                  \
+  }                                                    \
+  Type vtkGLPrintPart::Get##Name() {                   \
+    return this->Pipeline().Filter->Get##Member();     \
   }
 GL_FORWARD(double, Scale, Placement, Scale)
 GL_FORWARD(double, FitSize, Placement, FitSize)
@@ -173,8 +173,9 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
   return gl::runRequest(this, outputVector, [&] {
     vtkPolyData* input = vtkPolyData::GetData(inputVector[0]);
     if (!input || input->GetNumberOfPolys() == 0) {
-      throw gl::GeoLatticeError("empty input: GL Print Part needs a closed triangle surface (open "
-                                "the model with File > Open or GL Mesh Reader)");
+      throw gl::GeoLatticeError(
+          "empty input: GL Print Part needs a closed triangle surface (open "
+          "the model with File > Open or GL Mesh Reader)");
     }
     // Copied only when it changed: a parameter change then re-runs only the stages after it.
     if (input != I.inputObject || input->GetMTime() != I.inputTime) {
@@ -197,8 +198,10 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
       }
       gl::checkAbort(this, static_cast<double>(s) / GLPrintPipeline::NumberOfStages);
     }
-    vtkPolyData::GetData(outputVector, ToolpathPort)->ShallowCopy(p.Planner->GetOutputDataObject(0));
-    vtkTable::GetData(outputVector, SummaryPort)->ShallowCopy(p.PrintSummary->GetOutputDataObject(0));
+    vtkPolyData::GetData(outputVector, ToolpathPort)
+        ->ShallowCopy(p.Planner->GetOutputDataObject(0));
+    vtkTable::GetData(outputVector, SummaryPort)
+        ->ShallowCopy(p.PrintSummary->GetOutputDataObject(0));
     vtkPolyData::GetData(outputVector, LatticePort)
         ->ShallowCopy(p.Sequencer->GetOutputDataObject(0));
     vtkPolyData::GetData(outputVector, LayersPort)->ShallowCopy(p.Slicer->GetOutputDataObject(0));

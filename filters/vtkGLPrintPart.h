@@ -39,7 +39,14 @@ public:
   vtkTypeMacro(vtkGLPrintPart, vtkAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum OutputPorts { ToolpathPort = 0, SummaryPort, LatticePort, LayersPort, PartPort, NumberOfPorts };
+  enum OutputPorts {
+    ToolpathPort = 0,
+    SummaryPort,
+    LatticePort,
+    LayersPort,
+    PartPort,
+    NumberOfPorts
+  };
 
   void SetScale(double v);
   double GetScale();

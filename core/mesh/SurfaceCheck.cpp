@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <string>
 #include <utility>
@@ -100,9 +101,13 @@ SurfaceCheckReport checkSurface(const TriangleSurface& surface) {
     }
     const size_t uses = j - i;
     if (uses == 1) {
-      ++r.boundaryEdges;
+      if (r.boundaryEdges++ == 0) {
+        r.firstBoundaryEdge = {edges[i].lo, edges[i].hi};
+      }
     } else if (uses > 2) {
-      ++r.nonManifoldEdges;
+      if (r.nonManifoldEdges++ == 0) {
+        r.firstNonManifoldEdge = {edges[i].lo, edges[i].hi};
+      }
     } else if (edges[i].forward == edges[i + 1].forward) {
       ++r.inconsistentEdges;
     }
@@ -128,13 +133,27 @@ SurfaceCheckReport requireClosedManifold(const TriangleSurface& surface) {
                           " points have NaN or infinite coordinates" +
                           firstIndex("point", r.firstNonFinitePoint));
   }
+  // Where the first bad edge is (its midpoint, in the input's units) and how to fix it.
+  auto at = [&](const std::array<int, 2>& e) {
+    const Vec3 m = 0.5 * (surface.points[e[0]] + surface.points[e[1]]);
+    char text[160];
+    std::snprintf(text, sizeof text,
+                  "; the first is between points %d and %d, at (%.4g, %.4g, %.4g)", e[0], e[1],
+                  m.x(), m.y(), m.z());
+    return std::string(text);
+  };
   if (r.boundaryEdges > 0) {
     throw GeoLatticeError("open surface: " + std::to_string(r.boundaryEdges) +
-                          " boundary edges (the surface must be closed / watertight)");
+                          " boundary edges (the surface must be closed / watertight)" +
+                          at(r.firstBoundaryEdge) +
+                          ". Close the holes (ParaView: Fill Holes, then Clean; or repair the "
+                          "part in its CAD tool) and export it again");
   }
   if (r.nonManifoldEdges > 0) {
     throw GeoLatticeError("non-manifold surface: " + std::to_string(r.nonManifoldEdges) +
-                          " edges shared by more than two triangles");
+                          " edges shared by more than two triangles" + at(r.firstNonManifoldEdge) +
+                          ". Separate the touching bodies or merge them into one solid in the "
+                          "CAD tool (a Boolean union)");
   }
   if (r.inconsistentEdges > 0) {
     throw GeoLatticeError(

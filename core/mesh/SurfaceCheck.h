@@ -8,6 +8,8 @@
 /// orientOutward (explicit repair of an inward-oriented surface) -> TetrahedralizeSurface.
 #include "mesh/TetMesh.h"
 
+#include <array>
+
 namespace geolattice {
 
 /// @brief Counts of surface defects. Edges are undirected vertex pairs of in-range triangles.
@@ -20,8 +22,10 @@ struct SurfaceCheckReport {
   int firstNonFinitePoint = -1;
   int degenerateTriangles = 0;  ///< area <= 1e-12 * (bounding-box diagonal)^2, or a repeated vertex
   int firstDegenerateTriangle = -1;
-  int boundaryEdges = 0;      ///< edges used by exactly one triangle (holes)
-  int nonManifoldEdges = 0;   ///< edges used by more than two triangles
+  int boundaryEdges = 0;                           ///< edges used by exactly one triangle (holes)
+  std::array<int, 2> firstBoundaryEdge{{-1, -1}};  ///< its two point ids (lower first)
+  int nonManifoldEdges = 0;                        ///< edges used by more than two triangles
+  std::array<int, 2> firstNonManifoldEdge{{-1, -1}};
   int inconsistentEdges = 0;  ///< edges whose two triangles traverse it in the same direction
   int unusedPoints = 0;       ///< points no triangle references (harmless, reported only)
   double signedVolume = 0.0;  ///< enclosed volume (mm^3) by the divergence theorem; < 0 if inward

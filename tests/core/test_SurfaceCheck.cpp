@@ -79,8 +79,11 @@ TEST(SurfaceCheck, OpenSurfaceIsRejectedWithTheBoundaryEdgeCount) {
   const SurfaceCheckReport r = checkSurface(box);
   EXPECT_EQ(r.boundaryEdges, 3);
   EXPECT_FALSE(r.isClosedManifold());
-  EXPECT_EQ(errorOf([&] { requireClosedManifold(box); }),
-            "open surface: 3 boundary edges (the surface must be closed / watertight)");
+  EXPECT_EQ(
+      errorOf([&] { requireClosedManifold(box); }),
+      "open surface: 3 boundary edges (the surface must be closed / watertight); the first is "
+      "between points 1 and 2, at (0, 0.5, 1). Close the holes (ParaView: Fill Holes, then Clean; "
+      "or repair the part in its CAD tool) and export it again");
 }
 
 TEST(SurfaceCheck, OpenScanFromTestdataIsRejected) {
@@ -100,8 +103,11 @@ TEST(SurfaceCheck, TwoBoxesSharingAnEdgeAreNonManifold) {
   const SurfaceCheckReport r = checkSurface(both);
   EXPECT_EQ(r.nonManifoldEdges, 1);
   EXPECT_EQ(r.boundaryEdges, 0);
-  EXPECT_EQ(errorOf([&] { requireClosedManifold(both); }),
-            "non-manifold surface: 1 edges shared by more than two triangles");
+  EXPECT_EQ(
+      errorOf([&] { requireClosedManifold(both); }),
+      "non-manifold surface: 1 edges shared by more than two triangles; the first is between "
+      "points 5 and 6, at (1, 1, 0.5). Separate the touching bodies or merge them into one solid "
+      "in the CAD tool (a Boolean union)");
 }
 
 TEST(SurfaceCheck, TriangleFanWithAnEdgeInThreeTrianglesIsNonManifold) {

@@ -48,7 +48,8 @@ TEST(vtkGLPrintPart, DefaultsAreThoseOfTheStageFilters) {
   EXPECT_EQ(part->GetPedestalHeight(), 0.0);
   std::ostringstream os;
   part->Print(os);
-  for (const char* text : {"LayerInterval: 0.6", "LatticeWidth: 4", "Strategy: 3", "NozzleAngle: 45"}) {
+  for (const char* text :
+       {"LayerInterval: 0.6", "LatticeWidth: 4", "Strategy: 3", "NozzleAngle: 45"}) {
     EXPECT_NE(os.str().find(text), std::string::npos) << text;
   }
 }
@@ -61,11 +62,13 @@ TEST(vtkGLPrintPart, OneUpdatePrintsTheYAndATuningRerunsOnlyTheLaterStages) {
   vtkNew<GLTestErrorObserver> errors;
   errors->Observe(part);
   ASSERT_EQ(part->GetExecutive()->Update(), 1) << errors->Errors();
-  auto* toolpath = vtkPolyData::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::ToolpathPort));
+  auto* toolpath =
+      vtkPolyData::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::ToolpathPort));
   auto* summary = vtkTable::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::SummaryPort));
   auto* lattice = vtkPolyData::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::LatticePort));
   auto* layers = vtkPolyData::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::LayersPort));
-  auto* tets = vtkUnstructuredGrid::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::PartPort));
+  auto* tets =
+      vtkUnstructuredGrid::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::PartPort));
   ASSERT_TRUE(toolpath && summary && lattice && layers && tets);
   EXPECT_GT(toolpath->GetNumberOfPoints(), 10000);
   EXPECT_EQ(summaryRow(summary, "points"), toolpath->GetNumberOfPoints());
