@@ -154,10 +154,10 @@ class CliErrorTest(unittest.TestCase):
             self.assertTrue(c, "the run ended before the toolpath stage: " + seen)
             seen += c
         time.sleep(1)
-        start = time.monotonic()
         p.send_signal(signal.SIGINT)
+        # No time bound of our own (load makes it flaky): the stage would run for minutes, so
+        # ending inside the communicate timeout with failed.stage "toolpath" shows it was stopped.
         _, err = p.communicate(timeout=60)
-        self.assertLess(time.monotonic() - start, 10)
         self.assertEqual(p.returncode, 130, err)
         self.assertIn("toolpath stage was stopped by Ctrl-C", err)
         with open(os.path.join(self.out, "report.json")) as f:
