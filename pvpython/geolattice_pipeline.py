@@ -138,6 +138,13 @@ def build_pipeline(model, lattice_width=None, **parameters):
     return p
 
 
+def summary_values(table):
+    """GL Print Summary's table (a fetched vtkTable) as {key: value}, the keys of report.json's
+    "summary" section (layers, print_time_min, filament_g, collision_free, ...)."""
+    return {table.GetValueByName(r, "Key").ToString(): table.GetValueByName(r, "Value").ToDouble()
+            for r in range(table.GetNumberOfRows())}
+
+
 def save_binary(proxy, path):
     """Writes proxy's output as VTK XML in binary inline mode, via a temporary file in the same
     directory (same extension, so ParaView picks the same writer) renamed over path at the end."""

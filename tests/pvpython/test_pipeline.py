@@ -239,8 +239,7 @@ class PipelineTest(unittest.TestCase):
         # GL Print Summary: a table keyed like report.json's "summary", with the verifier's strict verdict.
         self.proxies["summary"].UpdatePipeline()
         table = servermanager.Fetch(self.proxies["summary"])
-        rows = {table.GetValueByName(r, "Key").ToString(): table.GetValueByName(r, "Value").ToDouble()
-                for r in range(table.GetNumberOfRows())}
+        rows = pipeline.summary_values(table)
         self.assertEqual(rows["points"], n)
         self.assertEqual(rows["stations"], n)
         self.assertGreater(rows["print_time_min"], 0)

@@ -98,8 +98,7 @@ class PipelineDescriptionTest(unittest.TestCase):
         part = simple.GLPrintPart(Input=simple.GLMeshReader(FileName=model))
         part.UpdatePipeline()
         table = servermanager.Fetch(part, idx=1)
-        rows = {table.GetValueByName(r, "Key").ToString(): table.GetValueByName(r, "Value").ToDouble()
-                for r in range(table.GetNumberOfRows())}
+        rows = pipeline.summary_values(table)
         verdict = table.GetFieldData().GetAbstractArray("SummaryVerdict").GetValue(0)
         self.assertEqual(verdict, report.pop("verdict"))
         report.pop("seconds")  # the stage time the command line adds to every section
