@@ -64,11 +64,28 @@ void addModelOptions(std::vector<CliOption>& t) {
                      "contact area with the plate an orientation needs (mm^2)",
                      "GLAutoOrient.MinBaseArea", orientation, &vtkGLAutoOrient::SetMinBaseArea,
                      &vtkGLAutoOrient::GetMinBaseArea));
-  t.push_back(number("--pedestal", "MM", orient,
-                     "raise the part on a printed column of its footprint, MM tall, so\n"
-                     "overhangs right above the plate can be printed (0 = none)",
-                     "GLPedestal.Height", pedestal, &vtkGLPedestal::SetHeight,
-                     &vtkGLPedestal::GetHeight));
+  t.push_back({"--pedestal", "auto|MM", orient,
+               "raise the part on a printed column of its footprint, MM tall, so\n"
+               "overhangs right above the plate can be printed; auto: --orient auto\n"
+               "puts it on a 10 mm one where that prints better (none with keep);\n"
+               "0 = never",
+               "GLPrintPart.PedestalHeight",
+               [](P& p, RunOptions&, const std::string& v) {
+                 if (v == "auto") {
+                   p.SetPedestalRequest(-1);
+                   return;
+                 }
+                 const double mm = parseNumber("--pedestal", v);
+                 if (mm < 0) {
+                   p.Pedestal->SetHeight(mm);  // refused with its range by the parameter check
+                 } else {
+                   p.SetPedestalRequest(mm);
+                 }
+               },
+               [](P& p, const RunOptions&) {
+                 const double mm = p.GetPedestalRequest();
+                 return mm < 0 ? std::string("auto") : text(mm);
+               }});
   t.push_back({"--orient-candidates", "N", orient,
                "candidate directions from a uniform sphere sample (plus the\n"
                "convex-hull facets and the placement as it is)",

@@ -39,6 +39,9 @@ void writeOrientationCsv(vtkPolyData* candidates, const std::string& path) {
   vtkDataArray* overhang = array(arrays::OverhangFraction);
   vtkDataArray* layers = array(arrays::LayerCount);
   vtkDataArray* seconds = array(arrays::OrientSeconds);
+  vtkDataArray* pedestal = array(arrays::Pedestal);
+  vtkDataArray* refined = array(arrays::Refined);
+  vtkDataArray* coarse = array(arrays::CoarseCollidingStations);
   auto* source = vtkStringArray::SafeDownCast(pd->GetAbstractArray(arrays::OrientSource));
   const vtkIdType n = candidates->GetNumberOfPoints();
   std::vector<vtkIdType> order(static_cast<size_t>(n));
@@ -48,7 +51,9 @@ void writeOrientationCsv(vtkPolyData* candidates, const std::string& path) {
   AtomicFileSet files;
   std::ostream& out = files.open(path);
   out << "rank,source,up_x,up_y,up_z,base_area_mm2,feasible,evaluated,colliding_stations,"
-         "plate_stations,stations,forced_steps,overhang_fraction,layers,seconds\n"
+         "plate_stations,stations,forced_steps,overhang_fraction,layers,seconds,pedestal_mm,"
+         "refined,"
+         "coarse_colliding_stations\n"
       << std::setprecision(6);
   for (vtkIdType i : order) {
     std::string s = source ? source->GetValue(i) : "";
@@ -58,7 +63,9 @@ void writeOrientationCsv(vtkPolyData* candidates, const std::string& path) {
         << area->GetTuple1(i) << ',' << feasible->GetTuple1(i) << ',' << evaluated->GetTuple1(i)
         << ',' << colliding->GetTuple1(i) << ',' << plate->GetTuple1(i) << ','
         << stations->GetTuple1(i) << ',' << forced->GetTuple1(i) << ',' << overhang->GetTuple1(i)
-        << ',' << layers->GetTuple1(i) << ',' << seconds->GetTuple1(i) << '\n';
+        << ',' << layers->GetTuple1(i) << ',' << seconds->GetTuple1(i) << ','
+        << pedestal->GetTuple1(i) << ',' << refined->GetTuple1(i) << ',' << coarse->GetTuple1(i)
+        << '\n';
   }
   files.commit();
 }

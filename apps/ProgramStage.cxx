@@ -52,7 +52,8 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
     if (!head || !*head) {
       hint += std::string(hint.empty() ? "" : " or ") + "--printhead FILE";
     }
-    if (plate > 0 && P.Pedestal->GetHeight() == 0 && !P.GetTetMeshInput()) {
+    if (plate > 0 && !P.GetTetMeshInput() &&
+        P.Pedestal->HeightFor(P.Orientation->GetOutputDataObject(0)) == 0) {
       hint += std::string(hint.empty() ? "" : " or ") + "--pedestal 10";
     }
     if (!hint.empty()) {

@@ -69,6 +69,7 @@ private:
   int Stages() {
     const bool tetMesh = vtkGLMeshReader::IsTetMeshFile(R.model.c_str());
     P.SetTetMeshInput(tetMesh);
+    P.MatchOrientationToPrint();
     P.Reader->SetFileName(R.model.c_str());
     if (R.allowCollisions) {
       P.ScriptWriter->SetAllowCollisions(true);
@@ -106,7 +107,7 @@ private:
     }
     vtkDataObject* tets = placed;
     if (!tetMesh) {
-      if (P.Pedestal->GetHeight() > 0) {  // Height 0: it passes the part on
+      if (P.Pedestal->HeightFor(placed) > 0) {  // Height 0: it passes the part on
         vtkDataObject* raised = this->Update("pedestal", P.Pedestal);
         reportPedestal(raised, this->Section("pedestal"));
       }

@@ -125,6 +125,8 @@ void reportOrientation(vtkDataObject* o, Json& s) {
   s["candidates"] = count(o, arrays::OrientCandidates);
   s["search_seconds"] = fieldValue(o, arrays::OrientSeconds);
   s["evaluation_tets"] = count(o, arrays::OrientEvaluationTets);
+  s["refined_candidates"] = count(o, arrays::OrientRefined);
+  s["pedestal_mm"] = fieldValue(o, arrays::OrientPedestalHeight);
   s["before"] = {{"colliding_stations", count(o, arrays::OrientBefore)}};
   s["after"] = {{"colliding_stations", count(o, arrays::OrientAfter)}};
   s["candidates_file"] = "orientation.csv";

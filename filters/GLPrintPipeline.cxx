@@ -3,7 +3,11 @@
 
 #include "vtkGLArrayNames.h"
 
+#include "orient/AutoOrient.h"
+
 #include <vtkAlgorithm.h>
+
+#include <algorithm>
 
 GLPrintPipeline::GLPrintPipeline(bool tetMeshInput) {
   this->Placement->SetInputConnection(this->Reader->GetOutputPort());
@@ -49,6 +53,37 @@ void GLPrintPipeline::SetTetMeshInput(bool tetMeshInput) {
   vtkAlgorithm* tets = tetMeshInput ? static_cast<vtkAlgorithm*>(this->Placement.Get())
                                     : static_cast<vtkAlgorithm*>(this->Tetrahedralize.Get());
   this->GeodesicFields->SetInputConnection(tets->GetOutputPort());
+}
+
+void GLPrintPipeline::SetPedestalRequest(double mm) {
+  if (mm < 0) {
+    this->Orientation->SetPedestal(vtkGLAutoOrient::PEDESTAL_WHEN_IT_HELPS);
+    this->Orientation->SetPedestalHeight(geolattice::OrientOptions{}.pedestalHeight);
+    this->Pedestal->SetHeight(0);
+  } else if (mm == 0) {
+    this->Orientation->SetPedestal(vtkGLAutoOrient::PEDESTAL_NEVER);
+    this->Pedestal->SetHeight(0);
+  } else {
+    this->Orientation->SetPedestal(vtkGLAutoOrient::PEDESTAL_ALWAYS);
+    this->Orientation->SetPedestalHeight(mm);
+    this->Pedestal->SetHeight(mm);
+  }
+}
+
+double GLPrintPipeline::GetPedestalRequest() {
+  const bool automatic =
+      this->Orientation->GetPedestal() == vtkGLAutoOrient::PEDESTAL_WHEN_IT_HELPS;
+  return automatic && this->Pedestal->GetHeight() == 0 ? -1.0 : this->Pedestal->GetHeight();
+}
+
+void GLPrintPipeline::MatchOrientationToPrint() {
+  if (this->Orientation->GetOrient() != vtkGLAutoOrient::AUTO) {
+    return;  // Keep passes the part on: a print setting must not re-run it
+  }
+  this->Orientation->SetRefineLayerInterval(this->Slicer->GetLayerInterval());
+  this->Orientation->SetRefineLatticeWidth(
+      std::min(this->LatticeInfill->GetAlphaWidth(), this->LatticeInfill->GetBetaWidth()));
+  this->Orientation->SetRefineStrategy(this->Sequencer->GetStrategy());
 }
 
 vtkAlgorithm* GLPrintPipeline::Filter(Stage stage) {

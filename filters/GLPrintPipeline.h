@@ -76,6 +76,20 @@ public:
   void SetTetMeshInput(bool tetMeshInput);
   bool GetTetMeshInput() const { return this->TetMeshInput; }
 
+  /// The pedestal, as the CLI's --pedestal and GL Print Part's Pedestal Height ask for it: mm < 0
+  /// = automatic (the orientation search stands a part on a pedestal of its default height where
+  /// that helps; none with Orient Keep), 0 = never, mm > 0 = always that tall (the search scores
+  /// every candidate on it). Sets the orientation's Pedestal mode and height and the pedestal's
+  /// Height; the getter reads them back (-1 for automatic).
+  void SetPedestalRequest(double mm);
+  double GetPedestalRequest();
+
+  /// Gives the orientation search's refinement the print's resolution and order: the slicer's
+  /// layer interval, the lattice's (smaller) width and the sequencer's strategy. Call after
+  /// setting parameters, before updating; it modifies nothing when they already match or the
+  /// orientation is Keep (then a print setting re-runs no orientation).
+  void MatchOrientationToPrint();
+
   /// The filter of a stage (Mesh: the tetrahedralizer even when skipped).
   vtkAlgorithm* Filter(Stage stage);
   /// "read", "place", "orient", "pedestal", "mesh", "fields", "layers", "overhang", "lattice", "skeleton", "sequence",
@@ -92,7 +106,7 @@ public:
   vtkNew<vtkGLMeshReader> Reader;
   vtkNew<vtkGLPlaceOnPlatform> Placement;
   vtkNew<vtkGLAutoOrient> Orientation;  ///< Keep by default: the part as placed
-  vtkNew<vtkGLPedestal> Pedestal;       ///< Height 0 by default: no pedestal
+  vtkNew<vtkGLPedestal> Pedestal;       ///< the orientation search's choice, else Height (0: none)
   vtkNew<vtkGLTetrahedralizeSurface> Tetrahedralize;
   vtkNew<vtkGLGeodesicDistanceFields> GeodesicFields;
   vtkNew<vtkGLCurvedLayerSlicer> Slicer;

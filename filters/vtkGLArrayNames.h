@@ -288,6 +288,16 @@ constexpr const char* OrientSeconds = "OrientSeconds";
 constexpr const char* OrientBefore = "OrientBefore";  ///< colliding stations as placed
 constexpr const char* OrientAfter = "OrientAfter";    ///< colliding stations as chosen
 constexpr const char* OrientEvaluationTets = "OrientEvaluationTets";
+/// mm of pedestal the search chose (0: none; GL Pedestal builds it, see its UseOrientation)
+constexpr const char* OrientPedestalHeight = "OrientPedestalHeight";
+constexpr const char* OrientPedestalContactHeight =
+    "OrientPedestalContactHeight";  ///< its reach, mm
+constexpr const char* OrientRefined =
+    "OrientRefined";                          ///< candidates scored at the print's resolution
+constexpr const char* Pedestal = "Pedestal";  ///< per candidate: mm of pedestal (0 = none)
+constexpr const char* Refined =
+    "Refined";  ///< per candidate: 1 when scored at the print's resolution
+constexpr const char* CoarseCollidingStations = "CoarseCollidingStations";  ///< its coarse pass
 constexpr const char* OrientRank = "OrientRank";      ///< 0 = the chosen candidate
 constexpr const char* OrientSource = "OrientSource";  ///< "keep", "hull", "sphere" (+ an error)
 constexpr const char* CollidingStations = "CollidingStations";

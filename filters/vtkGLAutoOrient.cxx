@@ -35,6 +35,13 @@ vtkGLAutoOrient::vtkGLAutoOrient() {
   this->EvaluationTets = d.evaluationTets;
   this->EvaluationLayerInterval = d.layerInterval;
   this->EvaluationLatticeWidth = d.latticeWidth;
+  this->Pedestal = static_cast<int>(d.pedestal);
+  this->PedestalHeight = d.pedestalHeight;
+  this->PedestalContactHeight = d.pedestalContactHeight;
+  this->RefineCandidates = d.refineCandidates;
+  this->RefineLayerInterval = d.refineLayerInterval;
+  this->RefineLatticeWidth = d.refineLatticeWidth;
+  this->RefineStrategy = static_cast<int>(d.refineStrategy);
   this->NumberOfThreads = d.threads;
 }
 
@@ -70,6 +77,9 @@ void buildCandidates(const gl::OrientResult& r, const double bounds[6], vtkPolyD
        plate = intArray(gl::arrays::PlateStations), forced = intArray(gl::arrays::ForcedSteps),
        layers = intArray(gl::arrays::LayerCount), feasible = intArray(gl::arrays::Feasible),
        evaluated = intArray(gl::arrays::Evaluated);
+  auto refined = intArray(gl::arrays::Refined),
+       coarse = intArray(gl::arrays::CoarseCollidingStations);
+  auto pedestal = doubleArray(gl::arrays::Pedestal);
   auto area = doubleArray(gl::arrays::BaseArea),
        overhang = doubleArray(gl::arrays::OverhangFraction),
        seconds = doubleArray(gl::arrays::OrientSeconds), up = doubleArray(gl::arrays::OrientUp);
@@ -78,7 +88,8 @@ void buildCandidates(const gl::OrientResult& r, const double bounds[6], vtkPolyD
   vtkNew<vtkStringArray> source;
   source->SetName(gl::arrays::OrientSource);
   for (const gl::OrientCandidate& c : r.candidates) {
-    const gl::Vec3 p = centre - radius * c.down;  // the up direction
+    // the up direction; candidates on a pedestal on a larger sphere
+    const gl::Vec3 p = centre - (c.pedestal > 0 ? 1.15 : 1.0) * radius * c.down;
     const vtkIdType id = points->InsertNextPoint(p.data());
     verts->InsertNextCell(1, &id);
     rank->InsertNextValue(c.rank);
@@ -93,6 +104,9 @@ void buildCandidates(const gl::OrientResult& r, const double bounds[6], vtkPolyD
     seconds->InsertNextValue(c.seconds);
     up->InsertNextTuple3(-c.down.x(), -c.down.y(), -c.down.z());
     stations->InsertNextValue(static_cast<int>(c.stations));
+    pedestal->InsertNextValue(c.pedestal);
+    refined->InsertNextValue(c.refined ? 1 : 0);
+    coarse->InsertNextValue(static_cast<int>(c.coarseCollidingStations));
     source->InsertNextValue(c.error.empty() ? c.source : c.source + ": " + c.error);
   }
   out->SetPoints(points);
@@ -103,7 +117,9 @@ void buildCandidates(const gl::OrientResult& r, const double bounds[6], vtkPolyD
                           static_cast<vtkDataArray*>(layers), static_cast<vtkDataArray*>(feasible),
                           static_cast<vtkDataArray*>(evaluated), static_cast<vtkDataArray*>(area),
                           static_cast<vtkDataArray*>(overhang), static_cast<vtkDataArray*>(seconds),
-                          static_cast<vtkDataArray*>(up), static_cast<vtkDataArray*>(stations)}) {
+                          static_cast<vtkDataArray*>(up), static_cast<vtkDataArray*>(stations),
+                          static_cast<vtkDataArray*>(pedestal), static_cast<vtkDataArray*>(refined),
+                          static_cast<vtkDataArray*>(coarse)}) {
     pd->AddArray(a);
   }
   pd->AddArray(source);
@@ -119,6 +135,13 @@ gl::OrientOptions orientOptions(vtkGLAutoOrient* f) {
   o.evaluationTets = f->GetEvaluationTets();
   o.layerInterval = f->GetEvaluationLayerInterval();
   o.latticeWidth = f->GetEvaluationLatticeWidth();
+  o.pedestal = static_cast<gl::PedestalChoice>(f->GetPedestal());
+  o.pedestalHeight = f->GetPedestalHeight();
+  o.pedestalContactHeight = f->GetPedestalContactHeight();
+  o.refineCandidates = f->GetRefineCandidates();
+  o.refineLayerInterval = f->GetRefineLayerInterval();
+  o.refineLatticeWidth = f->GetRefineLatticeWidth();
+  o.refineStrategy = static_cast<gl::SequenceStrategy>(f->GetRefineStrategy());
   o.threads = f->GetNumberOfThreads();
   o.nozzle = gl::nozzleModel(f->GetNozzle());
   o.plate = gl::buildPlate(f->GetNozzle());
@@ -189,6 +212,9 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::addFieldArray(fd, gl::arrays::OrientAfter, {static_cast<double>(best.collidingStations)});
     gl::addFieldArray(fd, gl::arrays::OrientEvaluationTets,
                       {static_cast<double>(r.evaluationTets)});
+    gl::addFieldArray(fd, gl::arrays::OrientRefined, {static_cast<double>(r.refined)});
+    gl::addFieldArray(fd, gl::arrays::OrientPedestalHeight, {best.pedestal});
+    gl::addFieldArray(fd, gl::arrays::OrientPedestalContactHeight, {options.pedestalContactHeight});
     output->SetFieldData(fd);
     double bounds[6];
     output->GetBounds(bounds);
@@ -208,5 +234,12 @@ void vtkGLAutoOrient::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "EvaluationTets: " << this->EvaluationTets << "\n";
   os << indent << "EvaluationLayerInterval: " << this->EvaluationLayerInterval << " mm\n";
   os << indent << "EvaluationLatticeWidth: " << this->EvaluationLatticeWidth << " mm\n";
+  os << indent << "Pedestal: " << this->Pedestal << "\n";
+  os << indent << "PedestalHeight: " << this->PedestalHeight << " mm\n";
+  os << indent << "PedestalContactHeight: " << this->PedestalContactHeight << " mm\n";
+  os << indent << "RefineCandidates: " << this->RefineCandidates << "\n";
+  os << indent << "RefineLayerInterval: " << this->RefineLayerInterval << " mm\n";
+  os << indent << "RefineLatticeWidth: " << this->RefineLatticeWidth << " mm\n";
+  os << indent << "RefineStrategy: " << this->RefineStrategy << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -7,27 +7,38 @@
  * facets, and the part as placed), scores each with the real stages on one coarse tet mesh of
  * about EvaluationTets tets (layers every EvaluationLayerInterval mm, a lattice of
  * EvaluationLatticeWidth mm, the paper's A4 order and the independent collision verifier with the
- * nozzle and the build plate) and picks the best by a lexicographic objective: base contact area
- * at least MinBaseArea, then the fewest colliding stations, forced steps, overhang, layers. With
- * Orient = Keep (the default, as desktop slicers do) the part passes unchanged.
+ * nozzle and the build plate), scores the best RefineCandidates of them and the part as placed
+ * again at the printing resolution (RefineLayerInterval, RefineLatticeWidth), and picks the best
+ * by a lexicographic objective: base contact area at least MinBaseArea, then the fewest colliding
+ * stations, forced steps, no pedestal, overhang, layers. With Pedestal = When It Helps (the
+ * default) a direction whose part cannot stand on the plate, or whose nozzle meets the plate, is
+ * also tried on a pedestal PedestalHeight mm tall reaching PedestalContactHeight mm into the part
+ * (core/pedestal/Pedestal.h; GL Pedestal downstream builds it). With Orient = Keep (the default,
+ * as desktop slicers do) the part passes unchanged.
  *
  * Input:  vtkPolyData, the placed part (GL Place On Platform): a closed triangle surface in mm.
  * Output port 0 (Oriented Surface): the part rotated so its chosen side is down, standing on
  *   z = 0 with its x/y centre kept; point and cell data passed. Field data: `OrientMode`
  *   ("keep" or "auto"), and with Auto `OrientUp` (3: the part's direction, as it came in, that
  *   now points up), `OrientRotation` (9, row major: input -> output), `OrientCandidates`,
- *   `OrientSeconds`, `OrientBefore` and `OrientAfter` (colliding stations as placed and chosen),
- *   `OrientEvaluationTets`.
+ *   `OrientSeconds`, `OrientBefore` and `OrientAfter` (colliding stations as placed and chosen, at
+ *   the printing resolution when refined), `OrientEvaluationTets`, `OrientRefined`, and
+ *   `OrientPedestalHeight` / `OrientPedestalContactHeight` (mm: the pedestal chosen, 0 = none).
  * Output port 1 (Candidates): with Auto, one vertex per candidate at centre + radius × its up
  *   direction (a sphere around the part), point data `OrientRank` (0 = chosen),
  *   `CollidingStations`, `PlateStations`, `ForcedSteps`, `BaseArea` (mm²), `OverhangFraction`,
  *   `LayerCount`, `Feasible` (1: enough base area and evaluated), `Evaluated`, `OrientUp` (3),
- *   `CollisionStations`, `OrientSeconds`, `OrientSource` (string: keep, hull or sphere, and the
- *   error of a stage that failed on it).
+ *   `CollisionStations`, `OrientSeconds`, `Pedestal` (mm; such candidates sit on a sphere 15 %
+ *   larger), `Refined`, `CoarseCollidingStations`, `OrientSource` (string: keep, hull or sphere,
+ *   and the error of a stage that failed on it).
  * Parameters: Orient (default 0 = Keep), the nozzle (vtkGLNozzle, shared), MinBaseArea (mm²,
  *   default 10), SphereCandidates (default 100), HullCandidates (default 24), EvaluationTets
  *   (default 15000), EvaluationLayerInterval (mm, default 1.5), EvaluationLatticeWidth (mm,
- *   default 8), NumberOfThreads (default 0 = all cores).
+ *   default 8), Pedestal (0 = Never, 1 = When It Helps (default), 2 = Always), PedestalHeight (mm,
+ *   default 10), PedestalContactHeight (mm, default 1), RefineCandidates (default 4),
+ *   RefineLayerInterval (mm, default 0.6), RefineLatticeWidth (mm, default 4), RefineStrategy
+ *   (0 LPT .. 3 Best, default 3 = the sequencer's), NumberOfThreads
+ *   (default 0 = all cores). Defaults from core (OrientOptions).
  * Errors (an empty or open surface, bad parameters, no candidate with the base area: the message
  * names the largest area found) are reported with vtkErrorMacro; RequestData returns 0.
  */
@@ -88,6 +99,51 @@ public:
   vtkGetMacro(EvaluationLatticeWidth, double);
   ///@}
 
+  /// Values of Pedestal (core PedestalChoice).
+  enum PedestalModes { PEDESTAL_NEVER = 0, PEDESTAL_WHEN_IT_HELPS = 1, PEDESTAL_ALWAYS = 2 };
+
+  ///@{
+  /// Whether a candidate may stand on a pedestal (default 1 = when it helps).
+  vtkSetClampMacro(Pedestal, int, PEDESTAL_NEVER, PEDESTAL_ALWAYS);
+  vtkGetMacro(Pedestal, int);
+  ///@}
+
+  ///@{
+  /// Height of such a pedestal (mm, default 10, in (0, 500]).
+  vtkSetMacro(PedestalHeight, double);
+  vtkGetMacro(PedestalHeight, double);
+  ///@}
+
+  ///@{
+  /// How far the pedestal's column reaches up into the part (mm, default 1, in (0, 50]).
+  vtkSetMacro(PedestalContactHeight, double);
+  vtkGetMacro(PedestalContactHeight, double);
+  ///@}
+
+  ///@{
+  /// Best coarse candidates scored again at the printing resolution (default 4, 0 = none).
+  vtkSetMacro(RefineCandidates, int);
+  vtkGetMacro(RefineCandidates, int);
+  ///@}
+
+  ///@{
+  /// Layer interval of that refinement (mm, default 0.6 = the slicer's default, > 0).
+  vtkSetMacro(RefineLayerInterval, double);
+  vtkGetMacro(RefineLayerInterval, double);
+  ///@}
+
+  ///@{
+  /// Lattice width of that refinement (mm, default 4 = the lattice's default, > 0).
+  vtkSetMacro(RefineLatticeWidth, double);
+  vtkGetMacro(RefineLatticeWidth, double);
+  ///@}
+
+  ///@{
+  /// Printing order of that refinement (0 LPT, 1 DPT, 2 A4, 3 Best = the sequencer's default).
+  vtkSetClampMacro(RefineStrategy, int, 0, 3);
+  vtkGetMacro(RefineStrategy, int);
+  ///@}
+
   ///@{
   /// Candidates evaluated in parallel (default 0 = all cores).
   vtkSetClampMacro(NumberOfThreads, int, 0, 256);
@@ -108,6 +164,13 @@ protected:
   int EvaluationTets;
   double EvaluationLayerInterval;
   double EvaluationLatticeWidth;
+  int Pedestal;
+  double PedestalHeight;
+  double PedestalContactHeight;
+  int RefineCandidates;
+  double RefineLayerInterval;
+  double RefineLatticeWidth;
+  int RefineStrategy;
   int NumberOfThreads;
 
 private:

@@ -8,6 +8,7 @@
 #include "common/Error.h"
 #include "pedestal/Pedestal.h"
 
+#include <vtkDataArray.h>
 #include <vtkFieldData.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
@@ -17,11 +18,20 @@ vtkStandardNewMacro(vtkGLPedestal);
 namespace gl = geolattice;
 
 namespace {
-/// The core options of the filter's parameters (checked by RequestInformation).
-gl::PedestalOptions pedestalOptions(vtkGLPedestal* f) {
+/// The core options of the filter's parameters (checked by RequestInformation), or of the
+/// pedestal the orientation search chose for `input` when it carries one and UseOrientation is on.
+gl::PedestalOptions pedestalOptions(vtkGLPedestal* f, vtkDataObject* input = nullptr) {
   gl::PedestalOptions o;
   o.height = f->GetHeight();
   o.contactHeight = f->GetContactHeight();
+  vtkFieldData* fd = input ? input->GetFieldData() : nullptr;
+  vtkDataArray* height = fd ? fd->GetArray(gl::arrays::OrientPedestalHeight) : nullptr;
+  vtkDataArray* reach = fd ? fd->GetArray(gl::arrays::OrientPedestalContactHeight) : nullptr;
+  if (f->GetUseOrientation() && height && reach && height->GetNumberOfTuples() == 1 &&
+      reach->GetNumberOfTuples() == 1) {
+    o.height = height->GetTuple1(0);
+    o.contactHeight = reach->GetTuple1(0);
+  }
   return o;
 }
 }  // namespace
@@ -36,6 +46,11 @@ void vtkGLPedestal::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Height: " << this->Height << " mm\n";
   os << indent << "ContactHeight: " << this->ContactHeight << " mm\n";
+  os << indent << "UseOrientation: " << (this->UseOrientation ? "on" : "off") << "\n";
+}
+
+double vtkGLPedestal::HeightFor(vtkDataObject* input) {
+  return pedestalOptions(this, input).height;
 }
 
 int vtkGLPedestal::RequestInformation(vtkInformation*, vtkInformationVector**,
@@ -54,7 +69,8 @@ int vtkGLPedestal::RequestData(vtkInformation*, vtkInformationVector** inputVect
   return gl::runRequest(this, outputVector, [&] {
     vtkPolyData* input = inputs.Get<vtkPolyData>(0);
     vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-    const gl::PedestalOptions options = pedestalOptions(this);
+    const gl::PedestalOptions options = pedestalOptions(this, input);
+    options.validate();
     if (options.height == 0.0) {
       output->ShallowCopy(input);  // no pedestal: the part as it is
     } else {

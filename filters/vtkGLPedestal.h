@@ -18,7 +18,10 @@
  *   `PedestalFootprintPieces` (boundary loops of the footprint).
  *
  * Parameters (core/pedestal/Pedestal.h, defaults there): Height (mm, default 0, in [0, 500]),
- * ContactHeight (mm, default 0.3, > 0).
+ * ContactHeight (mm, default 0.3, > 0), UseOrientation (default on): when the input comes from
+ * GL Auto Orient's search (field data `OrientPedestalHeight`), the pedestal it chose for that
+ * orientation (height and `OrientPedestalContactHeight`) replaces Height and ContactHeight, so
+ * the part is built as it was scored (0: none).
  *
  * Errors (vtkErrorMacro, empty output, RequestData returns 0): a bad parameter, an empty or
  * non-triangle input, a part that touches the plate at a tip or an edge only (no footprint:
@@ -49,6 +52,16 @@ public:
   vtkGetMacro(ContactHeight, double);
   ///@}
 
+  ///@{
+  /// Build the pedestal GL Auto Orient chose when the input carries one (default on).
+  vtkSetMacro(UseOrientation, bool);
+  vtkGetMacro(UseOrientation, bool);
+  vtkBooleanMacro(UseOrientation, bool);
+  ///@}
+
+  /// The height of the pedestal this filter builds for `input` (mm; 0: it passes it through).
+  double HeightFor(vtkDataObject* input);
+
 protected:
   vtkGLPedestal();
   ~vtkGLPedestal() override = default;
@@ -58,6 +71,7 @@ protected:
 
   double Height;
   double ContactHeight;
+  bool UseOrientation = true;
 
 private:
   vtkGLPedestal(const vtkGLPedestal&) = delete;

@@ -84,11 +84,21 @@ GLPrintPipeline& vtkGLPrintPart::Pipeline() {
 GL_FORWARD(double, Scale, Placement, Scale)
 GL_FORWARD(double, FitSize, Placement, FitSize)
 GL_FORWARD(int, Orient, Orientation, Orient)
-GL_FORWARD(double, PedestalHeight, Pedestal, Height)
 GL_FORWARD(double, TargetEdgeLength, Tetrahedralize, TargetEdgeLength)
 GL_FORWARD(int, Strategy, Sequencer, Strategy)
 GL_FORWARD(double, NozzleAngle, Nozzle, NozzleAngle)
 #undef GL_FORWARD
+
+void vtkGLPrintPart::SetPedestalHeight(double v) {
+  if (this->Pipeline().GetPedestalRequest() != v) {
+    this->Pipeline().SetPedestalRequest(v);
+    this->Modified();
+  }
+}
+
+double vtkGLPrintPart::GetPedestalHeight() {
+  return this->Pipeline().GetPedestalRequest();
+}
 
 void vtkGLPrintPart::SetLatticeWidth(double v) {
   GLPrintPipeline& p = this->Pipeline();
@@ -183,6 +193,7 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
       I.inputObject = input;
       I.inputTime = input->GetMTime();
     }
+    p.MatchOrientationToPrint();
     GLPrintPipeline::ClearStopRequest();
     I.error.clear();
     // Each stage in order, so a failure names its stage.

@@ -68,7 +68,6 @@ PARAMETERS = {
     "center": (("place",), "CenterXY"),
     "orient": (("orient",), "Orient"),
     "min_base_area": (("orient",), "MinBaseArea"),
-    "pedestal": (("pedestal",), "Height"),
     "edge_length": (("tets",), "TargetEdgeLength"),
     "radius_edge": (("tets",), "RadiusEdgeRatio"),
     "base_tolerance": (("fields",), "BaseTolerance"),
@@ -99,7 +98,7 @@ def build_pipeline(model, lattice_width=None, **parameters):
     toolpath), toolpath_verifier (time PointIndex, air points no material) and replay (GLToolpathReplay:
     its time steps 0..1 replay the print, e.g. replay.UpdatePipeline(0.5) for the part printed by then) and
     summary (GLPrintSummary: a table of layers, print time, filament and the strict verdict). For a tet-mesh model "tets" is the
-    placement. Keywords (PARAMETERS; lattice_width sets both widths) set properties; everything else
+    placement. Keywords (PARAMETERS; lattice_width sets both widths; pedestal: see set_pedestal) set properties; everything else
     keeps the filters' defaults, the same as the command line's. As on the command line, the first
     layer follows layer_interval unless first_layer is given."""
     if lattice_width is not None:
@@ -114,6 +113,7 @@ def build_pipeline(model, lattice_width=None, **parameters):
     for key in ("center", "support_perimeter"):
         if key in parameters:
             parameters[key] = int(parameters[key])
+    pedestal = parameters.pop("pedestal", None)
     unknown = sorted(set(parameters) - set(PARAMETERS))
     if unknown:
         raise TypeError("build_pipeline: unknown parameters %s (known: %s)" % (unknown, sorted(PARAMETERS)))
@@ -135,7 +135,34 @@ def build_pipeline(model, lattice_width=None, **parameters):
         keys, prop = PARAMETERS[name]
         for key in keys:
             setattr(p[key], prop, list(value) if isinstance(value, (tuple, list)) else value)
+    if not tet_mesh:
+        if pedestal is not None:
+            set_pedestal(p, pedestal)
+        match_orientation_to_print(p)
     return p
+
+
+def set_pedestal(p, pedestal):
+    """The pedestal as --pedestal asks for it (GLPrintPipeline::SetPedestalRequest): "auto" or a negative
+    number = the orientation search decides where it helps, 0 = never, a height = always that tall."""
+    if pedestal == "auto" or float(pedestal) < 0:
+        p["orient"].Pedestal = "When It Helps"
+        p["pedestal"].Height = 0
+    elif float(pedestal) == 0:
+        p["orient"].Pedestal = "Never"
+        p["pedestal"].Height = 0
+    else:
+        p["orient"].Pedestal = "Always"
+        p["orient"].PedestalHeight = float(pedestal)
+        p["pedestal"].Height = float(pedestal)
+
+
+def match_orientation_to_print(p):
+    """The orientation search's refinement at the print's layer interval and lattice width
+    (GLPrintPipeline::MatchOrientationToPrint)."""
+    p["orient"].RefineLayerInterval = p["layers"].LayerInterval
+    p["orient"].RefineLatticeWidth = min(p["lattice"].AlphaWidth, p["lattice"].BetaWidth)
+    p["orient"].RefineStrategy = p["sequencer"].Strategy
 
 
 def summary_values(table):

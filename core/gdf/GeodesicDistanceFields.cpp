@@ -243,6 +243,16 @@ void GeodesicDistanceFields::setReference(const Vec3& reference) {
   options_.reference = reference;
 }
 
+void GeodesicDistanceFields::startComponentsAtZero(Eigen::VectorXd& f) const {
+  std::vector<double> minimum(componentCount_, std::numeric_limits<double>::infinity());
+  for (Eigen::Index v = 0; v < f.size(); ++v) {
+    minimum[component_[v]] = std::min(minimum[component_[v]], f[v]);
+  }
+  for (Eigen::Index v = 0; v < f.size(); ++v) {
+    f[v] -= minimum[component_[v]];
+  }
+}
+
 GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) {
   const size_t nv = mesh_.points.size();
   const int nt = static_cast<int>(mesh_.tets.size());
@@ -276,7 +286,8 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
 
   // Dirichlet Laplacian for γ: factor once per source set (the ordering is the heat matrix's).
   const std::vector<char> isSource = indexMask(nv, sources);
-  if (sources != dirichletSources_ || !dirichletLaplacian_.factorized()) {
+  if (options_.dirichletGamma &&
+      (sources != dirichletSources_ || !dirichletLaplacian_.factorized())) {
     auto start = Clock::now();
     SparseMatrix K = lowerWithDiagonal(ops_.stiffness);
     fixRows(K, isSource);
@@ -319,15 +330,23 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
         "the heat gradient vanished in a whole region of the mesh; increase the heat time factor");
   }
 
-  // Eqs. 4-5 for γ: K γ = b with γ = 0 on the sources.
+  // Eqs. 4-5 for γ: K γ = b with γ = 0 on the sources (or pinned, then shifted to start at 0).
   {
     Eigen::VectorXd b = integratedDivergence(ops_, mesh_, out.gammaDirection);
-    for (int s : sources) {
-      b[s] = 0;
-    }
-    out.gamma = dirichletLaplacian_.solve(b);
-    for (int s : sources) {
-      out.gamma[s] = 0;  // exact already (decoupled identity rows); stated for the reader
+    if (options_.dirichletGamma) {
+      for (int s : sources) {
+        b[s] = 0;
+      }
+      out.gamma = dirichletLaplacian_.solve(b);
+      for (int s : sources) {
+        out.gamma[s] = 0;  // exact already (decoupled identity rows); stated for the reader
+      }
+    } else {
+      for (int p : pinned_) {
+        b[p] = 0;
+      }
+      out.gamma = pinnedLaplacian_.solve(b);
+      startComponentsAtZero(out.gamma);
     }
   }
   progress.report(0.65);
@@ -400,15 +419,8 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
     }
   }
   // α and β are defined up to a constant per component: start each component at 0.
-  for (Eigen::VectorXd* f : {&out.alpha, &out.beta}) {
-    std::vector<double> minimum(componentCount_, std::numeric_limits<double>::infinity());
-    for (size_t v = 0; v < nv; ++v) {
-      minimum[component_[v]] = std::min(minimum[component_[v]], (*f)[v]);
-    }
-    for (size_t v = 0; v < nv; ++v) {
-      (*f)[v] -= minimum[component_[v]];
-    }
-  }
+  startComponentsAtZero(out.alpha);
+  startComponentsAtZero(out.beta);
 
   progress.report(0.9);
 

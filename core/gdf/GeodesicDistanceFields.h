@@ -35,6 +35,11 @@ struct GeodesicFieldOptions {
   /// solved γ, so the lattice lines are orthogonal to the actual layer normals. false: the
   /// paper's choice, the normalised heat gradient of Eq. 2.
   bool directionsFromSolvedGamma = true;
+  /// true (default): γ = 0 on the sources exactly (a Dirichlet Laplacian, factored once per
+  /// source set). false: γ from the pinned Laplacian of α and β, shifted to start at 0 in each
+  /// component (the heat method's Neumann variant): no factorization per source set, for callers
+  /// that solve for many (the orientation search: one per candidate).
+  bool dirichletGamma = true;
   /// Called on the calling thread with the fraction done: the constructor reports its set-up
   /// (assembly, factorizations) from 0 to 1, each solve() its own work again from 0 to 1.
   /// Optional; not part of the set-up (changing it needs no new factorization).
@@ -95,6 +100,9 @@ public:
   const GeodesicFieldTimings& setupTimings() const { return setupTimings_; }
 
 private:
+  /// Shifts f so that its minimum in each connected component is 0.
+  void startComponentsAtZero(Eigen::VectorXd& f) const;
+
   TetMesh mesh_;
   GeodesicFieldOptions options_;
   TetOperators ops_;

@@ -101,9 +101,16 @@ std::vector<Vec3> fibonacciSphere(int count) {
   return out;
 }
 
+/// The resolution and set-up one evaluation runs at.
+struct Evaluation {
+  double layerInterval, latticeWidth;
+  SequenceStrategy strategy;
+};
+
 /// The scores of one candidate, with the real stages on the coarse mesh (see the file comment).
 /// `gdf` is this worker's set-up of the fields on the coarse mesh as placed.
-void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptions& o) {
+void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptions& o,
+              const Evaluation& at) {
   const bool debug = std::getenv("GEOLATTICE_ORIENT_DEBUG") != nullptr;
   auto tick = Clock::now();
   auto lap = [&](const char* what) {
@@ -124,8 +131,11 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
     p.z() -= zmin;
     zmax = std::max(zmax, p.z());
   }
-  c.height = zmax;
-  const std::vector<int> sources = sourcesNearLowestZ(mesh, o.baseTolerance);
+  c.height = zmax + c.pedestal;
+  // On a pedestal the layers grow from the column's top, the part's lowest vertices up to the
+  // column's reach into it.
+  const std::vector<int> sources =
+      sourcesNearLowestZ(mesh, c.pedestal > 0 ? o.pedestalContactHeight : o.baseTolerance);
   // γ, α, β do not change under rotation, but the reference vector r of Eq. 3 is fixed in the
   // printing frame: in the placed frame it is Rᵀ r.
   gdf.setReference(c.rotation.transpose() * Vec3::UnitX());
@@ -137,8 +147,8 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
 
   // Curved layers, lattice, skeleton.
   SlicerOptions slicer;
-  slicer.interval = o.layerInterval;
-  slicer.firstLayerOffset = o.layerInterval;
+  slicer.interval = at.layerInterval;
+  slicer.firstLayerOffset = at.layerInterval;
   if (fields.gamma.maxCoeff() < slicer.firstLayerOffset) {
     c.layers = 0;
     return;  // thinner than one evaluation layer: nothing to collide
@@ -157,7 +167,7 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
   c.overhangFraction =
       analyzeOverhang(mesh, gdf.topology(), fields.gammaDirection, base, overhang).curvedFraction;
   LatticeOptions lattice;
-  lattice.alphaWidth = lattice.betaWidth = o.latticeWidth;
+  lattice.alphaWidth = lattice.betaWidth = at.latticeWidth;
   lattice.threads = 1;
   const LatticeGraph graph = buildLatticeGraph(layers, lattice);
   lap("overhang+lattice");
@@ -168,11 +178,11 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
   lap("skeleton");
 
   // The paper's A4 order and the independent verifier on it, with the nozzle and the plate.
-  const MaterialSamples material = sampleLatticeMaterial(graph, o.sampleSpacing);
+  MaterialSamples material = sampleLatticeMaterial(graph, o.sampleSpacing);
   const PotentialCollisions pcg = computePotentialCollisions(material, o.nozzle, 1);
   lap("pcg");
   SequenceOptions order;
-  order.strategy = SequenceStrategy::Greedy;
+  order.strategy = at.strategy;
   const PrintSequence sequence = sequencePrint(tree, material, &pcg, order);
   c.forcedSteps = sequence.forcedSteps;
   lap("sequence");
@@ -180,14 +190,17 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
   for (size_t s = 0; s < time.size(); ++s) {
     time[s] = sequence.printIndex[material.subgraph[s]];
   }
+  for (Vec3& p : material.points) {
+    p.z() += c.pedestal;  // the plate is that much further down
+  }
   const CollisionReport report =
       verifyNozzleClearance(material.points, material.normals, time, o.nozzle, 0, nullptr, nullptr,
                             o.plate.enabled ? &o.plate : nullptr);
   lap("verify");
   if (debug) {
-    std::fprintf(stderr, "candidate %s: %zu samples, %zu subgraphs, %d layers, %lld colliding\n",
-                 c.source.c_str(), material.points.size(), graph.subgraphs.size(), c.layers,
-                 report.violatingStations);
+    std::fprintf(stderr, "candidate %s%s: %zu samples, %zu subgraphs, %d layers, %lld colliding\n",
+                 c.source.c_str(), c.pedestal > 0 ? " (pedestal)" : "", material.points.size(),
+                 graph.subgraphs.size(), c.layers, report.violatingStations);
   }
   c.collidingStations = report.violatingStations;
   c.plateStations = report.plateStations;
@@ -199,11 +212,17 @@ bool better(const OrientCandidate& a, const OrientCandidate& b) {
   if (a.feasible != b.feasible) {
     return a.feasible;
   }
+  if (a.refined != b.refined) {
+    return a.refined;  // scores of the two passes are not comparable; refined ones are the print's
+  }
   if (a.collidingStations != b.collidingStations) {
     return a.collidingStations < b.collidingStations;
   }
   if (a.forcedSteps != b.forcedSteps) {
     return a.forcedSteps < b.forcedSteps;
+  }
+  if ((a.pedestal > 0) != (b.pedestal > 0)) {
+    return a.pedestal == 0;
   }
   // Overhang fractions within 0.1 % and layer counts within 2 % are ties.
   if (std::abs(a.overhangFraction - b.overhangFraction) > 1e-3) {
@@ -233,6 +252,18 @@ void OrientOptions::validate() const {
          "> 0 mm and the base tolerance >= 0 mm";
   } else if (evaluationTets < 100) {
     m << "orientation: the evaluation mesh needs at least 100 tets (got " << evaluationTets << ")";
+  } else if (pedestal != PedestalChoice::Never &&
+             (!(pedestalHeight > 0 && pedestalHeight <= 500) ||
+              !(pedestalContactHeight > 0 && pedestalContactHeight <= 50))) {
+    m << "orientation: a pedestal's height must be in (0, 500] mm and its reach into the part in "
+         "(0, 50] mm (got "
+      << pedestalHeight << " and " << pedestalContactHeight << ")";
+  } else if (refineCandidates < 0 || refineCandidates > 1000 || !(refineLayerInterval > 0) ||
+             !(refineLatticeWidth > 0) || !std::isfinite(refineLayerInterval) ||
+             !std::isfinite(refineLatticeWidth)) {
+    m << "orientation: the refinement needs 0-1000 candidates and a layer interval and lattice "
+         "width > 0 mm (got "
+      << refineCandidates << ", " << refineLayerInterval << ", " << refineLatticeWidth << ")";
   } else {
     nozzle.validate();
     if (plate.enabled) {
@@ -309,8 +340,26 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
   for (const Vec3& d : fibonacciSphere(o.sphereCandidates)) {
     add(d, "sphere");
   }
-  for (OrientCandidate& c : result.candidates) {
-    c.baseArea = baseContactArea(surface, c.rotation, o.contactHeight);
+  // On the plate (on a pedestal when one is asked for every candidate) and, where it may help,
+  // on a pedestal too: at once where the part cannot stand, after the first pass where the plate
+  // is in the nozzle's way.
+  const size_t directions = result.candidates.size();
+  auto setBase = [&](OrientCandidate& c, double pedestal) {
+    c.pedestal = pedestal;
+    c.baseArea = baseContactArea(surface, c.rotation,
+                                 pedestal > 0 ? o.pedestalContactHeight : o.contactHeight);
+  };
+  auto addPedestal = [&](size_t i) {
+    OrientCandidate c = result.candidates[i];
+    setBase(c, o.pedestalHeight);
+    result.candidates.push_back(c);
+  };
+  for (size_t i = 0; i < directions; ++i) {
+    setBase(result.candidates[i], o.pedestal == PedestalChoice::Always ? o.pedestalHeight : 0.0);
+    if (o.pedestal == PedestalChoice::WhenItHelps &&
+        result.candidates[i].baseArea < o.minBaseArea) {
+      addPedestal(i);
+    }
   }
   progress.report(0.02);
 
@@ -323,33 +372,95 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
   progress.report(0.1);
 
   // Each worker its own set-up of the fields (the heat and Laplacian factorizations).
-  const size_t n = result.candidates.size();
-  const int workers = workerCount(o.threads, n);
+  const int workers = workerCount(o.threads, result.candidates.size());
   std::vector<std::unique_ptr<GeodesicDistanceFields>> gdf(workers);
-  parallelFor(static_cast<size_t>(workers), workers,
-              [&](size_t w, int) { gdf[w] = std::make_unique<GeodesicDistanceFields>(tets.mesh); });
+  parallelFor(static_cast<size_t>(workers), workers, [&](size_t w, int) {
+    GeodesicFieldOptions fields;
+    fields.dirichletGamma = false;  // a source set per candidate: no factorization each
+    gdf[w] = std::make_unique<GeodesicDistanceFields>(tets.mesh, fields);
+  });
   progress.report(0.15);
-  const ProgressReporter candidates = progress.part(0.15, 1.0);
-  parallelFor(
-      n, workers,
-      [&](size_t i, int w) {
-        OrientCandidate& c = result.candidates[i];
-        if (c.baseArea < o.minBaseArea && c.source != "keep") {
-          return;  // cannot stick to the plate: not worth the stages
-        }
-        const auto start = Clock::now();
-        try {
-          evaluate(c, *gdf[w], o);
-          c.evaluated = true;
-          c.feasible = c.baseArea >= o.minBaseArea;
-        } catch (const GeoLatticeError& e) {
-          c.error = e.what();
-        }
-        c.seconds = seconds(start);
-      },
-      [&](size_t done) { candidates.report(static_cast<double>(done) / n); });
+
+  // Scores the candidates `ids` at `at` on the workers, reporting over [lo, hi].
+  auto score = [&](const std::vector<size_t>& ids, const Evaluation& at, double lo, double hi) {
+    const ProgressReporter part = progress.part(lo, hi);
+    parallelFor(
+        ids.size(), workers,
+        [&](size_t k, int w) {
+          OrientCandidate& c = result.candidates[ids[k]];
+          const auto start = Clock::now();
+          try {
+            evaluate(c, *gdf[w], o, at);
+            c.evaluated = true;
+            c.feasible = c.baseArea >= o.minBaseArea;
+          } catch (const GeoLatticeError& e) {
+            c.error = e.what();
+            c.evaluated = c.feasible = false;
+          }
+          c.seconds += seconds(start);
+        },
+        [&](size_t done) { part.report(static_cast<double>(done) / ids.size()); });
+  };
+  const Evaluation coarse{o.layerInterval, o.latticeWidth, SequenceStrategy::Greedy};
+  // Candidates that cannot stick to the plate are not worth the stages; "keep" is always scored.
+  auto worthScoring = [&](size_t begin, size_t end) {
+    std::vector<size_t> ids;
+    for (size_t i = begin; i < end; ++i) {
+      if (i == 0 || result.candidates[i].baseArea >= o.minBaseArea) {
+        ids.push_back(i);
+      }
+    }
+    return ids;
+  };
+  const bool refine = o.refineCandidates > 0;
+  score(worthScoring(0, result.candidates.size()), coarse, 0.15, refine ? 0.6 : 0.85);
+  if (o.pedestal == PedestalChoice::WhenItHelps) {
+    const size_t before = result.candidates.size();
+    for (size_t i = 0; i < directions; ++i) {
+      if (result.candidates[i].feasible && result.candidates[i].plateStations > 0) {
+        addPedestal(i);
+      }
+    }
+    score(worthScoring(before, result.candidates.size()), coarse, refine ? 0.6 : 0.85,
+          refine ? 0.7 : 1.0);
+  }
+
+  // The refinement: the best of the coarse pass and the part as placed at the printing
+  // resolution.
+  if (refine) {
+    std::vector<size_t> ranked;
+    for (size_t i = 0; i < result.candidates.size(); ++i) {
+      if (result.candidates[i].feasible) {
+        ranked.push_back(i);
+      }
+    }
+    std::stable_sort(ranked.begin(), ranked.end(), [&](size_t a, size_t b) {
+      return better(result.candidates[a], result.candidates[b]);
+    });
+    ranked.resize(std::min<size_t>(ranked.size(), static_cast<size_t>(o.refineCandidates)));
+    // The part as placed too, so that before and after compare at the same resolution.
+    if (std::find(ranked.begin(), ranked.end(), size_t{0}) == ranked.end() &&
+        result.candidates[0].evaluated) {
+      ranked.push_back(0);
+    }
+    for (size_t i : ranked) {
+      result.candidates[i].coarseCollidingStations = result.candidates[i].collidingStations;
+    }
+    score(ranked, Evaluation{o.refineLayerInterval, o.refineLatticeWidth, o.refineStrategy}, 0.7,
+          1.0);
+    for (size_t i : ranked) {
+      result.candidates[i].refined = result.candidates[i].evaluated;
+    }
+    result.refined = static_cast<int>(ranked.size());
+  }
+  for (OrientCandidate& c : result.candidates) {
+    if (!c.refined) {
+      c.coarseCollidingStations = c.collidingStations;
+    }
+  }
 
   // Rank.
+  const size_t n = result.candidates.size();
   std::vector<int> order(n);
   for (size_t i = 0; i < n; ++i) {
     order[i] = static_cast<int>(i);
@@ -369,8 +480,11 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
     std::ostringstream m;
     m << "orientation: no orientation has a base contact area of " << o.minBaseArea
       << " mm^2 (the largest is " << widest->baseArea << " mm^2, with the part's side ("
-      << widest->down.x() << ", " << widest->down.y() << ", " << widest->down.z()
-      << ") down); lower MinBaseArea or give the part a flat side";
+      << widest->down.x() << ", " << widest->down.y() << ", " << widest->down.z() << ") down"
+      << (widest->pedestal > 0 ? ", on a pedestal reaching " +
+                                     std::to_string(o.pedestalContactHeight) + " mm into it"
+                               : std::string())
+      << "); lower MinBaseArea or give the part a flat side";
     throw GeoLatticeError(m.str());
   }
   return result;

@@ -15,18 +15,38 @@
 /// normals of the largest convex-hull facets (a part lying on a facet of its hull sits flat), and
 /// the part as placed ("keep", always candidate 0).
 ///
-/// Objective, lexicographic (earlier criteria decide):
-///   1. the base contact area is at least minBaseArea (the part sticks to the plate);
+/// A pedestal (pedestal/Pedestal.h) widens the search: a direction whose part cannot stand on the
+/// plate (a curved or pointed bottom: less than minBaseArea of contact), or whose nozzle meets the
+/// plate at some station, is also tried standing pedestalHeight mm up on a column of its lowest
+/// pedestalContactHeight mm (PedestalChoice::WhenItHelps, the default). Such a candidate is scored
+/// on the same coarse mesh: γ grows from those lowest vertices (the column's top), the part is
+/// lifted by the height over the plate, the column's own planar layers are not scored. Its base
+/// area is the column's cross-section.
+///
+/// Two passes. The coarse pass scores every candidate at layerInterval / latticeWidth; the best
+/// refineCandidates of it and the part as placed are then scored again at the printing layer
+/// interval, lattice width and order (refineLayerInterval, refineLatticeWidth, refineStrategy:
+/// the coarse pass uses the paper's A4, the print by default the rollout) on the same mesh, where
+/// sub-graphs and their mutual blocking are those the print will have (the coarse lattice can
+/// rank two candidates the other way round). The choice is the best refined candidate.
+///
+/// Objective, lexicographic (earlier criteria decide; refined candidates rank before the others):
+///   1. the base contact area is at least minBaseArea (the part sticks to the plate or its
+///      pedestal's column is that wide);
 ///   2. fewest strict collision stations (material or plate inside the nozzle, the verifier on
-///      the printing order of the coarse lattice);
+///      the printing order of the evaluation lattice);
 ///   3. fewest forced steps of the order (sub-graphs that block each other);
-///   4. the smallest curved-layer overhang fraction (surface that needs support, paper Fig. 8);
-///   5. the fewest layers;
-///   6. the part as placed, then the larger base area.
+///   4. no pedestal (it costs material and a cut) over a pedestal;
+///   5. the smallest curved-layer overhang fraction (surface that needs support, paper Fig. 8);
+///   6. the fewest layers;
+///   7. the part as placed, then the larger base area.
 /// When no candidate has the base area, the search fails naming the best area found.
+#include "lattice/LatticeInfill.h"
 #include "mesh/TetMesh.h"
 #include "nozzle/BuildPlate.h"
 #include "nozzle/NozzleModel.h"
+#include "sequence/PrintSequencer.h"
+#include "slicer/CurvedLayerSlicer.h"
 
 #include <Eigen/Core>
 #include <functional>
@@ -34,6 +54,13 @@
 #include <vector>
 
 namespace geolattice {
+
+/// Whether the search may stand a candidate on a pedestal.
+enum class PedestalChoice {
+  Never,        ///< every candidate stands on the plate
+  WhenItHelps,  ///< also on a pedestal where the part cannot stand or the plate is in the way
+  Always        ///< every candidate on a pedestal (the user asked for one)
+};
 
 struct OrientOptions {
   int sphereCandidates = 100;  ///< Fibonacci sphere directions (>= 0)
@@ -47,9 +74,19 @@ struct OrientOptions {
   double sampleSpacing = 2.0;  ///< material samples of the evaluation's collision check (mm)
   double baseTolerance = 0.05;  ///< the base: vertices this close to the lowest point (mm)
   double overhangThresholdDeg = 135.0;
-  NozzleModel nozzle;  ///< the configured nozzle
-  BuildPlate plate;    ///< the build plate (an obstacle when enabled)
-  int threads = 0;     ///< candidates evaluated in parallel; 0 = hardware concurrency
+  PedestalChoice pedestal = PedestalChoice::WhenItHelps;
+  double pedestalHeight = 10.0;  ///< height of a pedestal under a candidate (mm, > 0)
+  /// A pedestal's column reaches this far up into the part (mm, > 0): its cross-section, the base
+  /// area of a candidate on a pedestal, is the downward faces this close to the lowest point. The
+  /// part's lowest pedestalContactHeight mm are printed as the column's top and cut off with it.
+  double pedestalContactHeight = 1.0;
+  int refineCandidates = 4;  ///< best coarse candidates scored again (>= 0; 0 = coarse only)
+  double refineLayerInterval = SlicerOptions{}.interval;    ///< layers of the refinement (mm, > 0)
+  double refineLatticeWidth = LatticeOptions{}.alphaWidth;  ///< its lattice width (mm, > 0)
+  SequenceStrategy refineStrategy = SequenceOptions{}.strategy;  ///< its printing order
+  NozzleModel nozzle;                                            ///< the configured nozzle
+  BuildPlate plate;  ///< the build plate (an obstacle when enabled)
+  int threads = 0;   ///< candidates evaluated in parallel; 0 = hardware concurrency
   std::function<void(double)> progress;  ///< fraction done (calling thread). Optional.
   std::function<bool()> shouldAbort;     ///< true stops with "orientation search aborted".
   /// Throws GeoLatticeError naming a bad option.
@@ -61,8 +98,9 @@ struct OrientCandidate {
   std::string source;          ///< "keep", "hull" or "sphere"
   Vec3 down = -Vec3::UnitZ();  ///< the part's direction (as placed) that faces the plate
   Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< as placed -> printed (down -> -z)
-  double baseArea = 0;              ///< mm² of the surface touching the plate
-  bool feasible = false;            ///< baseArea >= minBaseArea (and evaluated)
+  double pedestal = 0;    ///< mm of pedestal under the part (0: it stands on the plate)
+  double baseArea = 0;    ///< mm² touching the plate (with a pedestal: the column's cross-section)
+  bool feasible = false;  ///< baseArea >= minBaseArea (and evaluated)
   bool evaluated = false;           ///< the stages ran (skipped below the base area)
   long long collidingStations = 0;  ///< strict verifier, printing order of the coarse lattice
   long long plateStations = 0;      ///< of those, where the nozzle meets the plate
@@ -72,14 +110,17 @@ struct OrientCandidate {
   int layers = 0;
   double height = 0;  ///< part height in this orientation (mm)
   double seconds = 0;
+  bool refined = false;  ///< scored again at the printing resolution (the scores above are those)
+  long long coarseCollidingStations = 0;  ///< collidingStations of the coarse pass
   std::string error;  ///< a stage that failed on this candidate (then it is not feasible)
   int rank = -1;      ///< 0 = best
 };
 
 struct OrientResult {
-  std::vector<OrientCandidate> candidates;  ///< candidate 0 is "keep"
+  std::vector<OrientCandidate> candidates;  ///< candidate 0 is "keep" on the plate
   int best = 0;                             ///< index of the chosen candidate
   int evaluationTets = 0;                   ///< tets of the coarse mesh
+  int refined = 0;                          ///< candidates scored at the printing resolution
   double seconds = 0;
 };
 

@@ -26,11 +26,54 @@ void PedestalOptions::validate() const {
   }
 }
 
+namespace {
+
+/// The contact faces without pinch vertices: a vertex the region's boundary passes more than
+/// once (two faces touching at a corner only, a deeper band reaching round a bump) would get one
+/// column shared by four walls, a non-manifold edge. The faces at such a vertex leave the
+/// footprint, until none is left (each round removes faces, so it ends).
+std::vector<int> withoutPinches(const TriangleSurface& part, std::vector<int> faces) {
+  for (;;) {
+    std::map<std::pair<int, int>, int> directed;
+    for (int f : faces) {
+      const auto& t = part.triangles[f];
+      for (int k = 0; k < 3; ++k) {
+        directed[{t[k], t[(k + 1) % 3]}] = f;
+      }
+    }
+    std::map<int, int> outgoing;  // boundary edges leaving each vertex
+    for (const auto& [edge, face] : directed) {
+      if (!directed.count({edge.second, edge.first})) {
+        ++outgoing[edge.first];
+      }
+    }
+    std::vector<char> pinch(part.points.size(), 0);
+    bool any = false;
+    for (const auto& [v, n] : outgoing) {
+      if (n > 1) {
+        pinch[v] = 1;
+        any = true;
+      }
+    }
+    if (!any) {
+      return faces;
+    }
+    faces.erase(std::remove_if(faces.begin(), faces.end(),
+                               [&](int f) {
+                                 const auto& t = part.triangles[f];
+                                 return pinch[t[0]] || pinch[t[1]] || pinch[t[2]];
+                               }),
+                faces.end());
+  }
+}
+
+}  // namespace
+
 PedestalResult addPedestal(const TriangleSurface& part, const PedestalOptions& o) {
   o.validate();
   PedestalResult result;
   const std::vector<int> contact =
-      baseContactFaces(part, Eigen::Matrix3d::Identity(), o.contactHeight);
+      withoutPinches(part, baseContactFaces(part, Eigen::Matrix3d::Identity(), o.contactHeight));
   for (int f : contact) {
     const auto& t = part.triangles[f];
     result.footprintArea +=

@@ -1,6 +1,7 @@
 """The geolattice CLI on bad input: each case must exit non-zero with exactly one line on stderr
 that names the problem, and leave no partial or temporary file in the output directory."""
 import json
+import math
 import os
 import re
 import shutil
@@ -256,6 +257,47 @@ class CliErrorTest(unittest.TestCase):
         self.assertEqual(report["pedestal"]["footprint_loops"], 1)
         # 12 triangles of the cube (its bottom moved down) + one ring of 4 x 2 wall triangles.
         self.assertEqual(report["mesh"]["input_triangles"], 20)
+        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--pedestal", "tall"], "--pedestal")
+
+    def test_orientation_stands_a_ball_on_a_pedestal(self):
+        # A 30 mm ball has no side to stand on (0.3 mm deep its cap is 28 mm^2; --min-base-area
+        # 50 asks for more): --orient auto puts it on a 10 mm pedestal reaching 1 mm into it, and
+        # GL Pedestal builds that one; --pedestal 0 forbids it, and then no orientation stands.
+        rings, segments, r = 24, 32, 15.0
+        lines = ["v 0 0 0"]
+        for i in range(1, rings):
+            a = math.pi * i / rings
+            for k in range(segments):
+                b = 2 * math.pi * k / segments
+                lines.append("v %.6f %.6f %.6f" % (r * math.sin(a) * math.cos(b), r * math.sin(a) * math.sin(b),
+                                                   r - r * math.cos(a)))
+        lines.append("v 0 0 %g" % (2 * r))
+        ring = lambda i, k: 2 + (i - 1) * segments + k % segments
+        top = 2 + (rings - 1) * segments
+        for k in range(segments):
+            lines.append("f 1 %d %d" % (ring(1, k + 1), ring(1, k)))
+            for i in range(1, rings - 1):
+                lines.append("f %d %d %d" % (ring(i, k), ring(i, k + 1), ring(i + 1, k + 1)))
+                lines.append("f %d %d %d" % (ring(i, k), ring(i + 1, k + 1), ring(i + 1, k)))
+            lines.append("f %d %d %d" % (top, ring(rings - 1, k), ring(rings - 1, k + 1)))
+        ball = os.path.join(self.tmp, "ball.obj")
+        with open(ball, "w") as f:
+            f.write("\n".join(lines) + "\n")
+        common = [ball, "--orient", "auto", "--min-base-area", "50", "--orient-candidates", "20", "--until", "mesh"]
+        self.expect_error(common + ["--pedestal", "0"], "no orientation has a base contact area of 50")
+        result = self.run_cli(*common, "-o", self.out, "-q")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(self.out, "report.json")) as f:
+            report = json.load(f)
+        self.assertEqual(report["orient"]["pedestal_mm"], 10)
+        self.assertEqual(report["pedestal"]["height_mm"], 10)
+        self.assertGreaterEqual(report["pedestal"]["footprint_area_mm2"], 50)
+        self.assertGreaterEqual(report["orient"]["refined_candidates"], 1)
+        with open(os.path.join(self.out, "orientation.csv")) as f:
+            header = f.readline().strip().split(",")
+            first = dict(zip(header, f.readline().strip().split(",")))
+        self.assertEqual(float(first["pedestal_mm"]), 10)
+        self.assertEqual(first["refined"], "1")
 
     def test_unit_mistakes_fail_at_input(self):
         # A part exported in metres (0.05 across) and one with coordinates around 1e12.
@@ -509,6 +551,21 @@ class CliGateTest(unittest.TestCase):
         self.assertGreater(t["stations"], 200000)
         self.assertLess(t["violating_stations"], 100)  # 34 measured: beads at the face's rim
         self.assertEqual(report["pedestal"]["height_mm"], 10)
+
+    def test_the_bunny_auto_oriented_prints_with_the_default_nozzle(self):
+        # Issue 14's acceptance for the bunny: --orient auto with the default 45 degree cone finds
+        # a side (here on a 10 mm pedestal) where the strict verifier passes the whole toolpath,
+        # no station or air move in the build plate, and the programs are written.
+        result, report, programs, out = self.run_cli("bunny.obj", "--fit-size", "80", "--orient", "auto")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        t = report["toolpath"]
+        self.assertTrue(t["collision_free"])
+        self.assertEqual(t["violating_stations"], 0)
+        self.assertEqual(t["plate_stations"], 0)
+        self.assertGreater(t["stations"], 200000)
+        self.assertTrue(any(p.endswith(".script") for p in programs), programs)
+        self.assertLess(report["orient"]["after"]["colliding_stations"],
+                        report["orient"]["before"]["colliding_stations"])
 
     def test_split_sub_graphs_are_printed_as_pieces(self):
         # The knight as placed under the example printhead has sub-graphs that block each other

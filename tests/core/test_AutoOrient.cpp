@@ -50,6 +50,29 @@ TriangleSurface flatMushroom() {
   return revolve({{0, 0}, {10, 0}, {10, 26}, {25, 26}, {25, 30}, {0, 30}}, 48);
 }
 
+/// A ball of radius R centred at z = R, its bottom cut flat at height `cut` (0: no cut, a ball).
+TriangleSurface cutBall(double R, double cut, int rings, int segments) {
+  std::vector<std::pair<double, double>> profile = {{0, cut}};
+  const double start = std::acos(1 - cut / R);  // polar angle from the bottom pole
+  for (int i = 0; i <= rings; ++i) {
+    const double a = start + (M_PI - start) * i / rings;
+    if (i == 0 && cut == 0) {
+      continue;
+    }
+    profile.emplace_back(R * std::sin(a), R - R * std::cos(a));
+  }
+  profile.back().first = 0;
+  return revolve(profile, segments);
+}
+
+OrientOptions fewCandidates(int sphere) {
+  OrientOptions o;
+  o.sphereCandidates = sphere;
+  o.hullCandidates = 0;
+  o.evaluationTets = 4000;
+  return o;
+}
+
 }  // namespace
 
 TEST(AutoOrient, FindsTheOnlyPrintableOrientation) {
@@ -95,6 +118,78 @@ TEST(AutoOrient, NoOrientationWithTheBaseAreaIsAClearError) {
   OrientOptions bad;
   bad.minBaseArea = -1;
   EXPECT_THROW(searchOrientation(flatMushroom(), bad), GeoLatticeError);
+}
+
+TEST(AutoOrient, APartWithNoFlatSideStandsOnAPedestal) {
+  // A ball touches the plate on a small cap: 0.3 mm deep it is 2 pi R 0.3 = 28 mm^2, below the
+  // 50 asked for; a pedestal reaching 1 mm into it stands it on 2 pi R 1 = 94 mm^2.
+  const TriangleSurface ball = cutBall(15, 0, 24, 32);
+  OrientOptions o = fewCandidates(6);
+  o.minBaseArea = 50;
+  o.pedestal = PedestalChoice::Never;
+  EXPECT_THROW(searchOrientation(ball, o), GeoLatticeError);
+  o.pedestal = PedestalChoice::WhenItHelps;
+  const OrientResult r = searchOrientation(ball, o);
+  const OrientCandidate& best = r.candidates[r.best];
+  EXPECT_TRUE(best.feasible);
+  EXPECT_EQ(best.pedestal, o.pedestalHeight);
+  EXPECT_GE(best.baseArea, o.minBaseArea);  // the faces within 1 mm (as tessellated)
+  EXPECT_GT(best.baseArea, 1.5 * r.candidates[0].baseArea);
+  EXPECT_NEAR(best.height, 30 + o.pedestalHeight, 0.5);
+  EXPECT_FALSE(r.candidates[0].feasible);  // the ball as placed, on the plate
+}
+
+TEST(AutoOrient, ThePlateInTheNozzlesWayIsLiftedOnAPedestal) {
+  // A ball on a small flat (r 4 mm): the first layers curl around the flat's rim a millimetre
+  // above the plate, where the nozzle meets it. Only the placement is a candidate.
+  const TriangleSurface blob = cutBall(15, 15 - std::sqrt(15.0 * 15.0 - 16.0), 24, 32);
+  OrientOptions o = fewCandidates(0);
+  o.pedestal = PedestalChoice::Never;
+  const OrientResult onPlate = searchOrientation(blob, o);
+  ASSERT_EQ(onPlate.candidates.size(), 1u);
+  const OrientCandidate& keep = onPlate.candidates[0];
+  EXPECT_GT(keep.plateStations, 0);
+  EXPECT_EQ(keep.pedestal, 0);
+  o.pedestal = PedestalChoice::WhenItHelps;
+  const OrientResult r = searchOrientation(blob, o);
+  ASSERT_EQ(r.candidates.size(), 2u);  // the placement on the plate and on a pedestal
+  const OrientCandidate& best = r.candidates[r.best];
+  EXPECT_EQ(best.pedestal, o.pedestalHeight);
+  EXPECT_LT(best.collidingStations, r.candidates[0].collidingStations);
+  EXPECT_EQ(best.plateStations, 0);
+  o.pedestal = PedestalChoice::Always;  // every candidate on one: the placement only
+  const OrientResult always = searchOrientation(blob, o);
+  ASSERT_EQ(always.candidates.size(), 1u);
+  EXPECT_EQ(always.candidates[0].pedestal, o.pedestalHeight);
+}
+
+TEST(AutoOrient, TheBestCoarseCandidatesAndThePlacementAreScoredAtThePrintsResolution) {
+  OrientOptions o = fewCandidates(16);
+  o.refineCandidates = 2;
+  const OrientResult r = searchOrientation(flatMushroom(), o);
+  int refined = 0;
+  for (const OrientCandidate& c : r.candidates) {
+    refined += c.refined;
+    if (!c.refined) {
+      EXPECT_EQ(c.coarseCollidingStations, c.collidingStations);
+    }
+  }
+  EXPECT_EQ(refined, r.refined);
+  EXPECT_GE(r.refined, 2);
+  EXPECT_LE(r.refined, 3);  // the two best and the placement, when it is not one of them
+  EXPECT_TRUE(r.candidates[0].refined);
+  const OrientCandidate& best = r.candidates[r.best];
+  EXPECT_TRUE(best.refined);
+  // At 0.6 mm layers and a 4 mm lattice there are more stations than at 1.5 mm and 8 mm.
+  EXPECT_GT(best.stations, 0);
+  EXPECT_GT(best.layers, 30 / o.layerInterval);
+  for (const OrientCandidate& c : r.candidates) {
+    if (c.refined) {
+      EXPECT_LE(best.collidingStations, c.collidingStations);
+    }
+  }
+  o.refineCandidates = -1;
+  EXPECT_THROW(searchOrientation(flatMushroom(), o), GeoLatticeError);
 }
 
 TEST(AutoOrient, BaseContactArea) {

@@ -45,7 +45,8 @@ TEST(vtkGLPrintPart, DefaultsAreThoseOfTheStageFilters) {
   EXPECT_EQ(part->GetStrategy(), reference.Sequencer->GetStrategy());
   EXPECT_EQ(part->GetNozzleAngle(), reference.Nozzle->GetNozzleAngle());
   EXPECT_EQ(part->GetOrient(), reference.Orientation->GetOrient());
-  EXPECT_EQ(part->GetPedestalHeight(), 0.0);
+  EXPECT_EQ(part->GetPedestalHeight(), -1.0);  // automatic: the orientation search decides
+  EXPECT_EQ(reference.GetPedestalRequest(), -1.0);
   std::ostringstream os;
   part->Print(os);
   for (const char* text :

@@ -31,6 +31,7 @@ CLI_CHOICES = {
     "GLURScriptWriter.AllowUnreachable": {"on": 1, "off": 0},
     "GLNozzle.BuildPlate": {"obstacle": 1, "none": 0},
     "GLAutoOrient.Orient": {"keep": 0, "auto": 1},
+    "GLPrintPart.PedestalHeight": {"auto": -1},
     "GLGCodeWriter.Flavor": {"linuxcnc": 0, "reprap": 1},
     "GLURScriptWriter.SearchCellLayout": {"search": 1, "off": 0},
     "GLGCodeWriter.ToolCentrePoint": {"controller": 0, "cam": 1},
