@@ -7,6 +7,8 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_distance_placement.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_filter.h>
@@ -84,6 +86,29 @@ double area(const TriangleSurface& s) {
   return a;
 }
 
+/// Garland-Heckbert edge collapse of `mesh` to about `target` triangles (see the header).
+void simplify(Mesh& mesh, double target, const SimplificationOptions& o,
+              const ProgressReporter& report) {
+  const double tolerance = o.tolerance > 0 ? o.tolerance : 0.25 * o.targetEdgeLength;
+  using GH = SMS::GarlandHeckbert_plane_policies<Mesh, K>;
+  GH policies(mesh);
+  SMS::Bounded_distance_placement<GH::Get_placement, K> placement(tolerance,
+                                                                  policies.get_placement());
+  SMS::Bounded_normal_change_filter<> filter;
+  const size_t edges = static_cast<size_t>(1.5 * std::max(4.0, target));
+  bool aborted = false;
+  CollapseVisitor visitor(report, (static_cast<double>(mesh.number_of_edges()) - edges) / 3.0,
+                          aborted);  // a collapse removes three edges
+  SMS::edge_collapse(mesh, StopPredicate{edges, &aborted},
+                     CGAL::parameters::get_cost(policies.get_cost())
+                         .get_placement(placement)
+                         .filter(filter)
+                         .visitor(visitor));
+  if (aborted) {
+    throw GeoLatticeError("surface simplification aborted");
+  }
+}
+
 }  // namespace
 
 double meanEdgeLength(const TriangleSurface& s) {
@@ -115,30 +140,23 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
   // An equilateral triangle of edge L has area √3/4 L²: the triangle count of the target.
   const double target =
       area(surface) / (std::sqrt(3.0) / 4.0 * o.targetEdgeLength * o.targetEdgeLength);
-  if (r.inputMeanEdge >= o.finerThan * o.targetEdgeLength ||
-      static_cast<double>(r.inputTriangles) < 2.0 * target) {
+  const bool remesh = o.method == SimplificationMethod::IsotropicRemeshing;
+  if (!remesh && (r.inputMeanEdge >= o.finerThan * o.targetEdgeLength ||
+                  static_cast<double>(r.inputTriangles) < 2.0 * target)) {
     return r;
   }
   Mesh mesh = cgal::toSurfaceMesh(surface, "surface simplification");
   const Mesh input = mesh;
-  const double tolerance = o.tolerance > 0 ? o.tolerance : 0.25 * o.targetEdgeLength;
-  using GH = SMS::GarlandHeckbert_plane_policies<Mesh, K>;
-  GH policies(mesh);
-  SMS::Bounded_distance_placement<GH::Get_placement, K> placement(tolerance,
-                                                                  policies.get_placement());
-  SMS::Bounded_normal_change_filter<> filter;
-  const size_t edges = static_cast<size_t>(1.5 * std::max(4.0, target));
   const ProgressReporter report(o.progress, o.shouldAbort, "surface simplification");
-  bool aborted = false;
-  CollapseVisitor visitor(report, (static_cast<double>(mesh.number_of_edges()) - edges) / 3.0,
-                          aborted);  // a collapse removes three edges
-  SMS::edge_collapse(mesh, StopPredicate{edges, &aborted},
-                     CGAL::parameters::get_cost(policies.get_cost())
-                         .get_placement(placement)
-                         .filter(filter)
-                         .visitor(visitor));
-  if (aborted) {
-    throw GeoLatticeError("surface simplification aborted");
+  if (remesh) {
+    auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
+    PMP::detect_sharp_edges(mesh, o.sharpAngleDeg, sharp);
+    PMP::isotropic_remeshing(
+        faces(mesh), o.targetEdgeLength, mesh,
+        CGAL::parameters::number_of_iterations(3).edge_is_constrained_map(sharp));
+    report.report(1.0);
+  } else {
+    simplify(mesh, target, o, report);
   }
   mesh.collect_garbage();
   if (PMP::does_self_intersect(mesh)) {

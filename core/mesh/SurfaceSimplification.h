@@ -7,13 +7,29 @@
 /// within `tolerance` of the input surface, no collapse that flips a face normal by more than
 /// 90°) reduces it to about the target edge length, keeping it closed and edge-manifold; the
 /// result is refused (the input returned unchanged) if it self-intersects.
+///
+/// Or, with SimplificationMethod::IsotropicRemeshing, CGAL's isotropic remeshing to the target
+/// edge length (edge splits, collapses, flips and tangential relaxation, vertices projected back
+/// onto the input; edges sharper than sharpAngleDeg kept as constraints): well-shaped triangles
+/// of about that length whatever the input's triangulation. TetGen refines wherever an input
+/// triangle is a sliver (marching-cubes and CAD exports are full of them), so such a surface
+/// meshes in a fraction of the time and near the asked tet count (a generated genus-3 block,
+/// 17k triangles, coarse target: 202k tets in 11.7 s after the edge collapse, 18k in 0.17 s
+/// after remeshing). It remeshes whatever the input's mean edge (finerThan is not used).
 #include "mesh/TetMesh.h"
 
 #include <functional>
 
 namespace geolattice {
 
+enum class SimplificationMethod {
+  EdgeCollapse,       ///< Garland-Heckbert edge collapse, only when the input is finer
+  IsotropicRemeshing  ///< CGAL isotropic remeshing to the target edge length
+};
+
 struct SimplificationOptions {
+  SimplificationMethod method = SimplificationMethod::EdgeCollapse;
+  double sharpAngleDeg = 60;    ///< remeshing: edges whose faces meet sharper than this are kept
   double targetEdgeLength = 0;  ///< mm (> 0): the mean edge length aimed at
   /// Largest distance of a new vertex from the input surface (mm); 0 = a quarter of the target
   /// edge length.

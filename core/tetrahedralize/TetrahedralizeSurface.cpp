@@ -246,7 +246,10 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   const TriangleSurface original = surface;  // if TetGen refuses the simplified one
   if (options.simplifyFinerThan > 0) {
     SimplificationOptions simplify;
-    simplify.targetEdgeLength = firstEdge;
+    simplify.method = options.simplification;
+    simplify.targetEdgeLength = options.simplification == SimplificationMethod::IsotropicRemeshing
+                                    ? kRemeshEdgeFactor * firstEdge
+                                    : firstEdge;
     simplify.finerThan = options.simplifyFinerThan;
     simplify.shouldAbort = options.shouldAbort;
     simplify.progress = [&](double f) {

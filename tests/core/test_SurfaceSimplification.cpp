@@ -25,7 +25,63 @@ double torusDistance(const Vec3& p, const Vec3& centre, double R, double r) {
   return std::hypot(ring, q.y()) - r;
 }
 
+/// A cylinder (radius r, height h, axis z from 0) as CAD programs export it: `segments` tall thin
+/// side rectangles and cap fans of slivers from the centre, every triangle needle-shaped.
+TriangleSurface cadCylinder(double r, double h, int segments) {
+  TriangleSurface s;
+  s.points.emplace_back(0, 0, 0);
+  s.points.emplace_back(0, 0, h);
+  for (int k = 0; k < segments; ++k) {
+    const double a = 2 * M_PI * k / segments;
+    s.points.emplace_back(r * std::cos(a), r * std::sin(a), 0);
+    s.points.emplace_back(r * std::cos(a), r * std::sin(a), h);
+  }
+  for (int k = 0; k < segments; ++k) {
+    const int b0 = 2 + 2 * k, t0 = b0 + 1, b1 = 2 + 2 * ((k + 1) % segments), t1 = b1 + 1;
+    s.triangles.push_back({0, b1, b0});
+    s.triangles.push_back({1, t0, t1});
+    s.triangles.push_back({b0, b1, t1});
+    s.triangles.push_back({b0, t1, t0});
+  }
+  return s;
+}
+
 }  // namespace
+
+TEST(SurfaceSimplification, RemeshingGivesWellShapedTrianglesOfTheTargetLength) {
+  // 240 needles of 40 mm x 0.8 mm around a 30 mm cylinder: remeshed to 4 mm edges, closed, on
+  // the cylinder, its rims kept sharp; TetGen then meshes it near the asked count.
+  const TriangleSurface cad = cadCylinder(30, 40, 240);
+  SimplificationOptions o;
+  o.method = SimplificationMethod::IsotropicRemeshing;
+  o.targetEdgeLength = 4.0;
+  const SimplificationResult r = simplifySurface(cad, o);
+  ASSERT_TRUE(r.simplified) << r.refused;
+  EXPECT_NEAR(r.outputMeanEdge, 4.0, 1.0);
+  EXPECT_TRUE(checkSurface(r.surface).isClosedManifold());
+  double smallestAngle = M_PI;
+  for (const auto& t : r.surface.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = r.surface.points[t[(k + 1) % 3]] - r.surface.points[t[k]];
+      const Vec3 v = r.surface.points[t[(k + 2) % 3]] - r.surface.points[t[k]];
+      smallestAngle = std::min(smallestAngle, std::acos(u.normalized().dot(v.normalized())));
+    }
+  }
+  EXPECT_GT(smallestAngle * 180 / M_PI, 10.0);  // the input's needles: 0.6 degrees
+  for (const Vec3& p : r.surface.points) {
+    const double radial = std::hypot(p.x(), p.y());
+    const bool onSide = std::abs(radial - 30) < 0.05;
+    const bool onCap = std::abs(p.z()) < 1e-9 || std::abs(p.z() - 40) < 1e-9;
+    EXPECT_TRUE(onSide || (onCap && radial <= 30 + 1e-9)) << p.transpose();
+  }
+  TetrahedralizeOptions t;
+  t.autoTargetTets = 15000;
+  t.simplification = SimplificationMethod::IsotropicRemeshing;
+  const TetrahedralizeResult tets = tetrahedralizeSurface(cad, t);
+  EXPECT_TRUE(tets.simplified);
+  EXPECT_GT(tets.tetCount, 15000 / 2);
+  EXPECT_LT(tets.tetCount, 15000 * 2);
+}
 
 TEST(SurfaceSimplification, FineSphereIsCoarsenedWithinTolerance) {
   const Vec3 centre(1, 2, 30);
