@@ -86,6 +86,17 @@ void addModelOptions(std::vector<CliOption>& t) {
                  const double mm = p.GetPedestalRequest();
                  return mm < 0 ? std::string("auto") : text(mm);
                }});
+  t.push_back({"--orient-tries", "N", orient,
+               "with --orient auto, when the best candidate's toolpath collides, run up\n"
+               "to N candidates of the search through the toolpath and print the one\n"
+               "that collides least (1 = the search's best only)",
+               "GLPrintPart.OrientTries",
+               [](P& p, RunOptions&, const std::string& v) {
+                 p.OrientationTries = static_cast<int>(wholeNumber("--orient-tries", v, 1, 20));
+               },
+               [](P& p, const RunOptions&) {
+                 return text(p.OrientationTries);
+               }});
   t.push_back({"--orient-candidates", "N", orient,
                "candidate directions from a uniform sphere sample (plus the\n"
                "convex-hull facets and the placement as it is)",

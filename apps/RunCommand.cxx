@@ -190,11 +190,58 @@ private:
       std::snprintf(name, sizeof name, "toolpath/step_%04d.vtp", k);
       this->Files.add((fs::path(R.outDir) / name).string(), 0.0);
     }
+    if (this->TryOtherOrientations(pathCollisions)) {
+      return this->Stages();  // the stages again for the chosen candidate: its files and report
+    }
     if (R.until == "toolpath") {
       return kExitOk;
     }
     return runProgramStage(*this, pathCollisions);
   }
+
+  /// With --orient auto, when the search's best candidate gives a colliding toolpath: the next
+  /// candidates through the toolpath verifier (GLPrintPipeline::ChooseOrientationByToolpath),
+  /// recorded in report.json orient.tries. True when another candidate was chosen (once a run).
+  bool TryOtherOrientations(vtkDataObject* pathCollisions) {
+    if (this->OrientationsTried || P.Orientation->GetOrient() != vtkGLAutoOrient::AUTO ||
+        fieldValue(pathCollisions, arrays::CollisionViolatingStations) == 0) {
+      return false;
+    }
+    this->OrientationsTried = true;
+    const auto tries = P.ChooseOrientationByToolpath(
+        P.OrientationTries, [&](const GLPrintPipeline::OrientationTry& t) {
+          if (!R.quiet) {
+            std::cout << "geolattice: the toolpath collides: trying the orientation search's "
+                         "candidate of rank "
+                      << t.rank << "\n";
+          }
+        });
+    Json list = Json::array();
+    for (const auto& t : tries) {
+      list.push_back({{"rank", t.rank},
+                      {"ok", t.ok},
+                      {"colliding_stations", t.colliding},
+                      {"stations", t.stations},
+                      {"pedestal_mm", t.pedestal},
+                      {"seconds", t.seconds}});
+    }
+    Json& orient = this->Section("orient");
+    orient["tries"] = list;
+    orient["chosen_rank"] = P.Orientation->GetCandidateRank();
+    if (P.Orientation->GetCandidateRank() == 0) {
+      return false;
+    }
+    for (const char* stale : {"pedestal", "mesh", "gdf", "layers", "overhang", "lattice",
+                              "skeleton", "sequence", "toolpath", "summary"}) {
+      this->Report.erase(stale);
+    }
+    if (!R.quiet) {
+      std::cout << "geolattice: printing the candidate of rank "
+                << P.Orientation->GetCandidateRank() << " (its toolpath collides least)\n";
+    }
+    return true;
+  }
+  bool OrientationsTried = false;
 
   /// Checks the parameters of every stage the run will reach before the first one runs: VTK's
   /// information pass visits every filter upstream of the last ones, and each filter checks its

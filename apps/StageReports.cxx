@@ -126,6 +126,7 @@ void reportOrientation(vtkDataObject* o, Json& s) {
   s["search_seconds"] = fieldValue(o, arrays::OrientSeconds);
   s["evaluation_tets"] = count(o, arrays::OrientEvaluationTets);
   s["refined_candidates"] = count(o, arrays::OrientRefined);
+  s["chosen_rank"] = count(o, arrays::OrientChosenRank);
   s["pedestal_mm"] = fieldValue(o, arrays::OrientPedestalHeight);
   s["before"] = {{"colliding_stations", count(o, arrays::OrientBefore)}};
   s["after"] = {{"colliding_stations", count(o, arrays::OrientAfter)}};

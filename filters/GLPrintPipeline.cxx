@@ -6,6 +6,13 @@
 #include "orient/AutoOrient.h"
 
 #include <vtkAlgorithm.h>
+#include <vtkDataArray.h>
+#include <vtkExecutive.h>
+#include <vtkFieldData.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+
+#include <chrono>
 
 #include <algorithm>
 
@@ -84,6 +91,68 @@ void GLPrintPipeline::MatchOrientationToPrint() {
   this->Orientation->SetRefineLatticeWidth(
       std::min(this->LatticeInfill->GetAlphaWidth(), this->LatticeInfill->GetBetaWidth()));
   this->Orientation->SetRefineStrategy(this->Sequencer->GetStrategy());
+}
+
+std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationByToolpath(
+    int tries, const std::function<void(const OrientationTry&)>& starting) {
+  std::vector<OrientationTry> done;
+  if (this->Orientation->GetOrient() != vtkGLAutoOrient::AUTO || tries < 2 || this->TetMeshInput) {
+    return done;
+  }
+  auto field = [](vtkDataObject* d, const char* name) {
+    vtkDataArray* a = d ? d->GetFieldData()->GetArray(name) : nullptr;
+    return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : -1.0;
+  };
+  for (int rank = 0; rank < tries && !geolattice::stopRequest().load(); ++rank) {
+    this->Orientation->SetCandidateRank(rank);
+    OrientationTry t;
+    t.rank = rank;
+    if (rank > 0) {
+      // Only candidates that can stand and were scored at the print's resolution.
+      vtkPolyData* candidates =
+          vtkPolyData::SafeDownCast(this->Orientation->GetOutputDataObject(1));
+      vtkDataArray* ranks =
+          candidates ? candidates->GetPointData()->GetArray(geolattice::arrays::OrientRank)
+                     : nullptr;
+      vtkDataArray* feasible =
+          candidates ? candidates->GetPointData()->GetArray(geolattice::arrays::Feasible) : nullptr;
+      vtkDataArray* refined =
+          candidates ? candidates->GetPointData()->GetArray(geolattice::arrays::Refined) : nullptr;
+      bool usable = false;
+      for (vtkIdType i = 0; ranks && feasible && refined && i < ranks->GetNumberOfTuples(); ++i) {
+        usable = usable || (ranks->GetTuple1(i) == rank && feasible->GetTuple1(i) > 0 &&
+                            refined->GetTuple1(i) > 0);
+      }
+      if (!usable) {
+        break;
+      }
+      if (starting) {
+        starting(t);
+      }
+    }
+    const auto start = std::chrono::steady_clock::now();
+    t.ok = this->ToolpathVerifier->GetExecutive()->Update() != 0;
+    t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    vtkDataObject* verdict = this->ToolpathVerifier->GetOutputDataObject(0);
+    t.colliding =
+        static_cast<long long>(field(verdict, geolattice::arrays::CollisionViolatingStations));
+    t.stations = static_cast<long long>(field(verdict, geolattice::arrays::CollisionStations));
+    t.pedestal =
+        field(this->Orientation->GetOutputDataObject(0), geolattice::arrays::OrientPedestalHeight);
+    t.ok = t.ok && t.colliding >= 0;
+    done.push_back(t);
+    if (t.ok && t.colliding == 0) {
+      break;
+    }
+  }
+  const OrientationTry* best = nullptr;
+  for (const OrientationTry& t : done) {
+    if (t.ok && (!best || t.colliding < best->colliding)) {
+      best = &t;
+    }
+  }
+  this->Orientation->SetCandidateRank(best ? best->rank : 0);
+  return done;
 }
 
 vtkAlgorithm* GLPrintPipeline::Filter(Stage stage) {

@@ -41,6 +41,9 @@
 
 #include <vtkNew.h>
 
+#include <functional>
+#include <vector>
+
 class vtkAlgorithm;
 
 class GEOLATTICEFILTERS_EXPORT GLPrintPipeline {
@@ -89,6 +92,31 @@ public:
   /// setting parameters, before updating; it modifies nothing when they already match or the
   /// orientation is Keep (then a print setting re-runs no orientation).
   void MatchOrientationToPrint();
+
+  /// One orientation run through the toolpath verifier by ChooseOrientationByToolpath.
+  struct OrientationTry {
+    int rank = 0;             ///< the search's rank of the candidate
+    bool ok = false;          ///< the stages ran (false: one failed on this candidate)
+    long long colliding = 0;  ///< strict toolpath stations with the nozzle in material/plate
+    long long stations = 0;   ///< stations checked
+    double pedestal = 0;      ///< mm of pedestal under it
+    double seconds = 0;
+  };
+
+  /// The orientation the real toolpath prints best: with Orient Auto, the search's candidates are
+  /// run through the toolpath verifier in rank order, up to `tries` of them (feasible ones scored
+  /// at the print's resolution), until one is strictly collision-free; the one with the fewest
+  /// colliding stations is kept (Orientation's CandidateRank; the earlier rank on a tie). The
+  /// search runs once: a rank change only re-places the part. Why: the search scores sub-graph
+  /// orders, not toolpaths (no axis tilts, no collision inside a sub-graph), so two close
+  /// candidates can print the other way round. `starting` (optional) is called before each try
+  /// after the first. Nothing is tried with Orient Keep, tries < 2 or a stop request (Ctrl-C).
+  std::vector<OrientationTry> ChooseOrientationByToolpath(
+      int tries, const std::function<void(const OrientationTry&)>& starting = {});
+
+  /// Candidates ChooseOrientationByToolpath runs at most (CLI --orient-tries, GL Print Part
+  /// OrientTries; 1 = the search's best only).
+  int OrientationTries = 3;
 
   /// The filter of a stage (Mesh: the tetrahedralizer even when skipped).
   vtkAlgorithm* Filter(Stage stage);

@@ -291,7 +291,8 @@ constexpr const char* OrientEvaluationTets = "OrientEvaluationTets";
 /// mm of pedestal the search chose (0: none; GL Pedestal builds it, see its UseOrientation)
 constexpr const char* OrientPedestalHeight = "OrientPedestalHeight";
 constexpr const char* OrientPedestalContactHeight =
-    "OrientPedestalContactHeight";  ///< its reach, mm
+    "OrientPedestalContactHeight";                            ///< its reach, mm
+constexpr const char* OrientChosenRank = "OrientChosenRank";  ///< rank of the candidate shown
 constexpr const char* OrientRefined =
     "OrientRefined";                          ///< candidates scored at the print's resolution
 constexpr const char* Pedestal = "Pedestal";  ///< per candidate: mm of pedestal (0 = none)

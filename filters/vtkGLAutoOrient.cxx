@@ -9,6 +9,8 @@
 #include "common/Error.h"
 #include "orient/AutoOrient.h"
 
+#include <algorithm>
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
@@ -24,6 +26,29 @@
 vtkStandardNewMacro(vtkGLAutoOrient);
 
 namespace gl = geolattice;
+
+struct vtkGLAutoOrient::SearchCache {
+  gl::OrientResult result;
+  vtkMTimeType filterTime = 0;  ///< this filter's MTime when it ran (the nozzle included)
+  vtkMTimeType inputTime = 0;   ///< the input's
+  std::vector<int> byRank;      ///< candidate index of each rank
+};
+
+vtkGLAutoOrient::~vtkGLAutoOrient() = default;
+
+void vtkGLAutoOrient::SetCandidateRank(int rank) {
+  rank = std::max(0, rank);
+  if (rank == this->CandidateRank) {
+    return;
+  }
+  // A rank change alone keeps the search: its time moves with the filter's.
+  const bool current = this->Cache && this->Cache->filterTime == this->GetMTime();
+  this->CandidateRank = rank;
+  this->Modified();
+  if (current) {
+    this->Cache->filterTime = this->GetMTime();
+  }
+}
 
 vtkGLAutoOrient::vtkGLAutoOrient() {
   this->SetNumberOfOutputPorts(2);
@@ -178,13 +203,28 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
       return;
     }
     gl::OrientOptions options = orientOptions(this);
-    options.progress = gl::progressRange(this, 0.0, 0.95);
-    options.shouldAbort = gl::abortFlag(this);
     const gl::TriangleSurface surface = gl::toTriangleSurface(input);
-    const gl::OrientResult r = gl::searchOrientation(surface, options);
+    if (!this->Cache || this->Cache->filterTime != this->GetMTime() ||
+        this->Cache->inputTime != input->GetMTime()) {
+      this->Cache.reset();
+      options.progress = gl::progressRange(this, 0.0, 0.95);
+      options.shouldAbort = gl::abortFlag(this);
+      auto cache = std::make_unique<SearchCache>();
+      cache->result = gl::searchOrientation(surface, options);
+      cache->byRank.resize(cache->result.candidates.size());
+      for (size_t i = 0; i < cache->byRank.size(); ++i) {
+        cache->byRank[cache->result.candidates[i].rank] = static_cast<int>(i);
+      }
+      cache->filterTime = this->GetMTime();
+      cache->inputTime = input->GetMTime();
+      this->Cache = std::move(cache);
+    }
     gl::checkAbort(this, 0.95);
-    const gl::OrientCandidate& best = r.candidates[r.best];
-    const gl::TriangleSurface placed = gl::orientSurface(surface, best.rotation);
+    const gl::OrientResult& r = this->Cache->result;
+    const int rank =
+        std::min(this->CandidateRank, static_cast<int>(this->Cache->byRank.size()) - 1);
+    const gl::OrientCandidate& chosen = r.candidates[this->Cache->byRank[rank]];
+    const gl::TriangleSurface placed = gl::orientSurface(surface, chosen.rotation);
     output->ShallowCopy(input);
     vtkNew<vtkPoints> points;
     points->SetDataTypeToDouble();
@@ -196,11 +236,11 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     vtkNew<vtkFieldData> fd;
     fd->ShallowCopy(input->GetFieldData());
     addMode(fd, "auto");
-    const gl::Vec3 up = -best.down;
+    const gl::Vec3 up = -chosen.down;
     std::vector<double> rotation(9);
     for (int i = 0; i < 3; ++i) {
       for (int j = 0; j < 3; ++j) {
-        rotation[3 * i + j] = best.rotation(i, j);
+        rotation[3 * i + j] = chosen.rotation(i, j);
       }
     }
     gl::addFieldArray(fd, gl::arrays::OrientUp, {up.x(), up.y(), up.z()});
@@ -209,11 +249,12 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::addFieldArray(fd, gl::arrays::OrientSeconds, {r.seconds});
     gl::addFieldArray(fd, gl::arrays::OrientBefore,
                       {static_cast<double>(r.candidates[0].collidingStations)});
-    gl::addFieldArray(fd, gl::arrays::OrientAfter, {static_cast<double>(best.collidingStations)});
+    gl::addFieldArray(fd, gl::arrays::OrientAfter, {static_cast<double>(chosen.collidingStations)});
     gl::addFieldArray(fd, gl::arrays::OrientEvaluationTets,
                       {static_cast<double>(r.evaluationTets)});
     gl::addFieldArray(fd, gl::arrays::OrientRefined, {static_cast<double>(r.refined)});
-    gl::addFieldArray(fd, gl::arrays::OrientPedestalHeight, {best.pedestal});
+    gl::addFieldArray(fd, gl::arrays::OrientChosenRank, {static_cast<double>(rank)});
+    gl::addFieldArray(fd, gl::arrays::OrientPedestalHeight, {chosen.pedestal});
     gl::addFieldArray(fd, gl::arrays::OrientPedestalContactHeight, {options.pedestalContactHeight});
     output->SetFieldData(fd);
     double bounds[6];
@@ -241,5 +282,6 @@ void vtkGLAutoOrient::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "RefineLayerInterval: " << this->RefineLayerInterval << " mm\n";
   os << indent << "RefineLatticeWidth: " << this->RefineLatticeWidth << " mm\n";
   os << indent << "RefineStrategy: " << this->RefineStrategy << "\n";
+  os << indent << "CandidateRank: " << this->CandidateRank << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

@@ -23,7 +23,8 @@
  *   now points up), `OrientRotation` (9, row major: input -> output), `OrientCandidates`,
  *   `OrientSeconds`, `OrientBefore` and `OrientAfter` (colliding stations as placed and chosen, at
  *   the printing resolution when refined), `OrientEvaluationTets`, `OrientRefined`, and
- *   `OrientPedestalHeight` / `OrientPedestalContactHeight` (mm: the pedestal chosen, 0 = none).
+ *   `OrientPedestalHeight` / `OrientPedestalContactHeight` (mm: the pedestal chosen, 0 = none),
+ *   `OrientChosenRank` (the candidate shown: CandidateRank, clamped).
  * Output port 1 (Candidates): with Auto, one vertex per candidate at centre + radius × its up
  *   direction (a sphere around the part), point data `OrientRank` (0 = chosen),
  *   `CollidingStations`, `PlateStations`, `ForcedSteps`, `BaseArea` (mm²), `OverhangFraction`,
@@ -47,6 +48,8 @@
 
 #include "GeoLatticeFiltersModule.h"
 #include "vtkGLNozzleAlgorithm.h"
+
+#include <memory>
 
 class GEOLATTICEFILTERS_EXPORT vtkGLAutoOrient : public vtkGLNozzleAlgorithm {
 public:
@@ -145,6 +148,15 @@ public:
   ///@}
 
   ///@{
+  /// Which candidate the output shows: 0 (default) the best, k the k-th best (clamped to the
+  /// last). Changing it re-places the part without searching again (the search is cached until
+  /// the input or another parameter changes): GLPrintPipeline::ChooseOrientationByToolpath tries
+  /// the next ones when the best one's toolpath collides.
+  void SetCandidateRank(int rank);
+  vtkGetMacro(CandidateRank, int);
+  ///@}
+
+  ///@{
   /// Candidates evaluated in parallel (default 0 = all cores).
   vtkSetClampMacro(NumberOfThreads, int, 0, 256);
   vtkGetMacro(NumberOfThreads, int);
@@ -152,7 +164,7 @@ public:
 
 protected:
   vtkGLAutoOrient();
-  ~vtkGLAutoOrient() override = default;
+  ~vtkGLAutoOrient() override;
 
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
@@ -171,9 +183,13 @@ protected:
   double RefineLayerInterval;
   double RefineLatticeWidth;
   int RefineStrategy;
+  int CandidateRank = 0;
   int NumberOfThreads;
 
 private:
+  struct SearchCache;
+  std::unique_ptr<SearchCache> Cache;  ///< the last search, valid while nothing else changed
+
   vtkGLAutoOrient(const vtkGLAutoOrient&) = delete;
   void operator=(const vtkGLAutoOrient&) = delete;
 };

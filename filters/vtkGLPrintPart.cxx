@@ -1,6 +1,7 @@
 #include "vtkGLPrintPart.h"
 
 #include "GLPrintPipeline.h"
+#include "vtkGLArrayNames.h"
 #include "vtkGLRequest.h"
 
 #include "common/Error.h"
@@ -12,6 +13,8 @@
 #include <vtkExecutive.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkTable.h>
@@ -89,6 +92,17 @@ GL_FORWARD(int, Strategy, Sequencer, Strategy)
 GL_FORWARD(double, NozzleAngle, Nozzle, NozzleAngle)
 #undef GL_FORWARD
 
+void vtkGLPrintPart::SetOrientTries(int v) {
+  if (this->Pipeline().OrientationTries != v) {
+    this->Pipeline().OrientationTries = v;
+    this->Modified();
+  }
+}
+
+int vtkGLPrintPart::GetOrientTries() {
+  return this->Pipeline().OrientationTries;
+}
+
 void vtkGLPrintPart::SetPedestalHeight(double v) {
   if (this->Pipeline().GetPedestalRequest() != v) {
     this->Pipeline().SetPedestalRequest(v);
@@ -144,6 +158,7 @@ void vtkGLPrintPart::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Scale: " << this->GetScale() << "\n";
   os << indent << "FitSize: " << this->GetFitSize() << " mm\n";
   os << indent << "Orient: " << this->GetOrient() << "\n";
+  os << indent << "OrientTries: " << this->GetOrientTries() << "\n";
   os << indent << "PedestalHeight: " << this->GetPedestalHeight() << " mm\n";
   os << indent << "TargetEdgeLength: " << this->GetTargetEdgeLength() << " mm\n";
   os << indent << "LayerInterval: " << this->GetLayerInterval() << " mm\n";
@@ -194,20 +209,33 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
       I.inputTime = input->GetMTime();
     }
     p.MatchOrientationToPrint();
+    p.Orientation->SetCandidateRank(0);  // the search's best first
     GLPrintPipeline::ClearStopRequest();
     I.error.clear();
     // Each stage in order, so a failure names its stage.
-    for (GLPrintPipeline::Stage s :
-         {GLPrintPipeline::Place, GLPrintPipeline::Orient, GLPrintPipeline::Raise,
-          GLPrintPipeline::Mesh, GLPrintPipeline::Fields, GLPrintPipeline::Layers,
-          GLPrintPipeline::Lattice, GLPrintPipeline::Skeleton, GLPrintPipeline::Sequence,
-          GLPrintPipeline::Toolpath, GLPrintPipeline::ToolpathVerify, GLPrintPipeline::Summary}) {
-      vtkAlgorithm* stage = p.Filter(s);
-      if (!stage->GetExecutive()->Update() || !I.error.empty()) {
-        throw gl::GeoLatticeError(std::string(GLPrintPipeline::StageName(s)) + ": " +
-                                  (I.error.empty() ? "the stage failed" : I.error));
+    auto stages = [&] {
+      for (GLPrintPipeline::Stage s :
+           {GLPrintPipeline::Place, GLPrintPipeline::Orient, GLPrintPipeline::Raise,
+            GLPrintPipeline::Mesh, GLPrintPipeline::Fields, GLPrintPipeline::Layers,
+            GLPrintPipeline::Lattice, GLPrintPipeline::Skeleton, GLPrintPipeline::Sequence,
+            GLPrintPipeline::Toolpath, GLPrintPipeline::ToolpathVerify, GLPrintPipeline::Summary}) {
+        vtkAlgorithm* stage = p.Filter(s);
+        if (!stage->GetExecutive()->Update() || !I.error.empty()) {
+          throw gl::GeoLatticeError(std::string(GLPrintPipeline::StageName(s)) + ": " +
+                                    (I.error.empty() ? "the stage failed" : I.error));
+        }
+        gl::checkAbort(this, static_cast<double>(s) / GLPrintPipeline::NumberOfStages);
       }
-      gl::checkAbort(this, static_cast<double>(s) / GLPrintPipeline::NumberOfStages);
+    };
+    stages();
+    vtkDataArray* colliding = p.ToolpathVerifier->GetOutputDataObject(0)->GetFieldData()->GetArray(
+        gl::arrays::CollisionViolatingStations);
+    if (colliding && colliding->GetTuple1(0) > 0) {
+      // Other candidates of the orientation search through the toolpath (Orient Auto only); a
+      // failing one is skipped, so its errors are not this filter's.
+      p.ChooseOrientationByToolpath(p.OrientationTries);
+      I.error.clear();
+      stages();  // brings every stage to the chosen candidate (cached when it was the last tried)
     }
     vtkPolyData::GetData(outputVector, ToolpathPort)
         ->ShallowCopy(p.Planner->GetOutputDataObject(0));

@@ -16,7 +16,9 @@
  *
  * Parameters (each read from and written to the stage filter it belongs to, so the defaults are
  * those filters' = the CLI's): Scale, FitSize (GL Place On Platform), Orient (0 keep, 1 auto),
- * PedestalHeight (mm; -1 = the orientation search decides, 0 = none: GLPrintPipeline::
+ * OrientTries (with Orient Auto, candidates run through the toolpath when the best one's
+ * collides: GLPrintPipeline::ChooseOrientationByToolpath; default 3), PedestalHeight (mm; -1 = the
+ * orientation search decides, 0 = none: GLPrintPipeline::
  * SetPedestalRequest), TargetEdgeLength (mm, 0 = automatic), LayerInterval (mm; the first layer
  * follows it, as on the command line), LatticeWidth (mm, α and β), Strategy (0 LPT .. 3 Best),
  * NozzleAngle (degrees), PrintheadFile (empty = the parametric cone).
@@ -55,6 +57,8 @@ public:
   double GetFitSize();
   void SetOrient(int v);
   int GetOrient();
+  void SetOrientTries(int v);
+  int GetOrientTries();
   void SetPedestalHeight(double v);
   double GetPedestalHeight();
   void SetTargetEdgeLength(double v);
