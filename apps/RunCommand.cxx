@@ -201,7 +201,8 @@ private:
 
   /// With --orient auto, when the search's best candidate gives a colliding toolpath: the next
   /// candidates through the toolpath verifier (GLPrintPipeline::ChooseOrientationByToolpath),
-  /// recorded in report.json orient.tries. True when another candidate was chosen (once a run).
+  /// recorded in report.json orient.tries. True when other candidates ran, so the stages must run
+  /// again for the chosen one (once a run).
   bool TryOtherOrientations(vtkDataObject* pathCollisions) {
     if (this->OrientationsTried || P.Orientation->GetOrient() != vtkGLAutoOrient::AUTO ||
         fieldValue(pathCollisions, arrays::CollisionViolatingStations) == 0) {
@@ -228,9 +229,11 @@ private:
     Json& orient = this->Section("orient");
     orient["tries"] = list;
     orient["chosen_rank"] = P.Orientation->GetCandidateRank();
-    if (P.Orientation->GetCandidateRank() == 0) {
-      return false;
+    if (tries.size() < 2) {
+      return false;  // nothing else was run: the stages' outputs are the chosen candidate's
     }
+    // The pipeline holds the last try; its stages run again for the chosen one (read from the
+    // cache when that was the last).
     for (const char* stale : {"pedestal", "mesh", "gdf", "layers", "overhang", "lattice",
                               "skeleton", "sequence", "toolpath", "summary"}) {
       this->Report.erase(stale);

@@ -11,6 +11,7 @@
 #include <vtkFieldData.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 
 #include <chrono>
 
@@ -103,32 +104,48 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
     vtkDataArray* a = d ? d->GetFieldData()->GetArray(name) : nullptr;
     return a && a->GetNumberOfTuples() > 0 ? a->GetTuple1(0) : -1.0;
   };
-  for (int rank = 0; rank < tries && !geolattice::stopRequest().load(); ++rank) {
+  // The ranks to try: the best ones, then the part as placed (on the plate) if it can stand:
+  // the user's placement is never beaten by a candidate that prints worse.
+  vtkPolyData* candidates = vtkPolyData::SafeDownCast(this->Orientation->GetOutputDataObject(1));
+  auto array = [candidates](const char* name) {
+    return candidates ? candidates->GetPointData()->GetAbstractArray(name) : nullptr;
+  };
+  auto number = [&](const char* name, vtkIdType i) {
+    vtkDataArray* a = vtkDataArray::SafeDownCast(array(name));
+    return a ? a->GetTuple1(i) : 0.0;
+  };
+  auto usable = [&](int rank, bool asPlaced) {
+    auto* source = vtkStringArray::SafeDownCast(array(geolattice::arrays::OrientSource));
+    for (vtkIdType i = 0; candidates && i < candidates->GetNumberOfPoints(); ++i) {
+      if (number(geolattice::arrays::OrientRank, i) == rank &&
+          number(geolattice::arrays::Feasible, i) > 0 &&
+          number(geolattice::arrays::Refined, i) > 0 &&
+          (!asPlaced || (source && source->GetValue(i) == "keep" &&
+                         number(geolattice::arrays::Pedestal, i) == 0))) {
+        return true;
+      }
+    }
+    return false;
+  };
+  std::vector<int> ranks;
+  for (int rank = 0; rank < tries; ++rank) {
+    ranks.push_back(rank);
+  }
+  for (vtkIdType rank = tries; candidates && rank < candidates->GetNumberOfPoints(); ++rank) {
+    if (usable(static_cast<int>(rank), true)) {
+      ranks.push_back(static_cast<int>(rank));
+      break;
+    }
+  }
+  for (int rank : ranks) {
+    if (geolattice::stopRequest().load() || (rank > 0 && !usable(rank, false))) {
+      continue;
+    }
     this->Orientation->SetCandidateRank(rank);
     OrientationTry t;
     t.rank = rank;
-    if (rank > 0) {
-      // Only candidates that can stand and were scored at the print's resolution.
-      vtkPolyData* candidates =
-          vtkPolyData::SafeDownCast(this->Orientation->GetOutputDataObject(1));
-      vtkDataArray* ranks =
-          candidates ? candidates->GetPointData()->GetArray(geolattice::arrays::OrientRank)
-                     : nullptr;
-      vtkDataArray* feasible =
-          candidates ? candidates->GetPointData()->GetArray(geolattice::arrays::Feasible) : nullptr;
-      vtkDataArray* refined =
-          candidates ? candidates->GetPointData()->GetArray(geolattice::arrays::Refined) : nullptr;
-      bool usable = false;
-      for (vtkIdType i = 0; ranks && feasible && refined && i < ranks->GetNumberOfTuples(); ++i) {
-        usable = usable || (ranks->GetTuple1(i) == rank && feasible->GetTuple1(i) > 0 &&
-                            refined->GetTuple1(i) > 0);
-      }
-      if (!usable) {
-        break;
-      }
-      if (starting) {
-        starting(t);
-      }
+    if (rank > 0 && starting) {
+      starting(t);
     }
     const auto start = std::chrono::steady_clock::now();
     t.ok = this->ToolpathVerifier->GetExecutive()->Update() != 0;

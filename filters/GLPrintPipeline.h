@@ -105,7 +105,8 @@ public:
 
   /// The orientation the real toolpath prints best: with Orient Auto, the search's candidates are
   /// run through the toolpath verifier in rank order, up to `tries` of them (feasible ones scored
-  /// at the print's resolution), until one is strictly collision-free; the one with the fewest
+  /// at the print's resolution), then the part as placed (on the plate, when it can stand there
+  /// and was not among them), until one is strictly collision-free; the one with the fewest
   /// colliding stations is kept (Orientation's CandidateRank; the earlier rank on a tie). The
   /// search runs once: a rank change only re-places the part. Why: the search scores sub-graph
   /// orders, not toolpaths (no axis tilts, no collision inside a sub-graph), so two close

@@ -567,6 +567,26 @@ class CliGateTest(unittest.TestCase):
         self.assertLess(report["orient"]["after"]["colliding_stations"],
                         report["orient"]["before"]["colliding_stations"])
 
+    def test_other_orientations_are_tried_through_the_toolpath(self):
+        # The knight's best candidate collides, so the next ones of the search are run through the
+        # toolpath; the one printed (and reported, and gated) is the least colliding of them.
+        result, report, programs, out = self.run_cli("decimated-knight.off", "--fit-size", "80", "--orient", "auto")
+        tries = report["orient"]["tries"]
+        self.assertGreaterEqual(len(tries), 2, tries)
+        self.assertEqual([t["rank"] for t in tries], list(range(len(tries))))
+        least = min(tries, key=lambda t: (t["colliding_stations"], t["rank"]))
+        self.assertEqual(report["orient"]["chosen_rank"], least["rank"])
+        t = report["toolpath"]
+        self.assertEqual(t["violating_stations"], least["colliding_stations"])
+        self.assertEqual(t["stations"], least["stations"])
+        if least["colliding_stations"] > 0:
+            self.assertEqual(result.returncode, 4, result.stderr)
+            self.assertIn("collides at %d of %d stations" % (least["colliding_stations"], least["stations"]),
+                          result.stderr)
+            self.assertEqual(programs, [])
+        with open(os.path.join(out, "orientation.csv")) as f:
+            self.assertGreater(len(f.readlines()), 100)
+
     def test_split_sub_graphs_are_printed_as_pieces(self):
         # The knight as placed under the example printhead has sub-graphs that block each other
         # (58 forced steps measured); with --split-rounds some are cut into pieces (5 sub-graphs,

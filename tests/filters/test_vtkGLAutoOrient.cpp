@@ -56,7 +56,7 @@ TEST(vtkGLAutoOrient, ACandidateRankRePlacesThePartFromTheCachedSearch) {
   for (int k = 0; k < 3; ++k) {
     difference += std::abs(field(out, geolattice::arrays::OrientUp, k) - up0[k]);
   }
-  EXPECT_GT(difference, 1e-3);  // another side up
+  EXPECT_GT(difference, 1e-3);              // another side up
   p.Orientation->SetCandidateRank(100000);  // clamped to the last candidate
   ASSERT_TRUE(p.Orientation->Update(0, nullptr));
   EXPECT_EQ(field(p.Orientation->GetOutputDataObject(0), geolattice::arrays::OrientChosenRank),
@@ -84,19 +84,29 @@ TEST(vtkGLAutoOrient, TheToolpathChoosesAmongTheSearchsBestCandidates) {
   std::vector<int> started;
   const auto tries = p.ChooseOrientationByToolpath(
       3, [&](const GLPrintPipeline::OrientationTry& t) { started.push_back(t.rank); });
-  ASSERT_EQ(tries.size(), 3u) << errors->Errors();
-  EXPECT_EQ(started, (std::vector<int>{1, 2}));
-  int best = 0;
+  // The three best, then the part as placed when it ranks lower (the Y stands on its feet).
+  ASSERT_GE(tries.size(), 3u) << errors->Errors();
+  ASSERT_LE(tries.size(), 4u);
+  std::vector<int> after;
+  for (size_t k = 1; k < tries.size(); ++k) {
+    after.push_back(tries[k].rank);
+  }
+  EXPECT_EQ(started, after);
+  size_t best = 0;
   for (size_t k = 0; k < tries.size(); ++k) {
-    EXPECT_EQ(tries[k].rank, static_cast<int>(k));
+    EXPECT_EQ(tries[k].rank, k < 3 ? static_cast<int>(k) : tries[k].rank);
     EXPECT_TRUE(tries[k].ok);
     EXPECT_GT(tries[k].colliding, 0);
     EXPECT_GT(tries[k].stations, tries[k].colliding);
     if (tries[k].colliding < tries[best].colliding) {
-      best = static_cast<int>(k);
+      best = k;
     }
   }
-  EXPECT_EQ(p.Orientation->GetCandidateRank(), best);
+  EXPECT_EQ(p.Orientation->GetCandidateRank(), tries[best].rank);
+  if (tries.size() == 4) {
+    EXPECT_GT(tries[3].rank, 2);
+    EXPECT_EQ(tries[3].pedestal, 0);
+  }
   // Keep: nothing to try; one try is the search's best only.
   p.Orientation->SetOrient(vtkGLAutoOrient::KEEP);
   EXPECT_TRUE(p.ChooseOrientationByToolpath(3).empty());
