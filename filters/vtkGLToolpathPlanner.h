@@ -70,7 +70,7 @@
  *   >= 0), MaxSegmentLength (mm, default 1, >= 0; 0 = no subdivision), MaximumElements (default
  *   40e6: more estimated stations is refused before planning), the nozzle (vtkGLNozzle,
  *   shared with the sequencer and the verifier),
- *   MaxAxisTilt (degrees, default 15, in [0, 60]; 0 = axis ∇γ everywhere), TiltBlendLength (mm,
+ *   MaxAxisTilt (degrees, default 30, in [0, 60]; 0 = axis ∇γ everywhere), TiltBlendLength (mm,
  *   default 5, >= 0).
  * Errors (an empty lattice or skeleton, missing arrays (EdgeKind included), no SequenceOrder
  * ("run GL Print Sequencer first"), an order that is not a permutation of the sub-graphs, a
@@ -179,7 +179,7 @@ public:
 
   ///@{
   /// Largest tilt of the nozzle axis away from the layer normal where the normal would drive the
-  /// nozzle into earlier material of the path (degrees, default 15, in [0, 60]; 0 = the paper's
+  /// nozzle into earlier material of the path (degrees, default 30, in [0, 60]; 0 = the paper's
   /// axis ∇γ everywhere). The tilt fades out over TiltBlendLength mm of path on each side
   /// (default 5, >= 0).
   vtkSetMacro(MaxAxisTilt, double);

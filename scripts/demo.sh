@@ -8,7 +8,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 # As placed, the bunny's nozzle meets the build plate at 13 % of the toolpath stations (the
 # collision gate, exit 4, writes no program); the orientation search and a 30° axis tilt make it
 # collision-free (tests/cli/test_demo.py runs this line).
-"$root/build/bin/geolattice" run "$root/testdata/bunny.obj" --fit-size 80 --orient auto --max-tilt 30 -o "$root/out"
+"$root/build/bin/geolattice" run "$root/testdata/bunny.obj" --fit-size 80 --orient auto -o "$root/out"
 cat <<MSG
 
 Done. Outputs are in $root/out:

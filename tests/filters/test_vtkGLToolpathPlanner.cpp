@@ -370,12 +370,12 @@ TEST(vtkGLToolpathPlanner, DefaultsAndPrintSelf) {
   EXPECT_EQ(f->GetNozzle()->GetHolderRadius(), 0.0);
   EXPECT_EQ(f->GetNozzle()->GetTipClearance(), 0.1);
   EXPECT_EQ(f->GetNozzle()->GetTipFaceRadius(), 0.5);
-  EXPECT_EQ(f->GetMaxAxisTilt(), 15.0);
+  EXPECT_EQ(f->GetMaxAxisTilt(), 30.0);
   EXPECT_EQ(f->GetTiltBlendLength(), 5.0);
   std::ostringstream os;
   f->Print(os);
   for (const char* text : {"PathWidth: 0.6", "FilamentDiameter: 1.75", "SupportPerimeter: 1",
-                           "MaxAxisTilt: 15", "TipFaceRadius: 0.5", "MaxSegmentLength: 1"}) {
+                           "MaxAxisTilt: 30", "TipFaceRadius: 0.5", "MaxSegmentLength: 1"}) {
     EXPECT_NE(os.str().find(text), std::string::npos) << text;
   }
 }
