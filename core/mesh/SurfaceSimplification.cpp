@@ -86,9 +86,27 @@ double area(const TriangleSurface& s) {
   return a;
 }
 
+/// True when more than a tenth of the triangles have an angle under 10 degrees (needles and caps
+/// of CAD exports), which TetGen refines around.
+bool slivery(const TriangleSurface& s) {
+  const double cosLimit = std::cos(10 * M_PI / 180);
+  size_t bad = 0;
+  for (const auto& t : s.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 u = (s.points[t[(k + 1) % 3]] - s.points[t[k]]).normalized();
+      const Vec3 v = (s.points[t[(k + 2) % 3]] - s.points[t[k]]).normalized();
+      if (u.dot(v) > cosLimit) {
+        ++bad;
+        break;
+      }
+    }
+  }
+  return 10 * bad > s.triangles.size();
+}
+
 /// Garland-Heckbert edge collapse of `mesh` to about `target` triangles (see the header).
 void simplify(Mesh& mesh, double target, const SimplificationOptions& o,
-              const ProgressReporter& report) {
+              const ProgressReporter report) {
   const double tolerance = o.tolerance > 0 ? o.tolerance : 0.25 * o.targetEdgeLength;
   using GH = SMS::GarlandHeckbert_plane_policies<Mesh, K>;
   GH policies(mesh);
@@ -137,49 +155,71 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
   r.surface = surface;
   r.outputTriangles = r.inputTriangles;
   r.outputMeanEdge = r.inputMeanEdge;
+  auto done = [&]() -> SimplificationResult& {
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return r;
+  };
   // An equilateral triangle of edge L has area √3/4 L²: the triangle count of the target.
   const double target =
       area(surface) / (std::sqrt(3.0) / 4.0 * o.targetEdgeLength * o.targetEdgeLength);
+  const bool finer = r.inputMeanEdge < o.finerThan * o.targetEdgeLength &&
+                     static_cast<double>(r.inputTriangles) >= 2.0 * target;
   const bool remesh = o.method == SimplificationMethod::IsotropicRemeshing;
-  if (!remesh && (r.inputMeanEdge >= o.finerThan * o.targetEdgeLength ||
-                  static_cast<double>(r.inputTriangles) < 2.0 * target)) {
-    return r;
+  if (!finer && !(remesh && slivery(surface))) {
+    return done();
   }
-  Mesh mesh = cgal::toSurfaceMesh(surface, "surface simplification");
-  const Mesh input = mesh;
+  const Mesh input = cgal::toSurfaceMesh(surface, "surface simplification");
+  const double tolerance = o.tolerance > 0 ? o.tolerance : 0.25 * o.targetEdgeLength;
   const ProgressReporter report(o.progress, o.shouldAbort, "surface simplification");
+  // The one-sided distance of the input from `mesh` when it is usable (closed, not
+  // self-intersecting), else a reason in r.refused.
+  auto accept = [&](Mesh& mesh, const char* what) {
+    mesh.collect_garbage();
+    if (PMP::does_self_intersect(mesh)) {
+      r.refused = std::string("the ") + what + " surface self-intersects";
+      return false;
+    }
+    using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+    CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(mesh).first, faces(mesh).second,
+                                                          mesh);
+    tree.accelerate_distance_queries();
+    double h2 = 0;
+    for (auto v : input.vertices()) {
+      h2 = std::max(h2, CGAL::to_double(tree.squared_distance(input.point(v))));
+    }
+    if (remesh && std::sqrt(h2) > tolerance) {
+      std::ostringstream m;
+      m << "the " << what << " surface is " << std::sqrt(h2) << " mm off the input (more than "
+        << tolerance << " mm)";
+      r.refused = m.str();
+      return false;
+    }
+    r.surface = fromMesh(mesh);
+    r.simplified = true;
+    r.outputTriangles = r.surface.triangles.size();
+    r.outputMeanEdge = meanEdgeLength(r.surface);
+    r.hausdorff = std::sqrt(h2);
+    return true;
+  };
   if (remesh) {
+    Mesh mesh = input;
     auto sharp = mesh.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
     PMP::detect_sharp_edges(mesh, o.sharpAngleDeg, sharp);
     PMP::isotropic_remeshing(
-        faces(mesh), o.targetEdgeLength, mesh,
+        faces(mesh), o.remeshEdgeFactor * o.targetEdgeLength, mesh,
         CGAL::parameters::number_of_iterations(3).edge_is_constrained_map(sharp));
-    report.report(1.0);
-  } else {
-    simplify(mesh, target, o, report);
+    report.report(finer ? 0.5 : 1.0);
+    if (accept(mesh, "remeshed") || !finer) {
+      return done();  // a coarse input that remeshing would change too much stays as it is
+    }
   }
-  mesh.collect_garbage();
-  if (PMP::does_self_intersect(mesh)) {
-    r.refused = "the simplified surface self-intersects";
-    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    return r;
+  // The edge collapse (also when the remeshed surface was refused).
+  Mesh mesh = input;
+  simplify(mesh, target, o, remesh ? report.part(0.5, 1.0) : report);
+  if (!accept(mesh, "simplified") && remesh) {
+    r.refused += "; the remeshed one was refused too";
   }
-  // One-sided Hausdorff: every input vertex to the simplified surface.
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-  CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> tree(faces(mesh).first, faces(mesh).second,
-                                                        mesh);
-  tree.accelerate_distance_queries();
-  double h2 = 0;
-  for (auto v : input.vertices()) {
-    h2 = std::max(h2, CGAL::to_double(tree.squared_distance(input.point(v))));
-  }
-  r.surface = fromMesh(mesh);
-  r.simplified = true;
-  r.outputTriangles = r.surface.triangles.size();
-  r.outputMeanEdge = meanEdgeLength(r.surface);
-  r.hausdorff = std::sqrt(h2);
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  return r;
+  return done();
 }
 
 }  // namespace geolattice

@@ -247,9 +247,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   if (options.simplifyFinerThan > 0) {
     SimplificationOptions simplify;
     simplify.method = options.simplification;
-    simplify.targetEdgeLength = options.simplification == SimplificationMethod::IsotropicRemeshing
-                                    ? kRemeshEdgeFactor * firstEdge
-                                    : firstEdge;
+    simplify.targetEdgeLength = firstEdge;
     simplify.finerThan = options.simplifyFinerThan;
     simplify.shouldAbort = options.shouldAbort;
     simplify.progress = [&](double f) {

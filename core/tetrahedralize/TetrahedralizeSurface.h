@@ -38,11 +38,11 @@ struct TetrahedralizeOptions {
   /// is first simplified to about the target edge (mesh/SurfaceSimplification.h): TetGen keeps
   /// every input triangle, so a fine scan would give far more tets than asked for. 0 = never.
   double simplifyFinerThan = 0.5;
-  /// How the surface is coarsened (mesh/SurfaceSimplification.h): the edge collapse (default,
-  /// only when finer than simplifyFinerThan), or isotropic remeshing to kRemeshEdgeFactor x the
-  /// first target edge whatever the input (well-shaped triangles: TetGen meshes slivers slowly
-  /// and far past the asked count). simplifyFinerThan 0 turns both off.
-  SimplificationMethod simplification = SimplificationMethod::EdgeCollapse;
+  /// How the surface is prepared (mesh/SurfaceSimplification.h): isotropic remeshing to the
+  /// first target edge where it is finer than simplifyFinerThan x that edge or full of slivers,
+  /// checked against a quarter of the edge, else the edge collapse (the default), or the edge
+  /// collapse alone. simplifyFinerThan 0 turns both off.
+  SimplificationMethod simplification = SimplificationMethod::IsotropicRemeshing;
   /// Polled about every 50 ms while TetGen runs, and after each run; returning true stops it
   /// and throws "tetrahedralization aborted" (filters pass their AbortExecute flag). Optional.
   std::function<bool()> shouldAbort;
@@ -84,10 +84,6 @@ struct TetrahedralizeResult {
 /// Range of TetrahedralizeOptions::autoTargetTets.
 constexpr int kMinAutoTargetTets = 1000;
 constexpr int kMaxAutoTargetTets = 5000000;
-/// Surface edge of the isotropic remeshing over the target tet edge: TetGen's boundary triangles
-/// come out a little shorter than its interior edges (measured on a genus-3 block: 0.7 gives the
-/// asked tet count within 20 % at 15k and 75k tets).
-constexpr double kRemeshEdgeFactor = 0.7;
 /// Most TetGen runs of the automatic edge length search.
 constexpr int kMaxAutoAttempts = 4;
 /// Range of TetrahedralizeOptions::radiusEdgeRatio. TetGen itself accepts any number, but its

@@ -55,6 +55,7 @@ TEST(SurfaceSimplification, RemeshingGivesWellShapedTrianglesOfTheTargetLength) 
   SimplificationOptions o;
   o.method = SimplificationMethod::IsotropicRemeshing;
   o.targetEdgeLength = 4.0;
+  o.remeshEdgeFactor = 1.0;
   const SimplificationResult r = simplifySurface(cad, o);
   ASSERT_TRUE(r.simplified) << r.refused;
   EXPECT_NEAR(r.outputMeanEdge, 4.0, 1.0);
@@ -74,19 +75,34 @@ TEST(SurfaceSimplification, RemeshingGivesWellShapedTrianglesOfTheTargetLength) 
     const bool onCap = std::abs(p.z()) < 1e-9 || std::abs(p.z() - 40) < 1e-9;
     EXPECT_TRUE(onSide || (onCap && radial <= 30 + 1e-9)) << p.transpose();
   }
-  TetrahedralizeOptions t;
+  TetrahedralizeOptions t;  // remeshing by default: a coarse input of slivers too
   t.autoTargetTets = 15000;
-  t.simplification = SimplificationMethod::IsotropicRemeshing;
   const TetrahedralizeResult tets = tetrahedralizeSurface(cad, t);
   EXPECT_TRUE(tets.simplified);
   EXPECT_GT(tets.tetCount, 15000 / 2);
+  EXPECT_LT(tets.simplificationDistance, 0.25 * tets.targetEdgeLength);
   EXPECT_LT(tets.tetCount, 15000 * 2);
+}
+
+TEST(SurfaceSimplification, RemeshingFartherThanTheToleranceFallsBackToTheCollapse) {
+  // A tolerance no remeshing meets: the edge collapse (bounded by it) runs instead and says so.
+  const TriangleSurface sphere = sphereSurface(Vec3(0, 0, 30), 20.0, 6);
+  SimplificationOptions o;
+  o.targetEdgeLength = 4.0;
+  o.tolerance = 1e-4;
+  const SimplificationResult r = simplifySurface(sphere, o);
+  EXPECT_NE(r.refused.find("remeshed surface is"), std::string::npos) << r.refused;
+  if (r.simplified) {
+    EXPECT_LE(r.hausdorff, 1e-4 + 1e-9);
+  }
+  EXPECT_TRUE(checkSurface(r.surface).isClosedManifold());
 }
 
 TEST(SurfaceSimplification, FineSphereIsCoarsenedWithinTolerance) {
   const Vec3 centre(1, 2, 30);
   const TriangleSurface sphere = sphereSurface(centre, 20.0, 6);  // 0.6 mm edges
   SimplificationOptions o;
+  o.method = SimplificationMethod::EdgeCollapse;
   o.targetEdgeLength = 4.0;
   std::vector<double> progress;
   o.progress = [&](double f) {
