@@ -173,7 +173,8 @@ private:
     path["verify_seconds"] = this->LastSeconds;
     reportToolpath(P, toolpath, path);
     reportCollisions(pathCollisions, path);
-    this->Write(toolpath, "toolpath.vtp");
+    // The toolpath with every station's verdict (point array Collision: colour by it in ParaView).
+    this->Write(P.ToolpathVerifier->GetOutputDataObject(1), "toolpath.vtp");
     this->Write(pathCollisions, "toolpath_collisions.vtp");
     reportSummary(this->Update("summary", P.PrintSummary), this->Section("summary"));
     const int steps =

@@ -190,6 +190,9 @@ constexpr const char* CollisionPlateStations = "CollisionPlateStations";
 /// 2 values: the smallest and largest LayerId (input point array) of the violating stations; only
 /// when the input has a LayerId point array and a station collides.
 constexpr const char* CollisionLayerRange = "CollisionLayerRange";
+/// GL Collision Verifier's Stations output: per station 0 = clear, 1 = earlier material inside
+/// the nozzle, 2 = the build plate (geolattice::collisionkind).
+constexpr const char* Collision = "Collision";
 constexpr const char* CollisionUnavoidableStations =
     "CollisionUnavoidableStations";  ///< of those, stations whose obstacles are all skeleton ancestors
 constexpr const char* CollisionOrderFree =
@@ -329,6 +332,13 @@ namespace collisionrole {
 constexpr int Station = 0;   ///< the nozzle tip (the point being printed)
 constexpr int Obstacle = 1;  ///< earlier material inside the nozzle volume there
 }  // namespace collisionrole
+
+/// Values of the Collision array of GL Collision Verifier's Stations output.
+namespace collisionkind {
+constexpr int Clear = 0;     ///< no earlier material and no plate inside the nozzle
+constexpr int Material = 1;  ///< earlier material inside the nozzle
+constexpr int Plate = 2;     ///< the build plate inside the nozzle (or the tip in it)
+}  // namespace collisionkind
 
 /// Values of the MoveKind array of vtkGLToolpathPlanner (= geolattice::MoveKind).
 namespace movekind {

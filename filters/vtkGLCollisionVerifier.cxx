@@ -28,6 +28,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
 #include <array>
@@ -294,6 +295,7 @@ void buildOutput(const gl::CollisionReport& report, double nozzleAngle, vtkPolyD
 }  // namespace
 
 vtkGLCollisionVerifier::vtkGLCollisionVerifier() {
+  this->SetNumberOfOutputPorts(2);
   this->SetTimeArrayName(geolattice::arrays::PrintOrder);
   this->SampleSpacing = gl::MaterialSampling{}.spacing;
   this->MaxReported = gl::VerifierOptions{}.maxReported;
@@ -320,12 +322,46 @@ int vtkGLCollisionVerifier::RequestInformation(vtkInformation* request,
          });
 }
 
+namespace {
+/// Output 1: every station's verdict (gl::arrays::Collision). A toolpath (point times) is the
+/// input itself with the array, ready to colour; sampled line cells are the samples as vertices.
+void buildStations(vtkPolyData* input, bool pointStations, const Stations& stations,
+                   const gl::CollisionReport& report, vtkPolyData* out) {
+  vtkNew<vtkUnsignedCharArray> kind;
+  kind->SetName(gl::arrays::Collision);
+  kind->SetNumberOfTuples(static_cast<vtkIdType>(stations.points.size()));
+  kind->Fill(gl::collisionkind::Clear);
+  for (int k : report.violatingStationIds) {
+    kind->SetValue(k, gl::collisionkind::Material);
+  }
+  for (int k : report.plateStationIds) {
+    kind->SetValue(k, gl::collisionkind::Plate);
+  }
+  if (pointStations) {
+    out->ShallowCopy(input);
+  } else {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToDouble();
+    vtkNew<vtkCellArray> vertices;
+    for (const gl::Vec3& p : stations.points) {
+      const vtkIdType id = points->InsertNextPoint(p.data());
+      vertices->InsertNextCell(1, &id);
+    }
+    out->SetPoints(points);
+    out->SetVerts(vertices);
+  }
+  out->GetPointData()->AddArray(kind);
+}
+}  // namespace
+
 int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                         vtkInformationVector* outputVector) {
   // Collective in an MPI run: all the printed points on one process (vtkGLParallel.h).
   const gl::ParallelInputs inputs(inputVector, 1, outputVector);
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   output->Initialize();
+  vtkPolyData* verdicts = vtkPolyData::GetData(outputVector, 1);
+  verdicts->Initialize();
   if (!inputs.Computes()) {
     return 1;  // another process has the points
   }
@@ -404,6 +440,8 @@ int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** 
                                   stations.material.empty() ? nullptr : &stations.material, &plate);
     gl::checkAbort(this, 0.9);
     buildOutput(report, nozzle.halfAngleDeg, output);
+    buildStations(input, pointTime != nullptr, stations, report, verdicts);
+
     // Where on the part the collisions are: the layer range of the violating stations.
     vtkDataArray* layer = pointTime ? pd->GetArray(gl::arrays::LayerId) : nullptr;
     if (layer && !report.violatingStationIds.empty()) {
@@ -418,6 +456,11 @@ int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** 
       if (lo <= hi) {
         gl::addFieldArray(output->GetFieldData(), gl::arrays::CollisionLayerRange, {lo, hi});
       }
+    }
+    // Both outputs carry the verdict (CollisionFree, the counts, the layer range).
+    vtkFieldData* fd = output->GetFieldData();
+    for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
+      verdicts->GetFieldData()->AddArray(fd->GetAbstractArray(i));
     }
     this->UpdateProgress(1.0);
   });

@@ -40,6 +40,11 @@
  *   `CollisionOrderFree` (int: 1 when every violation is unavoidable; = CollisionFree without
  *   SkeletonEdges), `CollisionStations` (points checked), `CollisionViolatingStations`,
  *   `CollisionUnavoidableStations`, `CollisionSeconds` and `NozzleAngleDeg`.
+ * Output port 1 (Stations): every station's verdict, point array `Collision` (unsigned char,
+ *   geolattice::collisionkind: 0 clear, 1 earlier material inside the nozzle, 2 the build plate):
+ *   for point times (a toolpath) the input itself with that array, so the path can be coloured
+ *   where it collides; for sampled line cells the samples as vertices. Its field data holds the
+ *   verdict arrays of output 0 too.
  * Parameters: TimeArrayName (default "PrintOrder"), the nozzle (vtkGLNozzle: NozzleAngle,
  *   NozzleLength, HolderRadius, TipClearance, TipFaceRadius), SampleSpacing (mm, default 1, > 0),
  *   MaxReported (default 20).

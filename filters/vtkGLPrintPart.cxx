@@ -237,8 +237,8 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
       I.error.clear();
       stages();  // brings every stage to the chosen candidate (cached when it was the last tried)
     }
-    vtkPolyData::GetData(outputVector, ToolpathPort)
-        ->ShallowCopy(p.Planner->GetOutputDataObject(0));
+    vtkPolyData::GetData(outputVector, ToolpathPort)  // with the verifier's Collision array
+        ->ShallowCopy(p.ToolpathVerifier->GetOutputDataObject(1));
     vtkTable::GetData(outputVector, SummaryPort)
         ->ShallowCopy(p.PrintSummary->GetOutputDataObject(0));
     vtkPolyData::GetData(outputVector, LatticePort)

@@ -10,7 +10,8 @@
  * keeps its output until its input or parameters change).
  *
  * Input:  vtkPolyData, a closed triangle surface (any units the placement scales; mm after it).
- * Outputs: 0 `Toolpath` (vtkGLToolpathPlanner's), 1 `Summary` (vtkTable: vtkGLPrintSummary's, with
+ * Outputs: 0 `Toolpath` (vtkGLToolpathPlanner's, with point array `Collision` of the strict
+ *   verifier: 0 clear, 1 material, 2 build plate), 1 `Summary` (vtkTable: vtkGLPrintSummary's, with
  *   the strict verifier), 2 `Sequenced Lattice` (PrintOrder), 3 `Layers`, 4 `Part` (the tet mesh with
  *   Gamma, Alpha, Beta).
  *

@@ -160,6 +160,9 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
       ++report.violatingStations;
       report.violatingStationIds.push_back(v.station);
       report.plateStations += v.onPlate;
+      if (v.onPlate) {
+        report.plateStationIds.push_back(v.station);
+      }
       if (static_cast<int>(report.violations.size()) < maxReported) {
         const int k = v.station;
         const Vec obstacle = v.hit == static_cast<int>(all.size())

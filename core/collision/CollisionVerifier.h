@@ -46,6 +46,7 @@ struct CollisionReport {
   bool orderCollisionFree = true;        ///< no station with an obstacle that is not exempt
   std::vector<int> violatingStationIds;  ///< every violating station, in print time order
   long long plateStations = 0;  ///< of the violating stations, those whose obstacle is the plate
+  std::vector<int> plateStationIds;  ///< those stations, in print time order
   std::vector<CollisionViolation>
       violations;  ///< the first ones in print time order (at most maxReported)
   double seconds = 0;

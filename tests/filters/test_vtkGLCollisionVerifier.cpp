@@ -208,6 +208,54 @@ TEST(vtkGLCollisionVerifier, PointTimeArrayAndInteriorSamples) {
   EXPECT_EQ(field(cell.output, arrays::CollisionFree), 0.0);
 }
 
+TEST(vtkGLCollisionVerifier, TheStationsOutputColoursTheToolpathByItsVerdict) {
+  // Per-point times (a toolpath): output 1 is the input with Collision per point, 1 where earlier
+  // material is in the nozzle, as many as the violating stations; a plate under a nozzle tilted
+  // into it marks 2. Line-cell times: the samples as vertices.
+  auto input = towers(towerByTower);
+  vtkNew<vtkGLCollisionVerifier> f;
+  f->SetInputData(input);
+  f->SetTimeArrayName("PointTime");
+  f->GetNozzle()->SetNozzleAngle(60);
+  f->Update();
+  auto* stations = vtkPolyData::SafeDownCast(f->GetOutputDataObject(1));
+  ASSERT_NE(stations, nullptr);
+  EXPECT_EQ(stations->GetNumberOfPoints(), input->GetNumberOfPoints());
+  EXPECT_EQ(stations->GetNumberOfLines(), input->GetNumberOfLines());
+  vtkDataArray* kind = stations->GetPointData()->GetArray(arrays::Collision);
+  ASSERT_NE(kind, nullptr);
+  int material = 0, plate = 0;
+  for (vtkIdType p = 0; p < kind->GetNumberOfTuples(); ++p) {
+    material += kind->GetTuple1(p) == geolattice::collisionkind::Material;
+    plate += kind->GetTuple1(p) == geolattice::collisionkind::Plate;
+  }
+  EXPECT_GT(material, 0);
+  EXPECT_EQ(material + plate, field(f->GetOutput(), arrays::CollisionViolatingStations));
+  // Every axis tilted 80 degrees from +z: the cone reaches the plate under the towers.
+  vtkDataArray* axes = input->GetPointData()->GetArray(arrays::NozzleAxis);
+  for (vtkIdType p = 0; p < axes->GetNumberOfTuples(); ++p) {
+    axes->SetTuple3(p, std::sin(80 * M_PI / 180), 0, std::cos(80 * M_PI / 180));
+  }
+  axes->Modified();
+  f->Update();
+  kind = vtkPolyData::SafeDownCast(f->GetOutputDataObject(1))
+             ->GetPointData()
+             ->GetArray(arrays::Collision);
+  plate = 0;
+  for (vtkIdType p = 0; p < kind->GetNumberOfTuples(); ++p) {
+    plate += kind->GetTuple1(p) == geolattice::collisionkind::Plate;
+  }
+  EXPECT_GT(plate, 0);
+  EXPECT_EQ(plate, field(f->GetOutput(), arrays::CollisionPlateStations));
+  // Cell times: the sampled stations.
+  f->SetTimeArrayName(arrays::PrintOrder);
+  f->Update();
+  stations = vtkPolyData::SafeDownCast(f->GetOutputDataObject(1));
+  EXPECT_EQ(stations->GetNumberOfPoints(), field(f->GetOutput(), arrays::CollisionStations));
+  EXPECT_EQ(stations->GetNumberOfVerts(), stations->GetNumberOfPoints());
+  EXPECT_NE(stations->GetPointData()->GetArray(arrays::Collision), nullptr);
+}
+
 TEST(vtkGLCollisionVerifier, PointMoveKindAirIsNoMaterial) {
   // A toolpath-like input: per-point times, tower A printed first. With tower A's points marked as
   // air moves (MoveKind 2) nothing is printed before tower B: no collision; every point is still a
