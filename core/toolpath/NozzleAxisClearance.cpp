@@ -120,13 +120,19 @@ private:
 /// `current`. Returns false when none is found.
 bool findClearAxis(Obstacles& obstacles, const Vec3& reference, const Vec3& current, double maxTilt,
                    Vec3& result) {
-  // Projection: turn the axis off the deepest obstacle until it sits on the cone's surface.
+  // Projection: turn the axis off the deepest obstacle until it sits on the cone's surface. Its
+  // answer is clear but not always the least tilt (with a wide limit it can wander far off the
+  // reference, and a needless tilt sweeps the nozzle through the neighbours' material): the
+  // rings below look for a smaller one first.
   Vec3 n = current;
+  bool projected = false;
+  double projectedTilt = maxTilt;
   for (int iteration = 0; iteration < 30; ++iteration) {
     const int q = obstacles.deepest(n);
     if (q < 0) {
-      result = n;
-      return true;
+      projected = true;
+      projectedTilt = angleBetween(n, reference);
+      break;
     }
     const Vec3 toObstacle = obstacles.points[q] - obstacles.tip;
     const Vec3 u = toObstacle.normalized();
@@ -153,7 +159,8 @@ bool findClearAxis(Obstacles& obstacles, const Vec3& reference, const Vec3& curr
     }
     return r;
   }();
-  for (double tilt = step; tilt <= maxTilt + 1e-12; tilt += step) {
+  const double largest = projected ? projectedTilt - 1e-9 : maxTilt + 1e-12;
+  for (double tilt = step; tilt <= largest; tilt += step) {
     double bestDot = -2;
     const double cosTilt = std::cos(tilt), sinTilt = std::sin(tilt);
     for (const auto& [cosPhi, sinPhi] : ring) {
@@ -166,6 +173,10 @@ bool findClearAxis(Obstacles& obstacles, const Vec3& reference, const Vec3& curr
     if (bestDot > -2) {
       return true;
     }
+  }
+  if (projected) {
+    result = n;
+    return true;
   }
   return false;
 }

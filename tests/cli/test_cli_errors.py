@@ -587,6 +587,20 @@ class CliGateTest(unittest.TestCase):
         with open(os.path.join(out, "orientation.csv")) as f:
             self.assertGreater(len(f.readlines()), 100)
 
+    def test_a_wide_tilt_limit_still_tilts_the_least(self):
+        # The Y under the example printhead: 33 stations collide along the layer normal, each is
+        # cleared by a tilt below 11 degrees. With the 30 degree limit the projection off one
+        # obstacle used to stop at a needless 30 degree tilt whose sweep hit the neighbours (31
+        # stations left); the least tilt is searched first, so the limit changes nothing.
+        result, report, programs, out = self.run_cli(
+            "y_shape.obj", "--printhead", os.path.join(TESTDATA, "printhead_slim.obj"), "--until", "toolpath")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        t = report["toolpath"]
+        self.assertEqual(t["max_tilt_deg"], 30)
+        self.assertEqual(t["violating_stations"], 0)
+        self.assertGreater(t["colliding_stations_along_normal"], 0)
+        self.assertLess(t["max_axis_tilt_deg"], 15)
+
     def test_split_sub_graphs_are_printed_as_pieces(self):
         # The knight as placed under the example printhead has sub-graphs that block each other
         # (58 forced steps measured); with --split-rounds some are cut into pieces (5 sub-graphs,

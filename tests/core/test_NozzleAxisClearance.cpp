@@ -137,6 +137,36 @@ TEST(NozzleAxisClearance, TiltsTheLeastAngleAwayAndFadesAlongThePath) {
   EXPECT_GT(faded, 0);
 }
 
+TEST(NozzleAxisClearance, AWideLimitStillGivesTheLeastTilt) {
+  // Material on both sides of the station (the Scene's line and its mirror at -x): every tilt
+  // towards x pushes the nozzle into the other line, the least clearing tilt is along the path
+  // (y), acos(cos 45.5° / (1.1 / sqrt(2.21))) = 18.7°. With a 60° limit the axis must still
+  // tilt by about that much, not wherever the projection off one line and then the other ends.
+  Scene s;
+  std::vector<Vec3> points = s.points, axes = s.axes;
+  std::vector<char> material = s.material;
+  for (double x = 3; x <= 6.01; x += 0.5) {
+    points.insert(points.begin(), Vec3(-x, 0, 1.1 * x));
+    axes.insert(axes.begin(), Vec3(0, 0, 1));
+    material.insert(material.begin(), 1);
+  }
+  const int station = s.station + 7;
+  ASSERT_EQ(points[station], Vec3(0, 0, 0));
+  const double least =
+      std::acos(std::cos(45.5 * M_PI / 180) / (1.1 / std::sqrt(2.21))) * 180 / M_PI;
+  for (double limit : {30.0, 60.0}) {
+    std::vector<Vec3> tilted = axes;
+    AxisClearanceOptions o;
+    o.maxTiltDeg = limit;
+    o.blendLength = 0;
+    const AxisClearanceResult r = clearNozzleAxes(points, tilted, axes, material, cone45(), o);
+    EXPECT_EQ(r.unresolvedStations, 0) << limit;
+    const double tilt = degreesBetween(tilted[station], Vec3(0, 0, 1));
+    EXPECT_GE(tilt, least - 0.5) << limit;
+    EXPECT_LE(tilt, least + 1.0) << limit;  // the rings' 0.5° steps
+  }
+}
+
 TEST(NozzleAxisClearance, ReportsStationsNoAllowedTiltClears) {
   Scene s;
   std::vector<Vec3> axes = s.axes;
