@@ -5,7 +5,7 @@ namespace geolattice::cli {
 
 void addProgramOptions(std::vector<CliOption>& t) {
   const char* prog =
-      "Programs (Section 4: the robot holds the part under a fixed nozzle; robot cell in metres)";
+      "Programs (Section 4: the robot holds the part under a fixed nozzle; robot cell in mm)";
   t.push_back({"--robot", "NAME", prog, "ur5 | ur5e", "GLURScriptWriter.Robot",
                [](P& p, RunOptions&, const std::string& v) {
                  choice("--robot", v, {"ur5", "ur5e"});
@@ -14,10 +14,10 @@ void addProgramOptions(std::vector<CliOption>& t) {
                [](P& p, const RunOptions&) {
                  return std::string(p.ScriptWriter->GetRobot());
                }});
-  t.push_back({"--nozzle-tip", "X,Y,Z", prog, "nozzle tip position (m, robot base frame)",
+  t.push_back({"--nozzle-tip", "X,Y,Z", prog, "nozzle tip position (mm, robot base frame)",
                "GLURScriptWriter.NozzleTip",
                [](P& p, RunOptions&, const std::string& v) {
-                 const auto x = parseNumbers("--nozzle-tip", v, 3, "X,Y,Z (m)");
+                 const auto x = parseNumbers("--nozzle-tip", v, 3, "X,Y,Z (mm)");
                  p.ScriptWriter->SetNozzleTip(x[0], x[1], x[2]);
                },
                [](P& p, const RunOptions&) {
@@ -32,34 +32,37 @@ void addProgramOptions(std::vector<CliOption>& t) {
                [](P& p, const RunOptions&) {
                  return text(p.ScriptWriter->GetNozzleAxis(), 3);
                }});
-  t.push_back({"--part-offset", "M", prog,
-               "the platform plate M metres in front of the flange, part z\n"
-               "along the flange z (TCP = p[0,0,M,0,0,0])",
-               "GLURScriptWriter.PartOnFlange",
+  t.push_back({"--part-offset", "MM", prog,
+               "the platform plate MM in front of the flange, part z\n"
+               "along the flange z (TCP = p[0,0,MM/1000,0,0,0])",
+               "GLURScriptWriter.PartOnFlangePosition",
                [](P& p, RunOptions& r, const std::string& v) {
                  if (r.partOnFlangeGiven) {
                    throw UsageError("--part-offset and --part-on-flange exclude each other");
                  }
-                 p.ScriptWriter->SetPartOnFlange(0, 0, parseNumber("--part-offset", v), 0, 0, 0);
+                 p.ScriptWriter->SetPartOnFlangePosition(0, 0, parseNumber("--part-offset", v));
+                 p.ScriptWriter->SetPartOnFlangeRotation(0, 0, 0);
                  r.partOffsetGiven = true;
                },
                [](P& p, const RunOptions&) {
-                 return text(p.ScriptWriter->GetPartOnFlange()[2]);
+                 return text(p.ScriptWriter->GetPartOnFlangePosition()[2]);
                }});
   t.push_back({"--part-on-flange", "X,Y,Z,RX,RY,RZ", prog,
-               "the part (platform) frame on the flange as a URScript pose\n"
-               "(m, rotation vector in rad); replaces --part-offset",
-               "GLURScriptWriter.PartOnFlange",
+               "the part (platform) frame on the flange: position (mm) and\n"
+               "rotation vector (deg); replaces --part-offset",
+               "GLURScriptWriter.PartOnFlangePosition+PartOnFlangeRotation",
                [](P& p, RunOptions& r, const std::string& v) {
                  if (r.partOffsetGiven) {
                    throw UsageError("--part-offset and --part-on-flange exclude each other");
                  }
-                 const auto x = parseNumbers("--part-on-flange", v, 6, "X,Y,Z,RX,RY,RZ (m, rad)");
-                 p.ScriptWriter->SetPartOnFlange(x[0], x[1], x[2], x[3], x[4], x[5]);
+                 const auto x = parseNumbers("--part-on-flange", v, 6, "X,Y,Z,RX,RY,RZ (mm, deg)");
+                 p.ScriptWriter->SetPartOnFlangePosition(x[0], x[1], x[2]);
+                 p.ScriptWriter->SetPartOnFlangeRotation(x[3], x[4], x[5]);
                  r.partOnFlangeGiven = true;
                },
                [](P& p, const RunOptions&) {
-                 return text(p.ScriptWriter->GetPartOnFlange(), 6);
+                 return text(p.ScriptWriter->GetPartOnFlangePosition(), 3) + "," +
+                        text(p.ScriptWriter->GetPartOnFlangeRotation(), 3);
                }});
   t.push_back({"--max-script-bytes", "N", prog,
                "split the program into files below N bytes, at air moves\n"
@@ -80,7 +83,7 @@ void addProgramOptions(std::vector<CliOption>& t) {
       number("--max-filament-rate", "MM/S", prog, "filament rate at analog output 0 level 1 (10 V)",
              "GLURScriptWriter.MaxFilamentRate", script, &vtkGLURScriptWriter::SetMaxFilamentRate,
              &vtkGLURScriptWriter::GetMaxFilamentRate));
-  t.push_back(number("--max-blend", "M", prog, "largest movel blend radius (m)",
+  t.push_back(number("--max-blend", "MM", prog, "largest movel blend radius (mm)",
                      "GLURScriptWriter.MaxBlend", script, &vtkGLURScriptWriter::SetMaxBlend,
                      &vtkGLURScriptWriter::GetMaxBlend));
   t.push_back(number("--max-joint-step", "DEG", prog,

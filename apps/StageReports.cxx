@@ -309,13 +309,18 @@ void reportSummary(vtkDataObject* summary, Json& s) {
 void reportScript(GLPrintPipeline& p, Json& s) {
   vtkGLURScriptWriter* w = p.ScriptWriter;
   s["robot"] = w->GetRobot();
-  s["nozzle_tip_m"] = vec(w->GetNozzleTip(), 3);
+  s["nozzle_tip_mm"] = vec(w->GetNozzleTip(), 3);
   s["nozzle_axis"] = vec(w->GetNozzleAxis(), 3);
-  s["part_on_flange"] = vec(w->GetPartOnFlange(), 6);
+  // Position (mm) then rotation vector (deg), as --part-on-flange takes it.
+  std::vector<double> mounting = vec(w->GetPartOnFlangePosition(), 3);
+  for (double v : vec(w->GetPartOnFlangeRotation(), 3)) {
+    mounting.push_back(v);
+  }
+  s["part_on_flange"] = mounting;
   s["max_script_bytes"] = static_cast<long long>(w->GetMaxFileBytes());
   s["speed_factor"] = w->GetSpeedFactor();
   s["max_filament_rate_mm_s"] = w->GetMaxFilamentRate();
-  s["max_blend_m"] = w->GetMaxBlend();
+  s["max_blend_mm"] = w->GetMaxBlend();
   s["max_joint_step_limit_deg"] = w->GetMaxJointStep();
   s["allow_unreachable"] = w->GetAllowUnreachable() != 0;
   s["waypoints"] = static_cast<long long>(w->GetNumberOfWaypoints());
@@ -336,7 +341,7 @@ void reportScript(GLPrintPipeline& p, Json& s) {
   s["layout"] = {{"searched", w->GetSearchCellLayout() != 0},
                  {"changed", w->GetLayoutChanged()},
                  {"rotation_about_flange_z_deg", w->GetLayoutRotationDeg()},
-                 {"offset_added_m", w->GetLayoutOffsetAdded()},
+                 {"offset_added_mm", w->GetLayoutOffsetAdded()},
                  {"layouts_tried", w->GetLayoutsTried()},
                  {"part_on_flange_used", vec(w->GetUsedPartOnFlange(), 6)}};
   s["max_joint_step_deg"] = w->GetMaxJointStepDeg();

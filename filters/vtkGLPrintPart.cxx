@@ -17,6 +17,8 @@
 #include <vtkFieldData.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
 #include <vtkTable.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -25,6 +27,32 @@
 vtkStandardNewMacro(vtkGLPrintPart);
 
 namespace gl = geolattice;
+
+namespace {
+/// The text annotation of the Verdict output: the summary's verdict in words and, when the
+/// toolpath collides, the layers and how to see the stations.
+vtkSmartPointer<vtkStringArray> VerdictText(vtkDataObject* summary, vtkDataObject* verifier) {
+  std::string text = "GeoLattice: ";
+  auto* verdict = vtkStringArray::SafeDownCast(
+      summary->GetFieldData()->GetAbstractArray(gl::arrays::SummaryVerdict));
+  text += verdict && verdict->GetNumberOfValues() > 0 ? verdict->GetValue(0) : "no verdict";
+  vtkDataArray* layers = verifier->GetFieldData()->GetArray(gl::arrays::CollisionLayerRange);
+  vtkDataArray* colliding =
+      verifier->GetFieldData()->GetArray(gl::arrays::CollisionViolatingStations);
+  if (layers && colliding && colliding->GetTuple1(0) > 0 && layers->GetNumberOfValues() >= 2) {
+    const int nc = layers->GetNumberOfComponents();
+    auto value = [&](int k) {
+      return std::to_string(static_cast<long long>(layers->GetComponent(k / nc, k % nc)));
+    };
+    text += "\ncollisions in layers " + value(0) + "-" + value(1) +
+            ": colour the Toolpath by Collision; try Orient Auto or a Printhead File";
+  }
+  auto column = vtkSmartPointer<vtkStringArray>::New();
+  column->SetName("Text");
+  column->InsertNextValue(text);
+  return column;
+}
+}  // namespace
 
 struct vtkGLPrintPart::Internals {
   GLPrintPipeline pipeline;
@@ -175,9 +203,9 @@ int vtkGLPrintPart::FillInputPortInformation(int, vtkInformation* info) {
 }
 
 int vtkGLPrintPart::FillOutputPortInformation(int port, vtkInformation* info) {
-  const char* type = port == SummaryPort ? "vtkTable"
-                     : port == PartPort  ? "vtkUnstructuredGrid"
-                                         : "vtkPolyData";
+  const char* type = port == SummaryPort || port == VerdictPort ? "vtkTable"
+                     : port == PartPort                         ? "vtkUnstructuredGrid"
+                                                                : "vtkPolyData";
   info->Set(vtkDataObject::DATA_TYPE_NAME(), type);
   return 1;
 }
@@ -246,6 +274,9 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
     vtkPolyData::GetData(outputVector, LayersPort)->ShallowCopy(p.Slicer->GetOutputDataObject(0));
     vtkUnstructuredGrid::GetData(outputVector, PartPort)
         ->ShallowCopy(p.GeodesicFields->GetOutputDataObject(0));
+    vtkTable::GetData(outputVector, VerdictPort)
+        ->AddColumn(VerdictText(p.PrintSummary->GetOutputDataObject(0),
+                                p.ToolpathVerifier->GetOutputDataObject(0)));
     this->UpdateProgress(1.0);
   });
 }

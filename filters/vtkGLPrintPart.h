@@ -13,7 +13,9 @@
  * Outputs: 0 `Toolpath` (vtkGLToolpathPlanner's, with point array `Collision` of the strict
  *   verifier: 0 clear, 1 material, 2 build plate), 1 `Summary` (vtkTable: vtkGLPrintSummary's, with
  *   the strict verifier), 2 `Sequenced Lattice` (PrintOrder), 3 `Layers`, 4 `Part` (the tet mesh with
- *   Gamma, Alpha, Beta).
+ *   Gamma, Alpha, Beta), 5 `Verdict` (vtkTable, one row of string column `Text`: "GeoLattice: " and
+ *   the summary's verdict in words, with where to look when it collides; ParaView shows it as a
+ *   text annotation in the render view).
  *
  * Parameters (each read from and written to the stage filter it belongs to, so the defaults are
  * those filters' = the CLI's): Scale, FitSize (GL Place On Platform), Orient (0 keep, 1 auto),
@@ -49,6 +51,7 @@ public:
     LatticePort,
     LayersPort,
     PartPort,
+    VerdictPort,
     NumberOfPorts
   };
 

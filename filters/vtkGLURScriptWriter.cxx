@@ -30,6 +30,9 @@ vtkStandardNewMacro(vtkGLURScriptWriter);
 namespace {
 namespace gl = geolattice;
 
+/// The panel is in mm (like every filter); URScript is in metres.
+constexpr double kMillimetresPerMetre = 1000.0;
+
 bool allFinite(const double* v, int n) {
   return std::all_of(v, v + n, [](double x) { return std::isfinite(x); });
 }
@@ -56,16 +59,15 @@ vtkGLURScriptWriter::vtkGLURScriptWriter() {
   this->SetRobot(cell.robot.name.c_str());
   const gl::UrPose pose = gl::toUrPose(cell.partOnFlange);
   for (int k = 0; k < 3; ++k) {
-    this->NozzleTip[k] = cell.nozzleTip[k];
+    this->NozzleTip[k] = kMillimetresPerMetre * cell.nozzleTip[k];
     this->NozzleAxis[k] = cell.nozzleAxis[k];
-  }
-  for (int k = 0; k < 6; ++k) {
-    this->PartOnFlange[k] = pose[k];
+    this->PartOnFlangePosition[k] = kMillimetresPerMetre * pose[k];
+    this->PartOnFlangeRotation[k] = pose[k + 3] * 180.0 / M_PI;
   }
   this->MaxFileBytes = static_cast<vtkIdType>(program.maxFileBytes);
   this->SpeedFactor = program.speedFactor;
   this->MaxFilamentRate = program.maxFilamentRate;
-  this->MaxBlend = program.maxBlend;
+  this->MaxBlend = kMillimetresPerMetre * program.maxBlend;
   this->MaxJointStep = gl::RobotPathOptions{}.maxJointStepDeg;
   this->AllowUnreachable = false;
   this->SearchCellLayout = gl::CellLayoutOptions{}.search;
@@ -115,7 +117,8 @@ void vtkGLURScriptWriter::ResetResults() {
   this->LayoutRotationDeg = 0;
   this->LayoutOffsetAdded = 0;
   this->LayoutsTried = 0;
-  std::copy(this->PartOnFlange, this->PartOnFlange + 6, this->UsedPartOnFlange);
+  std::copy(this->PartOnFlangePosition, this->PartOnFlangePosition + 3, this->UsedPartOnFlange);
+  std::copy(this->PartOnFlangeRotation, this->PartOnFlangeRotation + 3, this->UsedPartOnFlange + 3);
   this->MaxTipError = 0;
   this->MaxAxisErrorDeg = 0;
   this->MaxJointSpeedDegS = 0;
@@ -131,11 +134,21 @@ void vtkGLURScriptWriter::CheckParameters() {
   if (!allFinite(this->NozzleTip, 3)) {
     throw gl::GeoLatticeError("URScript writer: the nozzle tip must be finite");
   }
+  // The cell is in millimetres: a tip within 50 mm of the base origin is inside the robot's base,
+  // most likely metres typed where millimetres are asked.
+  const Eigen::Vector3d tip(this->NozzleTip[0], this->NozzleTip[1], this->NozzleTip[2]);
+  if (tip.norm() < 50.0) {
+    std::ostringstream s;
+    s << "URScript writer: the nozzle tip (" << tip.x() << ", " << tip.y() << ", " << tip.z()
+      << ") mm is inside the robot's base; the cell is in millimetres (e.g. 0, -400, 300, not "
+         "0, -0.4, 0.3)";
+    throw gl::GeoLatticeError(s.str());
+  }
   const Eigen::Vector3d axis(this->NozzleAxis[0], this->NozzleAxis[1], this->NozzleAxis[2]);
   if (!axis.allFinite() || !(axis.norm() > 1e-12)) {
     throw gl::GeoLatticeError("URScript writer: the nozzle axis must be a finite, non-zero vector");
   }
-  if (!allFinite(this->PartOnFlange, 6)) {
+  if (!allFinite(this->PartOnFlangePosition, 3) || !allFinite(this->PartOnFlangeRotation, 3)) {
     throw gl::GeoLatticeError("URScript writer: the part-on-flange pose must be finite");
   }
   // The program options (checked with the property names; the core checks them again).
@@ -153,7 +166,7 @@ void vtkGLURScriptWriter::CheckParameters() {
                               std::to_string(this->MaxFilamentRate) + ")");
   }
   if (!(this->MaxBlend >= 0) || !std::isfinite(this->MaxBlend)) {
-    throw gl::GeoLatticeError("URScript writer: the maximum blend radius must be >= 0 m (got " +
+    throw gl::GeoLatticeError("URScript writer: the maximum blend radius must be >= 0 mm (got " +
                               std::to_string(this->MaxBlend) + ")");
   }
   // A larger bound would let a wrist flip into a print move: it is not a way out.
@@ -183,20 +196,25 @@ void vtkGLURScriptWriter::WriteData() {
         // The cell.
         gl::RobotCell cell;
         cell.robot = gl::robotModelByName(this->Robot ? this->Robot : "");
+        // The panel's mm and degrees become URScript's m and rad here (and only here).
         cell.nozzleTip =
-            Eigen::Vector3d(this->NozzleTip[0], this->NozzleTip[1], this->NozzleTip[2]);
+            Eigen::Vector3d(this->NozzleTip[0], this->NozzleTip[1], this->NozzleTip[2]) /
+            kMillimetresPerMetre;
         const Eigen::Vector3d axis(this->NozzleAxis[0], this->NozzleAxis[1], this->NozzleAxis[2]);
         cell.nozzleAxis = axis.normalized();
+        const double* p = this->PartOnFlangePosition;
+        const double* r = this->PartOnFlangeRotation;
+        const double toRad = M_PI / 180.0;
         cell.partOnFlange =
-            gl::toIsometry({this->PartOnFlange[0], this->PartOnFlange[1], this->PartOnFlange[2],
-                            this->PartOnFlange[3], this->PartOnFlange[4], this->PartOnFlange[5]});
+            gl::toIsometry({p[0] / kMillimetresPerMetre, p[1] / kMillimetresPerMetre,
+                            p[2] / kMillimetresPerMetre, r[0] * toRad, r[1] * toRad, r[2] * toRad});
         cell.partScale = 0.001;  // toolpath mm -> m
 
         gl::URScriptOptions options;
         options.maxFileBytes = static_cast<size_t>(this->MaxFileBytes);
         options.speedFactor = this->SpeedFactor;
         options.maxFilamentRate = this->MaxFilamentRate;
-        options.maxBlend = this->MaxBlend;
+        options.maxBlend = this->MaxBlend / kMillimetresPerMetre;
         options.programName = ProgramName(this->FileName);
 
         // Joints along the path (one core call: progress before and after it).
@@ -224,10 +242,13 @@ void vtkGLURScriptWriter::WriteData() {
         const gl::RobotPath& robotPath = layout.path;
         this->LayoutChanged = layout.changed;
         this->LayoutRotationDeg = layout.rotationDeg;
-        this->LayoutOffsetAdded = layout.offsetAdded;
+        this->LayoutOffsetAdded = kMillimetresPerMetre * layout.offsetAdded;
         this->LayoutsTried = layout.layoutsTried;
         const gl::UrPose mounted = gl::toUrPose(layout.cell.partOnFlange);
-        std::copy(mounted.begin(), mounted.end(), this->UsedPartOnFlange);
+        for (int k = 0; k < 3; ++k) {
+          this->UsedPartOnFlange[k] = kMillimetresPerMetre * mounted[k];
+          this->UsedPartOnFlange[k + 3] = mounted[k + 3] * 180.0 / M_PI;
+        }
         if (layout.changed) {
           std::ostringstream line;
           line << "cell layout: the platform turned by " << layout.rotationDeg
@@ -307,18 +328,17 @@ void vtkGLURScriptWriter::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Robot: " << (this->Robot ? this->Robot : "(none)") << "\n";
   os << indent << "NozzleTip: " << this->NozzleTip[0] << " " << this->NozzleTip[1] << " "
-     << this->NozzleTip[2] << " m\n";
+     << this->NozzleTip[2] << " mm\n";
   os << indent << "NozzleAxis: " << this->NozzleAxis[0] << " " << this->NozzleAxis[1] << " "
      << this->NozzleAxis[2] << "\n";
-  os << indent << "PartOnFlange:";
-  for (double v : this->PartOnFlange) {
-    os << " " << v;
-  }
-  os << "\n";
+  os << indent << "PartOnFlangePosition: " << this->PartOnFlangePosition[0] << " "
+     << this->PartOnFlangePosition[1] << " " << this->PartOnFlangePosition[2] << " mm\n";
+  os << indent << "PartOnFlangeRotation: " << this->PartOnFlangeRotation[0] << " "
+     << this->PartOnFlangeRotation[1] << " " << this->PartOnFlangeRotation[2] << " deg\n";
   os << indent << "MaxFileBytes: " << this->MaxFileBytes << "\n";
   os << indent << "SpeedFactor: " << this->SpeedFactor << "\n";
   os << indent << "MaxFilamentRate: " << this->MaxFilamentRate << " mm/s\n";
-  os << indent << "MaxBlend: " << this->MaxBlend << " m\n";
+  os << indent << "MaxBlend: " << this->MaxBlend << " mm\n";
   os << indent << "MaxJointStep: " << this->MaxJointStep << " deg\n";
   os << indent << "AllowUnreachable: " << this->AllowUnreachable << "\n";
   os << indent << "SearchCellLayout: " << (this->SearchCellLayout ? "on" : "off") << "\n";

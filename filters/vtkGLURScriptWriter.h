@@ -46,13 +46,15 @@
  *   the wrist centre from the shoulder singularity cylinder, m), GetMinElbowSingularity (|sin θ3|),
  *   GetMinWristSingularity (|sin θ5|), the smallest along the path, GetDuration (s, sum of
  *   segment times), GetMaxLineLength (characters), GetIKBranch, GetSolveSeconds.
- * Parameters: Robot ("ur5" default, or "ur5e"), NozzleTip (m, robot base frame, default
- *   (0, -0.40, 0.30)), NozzleAxis (from the tip into the nozzle, base frame, default (0, 0, 1),
- *   normalized), PartOnFlange (URScript pose x y z rx ry rz in m and rad of the part (platform)
- *   frame in the flange frame = the TCP, default (0, 0, 0.04, 0, 0, 0): the platform plate 40 mm
- *   in front of the flange), MaxFileBytes (default 4000000, >= 10000), SpeedFactor (fraction of
+ * Parameters (in mm and degrees like every GeoLattice filter; the writer converts to URScript's
+ *   metres and radians): Robot ("ur5" default, or "ur5e"), NozzleTip (mm, robot base frame,
+ *   default (0, -400, 300)), NozzleAxis (from the tip into the nozzle, base frame, default
+ *   (0, 0, 1), normalized), PartOnFlangePosition (mm) and PartOnFlangeRotation (rotation vector,
+ *   degrees, as the UR teach pendant shows it): the part (platform) frame in the flange frame =
+ *   the TCP, default (0, 0, 40) and (0, 0, 0): the platform plate 40 mm in front of the flange;
+ *   MaxFileBytes (default 4000000, >= 10000), SpeedFactor (fraction of
  *   the joint speed limits used, default 0.5, in (0, 1]), MaxFilamentRate (mm/s of filament at
- *   analog level 1 (10 V), default 5, > 0), MaxBlend (blend radius limit, m, default 0.0005,
+ *   analog level 1 (10 V), default 5, > 0), MaxBlend (blend radius limit, mm, default 0.5,
  *   >= 0), MaxJointStep (degrees, default 20, > 0: a larger jump of a joint between consecutive
  *   points is refined away or refused), AllowUnreachable (default off). The toolpath's mm are
  *   scaled by 0.001 to metres.
@@ -86,7 +88,7 @@ public:
   ///@}
 
   ///@{
-  /// Nozzle tip in the robot base frame (m, default (0, -0.40, 0.30)).
+  /// Nozzle tip in the robot base frame (mm, default (0, -400, 300)).
   vtkSetVector3Macro(NozzleTip, double);
   vtkGetVector3Macro(NozzleTip, double);
   ///@}
@@ -98,10 +100,12 @@ public:
   ///@}
 
   ///@{
-  /// The part (platform) frame in the flange frame as a URScript pose x, y, z (m), rx, ry, rz
-  /// (rotation vector, rad); the TCP of the program. Default (0, 0, 0.04, 0, 0, 0).
-  vtkSetVector6Macro(PartOnFlange, double);
-  vtkGetVector6Macro(PartOnFlange, double);
+  /// The part (platform) frame in the flange frame, the TCP of the program: its origin (mm,
+  /// default (0, 0, 40)) and its rotation vector (axis times angle, degrees, default (0, 0, 0)).
+  vtkSetVector3Macro(PartOnFlangePosition, double);
+  vtkGetVector3Macro(PartOnFlangePosition, double);
+  vtkSetVector3Macro(PartOnFlangeRotation, double);
+  vtkGetVector3Macro(PartOnFlangeRotation, double);
   ///@}
 
   ///@{
@@ -123,7 +127,7 @@ public:
   ///@}
 
   ///@{
-  /// Largest blend radius (m, default 0.0005, >= 0).
+  /// Largest blend radius (mm, default 0.5, >= 0).
   vtkSetMacro(MaxBlend, double);
   vtkGetMacro(MaxBlend, double);
   ///@}
@@ -171,8 +175,8 @@ public:
   vtkIdType GetLargeJointSteps() const { return this->LargeJointSteps; }
   /// The cell layout of the last Write(): whether the path solver changed the mounting of the
   /// part (SearchCellLayout), the rotation it added about the flange z axis (degrees), the
-  /// distance it added in front of the flange (m), the layouts it tried, and the mounting used
-  /// (the program's set_tcp; a URScript pose, m and rad).
+  /// distance it added in front of the flange (mm), the layouts it tried, and the mounting used
+  /// (the program's set_tcp: position x, y, z in mm, rotation vector in degrees).
   bool GetLayoutChanged() const { return this->LayoutChanged; }
   double GetLayoutRotationDeg() const { return this->LayoutRotationDeg; }
   double GetLayoutOffsetAdded() const { return this->LayoutOffsetAdded; }
@@ -202,7 +206,8 @@ protected:
   char* Robot = nullptr;
   double NozzleTip[3];
   double NozzleAxis[3];
-  double PartOnFlange[6];
+  double PartOnFlangePosition[3];
+  double PartOnFlangeRotation[3];
   vtkIdType MaxFileBytes;
   double SpeedFactor;
   double MaxFilamentRate;

@@ -91,6 +91,18 @@ PARAMETERS = {
 }
 
 
+def get_property(proxy, name):
+    """A property's value by its XML name. ParaView names a property's Python attribute after its
+    panel label, units included ("Layer Interval (mm)" -> LayerIntervalmm); the XML name
+    (LayerInterval) is the one the C++ filters, the CLI's --list-options and this module use."""
+    return proxy.GetPropertyValue(name)
+
+
+def set_property(proxy, name, value):
+    """Sets a property by its XML name (see get_property)."""
+    proxy.SetPropertyWithName(name, value)
+
+
 def build_pipeline(model, lattice_width=None, **parameters):
     """Returns a dict of the pipeline's proxies by key (see STAGES): reader, place, tets, fields, layers,
     overhang, lattice, skeleton, sequencer (output ports 0 Sequenced Lattice, 1 Sequenced Skeleton,
@@ -134,7 +146,7 @@ def build_pipeline(model, lattice_width=None, **parameters):
     for name, value in parameters.items():
         keys, prop = PARAMETERS[name]
         for key in keys:
-            setattr(p[key], prop, list(value) if isinstance(value, (tuple, list)) else value)
+            set_property(p[key], prop, list(value) if isinstance(value, (tuple, list)) else value)
     if not tet_mesh:
         if pedestal is not None:
             set_pedestal(p, pedestal)
@@ -147,21 +159,22 @@ def set_pedestal(p, pedestal):
     number = the orientation search decides where it helps, 0 = never, a height = always that tall."""
     if pedestal == "auto" or float(pedestal) < 0:
         p["orient"].Pedestal = "When It Helps"
-        p["pedestal"].Height = 0
+        set_property(p["pedestal"], "Height", 0)
     elif float(pedestal) == 0:
         p["orient"].Pedestal = "Never"
-        p["pedestal"].Height = 0
+        set_property(p["pedestal"], "Height", 0)
     else:
         p["orient"].Pedestal = "Always"
-        p["orient"].PedestalHeight = float(pedestal)
-        p["pedestal"].Height = float(pedestal)
+        set_property(p["orient"], "PedestalHeight", float(pedestal))
+        set_property(p["pedestal"], "Height", float(pedestal))
 
 
 def match_orientation_to_print(p):
     """The orientation search's refinement at the print's layer interval and lattice width
     (GLPrintPipeline::MatchOrientationToPrint)."""
-    p["orient"].RefineLayerInterval = p["layers"].LayerInterval
-    p["orient"].RefineLatticeWidth = min(p["lattice"].AlphaWidth, p["lattice"].BetaWidth)
+    set_property(p["orient"], "RefineLayerInterval", get_property(p["layers"], "LayerInterval"))
+    set_property(p["orient"], "RefineLatticeWidth",
+                 min(get_property(p["lattice"], "AlphaWidth"), get_property(p["lattice"], "BetaWidth")))
     p["orient"].RefineStrategy = p["sequencer"].Strategy
 
 

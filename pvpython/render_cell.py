@@ -323,7 +323,7 @@ def main():
     prog = report.get("program") or {}
     robot_name = prog.get("robot", "ur5")
     robot = ROBOTS[robot_name]
-    tip = np.array(prog.get("nozzle_tip_m", [0.0, -0.40, 0.30]), float)
+    tip = np.array(prog.get("nozzle_tip_mm", [0.0, -400.0, 300.0]), float) / 1000.0  # m
     nozzle_axis = np.array(prog.get("nozzle_axis", [0.0, 0.0, 1.0]), float)
     nozzle_axis /= np.linalg.norm(nozzle_axis)
     scale = 0.001  # toolpath mm -> m (RobotCell::partScale)

@@ -390,7 +390,7 @@ class CliErrorTest(unittest.TestCase):
     def test_unreachable_cell(self):
         # The nozzle 5 m from the robot: one line, the reachability gate (exit 5), no program file.
         line = self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--replay-steps", "0",
-                                  "--nozzle-tip", "5,0,0"], "program", "unreachable cell set-up")
+                                  "--nozzle-tip", "5000,0,0"], "program", "unreachable cell set-up")
         self.assertTrue(line.startswith("geolattice: stopped: program: "), line)
         self.assertEqual(self.program_files(), [])
         self.assertTrue(os.path.isfile(os.path.join(self.out, "toolpath.vtp")))  # the stages before
@@ -401,8 +401,8 @@ class CliErrorTest(unittest.TestCase):
         self.expect_error(cube + ["--robot", "ur10"], "--robot", "ur5 or ur5e")
         self.expect_error(cube + ["--nozzle-tip", "1,2"], "--nozzle-tip", "X,Y,Z")
         self.expect_error(cube + ["--nozzle-tip", "1,2,x"], "--nozzle-tip")
-        self.expect_error(cube + ["--part-on-flange", "0,0,0.1"], "--part-on-flange", "X,Y,Z,RX,RY,RZ")
-        self.expect_error(cube + ["--part-offset", "0.1", "--part-on-flange", "0,0,0.1,0,0,0"],
+        self.expect_error(cube + ["--part-on-flange", "0,0,100"], "--part-on-flange", "X,Y,Z,RX,RY,RZ")
+        self.expect_error(cube + ["--part-offset", "100", "--part-on-flange", "0,0,100,0,0,0"],
                           "--part-offset and --part-on-flange")
         self.expect_error(cube + ["--max-script-bytes", "5000"], "--max-script-bytes")
         self.expect_error(cube + ["--gcode", "xyz"], "--gcode", "ac, bc or none")
@@ -443,7 +443,7 @@ class CliErrorTest(unittest.TestCase):
                 return json.load(f)
 
         # Split below 200 kB: print_part.script, print_part_1.script, ... each with its def.
-        result = self.run_cli(*cube, "--max-script-bytes", "200000", "--robot", "ur5e", "--part-offset", "0.05")
+        result = self.run_cli(*cube, "--max-script-bytes", "200000", "--robot", "ur5e", "--part-offset", "50")
         self.assertEqual(result.returncode, 0, result.stderr)
         program = report()["program"]
         files = program["files"]
@@ -459,7 +459,7 @@ class CliErrorTest(unittest.TestCase):
         self.assertEqual(movels, program["moves"])
         self.assertEqual(program["moves"], program["waypoints"] - 1)
         self.assertEqual(program["robot"], "ur5e")
-        self.assertEqual(program["part_on_flange"], [0, 0, 0.05, 0, 0, 0])
+        self.assertEqual(program["part_on_flange"], [0, 0, 50, 0, 0, 0])  # mm, deg
         # One file again: the numbered files of the longer program are gone; no G-code wanted: the
         # earlier toolpath.gcode is removed too.
         result = self.run_cli(*cube, "--gcode", "none")
@@ -637,7 +637,7 @@ class CliGateTest(unittest.TestCase):
         self.assertTrue(report["gates"]["collision"]["overridden"])
 
     def test_unreachable_gate_and_its_override(self):
-        args = ["--fit-size", "30", "--nozzle-tip", "0.88,0,0.1", "--no-layout-search"]
+        args = ["--fit-size", "30", "--nozzle-tip", "880,0,100", "--no-layout-search"]
         result, report, programs, out = self.run_cli("cube.obj", *args)
         self.expect_gate(result, report, programs, out, 5, "reachability", ["unreachable for the ur5"])
         self.assertGreater(report["program"]["unreachable"], 0)
@@ -649,7 +649,7 @@ class CliGateTest(unittest.TestCase):
 
     def test_joint_gate_and_the_cell_layout_search(self):
         # The nozzle pointing along the robot's x axis: the path as laid out makes the wrist flip.
-        cell = ["--nozzle-tip", "0,-0.4,0.3", "--nozzle-axis", "1,0,0", "--allow-collisions"]
+        cell = ["--nozzle-tip", "0,-400,300", "--nozzle-axis", "1,0,0", "--allow-collisions"]
         result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-layout-search")
         self.assertEqual(result.returncode, 6, result.stderr)
         lines = [l for l in result.stderr.splitlines() if l.strip()]
@@ -676,7 +676,7 @@ class CliGateTest(unittest.TestCase):
         with open(os.path.join(out, "print_part.script")) as f:
             head = f.read(2000)
         self.assertIn("# cell layout: the platform turned by", head)
-        self.assertIn("set_tcp(p[0, 0, %s" % ("%g" % layout["part_on_flange_used"][2]), head)
+        self.assertIn("set_tcp(p[0, 0, %s" % ("%g" % (layout["part_on_flange_used"][2] / 1000)), head)
 
 
 class CliVerifyTest(unittest.TestCase):
@@ -769,7 +769,7 @@ class CliVerifyTest(unittest.TestCase):
             report = json.load(f)
         program = report["program"]
         for key in ("waypoints", "unreachable", "unreachable_first", "files", "max_joint_step_deg",
-                    "min_singularity", "max_joint_speed_deg_s", "duration_s", "seconds", "robot", "nozzle_tip_m",
+                    "min_singularity", "max_joint_speed_deg_s", "duration_s", "seconds", "robot", "nozzle_tip_mm",
                     "part_on_flange", "gcode", "csv"):
             self.assertIn(key, program)
         self.assertEqual(program["waypoints"], report["toolpath"]["points"])

@@ -78,6 +78,12 @@ TEST(vtkGLPrintPart, OneUpdatePrintsTheYAndATuningRerunsOnlyTheLaterStages) {
   EXPECT_NE(layers->GetCellData()->GetArray(arrays::LayerId), nullptr);
   EXPECT_NE(tets->GetPointData()->GetArray(arrays::Gamma), nullptr);
   EXPECT_GT(summaryRow(summary, "stations"), 0);  // the strict verifier's count
+  // The verdict in words, for the render view's text annotation.
+  auto* verdict = vtkTable::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::VerdictPort));
+  ASSERT_TRUE(verdict && verdict->GetNumberOfRows() == 1);
+  EXPECT_EQ(verdict->GetValueByName(0, "Text").ToString().rfind("GeoLattice: collision-free", 0),
+            0u)
+      << verdict->GetValueByName(0, "Text").ToString();
 
   // A lattice change re-runs from the lattice on: the tet mesh and the layers are kept.
   GLPrintPipeline& p = part->Pipeline();
@@ -91,6 +97,14 @@ TEST(vtkGLPrintPart, OneUpdatePrintsTheYAndATuningRerunsOnlyTheLaterStages) {
   EXPECT_EQ(p.LatticeInfill->GetBetaWidth(), 5.0);
   summary = vtkTable::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::SummaryPort));
   EXPECT_EQ(summaryRow(summary, "layers"), layerCount);
+
+  // A wide nozzle collides: the verdict says so and where.
+  part->SetNozzleAngle(80.0);
+  ASSERT_EQ(part->GetExecutive()->Update(), 1) << errors->Errors();
+  verdict = vtkTable::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::VerdictPort));
+  const std::string text = verdict->GetValueByName(0, "Text").ToString();
+  EXPECT_EQ(text.rfind("GeoLattice: COLLIDES at ", 0), 0u) << text;
+  EXPECT_NE(text.find("collisions in layers "), std::string::npos) << text;
 
   // A stage's error is reported once, naming the stage; the outputs are empty.
   part->SetNozzleAngle(95.0);

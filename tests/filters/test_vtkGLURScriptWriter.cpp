@@ -59,14 +59,15 @@ TEST(vtkGLURScriptWriter, FileAndProgramNames) {
 TEST(vtkGLURScriptWriter, DefaultsAndPrintSelf) {
   vtkNew<vtkGLURScriptWriter> w;
   EXPECT_STREQ(w->GetRobot(), "ur5");
-  EXPECT_EQ(w->GetNozzleTip()[1], -0.40);
-  EXPECT_EQ(w->GetNozzleTip()[2], 0.30);
+  EXPECT_EQ(w->GetNozzleTip()[1], -400.0);  // mm, like every filter
+  EXPECT_EQ(w->GetNozzleTip()[2], 300.0);
   EXPECT_EQ(w->GetNozzleAxis()[2], 1.0);
-  EXPECT_EQ(w->GetPartOnFlange()[2], 0.04);
+  EXPECT_EQ(w->GetPartOnFlangePosition()[2], 40.0);
+  EXPECT_EQ(w->GetPartOnFlangeRotation()[2], 0.0);
   EXPECT_EQ(w->GetMaxFileBytes(), 4000000);
   EXPECT_EQ(w->GetSpeedFactor(), 0.5);
   EXPECT_EQ(w->GetMaxFilamentRate(), 5.0);
-  EXPECT_EQ(w->GetMaxBlend(), 0.0005);
+  EXPECT_EQ(w->GetMaxBlend(), 0.5);
   EXPECT_EQ(w->GetAllowUnreachable(), 0);
   EXPECT_EQ(w->GetNumberOfFilesWritten(), 0);
   std::ostringstream os;
@@ -205,7 +206,7 @@ TEST_F(BranchingYProgram, SplitProgramPassesTheSyntaxCheck) {
   w->SetMaxJointStep(20);
 
   // A cell that does not reach: an error, the earlier program stays as it was.
-  w->SetNozzleTip(5.0, 0.0, 0.0);
+  w->SetNozzleTip(5000.0, 0.0, 0.0);
   EXPECT_EQ(w->Write(), 0);
   EXPECT_NE(errors->Errors().find("unreachable cell set-up"), std::string::npos)
       << errors->Errors();
@@ -224,8 +225,9 @@ TEST_F(BranchingYProgram, Ur5eAndAnotherCell) {
   w->SetInputConnection(p->planner->GetOutputPort());
   w->SetFileName((dir / "ur5e.script").string().c_str());
   w->SetRobot("ur5e");
-  w->SetNozzleTip(0.1, -0.45, 0.25);
-  w->SetPartOnFlange(0, 0, 0.05, 0, 0, 0.3);
+  w->SetNozzleTip(100, -450, 250);
+  w->SetPartOnFlangePosition(0, 0, 50);
+  w->SetPartOnFlangeRotation(0, 0, 0.3 * 180.0 / M_PI);  // 0.3 rad in the program
   w->SetSpeedFactor(0.3);
   ASSERT_EQ(w->Write(), 1) << errors->Errors();
   EXPECT_EQ(w->GetUnreachableCount(), 0);
@@ -325,8 +327,14 @@ TEST(vtkGLURScriptWriter, BadInputIsReported) {
   }
   {
     ErrorCase c("cell", makeTestToolpath());
-    c.writer->SetNozzleTip(5, 0, 0);
+    c.writer->SetNozzleTip(5000, 0, 0);
     c.expectError("unreachable cell set-up");
+  }
+  {
+    // Metres typed where millimetres are asked: named, not a silent cell inside the base.
+    ErrorCase c("metres", makeTestToolpath());
+    c.writer->SetNozzleTip(0, -0.4, 0.3);
+    c.expectError("the cell is in millimetres");
   }
   {
     ErrorCase c("nofile", makeTestToolpath());

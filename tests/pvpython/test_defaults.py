@@ -172,11 +172,12 @@ class DefaultsTest(unittest.TestCase):
             flag, prop, value = line.split("\t")
             if "." not in prop or flag in ("--first-layer", "--part-offset"):
                 continue  # CLI-only; the first layer follows --layer-interval; part offset is a pose entry
-            proxy, name = prop.split(".")
+            proxy, names = prop.split(".")
             cls_name, props = self.xml[proxy]
-            if name not in props:
+            if any(name not in props for name in names.split("+")):
                 continue
-            xml_values = props[name][2]
+            # "A+B": the flag sets both properties, its values A's then B's.
+            xml_values = [v for name in names.split("+") for v in props[name][2]]
             if prop in CLI_CHOICES:
                 value = str(CLI_CHOICES[prop][value])
             cli_values = value.split(",")
@@ -186,6 +187,47 @@ class DefaultsTest(unittest.TestCase):
                     self.assertTrue(same(a, b), "%s: CLI %s, XML %s" % (flag, value, xml_values))
             checked += 1
         self.assertGreaterEqual(checked, 50)
+
+    def test_every_length_and_angle_label_carries_its_unit(self):
+        """The panels show each quantity's unit in its label, one unit per dimension (mm, deg, mm/s,
+        mm², g/cm³: never metres or radians, which the writers convert to themselves): a numeric
+        property whose documentation states a unit ("(mm", "(degrees, ...") has that unit in its
+        label, a label's unit is stated in its documentation, and a property of the same name has
+        the same unit in every panel."""
+        doc_units = re.compile(r"\((mm/s|mm²|g/cm³|mm|degrees|deg|m|rad)[,;)\s]")
+        allowed = {"mm", "deg", "mm/s", "mm²", "g/cm³"}
+        unit_of = {}
+        checked = 0
+        for name in sorted(os.listdir(os.path.join(SOURCE_DIR, "plugin", "xml"))):
+            root = ET.parse(os.path.join(SOURCE_DIR, "plugin", "xml", name)).getroot()
+            for group in root.iter("ProxyGroup"):
+                for proxy in group:
+                    for p in proxy:
+                        if p.tag not in ("DoubleVectorProperty", "IntVectorProperty", "IdTypeVectorProperty") \
+                                or p.get("information_only") == "1" or p.get("panel_visibility") == "never" \
+                                or p.find("BooleanDomain") is not None or p.find("EnumerationDomain") is not None:
+                            continue
+                        d = p.find("Documentation")
+                        doc = " ".join((d.text or "").split()) if d is not None else ""
+                        stated = {"deg" if u == "degrees" else u for u in doc_units.findall(doc)}
+                        label = p.get("label") or ""
+                        m = re.search(r"\(([^()]*)\)$", label)
+                        shown = m.group(1) if m else None
+                        where = "%s.%s" % (proxy.get("name"), p.get("name"))
+                        with self.subTest(property=where):
+                            if stated:
+                                self.assertEqual(len(stated), 1, "%s: its documentation states %s" % (where, stated))
+                                self.assertEqual(shown, next(iter(stated)),
+                                                 "%s: label %r lacks the unit %s" % (where, label, stated))
+                            if shown is not None:
+                                self.assertIn(shown, allowed, "%s: label unit %s" % (where, shown))
+                                self.assertEqual(stated, {shown}, "%s: label says %s, documentation %s"
+                                                 % (where, shown, stated))
+                                previous = unit_of.setdefault(p.get("name"), (shown, where))
+                                self.assertEqual(previous[0], shown, "%s in %s, %s in %s" %
+                                                 (previous[0], previous[1], shown, where))
+                                checked += 1
+        self.assertGreaterEqual(checked, 60)
 
     def test_cli_reference_is_current(self):
         help_text = subprocess.run([CLI, "--help"], capture_output=True, text=True, check=True).stdout

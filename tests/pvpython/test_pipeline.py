@@ -304,7 +304,7 @@ class PipelineTest(unittest.TestCase):
         self.assertEqual(rows[0], "x,y,z,nx,ny,nz,e,kind,layer")
         self.assertEqual(len(rows), n + 1)
         # A cell that cannot reach: an error, nothing written.
-        simple.SaveData(os.path.join(out, "far.script"), toolpath, NozzleTip=[5.0, 0.0, 0.0], AllowCollisions=1)
+        simple.SaveData(os.path.join(out, "far.script"), toolpath, NozzleTipmm=[5000.0, 0.0, 0.0], AllowCollisions=1)
         self.assertEqual(sorted(f for f in os.listdir(out) if f.startswith("far") or f.startswith(".")), [])
 
     def test_saved_file_reads_back(self):

@@ -60,7 +60,7 @@ class PipelineDescriptionTest(unittest.TestCase):
         for key in ("orient", "sequencer", "verifier", "toolpath", "toolpath_verifier"):
             with self.subTest(stage=key):
                 self.assertEqual(p[key].PrintheadFile, head)
-        self.assertEqual(p["pedestal"].Height, 5)
+        self.assertEqual(pipeline.get_property(p["pedestal"], "Height"), 5)
         self.assertEqual(p["sequencer"].SplitRounds, 2)
 
     def test_the_filters_menu_lists_every_filter_once_in_pipeline_order(self):
