@@ -1,5 +1,6 @@
 // The options of the lattice, the print sequence and its nozzle, and the toolpath.
 #include "CliOptionTable.h"
+#include "ToolpathOutput.h"
 
 namespace geolattice::cli {
 
@@ -200,11 +201,13 @@ void addPrintOptions(std::vector<CliOption>& t) {
                  return std::string(p.Planner->GetSupportPerimeter() ? "perimeter" : "none");
                }});
   t.push_back({"--replay-steps", "N", path,
-               "step files of the print replay (toolpath.pvd); fewer for long\n"
-               "paths (all steps together <= ~2 million points); 0 = none",
+               "steps of the print replay (toolpath.pvd: step k adds the piece\n"
+               "printed between progress (k-1)/N and k/N; all pieces together\n"
+               "are the toolpath's size); at most 500; 0 = none",
                "",
                [](P&, RunOptions& r, const std::string& v) {
-                 r.replaySteps = static_cast<int>(wholeNumber("--replay-steps", v, 0, 9999));
+                 r.replaySteps =
+                     static_cast<int>(wholeNumber("--replay-steps", v, 0, kMaxReplaySteps));
                },
                [](P&, const RunOptions& r) {
                  return text(r.replaySteps);

@@ -68,7 +68,8 @@ bool isGeoLatticeOutput(const std::string& name) {
   static const std::regex known(
       "(tets\\.vtu|fields\\.vtu|layers\\.vtp|overhang\\.vtp|lattice\\.vtp|skeleton\\.vtp|"
       "sequence\\.vtp|sequence\\.csv|collisions\\.vtp|toolpath\\.vtp|toolpath_collisions\\.vtp|"
-      "toolpath\\.pvd|toolpath/step_[0-9]{4}\\.vtp|print_part(_[0-9]+)?\\.script|toolpath\\.gcode|"
+      "toolpath\\.pvd|toolpath/step_[0-9]{4}\\.vtp|toolpath/"
+      "empty\\.vtp|print_part(_[0-9]+)?\\.script|toolpath\\.gcode|"
       "toolpath\\.ngc|waypoints\\.csv|orientation\\.csv|orientation\\.vtp|placed\\.vtp)");
   return std::regex_match(name, known);
 }

@@ -181,7 +181,9 @@ private:
         replayStepCount(vtkDataSet::SafeDownCast(toolpath)->GetNumberOfPoints(), R.replaySteps);
     path["replay_steps"] = steps;
     const auto replayStart = Clock::now();
-    for (const std::string& f : writeToolpathReplay(P.ToolpathReplay, R.outDir, steps)) {
+    for (const std::string& f :
+         writeToolpathReplay(vtkPolyData::SafeDownCast(P.ToolpathVerifier->GetOutputDataObject(1)),
+                             R.outDir, steps)) {
       if (f.find('*') == std::string::npos) {
         this->Files.add(f, secondsSince(replayStart));
       }

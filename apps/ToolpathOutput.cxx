@@ -3,11 +3,16 @@
 #include "OutputFiles.h"
 #include "common/Error.h"
 #include "vtkGLArrayNames.h"
-#include "vtkGLToolpathReplay.h"
 
-#include <vtkDataArray.h>
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkCellData.h>
 #include <vtkFieldData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 
 #include <algorithm>
 #include <cmath>
@@ -23,16 +28,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr double kReplayPointBudget =
-    2e6;  // points in all step files together (~70 bytes each on disk)
-
 std::string stepName(int k) {
   char name[32];
   std::snprintf(name, sizeof name, "step_%04d.vtp", k);
   return name;
 }
 
-/// Removes OUTDIR/toolpath/step_NNNN.vtp with NNNN > keep.
+/// Removes OUTDIR/toolpath/step_NNNN.vtp with NNNN > keep (and empty.vtp when keep is 0).
 void removeStaleSteps(const fs::path& dir, int keep) {
   std::error_code ec;
   if (!fs::is_directory(dir, ec)) {
@@ -43,7 +45,8 @@ void removeStaleSteps(const fs::path& dir, int keep) {
   for (const auto& entry : fs::directory_iterator(dir, ec)) {
     std::smatch m;
     const std::string name = entry.path().filename().string();
-    if (std::regex_match(name, m, pattern) && std::stoi(m[1]) > keep) {
+    if ((std::regex_match(name, m, pattern) && std::stoi(m[1]) > keep) ||
+        (keep == 0 && name == "empty.vtp")) {
       stale.push_back(entry.path());
     }
   }
@@ -52,18 +55,64 @@ void removeStaleSteps(const fs::path& dir, int keep) {
   }
 }
 
+/// The points first..last of the toolpath (renumbered from 0) with their point data, and the
+/// runs of at least two of them in each line cell with that cell's data; first > last gives no
+/// points and the same arrays. Field data are shared.
+vtkSmartPointer<vtkPolyData> toolpathPiece(vtkPolyData* whole, vtkIdType first, vtkIdType last) {
+  auto piece = vtkSmartPointer<vtkPolyData>::New();
+  const vtkIdType n = std::max<vtkIdType>(0, last - first + 1);
+  vtkNew<vtkPoints> points;
+  points->SetDataType(whole->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(n);
+  vtkPointData* inPd = whole->GetPointData();
+  vtkPointData* outPd = piece->GetPointData();
+  outPd->CopyAllocate(inPd, n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    points->SetPoint(i, whole->GetPoint(first + i));
+    outPd->CopyData(inPd, first + i, i);
+  }
+  piece->SetPoints(points);
+  vtkNew<vtkCellArray> lines;
+  vtkCellData* outCd = piece->GetCellData();
+  outCd->CopyAllocate(whole->GetCellData());
+  std::vector<vtkIdType> run;
+  auto flush = [&](vtkIdType cell) {
+    if (run.size() >= 2) {
+      outCd->CopyData(whole->GetCellData(), cell,
+                      lines->InsertNextCell(static_cast<vtkIdType>(run.size()), run.data()));
+    }
+    run.clear();
+  };
+  auto it = vtk::TakeSmartPointer(whole->GetLines()->NewIterator());
+  vtkIdType cell = whole->GetNumberOfVerts();  // cell ids count the vertices first
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell(), ++cell) {
+    vtkIdType size = 0;
+    const vtkIdType* ids = nullptr;
+    it->GetCurrentCell(size, ids);
+    for (vtkIdType k = 0; k < size; ++k) {
+      if (ids[k] >= first && ids[k] <= last) {
+        run.push_back(ids[k] - first);
+      } else {
+        flush(cell);
+      }
+    }
+    flush(cell);
+  }
+  piece->SetLines(lines);
+  piece->SetFieldData(whole->GetFieldData());
+  return piece;
+}
+
 }  // namespace
 
 int replayStepCount(long long points, int maxSteps) {
   if (maxSteps <= 0) {
     return 0;
   }
-  // Σ_{k=1..S} (k / S) N = N (S + 1) / 2 points in all step files.
-  const double fit = 2.0 * kReplayPointBudget / std::max(1.0, static_cast<double>(points)) - 1.0;
-  return std::max(1, std::min(maxSteps, static_cast<int>(std::floor(fit))));
+  return static_cast<int>(std::max(1LL, std::min<long long>(maxSteps, points - 1)));
 }
 
-std::vector<std::string> writeToolpathReplay(vtkGLToolpathReplay* replay, const std::string& outDir,
+std::vector<std::string> writeToolpathReplay(vtkPolyData* toolpath, const std::string& outDir,
                                              int steps) {
   const fs::path dir = fs::path(outDir) / "toolpath";
   const fs::path pvd = fs::path(outDir) / "toolpath.pvd";
@@ -74,39 +123,41 @@ std::vector<std::string> writeToolpathReplay(vtkGLToolpathReplay* replay, const 
     removeStaleSteps(dir, 0);
     return written;
   }
-  prepareOutputDirectory(dir.string());
-  replay->SetStepBy(vtkGLToolpathReplay::Points);
-  replay->SetKeepUnprintedPoints(false);  // smaller files
-  std::vector<double> times;
-  for (int k = 1; k <= steps; ++k) {
-    const double p = k == steps ? 1.0 : static_cast<double>(k) / steps;
-    if (!replay->UpdateTimeStep(p)) {
-      throw GeoLatticeError("toolpath: replay step " + std::to_string(k) + " failed");
-    }
-    vtkPolyData* part = replay->GetOutput();
-    if (!part || part->GetNumberOfPoints() == 0) {
-      throw GeoLatticeError("toolpath: replay step " + std::to_string(k) + " is empty");
-    }
-    writeVtkXml(part, (dir / stepName(k)).string());
-    times.push_back(p);
+  if (!toolpath || toolpath->GetNumberOfPoints() == 0 || !toolpath->GetLines()) {
+    throw GeoLatticeError("toolpath: no points to replay");
   }
+  prepareOutputDirectory(dir.string());
+  const vtkIdType last = toolpath->GetNumberOfPoints() - 1;
+  // vtkGLToolpathReplay's rule: at progress p the points 0 .. round(p (N - 1)) are printed.
+  auto lastPrinted = [&](int k) {
+    return static_cast<vtkIdType>(std::llround(static_cast<double>(k) / steps * last));
+  };
+  for (int k = 1; k <= steps; ++k) {
+    writeVtkXml(toolpathPiece(toolpath, lastPrinted(k - 1), lastPrinted(k)),
+                (dir / stepName(k)).string());
+  }
+  writeVtkXml(toolpathPiece(toolpath, 1, 0), (dir / "empty.vtp").string());
   writeAtomically(pvd.string(), [&](const std::string& tmp) {
     std::ofstream out(tmp);
     out << "<?xml version=\"1.0\"?>\n"
-        << "<!-- GeoLattice print replay: step k holds the toolpath printed up to progress k / "
-        << steps << " (by point count) -->\n"
+        << "<!-- GeoLattice print replay: at time k / " << steps
+        << " the pieces 1..k of the toolpath (by point count), the other parts empty -->\n"
         << "<VTKFile type=\"Collection\" version=\"0.1\" byte_order=\"LittleEndian\">\n  "
            "<Collection>\n"
         << std::setprecision(10);
     for (int k = 1; k <= steps; ++k) {
-      out << "    <DataSet timestep=\"" << times[k - 1]
-          << "\" group=\"\" part=\"0\" file=\"toolpath/" << stepName(k) << "\"/>\n";
+      const double time = k == steps ? 1.0 : static_cast<double>(k) / steps;
+      for (int j = 1; j <= steps; ++j) {
+        out << "    <DataSet timestep=\"" << time << "\" group=\"\" part=\"" << j - 1
+            << "\" file=\"toolpath/" << (j <= k ? stepName(j) : "empty.vtp") << "\"/>\n";
+      }
     }
     out << "  </Collection>\n</VTKFile>\n";
     return static_cast<bool>(out);
   });
   removeStaleSteps(dir, steps);
   written.push_back((dir / "step_*.vtp").string());
+  written.push_back((dir / "empty.vtp").string());
   written.push_back(pvd.string());
   return written;
 }

@@ -30,6 +30,15 @@ constexpr const char* ReferenceFallbackTets = "ReferenceFallbackTets";
 constexpr const char* SourceCount = "SourceCount";
 // Tetrahedralization output.
 constexpr const char* TetQuality = "RadiusEdgeRatio";
+// GL Surface Check output: the defect edges and the verdict on the surface.
+constexpr const char* DefectKind = "DefectKind";        ///< cell data: gl::SurfaceDefectEdge::Kind
+constexpr const char* SurfaceClosed = "SurfaceClosed";  ///< 1: GL Tetrahedralize Surface accepts it
+constexpr const char* BoundaryEdges = "BoundaryEdges";
+constexpr const char* NonManifoldEdges = "NonManifoldEdges";
+constexpr const char* InconsistentEdges = "InconsistentEdges";
+constexpr const char* DegenerateTriangles = "DegenerateTriangles";
+constexpr const char* SignedVolume = "SignedVolume";      ///< enclosed volume, input units³
+constexpr const char* SurfaceVerdict = "SurfaceVerdict";  ///< string: "closed manifold" or why not
 // Field data of vtkGLPlaceOnPlatform: p_out = PlacementScale * p_in + PlacementTranslation.
 constexpr const char* PlacementScale = "PlacementScale";  ///< 1 value, uniform scale factor
 constexpr const char* PlacementTranslation =

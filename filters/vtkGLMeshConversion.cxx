@@ -11,6 +11,8 @@
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
+#include <vtkCleanPolyData.h>
+#include <vtkDataSetAttributes.h>
 #include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
 #include <vtkIdList.h>
@@ -18,6 +20,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -52,7 +55,45 @@ vtkNew<vtkPoints> writePoints(const std::vector<Vec3>& points) {
   }
   return out;
 }
+/// Removes point normals and texture coordinates: per-corner data that point merging would
+/// make wrong, and that made readers (OBJ) split vertices in the first place.
+void dropCornerAttributes(vtkPolyData* poly) {
+  vtkPointData* pd = poly->GetPointData();
+  int indices[vtkDataSetAttributes::NUM_ATTRIBUTES];
+  pd->GetAttributeIndices(indices);
+  int normals = indices[vtkDataSetAttributes::NORMALS];
+  int tcoords = indices[vtkDataSetAttributes::TCOORDS];
+  // Remove the higher index first so the other index stays valid.
+  if (normals < tcoords) {
+    std::swap(normals, tcoords);
+  }
+  for (int index : {normals, tcoords}) {
+    if (index >= 0) {
+      pd->RemoveArray(index);
+    }
+  }
+}
+
 }  // namespace
+
+vtkSmartPointer<vtkAlgorithm> newSurfaceCleaner(vtkPolyData* surface) {
+  vtkNew<vtkPolyData> raw;
+  raw->ShallowCopy(surface);
+  dropCornerAttributes(raw);
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(raw);
+  triangles->PassVertsOff();
+  triangles->PassLinesOff();
+  // Exact merging (tolerance 0); polygons that collapse are dropped, not turned into lines.
+  auto clean = vtkSmartPointer<vtkCleanPolyData>::New();
+  clean->SetInputConnection(triangles->GetOutputPort());
+  clean->PointMergingOn();
+  clean->SetTolerance(0.0);
+  clean->ConvertPolysToLinesOff();
+  clean->ConvertLinesToPointsOff();
+  clean->ConvertStripsToPolysOff();
+  return clean;
+}
 
 TriangleSurface toTriangleSurface(vtkPolyData* poly) {
   if (!poly || poly->GetNumberOfPolys() == 0) {

@@ -16,6 +16,7 @@
 
 #include <vector>
 
+class vtkAlgorithm;
 class vtkDataArray;
 class vtkDoubleArray;
 class vtkGLNozzle;
@@ -30,6 +31,13 @@ namespace geolattice {
 /// Triangle surface from polydata: polygons must all be triangles (run vtkTriangleFilter first
 /// for quads); vertices/lines are ignored. Throws on an empty surface or non-triangles.
 TriangleSurface toTriangleSurface(vtkPolyData* poly);
+/// The surface cleaning of GL Mesh Reader, for a surface from any reader: point normals and
+/// texture coordinates dropped (per-corner data, for which readers such as OBJ split vertices),
+/// polygons triangulated (vertices and lines dropped), coincident points merged exactly and the
+/// points numbered by first use in the triangles. The returned filter (input: a shallow copy of
+/// `surface`) is not run yet. The stages downstream depend on the point order, so a part
+/// opened with ParaView's own reader gives the command line's numbers only after this.
+vtkSmartPointer<vtkAlgorithm> newSurfaceCleaner(vtkPolyData* surface);
 /// Tet mesh from an unstructured grid of VTK_TETRA cells only. Throws otherwise.
 TetMesh toTetMesh(vtkUnstructuredGrid* grid);
 /// Points + VTK_TETRA cells, no arrays.

@@ -10,7 +10,6 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellType.h>
-#include <vtkCleanPolyData.h>
 #include <vtkCommand.h>
 #include <vtkDataObject.h>
 #include <vtkErrorCode.h>
@@ -27,7 +26,6 @@
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
-#include <vtkTriangleFilter.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLReader.h>
@@ -184,25 +182,6 @@ void runChecked(vtkAlgorithm* algorithm, const std::string& path, vtkAlgorithm* 
   }
 }
 
-/// Removes point normals and texture coordinates: per-corner data that point merging would
-/// make wrong, and that made readers (OBJ) split vertices in the first place.
-void dropCornerAttributes(vtkPolyData* poly) {
-  vtkPointData* pd = poly->GetPointData();
-  int indices[vtkDataSetAttributes::NUM_ATTRIBUTES];
-  pd->GetAttributeIndices(indices);
-  int normals = indices[vtkDataSetAttributes::NORMALS];
-  int tcoords = indices[vtkDataSetAttributes::TCOORDS];
-  // Remove the higher index first so the other index stays valid.
-  if (normals < tcoords) {
-    std::swap(normals, tcoords);
-  }
-  for (int index : {normals, tcoords}) {
-    if (index >= 0) {
-      pd->RemoveArray(index);
-    }
-  }
-}
-
 /// Throws if a cell refers to a point that does not exist. VTK readers do not all check this
 /// (vtkOBJReader keeps "f 1 2 3 9" of a 3-vertex file as a polygon with point id 8), and the
 /// filters downstream would read out of bounds.
@@ -348,23 +327,10 @@ void readSurface(const std::string& path, const std::string& ext, vtkPolyData* o
     checkPointIds(raw->GetPolys(), raw->GetNumberOfPoints(), "polygon", path);
     checkPointIds(raw->GetStrips(), raw->GetNumberOfPoints(), "triangle strip", path);
   }
-  dropCornerAttributes(raw);
   gl::checkAbort(reporter, 0.6);
-
-  vtkNew<vtkTriangleFilter> triangles;
-  triangles->SetInputData(raw);
-  triangles->PassVertsOff();
-  triangles->PassLinesOff();
-  // Exact merging (tolerance 0); polygons that collapse are dropped, not turned into lines.
-  vtkNew<vtkCleanPolyData> clean;
-  clean->SetInputConnection(triangles->GetOutputPort());
-  clean->PointMergingOn();
-  clean->SetTolerance(0.0);
-  clean->ConvertPolysToLinesOff();
-  clean->ConvertLinesToPointsOff();
-  clean->ConvertStripsToPolysOff();
+  vtkSmartPointer<vtkAlgorithm> clean = gl::newSurfaceCleaner(raw);
   runChecked(clean, path, reporter, 0.6, 0.95);
-  vtkPolyData* cleaned = clean->GetOutput();
+  vtkPolyData* cleaned = vtkPolyData::SafeDownCast(clean->GetOutputDataObject(0));
   if (cleaned->GetNumberOfPolys() == 0) {
     throw geolattice::GeoLatticeError("empty mesh: " + path + " has no triangles");
   }

@@ -2,6 +2,7 @@
 
 #include "GLPrintPipeline.h"
 #include "vtkGLArrayNames.h"
+#include "vtkGLMeshConversion.h"
 #include "vtkGLRequest.h"
 
 #include "common/Error.h"
@@ -29,13 +30,26 @@ vtkStandardNewMacro(vtkGLPrintPart);
 namespace gl = geolattice;
 
 namespace {
-/// The text annotation of the Verdict output: the summary's verdict in words and, when the
-/// toolpath collides, the layers and how to see the stations.
+/// The text annotation of the Verdict output: the summary's verdict in words (a line break before
+/// its first parenthesis and after each clause) and, when the toolpath collides, the layers and how to see the stations.
 vtkSmartPointer<vtkStringArray> VerdictText(vtkDataObject* summary, vtkDataObject* verifier) {
   std::string text = "GeoLattice: ";
   auto* verdict = vtkStringArray::SafeDownCast(
       summary->GetFieldData()->GetAbstractArray(gl::arrays::SummaryVerdict));
-  text += verdict && verdict->GetNumberOfValues() > 0 ? verdict->GetValue(0) : "no verdict";
+  std::string words = verdict && verdict->GetNumberOfValues() > 0 ? verdict->GetValue(0) : "";
+  // The verdict on the first line, its numbers below, a line per clause: one line is wider than
+  // the view.
+  const size_t details = words.find(" (");
+  if (details != std::string::npos) {
+    words[details] = '\n';
+    for (const char* clause : {"; ", "): "}) {
+      for (size_t at = words.find(clause, details); at != std::string::npos;
+           at = words.find(clause, at + 1)) {
+        words[at + std::string(clause).size() - 1] = '\n';
+      }
+    }
+  }
+  text += words.empty() ? "no verdict" : words;
   vtkDataArray* layers = verifier->GetFieldData()->GetArray(gl::arrays::CollisionLayerRange);
   vtkDataArray* colliding =
       verifier->GetFieldData()->GetArray(gl::arrays::CollisionViolatingStations);
@@ -230,9 +244,13 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
           "empty input: GL Print Part needs a closed triangle surface (open "
           "the model with File > Open or GL Mesh Reader)");
     }
-    // Copied only when it changed: a parameter change then re-runs only the stages after it.
+    // Cleaned only when it changed: a parameter change then re-runs only the stages after it.
+    // Cleaned as GL Mesh Reader cleans a file, so a part opened with ParaView's own reader (its
+    // own point order, split vertices) prints as the command line prints the same file.
     if (input != I.inputObject || input->GetMTime() != I.inputTime) {
-      I.input->ShallowCopy(input);
+      vtkSmartPointer<vtkAlgorithm> clean = gl::newSurfaceCleaner(input);
+      clean->Update();
+      I.input->ShallowCopy(clean->GetOutputDataObject(0));
       I.inputObject = input;
       I.inputTime = input->GetMTime();
     }

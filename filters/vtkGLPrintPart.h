@@ -14,8 +14,13 @@
  *   verifier: 0 clear, 1 material, 2 build plate), 1 `Summary` (vtkTable: vtkGLPrintSummary's, with
  *   the strict verifier), 2 `Sequenced Lattice` (PrintOrder), 3 `Layers`, 4 `Part` (the tet mesh with
  *   Gamma, Alpha, Beta), 5 `Verdict` (vtkTable, one row of string column `Text`: "GeoLattice: " and
- *   the summary's verdict in words, with where to look when it collides; ParaView shows it as a
- *   text annotation in the render view).
+ *   the summary's verdict in words, a line break before its numbers, with where to look when it
+ *   collides; ParaView shows it as a text annotation in the render view). On Apply ParaView shows
+ *   the toolpath, the verdict and the summary (spreadsheet view); the other outputs on request
+ *   (plugin/xml/GLPrintPart.xml's View hints).
+ *
+ * The input is cleaned as vtkGLMeshReader cleans a file (gl::newSurfaceCleaner): a part opened
+ * with ParaView's own reader prints as the command line prints the file.
  *
  * Parameters (each read from and written to the stage filter it belongs to, so the defaults are
  * those filters' = the CLI's): Scale, FitSize (GL Place On Platform), Orient (0 keep, 1 auto),

@@ -20,6 +20,8 @@
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 
+#include <string>
+
 #include <Eigen/Dense>
 
 #include <algorithm>
@@ -124,7 +126,22 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
       }
       return this->GetAbortExecute() != 0;
     };
-    const gl::TetrahedralizeResult result = gl::tetrahedralizeSurface(surface, options);
+    const gl::TetrahedralizeResult result = [&] {
+      try {
+        return gl::tetrahedralizeSurface(surface, options);
+      } catch (const gl::GeoLatticeError& e) {
+        // Where to see the edges the message counts (ParaView users; the CLI prints the first).
+        const std::string what = e.what();
+        for (const char* edges : {"open surface", "non-manifold surface", "inconsistently"}) {
+          if (what.rfind(edges, 0) == 0) {
+            throw gl::GeoLatticeError(what +
+                                      " (GL Surface Check on this input shows every such "
+                                      "edge: colour it by DefectKind)");
+          }
+        }
+        throw;
+      }
+    }();
     gl::checkAbort(this, 0.8);
 
     gl::fromTetMesh(result.mesh, output);

@@ -104,12 +104,15 @@ SurfaceCheckReport checkSurface(const TriangleSurface& surface) {
       if (r.boundaryEdges++ == 0) {
         r.firstBoundaryEdge = {edges[i].lo, edges[i].hi};
       }
+      r.defectEdges.push_back({edges[i].lo, edges[i].hi, SurfaceDefectEdge::Boundary});
     } else if (uses > 2) {
       if (r.nonManifoldEdges++ == 0) {
         r.firstNonManifoldEdge = {edges[i].lo, edges[i].hi};
       }
+      r.defectEdges.push_back({edges[i].lo, edges[i].hi, SurfaceDefectEdge::NonManifold});
     } else if (edges[i].forward == edges[i + 1].forward) {
       ++r.inconsistentEdges;
+      r.defectEdges.push_back({edges[i].lo, edges[i].hi, SurfaceDefectEdge::Inconsistent});
     }
     i = j;
   }

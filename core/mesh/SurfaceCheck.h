@@ -9,8 +9,17 @@
 #include "mesh/TetMesh.h"
 
 #include <array>
+#include <vector>
 
 namespace geolattice {
+
+/// @brief An edge that keeps a surface from being a closed manifold.
+struct SurfaceDefectEdge {
+  enum Kind { Boundary = 0, NonManifold = 1, Inconsistent = 2 };
+  int lo = -1, hi = -1;  ///< its point ids, lower first
+  Kind kind =
+      Boundary;  ///< used by one triangle, by more than two, or traversed the same way twice
+};
 
 /// @brief Counts of surface defects. Edges are undirected vertex pairs of in-range triangles.
 struct SurfaceCheckReport {
@@ -30,6 +39,9 @@ struct SurfaceCheckReport {
   int unusedPoints = 0;       ///< points no triangle references (harmless, reported only)
   double signedVolume = 0.0;  ///< enclosed volume (mm^3) by the divergence theorem; < 0 if inward
   double bboxDiagonal = 0.0;  ///< bounding-box diagonal of the finite points (mm)
+  /// Every boundary, non-manifold and inconsistently oriented edge, sorted by point ids (what
+  /// GL Surface Check shows, so a user sees where to repair).
+  std::vector<SurfaceDefectEdge> defectEdges;
 
   /// True when the surface is non-empty, closed, edge-manifold, consistently oriented, with
   /// in-range indices, finite points and no degenerate triangles (orientation not required).

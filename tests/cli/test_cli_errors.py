@@ -363,7 +363,8 @@ class CliErrorTest(unittest.TestCase):
             with open(os.path.join(self.out, "report.json")) as f:
                 self.assertEqual(json.load(f)["toolpath"]["replay_steps"], int(steps))
             files = sorted(os.listdir(steps_dir)) if os.path.isdir(steps_dir) else []
-            self.assertEqual(files, ["step_%04d.vtp" % k for k in range(1, int(steps) + 1)])
+            self.assertEqual(files, (["empty.vtp"] if steps != "0" else [])
+                             + ["step_%04d.vtp" % k for k in range(1, int(steps) + 1)])
             self.assertEqual(os.path.isfile(os.path.join(self.out, "toolpath.pvd")), steps != "0")
 
     def test_lattice_wider_than_the_part_still_sequences(self):
@@ -748,21 +749,26 @@ class CliVerifyTest(unittest.TestCase):
             return int(re.search(r'<Piece NumberOfPoints="(\d+)"', head).group(1))
 
         self.assertEqual(points_in(os.path.join(self.out, "toolpath.vtp")), tp["points"])
-        # The replay: cumulative steps at progress k / S, the last one the whole path.
+        # The replay: at time k / S the pieces 1..k (parts 0..k-1; the others the empty file), piece k the
+        # points printed between progress (k - 1) / S and k / S, its first one shared with piece k - 1.
         import xml.etree.ElementTree as ET
         sets = ET.parse(os.path.join(self.out, "toolpath.pvd")).getroot().findall("./Collection/DataSet")
         steps = tp["replay_steps"]
         self.assertTrue(1 <= steps <= 50)
-        self.assertEqual(len(sets), steps)
-        times = [float(d.get("timestep")) for d in sets]
-        self.assertEqual(times, sorted(times))
-        self.assertEqual(times[-1], 1.0)
+        self.assertEqual(len(sets), steps * steps)
         self.assertEqual(sorted(os.listdir(os.path.join(self.out, "toolpath"))),
-                         ["step_%04d.vtp" % k for k in range(1, steps + 1)])
-        counts = [points_in(os.path.join(self.out, d.get("file"))) for d in sets]
-        for t, n in zip(times, counts):
-            self.assertEqual(n, round(t * (tp["points"] - 1)) + 1)
-        self.assertEqual(counts[-1], tp["points"])
+                         ["empty.vtp"] + ["step_%04d.vtp" % k for k in range(1, steps + 1)])
+        self.assertEqual(points_in(os.path.join(self.out, "toolpath", "empty.vtp")), 0)
+        pieces = [points_in(os.path.join(self.out, "toolpath", "step_%04d.vtp" % k)) for k in range(1, steps + 1)]
+        self.assertEqual(sum(pieces), tp["points"] + steps - 1)  # the toolpath once, not once per step
+        times = sorted({float(d.get("timestep")) for d in sets})
+        self.assertEqual(len(times), steps)
+        self.assertEqual(times[-1], 1.0)
+        for k, t in enumerate(times, start=1):
+            listed = [d for d in sets if float(d.get("timestep")) == t]
+            self.assertEqual(sorted(int(d.get("part")) for d in listed), list(range(steps)))
+            shown = sum(points_in(os.path.join(self.out, d.get("file"))) for d in listed)
+            self.assertEqual(shown - (k - 1), round(t * (tp["points"] - 1)) + 1)  # GL Toolpath Replay's rule
 
     def test_outputs_of_the_program_stage(self):
         with open(os.path.join(self.out, "report.json")) as f:

@@ -18,6 +18,7 @@
 #include "vtkGLPlaceOnPlatform.h"
 #include "vtkGLPrintSequencer.h"
 #include "vtkGLSkeletonTree.h"
+#include "vtkGLSurfaceCheck.h"
 #include "vtkGLTetrahedralizeSurface.h"
 #include "vtkGLToolpathPlanner.h"
 #include "vtkGLURScriptWriter.h"
@@ -88,6 +89,10 @@ TEST(ErrorContract, EveryFilterReturnsFalseOnFailure) {
       {"GL Toolpath Replay",
        [] {
          return withEmptyInputs<vtkGLToolpathReplay>(false);
+       }},
+      {"GL Surface Check",
+       [] {
+         return withEmptyInputs<vtkGLSurfaceCheck>(false);
        }},
       {"GL Tetrahedralize Surface",
        [] {

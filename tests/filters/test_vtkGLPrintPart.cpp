@@ -6,11 +6,14 @@
 #include "vtkGLMeshReader.h"
 #include "vtkGLPrintPart.h"
 
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkExecutive.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkStringArray.h>
 #include <vtkTable.h>
@@ -20,6 +23,7 @@
 
 #include <sstream>
 #include <string>
+#include <vector>
 
 namespace arrays = geolattice::arrays;
 
@@ -113,4 +117,49 @@ TEST(vtkGLPrintPart, OneUpdatePrintsTheYAndATuningRerunsOnlyTheLaterStages) {
   EXPECT_EQ(vtkPolyData::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::ToolpathPort))
                 ->GetNumberOfPoints(),
             0);
+}
+
+// The reader does not matter: the Y with its points in another order and split vertices (as
+// ParaView's own OBJ reader gives them, or a file with per-corner normals) prints as GL Mesh
+// Reader's Y prints: GL Print Part cleans its input as the reader does.
+TEST(vtkGLPrintPart, PointOrderAndSplitVerticesOfTheInputDoNotChangeThePrint) {
+  vtkNew<vtkGLMeshReader> reader;
+  reader->SetFileName((std::string(GEOLATTICE_TESTDATA) + "/y_shape.obj").c_str());
+  reader->Update();
+  vtkPolyData* clean = vtkPolyData::SafeDownCast(reader->GetOutputDataObject(0));
+  const vtkIdType n = clean->GetNumberOfPoints();
+  // Reversed point order; every triangle's corners get their own copy of its first point.
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  for (vtkIdType i = n - 1; i >= 0; --i) {
+    points->InsertNextPoint(clean->GetPoint(i));
+  }
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < clean->GetNumberOfCells(); ++c) {
+    clean->GetCellPoints(c, ids);
+    const vtkIdType split = points->InsertNextPoint(clean->GetPoint(ids->GetId(0)));
+    triangles->InsertNextCell({split, n - 1 - ids->GetId(1), n - 1 - ids->GetId(2)});
+  }
+  vtkNew<vtkPolyData> shuffled;
+  shuffled->SetPoints(points);
+  shuffled->SetPolys(triangles);
+
+  auto print = [](vtkPolyData* surface) {
+    vtkNew<vtkGLPrintPart> part;
+    part->SetInputDataObject(surface);
+    part->SetLayerInterval(1.5);  // a quick print: the comparison is what matters
+    part->SetLatticeWidth(6.0);
+    EXPECT_EQ(part->GetExecutive()->Update(), 1);
+    auto* summary = vtkTable::SafeDownCast(part->GetOutputDataObject(vtkGLPrintPart::SummaryPort));
+    std::vector<double> values;
+    for (const char* key : {"layers", "subgraphs", "points", "retractions", "print_length_mm",
+                            "air_length_mm", "colliding_stations"}) {
+      values.push_back(summaryRow(summary, key));
+    }
+    return values;
+  };
+  const std::vector<double> expected = print(clean);
+  EXPECT_GT(expected[2], 1000);
+  EXPECT_EQ(print(shuffled), expected);
 }

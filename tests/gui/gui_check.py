@@ -86,6 +86,10 @@ def _geolattice_gui_check():
                     stations = data.GetFieldData().GetArray("CollisionStations")
                     if stations is None or stations.GetValue(0) <= 0:
                         failures.append("GLCollisionVerifier1 gave no verdict (no CollisionStations)")
+                elif name == "GLSurfaceCheck":  # the Y is closed: no defect edges, the verdict says so
+                    closed = data.GetFieldData().GetArray("SurfaceClosed")
+                    if closed is None or closed.GetValue(0) != 1:
+                        failures.append("GLSurfaceCheck1 does not find the Y closed")
                 elif name == "GLAutoOrient" and port == 1:
                     pass  # the candidates: empty with Orient = Keep (the default)
                 elif summary["points"] == 0 or summary["cells"] == 0:

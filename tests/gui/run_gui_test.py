@@ -25,6 +25,13 @@ events, played on the real widgets, are:
 
 The two scripts write JSON results; the process's exit code says whether playback succeeded.
 
+With --print-part, the driver first runs the command line on the model (default: the bundled bunny) with
+PRINT_PART_CLI, then plays: open the model (ParaView's own reader), Filters > GeoLattice > GL Print
+Part, type PRINT_PART_PARAMETERS into its panel, Apply (once), select its Toolpath, Filters >
+GeoLattice > GL Toolpath Replay, Apply; tests/gui/gui_print_part_check.py compares the Summary table
+with the command line's report.json, checks the verdict annotation and plays the replay, and saves
+the workbench, summary and replay screenshots into --screenshot-dir (docs/images for the user guide).
+
 With --state, the driver instead saves a state with pvpython/geolattice_state.py, starts the GUI with
 `--state=<it>` (the GUI's own state loading, as File > Load State) and runs tests/gui/gui_state_check.py
 in the Python shell: every source of the state non-empty, the four coloured views, a screenshot.
@@ -68,6 +75,7 @@ CHAIN = [
     ("GLToolpathReplay", None, {}),
     ("GLOverhangAnalysis", "GLGeodesicDistanceFields1", {}),
     ("GLAutoOrient", "GLPlaceOnPlatform1", {}),
+    ("GLSurfaceCheck", "GLPlaceOnPlatform1", {}),
     ("GLPedestal", "GLPlaceOnPlatform1", {}),
     # Last: its table opens a spreadsheet view, which becomes the active view. Its Verifier input is
     # optional, so the GUI asks for no second input (no Select Input dialog).
@@ -79,6 +87,9 @@ CHAIN = [
 # server item down; an item with several output ports has one child per port): builtin server / y_shape /
 # place / tets / fields, and ... / fields / layers / port "Layers" / lattice / skeleton. gui_check.py
 # verifies that the inputs picked this way are the intended ones.
+# --print-part: the command line's options and the same parameters typed into GL Print Part's panel.
+PRINT_PART_CLI = ["--fit-size", "80", "--orient", "auto", "--until", "toolpath", "--replay-steps", "0"]
+PRINT_PART_PARAMETERS = {"FitSize": 80.0, "Orient": 1}
 TREE_ROWS = {"GLGeodesicDistanceFields1": "0/0/0/0/0|0", "GLSkeletonTree1": "0/0/0/0/0/0/0/0/0|0"}
 
 
@@ -149,6 +160,44 @@ def write_events(path, chain):
         f.write("\n".join(lines) + "\n")
 
 
+def write_print_part_events(path, model):
+    steps = ["r = simple.OpenDataFile(%r, registrationName='model'); simple.Show(r); simple.SetActiveSource(r); "
+             "simple.ResetCamera(); simple.Render()" % model]
+    lines = ['<?xml version="1.0" ?>', "<pqevents>", python_event("from paraview import simple"),
+             python_event(steps[0]), event(MENU, "activate", "GLPrintPart")]
+    for name, value in PRINT_PART_PARAMETERS.items():  # typed into the panel before the one Apply
+        lines.append(python_event("simple.FindSource('GLPrintPart1').SetPropertyWithName(%r, %r)" % (name, value)))
+    lines += [event(APPLY, "activate"),
+              # as a user clicks the render view (Apply made the new spreadsheet view active) and the toolpath
+              python_event("simple.SetActiveView(simple.GetViews('RenderView')[0]); "
+                           "simple.SetActiveSource(simple.FindSource('GLPrintPart1'))"),
+              event(MENU, "activate", "GLToolpathReplay"), event(APPLY, "activate"),
+              python_event(run_file_code(os.path.join(HERE, "gui_print_part_check.py"))),
+              python_event("_gl_pp_first()"), python_event("_gl_pp_capture('gui_workbench_bunny.png')"),
+              python_event("_gl_pp_maximize_summary()"), python_event("_gl_pp_capture('gui_summary_bunny.png')"),
+              python_event("_gl_pp_maximize_summary(False)"),
+              python_event("_gl_pp_second()"), "</pqevents>"]
+    with open(path, "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+def run_cli_report(model, work):
+    """report.json of the command line on the model with PRINT_PART_CLI, or (None, message)."""
+    cli = os.environ.get("GEOLATTICE_CLI") or shutil.which("geolattice")
+    if not cli:
+        return None, "the command line (GEOLATTICE_CLI) was not found"
+    out = os.path.join(work, "cli")
+    start = time.time()
+    done = subprocess.run([cli, "run", model, "-o", out] + PRINT_PART_CLI, capture_output=True, text=True,
+                          timeout=600)
+    print("geolattice run %s: %.1f s, exit code %d" % (" ".join(PRINT_PART_CLI), time.time() - start,
+                                                      done.returncode), flush=True)
+    report = os.path.join(out, "report.json")
+    if not os.path.isfile(report):
+        return None, "the command line wrote no report.json:\n" + done.stderr[-3000:]
+    return report, None
+
+
 def skip(message):
     print("SKIPPED: " + message, flush=True)
     return SKIP
@@ -202,6 +251,10 @@ def main(argv=None):
     parser.add_argument("--state", action="store_true",
                         help="instead: save a state with pvpython/geolattice_state.py (pvpython: $PVPYTHON or "
                              "PATH), start the GUI with --state=<it> and check what it shows")
+    parser.add_argument("--print-part", action="store_true",
+                        help="instead: one Apply of GL Print Part on the model [testdata/bunny.obj], its summary "
+                             "against the command line's report.json, the replay played, three screenshots")
+    parser.add_argument("--screenshot-dir", help="where --print-part saves its screenshots [the work directory]")
     parser.add_argument("--timeout", type=float, default=240.0, help="seconds before the GUI is killed [240]")
     parser.add_argument("--keep", action="store_true", help="keep the work directory (events, results, log)")
     args = parser.parse_args(argv)
@@ -220,7 +273,10 @@ def main(argv=None):
         return skip("no X server can be made: %s not found on PATH (Debian package xvfb); the ParaView GUI "
                     "needs an X display (Debian's ParaView is built for GLX only)"
                     % ("xvfb-run" if not xvfb_run else "Xvfb"))
-    model = os.path.abspath(args.model or os.path.join(source_dir, "testdata", "y_shape.obj"))
+    if args.print_part and not shutil.which("xwd"):
+        return skip("xwd (Debian package x11-apps) is not on the PATH: --print-part captures the GUI window with it")
+    default_model = "bunny.obj" if args.print_part else "y_shape.obj"
+    model = os.path.abspath(args.model or os.path.join(source_dir, "testdata", default_model))
 
     declared = plugin_filters(source_dir)
     failures = []
@@ -232,7 +288,7 @@ def main(argv=None):
     for name in sorted(menu_filters - {step[0] for step in chain}):
         failures.append("%s is a GeoLattice filter the GUI test does not cover: add it to CHAIN in %s"
                         % (name, os.path.abspath(__file__)))
-    if failures and not args.state:
+    if failures and not (args.state or args.print_part):
         print("FAIL:\n  " + "\n  ".join(failures))
         return 1
 
@@ -258,7 +314,20 @@ def main(argv=None):
         json.dump(plan, f, indent=1)
     events = os.path.join(work, "events.xml")
     extra_options = []
-    if args.state:
+    if args.print_part:
+        plan["report"], problem = run_cli_report(model, work)
+        if problem:
+            print("FAIL: " + problem)
+            return 1
+        plan["parameters"] = PRINT_PART_PARAMETERS
+        plan["check_script"] = os.path.join(HERE, "gui_print_part_check.py")
+        plan["screenshot_dir"] = os.path.abspath(args.screenshot_dir or work)
+        os.makedirs(plan["screenshot_dir"], exist_ok=True)
+        with open(plan_path, "w") as f:
+            json.dump(plan, f, indent=1)
+        write_print_part_events(events, model)
+        stages = (("gui_print_part_check.py", "check_result"),)
+    elif args.state:
         pvsm = os.path.join(work, "geolattice.pvsm")
         pvpython = os.environ.get("PVPYTHON") or shutil.which("pvpython")
         start = time.time()
@@ -307,7 +376,7 @@ def main(argv=None):
     if check:
         for name, info in check.get("outputs", {}).items():
             print("  %-26s %s" % (name, info))
-    if not problems and not os.path.isfile(screenshot):
+    if not problems and not args.print_part and not os.path.isfile(screenshot):
         problems.append("no screenshot at %s" % screenshot)
     print("GUI run: %.1f s (paraview exit code %s)" % (seconds, rc))
     if problems:
@@ -317,7 +386,10 @@ def main(argv=None):
         print("paraview log (%s), error lines:\n  %s" % (log_path, "\n  ".join(interesting[:40]) or "(none)"))
         print("work directory kept: %s" % work)
         return 1
-    if args.state:
+    if args.print_part:
+        print("PASS: GL Print Part with one Apply on %s: the summary is report.json's, the replay plays; "
+              "screenshots in %s" % (os.path.basename(model), plan["screenshot_dir"]))
+    elif args.state:
         print("PASS: the state saved by geolattice_state.py loads in the GUI; screenshot %s" % screenshot)
     else:
         print("PASS: %d GeoLattice filters created from Filters > GeoLattice and applied; screenshot %s"

@@ -78,6 +78,9 @@ class PipelineDescriptionTest(unittest.TestCase):
         for _, proxy, _ in pipeline.STAGES:
             if proxy in declared and proxy not in in_stage_order:
                 in_stage_order.append(proxy)
+        # Diagnostics, not stages: each just before the stage whose input it checks.
+        for diagnostic, stage in (("GLSurfaceCheck", "GLTetrahedralizeSurface"),):
+            in_stage_order.insert(in_stage_order.index(stage), diagnostic)
         self.assertEqual(listed, ["GLPrintPart"] + in_stage_order)  # the whole pipeline first
         self.assertEqual(set(listed), declared)
         self.assertEqual(menu.find("Category").get("preserve_order"), "1")
@@ -106,6 +109,43 @@ class PipelineDescriptionTest(unittest.TestCase):
         for key, value in report.items():
             with self.subTest(key=key):
                 self.assertAlmostEqual(rows[key], value, delta=1e-9 * max(1.0, abs(value)))
+
+    def test_the_command_lines_replay_plays_in_paraview(self):
+        # toolpath.pvd opened by ParaView's own PVD reader: at each of its times the pieces show the path GL
+        # Toolpath Replay shows at that progress (the same segments), and all pieces together hold the
+        # toolpath once.
+        model = os.path.join(SOURCE_DIR, "testdata", "cube.obj")
+        out = tempfile.mkdtemp(prefix="geolattice-replay-")
+        try:
+            subprocess.run([CLI, "run", model, "-o", out, "-q", "--fit-size", "10", "--until", "toolpath",
+                            "--replay-steps", "7"], check=True, capture_output=True, text=True)
+            pipeline.load_plugin()
+            pvd = simple.OpenDataFile(os.path.join(out, "toolpath.pvd"))
+            self.assertEqual(pvd.GetXMLName(), "PVDReader")
+            times = list(pvd.TimestepValues)
+            self.assertEqual(len(times), 7)
+            replay = simple.GLToolpathReplay(Input=simple.OpenDataFile(os.path.join(out, "toolpath.vtp")))
+
+            def segments(data):
+                lines = data.GetLines()
+                return lines.GetNumberOfConnectivityIds() - lines.GetNumberOfCells()
+
+            for t in times:
+                with self.subTest(time=t):
+                    pvd.UpdatePipeline(t)
+                    blocks = servermanager.Fetch(pvd)
+                    leaves = []
+                    it = blocks.NewIterator()
+                    it.InitTraversal()
+                    while not it.IsDoneWithTraversal():
+                        leaves.append(it.GetCurrentDataObject())
+                        it.GoToNextItem()
+                    self.assertEqual(len(leaves), 7)  # one per part, empty after the current step
+                    shown = sum(segments(leaf) for leaf in leaves)
+                    replay.UpdatePipeline(t)
+                    self.assertEqual(shown, segments(servermanager.Fetch(replay)))
+        finally:
+            shutil.rmtree(out, ignore_errors=True)
 
 
 if __name__ == "__main__":
