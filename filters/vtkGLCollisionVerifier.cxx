@@ -357,16 +357,10 @@ void buildStations(vtkPolyData* input, bool pointStations, const Stations& stati
 int vtkGLCollisionVerifier::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                         vtkInformationVector* outputVector) {
   // Collective in an MPI run: all the printed points on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->Initialize();
-  vtkPolyData* verdicts = vtkPolyData::GetData(outputVector, 1);
-  verdicts->Initialize();
-  if (!inputs.Computes()) {
-    return 1;  // another process has the points
-  }
-  vtkPolyData* input = inputs.Get<vtkPolyData>(0);
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 1, outputVector, [&](const gl::ParallelInputs& inputs) {
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    vtkPolyData* verdicts = vtkPolyData::GetData(outputVector, 1);
+    vtkPolyData* input = inputs.Get<vtkPolyData>(0);
     const gl::NozzleModel nozzle = gl::nozzleModel(this->Nozzle);
     const gl::BuildPlate plate = gl::buildPlate(this->Nozzle);
 

@@ -147,16 +147,10 @@ int vtkGLCurvedLayerSlicer::RequestInformation(vtkInformation*, vtkInformationVe
 int vtkGLCurvedLayerSlicer::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                         vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole tet mesh on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
-  vtkPolyData* all = vtkPolyData::GetData(outputVector, 0);
-  vtkPolyData* selected = vtkPolyData::GetData(outputVector, 1);
-  all->Initialize();
-  selected->Initialize();
-  if (!inputs.Computes()) {
-    return 1;  // another process has the mesh
-  }
-  vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 1, outputVector, [&](const gl::ParallelInputs& inputs) {
+    vtkPolyData* all = vtkPolyData::GetData(outputVector, 0);
+    vtkPolyData* selected = vtkPolyData::GetData(outputVector, 1);
+    vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
     const gl::TetMesh mesh = gl::toTetMesh(input);
     const Eigen::VectorXd gamma = requirePointArray(input, gl::arrays::Gamma);
     const Eigen::VectorXd alpha = requirePointArray(input, gl::arrays::Alpha);

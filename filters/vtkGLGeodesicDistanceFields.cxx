@@ -117,15 +117,10 @@ int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVect
                                              vtkInformationVector* outputVector) {
   namespace gl = geolattice;
   // Collective in an MPI run: the whole tet mesh on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
-  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
-  output->Initialize();
-  if (!inputs.Computes()) {
-    return 1;  // another process has the mesh
-  }
-  vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
-  const auto start = std::chrono::steady_clock::now();
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 1, outputVector, [&](const gl::ParallelInputs& inputs) {
+    vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+    vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
+    const auto start = std::chrono::steady_clock::now();
     gl::GeodesicFieldOptions options = fieldOptions(this);
     SolverCache& cache = *this->Cache;
     // The cached solver keeps these callbacks: they read the range of the current step.

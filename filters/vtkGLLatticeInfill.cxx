@@ -312,14 +312,9 @@ int vtkGLLatticeInfill::RequestInformation(vtkInformation*, vtkInformationVector
 int vtkGLLatticeInfill::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                     vtkInformationVector* outputVector) {
   // Collective in an MPI run: all the layers on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->Initialize();
-  if (!inputs.Computes()) {
-    return 1;  // another process has the layers
-  }
-  vtkPolyData* input = inputs.Get<vtkPolyData>(0);
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 1, outputVector, [&](const gl::ParallelInputs& inputs) {
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    vtkPolyData* input = inputs.Get<vtkPolyData>(0);
     std::vector<vtkIdType> inputPoint;
     bool hasGamma = false;
     const gl::CurvedLayers layers = toCurvedLayers(input, inputPoint, hasGamma);

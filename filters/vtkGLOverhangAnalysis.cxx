@@ -78,14 +78,9 @@ int vtkGLOverhangAnalysis::RequestInformation(vtkInformation*, vtkInformationVec
 int vtkGLOverhangAnalysis::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                        vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole tet mesh on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->Initialize();
-  if (!inputs.Computes()) {
-    return 1;  // another process has the mesh
-  }
-  vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 1, outputVector, [&](const gl::ParallelInputs& inputs) {
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    vtkUnstructuredGrid* input = inputs.Get<vtkUnstructuredGrid>(0);
     if (!input || input->GetNumberOfCells() == 0) {
       throw gl::GeoLatticeError("the input has no cells");
     }

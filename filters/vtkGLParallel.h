@@ -30,6 +30,8 @@
  * anything else; ParaView updates a pipeline on every process). Without a controller or with
  * one process it does nothing.
  */
+#include "vtkGLRequest.h"
+
 #include <vtkSmartPointer.h>
 
 #include <vector>
@@ -68,6 +70,22 @@ private:
   bool ComputesHere = true;
   bool WasGathered = false;
 };
+
+/// A filter's RequestData as every GeoLattice filter runs it: the first `ports` inputs
+/// (ParallelInputs, collective), the outputs cleared, nothing more on a process that does not
+/// compute, and `body(inputs)` under VTK's error contract (runRequest of vtkGLRequest.h):
+///   return gl::runRequest(this, inputVector, 1, outputVector,
+///                         [&](const gl::ParallelInputs& inputs) { ... });
+template <class Body>
+int runRequest(vtkAlgorithm* algorithm, vtkInformationVector** inputVector, int ports,
+               vtkInformationVector* outputVector, Body&& body) {
+  const ParallelInputs inputs(inputVector, ports, outputVector);
+  clearOutputs(outputVector);
+  if (!inputs.Computes()) {
+    return 1;  // another process has the data
+  }
+  return runRequest(algorithm, outputVector, [&] { body(inputs); });
+}
 
 /// True if `data` holds anything to compute on (points or cells of a vtkDataSet; for another
 /// data object, a non-zero number of elements).

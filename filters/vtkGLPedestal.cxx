@@ -61,12 +61,7 @@ int vtkGLPedestal::RequestInformation(vtkInformation*, vtkInformationVector**,
 int vtkGLPedestal::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole surface on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
-  gl::clearOutputs(outputVector);
-  if (!inputs.Computes()) {
-    return 1;
-  }
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 1, outputVector, [&](const gl::ParallelInputs& inputs) {
     vtkPolyData* input = inputs.Get<vtkPolyData>(0);
     vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
     const gl::PedestalOptions options = pedestalOptions(this, input);

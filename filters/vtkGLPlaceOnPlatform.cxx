@@ -61,12 +61,7 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
                                       vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole model on one process (vtkGLParallel.h), because the
   // placement depends on the bounds of all points.
-  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
-  gl::clearOutputs(outputVector);
-  if (!inputs.Computes()) {
-    return 1;  // another process has the model
-  }
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 1, outputVector, [&](const gl::ParallelInputs& inputs) {
     vtkPointSet* input = inputs.Get<vtkPointSet>(0);
     vtkPointSet* output = vtkPointSet::GetData(outputVector, 0);
     if (!input || !output) {

@@ -272,12 +272,7 @@ int vtkGLPrintSequencer::RequestInformation(vtkInformation* request, vtkInformat
 int vtkGLPrintSequencer::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                      vtkInformationVector* outputVector) {
   // Collective in an MPI run: the lattice and the skeleton on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 2, outputVector);
-  gl::clearOutputs(outputVector);
-  if (!inputs.Computes()) {
-    return 1;  // another process has the inputs
-  }
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 2, outputVector, [&](const gl::ParallelInputs& inputs) {
     vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
     vtkPolyData* skeleton = inputs.Get<vtkPolyData>(1);
     const gl::NozzleModel nozzle = gl::nozzleModel(this->Nozzle);

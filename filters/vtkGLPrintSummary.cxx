@@ -96,15 +96,10 @@ int vtkGLPrintSummary::RequestInformation(vtkInformation*, vtkInformationVector*
 int vtkGLPrintSummary::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                    vtkInformationVector* outputVector) {
   // Collective in an MPI run: the toolpath on one process (vtkGLParallel.h).
-  const int ports = this->GetNumberOfInputConnections(1) > 0 ? 2 : 1;
-  const gl::ParallelInputs inputs(inputVector, ports, outputVector);
-  gl::clearOutputs(outputVector);
-  if (!inputs.Computes()) {
-    return 1;
-  }
-  return gl::runRequest(this, outputVector, [&] {
+  const int n = this->GetNumberOfInputConnections(1) > 0 ? 2 : 1;  // the verifier is optional
+  return gl::runRequest(this, inputVector, n, outputVector, [&](const gl::ParallelInputs& inputs) {
     vtkPolyData* toolpath = inputs.Get<vtkPolyData>(0);
-    vtkPolyData* verifier = ports == 2 ? inputs.Get<vtkPolyData>(1) : nullptr;
+    vtkPolyData* verifier = n == 2 ? inputs.Get<vtkPolyData>(1) : nullptr;
     if (!toolpath || toolpath->GetNumberOfPoints() == 0) {
       throw gl::GeoLatticeError(
           "empty input: no toolpath to summarize (connect the output of GL Toolpath Planner)");

@@ -109,15 +109,10 @@ int vtkGLSkeletonTree::FillInputPortInformation(int port, vtkInformation* info) 
 int vtkGLSkeletonTree::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                    vtkInformationVector* outputVector) {
   // Collective in an MPI run: the lattice and the tet mesh on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 2, outputVector);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->Initialize();
-  if (!inputs.Computes()) {
-    return 1;  // another process has the inputs
-  }
-  vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
-  vtkUnstructuredGrid* grid = inputs.Get<vtkUnstructuredGrid>(1);
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 2, outputVector, [&](const gl::ParallelInputs& inputs) {
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
+    vtkUnstructuredGrid* grid = inputs.Get<vtkUnstructuredGrid>(1);
     const auto t0 = std::chrono::steady_clock::now();
     const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
     if (!grid) {

@@ -29,12 +29,7 @@ void vtkGLSurfaceCheck::PrintSelf(ostream& os, vtkIndent indent) {
 int vtkGLSurfaceCheck::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                    vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole surface on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
-  gl::clearOutputs(outputVector);
-  if (!inputs.Computes()) {
-    return 1;
-  }
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 1, outputVector, [&](const gl::ParallelInputs& inputs) {
     vtkPolyData* input = inputs.Get<vtkPolyData>(0);
     vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
     if (!input) {

@@ -96,14 +96,9 @@ int vtkGLTetrahedralizeSurface::RequestInformation(vtkInformation*, vtkInformati
 int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                             vtkInformationVector* outputVector) {
   // Collective in an MPI run: the whole surface on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
-  vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
-  output->Initialize();
-  if (!inputs.Computes()) {
-    return 1;  // another process has the surface
-  }
-  vtkPolyData* input = inputs.Get<vtkPolyData>(0);
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 1, outputVector, [&](const gl::ParallelInputs& inputs) {
+    vtkUnstructuredGrid* output = vtkUnstructuredGrid::GetData(outputVector, 0);
+    vtkPolyData* input = inputs.Get<vtkPolyData>(0);
     if (!input) {
       throw gl::GeoLatticeError("input must be a vtkPolyData surface");
     }

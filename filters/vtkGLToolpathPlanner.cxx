@@ -301,15 +301,10 @@ int vtkGLToolpathPlanner::RequestInformation(vtkInformation* request,
 int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                       vtkInformationVector* outputVector) {
   // Collective in an MPI run: the lattice and the skeleton on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 2, outputVector);
-  vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
-  output->Initialize();
-  if (!inputs.Computes()) {
-    return 1;  // another process has the inputs
-  }
-  vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
-  vtkPolyData* skeleton = inputs.Get<vtkPolyData>(1);
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 2, outputVector, [&](const gl::ParallelInputs& inputs) {
+    vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
+    vtkPolyData* lattice = inputs.Get<vtkPolyData>(0);
+    vtkPolyData* skeleton = inputs.Get<vtkPolyData>(1);
     const gl::LatticeGraph graph = gl::toLatticeGraph(lattice);
     if (graph.edgeKind.size() != graph.edges.size()) {
       throw gl::GeoLatticeError(std::string("the lattice has no ") + gl::arrays::EdgeKind +

@@ -99,13 +99,8 @@ int vtkGLToolpathReplay::RequestInformation(vtkInformation*, vtkInformationVecto
 int vtkGLToolpathReplay::RequestData(vtkInformation*, vtkInformationVector** inputVector,
                                      vtkInformationVector* outputVector) {
   // Collective in an MPI run: the toolpath on one process (vtkGLParallel.h).
-  const gl::ParallelInputs inputs(inputVector, 1, outputVector);
-  gl::clearOutputs(outputVector);
-  if (!inputs.Computes()) {
-    return 1;
-  }
-  vtkInformation* outInfo = outputVector->GetInformationObject(0);
-  return gl::runRequest(this, outputVector, [&] {
+  return gl::runRequest(this, inputVector, 1, outputVector, [&](const gl::ParallelInputs& inputs) {
+    vtkInformation* outInfo = outputVector->GetInformationObject(0);
     vtkPolyData* input = inputs.Get<vtkPolyData>(0);
     vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
     if (!input || input->GetNumberOfPoints() == 0 || input->GetNumberOfLines() == 0) {

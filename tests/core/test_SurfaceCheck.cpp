@@ -4,6 +4,7 @@
 #include "mesh/SurfaceCheck.h"
 
 #include "../common/ErrorOf.h"
+#include "../common/TestModels.h"
 
 #include <gtest/gtest.h>
 
@@ -35,16 +36,6 @@ TriangleSurface append(TriangleSurface a, const TriangleSurface& b, const Vec3& 
     a.triangles.push_back({id[t[0]], id[t[1]], id[t[2]]});
   }
   return a;
-}
-
-std::string testModel(const std::string& name) {
-  for (const std::string& dir :
-       {std::string(GEOLATTICE_TESTDATA), std::string("/work/shared/testdata")}) {
-    if (std::filesystem::exists(dir + "/" + name)) {
-      return dir + "/" + name;
-    }
-  }
-  return "";
 }
 
 }  // namespace

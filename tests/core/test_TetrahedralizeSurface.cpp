@@ -8,6 +8,7 @@
 #include "tetrahedralize/TetGenRunner.h"
 
 #include "../common/ErrorOf.h"
+#include "../common/TestModels.h"
 
 #include <gtest/gtest.h>
 
@@ -37,16 +38,6 @@ TriangleSurface append(TriangleSurface a, const TriangleSurface& b, const Eigen:
     a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   }
   return a;
-}
-
-std::string testModel(const std::string& name) {
-  for (const std::string& dir :
-       {std::string(GEOLATTICE_TESTDATA), std::string("/work/shared/testdata")}) {
-    if (std::filesystem::exists(dir + "/" + name)) {
-      return dir + "/" + name;
-    }
-  }
-  return "";
 }
 
 TetrahedralizeOptions edge(double length) {

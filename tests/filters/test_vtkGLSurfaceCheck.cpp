@@ -39,8 +39,8 @@ double field(vtkPolyData* data, const char* name) {
 }
 
 std::string verdict(vtkPolyData* data) {
-  auto* a = vtkStringArray::SafeDownCast(
-      data->GetFieldData()->GetAbstractArray(arrays::SurfaceVerdict));
+  auto* a =
+      vtkStringArray::SafeDownCast(data->GetFieldData()->GetAbstractArray(arrays::SurfaceVerdict));
   return a ? a->GetValue(0) : "";
 }
 }  // namespace

@@ -7,6 +7,8 @@
 #include "mesh/AnalyticShapes.h"
 #include "mesh/TetMesh.h"
 
+#include "../common/TestModels.h"
+
 #include <gtest/gtest.h>
 
 #include <vtkCallbackCommand.h>
@@ -47,16 +49,6 @@ vtkSmartPointer<vtkPolyData> toPolyData(const geolattice::TriangleSurface& s) {
   poly->SetPoints(points);
   poly->SetPolys(polys);
   return poly;
-}
-
-std::string testModel(const std::string& name) {
-  for (const std::string& dir :
-       {std::string(GEOLATTICE_TESTDATA), std::string("/work/shared/testdata")}) {
-    if (std::filesystem::exists(dir + "/" + name)) {
-      return dir + "/" + name;
-    }
-  }
-  return "";
 }
 
 double fieldValue(vtkDataObject* ds, const char* name) {
