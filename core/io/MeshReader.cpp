@@ -193,6 +193,23 @@ void checkNotEmpty(const std::string& path, size_t numPoints, size_t numCells,
   }
 }
 
+/// The next n lines as vertices 'x y z' (extra values ignored), as OFF and .tet files list them.
+std::vector<Vec3> readVertexLines(LineTokenizer& lines, int n) {
+  std::vector<Vec3> points(n);
+  std::vector<std::string_view> tok;
+  for (int i = 0; i < n; ++i) {
+    if (!lines.next(tok)) {
+      lines.failEof("vertex " + std::to_string(i) + " of " + std::to_string(n));
+    }
+    if (tok.size() < 3) {
+      lines.fail("vertex " + std::to_string(i) + ": expected 'x y z', got " +
+                 std::to_string(tok.size()) + " values");
+    }
+    points[i] = lines.point(tok, 0);
+  }
+  return points;
+}
+
 /// Before writing: a non-empty mesh whose cells index existing vertices, all finite.
 /// cellName: "triangle" / "tet" (singular, for the message).
 template <class Cells>
@@ -244,17 +261,7 @@ TriangleSurface readOff(const std::string& path) {
   checkNotEmpty(path, static_cast<size_t>(numPoints), static_cast<size_t>(numFaces), "faces");
 
   TriangleSurface surface;
-  surface.points.resize(numPoints);
-  for (int i = 0; i < numPoints; ++i) {
-    if (!lines.next(tok)) {
-      lines.failEof("vertex " + std::to_string(i) + " of " + std::to_string(numPoints));
-    }
-    if (tok.size() < 3) {
-      lines.fail("vertex " + std::to_string(i) + ": expected 'x y z', got " +
-                 std::to_string(tok.size()) + " values");
-    }
-    surface.points[i] = lines.point(tok, 0);
-  }
+  surface.points = readVertexLines(lines, numPoints);
   surface.triangles.reserve(numFaces);
   for (int f = 0; f < numFaces; ++f) {
     if (!lines.next(tok)) {
@@ -411,17 +418,7 @@ TetMesh readTetFile(const std::string& path) {
   checkNotEmpty(path, static_cast<size_t>(numPoints), static_cast<size_t>(numTets), "tets");
 
   TetMesh mesh;
-  mesh.points.resize(numPoints);
-  for (int i = 0; i < numPoints; ++i) {
-    if (!lines.next(tok)) {
-      lines.failEof("vertex " + std::to_string(i) + " of " + std::to_string(numPoints));
-    }
-    if (tok.size() < 3) {
-      lines.fail("vertex " + std::to_string(i) + ": expected 'x y z', got " +
-                 std::to_string(tok.size()) + " values");
-    }
-    mesh.points[i] = lines.point(tok, 0);
-  }
+  mesh.points = readVertexLines(lines, numPoints);
   mesh.tets.resize(numTets);
   for (int t = 0; t < numTets; ++t) {
     if (!lines.next(tok)) {

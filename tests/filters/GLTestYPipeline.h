@@ -17,9 +17,11 @@
 #include "vtkGLTetrahedralizeSurface.h"
 #include "vtkGLToolpathPlanner.h"
 
+#include <gtest/gtest.h>
 #include <vtkNew.h>
 
 #include <initializer_list>
+#include <memory>
 #include <string>
 
 struct GLTestYPipeline {
@@ -47,4 +49,19 @@ struct GLTestYPipeline {
       errors->Observe(a);
     }
   }
+};
+
+/// A test suite on one GLTestYPipeline built once for the suite and updated up to the stage
+/// `Suite::Stage(y)` names (CRTP: `class S : public GLTestYSuite<S>` with a static Stage()).
+template <class Suite>
+class GLTestYSuite : public ::testing::Test {
+protected:
+  using Pipeline = GLTestYPipeline;
+  static inline std::unique_ptr<Pipeline> p;
+
+  static void SetUpTestSuite() {
+    p = std::make_unique<Pipeline>();
+    Suite::Stage(*p)->Update();
+  }
+  static void TearDownTestSuite() { p.reset(); }
 };

@@ -556,18 +556,11 @@ TEST(vtkGLPrintSequencer, BadInputIsReported) {
 // End to end on the branching Y: reader -> place -> tets -> GDF -> slicer -> lattice -> skeleton
 // -> sequencer -> verifier. Built once for the suite.
 
-class BranchingYPipeline : public ::testing::Test {
+class BranchingYPipeline : public GLTestYSuite<BranchingYPipeline> {
+public:
+  static vtkAlgorithm* Stage(GLTestYPipeline& y) { return y.skeleton; }
+
 protected:
-  using Pipeline = GLTestYPipeline;
-
-  static std::unique_ptr<Pipeline> p;
-
-  static void SetUpTestSuite() {
-    p = std::make_unique<Pipeline>();
-    p->skeleton->Update();
-  }
-  static void TearDownTestSuite() { p.reset(); }
-
   /// A sequencer (and verifier on its lattice output) on the Y with the given settings.
   struct Run {
     vtkNew<vtkGLPrintSequencer> sequencer;
@@ -590,7 +583,6 @@ protected:
     return r;
   }
 };
-std::unique_ptr<BranchingYPipeline::Pipeline> BranchingYPipeline::p;
 
 TEST_F(BranchingYPipeline, SkeletonSplitsAtTheFork) {
   ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();

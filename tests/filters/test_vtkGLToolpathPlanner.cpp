@@ -705,19 +705,10 @@ TEST(vtkGLToolpathPlanner, BadInputIsReported) {
 // End to end on the branching Y: reader -> place -> tets -> GDF -> slicer -> lattice -> skeleton
 // -> sequencer -> toolpath -> verifier. Built once for the suite (coarse, like the sequencer test).
 
-class BranchingYToolpath : public ::testing::Test {
-protected:
-  using Pipeline = GLTestYPipeline;
-
-  static std::unique_ptr<Pipeline> p;
-
-  static void SetUpTestSuite() {
-    p = std::make_unique<Pipeline>();
-    p->planner->Update();
-  }
-  static void TearDownTestSuite() { p.reset(); }
+class BranchingYToolpath : public GLTestYSuite<BranchingYToolpath> {
+public:
+  static vtkAlgorithm* Stage(GLTestYPipeline& y) { return y.planner; }
 };
-std::unique_ptr<BranchingYToolpath::Pipeline> BranchingYToolpath::p;
 
 TEST_F(BranchingYToolpath, ToolpathIsConsistent) {
   ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();

@@ -111,19 +111,10 @@ TEST(vtkGLURScriptWriter, SmallToolpathInOneFile) {
 // The Y part: reader -> place -> tets -> GDF -> slicer -> lattice -> skeleton -> sequencer ->
 // planner -> URScript writer (coarse, like the toolpath filter test).
 
-class BranchingYProgram : public ::testing::Test {
-protected:
-  using Pipeline = GLTestYPipeline;
-
-  static std::unique_ptr<Pipeline> p;
-
-  static void SetUpTestSuite() {
-    p = std::make_unique<Pipeline>();
-    p->planner->Update();
-  }
-  static void TearDownTestSuite() { p.reset(); }
+class BranchingYProgram : public GLTestYSuite<BranchingYProgram> {
+public:
+  static vtkAlgorithm* Stage(GLTestYPipeline& y) { return y.planner; }
 };
-std::unique_ptr<BranchingYProgram::Pipeline> BranchingYProgram::p;
 
 TEST_F(BranchingYProgram, SplitProgramPassesTheSyntaxCheck) {
   ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
