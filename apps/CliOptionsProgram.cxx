@@ -100,6 +100,14 @@ void addProgramOptions(std::vector<CliOption>& t) {
        [](P& p, const RunOptions&) {
          return std::string(p.ScriptWriter->GetSearchCellLayout() ? "search" : "off");
        }});
+  t.push_back({"--no-reconfiguration", "", prog,
+               "do not change the robot's configuration at air moves (away from\n"
+               "the part) when one IK branch cannot follow the whole path",
+               "GLURScriptWriter.Reconfigure",
+               [](P& p, RunOptions&, const std::string&) { p.ScriptWriter->SetReconfigure(false); },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.ScriptWriter->GetReconfigure() ? "on" : "off");
+               }});
   t.push_back(
       {"--allow-unreachable", "", prog,
        "write the program even if points are unreachable (the robot\n"

@@ -344,6 +344,16 @@ void reportScript(GLPrintPipeline& p, Json& s) {
                  {"offset_added_mm", w->GetLayoutOffsetAdded()},
                  {"layouts_tried", w->GetLayoutsTried()},
                  {"part_on_flange_used", vec(w->GetUsedPartOnFlange(), 6)}};
+  Json reconfigurations = Json::array();
+  for (int k = 0; k < w->GetNumberOfReconfigurations(); ++k) {
+    reconfigurations.push_back({{"point", static_cast<long long>(w->GetReconfigurationPoint(k))},
+                                {"from_branch", w->GetReconfigurationFromBranch(k)},
+                                {"to_branch", w->GetReconfigurationToBranch(k)},
+                                {"retreat_mm", w->GetReconfigurationRetreat(k)},
+                                {"clearance_mm", w->GetReconfigurationClearance(k)}});
+  }
+  s["reconfigure"] = w->GetReconfigure() != 0;
+  s["reconfigurations"] = reconfigurations;
   s["max_joint_step_deg"] = w->GetMaxJointStepDeg();
   s["large_joint_steps"] = static_cast<long long>(w->GetLargeJointSteps());
   s["max_tip_error_m"] = w->GetMaxTipError();

@@ -71,6 +71,7 @@ vtkGLURScriptWriter::vtkGLURScriptWriter() {
   this->MaxJointStep = gl::RobotPathOptions{}.maxJointStepDeg;
   this->AllowUnreachable = false;
   this->SearchCellLayout = gl::CellLayoutOptions{}.search;
+  this->Reconfigure = gl::RobotPathOptions{}.reconfigure;
 }
 
 vtkGLURScriptWriter::~vtkGLURScriptWriter() {
@@ -102,6 +103,12 @@ std::string vtkGLURScriptWriter::GetFileWritten(int k) const {
   return k >= 0 && k < this->GetNumberOfFilesWritten() ? this->FilesWritten[k] : std::string();
 }
 
+const vtkGLURScriptWriter::ReconfigurationResult& vtkGLURScriptWriter::ReconfigurationAt(
+    int k) const {
+  static const ReconfigurationResult none;
+  return k >= 0 && k < this->GetNumberOfReconfigurations() ? this->Reconfigurations[k] : none;
+}
+
 vtkIdType vtkGLURScriptWriter::GetUnreachablePoint(vtkIdType i) const {
   return i >= 0 && i < this->GetUnreachableCount() ? this->Unreachable[i] : -1;
 }
@@ -109,6 +116,7 @@ vtkIdType vtkGLURScriptWriter::GetUnreachablePoint(vtkIdType i) const {
 void vtkGLURScriptWriter::ResetResults() {
   this->FilesWritten.clear();
   this->Unreachable.clear();
+  this->Reconfigurations.clear();
   this->NumberOfWaypoints = 0;
   this->NumberOfMoves = 0;
   this->MaxJointStepDeg = 0;
@@ -220,14 +228,15 @@ void vtkGLURScriptWriter::WriteData() {
         // Joints along the path (one core call: progress before and after it).
         gl::RobotPathOptions pathOptions;
         pathOptions.maxJointStepDeg = this->MaxJointStep;
+        pathOptions.reconfigure = this->Reconfigure != 0;
         // The cell as given, else the best mounting of the part on the flange that the robot
         // can follow (core/robot/CellLayout.h).
         gl::CellLayoutOptions layoutOptions;
         layoutOptions.search = this->SearchCellLayout != 0;
         gl::CellLayoutResult layout;
         try {
-          layout =
-              gl::solveWithCellLayout(cell, path.points, path.normals, pathOptions, layoutOptions);
+          layout = gl::solveWithCellLayout(cell, path.points, path.normals, pathOptions,
+                                           layoutOptions, path.kind);
         } catch (const gl::GeoLatticeError& e) {
           // No layout reaches the path continuously: every point counts as unreachable.
           this->Unreachable.resize(path.points.size());
@@ -255,6 +264,19 @@ void vtkGLURScriptWriter::WriteData() {
                << " deg about the flange z axis and " << 1000 * layout.offsetAdded
                << " mm further from the flange than asked (the path solver's choice: the cell as "
                   "given flips a joint or does not reach); mount it as set_tcp says";
+          options.headerComments.push_back(line.str());
+        }
+        for (const gl::Reconfiguration& r : robotPath.reconfigurations) {
+          this->Reconfigurations.push_back({r.point, r.fromBranch, r.toBranch,
+                                            kMillimetresPerMetre * r.retreat,
+                                            kMillimetresPerMetre * r.clearance});
+        }
+        if (!robotPath.reconfigurations.empty()) {
+          std::ostringstream line;
+          line << robotPath.reconfigurations.size()
+               << " reconfiguration(s) at air moves (one IK branch cannot follow the whole "
+                  "path): the part moves away from the nozzle, the arm turns in joint space, the "
+                  "part comes back; each is commented where it happens";
           options.headerComments.push_back(line.str());
         }
         gl::checkAbort(this, 0.5);
@@ -342,6 +364,7 @@ void vtkGLURScriptWriter::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "MaxJointStep: " << this->MaxJointStep << " deg\n";
   os << indent << "AllowUnreachable: " << this->AllowUnreachable << "\n";
   os << indent << "SearchCellLayout: " << (this->SearchCellLayout ? "on" : "off") << "\n";
+  os << indent << "Reconfigure: " << (this->Reconfigure ? "on" : "off") << "\n";
   os << indent << "FilesWritten: " << this->FilesWritten.size() << "\n";
   os << indent << "UnreachableCount: " << this->Unreachable.size() << "\n";
 }

@@ -156,6 +156,16 @@ public:
   vtkBooleanMacro(SearchCellLayout, vtkTypeBool);
   ///@}
 
+  ///@{
+  /// When one IK branch cannot follow the whole path, change the robot's configuration at air
+  /// moves: the part moves straight away from the nozzle, the arm turns in joint space, the part
+  /// comes back (core/robot/RobotPathSolver.h, step 4; tried in each layout before the next;
+  /// default on).
+  vtkSetMacro(Reconfigure, vtkTypeBool);
+  vtkGetMacro(Reconfigure, vtkTypeBool);
+  vtkBooleanMacro(Reconfigure, vtkTypeBool);
+  ///@}
+
   /// File name of program file k: FileName for k = 0, else STEM_k.EXT next to it.
   static std::string ProgramFileName(const std::string& fileName, int k);
   /// The def name used for FileName: its stem as a URScript identifier.
@@ -193,6 +203,17 @@ public:
   double GetDuration() const { return this->Duration; }
   vtkIdType GetMaxLineLength() const { return this->MaxLineLength; }
   int GetIKBranch() const { return this->IKBranch; }
+  /// The reconfigurations of the last Write() (Reconfigure), in path order: the toolpath point
+  /// (an air move) where each is made, the IK branches before and after, how far the part moves
+  /// away from the nozzle (mm) and the clearance of its bounding sphere during the joint move (mm).
+  int GetNumberOfReconfigurations() const {
+    return static_cast<int>(this->Reconfigurations.size());
+  }
+  vtkIdType GetReconfigurationPoint(int k) const { return this->ReconfigurationAt(k).Point; }
+  int GetReconfigurationFromBranch(int k) const { return this->ReconfigurationAt(k).FromBranch; }
+  int GetReconfigurationToBranch(int k) const { return this->ReconfigurationAt(k).ToBranch; }
+  double GetReconfigurationRetreat(int k) const { return this->ReconfigurationAt(k).Retreat; }
+  double GetReconfigurationClearance(int k) const { return this->ReconfigurationAt(k).Clearance; }
   double GetSolveSeconds() const { return this->SolveSeconds; }
   ///@}
 
@@ -215,12 +236,21 @@ protected:
   double MaxJointStep;
   vtkTypeBool AllowUnreachable;
   vtkTypeBool SearchCellLayout;
+  vtkTypeBool Reconfigure;
 
 private:
   vtkGLURScriptWriter(const vtkGLURScriptWriter&) = delete;
   void operator=(const vtkGLURScriptWriter&) = delete;
 
   void ResetResults();
+
+  struct ReconfigurationResult {
+    vtkIdType Point = -1;
+    int FromBranch = -1, ToBranch = -1;
+    double Retreat = 0, Clearance = 0;  // mm
+  };
+  const ReconfigurationResult& ReconfigurationAt(int k) const;
+  std::vector<ReconfigurationResult> Reconfigurations;
 
   std::vector<std::string> FilesWritten;
   std::vector<vtkIdType> Unreachable;

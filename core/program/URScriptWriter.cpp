@@ -16,6 +16,9 @@ std::string urNumber(double v) {
 
 namespace {
 
+constexpr double kReconfigurationSpeed = 0.5;         ///< rad/s of the leading joint (movej v)
+constexpr double kReconfigurationAcceleration = 1.0;  ///< rad/s² (movej a)
+
 std::string poseLiteral(const Isometry& t) {
   const UrPose p = toUrPose(t);
   std::string s = "p[";
@@ -61,18 +64,55 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
   for (size_t i = 1; i < N; ++i) {
     const double len = (pts[i] - pts[i - 1]).norm();
     double t = (*in.feedRate)[i] > 0 ? len / (*in.feedRate)[i] : 0.0;
+    const JointVector& before = jointsBefore(rp, i);
     for (int j = 0; j < 6; ++j) {
-      t = std::max(
-          t, std::abs(rp.joints[i][j] - rp.joints[i - 1][j]) / (o.speedFactor * robot.maxSpeed[j]));
+      t = std::max(t, std::abs(rp.joints[i][j] - before[j]) / (o.speedFactor * robot.maxSpeed[j]));
     }
     time[i] = std::max(t, 0.002);  // one controller cycle at least
     for (int j = 0; j < 6; ++j) {
-      stats.maxJointSpeedDegS =
-          std::max(stats.maxJointSpeedDegS,
-                   std::abs(rp.joints[i][j] - rp.joints[i - 1][j]) / time[i] * 180 / M_PI);
+      stats.maxJointSpeedDegS = std::max(
+          stats.maxJointSpeedDegS, std::abs(rp.joints[i][j] - before[j]) / time[i] * 180 / M_PI);
     }
     stats.duration += time[i];
   }
+  // A reconfiguration (RobotPathSolver.h, step 4): away from the part in a straight line, a
+  // joint move, the approach to the next point along its nozzle axis; no extrusion.
+  double slowest = robot.maxSpeed[0];
+  for (int j = 1; j < 6; ++j)
+    slowest = std::min(slowest, robot.maxSpeed[j]);
+  const double jointSpeed = std::min(kReconfigurationSpeed, o.speedFactor * slowest);
+  auto lineTime = [&](const JointVector& a, const JointVector& b, double length, double feed) {
+    double t = feed > 0 ? length / (feed * cell.partScale) : 0.0;
+    for (int j = 0; j < 6; ++j)
+      t = std::max(t, std::abs(b[j] - a[j]) / (o.speedFactor * robot.maxSpeed[j]));
+    return std::max(t, 0.002);
+  };
+  auto reconfiguration = [&](const Reconfiguration& r, std::ostream& out) {
+    const double feed = (*in.feedRate)[static_cast<size_t>(r.point)];
+    const double away = lineTime(r.arrive, r.retreatFrom, r.retreat, feed);
+    const double back = lineTime(r.retreatTo, r.leave, r.retreat, feed);
+    double largest = 0;
+    for (int j = 0; j < 6; ++j)
+      largest = std::max(largest, std::abs(r.retreatTo[j] - r.retreatFrom[j]));
+    out << "  # reconfiguration between toolpath points " << r.point << " and " << r.point + 1
+        << ": IK branch " << r.fromBranch << " -> " << r.toBranch << ", "
+        << urNumber(1000 * r.retreat) << " mm away from the nozzle, joint move clear of it by "
+        << urNumber(1000 * r.clearance) << " mm\n";
+    out << "  set_standard_analog_out(0, 0)\n";
+    out << "  movel(" << poseLiteral(forwardKinematics(robot, r.retreatFrom) * cell.partOnFlange)
+        << ", t=" << urNumber(away) << ", r=0)\n";
+    out << "  movej([";
+    for (int j = 0; j < 6; ++j)
+      out << urNumber(r.retreatTo[j]) << (j < 5 ? ", " : "]");
+    out << ", a=" << urNumber(kReconfigurationAcceleration) << ", v=" << urNumber(jointSpeed)
+        << ")\n";
+    out << "  movel(" << poseLiteral(forwardKinematics(robot, r.leave) * cell.partOnFlange)
+        << ", t=" << urNumber(back) << ", r=0)\n";
+    stats.moves += 3;
+    stats.duration +=
+        away + back + largest / jointSpeed + jointSpeed / kReconfigurationAcceleration;
+  };
+  auto nextReconfiguration = rp.reconfigurations.begin();
 
   // Moves as chunks that start at an air move (the only places a program may end), packed into
   // files below the size limit.
@@ -88,9 +128,18 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
       // A new program may start here: restate the joints and the analog output.
       chunk << "  movej([";
       for (int j = 0; j < 6; ++j)
-        chunk << urNumber(rp.joints[i - 1][j]) << (j < 5 ? ", " : "]");
+        chunk << urNumber(jointsBefore(rp, i)[j]) << (j < 5 ? ", " : "]");
       chunk << ", a=0.5, v=0.2)\n";
       previousRate = -1;
+    }
+    while (nextReconfiguration != rp.reconfigurations.end() &&
+           nextReconfiguration->point < static_cast<int>(i) - 1)
+      ++nextReconfiguration;
+    if (nextReconfiguration != rp.reconfigurations.end() &&
+        nextReconfiguration->point == static_cast<int>(i) - 1) {
+      reconfiguration(*nextReconfiguration, chunk);  // it ends at point i
+      previousRate = 0;
+      continue;
     }
     const double de = (*in.extrusion)[i] - (*in.extrusion)[i - 1];
     const double rate = air ? 0.0 : de / time[i];

@@ -17,6 +17,11 @@
 /// the program sets it to ΔE / t of that segment (0 on air moves; retraction and prime are
 /// separate moves of the extruder: set_standard_digital_out(0/1) pulses are not used). Numbers
 /// are printed with at most 6 decimals.
+/// Reconfigurations of the robot path (RobotPathSolver.h, step 4) are written where they happen:
+/// movel straight away from the nozzle, movej (a = 1 rad/s², v = min(0.5 rad/s, speedFactor ×
+/// the slowest joint's limit)) to the new configuration, movel to the next point, the extruder
+/// off, with a
+/// comment line naming the branches, the distance and the clearance.
 #include "robot/RobotPathSolver.h"
 
 #include <functional>

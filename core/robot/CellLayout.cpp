@@ -27,12 +27,13 @@ double badness(const RobotPath& p, size_t points) {
 CellLayoutResult solveWithCellLayout(const RobotCell& cell,
                                      const std::vector<Eigen::Vector3d>& points,
                                      const std::vector<Eigen::Vector3d>& normals,
-                                     const RobotPathOptions& o, const CellLayoutOptions& l) {
+                                     const RobotPathOptions& o, const CellLayoutOptions& l,
+                                     const std::vector<int>& kind) {
   CellLayoutResult result;
   result.cell = cell;
   std::string unreachableCell;  // the given cell reaches no part of the path continuously
   try {
-    result.path = solveRobotPath(cell, points, normals, o);
+    result.path = solveRobotPath(cell, points, normals, o, kind);
   } catch (const GeoLatticeError& e) {
     if (!l.search) {
       throw;
@@ -73,6 +74,7 @@ CellLayoutResult solveWithCellLayout(const RobotCell& cell,
     sn.push_back(normals[i]);
   }
   RobotPathOptions ranking = o;  // a coarser plan: it only ranks the layouts
+  ranking.reconfigure = false;   // the subsample has no air moves of its own
   ranking.coarseSamples = std::min(o.coarseSamples, 150);
   ranking.psiSamples = std::max(12, o.psiSamples / 2);
   ranking.refinements = 1;
@@ -95,7 +97,7 @@ CellLayoutResult solveWithCellLayout(const RobotCell& cell,
     ++result.fullSolves;
     RobotPath path;
     try {
-      path = solveRobotPath(c.cell, points, normals, o);
+      path = solveRobotPath(c.cell, points, normals, o, kind);
     } catch (const GeoLatticeError&) {
       continue;
     }

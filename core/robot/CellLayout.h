@@ -39,6 +39,8 @@ struct CellLayoutResult {
   int fullSolves = 1;      ///< whole-path solves
 };
 
+/// kind: per point 0 print, 1 perimeter, 2 air, for reconfigurations (RobotPathSolver.h, step
+/// 4), which are tried in a layout before the next layout is (the ranking plans without them).
 /// The joint path in the cell as given if it works, else in the best layout found (see the file
 /// comment); when none works, the given cell's path (its failure is then reported by the
 /// caller). Throws GeoLatticeError when no layout reaches the path at all ("unreachable cell
@@ -47,6 +49,7 @@ CellLayoutResult solveWithCellLayout(const RobotCell& cell,
                                      const std::vector<Eigen::Vector3d>& points,
                                      const std::vector<Eigen::Vector3d>& normals,
                                      const RobotPathOptions& pathOptions,
-                                     const CellLayoutOptions& layoutOptions = {});
+                                     const CellLayoutOptions& layoutOptions = {},
+                                     const std::vector<int>& kind = {});
 
 }  // namespace geolattice

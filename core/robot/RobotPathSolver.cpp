@@ -1,18 +1,29 @@
 #include "robot/RobotPathSolver.h"
 
 #include "common/Error.h"
+#include "common/ParallelFor.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <unordered_map>
 
 namespace geolattice {
 
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr int kReconfigurationRounds = 12;  ///< step 4: plans made before giving up
+constexpr double kOverBoundCost = 1000;     ///< step 4: cost per rad of a step over the bound
+
+/// x − 2πk nearest to 0 (the value of std::remainder(x, 2π) away from the ties at ±π, several
+/// times faster; the dynamic programming calls it for every joint of every transition).
+inline double wrapToPi(double x) {
+  return x - std::floor((x + M_PI) / (2 * M_PI)) * (2 * M_PI);
+}
 
 bool withinLimits(const RobotModel& r, const JointVector& q) {
   for (int i = 0; i < 6; ++i) {
@@ -25,7 +36,7 @@ bool withinLimits(const RobotModel& r, const JointVector& q) {
 /// q (each joint in (-π, π]) shifted by multiples of 2π to be nearest to `near`, inside limits.
 JointVector unwrapNear(const RobotModel& r, JointVector q, const JointVector& near) {
   for (int i = 0; i < 6; ++i) {
-    double v = near[i] + std::remainder(q[i] - near[i], 2 * M_PI);
+    double v = near[i] + wrapToPi(q[i] - near[i]);
     if (v > r.upperLimit[i])
       v -= 2 * M_PI;
     if (v < r.lowerLimit[i])
@@ -46,123 +57,236 @@ double singularityPenalty(const RobotModel& r, const JointVector& q, const Isome
   return p;
 }
 
-/// The coarse plan: one IK branch and a ψ grid index per coarse sample.
-struct CoarsePlan {
-  int branch = -1;
-  std::vector<int> psi;
+/// IK of the ψ grid of one branch at one toolpath point: joints, whether the branch reaches
+/// it, and the singularity penalty (∞ where it does not).
+struct BranchStates {
+  std::vector<JointVector> q;
+  std::vector<char> ok;
+  std::vector<double> penalty;
 };
 
-/// Dynamic programming over the ψ grid at the coarse samples, for every branch that reaches a
-/// subsample of them; the cheapest branch wins (module comment). branch -1: none reaches.
+/// BranchStates solved once per (point, branch) and kept for the later plans of the same path
+/// (refinement passes, step 4's rounds); missing ones are solved in parallel.
+class StateCache {
+public:
+  StateCache(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+             const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o, int threads)
+      : cell_(cell), points_(points), normals_(normals), o_(o), threads_(threads) {}
+
+  /// Solves every (coarse point, branch) not solved yet.
+  void prepare(const std::vector<size_t>& coarse, const std::vector<int>& branches) {
+    std::vector<BranchStates*> todo;
+    std::vector<std::pair<size_t, int>> keys;
+    for (size_t point : coarse) {
+      for (int branch : branches) {
+        auto [it, added] = states_.try_emplace(point * 8 + static_cast<size_t>(branch));
+        if (added) {
+          todo.push_back(&it->second);
+          keys.emplace_back(point, branch);
+        }
+      }
+    }
+    const int P = o_.psiSamples;
+    const double dpsi = 2 * M_PI / P;
+    parallelFor(todo.size(), threads_, [&](size_t i, int) {
+      const auto [point, branch] = keys[i];
+      BranchStates& st = *todo[i];
+      st.q.resize(P);
+      st.ok.resize(P);
+      st.penalty.resize(P);
+      for (int k = 0; k < P; ++k) {
+        const Isometry f = cell_.flangePose(points_[point], normals_[point], k * dpsi);
+        st.ok[k] = inverseKinematicsBranch(cell_.robot, f, branch, st.q[k]);
+        st.penalty[k] =
+            st.ok[k] ? singularityPenalty(cell_.robot, st.q[k], f, o_.singularityMargin) : kInf;
+      }
+    });
+  }
+  const BranchStates& at(size_t point, int branch) const {
+    return states_.at(point * 8 + static_cast<size_t>(branch));
+  }
+
+private:
+  const RobotCell& cell_;
+  const std::vector<Eigen::Vector3d>& points_;
+  const std::vector<Eigen::Vector3d>& normals_;
+  const RobotPathOptions& o_;
+  int threads_;
+  std::unordered_map<size_t, BranchStates> states_;
+};
+
+/// The coarse plan: an IK branch and a ψ grid index per coarse sample, and where the plan
+/// changes configuration (step 4 only).
+struct CoarsePlan {
+  std::vector<int> branch;        ///< per coarse sample; empty: no plan reaches the path
+  std::vector<int> psi;           ///< per coarse sample
+  std::vector<char> reconfigure;  ///< per coarse sample s: s - 1 -> s is a reconfiguration
+};
+
+/// The joints reached from `from` towards the IK solution q without folding turns (module
+/// comment, step 1), the largest step, and whether they stay inside the limits.
+bool reachFrom(const RobotModel& robot, const JointVector& from, const JointVector& q,
+               JointVector& reached, double& step) {
+  step = 0;
+  for (int a = 0; a < 6; ++a) {
+    const double d = wrapToPi(q[a] - from[a]);
+    reached[a] = from[a] + d;
+    step = std::max(step, std::abs(d));
+    if (reached[a] < robot.lowerLimit[a] || reached[a] > robot.upperLimit[a])
+      return false;
+  }
+  return true;
+}
+
+/// Dynamic programming over the (branch, ψ) states of the coarse samples (module comment).
+/// Without `mayChange` (steps 1–3) the branches that reach a subsample of the path are planned
+/// each on its own and the cheapest wins; with it (step 4) all eight are planned together and
+/// at a coarse sample s with mayChange[s] the state may change from the cheapest state at s - 1
+/// at the cost of a reconfiguration (a joint move from the old state at s - 1 to the new one
+/// at s, whose joints are taken in (-π, π]: the move also unwinds joints turned towards their
+/// limits); blocked[s] (a bit per branch) forbids staying in a branch from s - 1 to s (the
+/// fine pass found it flipping there). Memory: the back pointers of every state; the joints of
+/// two samples.
 CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                       const std::vector<Eigen::Vector3d>& normals,
-                      const std::vector<size_t>& coarse, const RobotPathOptions& o) {
+                      const std::vector<size_t>& coarse, const RobotPathOptions& o,
+                      StateCache& cache, const std::vector<char>& mayChange = {},
+                      const std::vector<unsigned>& blocked = {}) {
   const RobotModel& robot = cell.robot;
+  const bool step4 = !mayChange.empty();
   const int P = o.psiSamples;
   const double dpsi = 2 * M_PI / P;
   const size_t S = coarse.size();
-  // Flange poses of the coarse samples on the ψ grid (shared by the branches).
-  std::vector<Isometry> flange(S * P);
-  for (size_t s = 0; s < S; ++s) {
-    for (int k = 0; k < P; ++k) {
-      flange[s * P + k] = cell.flangePose(points[coarse[s]], normals[coarse[s]], k * dpsi);
-    }
-  }
+  std::vector<Isometry> flange(P);
+  auto flangesAt = [&](size_t s) {
+    for (int k = 0; k < P; ++k)
+      flange[k] = cell.flangePose(points[coarse[s]], normals[coarse[s]], k * dpsi);
+  };
   // Branches that reach a subsample of the coarse path at some ψ everywhere are candidates.
   std::vector<int> branches;
-  for (int branch = 0; branch < 8; ++branch) {
-    bool reaches = true;
-    for (size_t s = 0; s < S && reaches; s += std::max<size_t>(1, S / 50)) {
-      bool any = false;
-      for (int k = 0; k < P && !any; k += 3) {
-        JointVector qq;
-        any = inverseKinematicsBranch(robot, flange[s * P + k], branch, qq) &&
-              withinLimits(robot, qq);
+  if (step4) {
+    branches = {0, 1, 2, 3, 4, 5, 6, 7};
+  } else {
+    std::vector<char> reaches(8, 1);
+    for (size_t s = 0; s < S; s += std::max<size_t>(1, S / 50)) {
+      flangesAt(s);
+      for (int branch = 0; branch < 8; ++branch) {
+        bool any = false;
+        for (int k = 0; k < P && !any && reaches[branch]; k += 3) {
+          JointVector qq;
+          any = inverseKinematicsBranch(robot, flange[k], branch, qq) && withinLimits(robot, qq);
+        }
+        reaches[branch] = reaches[branch] && any;
       }
-      reaches = any;
     }
-    if (reaches)
-      branches.push_back(branch);
+    for (int branch = 0; branch < 8; ++branch)
+      if (reaches[branch])
+        branches.push_back(branch);
   }
+  const size_t B = branches.size(), W = B * static_cast<size_t>(P);
   CoarsePlan best;
-  double bestCost = kInf;
-  std::vector<JointVector> q(S * P);
-  std::vector<char> ok(S * P);
-  std::vector<double> cost(S * P), penalty(S * P);
-  std::vector<int> from(S * P);
-  std::vector<JointVector> wound(S * P);
-  for (int branch : branches) {
-    for (size_t s = 0; s < S; ++s) {
-      for (int k = 0; k < P; ++k) {
-        const size_t id = s * P + k;
-        ok[id] = inverseKinematicsBranch(robot, flange[id], branch, q[id]);
-        penalty[id] =
-            ok[id] ? singularityPenalty(robot, q[id], flange[id], o.singularityMargin) : kInf;
-      }
+  if (B == 0)
+    return best;
+  cache.prepare(coarse, branches);
+  std::vector<JointVector> q(W), wound(W), woundBefore(W);
+  std::vector<char> ok(W);
+  std::vector<double> cost(W), costBefore(W), penalty(W);
+  std::vector<int> from(S * W, -1);
+  std::vector<char> changed(step4 ? S * W : 0, 0);
+  auto solveSample = [&](size_t s) {
+    for (size_t b = 0; b < B; ++b) {
+      const BranchStates& st = cache.at(coarse[s], branches[b]);
+      std::copy(st.q.begin(), st.q.end(), q.begin() + b * P);
+      std::copy(st.ok.begin(), st.ok.end(), ok.begin() + b * P);
+      std::copy(st.penalty.begin(), st.penalty.end(), penalty.begin() + b * P);
     }
-    for (int k = 0; k < P; ++k) {
-      cost[k] = penalty[k];
-      from[k] = -1;
-      wound[k] = q[k];
+  };
+  solveSample(0);
+  cost = penalty;
+  wound = q;
+  for (size_t s = 1; s < S; ++s) {
+    std::swap(cost, costBefore);
+    std::swap(wound, woundBefore);
+    // A reconfiguration into sample s leaves from the cheapest state at s - 1.
+    size_t cheapest = W;
+    if (step4 && mayChange[s]) {
+      for (size_t id = 0; id < W; ++id)
+        if (std::isfinite(costBefore[id]) &&
+            (cheapest == W || costBefore[id] < costBefore[cheapest]))
+          cheapest = id;
     }
-    for (size_t s = 1; s < S; ++s) {
+    solveSample(s);
+    // Step 4: a step that no fine path between the samples can make within the bound costs
+    // more than a reconfiguration (steps 1–3: the step itself).
+    const double stepBound =
+        step4 ? static_cast<double>(coarse[s] - coarse[s - 1]) * o.maxJointStepDeg * M_PI / 180.0
+              : kInf;
+    auto stepCost = [&](double step) {
+      return step > stepBound ? step + kOverBoundCost * (step - stepBound) : step;
+    };
+    for (size_t b = 0; b < B; ++b) {
       for (int k = 0; k < P; ++k) {
-        const size_t id = s * P + k;
+        const size_t id = b * P + k;
         cost[id] = kInf;
-        from[id] = -1;
         if (!ok[id])
           continue;
-        for (int dk = -o.maxPsiStep; dk <= o.maxPsiStep; ++dk) {
-          const int j = ((k + dk) % P + P) % P;
-          const size_t pid = (s - 1) * P + j;
-          if (!std::isfinite(cost[pid]))
+        const bool stay = blocked.empty() || !(blocked[s] & (1u << branches[b]));
+        for (int dk = -o.maxPsiStep; dk <= o.maxPsiStep && stay; ++dk) {
+          const size_t pid = b * P + ((k + dk) % P + P) % P;
+          if (!std::isfinite(costBefore[pid]))
             continue;
           // The joints as the robot reaches them along this path (turns add up, no ±2π
           // folding): a path that would wind a joint past its limit is infeasible, since the
           // fine pass could only get back by a full turn between two points.
           JointVector reached;
           double step = 0;
-          bool inside = true;
-          for (int a = 0; a < 6; ++a) {
-            const double d = std::remainder(q[id][a] - wound[pid][a], 2 * M_PI);
-            reached[a] = wound[pid][a] + d;
-            step = std::max(step, std::abs(d));
-            inside =
-                inside && reached[a] >= robot.lowerLimit[a] && reached[a] <= robot.upperLimit[a];
-          }
-          if (!inside)
+          if (!reachFrom(robot, woundBefore[pid], q[id], reached, step))
             continue;
-          const double c = cost[pid] + step + penalty[id];
+          const double c = costBefore[pid] + stepCost(step) + penalty[id];
           if (c < cost[id]) {
             cost[id] = c;
-            from[id] = j;
+            from[s * W + id] = static_cast<int>(pid);
             wound[id] = reached;
+          }
+        }
+        if (cheapest < W && withinLimits(robot, q[id])) {
+          const double c = costBefore[cheapest] + o.reconfigurationCost + penalty[id];
+          if (c < cost[id]) {
+            cost[id] = c;
+            from[s * W + id] = static_cast<int>(cheapest);
+            changed[s * W + id] = 1;
+            wound[id] = q[id];
           }
         }
       }
     }
-    int end = -1;
-    for (int k = 0; k < P; ++k) {
-      if (std::isfinite(cost[(S - 1) * P + k]) &&
-          (end < 0 || cost[(S - 1) * P + k] < cost[(S - 1) * P + end]))
-        end = k;
-    }
-    if (end >= 0 && cost[(S - 1) * P + end] < bestCost) {
-      bestCost = cost[(S - 1) * P + end];
-      best.branch = branch;
-      best.psi.assign(S, 0);
-      int k = end;
-      for (size_t s = S; s-- > 0;) {
-        best.psi[s] = k;
-        k = from[s * P + k];
-      }
-    }
+  }
+  // The cheapest end (the first branch, then the first ψ, of equal costs).
+  size_t end = W;
+  for (size_t id = 0; id < W; ++id)
+    if (std::isfinite(cost[id]) && (end == W || cost[id] < cost[end]))
+      end = id;
+  if (end == W)
+    return best;
+  best.branch.assign(S, 0);
+  best.psi.assign(S, 0);
+  best.reconfigure.assign(S, 0);
+  size_t id = end;
+  for (size_t s = S; s-- > 0;) {
+    best.branch[s] = branches[id / P];
+    best.psi[s] = static_cast<int>(id % P);
+    if (step4)
+      best.reconfigure[s] = changed[s * W + id];
+    if (s > 0)
+      id = static_cast<size_t>(from[s * W + id]);
   }
   return best;
 }
 
 /// Joints at every point: ψ interpolated between the coarse samples, IK of the plan's branch,
-/// unwrapped next to the previous joints; FK check and singularity distances.
+/// unwrapped next to the previous joints; FK check and singularity distances. At a change of
+/// configuration (step 4) the path continues in the new branch and the change is recorded (its
+/// move is planned by the caller).
 RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                     const std::vector<Eigen::Vector3d>& normals, const std::vector<size_t>& coarse,
                     const CoarsePlan& plan, const RobotPathOptions& o) {
@@ -170,13 +294,14 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
   const size_t N = points.size(), S = coarse.size();
   const double dpsi = 2 * M_PI / o.psiSamples;
   RobotPath path;
-  path.branch = plan.branch;
+  path.branch = plan.branch[0];
   path.joints.resize(N);
   path.psi.resize(N);
   path.minSingularity = {kInf, kInf, kInf};
   JointVector previous{};
   bool havePrevious = false;
-  size_t seg = 0;
+  int branch = plan.branch[0];
+  size_t seg = 0, nextChange = 1;
   for (size_t i = 0; i < N; ++i) {
     while (seg + 1 < S - 1 && coarse[seg + 1] <= i)
       ++seg;
@@ -185,15 +310,24 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
     pb = pa + std::remainder(pb - pa, 2 * M_PI);
     const double t = b > a ? static_cast<double>(i - a) / static_cast<double>(b - a) : 0.0;
     double psi = (1 - t) * pa + t * pb;
+    while (nextChange < S && coarse[nextChange] < i)
+      ++nextChange;
+    // A change of configuration from point i - 1 to point i (a joint move, planned by the
+    // caller): the new branch's joints at i in (-π, π], as planned, with no step counted.
+    const bool change =
+        nextChange < S && coarse[nextChange] == i && plan.reconfigure[nextChange] && i > 0;
+    if (change) {
+      branch = plan.branch[nextChange];
+      havePrevious = false;
+    }
     JointVector qi;
     Isometry f = cell.flangePose(points[i], normals[i], psi);
-    bool found =
-        inverseKinematicsBranch(robot, f, plan.branch, qi, havePrevious ? previous[5] : 0.0);
+    bool found = inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0);
     for (int retry = 1; !found && retry <= 3; ++retry) {
       for (double sign : {1.0, -1.0}) {
         const double p2 = psi + sign * retry * dpsi;
         f = cell.flangePose(points[i], normals[i], p2);
-        if (inverseKinematicsBranch(robot, f, plan.branch, qi, havePrevious ? previous[5] : 0.0)) {
+        if (inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0)) {
           found = true;
           psi = p2;
           break;
@@ -231,6 +365,17 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
         path.largeSteps.push_back(static_cast<int>(i));
       }
     }
+    if (change) {
+      Reconfiguration r;
+      r.point = static_cast<int>(i - 1);
+      r.fromBranch =
+          path.reconfigurations.empty() ? path.branch : path.reconfigurations.back().toBranch;
+      r.toBranch = branch;
+      r.arrive = path.joints[i - 1];
+      r.leave = qi;
+      path.reconfigurations.push_back(r);
+      havePrevious = true;
+    }
     path.joints[i] = qi;
     path.psi[i] = psi;
     previous = qi;
@@ -239,43 +384,33 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
   return path;
 }
 
-}  // namespace
-
-RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
-                         const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o) {
-  const auto t0 = std::chrono::steady_clock::now();
-  cell.validate();
+/// Steps 1–3 (step 4 with changePoint, the points where a change may be made, and flips, the
+/// (point, branch) pairs where the fine pass stepped too far in that branch; see planCoarse): plan, fine pass, and refinement around
+/// large steps. Throws "unreachable cell set-up" when no plan reaches the coarse path.
+RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+                        const std::vector<Eigen::Vector3d>& normals, std::vector<size_t>& coarse,
+                        const RobotPathOptions& o, StateCache& cache,
+                        const std::vector<char>& changePoint = {},
+                        const std::vector<std::pair<int, int>>& flips = {}) {
   const size_t N = points.size();
-  if (N == 0) {
-    throw GeoLatticeError("robot path: the toolpath is empty");
-  }
-  if (normals.size() != N) {
-    throw GeoLatticeError("robot path: one normal per toolpath point is needed");
-  }
-  for (size_t i = 0; i < N; ++i) {
-    if (!points[i].allFinite() || !normals[i].allFinite() || !(normals[i].norm() > 0)) {
-      std::ostringstream s;
-      s << "robot path: toolpath point " << i << " has a NaN position or a NaN/zero normal";
-      throw GeoLatticeError(s.str());
-    }
-  }
-  if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2 || !(o.maxJointStepDeg > 0) ||
-      o.refinements < 0) {
-    throw GeoLatticeError(
-        "robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2, "
-        "max joint step > 0, refinements >= 0)");
-  }
   const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
-  std::vector<size_t> coarse;
-  for (size_t i = 0; i < N; i += stride)
-    coarse.push_back(i);
-  if (coarse.back() != N - 1)
-    coarse.push_back(N - 1);
-
   RobotPath path;
   for (int pass = 0;; ++pass) {
-    const CoarsePlan plan = planCoarse(cell, points, normals, coarse, o);
-    if (plan.branch < 0) {
+    std::vector<char> mayChange;
+    std::vector<unsigned> blocked;
+    if (!changePoint.empty()) {
+      mayChange.assign(coarse.size(), 0);
+      for (size_t s = 1; s < coarse.size(); ++s)
+        mayChange[s] = coarse[s] == coarse[s - 1] + 1 && changePoint[coarse[s - 1]];
+      blocked.assign(coarse.size(), 0);
+      for (const auto& [point, branch] : flips) {
+        const auto s = std::lower_bound(coarse.begin(), coarse.end(), static_cast<size_t>(point));
+        if (s != coarse.begin() && s != coarse.end())
+          blocked[static_cast<size_t>(s - coarse.begin())] |= 1u << branch;
+      }
+    }
+    const CoarsePlan plan = planCoarse(cell, points, normals, coarse, o, cache, mayChange, blocked);
+    if (plan.branch.empty()) {
       throw GeoLatticeError(
           "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously "
           "(check the nozzle "
@@ -283,6 +418,7 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
     }
     path = solveFine(cell, points, normals, coarse, plan, o);
     path.refinements = pass;
+    path.coarseSamples = static_cast<int>(coarse.size());
     if (path.largeSteps.empty() || pass == o.refinements) {
       break;
     }
@@ -304,9 +440,250 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
     std::sort(coarse.begin(), coarse.end());
     coarse.erase(std::unique(coarse.begin(), coarse.end()), coarse.end());
   }
-  path.coarseSamples = static_cast<int>(coarse.size());
+  return path;
+}
+
+bool works(const RobotPath& p) {
+  return p.unreachable.empty() && p.largeSteps.empty();
+}
+
+/// The part's bounding sphere in the base frame when the robot is at q: centre (m) of the
+/// toolpath's bounding box, the radius given.
+Eigen::Vector3d sphereCentre(const RobotCell& cell, const Eigen::Vector3d& centre,
+                             const JointVector& q) {
+  return (forwardKinematics(cell.robot, q) * cell.partOnFlange) * (cell.partScale * centre);
+}
+
+/// Clearance (m) of a sphere at c of radius r from the nozzle segment (tip to tip + L axis) and
+/// from the floor the robot stands on (base z = 0); negative: they overlap.
+double sphereClearance(const RobotCell& cell, const Eigen::Vector3d& c, double r, double L) {
+  const double t = std::clamp((c - cell.nozzleTip).dot(cell.nozzleAxis), 0.0, L);
+  const double nozzle = (c - (cell.nozzleTip + t * cell.nozzleAxis)).norm() - r;
+  return std::min(nozzle, c.z() - r);
+}
+
+/// The straight move of the part away from the nozzle by d along the nozzle axis, solved point
+/// by point every 5 mm in `branch`; false when a point is out of reach, out of the limits or
+/// a joint steps by more than the bound.
+bool retreatLine(const RobotCell& cell, const JointVector& q0, int branch, double d,
+                 const RobotPathOptions& o, JointVector& qEnd) {
+  const RobotModel& robot = cell.robot;
+  const Isometry f0 = forwardKinematics(robot, q0);
+  const int steps = std::max(1, static_cast<int>(std::ceil(d / 0.005)));
+  JointVector previous = q0;
+  for (int j = 1; j <= steps; ++j) {
+    const Isometry f = Eigen::Translation3d(-cell.nozzleAxis * (d * j / steps)) * f0;
+    JointVector q;
+    if (!inverseKinematicsBranch(robot, f, branch, q, previous[5]))
+      return false;
+    q = unwrapNear(robot, q, previous);
+    double step = 0;
+    for (int a = 0; a < 6; ++a)
+      step = std::max(step, std::abs(q[a] - previous[a]));
+    if (!withinLimits(robot, q) || step * 180.0 / M_PI > o.maxJointStepDeg)
+      return false;
+    previous = q;
+  }
+  qEnd = previous;
+  return true;
+}
+
+/// The move of a reconfiguration (module comment, step 4): retreat, joint move, approach.
+/// Fills r's retreat joints, distance and clearance; false when no retreat up to maxRetreat
+/// gives a joint move that keeps the part's bounding sphere (centre in part units, radius in
+/// m) reconfigurationMargin clear of the nozzle and the floor.
+bool planReconfigurationMove(const RobotCell& cell, const Eigen::Vector3d& centre, double radius,
+                             const RobotPathOptions& o, Reconfiguration& r) {
+  const double margin = o.reconfigurationMargin;
+  auto depth = [&](const JointVector& q) {
+    // How far the sphere must move along -axis to be the margin (and 1 mm) behind the tip plane.
+    return std::max(0.0, (sphereCentre(cell, centre, q) - cell.nozzleTip).dot(cell.nozzleAxis) +
+                             radius + margin + 0.001);
+  };
+  const double dA = depth(r.arrive), dB = depth(r.leave);
+  for (double extra = 0.0; std::max(dA, dB) + extra <= o.maxRetreat; extra += 0.05) {
+    if (!retreatLine(cell, r.arrive, r.fromBranch, dA + extra, o, r.retreatFrom) ||
+        !retreatLine(cell, r.leave, r.toBranch, dB + extra, o, r.retreatTo))
+      return false;  // farther away is out of reach too
+    double largest = 0;
+    for (int a = 0; a < 6; ++a)
+      largest = std::max(largest, std::abs(r.retreatTo[a] - r.retreatFrom[a]));
+    const int samples = std::max(2, static_cast<int>(std::ceil(largest * 180.0 / M_PI)));
+    double clearance = kInf;
+    for (int j = 0; j <= samples && clearance >= margin; ++j) {
+      const double t = static_cast<double>(j) / samples;
+      JointVector q;
+      for (int a = 0; a < 6; ++a)
+        q[a] = (1 - t) * r.retreatFrom[a] + t * r.retreatTo[a];
+      clearance = std::min(
+          clearance, sphereClearance(cell, sphereCentre(cell, centre, q), radius, o.nozzleLength));
+    }
+    if (clearance >= margin) {
+      r.retreat = std::max(dA, dB) + extra;
+      r.clearance = clearance;
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Step 4 (module comment): true and the path with its reconfigurations at air moves in
+/// `result`, or false when no path without unreachable points and large steps is found so.
+bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+                       const std::vector<Eigen::Vector3d>& normals, const std::vector<int>& kind,
+                       const std::vector<size_t>& coarse, const RobotPathOptions& o,
+                       RobotPath& result) {
+  const size_t N = points.size();
+  // Where a change may be made: the highest point of every air move (with a next air point),
+  // and any air point where a plan steps too far (added below).
+  std::vector<char> changePoint(N, 0);
+  for (size_t a = 0; a < N;) {
+    if (kind[a] != 2) {
+      ++a;
+      continue;
+    }
+    size_t b = a;
+    while (b + 1 < N && kind[b + 1] == 2)
+      ++b;
+    if (b > a) {
+      size_t top = a;
+      for (size_t i = a; i < b; ++i)
+        if (points[i].z() > points[top].z())
+          top = i;
+      changePoint[top] = 1;
+    }
+    a = b + 1;
+  }
+  // The part's bounding sphere (every toolpath point, air moves included), plus the margin.
+  Eigen::AlignedBox3d box;
+  for (const auto& p : points)
+    box.extend(p);
+  const Eigen::Vector3d centre = box.center();
+  const double radius = cell.partScale * 0.5 * box.diagonal().norm();
+  StateCache cache(cell, points, normals, o, 0);  // all rounds; every core
+  std::vector<std::pair<int, int>> flips;
+  std::vector<char> excluded(N, 0);  // a change there could not be made
+  // The coarse samples with both points of every change; kept (densified) across the rounds.
+  std::vector<size_t> withChanges = coarse;
+  for (size_t i = 0; i + 1 < N; ++i) {
+    if (changePoint[i]) {
+      withChanges.push_back(i);
+      withChanges.push_back(i + 1);
+    }
+  }
+  std::sort(withChanges.begin(), withChanges.end());
+  withChanges.erase(std::unique(withChanges.begin(), withChanges.end()), withChanges.end());
+  for (int round = 0; round < kReconfigurationRounds; ++round) {
+    RobotPath path;
+    try {
+      path = planAndRefine(cell, points, normals, withChanges, o, cache, changePoint, flips);
+    } catch (const GeoLatticeError&) {
+      return false;
+    }
+    if (!path.unreachable.empty())
+      return false;
+    // A step too large inside an air move becomes a place for a change; inside a stretch,
+    // the branch may not be kept there. Plan again.
+    bool newChange = false;
+    for (int i : path.largeSteps) {
+      const size_t at = static_cast<size_t>(i - 1);
+      if (kind[at] == 2 && kind[at + 1] == 2 && !excluded[at]) {
+        newChange = newChange || !changePoint[at];
+        changePoint[at] = 1;
+        withChanges.push_back(at);
+        withChanges.push_back(at + 1);
+        continue;
+      }
+      int branch = path.branch;
+      for (const Reconfiguration& r : path.reconfigurations)
+        if (r.point < i)
+          branch = r.toBranch;
+      flips.emplace_back(i, branch);
+    }
+    if (newChange) {
+      std::sort(withChanges.begin(), withChanges.end());
+      withChanges.erase(std::unique(withChanges.begin(), withChanges.end()), withChanges.end());
+    }
+    bool allMade = path.largeSteps.empty();
+    for (Reconfiguration& r : path.reconfigurations) {
+      if (!planReconfigurationMove(cell, centre, radius, o, r)) {
+        changePoint[static_cast<size_t>(r.point)] = 0;  // excluded; plan again
+        excluded[static_cast<size_t>(r.point)] = 1;
+        allMade = false;
+      }
+    }
+    if (allMade) {
+      result = std::move(path);
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+                         const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o,
+                         const std::vector<int>& kind) {
+  const auto t0 = std::chrono::steady_clock::now();
+  cell.validate();
+  const size_t N = points.size();
+  if (N == 0) {
+    throw GeoLatticeError("robot path: the toolpath is empty");
+  }
+  if (normals.size() != N || (!kind.empty() && kind.size() != N)) {
+    throw GeoLatticeError(
+        "robot path: one normal (and one kind, if given) per toolpath point is needed");
+  }
+  for (size_t i = 0; i < N; ++i) {
+    if (!points[i].allFinite() || !normals[i].allFinite() || !(normals[i].norm() > 0)) {
+      std::ostringstream s;
+      s << "robot path: toolpath point " << i << " has a NaN position or a NaN/zero normal";
+      throw GeoLatticeError(s.str());
+    }
+  }
+  if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2 || !(o.maxJointStepDeg > 0) ||
+      o.refinements < 0 || !(o.reconfigurationCost >= 0) || !(o.nozzleLength >= 0) ||
+      !(o.reconfigurationMargin >= 0) || !(o.maxRetreat >= 0)) {
+    throw GeoLatticeError(
+        "robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2, "
+        "max joint step > 0, refinements >= 0, reconfiguration cost, nozzle length, margin and "
+        "retreat >= 0)");
+  }
+  const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
+  std::vector<size_t> coarse;
+  for (size_t i = 0; i < N; i += stride)
+    coarse.push_back(i);
+  if (coarse.back() != N - 1)
+    coarse.push_back(N - 1);
+
+  // Steps 1–3; step 4 only where they fail (a path they can follow keeps its plan).
+  const bool step4 = o.reconfigure && !kind.empty();
+  RobotPath path;
+  try {
+    StateCache cache(cell, points, normals, o, 1);  // serial: the layout search runs several
+    std::vector<size_t> refined = coarse;
+    path = planAndRefine(cell, points, normals, refined, o, cache);
+  } catch (const GeoLatticeError&) {
+    if (!step4 || !solveReconfigured(cell, points, normals, kind, coarse, o, path))
+      throw;
+  }
+  if (step4 && !works(path)) {
+    RobotPath reconfigured;
+    if (solveReconfigured(cell, points, normals, kind, coarse, o, reconfigured))
+      path = std::move(reconfigured);
+  }
   path.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return path;
+}
+
+const JointVector& jointsBefore(const RobotPath& path, size_t i) {
+  const auto& r = path.reconfigurations;
+  const auto it = std::lower_bound(r.begin(), r.end(), static_cast<int>(i) - 1,
+                                   [](const Reconfiguration& x, int p) { return x.point < p; });
+  if (it != r.end() && it->point == static_cast<int>(i) - 1)
+    return it->leave;
+  return path.joints[i - 1];
 }
 
 double jointSpeedRatio(const RobotCell& cell, const RobotPath& path,
@@ -319,8 +696,9 @@ double jointSpeedRatio(const RobotCell& cell, const RobotPath& path,
     if (!(feedRate[i] > 0) || len == 0)
       continue;
     const double dt = len / feedRate[i];
+    const JointVector& before = jointsBefore(path, i);
     for (int j = 0; j < 6; ++j) {
-      const double speed = std::abs(path.joints[i][j] - path.joints[i - 1][j]) / dt;
+      const double speed = std::abs(path.joints[i][j] - before[j]) / dt;
       maxSpeedDegS = std::max(maxSpeedDegS, speed * 180.0 / M_PI);
       ratio = std::max(ratio, speed / cell.robot.maxSpeed[j]);
     }

@@ -20,7 +20,26 @@
 ///    singularity or a joint ran into its limit), the coarse interval around the step is sampled
 ///    64 times more densely and the plan is made again (up to `refinements` passes). Steps left
 ///    are listed in `largeSteps` for the caller to refuse.
-/// Cost O(samples · ψ² · 8 + N) IK solutions; 1M points ≈ 1 s.
+/// 4. Reconfiguration (only when 1–3 leave unreachable points or large steps, and the point kinds
+///    are given): one IK branch and a continuous ψ per stretch between changes instead of one
+///    for the whole path. The plan of step 1 runs over all (branch, ψ) states at once; a step
+///    no fine path can make within maxJointStepDeg costs more than a reconfiguration; between
+///    two consecutive air points — the highest of every air move (where the nozzle is above the
+///    in-process part) and any air step found too large — the state may change at a fixed cost
+///    (reconfigurationCost), and a branch found flipping inside a stretch is barred there. Each
+///    change becomes a reconfiguration move (Reconfiguration): the part is moved straight away
+///    from the nozzle along the nozzle axis until the bounding sphere of the toolpath is
+///    reconfigurationMargin (which covers the build plate) clear of the nozzle body (a segment
+///    of nozzleLength from the tip) and of the floor the robot stands on (base z = 0) during
+///    the whole joint move (extended in 50 mm steps up to maxRetreat), the arm moves in joint space to the new configuration, and the part approaches the
+///    next point along that point's nozzle axis (the nozzle then moves inside its own volume at
+///    that station, which the collision verifier checked). The retreat lines are solved every
+///    5 mm (no step above maxJointStepDeg) and the joint move is checked every degree; a change
+///    whose move cannot be made so is excluded and the plan made again (at most 12 plans). The
+///    path as solved by 1–3 is kept when this does not remove every unreachable point and large
+///    step. Robot self-collision and other obstacles of the cell are not modelled.
+/// Cost O(samples · ψ² · 8 + N) IK solutions; 1M points ≈ 1 s; step 4 adds one IK per state at
+/// every air move's coarse samples.
 #include "robot/RobotCell.h"
 
 #include <vector>
@@ -35,16 +54,36 @@ struct RobotPathOptions {
       0.05;  ///< below this (|sin θ5|, |sin θ3|, shoulder distance in m) a penalty applies
   double maxJointStepDeg =
       20.0;  ///< a larger step of any joint between consecutive points triggers refinement
-  int refinements = 3;  ///< passes that densify the coarse samples around such steps
+  int refinements = 3;      ///< passes that densify the coarse samples around such steps
+  bool reconfigure = true;  ///< step 4: allow reconfiguration moves at air moves (needs kinds)
+  double reconfigurationCost = 50;  ///< rad-equivalents a change of configuration costs the plan
+  double nozzleLength = 0.25;       ///< m: nozzle and holder length kept clear during a joint move
+  double reconfigurationMargin = 0.02;  ///< m added to the part's bounding sphere (the plate)
+  double maxRetreat = 0.4;              ///< m: the farthest the part is moved away from the nozzle
+};
+
+/// A change of IK branch (or of ψ) at an air move, made away from the part (module comment,
+/// step 4): at the toolpath point `point` the robot arrives in the old configuration (arrive),
+/// moves the part straight away from the nozzle (a linear move to retreatFrom), moves in joint
+/// space to retreatTo, and approaches point + 1 in the new configuration (leave = its joints).
+struct Reconfiguration {
+  int point = -1;                      ///< toolpath point (an air move)
+  int fromBranch = -1, toBranch = -1;  ///< IK branches before and after
+  JointVector arrive{}, retreatFrom{}, retreatTo{}, leave{};
+  double retreat = 0;    ///< m the part moves away from the nozzle (the larger of both ends)
+  double clearance = 0;  ///< m: least distance of the part's sphere to the nozzle or floor
 };
 
 struct RobotPath {
   std::vector<JointVector> joints;  ///< per point, continuous (unwrapped)
   std::vector<double> psi;          ///< per point (rad)
   std::vector<int> unreachable;     ///< point indices without a valid IK solution
-  int branch = -1;                  ///< IK branch used (inverseKinematicsBranch)
-  double maxJointStepDeg = 0;       ///< largest change of any joint between consecutive points
-  int maxJointStepAt = -1;          ///< the point where it happens (the step from the point before)
+  int branch = -1;                  ///< IK branch at the first point (inverseKinematicsBranch)
+  /// Changes of configuration at air moves, in path order: from joints[point] to
+  /// joints[point + 1] (= leave) by a reconfiguration move, not a straight joint step.
+  std::vector<Reconfiguration> reconfigurations;
+  double maxJointStepDeg = 0;  ///< largest change of any joint between consecutive points
+  int maxJointStepAt = -1;     ///< the point where it happens (the step from the point before)
   std::vector<int>
       largeSteps;         ///< points reached by a step above RobotPathOptions::maxJointStepDeg
   int coarseSamples = 0;  ///< coarse samples after refinement
@@ -55,12 +94,17 @@ struct RobotPath {
   double seconds = 0;
 };
 
-/// points/normals: toolpath in part units. Throws GeoLatticeError for an empty path, NaN or
-/// zero normals, a bad cell, or a cell in which no branch reaches the coarse path at all
-/// ("unreachable cell set-up").
+/// points/normals: toolpath in part units; kind: per point 0 print, 1 perimeter, 2 air (empty:
+/// no reconfiguration, step 4). Throws GeoLatticeError for an empty path, NaN or zero normals, a
+/// bad cell, or a cell in which no branch reaches the coarse path at all ("unreachable cell
+/// set-up").
 RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                          const std::vector<Eigen::Vector3d>& normals,
-                         const RobotPathOptions& options = {});
+                         const RobotPathOptions& options = {}, const std::vector<int>& kind = {});
+
+/// The joints the robot is at when its straight move to point i starts: joints[i - 1], or
+/// joints[i] (`leave`) when a reconfiguration at i - 1 brings it there. i >= 1.
+const JointVector& jointsBefore(const RobotPath& path, size_t i);
 
 /// Largest per-joint speed ratio |Δq| / (Δt · maxSpeed) over consecutive points, with Δt from
 /// segment lengths (part units · scale) and feed rates (part units/s); ≤ 1 means within limits.

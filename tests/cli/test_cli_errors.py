@@ -649,9 +649,11 @@ class CliGateTest(unittest.TestCase):
         self.assertIn("waypoints.csv", programs)
 
     def test_joint_gate_and_the_cell_layout_search(self):
-        # The nozzle pointing along the robot's x axis: the path as laid out makes the wrist flip.
+        # The nozzle pointing along the robot's x axis: the path as laid out makes the wrist flip
+        # when the whole path keeps one IK branch (steps 1-3 of the path solver).
         cell = ["--nozzle-tip", "0,-400,300", "--nozzle-axis", "1,0,0", "--allow-collisions"]
-        result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-layout-search")
+        result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-layout-search",
+                                                     "--no-reconfiguration")
         self.assertEqual(result.returncode, 6, result.stderr)
         lines = [l for l in result.stderr.splitlines() if l.strip()]
         # One warning (the collisions, overridden) and the gate's line.
@@ -660,14 +662,15 @@ class CliGateTest(unittest.TestCase):
         self.assertNotIn("raise", result.stderr)  # no advice to raise the bound
         self.assertEqual(programs, [])
         self.assertFalse(report["gates"]["joints"]["passed"])
+        self.assertFalse(report["program"]["reconfigure"])
         # The bound is not the way out: above 30 degrees it is refused.
         r = subprocess.run([CLI, "run", os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "-o",
                             os.path.join(self.tmp, "bound"), "-q", "--max-joint-step", "360"],
                            capture_output=True, text=True, timeout=300)
         self.assertEqual(r.returncode, 1)
         self.assertIn("--max-joint-step must be in (0, 30]", r.stderr)
-        # With the layout search (the default) the part is mounted otherwise and the program written.
-        result, report, programs, out = self.run_cli("y_shape.obj", *cell)
+        # With the layout search alone the part is mounted otherwise and the program written.
+        result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-reconfiguration")
         self.assertEqual(result.returncode, 0, result.stderr)
         layout = report["program"]["layout"]
         self.assertTrue(layout["changed"])
@@ -678,6 +681,23 @@ class CliGateTest(unittest.TestCase):
             head = f.read(2000)
         self.assertIn("# cell layout: the platform turned by", head)
         self.assertIn("set_tcp(p[0, 0, %s" % ("%g" % (layout["part_on_flange_used"][2] / 1000)), head)
+        # With the defaults the path solver's step 4 (one IK branch per stretch, flips barred,
+        # reconfigurations at air moves where needed) follows the path in the cell as given.
+        result, report, programs, out = self.run_cli("y_shape.obj", *cell)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        program = report["program"]
+        self.assertFalse(program["layout"]["changed"])
+        self.assertTrue(program["reconfigure"])
+        self.assertLessEqual(program["max_joint_step_deg"], 20.0)
+        self.assertEqual(program["large_joint_steps"], 0)
+        self.assertEqual(program["unreachable"], 0)
+        self.assertIn("print_part.script", programs)
+        with open(os.path.join(out, "print_part.script")) as f:
+            text = f.read()
+        self.assertEqual(text.count("# reconfiguration between"), len(program["reconfigurations"]))
+        for r in program["reconfigurations"]:
+            self.assertGreaterEqual(r["clearance_mm"], 20.0 - 1e-6)
+            self.assertGreater(r["retreat_mm"], 0)
 
 
 class CliVerifyTest(unittest.TestCase):

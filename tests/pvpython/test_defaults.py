@@ -34,6 +34,7 @@ CLI_CHOICES = {
     "GLPrintPart.PedestalHeight": {"auto": -1},
     "GLGCodeWriter.Flavor": {"linuxcnc": 0, "reprap": 1},
     "GLURScriptWriter.SearchCellLayout": {"search": 1, "off": 0},
+    "GLURScriptWriter.Reconfigure": {"on": 1, "off": 0},
     "GLGCodeWriter.ToolCentrePoint": {"controller": 0, "cam": 1},
 }
 

@@ -1,0 +1,205 @@
+// The robot path solver's step 4 (RobotPathSolver.h): a constructed path that one IK branch with
+// a continuous ψ cannot follow — the nozzle axis turns by 100 degrees in one step at the end of
+// every air move — is followed with reconfiguration moves at those air moves, each checked here
+// on its own (straight retreat, joint move clear of the nozzle and the floor, FK at both ends),
+// and written into the URScript program. A path that one branch follows keeps its plan.
+#include "common/Error.h"
+#include "program/URScriptWriter.h"
+#include "robot/RobotPathSolver.h"
+#include "../common/URScriptSyntax.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <cmath>
+#include <sstream>
+
+using namespace geolattice;
+
+namespace {
+
+struct ConstructedPath {
+  std::vector<Eigen::Vector3d> points, normals;
+  std::vector<int> kind;
+  std::vector<double> extrusion, feedRate;
+};
+
+/// Four straight print runs of 100 points (0.2 mm apart) around a circle of radius 15 mm,
+/// each with its own nozzle axis tilted `tiltDeg` from +z (turned 90 degrees about z from one
+/// run to the next), joined by air moves: up to z = 40 mm turning the axis to +z, across, and
+/// down with the axis still +z until the last air point, which already has the next run's axis.
+ConstructedPath abruptAirMoves(double tiltDeg) {
+  ConstructedPath p;
+  const double tilt = tiltDeg * M_PI / 180;
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitZ();
+  Eigen::Vector3d previousAxis = up;
+  auto add = [&](const Eigen::Vector3d& x, const Eigen::Vector3d& n, int kind) {
+    p.points.push_back(x);
+    p.normals.push_back(n.normalized());
+    p.kind.push_back(kind);
+    const double e = p.extrusion.empty() ? 0.0 : p.extrusion.back();
+    const double len = p.points.size() > 1 ? (x - p.points[p.points.size() - 2]).norm() : 0.0;
+    p.extrusion.push_back(kind == 2 ? e : e + 0.03 * len);
+    p.feedRate.push_back(kind == 2 ? 50.0 : 20.0);
+  };
+  for (int run = 0; run < 4; ++run) {
+    const double phi = run * M_PI / 2;
+    const Eigen::Vector3d axis(std::sin(tilt) * std::cos(phi), std::sin(tilt) * std::sin(phi),
+                               std::cos(tilt));
+    const Eigen::Vector3d start(15 * std::cos(phi), 15 * std::sin(phi), 10);
+    const Eigen::Vector3d along(-std::sin(phi), std::cos(phi), 0);
+    if (run > 0) {
+      const Eigen::Vector3d from = p.points.back(), lifted(from.x(), from.y(), 40);
+      const Eigen::Vector3d top(start.x(), start.y(), 40);
+      for (int j = 1; j <= 40; ++j) {
+        const double t = j / 40.0;
+        add(from + t * (lifted - from), (1 - t) * previousAxis + t * up, 2);
+      }
+      for (int j = 1; j <= 40; ++j)
+        add(lifted + j / 40.0 * (top - lifted), up, 2);
+      for (int j = 1; j <= 40; ++j)
+        add(top + j / 40.0 * (start - top), j < 40 ? up : axis, 2);
+    }
+    for (int j = 0; j < 100; ++j)
+      add(start + along * (0.2 * j), axis, 0);
+    previousAxis = axis;
+  }
+  return p;
+}
+
+/// Distance of c from the segment tip .. tip + length · axis.
+double segmentDistance(const RobotCell& cell, const Eigen::Vector3d& c, double length) {
+  const double t = std::clamp((c - cell.nozzleTip).dot(cell.nozzleAxis), 0.0, length);
+  return (c - (cell.nozzleTip + t * cell.nozzleAxis)).norm();
+}
+
+}  // namespace
+
+TEST(RobotPathSolver, ReconfiguresAtAirMovesWhereOneBranchCannotFollow) {
+  const ConstructedPath p = abruptAirMoves(100);
+  const RobotCell cell;
+  RobotPathOptions off;
+  off.reconfigure = false;
+  const RobotPath single = solveRobotPath(cell, p.points, p.normals, off, p.kind);
+  ASSERT_FALSE(single.largeSteps.empty()) << "the constructed path must defeat steps 1-3";
+  EXPECT_GT(single.maxJointStepDeg, 20.0);
+
+  const RobotPathOptions o;
+  const RobotPath rp = solveRobotPath(cell, p.points, p.normals, o, p.kind);
+  std::printf("[robot] abrupt air moves: one branch max step %.1f deg (%zu large steps); with "
+              "step 4 max step %.1f deg, %zu reconfigurations, %.2f s\n",
+              single.maxJointStepDeg, single.largeSteps.size(), rp.maxJointStepDeg,
+              rp.reconfigurations.size(), rp.seconds);
+  EXPECT_TRUE(rp.unreachable.empty());
+  EXPECT_TRUE(rp.largeSteps.empty());
+  EXPECT_LE(rp.maxJointStepDeg, o.maxJointStepDeg);
+  ASSERT_GE(rp.reconfigurations.size(), 1u);
+  EXPECT_LT(rp.maxTipError, 1e-6);
+  EXPECT_LT(rp.maxAxisErrorDeg, 0.01);
+
+  // The part's bounding sphere, as the solver's contract states it.
+  Eigen::AlignedBox3d box;
+  for (const auto& x : p.points)
+    box.extend(x);
+  const double radius = cell.partScale * 0.5 * box.diagonal().norm();
+  auto centreAt = [&](const JointVector& q) {
+    return (forwardKinematics(cell.robot, q) * cell.partOnFlange) *
+           (cell.partScale * box.center());
+  };
+  int previousPoint = -1;
+  for (const Reconfiguration& r : rp.reconfigurations) {
+    SCOPED_TRACE("reconfiguration at point " + std::to_string(r.point));
+    ASSERT_GT(r.point, previousPoint);  // in path order
+    previousPoint = r.point;
+    const size_t at = static_cast<size_t>(r.point);
+    EXPECT_EQ(p.kind[at], 2);  // between two air points
+    EXPECT_EQ(p.kind[at + 1], 2);
+    EXPECT_EQ(r.arrive, rp.joints[at]);
+    EXPECT_EQ(r.leave, rp.joints[at + 1]);
+    EXPECT_EQ(&jointsBefore(rp, at + 1), &r.leave);
+    EXPECT_GT(r.retreat, 0.0);
+    EXPECT_LE(r.retreat, o.maxRetreat);
+    // Both retreats: the same orientation, moved straight away from the nozzle along its axis.
+    for (const auto& [near, far] : {std::pair(r.arrive, r.retreatFrom), {r.leave, r.retreatTo}}) {
+      const Isometry a = forwardKinematics(cell.robot, near), b = forwardKinematics(cell.robot, far);
+      EXPECT_LT((a.linear() - b.linear()).norm(), 1e-6);
+      const Eigen::Vector3d move = b.translation() - a.translation();
+      EXPECT_GT(-move.dot(cell.nozzleAxis), 0.0);
+      EXPECT_LE(move.norm(), r.retreat + 1e-9);
+      EXPECT_LT((move + move.norm() * cell.nozzleAxis).norm(), 1e-6);
+    }
+    // The joint move (linear in joint space, as movej) keeps the sphere clear by the margin.
+    double clearance = std::numeric_limits<double>::infinity();
+    for (int j = 0; j <= 400; ++j) {
+      JointVector q;
+      for (int a = 0; a < 6; ++a)
+        q[a] = r.retreatFrom[a] + j / 400.0 * (r.retreatTo[a] - r.retreatFrom[a]);
+      const Eigen::Vector3d c = centreAt(q);
+      clearance = std::min({clearance, segmentDistance(cell, c, o.nozzleLength) - radius,
+                            c.z() - radius});
+      for (int a = 0; a < 6; ++a) {
+        EXPECT_GE(q[a], cell.robot.lowerLimit[a]);
+        EXPECT_LE(q[a], cell.robot.upperLimit[a]);
+      }
+    }
+    EXPECT_GE(clearance, o.reconfigurationMargin - 1e-3);
+    EXPECT_NEAR(clearance, r.clearance, 5e-3);
+  }
+  double speedDeg = 0;
+  EXPECT_LE(jointSpeedRatio(cell, rp, p.points, p.feedRate, speedDeg), 1.0);
+
+  // The program: every reconfiguration where it happens, retreat, movej, approach.
+  const ProgramInput in{&p.points, &p.extrusion, &p.feedRate, &p.kind};
+  std::ostringstream file;
+  const ProgramStats stats =
+      writeURScript(cell, rp, in, URScriptOptions{}, [&](size_t) -> std::ostream& { return file; });
+  const std::string text = file.str();
+  checkURScriptSyntax(text, "", 1000);
+  size_t comments = 0, movejs = 0, movels = 0;
+  for (size_t at = text.find("# reconfiguration between"); at != std::string::npos;
+       at = text.find("# reconfiguration between", at + 1))
+    ++comments;
+  for (size_t at = text.find("movej("); at != std::string::npos; at = text.find("movej(", at + 1))
+    ++movejs;
+  for (size_t at = text.find("movel("); at != std::string::npos; at = text.find("movel(", at + 1))
+    ++movels;
+  const size_t R = rp.reconfigurations.size();
+  EXPECT_EQ(comments, R);
+  size_t airMoves = 0;  // each may start a program file: its joints are restated by a movej
+  for (size_t i = 1; i < p.kind.size(); ++i)
+    airMoves += p.kind[i] == 2 && p.kind[i - 1] != 2;
+  EXPECT_EQ(movejs, R + 1 + airMoves);  // and the start
+  EXPECT_EQ(movels, p.points.size() - 1 + R);  // each replaces one movel by two
+  EXPECT_EQ(stats.moves, p.points.size() - 1 + 2 * R);
+  // Its joint move goes to the retreat of the new configuration.
+  std::ostringstream first;
+  first << "movej([" << urNumber(rp.reconfigurations[0].retreatTo[0]) << ", ";
+  EXPECT_NE(text.find(first.str()), std::string::npos);
+}
+
+TEST(RobotPathSolver, APathOneBranchFollowsKeepsItsPlan) {
+  // A gentle tilt: steps 1-3 follow it; step 4 must not change a single joint value.
+  const ConstructedPath p = abruptAirMoves(20);
+  const RobotCell cell;
+  RobotPathOptions off;
+  off.reconfigure = false;
+  const RobotPath a = solveRobotPath(cell, p.points, p.normals, off, p.kind);
+  const RobotPath b = solveRobotPath(cell, p.points, p.normals, RobotPathOptions{}, p.kind);
+  ASSERT_TRUE(a.largeSteps.empty());
+  EXPECT_TRUE(b.reconfigurations.empty());
+  EXPECT_EQ(a.joints, b.joints);
+  EXPECT_EQ(a.psi, b.psi);
+  // Without kinds there is no step 4 either.
+  const RobotPath c = solveRobotPath(cell, p.points, p.normals);
+  EXPECT_EQ(a.joints, c.joints);
+}
+
+TEST(RobotPathSolver, BadReconfigurationInput) {
+  const ConstructedPath p = abruptAirMoves(20);
+  const RobotCell cell;
+  std::vector<int> shortKind(p.kind.begin(), p.kind.end() - 1);
+  EXPECT_THROW(solveRobotPath(cell, p.points, p.normals, {}, shortKind), GeoLatticeError);
+  RobotPathOptions o;
+  o.maxRetreat = -1;
+  EXPECT_THROW(solveRobotPath(cell, p.points, p.normals, o, p.kind), GeoLatticeError);
+}
