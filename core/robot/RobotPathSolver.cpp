@@ -284,7 +284,7 @@ CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>&
 }
 
 /// Joints at every point: ψ interpolated between the coarse samples, IK of the plan's branch,
-/// unwrapped next to the previous joints; FK check and singularity distances. At a change of
+/// unwrapped next to the previous joints (checked by checkEmittedJoints). At a change of
 /// configuration (step 4) the path continues in the new branch and the change is recorded (its
 /// move is planned by the caller).
 RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
@@ -297,7 +297,6 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
   path.branch = plan.branch[0];
   path.joints.resize(N);
   path.psi.resize(N);
-  path.minSingularity = {kInf, kInf, kInf};
   JointVector previous{};
   bool havePrevious = false;
   int branch = plan.branch[0];
@@ -340,18 +339,6 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
     if (!found || !withinLimits(robot, qi)) {
       path.unreachable.push_back(static_cast<int>(i));
       qi = havePrevious ? previous : JointVector{};
-    } else {
-      const SingularityDistance sd = singularityDistance(robot, qi, f);
-      // Independent check of the emitted joints: forward kinematics puts p at the tip, n along the nozzle.
-      const Isometry part = forwardKinematics(robot, qi) * cell.partOnFlange;
-      path.maxTipError =
-          std::max(path.maxTipError, (part * (cell.partScale * points[i]) - cell.nozzleTip).norm());
-      const double c = (part.linear() * normals[i].normalized()).dot(cell.nozzleAxis);
-      path.maxAxisErrorDeg =
-          std::max(path.maxAxisErrorDeg, std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI);
-      path.minSingularity.shoulder = std::min(path.minSingularity.shoulder, sd.shoulder);
-      path.minSingularity.elbow = std::min(path.minSingularity.elbow, sd.elbow);
-      path.minSingularity.wrist = std::min(path.minSingularity.wrist, sd.wrist);
     }
     if (havePrevious) {
       double step = 0;
@@ -382,6 +369,35 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
     havePrevious = havePrevious || found;
   }
   return path;
+}
+
+/// Independent check of the emitted joints, once for the path finally chosen: forward
+/// kinematics puts every reachable point at the tip with its axis along the nozzle (largest
+/// errors), and the smallest singularity distances along the path.
+void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+                        const std::vector<Eigen::Vector3d>& normals, RobotPath& path) {
+  const RobotModel& robot = cell.robot;
+  path.maxTipError = 0;
+  path.maxAxisErrorDeg = 0;
+  path.minSingularity = {kInf, kInf, kInf};
+  size_t next = 0;  // the next unreachable point (sorted)
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (next < path.unreachable.size() && static_cast<size_t>(path.unreachable[next]) == i) {
+      ++next;
+      continue;
+    }
+    const Isometry flange = forwardKinematics(robot, path.joints[i]);
+    const SingularityDistance sd = singularityDistance(robot, path.joints[i], flange);
+    const Isometry part = flange * cell.partOnFlange;
+    path.maxTipError =
+        std::max(path.maxTipError, (part * (cell.partScale * points[i]) - cell.nozzleTip).norm());
+    const double c = (part.linear() * normals[i].normalized()).dot(cell.nozzleAxis);
+    path.maxAxisErrorDeg =
+        std::max(path.maxAxisErrorDeg, std::acos(std::clamp(c, -1.0, 1.0)) * 180.0 / M_PI);
+    path.minSingularity.shoulder = std::min(path.minSingularity.shoulder, sd.shoulder);
+    path.minSingularity.elbow = std::min(path.minSingularity.elbow, sd.elbow);
+    path.minSingularity.wrist = std::min(path.minSingularity.wrist, sd.wrist);
+  }
 }
 
 /// Steps 1–3 (step 4 with changePoint, the points where a change may be made, and flips, the
@@ -573,10 +589,14 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
   }
   std::sort(withChanges.begin(), withChanges.end());
   withChanges.erase(std::unique(withChanges.begin(), withChanges.end()), withChanges.end());
+  // One densification per round: a step the rounds bar (a flip, a joint at its limit) does not
+  // go away with denser samples, and each round keeps the samples of the one before.
+  RobotPathOptions perRound = o;
+  perRound.refinements = std::min(o.refinements, 1);
   for (int round = 0; round < kReconfigurationRounds; ++round) {
     RobotPath path;
     try {
-      path = planAndRefine(cell, points, normals, withChanges, o, cache, changePoint, flips);
+      path = planAndRefine(cell, points, normals, withChanges, perRound, cache, changePoint, flips);
     } catch (const GeoLatticeError&) {
       return false;
     }
@@ -673,6 +693,7 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
     if (solveReconfigured(cell, points, normals, kind, coarse, o, reconfigured))
       path = std::move(reconfigured);
   }
+  checkEmittedJoints(cell, points, normals, path);
   path.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return path;
 }

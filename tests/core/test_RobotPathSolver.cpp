@@ -86,10 +86,11 @@ TEST(RobotPathSolver, ReconfiguresAtAirMovesWhereOneBranchCannotFollow) {
 
   const RobotPathOptions o;
   const RobotPath rp = solveRobotPath(cell, p.points, p.normals, o, p.kind);
-  std::printf("[robot] abrupt air moves: one branch max step %.1f deg (%zu large steps); with "
-              "step 4 max step %.1f deg, %zu reconfigurations, %.2f s\n",
-              single.maxJointStepDeg, single.largeSteps.size(), rp.maxJointStepDeg,
-              rp.reconfigurations.size(), rp.seconds);
+  std::printf(
+      "[robot] abrupt air moves: one branch max step %.1f deg (%zu large steps); with "
+      "step 4 max step %.1f deg, %zu reconfigurations, %.2f s\n",
+      single.maxJointStepDeg, single.largeSteps.size(), rp.maxJointStepDeg,
+      rp.reconfigurations.size(), rp.seconds);
   EXPECT_TRUE(rp.unreachable.empty());
   EXPECT_TRUE(rp.largeSteps.empty());
   EXPECT_LE(rp.maxJointStepDeg, o.maxJointStepDeg);
@@ -103,8 +104,7 @@ TEST(RobotPathSolver, ReconfiguresAtAirMovesWhereOneBranchCannotFollow) {
     box.extend(x);
   const double radius = cell.partScale * 0.5 * box.diagonal().norm();
   auto centreAt = [&](const JointVector& q) {
-    return (forwardKinematics(cell.robot, q) * cell.partOnFlange) *
-           (cell.partScale * box.center());
+    return (forwardKinematics(cell.robot, q) * cell.partOnFlange) * (cell.partScale * box.center());
   };
   int previousPoint = -1;
   for (const Reconfiguration& r : rp.reconfigurations) {
@@ -121,7 +121,8 @@ TEST(RobotPathSolver, ReconfiguresAtAirMovesWhereOneBranchCannotFollow) {
     EXPECT_LE(r.retreat, o.maxRetreat);
     // Both retreats: the same orientation, moved straight away from the nozzle along its axis.
     for (const auto& [near, far] : {std::pair(r.arrive, r.retreatFrom), {r.leave, r.retreatTo}}) {
-      const Isometry a = forwardKinematics(cell.robot, near), b = forwardKinematics(cell.robot, far);
+      const Isometry a = forwardKinematics(cell.robot, near),
+                     b = forwardKinematics(cell.robot, far);
       EXPECT_LT((a.linear() - b.linear()).norm(), 1e-6);
       const Eigen::Vector3d move = b.translation() - a.translation();
       EXPECT_GT(-move.dot(cell.nozzleAxis), 0.0);
@@ -135,8 +136,8 @@ TEST(RobotPathSolver, ReconfiguresAtAirMovesWhereOneBranchCannotFollow) {
       for (int a = 0; a < 6; ++a)
         q[a] = r.retreatFrom[a] + j / 400.0 * (r.retreatTo[a] - r.retreatFrom[a]);
       const Eigen::Vector3d c = centreAt(q);
-      clearance = std::min({clearance, segmentDistance(cell, c, o.nozzleLength) - radius,
-                            c.z() - radius});
+      clearance =
+          std::min({clearance, segmentDistance(cell, c, o.nozzleLength) - radius, c.z() - radius});
       for (int a = 0; a < 6; ++a) {
         EXPECT_GE(q[a], cell.robot.lowerLimit[a]);
         EXPECT_LE(q[a], cell.robot.upperLimit[a]);
@@ -168,7 +169,7 @@ TEST(RobotPathSolver, ReconfiguresAtAirMovesWhereOneBranchCannotFollow) {
   size_t airMoves = 0;  // each may start a program file: its joints are restated by a movej
   for (size_t i = 1; i < p.kind.size(); ++i)
     airMoves += p.kind[i] == 2 && p.kind[i - 1] != 2;
-  EXPECT_EQ(movejs, R + 1 + airMoves);  // and the start
+  EXPECT_EQ(movejs, R + 1 + airMoves);         // and the start
   EXPECT_EQ(movels, p.points.size() - 1 + R);  // each replaces one movel by two
   EXPECT_EQ(stats.moves, p.points.size() - 1 + 2 * R);
   // Its joint move goes to the retreat of the new configuration.
