@@ -73,14 +73,26 @@ double segmentDistance(const RobotCell& cell, const Eigen::Vector3d& c, double l
   return (c - (cell.nozzleTip + t * cell.nozzleAxis)).norm();
 }
 
+/// Steps 1–3 only (no reconfiguration).
+RobotPath solveWithOneBranch(const RobotCell& cell, const ConstructedPath& p) {
+  RobotPathOptions off;
+  off.reconfigure = false;
+  return solveRobotPath(cell, p.points, p.normals, off, p.kind);
+}
+
+size_t occurrences(const std::string& text, const std::string& what) {
+  size_t n = 0;
+  for (size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+    ++n;
+  return n;
+}
+
 }  // namespace
 
 TEST(RobotPathSolver, ReconfiguresAtAirMovesWhereOneBranchCannotFollow) {
   const ConstructedPath p = abruptAirMoves(100);
   const RobotCell cell;
-  RobotPathOptions off;
-  off.reconfigure = false;
-  const RobotPath single = solveRobotPath(cell, p.points, p.normals, off, p.kind);
+  const RobotPath single = solveWithOneBranch(cell, p);
   ASSERT_FALSE(single.largeSteps.empty()) << "the constructed path must defeat steps 1-3";
   EXPECT_GT(single.maxJointStepDeg, 20.0);
 
@@ -156,14 +168,8 @@ TEST(RobotPathSolver, ReconfiguresAtAirMovesWhereOneBranchCannotFollow) {
       writeURScript(cell, rp, in, URScriptOptions{}, [&](size_t) -> std::ostream& { return file; });
   const std::string text = file.str();
   checkURScriptSyntax(text, "", 1000);
-  size_t comments = 0, movejs = 0, movels = 0;
-  for (size_t at = text.find("# reconfiguration between"); at != std::string::npos;
-       at = text.find("# reconfiguration between", at + 1))
-    ++comments;
-  for (size_t at = text.find("movej("); at != std::string::npos; at = text.find("movej(", at + 1))
-    ++movejs;
-  for (size_t at = text.find("movel("); at != std::string::npos; at = text.find("movel(", at + 1))
-    ++movels;
+  const size_t comments = occurrences(text, "# reconfiguration between");
+  const size_t movejs = occurrences(text, "movej("), movels = occurrences(text, "movel(");
   const size_t R = rp.reconfigurations.size();
   EXPECT_EQ(comments, R);
   size_t airMoves = 0;  // each may start a program file: its joints are restated by a movej
@@ -182,9 +188,7 @@ TEST(RobotPathSolver, APathOneBranchFollowsKeepsItsPlan) {
   // A gentle tilt: steps 1-3 follow it; step 4 must not change a single joint value.
   const ConstructedPath p = abruptAirMoves(20);
   const RobotCell cell;
-  RobotPathOptions off;
-  off.reconfigure = false;
-  const RobotPath a = solveRobotPath(cell, p.points, p.normals, off, p.kind);
+  const RobotPath a = solveWithOneBranch(cell, p);
   const RobotPath b = solveRobotPath(cell, p.points, p.normals, RobotPathOptions{}, p.kind);
   ASSERT_TRUE(a.largeSteps.empty());
   EXPECT_TRUE(b.reconfigurations.empty());
