@@ -75,22 +75,22 @@ public:
 
   /// Solves every (coarse point, branch) not solved yet.
   void prepare(const std::vector<size_t>& coarse, const std::vector<int>& branches) {
-    std::vector<BranchStates*> todo;
+    std::vector<BranchStates*> missing;
     std::vector<std::pair<size_t, int>> keys;
     for (size_t point : coarse) {
       for (int branch : branches) {
         auto [it, added] = states_.try_emplace(point * 8 + static_cast<size_t>(branch));
         if (added) {
-          todo.push_back(&it->second);
+          missing.push_back(&it->second);
           keys.emplace_back(point, branch);
         }
       }
     }
     const int P = o_.psiSamples;
     const double dpsi = 2 * M_PI / P;
-    parallelFor(todo.size(), threads_, [&](size_t i, int) {
+    parallelFor(missing.size(), threads_, [&](size_t i, int) {
       const auto [point, branch] = keys[i];
-      BranchStates& st = *todo[i];
+      BranchStates& st = *missing[i];
       st.q.resize(P);
       st.ok.resize(P);
       st.penalty.resize(P);
