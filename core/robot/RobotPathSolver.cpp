@@ -25,6 +25,11 @@ inline double wrapToPi(double x) {
   return x - std::floor((x + M_PI) / (2 * M_PI)) * (2 * M_PI);
 }
 
+/// std::remainder(x, 2π), with the common case |x| ≤ π (where it is x itself) taken first.
+inline double remainderTwoPi(double x) {
+  return std::abs(x) <= M_PI ? x : std::remainder(x, 2 * M_PI);
+}
+
 bool withinLimits(const RobotModel& r, const JointVector& q) {
   for (int i = 0; i < 6; ++i) {
     if (q[i] < r.lowerLimit[i] || q[i] > r.upperLimit[i])
@@ -73,11 +78,14 @@ public:
              const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o, int threads)
       : cell_(cell), points_(points), normals_(normals), o_(o), threads_(threads) {}
 
-  /// Solves every (coarse point, branch) not solved yet.
+  /// Solves every (coarse point, branch) not solved yet; the ψ grid's flange poses once per
+  /// point for all its branches.
   void prepare(const std::vector<size_t>& coarse, const std::vector<int>& branches) {
     std::vector<BranchStates*> missing;
     std::vector<std::pair<size_t, int>> keys;
+    std::vector<size_t> firstOfPoint;  // groups of `missing` with the same point
     for (size_t point : coarse) {
+      firstOfPoint.push_back(missing.size());
       for (int branch : branches) {
         auto [it, added] = states_.try_emplace(point * 8 + static_cast<size_t>(branch));
         if (added) {
@@ -86,19 +94,28 @@ public:
         }
       }
     }
+    firstOfPoint.push_back(missing.size());
     const int P = o_.psiSamples;
     const double dpsi = 2 * M_PI / P;
-    parallelFor(missing.size(), threads_, [&](size_t i, int) {
-      const auto [point, branch] = keys[i];
-      BranchStates& st = *missing[i];
-      st.q.resize(P);
-      st.ok.resize(P);
-      st.penalty.resize(P);
-      for (int k = 0; k < P; ++k) {
-        const Isometry f = cell_.flangePose(points_[point], normals_[point], k * dpsi);
-        st.ok[k] = inverseKinematicsBranch(cell_.robot, f, branch, st.q[k]);
-        st.penalty[k] =
-            st.ok[k] ? singularityPenalty(cell_.robot, st.q[k], f, o_.singularityMargin) : kInf;
+    parallelFor(coarse.size(), threads_, [&](size_t g, int) {
+      if (firstOfPoint[g] == firstOfPoint[g + 1])
+        return;
+      const size_t point = keys[firstOfPoint[g]].first;
+      std::vector<Isometry> flange(P);
+      for (int k = 0; k < P; ++k)
+        flange[k] = cell_.flangePose(points_[point], normals_[point], k * dpsi);
+      for (size_t i = firstOfPoint[g]; i < firstOfPoint[g + 1]; ++i) {
+        const int branch = keys[i].second;
+        BranchStates& st = *missing[i];
+        st.q.resize(P);
+        st.ok.resize(P);
+        st.penalty.resize(P);
+        for (int k = 0; k < P; ++k) {
+          st.ok[k] = inverseKinematicsBranch(cell_.robot, flange[k], branch, st.q[k]);
+          st.penalty[k] =
+              st.ok[k] ? singularityPenalty(cell_.robot, st.q[k], flange[k], o_.singularityMargin)
+                       : kInf;
+        }
       }
     });
   }
@@ -140,18 +157,20 @@ bool reachFrom(const RobotModel& robot, const JointVector& from, const JointVect
 
 /// Dynamic programming over the (branch, ψ) states of the coarse samples (module comment).
 /// Without `mayChange` (steps 1–3) the branches that reach a subsample of the path are planned
-/// each on its own and the cheapest wins; with it (step 4) all eight are planned together and
+/// each on its own, and the plan of every branch that reaches the end is returned, cheapest
+/// first; with it (step 4) all eight are planned together and
 /// at a coarse sample s with mayChange[s] the state may change from the cheapest state at s - 1
 /// at the cost of a reconfiguration (a joint move from the old state at s - 1 to the new one
 /// at s, whose joints are taken in (-π, π]: the move also unwinds joints turned towards their
 /// limits); blocked[s] (a bit per branch) forbids staying in a branch from s - 1 to s (the
-/// fine pass found it flipping there). Memory: the back pointers of every state; the joints of
-/// two samples.
-CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
-                      const std::vector<Eigen::Vector3d>& normals,
-                      const std::vector<size_t>& coarse, const RobotPathOptions& o,
-                      StateCache& cache, const std::vector<char>& mayChange = {},
-                      const std::vector<unsigned>& blocked = {}) {
+/// fine pass found it flipping there), and the one cheapest plan is returned. Empty: no plan
+/// reaches the end. Memory: the back pointers of every state; the joints of two samples.
+std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
+                                   const std::vector<Eigen::Vector3d>& points,
+                                   const std::vector<Eigen::Vector3d>& normals,
+                                   const std::vector<size_t>& coarse, const RobotPathOptions& o,
+                                   StateCache& cache, const std::vector<char>& mayChange = {},
+                                   const std::vector<unsigned>& blocked = {}) {
   const RobotModel& robot = cell.robot;
   const bool step4 = !mayChange.empty();
   const int P = o.psiSamples;
@@ -184,152 +203,205 @@ CoarsePlan planCoarse(const RobotCell& cell, const std::vector<Eigen::Vector3d>&
         branches.push_back(branch);
   }
   const size_t B = branches.size(), W = B * static_cast<size_t>(P);
-  CoarsePlan best;
   if (B == 0)
-    return best;
+    return {};
   cache.prepare(coarse, branches);
-  std::vector<JointVector> q(W), wound(W), woundBefore(W);
-  std::vector<char> ok(W);
-  std::vector<double> cost(W), costBefore(W), penalty(W);
+  std::vector<double> cost(W);  // at the last sample
   std::vector<int> from(S * W, -1);
   std::vector<char> changed(step4 ? S * W : 0, 0);
-  auto solveSample = [&](size_t s) {
-    for (size_t b = 0; b < B; ++b) {
-      const BranchStates& st = cache.at(coarse[s], branches[b]);
-      std::copy(st.q.begin(), st.q.end(), q.begin() + b * P);
-      std::copy(st.ok.begin(), st.ok.end(), ok.begin() + b * P);
-      std::copy(st.penalty.begin(), st.penalty.end(), penalty.begin() + b * P);
-    }
-  };
-  solveSample(0);
-  cost = penalty;
-  wound = q;
-  for (size_t s = 1; s < S; ++s) {
-    std::swap(cost, costBefore);
-    std::swap(wound, woundBefore);
-    // A reconfiguration into sample s leaves from the cheapest state at s - 1.
-    size_t cheapest = W;
-    if (step4 && mayChange[s]) {
-      for (size_t id = 0; id < W; ++id)
-        if (std::isfinite(costBefore[id]) &&
-            (cheapest == W || costBefore[id] < costBefore[cheapest]))
-          cheapest = id;
-    }
-    solveSample(s);
-    // Step 4: a step that no fine path between the samples can make within the bound costs
-    // more than a reconfiguration (steps 1–3: the step itself).
-    const double stepBound =
-        step4 ? static_cast<double>(coarse[s] - coarse[s - 1]) * o.maxJointStepDeg * M_PI / 180.0
-              : kInf;
-    auto stepCost = [&](double step) {
-      return step > stepBound ? step + kOverBoundCost * (step - stepBound) : step;
+  // The plan of the states [lo, hi) (whole branches) over all samples: step 4 runs it once on
+  // every state, steps 1–3 once per branch, in parallel (the branches do not interact).
+  auto plan = [&](size_t lo, size_t hi) {
+    const size_t n = hi - lo;
+    std::vector<JointVector> wound(n), woundBefore(n);
+    std::vector<double> here(n), before(n);
+    auto states = [&](size_t s, size_t id) -> const BranchStates& {
+      return cache.at(coarse[s], branches[id / P]);
     };
-    for (size_t b = 0; b < B; ++b) {
-      for (int k = 0; k < P; ++k) {
-        const size_t id = b * P + k;
-        cost[id] = kInf;
-        if (!ok[id])
-          continue;
-        const bool stay = blocked.empty() || !(blocked[s] & (1u << branches[b]));
-        for (int dk = -o.maxPsiStep; dk <= o.maxPsiStep && stay; ++dk) {
-          const size_t pid = b * P + ((k + dk) % P + P) % P;
-          if (!std::isfinite(costBefore[pid]))
+    for (size_t id = lo; id < hi; ++id) {
+      here[id - lo] = states(0, id).penalty[id % P];
+      wound[id - lo] = states(0, id).q[id % P];
+    }
+    for (size_t s = 1; s < S; ++s) {
+      std::swap(here, before);
+      std::swap(wound, woundBefore);
+      // A reconfiguration into sample s leaves from the cheapest state at s - 1.
+      size_t cheapest = hi;
+      if (step4 && mayChange[s]) {
+        for (size_t id = lo; id < hi; ++id)
+          if (std::isfinite(before[id - lo]) &&
+              (cheapest == hi || before[id - lo] < before[cheapest - lo]))
+            cheapest = id;
+      }
+      // Step 4: a step that no fine path between the samples can make within the bound costs
+      // more than a reconfiguration (steps 1–3: the step itself).
+      const double stepBound =
+          step4 ? static_cast<double>(coarse[s] - coarse[s - 1]) * o.maxJointStepDeg * M_PI / 180.0
+                : kInf;
+      auto stepCost = [&](double step) {
+        return step > stepBound ? step + kOverBoundCost * (step - stepBound) : step;
+      };
+      for (size_t first = lo; first < hi; first += P) {
+        const BranchStates& st = states(s, first);
+        const int branch = branches[first / P];
+        const bool stay = blocked.empty() || !(blocked[s] & (1u << branch));
+        for (int k = 0; k < P; ++k) {
+          const size_t id = first + k;
+          double& c = here[id - lo];
+          c = kInf;
+          if (!st.ok[k])
             continue;
-          // The joints as the robot reaches them along this path (turns add up, no ±2π
-          // folding): a path that would wind a joint past its limit is infeasible, since the
-          // fine pass could only get back by a full turn between two points.
-          JointVector reached;
-          double step = 0;
-          if (!reachFrom(robot, woundBefore[pid], q[id], reached, step))
-            continue;
-          const double c = costBefore[pid] + stepCost(step) + penalty[id];
-          if (c < cost[id]) {
-            cost[id] = c;
-            from[s * W + id] = static_cast<int>(pid);
-            wound[id] = reached;
+          for (int dk = -o.maxPsiStep; dk <= o.maxPsiStep && stay; ++dk) {
+            const size_t pid = first + ((k + dk) % P + P) % P;
+            if (!std::isfinite(before[pid - lo]))
+              continue;
+            // The joints as the robot reaches them along this path (turns add up, no ±2π
+            // folding): a path that would wind a joint past its limit is infeasible, since the
+            // fine pass could only get back by a full turn between two points.
+            JointVector reached;
+            double step = 0;
+            if (!reachFrom(robot, woundBefore[pid - lo], st.q[k], reached, step))
+              continue;
+            const double cc = before[pid - lo] + stepCost(step) + st.penalty[k];
+            if (cc < c) {
+              c = cc;
+              from[s * W + id] = static_cast<int>(pid);
+              wound[id - lo] = reached;
+            }
           }
-        }
-        if (cheapest < W && withinLimits(robot, q[id])) {
-          const double c = costBefore[cheapest] + o.reconfigurationCost + penalty[id];
-          if (c < cost[id]) {
-            cost[id] = c;
-            from[s * W + id] = static_cast<int>(cheapest);
-            changed[s * W + id] = 1;
-            wound[id] = q[id];
+          if (cheapest < hi && withinLimits(robot, st.q[k])) {
+            const double cc = before[cheapest - lo] + o.reconfigurationCost + st.penalty[k];
+            if (cc < c) {
+              c = cc;
+              from[s * W + id] = static_cast<int>(cheapest);
+              changed[s * W + id] = 1;
+              wound[id - lo] = st.q[k];
+            }
           }
         }
       }
     }
+    std::copy(here.begin(), here.end(), cost.begin() + lo);
+  };
+  if (step4)
+    plan(0, W);
+  else
+    parallelFor(B, o.threads, [&](size_t b, int) { plan(b * P, (b + 1) * P); });
+  // Steps 1–3: the cheapest end of each branch, cheapest branch first (of equal costs the
+  // first branch, then the first ψ); step 4: the cheapest end over all states.
+  std::vector<size_t> ends;
+  for (size_t b = 0; b < (step4 ? 1 : B); ++b) {
+    size_t end = W;
+    for (size_t id = step4 ? 0 : b * P; id < (step4 ? W : (b + 1) * P); ++id)
+      if (std::isfinite(cost[id]) && (end == W || cost[id] < cost[end]))
+        end = id;
+    if (end < W)
+      ends.push_back(end);
   }
-  // The cheapest end (the first branch, then the first ψ, of equal costs).
-  size_t end = W;
-  for (size_t id = 0; id < W; ++id)
-    if (std::isfinite(cost[id]) && (end == W || cost[id] < cost[end]))
-      end = id;
-  if (end == W)
-    return best;
-  best.branch.assign(S, 0);
-  best.psi.assign(S, 0);
-  best.reconfigure.assign(S, 0);
-  size_t id = end;
-  for (size_t s = S; s-- > 0;) {
-    best.branch[s] = branches[id / P];
-    best.psi[s] = static_cast<int>(id % P);
-    if (step4)
-      best.reconfigure[s] = changed[s * W + id];
-    if (s > 0)
-      id = static_cast<size_t>(from[s * W + id]);
+  std::stable_sort(ends.begin(), ends.end(), [&](size_t x, size_t y) { return cost[x] < cost[y]; });
+  std::vector<CoarsePlan> plans;
+  for (size_t end : ends) {
+    CoarsePlan plan;
+    plan.branch.assign(S, 0);
+    plan.psi.assign(S, 0);
+    plan.reconfigure.assign(S, 0);
+    size_t id = end;
+    for (size_t s = S; s-- > 0;) {
+      plan.branch[s] = branches[id / P];
+      plan.psi[s] = static_cast<int>(id % P);
+      if (step4)
+        plan.reconfigure[s] = changed[s * W + id];
+      if (s > 0)
+        id = static_cast<size_t>(from[s * W + id]);
+    }
+    plans.push_back(std::move(plan));
   }
-  return best;
+  return plans;
 }
 
 /// Joints at every point: ψ interpolated between the coarse samples, IK of the plan's branch,
 /// unwrapped next to the previous joints (checked by checkEmittedJoints). At a change of
 /// configuration (step 4) the path continues in the new branch and the change is recorded (its
-/// move is planned by the caller).
+/// move is planned by the caller). The IK at the planned ψ runs in parallel; a point where it
+/// fails (retried at nearby ψ) or where the wrist is singular (θ6 is then taken from the point
+/// before) is solved in the serial pass that unwraps, so the result does not depend on threads.
+/// With stopAtLargeStep the pass ends early (incomplete) once a large step or an unreachable
+/// point is found: the path is then only known not to work.
 RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                     const std::vector<Eigen::Vector3d>& normals, const std::vector<size_t>& coarse,
-                    const CoarsePlan& plan, const RobotPathOptions& o) {
+                    const CoarsePlan& plan, const RobotPathOptions& o,
+                    bool stopAtLargeStep = false) {
   const RobotModel& robot = cell.robot;
   const size_t N = points.size(), S = coarse.size();
   const double dpsi = 2 * M_PI / o.psiSamples;
+  // The plan at every point: ψ, the branch, and whether a change of configuration from point
+  // i - 1 to point i is made there (a joint move, planned by the caller).
+  std::vector<double> psiAt(N);
+  std::vector<int> branchAt(N);
+  std::vector<char> changeAt(N, 0);
+  {
+    int branch = plan.branch[0];
+    size_t seg = 0, nextChange = 1;
+    for (size_t i = 0; i < N; ++i) {
+      while (seg + 1 < S - 1 && coarse[seg + 1] <= i)
+        ++seg;
+      const size_t a = coarse[seg], b = coarse[std::min(seg + 1, S - 1)];
+      double pa = plan.psi[seg] * dpsi, pb = plan.psi[std::min(seg + 1, S - 1)] * dpsi;
+      pb = pa + remainderTwoPi(pb - pa);
+      const double t = b > a ? static_cast<double>(i - a) / static_cast<double>(b - a) : 0.0;
+      psiAt[i] = (1 - t) * pa + t * pb;
+      while (nextChange < S && coarse[nextChange] < i)
+        ++nextChange;
+      if (nextChange < S && coarse[nextChange] == i && plan.reconfigure[nextChange] && i > 0) {
+        branch = plan.branch[nextChange];
+        changeAt[i] = 1;
+      }
+      branchAt[i] = branch;
+    }
+  }
+  std::vector<JointVector> direct(N);
+  std::vector<char> directOk(N, 0);
+  constexpr size_t kChunk = 4096, kBlock = 8 * kChunk;  // parallel items; serial pass blocks
+  auto solveDirect = [&](size_t first, size_t last) {
+    const size_t chunks = (last - first + kChunk - 1) / kChunk;
+    parallelFor(chunks, o.threads, [&](size_t c, int) {
+      for (size_t i = first + c * kChunk; i < std::min(last, first + (c + 1) * kChunk); ++i) {
+        const Isometry f = cell.flangePose(points[i], normals[i], psiAt[i]);
+        directOk[i] = inverseKinematicsBranch(robot, f, branchAt[i], direct[i]) &&
+                      std::abs(std::sin(direct[i][4])) > 1e-9;
+      }
+    });
+  };
   RobotPath path;
   path.branch = plan.branch[0];
   path.joints.resize(N);
   path.psi.resize(N);
   JointVector previous{};
   bool havePrevious = false;
-  int branch = plan.branch[0];
-  size_t seg = 0, nextChange = 1;
   for (size_t i = 0; i < N; ++i) {
-    while (seg + 1 < S - 1 && coarse[seg + 1] <= i)
-      ++seg;
-    const size_t a = coarse[seg], b = coarse[std::min(seg + 1, S - 1)];
-    double pa = plan.psi[seg] * dpsi, pb = plan.psi[std::min(seg + 1, S - 1)] * dpsi;
-    pb = pa + std::remainder(pb - pa, 2 * M_PI);
-    const double t = b > a ? static_cast<double>(i - a) / static_cast<double>(b - a) : 0.0;
-    double psi = (1 - t) * pa + t * pb;
-    while (nextChange < S && coarse[nextChange] < i)
-      ++nextChange;
-    // A change of configuration from point i - 1 to point i (a joint move, planned by the
-    // caller): the new branch's joints at i in (-π, π], as planned, with no step counted.
-    const bool change =
-        nextChange < S && coarse[nextChange] == i && plan.reconfigure[nextChange] && i > 0;
-    if (change) {
-      branch = plan.branch[nextChange];
-      havePrevious = false;
+    if (i % kBlock == 0) {
+      if (stopAtLargeStep && (!path.largeSteps.empty() || !path.unreachable.empty()))
+        break;
+      solveDirect(i, std::min(N, i + kBlock));
     }
-    JointVector qi;
-    Isometry f = cell.flangePose(points[i], normals[i], psi);
-    bool found = inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0);
-    for (int retry = 1; !found && retry <= 3; ++retry) {
-      for (double sign : {1.0, -1.0}) {
-        const double p2 = psi + sign * retry * dpsi;
-        f = cell.flangePose(points[i], normals[i], p2);
-        if (inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0)) {
-          found = true;
-          psi = p2;
-          break;
+    const int branch = branchAt[i];
+    double psi = psiAt[i];
+    if (changeAt[i])
+      havePrevious = false;
+    JointVector qi = direct[i];
+    bool found = directOk[i];
+    if (!found) {
+      Isometry f = cell.flangePose(points[i], normals[i], psi);
+      found = inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0);
+      for (int retry = 1; !found && retry <= 3; ++retry) {
+        for (double sign : {1.0, -1.0}) {
+          const double p2 = psi + sign * retry * dpsi;
+          f = cell.flangePose(points[i], normals[i], p2);
+          if (inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0)) {
+            found = true;
+            psi = p2;
+            break;
+          }
         }
       }
     }
@@ -352,7 +424,7 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
         path.largeSteps.push_back(static_cast<int>(i));
       }
     }
-    if (change) {
+    if (changeAt[i]) {
       Reconfiguration r;
       r.point = static_cast<int>(i - 1);
       r.fromBranch =
@@ -400,6 +472,10 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
   }
 }
 
+bool works(const RobotPath& p) {
+  return p.unreachable.empty() && p.largeSteps.empty();
+}
+
 /// Steps 1–3 (step 4 with changePoint, the points where a change may be made, and flips, the
 /// (point, branch) pairs where the fine pass stepped too far in that branch; see planCoarse): plan, fine pass, and refinement around
 /// large steps. Throws "unreachable cell set-up" when no plan reaches the coarse path.
@@ -425,14 +501,22 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
           blocked[static_cast<size_t>(s - coarse.begin())] |= 1u << branch;
       }
     }
-    const CoarsePlan plan = planCoarse(cell, points, normals, coarse, o, cache, mayChange, blocked);
-    if (plan.branch.empty()) {
+    const std::vector<CoarsePlan> plans =
+        planCoarse(cell, points, normals, coarse, o, cache, mayChange, blocked);
+    if (plans.empty()) {
       throw GeoLatticeError(
           "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously "
           "(check the nozzle "
           "position, the part-on-flange transform and the part size)");
     }
-    path = solveFine(cell, points, normals, coarse, plan, o);
+    path = solveFine(cell, points, normals, coarse, plans[0], o);
+    // The cheapest plan flips between its samples or misses points: the plan of the next
+    // branch that the fine pass follows, if any, before refining the cheapest one (a flip
+    // between samples often stays under denser samples; another branch may have none).
+    for (size_t k = 1; k < plans.size() && !works(path); ++k) {
+      if (works(solveFine(cell, points, normals, coarse, plans[k], o, true)))
+        path = solveFine(cell, points, normals, coarse, plans[k], o);
+    }
     path.refinements = pass;
     path.coarseSamples = static_cast<int>(coarse.size());
     if (path.largeSteps.empty() || pass == o.refinements) {
@@ -457,10 +541,6 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
     coarse.erase(std::unique(coarse.begin(), coarse.end()), coarse.end());
   }
   return path;
-}
-
-bool works(const RobotPath& p) {
-  return p.unreachable.empty() && p.largeSteps.empty();
 }
 
 /// The part's bounding sphere in the base frame when the robot is at q: centre (m) of the
@@ -576,7 +656,7 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
     box.extend(p);
   const Eigen::Vector3d centre = box.center();
   const double radius = cell.partScale * 0.5 * box.diagonal().norm();
-  StateCache cache(cell, points, normals, o, 0);  // all rounds; every core
+  StateCache cache(cell, points, normals, o, o.threads);  // all rounds
   std::vector<std::pair<int, int>> flips;
   std::vector<char> excluded(N, 0);  // a change there could not be made
   // The coarse samples with both points of every change; kept (densified) across the rounds.
@@ -664,11 +744,11 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
   }
   if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2 || !(o.maxJointStepDeg > 0) ||
       o.refinements < 0 || !(o.reconfigurationCost >= 0) || !(o.nozzleLength >= 0) ||
-      !(o.reconfigurationMargin >= 0) || !(o.maxRetreat >= 0)) {
+      !(o.reconfigurationMargin >= 0) || !(o.maxRetreat >= 0) || o.threads < 0) {
     throw GeoLatticeError(
         "robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2, "
         "max joint step > 0, refinements >= 0, reconfiguration cost, nozzle length, margin and "
-        "retreat >= 0)");
+        "retreat >= 0, threads >= 0)");
   }
   const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
   std::vector<size_t> coarse;
@@ -681,7 +761,7 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
   const bool step4 = o.reconfigure && !kind.empty();
   RobotPath path;
   try {
-    StateCache cache(cell, points, normals, o, 1);  // serial: the layout search runs several
+    StateCache cache(cell, points, normals, o, o.threads);
     std::vector<size_t> refined = coarse;
     path = planAndRefine(cell, points, normals, refined, o, cache);
   } catch (const GeoLatticeError&) {

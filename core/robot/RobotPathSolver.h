@@ -9,17 +9,21 @@
 ///    maxPsiStep grid cells between samples; infeasible states (no IK, joint limits) cost ∞.
 ///    Joints are carried as reached along the path (turns add up, no folding modulo 2π), so a
 ///    path that would wind a joint past its limit is infeasible too.
-///    The branch with the least cost wins.
-/// 2. Fine pass: ψ is interpolated between the coarse samples, IK of the chosen branch is
+///    The branches are ranked by their least cost.
+/// 2. Fine pass: ψ is interpolated between the coarse samples, IK of the cheapest branch is
 ///    solved at every point and unwrapped to the joint values nearest to the previous ones
 ///    (multiples of 2π inside the ±2π limits), so joints stay continuous. A point whose IK
 ///    fails is retried at nearby ψ; if that fails too it is reported in `unreachable` (never
-///    skipped silently) and keeps the previous joints.
+///    skipped silently) and keeps the previous joints. When this path steps too far or misses
+///    points, the plans of the other branches are followed in the order of their cost, and the
+///    first without either is taken (a flip between two samples often stays when they are
+///    made denser, below; another branch may have none).
 /// 3. Refinement: where a joint still steps by more than maxJointStepDeg between consecutive
 ///    points (ψ was only interpolated between two coarse samples, and the wrist flipped near a
 ///    singularity or a joint ran into its limit), the coarse interval around the step is sampled
 ///    64 times more densely and the plan is made again (up to `refinements` passes). Steps left
-///    are listed in `largeSteps` for the caller to refuse.
+///    are listed in `largeSteps` for the caller to refuse. Each pass plans every branch again
+///    and follows the others as in 2.
 /// 4. Reconfiguration (only when 1–3 leave unreachable points or large steps, and the point kinds
 ///    are given): one IK branch and a continuous ψ per stretch between changes instead of one
 ///    for the whole path. The plan of step 1 runs over all (branch, ψ) states at once; a step
@@ -38,8 +42,10 @@
 ///    whose move cannot be made so is excluded and the plan made again (at most 12 plans). The
 ///    path as solved by 1–3 is kept when this does not remove every unreachable point and large
 ///    step. Robot self-collision and other obstacles of the cell are not modelled.
-/// Cost O(samples · ψ² · 8 + N) IK solutions; 1M points ≈ 1 s; step 4 adds one IK per state at
-/// every air move's coarse samples.
+/// Cost O(samples · ψ · 8) IK solutions for the plan and O(N) for each fine pass (the other
+/// branches' passes stop at their first large step), in parallel over `threads` (the result
+/// does not depend on them); 1M points ≈ 1 s; step 4 adds one IK per state at every air
+/// move's coarse samples.
 #include "robot/RobotCell.h"
 
 #include <vector>
@@ -60,6 +66,7 @@ struct RobotPathOptions {
   double nozzleLength = 0.25;       ///< m: nozzle and holder length kept clear during a joint move
   double reconfigurationMargin = 0.02;  ///< m added to the part's bounding sphere (the plate)
   double maxRetreat = 0.4;              ///< m: the farthest the part is moved away from the nozzle
+  int threads = 0;  ///< workers for the IK (0: every core); results do not depend on it
 };
 
 /// A change of IK branch (or of ψ) at an air move, made away from the part (module comment,

@@ -2,7 +2,8 @@
 // a continuous ψ cannot follow — the nozzle axis turns by 100 degrees in one step at the end of
 // every air move — is followed with reconfiguration moves at those air moves, each checked here
 // on its own (straight retreat, joint move clear of the nozzle and the floor, FK at both ends),
-// and written into the URScript program. A path that one branch follows keeps its plan.
+// and written into the URScript program. A path that one branch follows keeps its plan; the
+// number of threads changes nothing.
 #include "common/Error.h"
 #include "program/URScriptWriter.h"
 #include "robot/RobotPathSolver.h"
@@ -207,4 +208,41 @@ TEST(RobotPathSolver, BadReconfigurationInput) {
   RobotPathOptions o;
   o.maxRetreat = -1;
   EXPECT_THROW(solveRobotPath(cell, p.points, p.normals, o, p.kind), GeoLatticeError);
+}
+
+TEST(RobotPathSolver, TheResultDoesNotDependOnTheThreads) {
+  // 70,000 points (more than two blocks of the fine pass) of a raster whose nozzle axis tilts
+  // up to ~27 degrees and turns with z, and the reconfigured path: one worker and three workers
+  // give the same joints, ψ, steps and reconfigurations, to the last bit.
+  ConstructedPath raster;
+  for (int i = 0; i < 70000; ++i) {
+    const double z = 0.6 + 30.0 * i / 70000, tilt = 0.5 * std::sin(z / 10);
+    raster.points.emplace_back(20 * std::sin(0.01 * i), std::fmod(0.0005 * i, 40.0) - 20.0, z);
+    raster.normals.push_back(
+        Eigen::Vector3d(tilt * std::cos(z / 7), tilt * std::sin(z / 7), 1).normalized());
+    raster.kind.push_back(i % 5000 == 0 ? 2 : 0);
+  }
+  const RobotCell cell;
+  for (const ConstructedPath& p : {raster, abruptAirMoves(100)}) {
+    RobotPathOptions one, three;
+    one.threads = 1;
+    three.threads = 3;
+    const RobotPath a = solveRobotPath(cell, p.points, p.normals, one, p.kind);
+    const RobotPath b = solveRobotPath(cell, p.points, p.normals, three, p.kind);
+    EXPECT_TRUE(a.unreachable.empty());
+    EXPECT_EQ(a.joints, b.joints);
+    EXPECT_EQ(a.psi, b.psi);
+    EXPECT_EQ(a.branch, b.branch);
+    EXPECT_EQ(a.largeSteps, b.largeSteps);
+    EXPECT_EQ(a.maxJointStepDeg, b.maxJointStepDeg);
+    ASSERT_EQ(a.reconfigurations.size(), b.reconfigurations.size());
+    for (size_t k = 0; k < a.reconfigurations.size(); ++k) {
+      EXPECT_EQ(a.reconfigurations[k].point, b.reconfigurations[k].point);
+      EXPECT_EQ(a.reconfigurations[k].leave, b.reconfigurations[k].leave);
+      EXPECT_EQ(a.reconfigurations[k].retreatTo, b.reconfigurations[k].retreatTo);
+    }
+  }
+  RobotPathOptions bad;
+  bad.threads = -1;
+  EXPECT_THROW(solveRobotPath(cell, raster.points, raster.normals, bad), GeoLatticeError);
 }
