@@ -524,15 +524,25 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
     }
     // Between two coarse samples ψ was only interpolated, and the joints jumped (a wrist flip
     // near a singularity, or a joint reaching its limit): sample the path densely there
-    // (stride / 64 apart over the coarse interval around each jump) and plan again.
+    // (stride / 64 apart over the coarse interval around each jump) and plan again. At most
+    // 4 · coarseSamples new samples per pass, in path order: thousands of large steps are a
+    // bound the path cannot keep, not flips, and would only make every later plan slower.
     const size_t fine = std::max<size_t>(1, stride / 64);
+    const size_t budget = 4 * static_cast<size_t>(o.coarseSamples);
     std::vector<size_t> added;
+    size_t lastFrom = N, count = 0;
     for (int i : path.largeSteps) {
       const auto hi = std::upper_bound(coarse.begin(), coarse.end(), static_cast<size_t>(i));
       const size_t from = hi == coarse.begin() ? 0 : *(hi - 1);
       const size_t to = hi == coarse.end() ? N - 1 : *hi;
-      for (size_t j = from; j <= to; j += fine)
-        added.push_back(j);
+      if (from != lastFrom) {  // the large steps are sorted: one interval's are together
+        if (count >= budget)
+          break;
+        for (size_t j = from; j <= to; j += fine)
+          added.push_back(j);
+        count += (to - from) / fine + 1;
+        lastFrom = from;
+      }
       added.push_back(static_cast<size_t>(i - 1));
       added.push_back(static_cast<size_t>(i));
     }
@@ -673,6 +683,8 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
   // go away with denser samples, and each round keeps the samples of the one before.
   RobotPathOptions perRound = o;
   perRound.refinements = std::min(o.refinements, 1);
+  size_t fewestLarge = N + 1;  // over the rounds so far
+  int roundsWithoutProgress = 0;
   for (int round = 0; round < kReconfigurationRounds; ++round) {
     RobotPath path;
     try {
@@ -682,6 +694,14 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
     }
     if (!path.unreachable.empty())
       return false;
+    // Two plans in a row without fewer large steps: the changes the rounds can make do not
+    // remove them (e.g. a joint step bound below what the path needs between its points).
+    if (path.largeSteps.size() < fewestLarge) {
+      fewestLarge = path.largeSteps.size();
+      roundsWithoutProgress = 0;
+    } else if (++roundsWithoutProgress >= 2) {
+      return false;
+    }
     // A step too large inside an air move becomes a place for a change; inside a stretch,
     // the branch may not be kept there. Plan again.
     bool newChange = false;

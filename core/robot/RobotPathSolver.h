@@ -21,7 +21,9 @@
 /// 3. Refinement: where a joint still steps by more than maxJointStepDeg between consecutive
 ///    points (ψ was only interpolated between two coarse samples, and the wrist flipped near a
 ///    singularity or a joint ran into its limit), the coarse interval around the step is sampled
-///    64 times more densely and the plan is made again (up to `refinements` passes). Steps left
+///    64 times more densely and the plan is made again (up to `refinements` passes; at most
+///    4 · coarseSamples new samples per pass, so a bound the path cannot keep anywhere does not
+///    make every later plan slower). Steps left
 ///    are listed in `largeSteps` for the caller to refuse. Each pass plans every branch again
 ///    and follows the others as in 2.
 /// 4. Reconfiguration (only when 1–3 leave unreachable points or large steps, and the point kinds
@@ -39,7 +41,8 @@
 ///    next point along that point's nozzle axis (the nozzle then moves inside its own volume at
 ///    that station, which the collision verifier checked). The retreat lines are solved every
 ///    5 mm (no step above maxJointStepDeg) and the joint move is checked every degree; a change
-///    whose move cannot be made so is excluded and the plan made again (at most 12 plans). The
+///    whose move cannot be made so is excluded and the plan made again (at most 12 plans, and
+///    no more once two plans in a row leave no fewer large steps). The
 ///    path as solved by 1–3 is kept when this does not remove every unreachable point and large
 ///    step. Robot self-collision and other obstacles of the cell are not modelled.
 /// Cost O(samples · ψ · 8) IK solutions for the plan and O(N) for each fine pass (the other

@@ -246,3 +246,24 @@ TEST(RobotPathSolver, TheResultDoesNotDependOnTheThreads) {
   bad.threads = -1;
   EXPECT_THROW(solveRobotPath(cell, raster.points, raster.normals, bad), GeoLatticeError);
 }
+
+TEST(RobotPathSolver, ABoundThePathCannotKeepDoesNotGrowThePlan) {
+  // A joint step bound of 0.01 degrees: nearly every step of a 20,000-point raster is above it.
+  // Those are not flips that denser samples remove; the refinement adds at most
+  // 4 · coarseSamples samples per pass (it used to sample the whole path), and the steps stay
+  // reported for the caller to refuse.
+  ConstructedPath raster;
+  for (int i = 0; i < 20000; ++i) {
+    const double z = 0.6 + 10.0 * i / 20000;
+    raster.points.emplace_back(20 * std::sin(0.01 * i), std::fmod(0.0005 * i, 40.0) - 20.0, z);
+    raster.normals.push_back(Eigen::Vector3d(0.3 * std::cos(z), 0.3 * std::sin(z), 1).normalized());
+    raster.kind.push_back(i % 2000 == 0 ? 2 : 0);
+  }
+  RobotPathOptions o;
+  o.maxJointStepDeg = 0.01;
+  const RobotPath p = solveRobotPath(RobotCell{}, raster.points, raster.normals, o, raster.kind);
+  EXPECT_GT(p.largeSteps.size(), 10000u);
+  EXPECT_TRUE(p.reconfigurations.empty());
+  EXPECT_LE(p.coarseSamples, 1 + o.coarseSamples + o.refinements * 5 * o.coarseSamples)
+      << "refined " << p.refinements << " times";
+}
