@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Whole pipeline on every bundled test model (docs/performance.md, "Whole pipeline per test model").
 
-Runs `geolattice run MODEL -o OUT/NAME --replay-steps 0` with the default options under
+Runs `geolattice run MODEL -o OUT/NN_NAME --replay-steps 0` with the default options (and the
+README's demo, the bunny with --orient auto) under
 /usr/bin/time, one model after the other, and prints a Markdown table: stage seconds from
 report.json, total wall and peak resident memory, toolpath points, the strict collision verdict
 on the full toolpath, the UR5 program's largest joint step and the G-code outcome.
@@ -20,6 +21,7 @@ MODELS = [  # name, file, placement options
     ("Y (52 mm)", "y_shape.obj", []),
     ("three-branch ×1.5 (81 mm)", "three_branch_tree.obj", ["--scale", "1.5"]),
     ("bunny 80 mm", "bunny.obj", ["--fit-size", "80"]),
+    ("demo: bunny 80 mm, --orient auto", "bunny.obj", ["--fit-size", "80", "--orient", "auto"]),
     ("spot 80 mm", "spot.obj", ["--fit-size", "80"]),
     ("ring (tet input)", "ring.tet", []),
     ("topopt (genus 6)", "topopt_new4_surf.obj", []),
@@ -35,8 +37,8 @@ def main():
         del args[i:i + 2]
     out = args[0] if args else "/tmp/geolattice-models"
     rows = []
-    for name, file, options in MODELS:
-        d = os.path.join(out, file.split(".")[0])
+    for k, (name, file, options) in enumerate(MODELS):
+        d = os.path.join(out, "%02d_%s" % (k, file.split(".")[0]))
         os.makedirs(d, exist_ok=True)
         cmd = ["/usr/bin/time", "-f", "%e %M", binary, "run", os.path.join(ROOT, "testdata", file), "-o", d,
                "--replay-steps", "0", "-q"] + options

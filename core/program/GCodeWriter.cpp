@@ -126,12 +126,6 @@ std::string comment(GCodeFlavor f, std::string text) {
   return "(" + text + ")";
 }
 
-/// Fixed-point number, at most `decimals` decimals, no exponent (RS274NGC reads "1e3" as an E
-/// word), no "-0".
-std::string num(double v, int decimals = 5) {
-  return fixedNumber(v, decimals);
-}
-
 }  // namespace
 
 GCodeStats writeGCode(const std::vector<Eigen::Vector3d>& points,
@@ -275,6 +269,7 @@ GCodeStats writeGCode(const std::vector<Eigen::Vector3d>& points,
   previousC = cs[0];
   Eigen::Vector3d previousX = Eigen::Vector3d::Zero();
   const char u = o.extrusionAxis;
+  std::string moves;
   for (size_t i = 0; i < N; ++i) {
     const double tilt = tilts[i], c = cs[i];
     const Eigen::Matrix3d r =
@@ -291,34 +286,57 @@ GCodeStats writeGCode(const std::vector<Eigen::Vector3d>& points,
     const double t = feedRate[i] > 0 && len > 0 ? len / feedRate[i] : 0.001;  // s
     const bool air = kind[i] == 2;
     const bool rapid = air || i == 0;
-    out << (rapid ? "G0" : "G1") << " X" << num(x.x()) << " Y" << num(x.y()) << " Z" << num(x.z())
-        << ' ' << tiltAxis << num(tilt) << " C" << num(c);
+    // The moves are built in `moves` and written every 4096 points (one stream call per block);
+    // numbers in fixed point, at most 5 decimals (3 for F), no exponent (RS274NGC reads "1e3"
+    // as an E word), no "-0" (FixedNumber.h).
+    auto put = [&moves](const char* word, double v, int decimals = 5) {
+      moves += word;
+      appendFixed(moves, v, decimals);
+    };
+    moves += rapid ? "G0" : "G1";
+    put(" X", x.x());
+    put(" Y", x.y());
+    put(" Z", x.z());
+    moves += ' ';
+    moves += tiltAxis;
+    appendFixed(moves, tilt, 5);
+    put(" C", c);
     const double de = extrusion[i] - previousE;
     if (!rapid) {
       if (linuxcnc) {
-        out << ' ' << u << num(extrusion[i]) << " F" << num(60.0 / t);  // G93: 1 / minutes
+        moves += ' ';
+        moves += u;
+        appendFixed(moves, extrusion[i], 5);
+        put(" F", 60.0 / t);  // G93: 1 / minutes
       } else {
         if (de != 0) {
-          out << " E" << num(de);
+          put(" E", de);
         }
         // The nozzle moves `len` along the part in t seconds: the machine axes cover their own
         // displacement in the same time (a pure table turn: its degrees).
         const double machine = (x - previousX).norm();
         const double rotary = std::max(std::abs(c - previousC), std::abs(tilt - previousTilt));
-        out << " F" << num(60.0 * (machine > 1e-6 ? machine : rotary) / t, 3);
+        put(" F", 60.0 * (machine > 1e-6 ? machine : rotary) / t, 3);
       }
     } else if (!linuxcnc && air && i > 0) {
-      out << " F" << num(60.0 * (feedRate[i] > 0 ? feedRate[i] : 50.0), 3);  // travel speed
+      put(" F", 60.0 * (feedRate[i] > 0 ? feedRate[i] : 50.0), 3);  // travel speed
     }
-    out << '\n';
+    moves += '\n';
     if (air && de != 0) {  // retract or prime at the air point
       if (linuxcnc) {
-        out << "G1 " << u << num(extrusion[i]) << " F" << num(60.0 / o.retractionSeconds) << ' '
-            << comment(f, de < 0 ? "retract" : "prime") << '\n';
+        moves += "G1 ";
+        moves += u;
+        appendFixed(moves, extrusion[i], 5);
+        put(" F", 60.0 / o.retractionSeconds);
       } else {
-        out << "G1 E" << num(de) << " F" << num(60.0 * std::abs(de) / o.retractionSeconds, 3) << ' '
-            << comment(f, de < 0 ? "retract" : "prime") << '\n';
+        put("G1 E", de);
+        put(" F", 60.0 * std::abs(de) / o.retractionSeconds, 3);
       }
+      moves += ' ' + comment(f, de < 0 ? "retract" : "prime") + '\n';
+    }
+    if (i % 4096 == 4095 || i + 1 == N) {
+      out.write(moves.data(), static_cast<std::streamsize>(moves.size()));
+      moves.clear();
     }
     previousE = extrusion[i];
     previousC = c;

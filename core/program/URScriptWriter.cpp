@@ -2,6 +2,7 @@
 
 #include "common/Error.h"
 #include "common/FixedNumber.h"
+#include "common/ParallelFor.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,14 +20,35 @@ namespace {
 constexpr double kReconfigurationSpeed = 0.5;         ///< rad/s of the leading joint (movej v)
 constexpr double kReconfigurationAcceleration = 1.0;  ///< rad/s² (movej a)
 
-std::string poseLiteral(const Isometry& t) {
+/// Appends the pose literal p[x, y, z, rx, ry, rz] of t.
+void appendPose(std::string& s, const Isometry& t) {
   const UrPose p = toUrPose(t);
-  std::string s = "p[";
+  s += "p[";
   for (int i = 0; i < 6; ++i) {
-    s += urNumber(p[i]);
+    appendFixed(s, p[i], 6);
     s += i < 5 ? ", " : "]";
   }
-  return s;
+}
+
+/// Appends "movej([q0, …, q5], a=…, v=…)" with q in rad.
+void appendMovej(std::string& s, const JointVector& q, const char* speeds) {
+  s += "  movej([";
+  for (int j = 0; j < 6; ++j) {
+    appendFixed(s, q[j], 6);
+    s += j < 5 ? ", " : "]";
+  }
+  s += speeds;
+}
+
+/// The longest line of text (without its newline).
+size_t longestLine(const std::string& text) {
+  size_t longest = 0, start = 0;
+  for (size_t end = text.find('\n'); start < text.size(); end = text.find('\n', start)) {
+    const size_t stop = end == std::string::npos ? text.size() : end;
+    longest = std::max(longest, stop - start);
+    start = stop + 1;
+  }
+  return longest;
 }
 
 }  // namespace
@@ -56,9 +78,11 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
   const RobotModel& robot = cell.robot;
   // TCP (part frame) poses and segment times.
   std::vector<Isometry> tcp(N);
-  for (size_t i = 0; i < N; ++i) {
-    tcp[i] = forwardKinematics(robot, rp.joints[i]) * cell.partOnFlange;
-  }
+  constexpr size_t kChunk = 8192;
+  parallelFor((N + kChunk - 1) / kChunk, 0, [&](size_t c, int) {
+    for (size_t i = c * kChunk; i < std::min(N, (c + 1) * kChunk); ++i)
+      tcp[i] = forwardKinematics(robot, rp.joints[i]) * cell.partOnFlange;
+  });
   ProgramStats stats;
   std::vector<double> time(N, 0.0);
   for (size_t i = 1; i < N; ++i) {
@@ -87,27 +111,29 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
       t = std::max(t, std::abs(b[j] - a[j]) / (o.speedFactor * robot.maxSpeed[j]));
     return std::max(t, 0.002);
   };
-  auto reconfiguration = [&](const Reconfiguration& r, std::ostream& out) {
+  auto reconfiguration = [&](const Reconfiguration& r, std::string& out) {
     const double feed = (*in.feedRate)[static_cast<size_t>(r.point)];
     const double away = lineTime(r.arrive, r.retreatFrom, r.retreat, feed);
     const double back = lineTime(r.retreatTo, r.leave, r.retreat, feed);
     double largest = 0;
     for (int j = 0; j < 6; ++j)
       largest = std::max(largest, std::abs(r.retreatTo[j] - r.retreatFrom[j]));
-    out << "  # reconfiguration between toolpath points " << r.point << " and " << r.point + 1
-        << ": IK branch " << r.fromBranch << " -> " << r.toBranch << ", "
-        << urNumber(1000 * r.retreat) << " mm away from the nozzle, joint move clear of it by "
-        << urNumber(1000 * r.clearance) << " mm\n";
-    out << "  set_standard_analog_out(0, 0)\n";
-    out << "  movel(" << poseLiteral(forwardKinematics(robot, r.retreatFrom) * cell.partOnFlange)
-        << ", t=" << urNumber(away) << ", r=0)\n";
-    out << "  movej([";
-    for (int j = 0; j < 6; ++j)
-      out << urNumber(r.retreatTo[j]) << (j < 5 ? ", " : "]");
-    out << ", a=" << urNumber(kReconfigurationAcceleration) << ", v=" << urNumber(jointSpeed)
-        << ")\n";
-    out << "  movel(" << poseLiteral(forwardKinematics(robot, r.leave) * cell.partOnFlange)
-        << ", t=" << urNumber(back) << ", r=0)\n";
+    out += "  # reconfiguration between toolpath points " + std::to_string(r.point) + " and " +
+           std::to_string(r.point + 1) + ": IK branch " + std::to_string(r.fromBranch) + " -> " +
+           std::to_string(r.toBranch) + ", " + urNumber(1000 * r.retreat) +
+           " mm away from the nozzle, joint move clear of it by " + urNumber(1000 * r.clearance) +
+           " mm\n";
+    out += "  set_standard_analog_out(0, 0)\n";
+    out += "  movel(";
+    appendPose(out, forwardKinematics(robot, r.retreatFrom) * cell.partOnFlange);
+    out += ", t=" + urNumber(away) + ", r=0)\n";
+    appendMovej(
+        out, r.retreatTo,
+        (", a=" + urNumber(kReconfigurationAcceleration) + ", v=" + urNumber(jointSpeed) + ")\n")
+            .c_str());
+    out += "  movel(";
+    appendPose(out, forwardKinematics(robot, r.leave) * cell.partOnFlange);
+    out += ", t=" + urNumber(back) + ", r=0)\n";
     stats.moves += 3;
     stats.duration +=
         away + back + largest / jointSpeed + jointSpeed / kReconfigurationAcceleration;
@@ -117,19 +143,15 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
   // Moves as chunks that start at an air move (the only places a program may end), packed into
   // files below the size limit.
   std::vector<std::string> chunks;
-  std::ostringstream chunk;
+  std::string chunk;
   double previousRate = 0;
   for (size_t i = 1; i < N; ++i) {
     const bool air = kind[i] == 2;
-    if (air && kind[i - 1] != 2 && chunk.tellp() > 0) {
-      chunks.push_back(chunk.str());
-      chunk.str("");
+    if (air && kind[i - 1] != 2 && !chunk.empty()) {
+      chunks.push_back(std::move(chunk));
       chunk.clear();
       // A new program may start here: restate the joints and the analog output.
-      chunk << "  movej([";
-      for (int j = 0; j < 6; ++j)
-        chunk << urNumber(jointsBefore(rp, i)[j]) << (j < 5 ? ", " : "]");
-      chunk << ", a=0.5, v=0.2)\n";
+      appendMovej(chunk, jointsBefore(rp, i), ", a=0.5, v=0.2)\n");
       previousRate = -1;
     }
     while (nextReconfiguration != rp.reconfigurations.end() &&
@@ -144,15 +166,19 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
     const double de = (*in.extrusion)[i] - (*in.extrusion)[i - 1];
     const double rate = air ? 0.0 : de / time[i];
     if (air && de != 0) {  // retraction / prime: an extruder move while the robot waits
-      chunk << "  set_standard_analog_out(0, 0)\n";
-      chunk << "  # " << (de < 0 ? "retract " : "prime ") << urNumber(std::abs(de))
-            << " mm of filament\n";
-      chunk << "  sleep(" << urNumber(std::abs(de) / o.retractionRate) << ")\n";
+      chunk += "  set_standard_analog_out(0, 0)\n";
+      chunk += de < 0 ? "  # retract " : "  # prime ";
+      appendFixed(chunk, std::abs(de), 6);
+      chunk += " mm of filament\n  sleep(";
+      appendFixed(chunk, std::abs(de) / o.retractionRate, 6);
+      chunk += ")\n";
       previousRate = 0;
     }
     const double volts = std::clamp(rate / o.maxFilamentRate, 0.0, 1.0);
     if (std::abs(volts - previousRate) > 1e-6) {
-      chunk << "  set_standard_analog_out(0, " << urNumber(volts) << ")\n";  // relative level 0..1
+      chunk += "  set_standard_analog_out(0, ";  // relative level 0..1
+      appendFixed(chunk, volts, 6);
+      chunk += ")\n";
       previousRate = volts;
     }
     // Blend: 0 where the kind changes or at the path's ends.
@@ -162,11 +188,16 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
       const double lb = (tcp[i + 1].translation() - tcp[i].translation()).norm();
       blend = std::min(o.maxBlend, o.blendFraction * std::min(la, lb));
     }
-    chunk << "  movel(" << poseLiteral(tcp[i]) << ", t=" << urNumber(time[i])
-          << ", r=" << urNumber(blend) << ")\n";
+    chunk += "  movel(";
+    appendPose(chunk, tcp[i]);
+    chunk += ", t=";
+    appendFixed(chunk, time[i], 6);
+    chunk += ", r=";
+    appendFixed(chunk, blend, 6);
+    chunk += ")\n";
     ++stats.moves;
   }
-  chunks.push_back(chunk.str());
+  chunks.push_back(std::move(chunk));
 
   size_t file = 0;
   std::string body;
@@ -179,7 +210,9 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
     for (const std::string& line : o.headerComments) {
       head << "  # " << line << "\n";
     }
-    head << "  set_tcp(" << poseLiteral(cell.partOnFlange) << ")\n";
+    std::string tcpPose;
+    appendPose(tcpPose, cell.partOnFlange);
+    head << "  set_tcp(" << tcpPose << ")\n";
     head << "  # analog out 0 drives the extruder: level 0..1 (0-10 V) = 0-"
          << urNumber(o.maxFilamentRate) << " mm/s of filament\n";
     head << "  set_standard_analog_out(0, 0)\n";
@@ -191,10 +224,7 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
     }
     const std::string text = head.str() + body + "  set_standard_analog_out(0, 0)\nend\n";
     openFile(file) << text;
-    std::istringstream lines(text);
-    std::string line;
-    while (std::getline(lines, line))
-      stats.maxLineLength = std::max(stats.maxLineLength, line.size());
+    stats.maxLineLength = std::max(stats.maxLineLength, longestLine(text));
     body.clear();
     ++file;
   };

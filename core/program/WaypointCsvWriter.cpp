@@ -1,7 +1,7 @@
 #include "program/WaypointCsvWriter.h"
 
 #include "common/Error.h"
-#include "program/URScriptWriter.h"  // urNumber: the shortest round-trip decimal
+#include "common/FixedNumber.h"
 
 namespace geolattice {
 
@@ -14,12 +14,22 @@ void writeWaypointCsv(const std::vector<Eigen::Vector3d>& points,
     throw GeoLatticeError("waypoint CSV: toolpath arrays differ in length");
   }
   out << "x,y,z,nx,ny,nz,e,kind,layer\n";
+  std::string rows;  // written every 4096 rows: one stream call per block, not per number
   for (size_t i = 0; i < N; ++i) {
     const Eigen::Vector3d n = normals[i].normalized();
-    out << urNumber(points[i].x()) << ',' << urNumber(points[i].y()) << ','
-        << urNumber(points[i].z()) << ',' << urNumber(n.x()) << ',' << urNumber(n.y()) << ','
-        << urNumber(n.z()) << ',' << urNumber(extrusion[i]) << ',' << kind[i] << ',' << layer[i]
-        << '\n';
+    for (double v :
+         {points[i].x(), points[i].y(), points[i].z(), n.x(), n.y(), n.z(), extrusion[i]}) {
+      appendFixed(rows, v, 6);  // as urNumber (URScriptWriter.h)
+      rows += ',';
+    }
+    rows += std::to_string(kind[i]);
+    rows += ',';
+    rows += std::to_string(layer[i]);
+    rows += '\n';
+    if (i % 4096 == 4095 || i + 1 == N) {
+      out.write(rows.data(), static_cast<std::streamsize>(rows.size()));
+      rows.clear();
+    }
   }
 }
 
