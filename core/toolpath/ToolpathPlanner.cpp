@@ -11,6 +11,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <functional>
 #include <sstream>
 
 namespace geolattice {
@@ -127,9 +128,14 @@ void requireToolpathWithinLimit(const LatticeGraph& g, const ToolpathOptions& o)
 }
 
 /// Rotation steps and subdivision, then rounds of axis clearance (each followed by the rotation
-/// steps its tilts need) until no station collides or no tilt helps.
+/// steps its tilts need) until no station collides or no tilt helps. Returns the stations left
+/// colliding. With `replannable` (a station the caller can move, e.g. on a hop it can send over
+/// the safe box) it returns early, the path unfinished, as soon as a round finds such stations
+/// that no tilt clears: their obstacles only grow in later rounds, so they would stay, and the
+/// caller plans the path again anyway.
 std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
-                            const ProgressReporter& progress) {
+                            const ProgressReporter& progress,
+                            const std::function<bool(int)>& replannable = {}) {
   AxisClearanceOptions clearance = o.clearance;
   clearance.shouldAbort = o.shouldAbort;
   const double maxTurn = o.maxTurnDeg * M_PI / 180.0;
@@ -162,6 +168,14 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
         clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, clearance,
                         fixed, &unresolvable);
     progress.report(static_cast<double>(round + 1) / kMaxRounds);
+    if (replannable) {
+      std::vector<int> stuck;
+      for (int i : r.colliding)
+        if (unresolvable[static_cast<size_t>(i)] && replannable(i))
+          stuck.push_back(i);
+      if (!stuck.empty())
+        return stuck;
+    }
     if (round == 0) {
       path.collidingStations = r.collidingStations;
     }
@@ -484,18 +498,24 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
     const ProgressReporter attemptProgress = progress.part(
         attempt == 0 ? 0.0 : 0.85 + 0.05 * attempt, attempt == 0 ? 0.9 : 0.9 + 0.05 * attempt);
     attemptProgress.part(0, 0.3).report(1.0);
-    const std::vector<int> uncleared = finishAxes(path, o, attemptProgress.part(0.3, 1.0));
+    auto replannable = [&](int i) {
+      const int tour = path.pathIndex[i];
+      return path.kind[i] == MoveKind::Air && tour >= 0 && tour < static_cast<int>(hopped.size()) &&
+             hopped[tour] && !overTheBox[tour];
+    };
+    constexpr int kLastAttempt = 2;
+    const std::vector<int> uncleared =
+        finishAxes(path, o, attemptProgress.part(0.3, 1.0),
+                   attempt < kLastAttempt ? std::function<bool(int)>(replannable) : nullptr);
     int replan = 0;
     for (int i : uncleared) {
-      const int tour = path.pathIndex[i];
-      if (path.kind[i] == MoveKind::Air && tour >= 0 && tour < static_cast<int>(hopped.size()) &&
-          hopped[tour] && !overTheBox[tour]) {
-        overTheBox[tour] = 1;
+      if (replannable(i)) {
+        overTheBox[path.pathIndex[i]] = 1;
         ++replan;
       }
     }
     replannedHops += replan;
-    if (replan == 0 || attempt == 2) {
+    if (replan == 0 || attempt == kLastAttempt) {
       break;
     }
   }
