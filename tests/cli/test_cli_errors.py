@@ -588,6 +588,24 @@ class CliGateTest(unittest.TestCase):
         with open(os.path.join(out, "orientation.csv")) as f:
             self.assertGreater(len(f.readlines()), 100)
 
+    def test_the_knight_under_the_example_printhead_stays_out_of_the_plate(self):
+        # Issue 15: no station or air move of the knight with the nozzle in the build plate. With
+        # the default unbounded 45° cone its overhang stations (axes below the horizon under the
+        # head) reach the plate slab and the gate stops it (test above); the real printhead ends,
+        # and the auto-oriented knight is printed: every station (air moves included) clear of
+        # the plate and the part, the robot program written.
+        result, report, programs, out = self.run_cli(
+            "decimated-knight.off", "--fit-size", "80", "--orient", "auto", "--printhead",
+            os.path.join(TESTDATA, "printhead_slim.obj"))
+        self.assertEqual(result.returncode, 0, result.stderr)
+        t = report["toolpath"]
+        self.assertGreater(t["stations"], 100000)
+        self.assertEqual(t["stations"], t["points"])  # every point a station, air moves included
+        self.assertEqual(t["plate_stations"], 0)
+        self.assertEqual(t["violating_stations"], 0)
+        self.assertTrue(report["gates"]["collision"]["passed"])
+        self.assertIn("print_part.script", programs)
+
     def test_a_wide_tilt_limit_still_tilts_the_least(self):
         # The Y under the example printhead: 33 stations collide along the layer normal, each is
         # cleared by a tilt below 11 degrees. With the 30 degree limit the projection off one
