@@ -12,10 +12,6 @@ namespace geolattice {
 
 namespace {
 
-bool works(const RobotPath& p) {
-  return p.unreachable.empty() && p.largeSteps.empty();
-}
-
 /// Lower is better: unreachable points, then large steps, then the largest step.
 double badness(const RobotPath& p, size_t points) {
   return 1e6 * static_cast<double>(p.unreachable.size()) / std::max<size_t>(points, 1) +
@@ -40,7 +36,7 @@ CellLayoutResult solveWithCellLayout(const RobotCell& cell,
     }
     unreachableCell = e.what();
   }
-  if (unreachableCell.empty() && (works(result.path) || !l.search)) {
+  if (unreachableCell.empty() && (result.path.works() || !l.search)) {
     return result;
   }
   // The candidates: the mounting turned about the flange z axis and moved along it.
@@ -102,7 +98,7 @@ CellLayoutResult solveWithCellLayout(const RobotCell& cell,
     } catch (const GeoLatticeError&) {
       continue;
     }
-    if (works(path)) {
+    if (path.works()) {
       result.cell = c.cell;
       result.path = std::move(path);
       result.rotationDeg = c.rotation;

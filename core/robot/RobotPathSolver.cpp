@@ -472,10 +472,6 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
   }
 }
 
-bool works(const RobotPath& p) {
-  return p.unreachable.empty() && p.largeSteps.empty();
-}
-
 /// Steps 1–3 (step 4 with changePoint, the points where a change may be made, and flips, the
 /// (point, branch) pairs where the fine pass stepped too far in that branch; see planCoarse): plan, fine pass, and refinement around
 /// large steps. Throws "unreachable cell set-up" when no plan reaches the coarse path.
@@ -513,9 +509,11 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
     // The cheapest plan flips between its samples or misses points: the plan of the next
     // branch that the fine pass follows, if any, before refining the cheapest one (a flip
     // between samples often stays under denser samples; another branch may have none).
-    for (size_t k = 1; k < plans.size() && !works(path); ++k) {
-      if (works(solveFine(cell, points, normals, coarse, plans[k], o, true)))
-        path = solveFine(cell, points, normals, coarse, plans[k], o);
+    // A probe that works ran to the end: it is that branch's whole fine pass.
+    for (size_t k = 1; k < plans.size() && !path.works(); ++k) {
+      RobotPath probe = solveFine(cell, points, normals, coarse, plans[k], o, true);
+      if (probe.works())
+        path = std::move(probe);
     }
     path.refinements = pass;
     path.coarseSamples = static_cast<int>(coarse.size());
@@ -788,7 +786,7 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
     if (!step4 || !solveReconfigured(cell, points, normals, kind, coarse, o, path))
       throw;
   }
-  if (step4 && !works(path)) {
+  if (step4 && !path.works()) {
     RobotPath reconfigured;
     if (solveReconfigured(cell, points, normals, kind, coarse, o, reconfigured))
       path = std::move(reconfigured);

@@ -102,6 +102,9 @@ struct RobotPath {
   double maxTipError = 0;      ///< m: |FK(q)·partOnFlange·p − nozzle tip| over reachable points
   double maxAxisErrorDeg = 0;  ///< angle between the placed axis n and the nozzle axis
   double seconds = 0;
+
+  /// Every point reachable and no step above the bound: the path can be written.
+  bool works() const { return unreachable.empty() && largeSteps.empty(); }
 };
 
 /// points/normals: toolpath in part units; kind: per point 0 print, 1 perimeter, 2 air (empty:

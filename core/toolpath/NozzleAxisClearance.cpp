@@ -203,7 +203,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
                                     const std::vector<char>& material, const NozzleModel& nozzle,
                                     const AxisClearanceOptions& o,
                                     const std::vector<Vec3>* fixedObstacles,
-                                    std::vector<char>* unresolvable) {
+                                    std::vector<char>* unresolvable, AxisSearchMemo* memo) {
   const auto t0 = std::chrono::steady_clock::now();
   nozzle.validate();
   o.validate();
@@ -294,6 +294,47 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   enum Outcome : char { Known, Unresolved, Tilted };
   std::vector<char> outcome(colliding.size(), Known);
   std::vector<Vec3> clearAxis(colliding.size());
+  // A station's material ordinal; the memo's searches hold for the stations whose earlier
+  // material is the memo's (a common prefix) with the same fixed obstacles and axes.
+  std::vector<int> ordinal(N, -1);
+  std::vector<Vec3> materialPoints;
+  for (size_t i = 0; i < N; ++i) {
+    if (material[i]) {
+      ordinal[i] = static_cast<int>(materialPoints.size());
+      materialPoints.push_back(points[i]);
+    }
+  }
+  std::vector<char> fromMemo(colliding.size(), 0);
+  if (memo) {
+    const std::vector<Vec3> noFixed;
+    const std::vector<Vec3>& fixed = fixedObstacles ? *fixedObstacles : noFixed;
+    size_t prefix = 0;
+    if (memo->fixed == fixed) {
+      const size_t n = std::min(memo->material.size(), materialPoints.size());
+      while (prefix < n && memo->material[prefix] == materialPoints[prefix]) {
+        ++prefix;
+      }
+    }
+    for (size_t i = 0; i < colliding.size(); ++i) {
+      const int j = ordinal[colliding[i]];
+      if (j < 0 || static_cast<size_t>(j) >= prefix ||
+          (unresolvable && (*unresolvable)[colliding[i]])) {
+        continue;
+      }
+      const auto at = std::lower_bound(
+          memo->found.begin(), memo->found.end(), j,
+          [](const std::pair<int, AxisSearchMemo::Entry>& e, int v) { return e.first < v; });
+      const int k = colliding[i];
+      if (at == memo->found.end() || at->first != j || at->second.reference != reference[k] ||
+          at->second.axis != axes[k]) {
+        continue;
+      }
+      fromMemo[i] = 1;
+      outcome[i] = at->second.cleared ? Tilted : Unresolved;
+      clearAxis[i] = at->second.clearAxis;
+      ++memo->reused;
+    }
+  }
   const size_t searchChunks = (colliding.size() + 63) / 64;
   const int workers = workerCount(o.threads, searchChunks);
   std::vector<Obstacles> scratch(workers, Obstacles{all, wide, Vec3::Zero(), {}});
@@ -306,6 +347,9 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
         std::vector<std::pair<double, int>>& byAngle = byAngleOf[w];
         for (size_t i = c * 64; i < std::min(colliding.size(), (c + 1) * 64); ++i) {
           const int k = colliding[i];
+          if (fromMemo[i]) {
+            continue;
+          }
           if (unresolvable && (*unresolvable)[k]) {
             outcome[i] = Known;
             continue;
@@ -353,6 +397,18 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
         }
       },
       abortPoll);
+  if (memo) {  // this pass's searches, for the next one
+    memo->material = std::move(materialPoints);
+    memo->fixed = fixedObstacles ? *fixedObstacles : std::vector<Vec3>{};
+    memo->found.clear();
+    for (size_t i = 0; i < colliding.size(); ++i) {
+      const int k = colliding[i];
+      if (ordinal[k] >= 0 && outcome[i] != Known) {
+        memo->found.push_back(
+            {ordinal[k], {reference[k], axes[k], outcome[i] == Tilted, clearAxis[i]}});
+      }
+    }
+  }
   std::vector<Tilt> tilts;
   for (size_t i = 0; i < colliding.size(); ++i) {
     const int k = colliding[i];

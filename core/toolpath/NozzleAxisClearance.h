@@ -50,6 +50,23 @@ struct AxisClearanceResult {
   double seconds = 0;
 };
 
+/// The least-tilt searches of one pass, for a later pass over a path whose material differs only
+/// after some point (the toolpath planner's attempts differ only in their air moves, which are
+/// not material): a material station whose earlier material, fixed obstacles, reference and
+/// current axis are those of the memo's pass takes that pass's outcome instead of searching
+/// again (the search is a function of exactly these; the result is the same).
+struct AxisSearchMemo {
+  struct Entry {
+    Vec3 reference, axis;  ///< the station's reference and current axis in that pass
+    bool cleared = false;  ///< a clearing tilt was found (else: none within the limit)
+    Vec3 clearAxis;        ///< that tilt's axis
+  };
+  std::vector<Vec3> material;                ///< the pass's material points, in path order
+  std::vector<Vec3> fixed;                   ///< its fixed obstacles
+  std::vector<std::pair<int, Entry>> found;  ///< by material ordinal (sorted): searched stations
+  long long reused = 0;                      ///< searches a pass took from the memo (counter)
+};
+
 /// One pass over the path, time = point index. axes: current unit axes (modified);
 /// reference: the untilted unit layer normals (the tilt limit is measured from them); material:
 /// per point, non-zero if it is deposited material (an obstacle for later stations). Throws
@@ -58,12 +75,15 @@ struct AxisClearanceResult {
 /// unresolvable (optional, one flag per point, in/out): a flagged station that collides is
 /// counted unresolved without a new search, and every station found unresolved is flagged. For
 /// repeated passes over one path: a station's obstacles only grow between passes (points are
-/// inserted, none move), so one no tilt cleared stays so.
+/// inserted, none move), so one no tilt cleared stays so. memo (optional, in/out): searches of
+/// an earlier pass reused where their inputs are the same (AxisSearchMemo); then replaced by
+/// this pass's.
 AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector<Vec3>& axes,
                                     const std::vector<Vec3>& reference,
                                     const std::vector<char>& material, const NozzleModel& nozzle,
                                     const AxisClearanceOptions& options,
                                     const std::vector<Vec3>* fixedObstacles = nullptr,
-                                    std::vector<char>* unresolvable = nullptr);
+                                    std::vector<char>* unresolvable = nullptr,
+                                    AxisSearchMemo* memo = nullptr);
 
 }  // namespace geolattice

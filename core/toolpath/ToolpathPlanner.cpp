@@ -135,7 +135,8 @@ void requireToolpathWithinLimit(const LatticeGraph& g, const ToolpathOptions& o)
 /// caller plans the path again anyway.
 std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
                             const ProgressReporter& progress,
-                            const std::function<bool(int)>& replannable = {}) {
+                            const std::function<bool(int)>& replannable = {},
+                            AxisSearchMemo* memo = nullptr) {
   AxisClearanceOptions clearance = o.clearance;
   clearance.shouldAbort = o.shouldAbort;
   const double maxTurn = o.maxTurnDeg * M_PI / 180.0;
@@ -166,7 +167,7 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
   for (int round = 0; round < kMaxRounds && o.clearance.maxTiltDeg > 0; ++round) {
     const AxisClearanceResult r =
         clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, clearance,
-                        fixed, &unresolvable);
+                        fixed, &unresolvable, round == 0 ? memo : nullptr);
     progress.report(static_cast<double>(round + 1) / kMaxRounds);
     if (replannable) {
       std::vector<int> stuck;
@@ -388,6 +389,9 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
   const std::vector<std::vector<int>> loopsAtStart = loopsAt;
   std::vector<char> overTheBox(walks.size() + 1, 0);
   int replannedHops = 0;
+  // The attempts differ only in air moves (not material): the first clearance round of a later
+  // attempt reuses the earlier one's least-tilt searches of the print stations.
+  AxisSearchMemo memo;
   for (int attempt = 0;; ++attempt) {
     path = base;
     loopsAt = loopsAtStart;
@@ -506,7 +510,7 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
     constexpr int kLastAttempt = 2;
     const std::vector<int> uncleared =
         finishAxes(path, o, attemptProgress.part(0.3, 1.0),
-                   attempt < kLastAttempt ? std::function<bool(int)>(replannable) : nullptr);
+                   attempt < kLastAttempt ? std::function<bool(int)>(replannable) : nullptr, &memo);
     int replan = 0;
     for (int i : uncleared) {
       if (replannable(i)) {

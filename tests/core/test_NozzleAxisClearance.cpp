@@ -167,6 +167,48 @@ TEST(NozzleAxisClearance, AWideLimitStillGivesTheLeastTilt) {
   }
 }
 
+TEST(NozzleAxisClearance, ALaterPassReusesTheSearchesOfStationsWithTheSameEarlierMaterial) {
+  // The toolpath planner's attempts differ only in air moves (not material): a second pass on
+  // the path with air points inserted takes the first pass's searches and gives the axes a pass
+  // without the memo gives; a change of earlier material makes it search again.
+  const Scene s;
+  AxisClearanceOptions o;
+  o.blendLength = 2;
+  AxisSearchMemo memo;
+  std::vector<Vec3> axes = s.axes;
+  const AxisClearanceResult first =
+      clearNozzleAxes(s.points, axes, s.axes, s.material, cone45(), o, nullptr, nullptr, &memo);
+  ASSERT_GT(first.tiltedStations, 0);
+  EXPECT_EQ(memo.reused, 0);
+  EXPECT_EQ(memo.found.size(), static_cast<size_t>(first.collidingStations));
+
+  Scene t = s;  // an air move over the line before the stations (never an obstacle itself)
+  const auto at = static_cast<long>(s.station - 4);
+  for (int j = 0; j < 3; ++j) {
+    t.points.insert(t.points.begin() + at + j, Vec3(-2.0, -2.0 + j, 8.0));
+    t.axes.insert(t.axes.begin() + at + j, Vec3(0, 0, 1));
+    t.material.insert(t.material.begin() + at + j, 0);
+  }
+  std::vector<Vec3> fresh = t.axes, reused = t.axes;
+  const AxisClearanceResult without =
+      clearNozzleAxes(t.points, fresh, t.axes, t.material, cone45(), o);
+  const AxisClearanceResult with =
+      clearNozzleAxes(t.points, reused, t.axes, t.material, cone45(), o, nullptr, nullptr, &memo);
+  EXPECT_EQ(memo.reused, first.collidingStations);  // every material station's search
+  EXPECT_EQ(with.collidingStations, without.collidingStations);
+  EXPECT_EQ(with.tiltedStations, without.tiltedStations);
+  EXPECT_EQ(reused, fresh);
+
+  // The first material point moved: no station's earlier material is the memo's any more.
+  t.points[0].z() += 0.25;
+  std::vector<Vec3> moved = t.axes, movedFresh = t.axes;
+  const long long before = memo.reused;
+  clearNozzleAxes(t.points, moved, t.axes, t.material, cone45(), o, nullptr, nullptr, &memo);
+  EXPECT_EQ(memo.reused, before);
+  clearNozzleAxes(t.points, movedFresh, t.axes, t.material, cone45(), o);
+  EXPECT_EQ(moved, movedFresh);
+}
+
 TEST(NozzleAxisClearance, ReportsStationsNoAllowedTiltClears) {
   Scene s;
   std::vector<Vec3> axes = s.axes;
