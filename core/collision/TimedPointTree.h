@@ -56,6 +56,36 @@ public:
     }
   }
 
+  /// Calls visit(node) for clusters that hold every point with time < now in a leaf the bound
+  /// may touch: a node is reported instead of being descended when it is a leaf or when
+  /// small(centre, radius) says so. Its points are pointAt(i) for i in [node.begin, node.end)
+  /// (some may have time >= now: the caller checks timeOf). Stops when visit returns true.
+  template <class Bound, class Small, class Visit>
+  void forEachCluster(const Bound& bound, int now, Small&& small, Visit&& visit) const {
+    if (nodes_.empty()) {
+      return;
+    }
+    static thread_local std::vector<int> stack;
+    stack.assign(1, 0);
+    while (!stack.empty()) {
+      const Node& node = nodes_[stack.back()];
+      stack.pop_back();
+      if (node.minTime >= now || !bound.mayTouch(node.centre, node.radius)) {
+        continue;
+      }
+      if (node.left >= 0 && !small(node.centre, node.radius)) {
+        stack.push_back(node.left);
+        stack.push_back(node.right);
+        continue;
+      }
+      if (visit(node)) {
+        return;
+      }
+    }
+  }
+  int pointAt(int i) const { return order_[i]; }  ///< the point at position i of the tree's order
+  int timeOf(int q) const { return time_[q]; }
+
 private:
   static constexpr int kLeafSize = 8;
   int build(int begin, int end);

@@ -50,11 +50,12 @@ struct AxisClearanceResult {
   double seconds = 0;
 };
 
-/// The least-tilt searches of one pass, for a later pass over a path whose material differs only
-/// after some point (the toolpath planner's attempts differ only in their air moves, which are
-/// not material): a material station whose earlier material, fixed obstacles, reference and
-/// current axis are those of the memo's pass takes that pass's outcome instead of searching
-/// again (the search is a function of exactly these; the result is the same).
+/// The detection and least-tilt searches of one pass, for a later pass over a path whose
+/// material differs only after some point (the toolpath planner's attempts differ only in their
+/// air moves, which are not material): a material station whose earlier material and fixed
+/// obstacles are those of the memo's pass takes that pass's answer where its axis (and, for the
+/// search, its reference) is the same (both are functions of exactly these: the result is the
+/// same).
 struct AxisSearchMemo {
   struct Entry {
     Vec3 reference, axis;  ///< the station's reference and current axis in that pass
@@ -63,8 +64,19 @@ struct AxisSearchMemo {
   };
   std::vector<Vec3> material;                ///< the pass's material points, in path order
   std::vector<Vec3> fixed;                   ///< its fixed obstacles
+  std::vector<Vec3> detectAxis;              ///< by material ordinal: the axis it was checked at
+  std::vector<char> detectHit;               ///< by material ordinal: material inside the nozzle
   std::vector<std::pair<int, Entry>> found;  ///< by material ordinal (sorted): searched stations
   long long reused = 0;                      ///< searches a pass took from the memo (counter)
+};
+
+/// Stations an earlier pass over the same path found clear, for a pass after points were
+/// inserted into the path (none moved, as PathSubdivision does): such a station whose axis has
+/// not changed since is checked against the inserted material only (material only grows, so the
+/// answer is that of a full check).
+struct KnownClear {
+  std::vector<char> clear;     ///< per point: found clear by the last pass, axis unchanged since
+  std::vector<char> inserted;  ///< per point: inserted into the path since that pass
 };
 
 /// One pass over the path, time = point index. axes: current unit axes (modified);
@@ -77,13 +89,14 @@ struct AxisSearchMemo {
 /// repeated passes over one path: a station's obstacles only grow between passes (points are
 /// inserted, none move), so one no tilt cleared stays so. memo (optional, in/out): searches of
 /// an earlier pass reused where their inputs are the same (AxisSearchMemo); then replaced by
-/// this pass's.
+/// this pass's. known (optional, in/out): KnownClear; on return `clear` holds this pass's clear
+/// stations whose axes it left as they were, `inserted` is untouched.
 AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector<Vec3>& axes,
                                     const std::vector<Vec3>& reference,
                                     const std::vector<char>& material, const NozzleModel& nozzle,
                                     const AxisClearanceOptions& options,
                                     const std::vector<Vec3>* fixedObstacles = nullptr,
                                     std::vector<char>* unresolvable = nullptr,
-                                    AxisSearchMemo* memo = nullptr);
+                                    AxisSearchMemo* memo = nullptr, KnownClear* known = nullptr);
 
 }  // namespace geolattice

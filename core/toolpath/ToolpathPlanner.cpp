@@ -164,10 +164,32 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
   bool checked = false;
   std::vector<int> uncleared;
   std::vector<char> unresolvable(path.points.size(), 0);  // no tilt clears them: not retried
+  // Stations found clear keep that answer through the subdivision: a later round checks them
+  // against the inserted points only.
+  KnownClear known{std::vector<char>(path.points.size(), 0),
+                   std::vector<char>(path.points.size(), 0)};
+  auto subdivideKeepingFlags = [&] {
+    enum : char { kUnresolvable = 1, kClear = 2, kOld = 4 };
+    std::vector<char> flags(path.points.size());
+    for (size_t i = 0; i < flags.size(); ++i) {
+      flags[i] = static_cast<char>((unresolvable[i] ? kUnresolvable : 0) |
+                                   (known.clear[i] ? kClear : 0) | kOld);
+    }
+    const SubdivisionCounts c = subdivideToolpath(path, maxTurn, 0.0, &reference, &flags);
+    unresolvable.resize(flags.size());
+    known.clear.resize(flags.size());
+    known.inserted.resize(flags.size());
+    for (size_t i = 0; i < flags.size(); ++i) {
+      unresolvable[i] = (flags[i] & kUnresolvable) != 0;
+      known.clear[i] = (flags[i] & kClear) != 0;
+      known.inserted[i] = (flags[i] & kOld) == 0;
+    }
+    return c;
+  };
   for (int round = 0; round < kMaxRounds && o.clearance.maxTiltDeg > 0; ++round) {
     const AxisClearanceResult r =
         clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, clearance,
-                        fixed, &unresolvable, round == 0 ? memo : nullptr);
+                        fixed, &unresolvable, round == 0 ? memo : nullptr, &known);
     progress.report(static_cast<double>(round + 1) / kMaxRounds);
     if (replannable) {
       std::vector<int> stuck;
@@ -188,15 +210,17 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
       checked = true;
       break;
     }
-    counts = subdivideToolpath(path, maxTurn, 0.0, &reference, &unresolvable);
+    counts = subdivideKeepingFlags();
     path.rotationSteps += counts.rotationSteps;
     path.subdivisionPoints += counts.inserted;
   }
   if (!checked) {  // count what is left (or, with clearance off, what there is)
     AxisClearanceOptions detectOnly = clearance;
     detectOnly.maxTiltDeg = 0;
-    const AxisClearanceResult r = clearNozzleAxes(path.points, path.normals, reference,
-                                                  materialOf(), o.nozzle, detectOnly, fixed);
+    const bool afterRounds = path.clearanceRounds > 0;
+    const AxisClearanceResult r =
+        clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, detectOnly,
+                        fixed, nullptr, nullptr, afterRounds ? &known : nullptr);
     path.unclearedStations = r.collidingStations;
     uncleared = r.colliding;
     if (path.clearanceRounds == 0) {

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 using namespace geolattice;
@@ -207,6 +208,44 @@ TEST(NozzleAxisClearance, ALaterPassReusesTheSearchesOfStationsWithTheSameEarlie
   EXPECT_EQ(memo.reused, before);
   clearNozzleAxes(t.points, movedFresh, t.axes, t.material, cone45(), o);
   EXPECT_EQ(moved, movedFresh);
+}
+
+TEST(NozzleAxisClearance, AStationKnownClearIsCheckedAgainstTheInsertedPoints) {
+  // A later round after points were inserted: a station found clear with an unchanged axis is
+  // checked against the inserted material only; an inserted point right above a clear station
+  // must still be found, and the pass must give what a full pass gives.
+  const Scene s;
+  AxisClearanceOptions o;
+  o.blendLength = 1;
+  KnownClear known{std::vector<char>(s.points.size(), 0), std::vector<char>(s.points.size(), 0)};
+  std::vector<Vec3> axes = s.axes;
+  const AxisClearanceResult first = clearNozzleAxes(s.points, axes, s.axes, s.material, cone45(), o,
+                                                    nullptr, nullptr, nullptr, &known);
+  ASSERT_GT(first.tiltedStations, 0);
+  const int station = s.station + 8;  // y = 4: clear, far from the tilted ones
+  ASSERT_TRUE(known.clear[station]);
+
+  Scene t = s;
+  std::vector<Vec3> reference = s.axes;
+  const long at = 7;  // after the material line, before every station
+  t.points.insert(t.points.begin() + at, Vec3(0, 4, 2));
+  t.material.insert(t.material.begin() + at, 1);
+  axes.insert(axes.begin() + at, Vec3(0, 0, 1));
+  reference.insert(reference.begin() + at, Vec3(0, 0, 1));
+  known.clear.insert(known.clear.begin() + at, 0);
+  known.inserted.assign(t.points.size(), 0);
+  known.inserted[at] = 1;
+  std::vector<Vec3> full = axes;
+  AxisClearanceOptions detect = o;
+  detect.maxTiltDeg = 0;
+  const AxisClearanceResult partial = clearNozzleAxes(
+      t.points, axes, reference, t.material, cone45(), detect, nullptr, nullptr, nullptr, &known);
+  const AxisClearanceResult whole =
+      clearNozzleAxes(t.points, full, reference, t.material, cone45(), detect);
+  EXPECT_EQ(partial.colliding, whole.colliding);
+  EXPECT_NE(std::find(partial.colliding.begin(), partial.colliding.end(), station + 1),
+            partial.colliding.end());
+  EXPECT_FALSE(known.clear[station + 1]);
 }
 
 TEST(NozzleAxisClearance, ReportsStationsNoAllowedTiltClears) {
