@@ -23,6 +23,40 @@ double angleBetween(const Vec3& a, const Vec3& b) {
   return std::acos(std::clamp(a.dot(b), -1.0, 1.0));
 }
 
+/// cos(beta + asin(s)) for beta >= 0 and s in [0, 1] given cos beta and sin beta, or -1 when that
+/// sum is pi or more: the cosine threshold of an angle plus a ball's angular radius, without
+/// inverse trigonometry.
+double cosOfSum(double cosBeta, double sinBeta, double s) {
+  if (cosBeta < 0 && s >= sinBeta) {
+    return -1.0;  // asin(s) >= pi - beta
+  }
+  return cosBeta * std::sqrt(std::max(0.0, 1 - s * s)) - sinBeta * s;
+}
+
+/// The wide nozzle's largest clear angle over a range of distances from the tip, plus `extra`,
+/// as its cosine and sine: one constant for the cone, a table lookup for a printhead.
+struct ClearAngle {
+  const NozzleVolume& wide;
+  double extra;
+  double cosConstant = 0, sinConstant = 0;
+  ClearAngle(const NozzleVolume& w, double extraRad) : wide(w), extra(extraRad) {
+    if (!wide.head) {
+      cosConstant = std::cos(wide.coneAngle + extra);
+      sinConstant = std::sin(wide.coneAngle + extra);
+    }
+  }
+  void between(double rho0, double rho1, double& c, double& s) const {
+    if (!wide.head) {
+      c = cosConstant;
+      s = sinConstant;
+      return;
+    }
+    const double angle = wide.maxClearAngleBetween(rho0, rho1) + extra;
+    c = std::cos(angle);
+    s = std::sin(angle);
+  }
+};
+
 /// Earlier material that may enter the nozzle at tip p for some axis within the tilt limit, held
 /// as clusters of the kd-tree: leaves near the tip, whole nodes far away (angularly small seen
 /// from the tip). A cluster whose ball lies outside the wide nozzle at an axis is passed over
@@ -41,10 +75,14 @@ struct Obstacles {
   const std::vector<Vec3>& points;
   const NozzleVolume& wide;  ///< the nozzle with the margin added to its angle
   const TimedPointTree& tree;
+  const ClearAngle& clearAngle;  ///< wide's clear angle
   Vec3 tip = Vec3::Zero();
   int now = 0;  ///< the station: material with an earlier time is an obstacle
   std::vector<Cluster> clusters;
-  int lastBlocker = -1;  ///< neighbouring candidate axes are mostly blocked by the same point
+  /// The points that blocked the latest candidate axes, most recent first: neighbouring
+  /// candidates (around a ring of tilts) are mostly blocked by one of a few.
+  std::array<int, 8> blockers{};
+  int blockerCount = 0;
 
   void add(const Vec3& centre, double radius, int begin, int end) {
     Cluster c{Vec3::UnitZ(), -2.0, -1.0, 0.0, true, begin, end};
@@ -55,8 +93,9 @@ struct Obstacles {
       c.direction = v / distance;
       c.sinSpread = radius / distance;
       c.cosSpread = std::sqrt(std::max(0.0, 1 - c.sinSpread * c.sinSpread));
-      const double clear = wide.maxClearAngleBetween(distance - radius, distance + radius);
-      c.cosOutside = std::cos(std::min(M_PI, clear + std::asin(c.sinSpread)));
+      double cosClear, sinClear;
+      clearAngle.between(distance - radius, distance + radius, cosClear, sinClear);
+      c.cosOutside = cosOfSum(cosClear, sinClear, c.sinSpread);
     }
     clusters.push_back(c);
   }
@@ -97,8 +136,11 @@ struct Obstacles {
   }
   /// No obstacle inside the wide nozzle at axis n.
   bool clear(const Vec3& n) {
-    if (lastBlocker >= 0 && wide.contains(tip, n, points[lastBlocker])) {
-      return false;
+    for (int b = 0; b < blockerCount; ++b) {
+      if (wide.contains(tip, n, points[blockers[b]])) {
+        std::rotate(blockers.begin(), blockers.begin() + b, blockers.begin() + b + 1);
+        return false;
+      }
     }
     for (const Cluster& c : clusters) {
       if (!c.around && c.direction.dot(n) <= c.cosOutside) {
@@ -108,7 +150,10 @@ struct Obstacles {
             if (!wide.contains(tip, n, points[q])) {
               return false;
             }
-            lastBlocker = q;
+            blockerCount = std::min<int>(blockerCount + 1, static_cast<int>(blockers.size()));
+            std::rotate(blockers.begin(), blockers.begin() + blockerCount - 1,
+                        blockers.begin() + blockerCount);
+            blockers[0] = q;
             return true;
           })) {
         return false;
@@ -125,8 +170,7 @@ struct Obstacles {
 /// is at least the largest clear angle over the ball's distances.
 struct TiltedNozzleBound {
   NozzleBound cone;
-  const NozzleVolume& wide;
-  double maxTilt;
+  const ClearAngle& clearPlusTilt;  ///< the wide nozzle's clear angle + maxTilt
   bool mayTouch(const Vec3& c, double rho) const {
     if (!cone.mayTouch(c, rho)) {
       return false;
@@ -136,16 +180,19 @@ struct TiltedNozzleBound {
     if (distance <= rho) {
       return true;
     }
-    const double angle = std::acos(std::clamp(v.dot(cone.axis) / distance, -1.0, 1.0)) -
-                         std::asin(rho / distance) - maxTilt;
-    return angle < wide.maxClearAngleBetween(distance - rho, distance + rho);
+    // angle(v, axis) - asin(rho / distance) - maxTilt < clear angle, in cosines
+    double cosBeta, sinBeta;
+    clearPlusTilt.between(distance - rho, distance + rho, cosBeta, sinBeta);
+    return v.dot(cone.axis) / distance > cosOfSum(cosBeta, sinBeta, rho / distance);
   }
 };
 
 /// The least tilt from `reference` (<= maxTilt) whose wide nozzle holds no obstacle; starts from
 /// `current`. Returns false when none is found.
+/// coneAngle: the wide nozzle's half-angle when it is a cone (then a point far enough from the
+/// tip is inside exactly when its angle to the axis is below it), else 0.
 bool findClearAxis(Obstacles& obstacles, const Vec3& reference, const Vec3& current, double maxTilt,
-                   Vec3& result) {
+                   double coneAngle, Vec3& result) {
   // Projection: turn the axis off the deepest obstacle until it sits on the cone's surface. Its
   // answer is clear but not always the least tilt (with a wide limit it can wander far off the
   // reference, and a needless tilt sweeps the nozzle through the neighbours' material): the
@@ -186,7 +233,23 @@ bool findClearAxis(Obstacles& obstacles, const Vec3& reference, const Vec3& curr
     return r;
   }();
   const double largest = projected ? projectedTilt - 1e-9 : maxTilt + 1e-12;
+  // Cone: the obstacle nearest the reference direction, at angle θ, lies inside the cone about
+  // every axis of a ring of tilt t < NA - θ (its angle to such an axis is at most θ + t), so
+  // those rings hold no clear axis (with a margin: the skipped rings are blocked for certain).
+  double blockedBelow = 0;
+  if (coneAngle > 0) {
+    const int q = obstacles.deepest(reference);
+    if (q >= 0) {
+      const Vec3 d = obstacles.points[q] - obstacles.tip;
+      if (d.norm() * std::cos(coneAngle) > obstacles.wide.clearance) {
+        blockedBelow = coneAngle - angleBetween(d.normalized(), reference) - 1e-9;
+      }
+    }
+  }
   for (double tilt = step; tilt <= largest; tilt += step) {
+    if (tilt < blockedBelow) {
+      continue;
+    }
     double bestDot = -2;
     const double cosTilt = std::cos(tilt), sinTilt = std::sin(tilt);
     for (const auto& [cosPhi, sinPhi] : ring) {
@@ -387,10 +450,11 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   const NozzleModel wideModel = nozzle.widened(o.marginDeg);
   const NozzleVolume wide(wideModel);
   const double maxTilt = o.maxTiltDeg * kDeg;
+  const ClearAngle clearAngle(wide, 0.0), clearPlusTilt(wide, maxTilt);
   TiltedNozzleBound gather{
       NozzleBound(wideModel.boundingHalfAngleRad() + maxTilt, wideModel.reach(),
                   -std::numeric_limits<double>::infinity(), wideModel.boundingApexOffset()),
-      wide, maxTilt};
+      clearPlusTilt};
   const double face2 = nozzle.tipFaceRadius * nozzle.tipFaceRadius;
   struct Tilt {
     int station;
@@ -403,6 +467,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   const double hopeless = wideModel.halfAngleDeg * kDeg - maxTilt;
   const bool coneOnly = nozzle.isConeOnly();
   const double cosHopeless = hopeless > 0 ? std::cos(hopeless) : 2.0;
+  const double sinHopeless = hopeless > 0 ? std::sin(hopeless) : 0.0;
   // Each colliding station on its own (its obstacles are fixed): chunks over the workers, the
   // outcome per station, collected in path order afterwards.
   std::vector<char> outcome(colliding.size(), Known);
@@ -431,7 +496,8 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   }
   const size_t searchChunks = (colliding.size() + 63) / 64;
   const int workers = workerCount(o.threads, searchChunks);
-  std::vector<Obstacles> scratch(workers, Obstacles{all, wide, tree, Vec3::Zero(), 0, {}, -1});
+  std::vector<Obstacles> scratch(
+      workers, Obstacles{all, wide, tree, clearAngle, Vec3::Zero(), 0, {}, {}, 0});
   // Clusters: a node is kept whole when it looks smaller than this from the tip. topopt's
   // toolpath stage (before KnownClear): 13.9 s at 0.5°, 9.3 s at 2°, 8.4 s at 4°, 7.2 s at 8°,
   // 8.0 s at 15° (docs/performance.md).
@@ -453,7 +519,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
           obstacles.tip = points[k];
           obstacles.now = k;
           obstacles.clusters.clear();
-          obstacles.lastBlocker = -1;
+          obstacles.blockerCount = 0;
           bound.cone.setStation(points[k], reference[k]);
           const Vec3& r = reference[k];
           // A point above the tip plane for every allowed axis and inside every allowed cone
@@ -479,8 +545,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
                 const Obstacles::Cluster& cl = obstacles.clusters.back();
                 if (coneOnly && cosHopeless < 2 &&
                     (cl.around ||
-                     cl.direction.dot(r) >
-                         std::cos(std::min(M_PI, hopeless + std::asin(cl.sinSpread))))) {
+                     cl.direction.dot(r) > cosOfSum(cosHopeless, sinHopeless, cl.sinSpread))) {
                   cannot = obstacles.anyPoint(cl, hopelessPoint);
                 }
                 return cannot;
@@ -489,7 +554,8 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
             outcome[i] = Unresolved;
             continue;
           }
-          outcome[i] = findClearAxis(obstacles, reference[k], axes[k], maxTilt, clearAxis[i])
+          outcome[i] = findClearAxis(obstacles, reference[k], axes[k], maxTilt,
+                                     coneOnly ? wideModel.halfAngleDeg * kDeg : 0.0, clearAxis[i])
                            ? Tilted
                            : Unresolved;
         }
