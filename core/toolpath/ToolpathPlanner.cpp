@@ -127,6 +127,9 @@ void requireToolpathWithinLimit(const LatticeGraph& g, const ToolpathOptions& o)
       "use a longer segment or tooth length, or raise the size limit (MaximumElements)");
 }
 
+/// Rounds of axis clearance a path gets at most.
+constexpr int kClearanceRounds = 4;
+
 /// Rotation steps and subdivision, then rounds of axis clearance (each followed by the rotation
 /// steps its tilts need) until no station collides or no tilt helps. Returns the stations left
 /// colliding. With `replannable` (a station the caller can move, e.g. on a hop it can send over
@@ -136,7 +139,7 @@ void requireToolpathWithinLimit(const LatticeGraph& g, const ToolpathOptions& o)
 std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
                             const ProgressReporter& progress,
                             const std::function<bool(int)>& replannable = {},
-                            AxisSearchMemo* memo = nullptr) {
+                            std::vector<AxisSearchMemo>* memos = nullptr) {
   AxisClearanceOptions clearance = o.clearance;
   clearance.shouldAbort = o.shouldAbort;
   const double maxTurn = o.maxTurnDeg * M_PI / 180.0;
@@ -160,7 +163,6 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
   }
   const std::vector<Vec3> plate = buildPlateSamples(o.plate, part);
   const std::vector<Vec3>* fixed = plate.empty() ? nullptr : &plate;
-  constexpr int kMaxRounds = 4;
   bool checked = false;
   std::vector<int> uncleared;
   std::vector<char> unresolvable(path.points.size(), 0);  // no tilt clears them: not retried
@@ -186,11 +188,11 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
     }
     return c;
   };
-  for (int round = 0; round < kMaxRounds && o.clearance.maxTiltDeg > 0; ++round) {
-    const AxisClearanceResult r =
-        clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, clearance,
-                        fixed, &unresolvable, round == 0 ? memo : nullptr, &known);
-    progress.report(static_cast<double>(round + 1) / kMaxRounds);
+  for (int round = 0; round < kClearanceRounds && o.clearance.maxTiltDeg > 0; ++round) {
+    const AxisClearanceResult r = clearNozzleAxes(
+        path.points, path.normals, reference, materialOf(), o.nozzle, clearance, fixed,
+        &unresolvable, memos ? &(*memos)[static_cast<size_t>(round)] : nullptr, &known);
+    progress.report(static_cast<double>(round + 1) / kClearanceRounds);
     if (replannable) {
       std::vector<int> stuck;
       for (int i : r.colliding)
@@ -413,9 +415,10 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
   const std::vector<std::vector<int>> loopsAtStart = loopsAt;
   std::vector<char> overTheBox(walks.size() + 1, 0);
   int replannedHops = 0;
-  // The attempts differ only in air moves (not material): the first clearance round of a later
-  // attempt reuses the earlier one's least-tilt searches of the print stations.
-  AxisSearchMemo memo;
+  // The attempts differ only in air moves (not material): each clearance round of a later
+  // attempt reuses the same round's detection and least-tilt searches of the earlier one where
+  // the material before a station is still the same (AxisSearchMemo).
+  std::vector<AxisSearchMemo> memos(kClearanceRounds);
   for (int attempt = 0;; ++attempt) {
     path = base;
     loopsAt = loopsAtStart;
@@ -532,9 +535,9 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
              hopped[tour] && !overTheBox[tour];
     };
     constexpr int kLastAttempt = 2;
-    const std::vector<int> uncleared =
-        finishAxes(path, o, attemptProgress.part(0.3, 1.0),
-                   attempt < kLastAttempt ? std::function<bool(int)>(replannable) : nullptr, &memo);
+    const std::vector<int> uncleared = finishAxes(
+        path, o, attemptProgress.part(0.3, 1.0),
+        attempt < kLastAttempt ? std::function<bool(int)>(replannable) : nullptr, &memos);
     int replan = 0;
     for (int i : uncleared) {
       if (replannable(i)) {
