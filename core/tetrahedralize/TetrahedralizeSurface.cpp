@@ -34,8 +34,12 @@ constexpr double kSimplificationShare = 0.7;
 constexpr double kGuessMeanTetVolumeOverBound = 0.21;
 // log(count) / log(edge) near the target, for the first correction: -3 for a volume-filling
 // mesh, measured -0.5 to -3.2 (median -1.6) on the parts above, flatter where the surface's own
-// triangles drive the refinement. Later corrections use the measured slope.
-constexpr double kFirstSlope = -1.6;
+// triangles drive the refinement. A first run with too many tets is refined by the surface
+// (bunny -1.5, spot -0.9, topopt -1.8: kFirstSlopeOver); one with too few is not, and follows the
+// volume law (ring -3.1, cube -2.9: kFirstSlopeUnder), so one correction reaches the target on
+// every bundled part. Later corrections use the measured slope.
+constexpr double kFirstSlopeOver = -1.6;
+constexpr double kFirstSlopeUnder = -3.0;
 // TetGen runs on one edge length when its output is not a valid mesh (a flat sliver where
 // boundary facets are nearly coplanar): the edge is changed by these factors and it runs again.
 constexpr double kRetryEdgeFactors[] = {0.93, 1.07, 0.87, 1.15};
@@ -400,7 +404,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       return std::abs(std::log(static_cast<double>(count) / target));
     };
     double edge = firstEdge, count = static_cast<double>(best.tets.size());
-    double slope = kFirstSlope;
+    double slope = count > target ? kFirstSlopeOver : kFirstSlopeUnder;
     double tooFine = 0.0,
            tooCoarse = 0.0;  // largest edge with count > target, smallest with count < target
     auto updateBracket = [&](double e, double n) {

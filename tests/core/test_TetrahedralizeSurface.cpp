@@ -112,6 +112,18 @@ TEST(TetrahedralizeSurface, AutomaticEdgeLengthAimsAt75kTetsOnABox) {
   EXPECT_NEAR(r.meshVolume, 96000.0, 1e-6 * 96000.0);
 }
 
+TEST(TetrahedralizeSurface, AVolumeDrivenMissIsCorrectedInOneRun) {
+  // A 30 mm cube's 12 triangles do not drive the refinement: the first guess gives too few tets
+  // (33k) and the count follows the volume law, so the first correction with slope -3 reaches
+  // the target (with the surface-driven -1.6 it overshot to 148k and took a third run).
+  const TetrahedralizeResult r = tetrahedralizeSurface(boxSurface(Vec3(30, 30, 30), 100.0));
+  std::printf("[ cube 30 mm auto ] edge %.3f mm, %d tets, %d TetGen runs, %.2f s\n",
+              r.targetEdgeLength, r.tetCount, r.attempts, r.seconds);
+  EXPECT_EQ(r.attempts, 2);
+  EXPECT_GE(r.tetCount, 60000);
+  EXPECT_LE(r.tetCount, 93750);
+}
+
 TEST(TetrahedralizeSurface, AutomaticEdgeLengthOnTheBunnyAt100mm) {
   const std::string path = testModel("bunny.obj");
   ASSERT_FALSE(path.empty()) << "bunny.obj not found in " << GEOLATTICE_TESTDATA;
