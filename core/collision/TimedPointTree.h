@@ -31,29 +31,17 @@ public:
   /// Bound: anything with `bool mayTouch(centre, radius) const`, e.g. NozzleBound.
   template <class Bound, class Visit>
   void forEachCandidate(const Bound& bound, int now, Visit&& visit) const {
-    if (nodes_.empty()) {
-      return;
-    }
-    static thread_local std::vector<int> stack;  // query scratch: queries may run on many threads
-    stack.assign(1, 0);
-    while (!stack.empty()) {
-      const Node& node = nodes_[stack.back()];
-      stack.pop_back();
-      if (node.minTime >= now || !bound.mayTouch(node.centre, node.radius)) {
-        continue;
-      }
-      if (node.left >= 0) {
-        stack.push_back(node.left);
-        stack.push_back(node.right);
-        continue;
-      }
-      for (int i = node.begin; i < node.end; ++i) {
-        const int q = order_[i];
-        if (time_[q] < now && visit(q)) {
-          return;
-        }
-      }
-    }
+    forEachCluster(
+        bound, now, [](const Eigen::Vector3d&, double) { return false; },
+        [&](const Node& leaf) {
+          for (int i = leaf.begin; i < leaf.end; ++i) {
+            const int q = order_[i];
+            if (time_[q] < now && visit(q)) {
+              return true;
+            }
+          }
+          return false;
+        });
   }
 
   /// Calls visit(node) for clusters that hold every point with time < now in a leaf the bound
