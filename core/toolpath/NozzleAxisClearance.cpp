@@ -319,20 +319,22 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   }
   const TimedPointTree tree(all, obstacleTime);
 
-  // A station's material ordinal. The memo's answers hold for the stations whose earlier
-  // material is the memo's (a common prefix of the material) with the same fixed obstacles and
-  // axes.
-  std::vector<int> ordinal(N, -1);
-  std::vector<Vec3> materialPoints;
-  for (size_t i = 0; i < N; ++i) {
-    if (material[i]) {
-      ordinal[i] = static_cast<int>(materialPoints.size());
-      materialPoints.push_back(points[i]);
-    }
-  }
+  // With a memo: each station's material ordinal, and the material and the axes it is checked
+  // at, by ordinal. The memo's answers hold for the stations whose earlier material is the
+  // memo's (a common prefix of the material) with the same fixed obstacles and axes.
+  std::vector<int> ordinal;
+  std::vector<Vec3> materialPoints, detectAxis;
   enum Outcome : char { Known, Unresolved, Tilted };  // of a colliding station's search
   size_t prefix = 0;
   if (memo) {
+    ordinal.assign(N, -1);
+    for (size_t i = 0; i < N; ++i) {
+      if (material[i]) {
+        ordinal[i] = static_cast<int>(materialPoints.size());
+        materialPoints.push_back(points[i]);
+        detectAxis.push_back(axes[i]);
+      }
+    }
     const std::vector<Vec3> noFixed;
     if (memo->fixed == (fixedObstacles ? *fixedObstacles : noFixed)) {
       const size_t n = std::min(memo->material.size(), materialPoints.size());
@@ -342,7 +344,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
     }
   }
   auto inMemo = [&](size_t k) {
-    return ordinal[k] >= 0 && static_cast<size_t>(ordinal[k]) < prefix;
+    return prefix > 0 && ordinal[k] >= 0 && static_cast<size_t>(ordinal[k]) < prefix;
   };
 
   // 1. Stations with earlier material inside the nozzle: chunks of stations over the workers.
@@ -401,15 +403,8 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   result.collidingStations = static_cast<int>(colliding.size());
   result.colliding = colliding;
   // This pass's detection for the memo (stored with its searches below).
-  std::vector<Vec3> detectAxis;
   std::vector<char> detectHit;
   if (memo) {
-    detectAxis.reserve(materialPoints.size());
-    for (size_t i = 0; i < N; ++i) {
-      if (material[i]) {
-        detectAxis.push_back(axes[i]);
-      }
-    }
     detectHit.assign(materialPoints.size(), 0);
     for (int k : colliding) {
       if (ordinal[k] >= 0) {

@@ -219,10 +219,9 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
   if (!checked) {  // count what is left (or, with clearance off, what there is)
     AxisClearanceOptions detectOnly = clearance;
     detectOnly.maxTiltDeg = 0;
-    const bool afterRounds = path.clearanceRounds > 0;
     const AxisClearanceResult r =
         clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, detectOnly,
-                        fixed, nullptr, nullptr, afterRounds ? &known : nullptr);
+                        fixed, nullptr, nullptr, &known);
     path.unclearedStations = r.collidingStations;
     uncleared = r.colliding;
     if (path.clearanceRounds == 0) {
