@@ -176,7 +176,8 @@ private:
     // The toolpath with every station's verdict (point array Collision: colour by it in ParaView).
     this->Write(P.ToolpathVerifier->GetOutputDataObject(1), "toolpath.vtp");
     this->Write(pathCollisions, "toolpath_collisions.vtp");
-    reportSummary(this->Update("summary", P.PrintSummary), this->Section("summary"));
+    vtkDataObject* summary = this->Update("summary", P.PrintSummary);  // before Section: its time
+    reportSummary(summary, this->Section("summary"));
     const int steps =
         replayStepCount(vtkDataSet::SafeDownCast(toolpath)->GetNumberOfPoints(), R.replaySteps);
     path["replay_steps"] = steps;

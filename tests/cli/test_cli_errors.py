@@ -778,6 +778,8 @@ class CliVerifyTest(unittest.TestCase):
         self.assertGreater(summary["print_time_min"], tp["print_length_mm"] / tp["print_speed_mm_s"] / 60 * 0.99)
         self.assertGreater(summary["filament_g"], 0)
         self.assertIsInstance(summary["verdict"], str)
+        # Each section's seconds are its own stage's (they once took the toolpath check's).
+        self.assertNotEqual(summary["seconds"], tp["verify_seconds"])
         for name in ("toolpath.vtp", "toolpath.pvd", "toolpath_collisions.vtp"):
             self.assertTrue(os.path.isfile(os.path.join(self.out, name)), name)
 
