@@ -5,6 +5,7 @@
 #include "vtkGLAutoOrient.h"
 
 #include "GLPrintPipeline.h"
+#include "GLTestArrays.h"
 #include "GLTestErrorObserver.h"
 #include "vtkGLArrayNames.h"
 
@@ -18,12 +19,6 @@
 
 namespace {
 const std::string kData = GEOLATTICE_TESTDATA;
-
-double field(vtkDataObject* d, const char* name, int component = 0) {
-  vtkDataArray* a = d ? d->GetFieldData()->GetArray(name) : nullptr;
-  EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetComponent(0, component) : -1;
-}
 
 void fewCandidates(GLPrintPipeline& p) {
   p.Reader->SetFileName((kData + "/y_shape.obj").c_str());
@@ -41,32 +36,33 @@ TEST(vtkGLAutoOrient, ACandidateRankRePlacesThePartFromTheCachedSearch) {
   errors->Observe(p.Orientation);
   ASSERT_TRUE(p.Orientation->Update(0, nullptr)) << errors->Errors();
   vtkDataObject* out = p.Orientation->GetOutputDataObject(0);
-  const double seconds = field(out, geolattice::arrays::OrientSeconds);
-  const double up0[3] = {field(out, geolattice::arrays::OrientUp, 0),
-                         field(out, geolattice::arrays::OrientUp, 1),
-                         field(out, geolattice::arrays::OrientUp, 2)};
-  EXPECT_EQ(field(out, geolattice::arrays::OrientChosenRank), 0);
+  const double seconds = fieldValue(out, geolattice::arrays::OrientSeconds);
+  const double up0[3] = {fieldValue(out, geolattice::arrays::OrientUp, 0),
+                         fieldValue(out, geolattice::arrays::OrientUp, 1),
+                         fieldValue(out, geolattice::arrays::OrientUp, 2)};
+  EXPECT_EQ(fieldValue(out, geolattice::arrays::OrientChosenRank), 0);
 
   p.Orientation->SetCandidateRank(1);
   ASSERT_TRUE(p.Orientation->Update(0, nullptr)) << errors->Errors();
   out = p.Orientation->GetOutputDataObject(0);
-  EXPECT_EQ(field(out, geolattice::arrays::OrientChosenRank), 1);
-  EXPECT_EQ(field(out, geolattice::arrays::OrientSeconds), seconds);  // the same search
+  EXPECT_EQ(fieldValue(out, geolattice::arrays::OrientChosenRank), 1);
+  EXPECT_EQ(fieldValue(out, geolattice::arrays::OrientSeconds), seconds);  // the same search
   double difference = 0;
   for (int k = 0; k < 3; ++k) {
-    difference += std::abs(field(out, geolattice::arrays::OrientUp, k) - up0[k]);
+    difference += std::abs(fieldValue(out, geolattice::arrays::OrientUp, k) - up0[k]);
   }
   EXPECT_GT(difference, 1e-3);              // another side up
   p.Orientation->SetCandidateRank(100000);  // clamped to the last candidate
   ASSERT_TRUE(p.Orientation->Update(0, nullptr));
-  EXPECT_EQ(field(p.Orientation->GetOutputDataObject(0), geolattice::arrays::OrientChosenRank),
-            field(p.Orientation->GetOutputDataObject(0), geolattice::arrays::OrientCandidates) - 1);
+  EXPECT_EQ(
+      fieldValue(p.Orientation->GetOutputDataObject(0), geolattice::arrays::OrientChosenRank),
+      fieldValue(p.Orientation->GetOutputDataObject(0), geolattice::arrays::OrientCandidates) - 1);
 
   // Another parameter searches again.
   p.Orientation->SetCandidateRank(0);
   p.Orientation->SetMinBaseArea(12);
   ASSERT_TRUE(p.Orientation->Update(0, nullptr));
-  EXPECT_NE(field(p.Orientation->GetOutputDataObject(0), geolattice::arrays::OrientSeconds),
+  EXPECT_NE(fieldValue(p.Orientation->GetOutputDataObject(0), geolattice::arrays::OrientSeconds),
             seconds);
 }
 

@@ -1,6 +1,7 @@
 // vtkGLCollisionVerifier on hand-built towers: two vertical stacks of short horizontal segments
 // 3 mm apart (NozzleAxis +z). Printing tower A completely before tower B collides at NA 60;
 // alternating layer by layer does not. Cell and point time arrays, the output arrays, and bad input.
+#include "GLTestArrays.h"
 #include "GLTestErrorObserver.h"
 #include "GLTestProgress.h"
 
@@ -33,12 +34,6 @@ namespace role = geolattice::collisionrole;
 namespace {
 
 constexpr int kLayers = 10;
-
-double field(vtkDataObject* d, const char* name) {
-  vtkDataArray* a = d->GetFieldData()->GetArray(name);
-  EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetTuple1(0) : std::nan("");
-}
 
 /// Towers A (x = 0) and B (x = 3): at z = 0, 1, .., kLayers - 1 a 1 mm segment along x (own
 /// points, one line cell each), NozzleAxis +z. Cell array "PrintOrder" = time(tower, layer), point
@@ -115,15 +110,16 @@ TEST(vtkGLCollisionVerifier, TowerByTowerCollidesAndReportsTheViolations) {
   const Verified v = verify(towers(towerByTower));
   ASSERT_TRUE(v.errors.empty()) << v.errors;
   vtkPolyData* out = v.output;
-  EXPECT_EQ(field(out, arrays::CollisionFree), 0.0);
-  EXPECT_EQ(field(out, arrays::CollisionOrderFree), 0.0);  // no skeleton: every violation counts
-  EXPECT_EQ(field(out, arrays::CollisionUnavoidableStations), 0.0);
+  EXPECT_EQ(fieldValue(out, arrays::CollisionFree), 0.0);
+  EXPECT_EQ(fieldValue(out, arrays::CollisionOrderFree),
+            0.0);  // no skeleton: every violation counts
+  EXPECT_EQ(fieldValue(out, arrays::CollisionUnavoidableStations), 0.0);
   EXPECT_EQ(out->GetFieldData()->GetArray(arrays::CollisionFree)->GetDataType(), VTK_INT);
   // 1 mm segments sampled every 1 mm: just their end points.
-  EXPECT_EQ(field(out, arrays::CollisionStations), 4.0 * kLayers);
-  EXPECT_GT(field(out, arrays::CollisionViolatingStations), 0.0);
-  EXPECT_GE(field(out, arrays::CollisionSeconds), 0.0);
-  EXPECT_EQ(field(out, arrays::NozzleAngleDeg), 60.0);
+  EXPECT_EQ(fieldValue(out, arrays::CollisionStations), 4.0 * kLayers);
+  EXPECT_GT(fieldValue(out, arrays::CollisionViolatingStations), 0.0);
+  EXPECT_GE(fieldValue(out, arrays::CollisionSeconds), 0.0);
+  EXPECT_EQ(fieldValue(out, arrays::NozzleAngleDeg), 60.0);
   const vtkIdType R = out->GetNumberOfCells();
   ASSERT_GT(R, 0);
   EXPECT_LE(R, 20);
@@ -158,21 +154,21 @@ TEST(vtkGLCollisionVerifier, TowerByTowerCollidesAndReportsTheViolations) {
   // A narrower nozzle clears the towers: 3 ± 0.5 mm away, 9 mm high at most.
   const Verified narrow = verify(towers(towerByTower), 10.0);
   ASSERT_TRUE(narrow.errors.empty()) << narrow.errors;
-  EXPECT_EQ(field(narrow.output, arrays::CollisionFree), 1.0);
+  EXPECT_EQ(fieldValue(narrow.output, arrays::CollisionFree), 1.0);
   // MaxReported limits the output, not the counts.
   const Verified few =
       verify(towers(towerByTower), 60.0, [](vtkGLCollisionVerifier* f) { f->SetMaxReported(3); });
   EXPECT_EQ(few.output->GetNumberOfCells(), 3);
-  EXPECT_EQ(field(few.output, arrays::CollisionViolatingStations),
-            field(out, arrays::CollisionViolatingStations));
+  EXPECT_EQ(fieldValue(few.output, arrays::CollisionViolatingStations),
+            fieldValue(out, arrays::CollisionViolatingStations));
 }
 
 TEST(vtkGLCollisionVerifier, LayerByLayerIsCollisionFree) {
   const Verified v = verify(towers(layerByLayer));
   ASSERT_TRUE(v.errors.empty()) << v.errors;
-  EXPECT_EQ(field(v.output, arrays::CollisionFree), 1.0);
-  EXPECT_EQ(field(v.output, arrays::CollisionViolatingStations), 0.0);
-  EXPECT_EQ(field(v.output, arrays::CollisionStations), 4.0 * kLayers);
+  EXPECT_EQ(fieldValue(v.output, arrays::CollisionFree), 1.0);
+  EXPECT_EQ(fieldValue(v.output, arrays::CollisionViolatingStations), 0.0);
+  EXPECT_EQ(fieldValue(v.output, arrays::CollisionStations), 4.0 * kLayers);
   EXPECT_EQ(v.output->GetNumberOfPoints(), 0);
   EXPECT_EQ(v.output->GetNumberOfCells(), 0);
 }
@@ -185,15 +181,15 @@ TEST(vtkGLCollisionVerifier, PointTimeArrayAndInteriorSamples) {
     const Verified v =
         verify(input, 60.0, [](vtkGLCollisionVerifier* f) { f->SetTimeArrayName("PointTime"); });
     ASSERT_TRUE(v.errors.empty()) << v.errors;
-    EXPECT_EQ(field(v.output, arrays::CollisionStations), 4.0 * kLayers);
-    EXPECT_EQ(field(v.output, arrays::CollisionFree), time == layerByLayer ? 1.0 : 0.0);
+    EXPECT_EQ(fieldValue(v.output, arrays::CollisionStations), 4.0 * kLayers);
+    EXPECT_EQ(fieldValue(v.output, arrays::CollisionFree), time == layerByLayer ? 1.0 : 0.0);
   }
   // Spacing 0.3 mm: ceil(1 / 0.3) - 1 = 3 interior samples per segment.
   const Verified fine = verify(towers(layerByLayer), 60.0,
                                [](vtkGLCollisionVerifier* f) { f->SetSampleSpacing(0.3); });
   ASSERT_TRUE(fine.errors.empty()) << fine.errors;
-  EXPECT_EQ(field(fine.output, arrays::CollisionStations), (4.0 + 6.0) * kLayers);
-  EXPECT_EQ(field(fine.output, arrays::CollisionFree), 1.0);
+  EXPECT_EQ(fieldValue(fine.output, arrays::CollisionStations), (4.0 + 6.0) * kLayers);
+  EXPECT_EQ(fieldValue(fine.output, arrays::CollisionFree), 1.0);
   // A cell array of that name takes precedence over a point array.
   auto both = towers(layerByLayer);
   vtkNew<vtkIntArray> cellTime;
@@ -205,7 +201,7 @@ TEST(vtkGLCollisionVerifier, PointTimeArrayAndInteriorSamples) {
   both->GetCellData()->AddArray(cellTime);
   const Verified cell =
       verify(both, 60.0, [](vtkGLCollisionVerifier* f) { f->SetTimeArrayName("PointTime"); });
-  EXPECT_EQ(field(cell.output, arrays::CollisionFree), 0.0);
+  EXPECT_EQ(fieldValue(cell.output, arrays::CollisionFree), 0.0);
 }
 
 TEST(vtkGLCollisionVerifier, TheStationsOutputColoursTheToolpathByItsVerdict) {
@@ -230,7 +226,7 @@ TEST(vtkGLCollisionVerifier, TheStationsOutputColoursTheToolpathByItsVerdict) {
     plate += kind->GetTuple1(p) == geolattice::collisionkind::Plate;
   }
   EXPECT_GT(material, 0);
-  EXPECT_EQ(material + plate, field(f->GetOutput(), arrays::CollisionViolatingStations));
+  EXPECT_EQ(material + plate, fieldValue(f->GetOutput(), arrays::CollisionViolatingStations));
   // Every axis tilted 80 degrees from +z: the cone reaches the plate under the towers.
   vtkDataArray* axes = input->GetPointData()->GetArray(arrays::NozzleAxis);
   for (vtkIdType p = 0; p < axes->GetNumberOfTuples(); ++p) {
@@ -246,12 +242,12 @@ TEST(vtkGLCollisionVerifier, TheStationsOutputColoursTheToolpathByItsVerdict) {
     plate += kind->GetTuple1(p) == geolattice::collisionkind::Plate;
   }
   EXPECT_GT(plate, 0);
-  EXPECT_EQ(plate, field(f->GetOutput(), arrays::CollisionPlateStations));
+  EXPECT_EQ(plate, fieldValue(f->GetOutput(), arrays::CollisionPlateStations));
   // Cell times: the sampled stations.
   f->SetTimeArrayName(arrays::PrintOrder);
   f->Update();
   stations = vtkPolyData::SafeDownCast(f->GetOutputDataObject(1));
-  EXPECT_EQ(stations->GetNumberOfPoints(), field(f->GetOutput(), arrays::CollisionStations));
+  EXPECT_EQ(stations->GetNumberOfPoints(), fieldValue(f->GetOutput(), arrays::CollisionStations));
   EXPECT_EQ(stations->GetNumberOfVerts(), stations->GetNumberOfPoints());
   EXPECT_NE(stations->GetPointData()->GetArray(arrays::Collision), nullptr);
 }
@@ -274,8 +270,8 @@ TEST(vtkGLCollisionVerifier, PointMoveKindAirIsNoMaterial) {
   };
   Verified v = verify(input, 60.0, pointTime);
   ASSERT_TRUE(v.errors.empty()) << v.errors;
-  EXPECT_EQ(field(v.output, arrays::CollisionStations), 4.0 * kLayers);
-  EXPECT_EQ(field(v.output, arrays::CollisionFree), 1.0);
+  EXPECT_EQ(fieldValue(v.output, arrays::CollisionStations), 4.0 * kLayers);
+  EXPECT_EQ(fieldValue(v.output, arrays::CollisionFree), 1.0);
   for (int k : {geolattice::movekind::Print, geolattice::movekind::Perimeter}) {
     for (vtkIdType p = 0; p < 2 * kLayers; ++p) {
       kind->SetValue(p, k);
@@ -283,7 +279,7 @@ TEST(vtkGLCollisionVerifier, PointMoveKindAirIsNoMaterial) {
     kind->Modified();
     v = verify(input, 60.0, pointTime);
     ASSERT_TRUE(v.errors.empty()) << v.errors;
-    EXPECT_EQ(field(v.output, arrays::CollisionFree), 0.0) << "MoveKind " << k;
+    EXPECT_EQ(fieldValue(v.output, arrays::CollisionFree), 0.0) << "MoveKind " << k;
   }
 }
 
@@ -308,18 +304,18 @@ TEST(vtkGLCollisionVerifier, SkeletonEdgesMakeAncestorObstaclesUnavoidable) {
   input->GetFieldData()->AddArray(edges);
   Verified v = verify(input);
   ASSERT_TRUE(v.errors.empty()) << v.errors;
-  EXPECT_EQ(field(v.output, arrays::CollisionFree), 0.0);
-  EXPECT_EQ(field(v.output, arrays::CollisionOrderFree), 0.0);
-  EXPECT_EQ(field(v.output, arrays::CollisionUnavoidableStations), 0.0);
+  EXPECT_EQ(fieldValue(v.output, arrays::CollisionFree), 0.0);
+  EXPECT_EQ(fieldValue(v.output, arrays::CollisionOrderFree), 0.0);
+  EXPECT_EQ(fieldValue(v.output, arrays::CollisionUnavoidableStations), 0.0);
   // One chain A0 .. A9 B0 .. B9: all of A is below B, so no order avoids the collisions.
   edges->InsertNextTuple2(kLayers - 1, kLayers);
   v = verify(input);
   ASSERT_TRUE(v.errors.empty()) << v.errors;
-  EXPECT_EQ(field(v.output, arrays::CollisionFree), 0.0);
-  EXPECT_EQ(field(v.output, arrays::CollisionOrderFree), 1.0);
-  EXPECT_GT(field(v.output, arrays::CollisionUnavoidableStations), 0.0);
-  EXPECT_EQ(field(v.output, arrays::CollisionUnavoidableStations),
-            field(v.output, arrays::CollisionViolatingStations));
+  EXPECT_EQ(fieldValue(v.output, arrays::CollisionFree), 0.0);
+  EXPECT_EQ(fieldValue(v.output, arrays::CollisionOrderFree), 1.0);
+  EXPECT_GT(fieldValue(v.output, arrays::CollisionUnavoidableStations), 0.0);
+  EXPECT_EQ(fieldValue(v.output, arrays::CollisionUnavoidableStations),
+            fieldValue(v.output, arrays::CollisionViolatingStations));
   EXPECT_EQ(v.output->GetPointData()->GetArray(arrays::Unavoidable)->GetRange()[0], 1.0);
   // Bad skeleton edges: a cycle, the wrong number of components.
   edges->InsertNextTuple2(kLayers, kLayers - 1);

@@ -4,6 +4,7 @@
 #include "vtkGLPedestal.h"
 
 #include "GLPrintPipeline.h"
+#include "GLTestArrays.h"
 #include "GLTestErrorObserver.h"
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshConversion.h"
@@ -22,12 +23,6 @@
 
 namespace {
 const std::string kData = GEOLATTICE_TESTDATA;
-
-double field(vtkDataObject* d, const char* name) {
-  vtkDataArray* a = d->GetFieldData()->GetArray(name);
-  EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetComponent(0, 0) : -1;
-}
 }  // namespace
 
 TEST(vtkGLPedestal, RaisesTheBunnyOnAColumnOfItsFootprint) {
@@ -38,7 +33,7 @@ TEST(vtkGLPedestal, RaisesTheBunnyOnAColumnOfItsFootprint) {
   vtkPolyData* same = vtkPolyData::SafeDownCast(p.Pedestal->GetOutputDataObject(0));
   vtkPolyData* placed = vtkPolyData::SafeDownCast(p.Placement->GetOutputDataObject(0));
   EXPECT_EQ(same->GetNumberOfPoints(), placed->GetNumberOfPoints());
-  EXPECT_EQ(field(same, geolattice::arrays::PedestalHeight), 0);
+  EXPECT_EQ(fieldValue(same, geolattice::arrays::PedestalHeight), 0);
   double before[6];
   same->GetPoints()->GetBounds(before);
 
@@ -53,8 +48,8 @@ TEST(vtkGLPedestal, RaisesTheBunnyOnAColumnOfItsFootprint) {
   EXPECT_NEAR(after[4], 0, 1e-9);
   EXPECT_NEAR(after[5], before[5] + 10, 1e-9);
   EXPECT_NEAR(after[0], before[0], 1e-9);  // the part bulges beyond its footprint
-  EXPECT_EQ(field(raised, geolattice::arrays::PedestalHeight), 10);
-  EXPECT_GT(field(raised, geolattice::arrays::PedestalFootprintArea), 10);
+  EXPECT_EQ(fieldValue(raised, geolattice::arrays::PedestalHeight), 10);
+  EXPECT_GT(fieldValue(raised, geolattice::arrays::PedestalFootprintArea), 10);
   const geolattice::SurfaceCheckReport check =
       geolattice::checkSurface(geolattice::toTriangleSurface(raised));
   EXPECT_TRUE(check.isClosedManifold());
@@ -95,7 +90,7 @@ TEST(vtkGLPedestal, BuildsThePedestalTheOrientationSearchChose) {
   errors->Observe(f);
   EXPECT_EQ(f->HeightFor(chosen), 7.0);
   ASSERT_TRUE(f->Update(0, nullptr)) << errors->Errors();
-  EXPECT_EQ(field(f->GetOutputDataObject(0), geolattice::arrays::PedestalHeight), 7);
+  EXPECT_EQ(fieldValue(f->GetOutputDataObject(0), geolattice::arrays::PedestalHeight), 7);
   double bounds[6];
   vtkPolyData::SafeDownCast(f->GetOutputDataObject(0))->GetBounds(bounds);
   double placed[6];
@@ -103,11 +98,12 @@ TEST(vtkGLPedestal, BuildsThePedestalTheOrientationSearchChose) {
   EXPECT_NEAR(bounds[5], placed[5] + 7, 1e-9);
   // Its reach into the part is the search's 1 mm, not ContactHeight's 0.3 mm: a wider column
   // (on the bunny that band touched itself at a vertex: a pinch the footprint now leaves out).
-  const double wide = field(f->GetOutputDataObject(0), geolattice::arrays::PedestalFootprintArea);
+  const double wide =
+      fieldValue(f->GetOutputDataObject(0), geolattice::arrays::PedestalFootprintArea);
   f->SetUseOrientation(false);
   f->SetHeight(7);
   ASSERT_TRUE(f->Update(0, nullptr));
-  EXPECT_LT(field(f->GetOutputDataObject(0), geolattice::arrays::PedestalFootprintArea), wide);
+  EXPECT_LT(fieldValue(f->GetOutputDataObject(0), geolattice::arrays::PedestalFootprintArea), wide);
   // The search chose none: nothing is built, with UseOrientation on.
   fd->GetArray(geolattice::arrays::OrientPedestalHeight)->SetTuple1(0, 0.0);
   chosen->Modified();

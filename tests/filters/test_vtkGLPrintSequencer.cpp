@@ -2,6 +2,7 @@
 // collides, A4 does not, as the collision verifier confirms), the end-to-end pipeline on the
 // branching Y (reader -> ... -> lattice -> skeleton -> sequencer -> verifier), and bad input.
 #include "GLTestErrorObserver.h"
+#include "GLTestTowers.h"
 #include "GLTestProgress.h"
 #include "GLTestYPipeline.h"
 
@@ -44,114 +45,10 @@ namespace arrays = geolattice::arrays;
 
 namespace {
 
-double field(vtkDataObject* d, const char* name, int i = 0) {
-  vtkDataArray* a = d->GetFieldData()->GetArray(name);
-  EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents())
-           : std::nan("");
-}
-
 std::string strategyName(vtkDataObject* d) {
   auto* a =
       vtkStringArray::SafeDownCast(d->GetFieldData()->GetAbstractArray(arrays::SequenceStrategy));
   return a && a->GetNumberOfValues() == 1 ? a->GetValue(0) : "";
-}
-
-vtkSmartPointer<vtkIntArray> intArray(const char* name) {
-  auto a = vtkSmartPointer<vtkIntArray>::New();
-  a->SetName(name);
-  return a;
-}
-
-/// A lattice as vtkGLLatticeInfill writes it: `towers` columns of unit squares (one closed loop
-/// of 4 line cells = one sub-graph per tower and layer), `gap` mm between the squares' sides,
-/// layers at z = 1, 2, .., with NozzleAxis +z, Gamma = z. Sub-graph id = layer * towers + tower.
-vtkSmartPointer<vtkPolyData> towerLattice(int layers, int towers = 2, double gap = 2.0) {
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> normals, gamma;
-  normals->SetName(arrays::NozzleAxis);
-  normals->SetNumberOfComponents(3);
-  gamma->SetName(arrays::Gamma);
-  auto pointSubgraph = intArray(arrays::SubgraphId);
-  auto cellSubgraph = intArray(arrays::SubgraphId);
-  auto layerId = intArray(arrays::LayerId);
-  vtkNew<vtkCellArray> lines;
-  for (int l = 0; l < layers; ++l) {
-    const double z = 1.0 + l;
-    for (int t = 0; t < towers; ++t) {
-      const double x0 = t * (1.0 + gap);
-      const int s = l * towers + t;
-      const vtkIdType first = points->GetNumberOfPoints();
-      for (const auto& [dx, dy] : {std::pair<double, double>{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
-        points->InsertNextPoint(x0 + dx, dy, z);
-        const double n[3] = {0, 0, 1};
-        normals->InsertNextTuple(n);
-        gamma->InsertNextValue(z);
-        pointSubgraph->InsertNextValue(s);
-      }
-      for (int k = 0; k < 4; ++k) {
-        const vtkIdType ids[2] = {first + k, first + (k + 1) % 4};
-        lines->InsertNextCell(2, ids);
-        cellSubgraph->InsertNextValue(s);
-        layerId->InsertNextValue(l);
-      }
-    }
-  }
-  pd->SetPoints(points);
-  pd->SetLines(lines);
-  pd->GetPointData()->AddArray(normals);
-  pd->GetPointData()->AddArray(gamma);
-  pd->GetPointData()->AddArray(pointSubgraph);
-  pd->GetCellData()->AddArray(layerId);
-  pd->GetCellData()->AddArray(cellSubgraph);
-  return pd;
-}
-
-/// The skeleton of towerLattice: one chain per tower. `extra` adds line cells (node pairs).
-vtkSmartPointer<vtkPolyData> towerSkeleton(int layers, int towers = 2, double gap = 2.0,
-                                           const std::vector<std::pair<int, int>>& extra = {}) {
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  auto nodeId = intArray(arrays::NodeId);
-  auto layerId = intArray(arrays::LayerId);
-  vtkNew<vtkDoubleArray> length;
-  length->SetName(arrays::SubgraphLength);
-  vtkNew<vtkCellArray> lines;
-  for (int l = 0; l < layers; ++l) {
-    for (int t = 0; t < towers; ++t) {
-      const int s = l * towers + t;
-      points->InsertNextPoint(t * (1.0 + gap) + 0.5, 0.5, 1.0 + l);
-      nodeId->InsertNextValue(s);
-      layerId->InsertNextValue(l);
-      length->InsertNextValue(4.0);
-      if (l > 0) {
-        const vtkIdType ids[2] = {s - towers, s};
-        lines->InsertNextCell(2, ids);
-      }
-    }
-  }
-  for (const auto& [a, b] : extra) {
-    const vtkIdType ids[2] = {a, b};
-    lines->InsertNextCell(2, ids);
-  }
-  pd->SetPoints(points);
-  pd->SetLines(lines);
-  pd->GetPointData()->AddArray(nodeId);
-  pd->GetPointData()->AddArray(layerId);
-  pd->GetPointData()->AddArray(length);
-  std::vector<double> values;
-  for (int l = 0; l < layers; ++l) {
-    values.push_back(1.0 + l);
-  }
-  vtkNew<vtkDoubleArray> layerValues;
-  layerValues->SetName(arrays::LayerValues);
-  for (double v : values) {
-    layerValues->InsertNextValue(v);
-  }
-  pd->GetFieldData()->AddArray(layerValues);
-  return pd;
 }
 
 /// Sequencer + verifier on given inputs.
@@ -244,7 +141,7 @@ TEST(vtkGLPrintSequencer, TwoTowersGiveTheDocumentedOutputs) {
   ASSERT_NE(pointOrder, nullptr);
   std::vector<int> position(K, -1);
   for (int k = 0; k < K; ++k) {
-    position[static_cast<int>(field(sequenced, arrays::SequenceOrder, k))] = k;
+    position[static_cast<int>(fieldValue(sequenced, arrays::SequenceOrder, k))] = k;
   }
   vtkDataArray* cellSubgraph = lattice->GetCellData()->GetArray(arrays::SubgraphId);
   vtkDataArray* pointSubgraph = lattice->GetPointData()->GetArray(arrays::SubgraphId);
@@ -275,16 +172,16 @@ TEST(vtkGLPrintSequencer, TwoTowersGiveTheDocumentedOutputs) {
     retractions += retraction->GetTuple1(c);
     EXPECT_EQ(polyline->GetCellData()->GetArray(arrays::PrintOrder)->GetTuple1(c), c);
   }
-  EXPECT_EQ(retractions, field(polyline, arrays::SequenceRetractions));
+  EXPECT_EQ(retractions, fieldValue(polyline, arrays::SequenceRetractions));
   for (vtkIdType k = 0; k < K; ++k) {
     EXPECT_EQ(polyline->GetPointData()->GetArray(arrays::SubgraphId)->GetTuple1(k),
-              field(polyline, arrays::SequenceOrder, k));
+              fieldValue(polyline, arrays::SequenceOrder, k));
     double p[3];
     polyline->GetPoint(k, p);
     for (int j = 0; j < 3; ++j) {
-      EXPECT_EQ(p[j], field(polyline, arrays::SequenceStart, 3 * k + j));
+      EXPECT_EQ(p[j], fieldValue(polyline, arrays::SequenceStart, 3 * k + j));
     }
-    EXPECT_EQ(p[2], 1.0 + static_cast<int>(field(polyline, arrays::SequenceOrder, k)) /
+    EXPECT_EQ(p[2], 1.0 + static_cast<int>(fieldValue(polyline, arrays::SequenceOrder, k)) /
                               2);  // on its layer
   }
 
@@ -303,18 +200,18 @@ TEST(vtkGLPrintSequencer, TwoTowersGiveTheDocumentedOutputs) {
     EXPECT_EQ(out->GetFieldData()->GetArray(arrays::SequenceEnd)->GetNumberOfTuples(), K);
     EXPECT_EQ(out->GetFieldData()->GetArray(arrays::SkeletonEdges)->GetNumberOfTuples(), K - 2);
   }
-  EXPECT_EQ(field(sequenced, arrays::NozzleAngleDeg), 60.0);
-  EXPECT_GT(field(sequenced, arrays::SequencePcgPairs), 0.0);
-  EXPECT_EQ(field(sequenced, arrays::SequenceForcedSteps), 0.0);
-  EXPECT_GT(field(sequenced, arrays::SequenceAirLength), 0.0);
+  EXPECT_EQ(fieldValue(sequenced, arrays::NozzleAngleDeg), 60.0);
+  EXPECT_GT(fieldValue(sequenced, arrays::SequencePcgPairs), 0.0);
+  EXPECT_EQ(fieldValue(sequenced, arrays::SequenceForcedSteps), 0.0);
+  EXPECT_GT(fieldValue(sequenced, arrays::SequenceAirLength), 0.0);
 
   // The A4 order is collision-free for the verifier.
   vtkPolyData* report = run.verify();
   ASSERT_FALSE(run.verifierErrors->HasError()) << run.verifierErrors->Errors();
-  EXPECT_EQ(field(report, arrays::CollisionFree), 1.0);
-  EXPECT_EQ(field(report, arrays::CollisionOrderFree), 1.0);
+  EXPECT_EQ(fieldValue(report, arrays::CollisionFree), 1.0);
+  EXPECT_EQ(fieldValue(report, arrays::CollisionOrderFree), 1.0);
   EXPECT_EQ(report->GetNumberOfPoints(), 0);
-  EXPECT_EQ(field(report, arrays::CollisionStations),
+  EXPECT_EQ(fieldValue(report, arrays::CollisionStations),
             4.0 * K);  // the squares' corners (1 mm edges)
 }
 
@@ -331,26 +228,26 @@ TEST(vtkGLPrintSequencer, DepthPriorityCollidesWhereA4DoesNot) {
     ASSERT_FALSE(run.verifierErrors->HasError()) << run.verifierErrors->Errors();
     vtkPolyData* out = run.output(1);
     expectLowerBeforeUpper(out, checkedPrintOrder(out));
-    const double free = field(report, arrays::CollisionFree);
+    const double free = fieldValue(report, arrays::CollisionFree);
     std::printf(
         "  %-4s retractions %g, air %.1f mm, PCG pairs %g, collision-free %g (%g violating "
         "stations)\n",
-        strategyName(out).c_str(), field(out, arrays::SequenceRetractions),
-        field(out, arrays::SequenceAirLength), field(out, arrays::SequencePcgPairs), free,
-        field(report, arrays::CollisionViolatingStations));
+        strategyName(out).c_str(), fieldValue(out, arrays::SequenceRetractions),
+        fieldValue(out, arrays::SequenceAirLength), fieldValue(out, arrays::SequencePcgPairs), free,
+        fieldValue(report, arrays::CollisionViolatingStations));
     if (strategy == vtkGLPrintSequencer::DPT) {
       EXPECT_EQ(strategyName(out), "dpt");
-      EXPECT_EQ(field(out, arrays::SequencePcgPairs), 0.0);  // not computed
+      EXPECT_EQ(fieldValue(out, arrays::SequencePcgPairs), 0.0);  // not computed
       EXPECT_EQ(free, 0.0);
       EXPECT_GT(report->GetNumberOfPoints(), 0);
-      EXPECT_EQ(field(out, arrays::SequenceRetractions), 1.0);  // one tower, then the other
+      EXPECT_EQ(fieldValue(out, arrays::SequenceRetractions), 1.0);  // one tower, then the other
     } else {
       EXPECT_EQ(free, 1.0) << strategyName(out);
-      EXPECT_EQ(field(out, arrays::SequenceForcedSteps), 0.0);
+      EXPECT_EQ(fieldValue(out, arrays::SequenceForcedSteps), 0.0);
     }
     if (strategy == vtkGLPrintSequencer::LPT) {
       EXPECT_EQ(strategyName(out), "lpt");
-      EXPECT_GE(field(out, arrays::SequenceRetractions),
+      EXPECT_GE(fieldValue(out, arrays::SequenceRetractions),
                 layers);  // at least once per layer, to the other tower
     }
   }
@@ -359,7 +256,7 @@ TEST(vtkGLPrintSequencer, DepthPriorityCollidesWhereA4DoesNot) {
 TEST(vtkGLPrintSequencer, CollisionsWithAnAncestorAreUnavoidable) {
   // One tower of two layers; the upper square is moved 4 mm to -x and its nozzle axis turned to
   // +x, so the lower square (its skeleton parent, printed first in every order) is in its nozzle.
-  auto lattice = towerLattice(2, 1);
+  auto lattice = towerLattice(2, {1});
   vtkDataArray* normals = lattice->GetPointData()->GetArray(arrays::NozzleAxis);
   for (vtkIdType v = 4; v < 8; ++v) {
     double p[3];
@@ -368,25 +265,25 @@ TEST(vtkGLPrintSequencer, CollisionsWithAnAncestorAreUnavoidable) {
     lattice->GetPoints()->SetPoint(v, p);
     normals->SetTuple3(v, 1, 0, 0);
   }
-  SequenceRun run(lattice, towerSkeleton(2, 1), vtkGLPrintSequencer::A4, 45.0);
+  SequenceRun run(lattice, towerSkeleton(2, {1}), vtkGLPrintSequencer::A4, 45.0);
   vtkPolyData* report = run.verify();
   ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
   ASSERT_FALSE(run.verifierErrors->HasError()) << run.verifierErrors->Errors();
   vtkPolyData* out = run.output(0);
-  EXPECT_EQ(field(out, arrays::SequencePcgPairs), 1.0);
-  EXPECT_EQ(field(out, arrays::SequenceUnavoidablePairs), 1.0);
-  EXPECT_EQ(field(out, arrays::SequenceForcedSteps), 0.0);
+  EXPECT_EQ(fieldValue(out, arrays::SequencePcgPairs), 1.0);
+  EXPECT_EQ(fieldValue(out, arrays::SequenceUnavoidablePairs), 1.0);
+  EXPECT_EQ(fieldValue(out, arrays::SequenceForcedSteps), 0.0);
   vtkDataArray* edges = out->GetFieldData()->GetArray(arrays::SkeletonEdges);
   ASSERT_NE(edges, nullptr);
   ASSERT_EQ(edges->GetNumberOfTuples(), 1);
   EXPECT_EQ(edges->GetComponent(0, 0), 0.0);
   EXPECT_EQ(edges->GetComponent(0, 1), 1.0);
   // The verifier reports the collision but knows no order avoids it.
-  EXPECT_EQ(field(report, arrays::CollisionFree), 0.0);
-  EXPECT_EQ(field(report, arrays::CollisionOrderFree), 1.0);
-  EXPECT_GT(field(report, arrays::CollisionViolatingStations), 0.0);
-  EXPECT_EQ(field(report, arrays::CollisionUnavoidableStations),
-            field(report, arrays::CollisionViolatingStations));
+  EXPECT_EQ(fieldValue(report, arrays::CollisionFree), 0.0);
+  EXPECT_EQ(fieldValue(report, arrays::CollisionOrderFree), 1.0);
+  EXPECT_GT(fieldValue(report, arrays::CollisionViolatingStations), 0.0);
+  EXPECT_EQ(fieldValue(report, arrays::CollisionUnavoidableStations),
+            fieldValue(report, arrays::CollisionViolatingStations));
   vtkDataArray* unavoidable = report->GetPointData()->GetArray(arrays::Unavoidable);
   ASSERT_NE(unavoidable, nullptr);
   ASSERT_GT(report->GetNumberOfPoints(), 0);
@@ -398,8 +295,8 @@ TEST(vtkGLPrintSequencer, CollisionsWithAnAncestorAreUnavoidable) {
   vtkNew<vtkGLCollisionVerifier> plain;
   plain->SetInputData(copy);
   plain->Update();
-  EXPECT_EQ(field(plain->GetOutput(), arrays::CollisionOrderFree), 0.0);
-  EXPECT_EQ(field(plain->GetOutput(), arrays::CollisionUnavoidableStations), 0.0);
+  EXPECT_EQ(fieldValue(plain->GetOutput(), arrays::CollisionOrderFree), 0.0);
+  EXPECT_EQ(fieldValue(plain->GetOutput(), arrays::CollisionUnavoidableStations), 0.0);
   EXPECT_EQ(plain->GetOutput()->GetPointData()->GetArray(arrays::Unavoidable)->GetRange()[1], 0.0);
 }
 
@@ -466,12 +363,12 @@ TEST(vtkGLPrintSequencer, BadInputIsReported) {
     expectEmptyOutputs(run, "the skeleton has 6 nodes but the lattice has 8 sub-graphs");
   }
   {
-    SequenceRun run(towerLattice(layers), towerSkeleton(layers, 2, 2.0, {{0, 5}}),
+    SequenceRun run(towerLattice(layers), towerSkeleton(layers, {}, {{0, 5}}),
                     vtkGLPrintSequencer::LPT, 45.0);
     expectEmptyOutputs(run, "cyclic or missing adjacency");  // node 0 (layer 0) - node 5 (layer 2)
   }
   {
-    SequenceRun run(towerLattice(layers), towerSkeleton(layers, 2, 2.0, {{0, 1}}),
+    SequenceRun run(towerLattice(layers), towerSkeleton(layers, {}, {{0, 1}}),
                     vtkGLPrintSequencer::LPT, 45.0);
     expectEmptyOutputs(run, "cyclic or missing adjacency");  // an edge within layer 0
   }
@@ -589,11 +486,11 @@ TEST_F(BranchingYPipeline, SkeletonSplitsAtTheFork) {
   vtkPolyData* lattice = p->lattice->GetOutput();
   vtkPolyData* skeleton = p->skeleton->GetOutput();
   ASSERT_GT(skeleton->GetNumberOfPoints(), 0);
-  EXPECT_EQ(skeleton->GetNumberOfPoints(), field(lattice, arrays::LatticeSubgraphs));
-  EXPECT_GE(field(skeleton, arrays::SkeletonSplitNodes), 1.0);
-  EXPECT_EQ(field(skeleton, arrays::SkeletonRoots), 1.0);
-  EXPECT_EQ(field(skeleton, arrays::SkeletonFloatingNodes), 0.0);
-  EXPECT_EQ(field(skeleton, arrays::SkeletonMergeNodes), 0.0);
+  EXPECT_EQ(skeleton->GetNumberOfPoints(), fieldValue(lattice, arrays::LatticeSubgraphs));
+  EXPECT_GE(fieldValue(skeleton, arrays::SkeletonSplitNodes), 1.0);
+  EXPECT_EQ(fieldValue(skeleton, arrays::SkeletonRoots), 1.0);
+  EXPECT_EQ(fieldValue(skeleton, arrays::SkeletonFloatingNodes), 0.0);
+  EXPECT_EQ(fieldValue(skeleton, arrays::SkeletonMergeNodes), 0.0);
   std::printf(
       "[sequencer filter] Y: %g layers, %lld sub-graphs, %lld skeleton edges, %g split node(s), "
       "skeleton %.3f s\n",
@@ -601,12 +498,13 @@ TEST_F(BranchingYPipeline, SkeletonSplitsAtTheFork) {
           skeleton->GetFieldData()->GetArray(arrays::LayerValues)->GetNumberOfTuples()),
       static_cast<long long>(skeleton->GetNumberOfPoints()),
       static_cast<long long>(skeleton->GetNumberOfCells()),
-      field(skeleton, arrays::SkeletonSplitNodes), field(skeleton, arrays::SkeletonSeconds));
+      fieldValue(skeleton, arrays::SkeletonSplitNodes),
+      fieldValue(skeleton, arrays::SkeletonSeconds));
 }
 
 TEST_F(BranchingYPipeline, EveryStrategyGivesAPermutationInTreeOrder) {
   ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
-  const double K = field(p->lattice->GetOutput(), arrays::LatticeSubgraphs);
+  const double K = fieldValue(p->lattice->GetOutput(), arrays::LatticeSubgraphs);
   for (int strategy : {vtkGLPrintSequencer::LPT, vtkGLPrintSequencer::DPT, vtkGLPrintSequencer::A4,
                        vtkGLPrintSequencer::BEST}) {
     auto r = sequence(strategy, 45.0);
@@ -620,17 +518,18 @@ TEST_F(BranchingYPipeline, EveryStrategyGivesAPermutationInTreeOrder) {
         "[sequencer filter] Y, NA 45, %-4s: retractions %g, air %.1f mm, forced %g, PCG pairs %g "
         "(%.3f s), "
         "order %.3f s; verifier: collision-free %g, %g stations, %g violating (%.3f s)\n",
-        strategyName(out).c_str(), field(out, arrays::SequenceRetractions),
-        field(out, arrays::SequenceAirLength), field(out, arrays::SequenceForcedSteps),
-        field(out, arrays::SequencePcgPairs), field(out, arrays::SequencePcgSeconds),
-        field(out, arrays::SequenceSeconds), field(report, arrays::CollisionFree),
-        field(report, arrays::CollisionStations), field(report, arrays::CollisionViolatingStations),
-        field(report, arrays::CollisionSeconds));
+        strategyName(out).c_str(), fieldValue(out, arrays::SequenceRetractions),
+        fieldValue(out, arrays::SequenceAirLength), fieldValue(out, arrays::SequenceForcedSteps),
+        fieldValue(out, arrays::SequencePcgPairs), fieldValue(out, arrays::SequencePcgSeconds),
+        fieldValue(out, arrays::SequenceSeconds), fieldValue(report, arrays::CollisionFree),
+        fieldValue(report, arrays::CollisionStations),
+        fieldValue(report, arrays::CollisionViolatingStations),
+        fieldValue(report, arrays::CollisionSeconds));
     if (strategy != vtkGLPrintSequencer::DPT) {
-      EXPECT_EQ(field(report, arrays::CollisionFree), 1.0) << strategyName(out);
+      EXPECT_EQ(fieldValue(report, arrays::CollisionFree), 1.0) << strategyName(out);
     }
     if (strategy == vtkGLPrintSequencer::A4 || strategy == vtkGLPrintSequencer::BEST) {
-      EXPECT_EQ(field(out, arrays::SequenceForcedSteps), 0.0);
+      EXPECT_EQ(fieldValue(out, arrays::SequenceForcedSteps), 0.0);
     }
   }
 }
@@ -652,14 +551,16 @@ TEST_F(BranchingYPipeline, VerifierSamplesTheLatticeLikeTheGenericLineSampling) 
   ASSERT_FALSE(r->errors->HasError()) << r->errors->Errors();
   vtkPolyData* a = r->verifier->GetOutput();
   vtkPolyData* b = generic->GetOutput();
-  EXPECT_GT(field(a, arrays::CollisionStations), static_cast<double>(copy->GetNumberOfPoints()));
-  EXPECT_EQ(field(a, arrays::CollisionStations), field(b, arrays::CollisionStations));
-  EXPECT_EQ(field(a, arrays::CollisionViolatingStations),
-            field(b, arrays::CollisionViolatingStations));
-  EXPECT_EQ(field(a, arrays::CollisionFree), field(b, arrays::CollisionFree));
+  EXPECT_GT(fieldValue(a, arrays::CollisionStations),
+            static_cast<double>(copy->GetNumberOfPoints()));
+  EXPECT_EQ(fieldValue(a, arrays::CollisionStations), fieldValue(b, arrays::CollisionStations));
+  EXPECT_EQ(fieldValue(a, arrays::CollisionViolatingStations),
+            fieldValue(b, arrays::CollisionViolatingStations));
+  EXPECT_EQ(fieldValue(a, arrays::CollisionFree), fieldValue(b, arrays::CollisionFree));
   std::printf("[sequencer filter] Y, DPT at NA 70: collision-free %g, %g of %g stations violate\n",
-              field(a, arrays::CollisionFree), field(a, arrays::CollisionViolatingStations),
-              field(a, arrays::CollisionStations));
+              fieldValue(a, arrays::CollisionFree),
+              fieldValue(a, arrays::CollisionViolatingStations),
+              fieldValue(a, arrays::CollisionStations));
 }
 
 TEST_F(BranchingYPipeline, SequencerProgressAndAbort) {

@@ -1,5 +1,6 @@
 // vtkGLSkeletonTree: the chain of a box's layers with the documented arrays (GDF -> slicer ->
 // lattice -> skeleton), the lattice and skeleton conversions of vtkGLMeshConversion.h, and bad input.
+#include "GLTestArrays.h"
 #include "GLTestErrorObserver.h"
 #include "GLTestProgress.h"
 
@@ -38,13 +39,6 @@ namespace gl = geolattice;
 using geolattice::Vec3;
 
 namespace {
-
-double field(vtkDataObject* d, const char* name, int i = 0) {
-  vtkDataArray* a = d->GetFieldData()->GetArray(name);
-  EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents())
-           : std::nan("");
-}
 
 /// GDF -> slicer -> lattice on the 20 x 20 x 15 box (2 mm tets): 13 layers z = 0.5 .. 12.5, one
 /// 5 x 5 grid per layer; then the skeleton.
@@ -109,11 +103,11 @@ TEST(vtkGLSkeletonTree, BoxLayersGiveAChainWithTheDocumentedArrays) {
   ASSERT_EQ(L, 13);
   ASSERT_EQ(out->GetNumberOfPoints(), L);
   ASSERT_EQ(out->GetNumberOfCells(), L - 1);
-  EXPECT_EQ(field(out, arrays::SkeletonRoots), 1.0);
-  EXPECT_EQ(field(out, arrays::SkeletonFloatingNodes), 0.0);
-  EXPECT_EQ(field(out, arrays::SkeletonMergeNodes), 0.0);
-  EXPECT_EQ(field(out, arrays::SkeletonSplitNodes), 0.0);
-  EXPECT_GE(field(out, arrays::SkeletonSeconds), 0.0);
+  EXPECT_EQ(fieldValue(out, arrays::SkeletonRoots), 1.0);
+  EXPECT_EQ(fieldValue(out, arrays::SkeletonFloatingNodes), 0.0);
+  EXPECT_EQ(fieldValue(out, arrays::SkeletonMergeNodes), 0.0);
+  EXPECT_EQ(fieldValue(out, arrays::SkeletonSplitNodes), 0.0);
+  EXPECT_GE(fieldValue(out, arrays::SkeletonSeconds), 0.0);
   ASSERT_EQ(out->GetFieldData()->GetArray(arrays::LayerValues)->GetNumberOfTuples(), L);
 
   vtkPointData* pd = out->GetPointData();
@@ -127,15 +121,15 @@ TEST(vtkGLSkeletonTree, BoxLayersGiveAChainWithTheDocumentedArrays) {
     EXPECT_EQ(pd->GetArray(arrays::LayerId)->GetTuple1(i), i);
     EXPECT_EQ(pd->GetArray(arrays::LowerCount)->GetTuple1(i), i > 0 ? 1 : 0);
     EXPECT_EQ(pd->GetArray(arrays::UpperCount)->GetTuple1(i), i + 1 < L ? 1 : 0);
-    const double phi = field(p.slicer->GetOutput(0), arrays::LayerValues, static_cast<int>(i));
+    const double phi = fieldValue(p.slicer->GetOutput(0), arrays::LayerValues, static_cast<int>(i));
     EXPECT_NEAR(pd->GetArray(arrays::Gamma)->GetTuple1(i), phi, 1e-9);
-    EXPECT_NEAR(field(out, arrays::LayerValues, static_cast<int>(i)), phi, 1e-9);
+    EXPECT_NEAR(fieldValue(out, arrays::LayerValues, static_cast<int>(i)), phi, 1e-9);
     EXPECT_NEAR(pd->GetArray(arrays::SubgraphLength)->GetTuple1(i),
-                field(lattice, arrays::SubgraphLength, static_cast<int>(i)), 1e-9);
+                fieldValue(lattice, arrays::SubgraphLength, static_cast<int>(i)), 1e-9);
     double x[3];
     out->GetPoint(i, x);
     for (int j = 0; j < 3; ++j) {
-      EXPECT_NEAR(x[j], field(lattice, arrays::SubgraphCentroid, 3 * static_cast<int>(i) + j),
+      EXPECT_NEAR(x[j], fieldValue(lattice, arrays::SubgraphCentroid, 3 * static_cast<int>(i) + j),
                   1e-9);
     }
     EXPECT_NEAR(x[0], 10.0, 0.5);
@@ -169,9 +163,9 @@ TEST(vtkGLSkeletonTree, ConversionsRestoreTheLatticeAndTheTree) {
     const gl::LatticeSubgraph& s = g.subgraphs[l];
     EXPECT_EQ(s.layer, l);
     EXPECT_EQ(s.indexInLayer, 0);
-    EXPECT_NEAR(s.length, field(lattice, arrays::SubgraphLength, l), 1e-9);
+    EXPECT_NEAR(s.length, fieldValue(lattice, arrays::SubgraphLength, l), 1e-9);
     for (int j = 0; j < 3; ++j) {
-      EXPECT_NEAR(s.centroid[j], field(lattice, arrays::SubgraphCentroid, 3 * l + j), 1e-9);
+      EXPECT_NEAR(s.centroid[j], fieldValue(lattice, arrays::SubgraphCentroid, 3 * l + j), 1e-9);
     }
   }
   for (size_t v = 0; v < g.points.size(); ++v) {

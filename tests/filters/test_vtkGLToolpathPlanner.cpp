@@ -2,6 +2,7 @@
 // (exact lengths) and on the branching Y (reader -> ... -> sequencer -> planner -> verifier),
 // the print replay over time (a prefix per requested time, planned once), and bad input.
 #include "GLTestErrorObserver.h"
+#include "GLTestTowers.h"
 #include "GLTestProgress.h"
 #include "GLTestYPipeline.h"
 
@@ -54,91 +55,9 @@ namespace movekind = geolattice::movekind;
 
 namespace {
 
-double field(vtkDataObject* d, const char* name, int i = 0) {
-  vtkDataArray* a = d->GetFieldData()->GetArray(name);
-  EXPECT_NE(a, nullptr) << name;
-  return a ? a->GetComponent(i / a->GetNumberOfComponents(), i % a->GetNumberOfComponents())
-           : std::nan("");
-}
-
-vtkSmartPointer<vtkIntArray> intArray(const char* name) {
-  auto a = vtkSmartPointer<vtkIntArray>::New();
-  a->SetName(name);
-  return a;
-}
-
-/// Two towers of unit squares (one closed loop of 4 line cells = one sub-graph per tower and
-/// layer), 2 mm apart, layers at z = 1, 2, .., NozzleAxis +z, Gamma = z, LayerId = 10 + layer (not
-/// 0-based, to see the lattice's LayerId pass through). Sub-graph id = layer * 2 + tower. No
-/// isoline ends on the squares: nothing is trimmed and there is no support perimeter.
-vtkSmartPointer<vtkPolyData> towerLattice(int layers) {
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  vtkNew<vtkDoubleArray> normals, gamma;
-  normals->SetName(arrays::NozzleAxis);
-  normals->SetNumberOfComponents(3);
-  gamma->SetName(arrays::Gamma);
-  auto pointSubgraph = intArray(arrays::SubgraphId);
-  auto cellSubgraph = intArray(arrays::SubgraphId);
-  auto layerId = intArray(arrays::LayerId);
-  auto edgeKind = intArray(arrays::EdgeKind);
-  vtkNew<vtkCellArray> lines;
-  for (int l = 0; l < layers; ++l) {
-    for (int t = 0; t < 2; ++t) {
-      const int s = l * 2 + t;
-      const vtkIdType first = points->GetNumberOfPoints();
-      for (const auto& [dx, dy] : {std::pair<double, double>{0, 0}, {1, 0}, {1, 1}, {0, 1}}) {
-        points->InsertNextPoint(3.0 * t + dx, dy, 1.0 + l);
-        normals->InsertNextTuple3(0, 0, 1);
-        gamma->InsertNextValue(1.0 + l);
-        pointSubgraph->InsertNextValue(s);
-      }
-      for (int k = 0; k < 4; ++k) {
-        const vtkIdType ids[2] = {first + k, first + (k + 1) % 4};
-        lines->InsertNextCell(2, ids);
-        cellSubgraph->InsertNextValue(s);
-        layerId->InsertNextValue(10 + l);
-        edgeKind->InsertNextValue(geolattice::latticekind::EdgeBoundary);
-      }
-    }
-  }
-  pd->SetPoints(points);
-  pd->SetLines(lines);
-  pd->GetPointData()->AddArray(normals);
-  pd->GetPointData()->AddArray(gamma);
-  pd->GetPointData()->AddArray(pointSubgraph);
-  pd->GetCellData()->AddArray(layerId);
-  pd->GetCellData()->AddArray(cellSubgraph);
-  pd->GetCellData()->AddArray(edgeKind);
-  return pd;
-}
-
-/// The skeleton of towerLattice: one chain per tower.
-vtkSmartPointer<vtkPolyData> towerSkeleton(int layers) {
-  auto pd = vtkSmartPointer<vtkPolyData>::New();
-  vtkNew<vtkPoints> points;
-  auto nodeId = intArray(arrays::NodeId);
-  auto layerId = intArray(arrays::LayerId);
-  vtkNew<vtkCellArray> lines;
-  for (int l = 0; l < layers; ++l) {
-    for (int t = 0; t < 2; ++t) {
-      const int s = l * 2 + t;
-      points->InsertNextPoint(3.0 * t + 0.5, 0.5, 1.0 + l);
-      nodeId->InsertNextValue(s);
-      layerId->InsertNextValue(l);
-      if (l > 0) {
-        const vtkIdType ids[2] = {s - 2, s};
-        lines->InsertNextCell(2, ids);
-      }
-    }
-  }
-  pd->SetPoints(points);
-  pd->SetLines(lines);
-  pd->GetPointData()->AddArray(nodeId);
-  pd->GetPointData()->AddArray(layerId);
-  return pd;
-}
+/// Two towers 2 mm apart (GLTestTowers.h) whose lattice numbers its layers from 10 (not 0-based,
+/// to see the lattice's LayerId pass through).
+const TowerLayout kTowers{2, 2.0, 10};
 
 /// Sequencer (A4) + planner on given inputs; the planner reads the sequencer's outputs 0 and 1.
 struct PlannerRun {
@@ -256,14 +175,15 @@ void expectConsistentToolpath(vtkPolyData* path, vtkGLToolpathPlanner* planner) 
       EXPECT_GE(tour->GetTuple1(i), tour->GetTuple1(i - 1)) << i;
     }
   }
-  EXPECT_NEAR(print, field(path, arrays::ToolpathPrintLength), 1e-6 * (1 + print));
-  EXPECT_NEAR(perimeter, field(path, arrays::ToolpathPerimeterLength), 1e-6 * (1 + perimeter));
-  EXPECT_NEAR(air, field(path, arrays::ToolpathAirLength), 1e-6 * (1 + air));
-  EXPECT_NEAR(filament, field(path, arrays::ToolpathFilament), 1e-6 * (1 + filament));
+  EXPECT_NEAR(print, fieldValue(path, arrays::ToolpathPrintLength), 1e-6 * (1 + print));
+  EXPECT_NEAR(perimeter, fieldValue(path, arrays::ToolpathPerimeterLength), 1e-6 * (1 + perimeter));
+  EXPECT_NEAR(air, fieldValue(path, arrays::ToolpathAirLength), 1e-6 * (1 + air));
+  EXPECT_NEAR(filament, fieldValue(path, arrays::ToolpathFilament), 1e-6 * (1 + filament));
   const double r = 0.5 * planner->GetFilamentDiameter();
-  EXPECT_NEAR(field(path, arrays::ToolpathVolume), filament * M_PI * r * r, 1e-6 * (1 + filament));
-  EXPECT_EQ(static_cast<double>(tours.size()), field(path, arrays::ToolpathTours));
-  EXPECT_EQ(field(path, arrays::ToolpathCrossings), 0.0);
+  EXPECT_NEAR(fieldValue(path, arrays::ToolpathVolume), filament * M_PI * r * r,
+              1e-6 * (1 + filament));
+  EXPECT_EQ(static_cast<double>(tours.size()), fieldValue(path, arrays::ToolpathTours));
+  EXPECT_EQ(fieldValue(path, arrays::ToolpathCrossings), 0.0);
 
   // Cells: runs in printing order that share their end points and cover every move once; the cell
   // arrays are those of their moves; one air run per retraction.
@@ -286,38 +206,38 @@ void expectConsistentToolpath(vtkPolyData* path, vtkGLToolpathPlanner* planner) 
     airRuns += path->GetCellData()->GetArray(arrays::MoveKind)->GetTuple1(c) == movekind::Air;
   }
   EXPECT_EQ(next, N - 1);
-  EXPECT_EQ(static_cast<double>(airRuns), field(path, arrays::ToolpathRetractions));
+  EXPECT_EQ(static_cast<double>(airRuns), fieldValue(path, arrays::ToolpathRetractions));
 }
 
 }  // namespace
 
 TEST(vtkGLToolpathPlanner, TowersGiveTheDocumentedOutputs) {
   const int layers = 6;
-  PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+  PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
   vtkPolyData* path = run.output();
   ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
   expectConsistentToolpath(path, run.planner);
 
   // Every square is an Eulerian loop: printed whole as one tour, 4 mm each.
-  EXPECT_NEAR(field(path, arrays::ToolpathPrintLength), 4.0 * 2 * layers, 1e-9);
-  EXPECT_EQ(field(path, arrays::ToolpathPerimeterLength), 0.0);
-  EXPECT_EQ(field(path, arrays::ToolpathPerimeterLoops), 0.0);
-  EXPECT_EQ(field(path, arrays::ToolpathTours), 2.0 * layers);
-  EXPECT_EQ(field(path, arrays::ToolpathTrimmedEdges), 0.0);
-  EXPECT_EQ(field(path, arrays::ToolpathSplitSubgraphs), 0.0);
-  EXPECT_EQ(field(path, arrays::ToolpathRetractions), 2.0 * layers - 1);
-  EXPECT_GT(field(path, arrays::ToolpathAirLength), 0.0);
-  EXPECT_EQ(field(path, arrays::ToolpathRotationSteps), 0.0);  // the axis is +z everywhere
+  EXPECT_NEAR(fieldValue(path, arrays::ToolpathPrintLength), 4.0 * 2 * layers, 1e-9);
+  EXPECT_EQ(fieldValue(path, arrays::ToolpathPerimeterLength), 0.0);
+  EXPECT_EQ(fieldValue(path, arrays::ToolpathPerimeterLoops), 0.0);
+  EXPECT_EQ(fieldValue(path, arrays::ToolpathTours), 2.0 * layers);
+  EXPECT_EQ(fieldValue(path, arrays::ToolpathTrimmedEdges), 0.0);
+  EXPECT_EQ(fieldValue(path, arrays::ToolpathSplitSubgraphs), 0.0);
+  EXPECT_EQ(fieldValue(path, arrays::ToolpathRetractions), 2.0 * layers - 1);
+  EXPECT_GT(fieldValue(path, arrays::ToolpathAirLength), 0.0);
+  EXPECT_EQ(fieldValue(path, arrays::ToolpathRotationSteps), 0.0);  // the axis is +z everywhere
   // Layers 1 mm apart at z = 1, 2, ..: h = 1 everywhere, no deviation.
-  EXPECT_NEAR(field(path, arrays::ToolpathThicknessDeviation, 0), 0.0, 1e-9);
-  EXPECT_NEAR(field(path, arrays::ToolpathThicknessDeviation, 1), 0.0, 1e-9);
+  EXPECT_NEAR(fieldValue(path, arrays::ToolpathThicknessDeviation, 0), 0.0, 1e-9);
+  EXPECT_NEAR(fieldValue(path, arrays::ToolpathThicknessDeviation, 1), 0.0, 1e-9);
   EXPECT_EQ(path->GetFieldData()
                 ->GetArray(arrays::ToolpathThicknessDeviationPerLayer)
                 ->GetNumberOfTuples(),
             layers);
   // Eq. 14: E = μ w h L / (π r²) with h = 1.
   const double r = 0.875;
-  EXPECT_NEAR(field(path, arrays::ToolpathFilament),
+  EXPECT_NEAR(fieldValue(path, arrays::ToolpathFilament),
               0.95 * 0.6 * 1.0 * 8.0 * layers / (M_PI * r * r), 1e-9);
   // LayerId is the lattice's (10 + layer); the sub-graphs are printed in the sequencer's order.
   vtkPointData* pd = path->GetPointData();
@@ -337,7 +257,7 @@ TEST(vtkGLToolpathPlanner, TowersGiveTheDocumentedOutputs) {
   ASSERT_EQ(firstSeen.size(), 2u * layers);
   for (size_t k = 0; k < firstSeen.size(); ++k) {
     EXPECT_EQ(firstSeen[k],
-              field(run.sequencer->GetOutput(0), arrays::SequenceOrder, static_cast<int>(k)));
+              fieldValue(run.sequencer->GetOutput(0), arrays::SequenceOrder, static_cast<int>(k)));
   }
   // Cells: a print run per tour and an air run per retraction.
   EXPECT_EQ(path->GetNumberOfCells(), 2 * (2 * layers) - 1);
@@ -346,7 +266,7 @@ TEST(vtkGLToolpathPlanner, TowersGiveTheDocumentedOutputs) {
   run.planner->SetFilamentDiameter(3.5);
   path = run.output();
   ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
-  EXPECT_NEAR(field(path, arrays::ToolpathFilament),
+  EXPECT_NEAR(fieldValue(path, arrays::ToolpathFilament),
               0.95 * 0.6 * 8.0 * layers / (M_PI * 1.75 * 1.75), 1e-9);
 }
 
@@ -396,7 +316,7 @@ TEST(vtkGLToolpathReplay, DefaultsAndPrintSelf) {
 
 TEST(vtkGLToolpathReplay, TimeStepsReplayThePrint) {
   const int layers = 5;
-  PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+  PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
   // The planner has no time: Apply in ParaView shows the whole toolpath.
   run.planner->UpdateInformation();
   EXPECT_FALSE(
@@ -461,7 +381,7 @@ TEST(vtkGLToolpathReplay, TimeStepsReplayThePrint) {
         EXPECT_EQ(part->GetCellData()->GetArray(arrays::MoveKind)->GetTuple1(c),
                   full->GetCellData()->GetArray(arrays::MoveKind)->GetTuple1(c));
       }
-      const double lastPoint = field(part, arrays::ReplayLastPoint);
+      const double lastPoint = fieldValue(part, arrays::ReplayLastPoint);
       if (part->GetNumberOfCells() > 0) {
         part->GetCellPoints(part->GetNumberOfCells() - 1, ids);
         EXPECT_EQ(ids->GetId(ids->GetNumberOfIds() - 1), n - 1)
@@ -520,7 +440,7 @@ TEST(vtkGLToolpathReplay, AnEmptyInputIsReported) {
 // GL Print Summary, on the planner's tower toolpath and its verifier.
 TEST(vtkGLPrintSummary, TheTableAgreesWithThePlannerAndTheVerifier) {
   const int layers = 5;
-  PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+  PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
   vtkPolyData* path = run.output();
   ASSERT_FALSE(run.errors->HasError()) << run.errors->Errors();
   vtkNew<vtkGLCollisionVerifier> verifier;
@@ -551,24 +471,25 @@ TEST(vtkGLPrintSummary, TheTableAgreesWithThePlannerAndTheVerifier) {
   };
   EXPECT_EQ(row("layers"), layers);
   EXPECT_EQ(row("points"), path->GetNumberOfPoints());
-  EXPECT_EQ(row("tours"), field(path, arrays::ToolpathTours));
-  EXPECT_EQ(row("retractions"), field(path, arrays::ToolpathRetractions));
-  EXPECT_NEAR(
-      row("print_length_mm"),
-      field(path, arrays::ToolpathPrintLength) + field(path, arrays::ToolpathPerimeterLength),
-      1e-6 * row("print_length_mm"));
-  EXPECT_NEAR(row("air_length_mm"), field(path, arrays::ToolpathAirLength),
+  EXPECT_EQ(row("tours"), fieldValue(path, arrays::ToolpathTours));
+  EXPECT_EQ(row("retractions"), fieldValue(path, arrays::ToolpathRetractions));
+  EXPECT_NEAR(row("print_length_mm"),
+              fieldValue(path, arrays::ToolpathPrintLength) +
+                  fieldValue(path, arrays::ToolpathPerimeterLength),
+              1e-6 * row("print_length_mm"));
+  EXPECT_NEAR(row("air_length_mm"), fieldValue(path, arrays::ToolpathAirLength),
               1e-6 * row("air_length_mm"));
   // Print moves at 10 mm/s, air moves at 50 mm/s (the planner's defaults).
   EXPECT_NEAR(row("print_time_min"),
               (row("print_length_mm") / 10.0 + row("air_length_mm") / 50.0) / 60.0, 1e-9);
-  EXPECT_NEAR(row("filament_m"), field(path, arrays::ToolpathFilament) / 1000.0, 1e-12);
+  EXPECT_NEAR(row("filament_m"), fieldValue(path, arrays::ToolpathFilament) / 1000.0, 1e-12);
   EXPECT_NEAR(row("filament_g"),
-              field(path, arrays::ToolpathFilament) * M_PI * 0.875 * 0.875 * 1e-3 * 1.24, 1e-9);
+              fieldValue(path, arrays::ToolpathFilament) * M_PI * 0.875 * 0.875 * 1e-3 * 1.24,
+              1e-9);
   vtkPolyData* verdict = verifier->GetOutput();
-  EXPECT_EQ(row("collision_free"), field(verdict, arrays::CollisionFree));
-  EXPECT_EQ(row("stations"), field(verdict, arrays::CollisionStations));
-  EXPECT_EQ(row("colliding_stations"), field(verdict, arrays::CollisionViolatingStations));
+  EXPECT_EQ(row("collision_free"), fieldValue(verdict, arrays::CollisionFree));
+  EXPECT_EQ(row("stations"), fieldValue(verdict, arrays::CollisionStations));
+  EXPECT_EQ(row("colliding_stations"), fieldValue(verdict, arrays::CollisionViolatingStations));
   auto* text =
       vtkStringArray::SafeDownCast(table->GetFieldData()->GetAbstractArray(arrays::SummaryVerdict));
   ASSERT_NE(text, nullptr);
@@ -597,57 +518,57 @@ TEST(vtkGLToolpathPlanner, BadInputIsReported) {
     EXPECT_NE(run.errors->Errors().find(text), std::string::npos) << run.errors->Errors();
   };
   {
-    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
     run.planner->SetPathWidth(0);
     expectError(run, "path width must be > 0");
   }
   {
-    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
     run.planner->SetFlowCorrection(1.5);
     expectError(run, "flow correction mu must be in (0, 1]");
   }
   {
-    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
     run.planner->SetFilamentDiameter(0);
     expectError(run, "filament diameter must be > 0");
   }
   {
-    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
     run.planner->SetMaxTurnAngle(-1);
     expectError(run, "maximum turn angle must be > 0");
   }
   {
-    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
     run.planner->SetRetraction(-1);
     expectError(run, "retraction must be >= 0");
   }
   {
-    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
     run.planner->SetToothLength(-1);
     expectError(run, "tooth length must be >= 0");
   }
   {
-    auto lattice = towerLattice(layers);
+    auto lattice = towerLattice(layers, kTowers);
     lattice->GetCellData()->RemoveArray(arrays::EdgeKind);
     PlannerRun run(lattice, towerSkeleton(layers));
     expectError(run, "the lattice has no EdgeKind cell array");
   }
   {
-    auto lattice = towerLattice(layers);
+    auto lattice = towerLattice(layers, kTowers);
     lattice->GetCellData()->GetArray(arrays::EdgeKind)->SetTuple1(5, 7);
     PlannerRun run(lattice, towerSkeleton(layers));
     expectError(run, "lattice line cell 5 has EdgeKind 7");
   }
   {
     // The lattice itself instead of the sequencer's output: no SequenceOrder.
-    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
-    run.planner->SetInputData(0, towerLattice(layers));
+    PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
+    run.planner->SetInputData(0, towerLattice(layers, kTowers));
     expectError(run,
                 "no field array SequenceOrder (the printing order): run GL Print Sequencer first");
   }
   {
     // An order that is not a permutation of the sub-graphs.
-    auto lattice = towerLattice(layers);
+    auto lattice = towerLattice(layers, kTowers);
     vtkNew<vtkDoubleArray> order;
     order->SetName(arrays::SequenceOrder);
     for (int k = 0; k < 2 * layers; ++k) {
@@ -660,19 +581,19 @@ TEST(vtkGLToolpathPlanner, BadInputIsReported) {
     expectError(run, "the print order must list every sub-graph exactly once");
   }
   {
-    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
     vtkNew<vtkPolyData> empty;
     run.planner->SetInputData(1, empty);
     expectError(run, "empty skeleton");
   }
   {
     // The skeleton of another lattice.
-    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
     run.planner->SetInputData(1, towerSkeleton(layers + 1));
     expectError(run, "the skeleton has 8 nodes but the lattice has 6 sub-graphs");
   }
   {
-    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
     vtkNew<vtkPolyData> empty;
     run.planner->SetInputData(0, empty);
     expectError(run, "empty lattice");
@@ -683,14 +604,14 @@ TEST(vtkGLToolpathPlanner, BadInputIsReported) {
     vtkNew<GLTestErrorObserver> errors;
     errors->Observe(planner);
     errors->Observe(planner->GetExecutive());
-    planner->SetInputData(0, towerLattice(layers));
+    planner->SetInputData(0, towerLattice(layers, kTowers));
     planner->Update();
     EXPECT_EQ(planner->GetOutput()->GetNumberOfPoints(), 0);
     EXPECT_TRUE(errors->HasError());
   }
   {
     // A recovered error: the next update with good parameters has a toolpath and no new error.
-    PlannerRun run(towerLattice(layers), towerSkeleton(layers));
+    PlannerRun run(towerLattice(layers, kTowers), towerSkeleton(layers));
     run.planner->SetPathWidth(0);
     run.output();
     EXPECT_TRUE(run.errors->HasError());
@@ -741,12 +662,12 @@ TEST_F(BranchingYToolpath, ToolpathIsConsistent) {
       ASSERT_EQ(path->GetPointData()->GetArray(arrays::LayerId)->GetTuple1(i), layerOf.at(s)) << i;
     }
   }
-  EXPECT_EQ(static_cast<double>(printed.size()), field(lattice, arrays::LatticeSubgraphs));
+  EXPECT_EQ(static_cast<double>(printed.size()), fieldValue(lattice, arrays::LatticeSubgraphs));
   EXPECT_EQ(path->GetFieldData()
                 ->GetArray(arrays::ToolpathThicknessDeviationPerLayer)
                 ->GetNumberOfTuples(),
             static_cast<vtkIdType>(layerIds.size()));
-  EXPECT_GE(field(path, arrays::ToolpathTours), field(lattice, arrays::LatticeSubgraphs));
+  EXPECT_GE(fieldValue(path, arrays::ToolpathTours), fieldValue(lattice, arrays::LatticeSubgraphs));
   // The lattice printed is the lattice minus what the trimming left out (contracted edges have
   // no length).
   double latticeLength = 0;
@@ -760,12 +681,13 @@ TEST_F(BranchingYToolpath, ToolpathIsConsistent) {
       latticeLength += std::sqrt(vtkMath::Distance2BetweenPoints(a, b));
     }
   }
-  EXPECT_NEAR(field(path, arrays::ToolpathPrintLength) + field(path, arrays::ToolpathTrimmedLength),
+  EXPECT_NEAR(fieldValue(path, arrays::ToolpathPrintLength) +
+                  fieldValue(path, arrays::ToolpathTrimmedLength),
               latticeLength, 1e-6 * latticeLength);
   // Trimmed boundaries get a support perimeter.
-  if (field(path, arrays::ToolpathTrimmedEdges) > 0) {
-    EXPECT_GT(field(path, arrays::ToolpathPerimeterLoops), 0.0);
-    EXPECT_GT(field(path, arrays::ToolpathPerimeterLength), 0.0);
+  if (fieldValue(path, arrays::ToolpathTrimmedEdges) > 0) {
+    EXPECT_GT(fieldValue(path, arrays::ToolpathPerimeterLoops), 0.0);
+    EXPECT_GT(fieldValue(path, arrays::ToolpathPerimeterLength), 0.0);
   }
   std::printf(
       "[toolpath filter] Y: %lld points, %lld cells, print %.1f mm, perimeter %.1f mm (%g loops), "
@@ -774,14 +696,18 @@ TEST_F(BranchingYToolpath, ToolpathIsConsistent) {
       "%.1f mm, "
       "thickness deviation %.3f .. %.3f, %.3f s\n",
       static_cast<long long>(path->GetNumberOfPoints()),
-      static_cast<long long>(path->GetNumberOfCells()), field(path, arrays::ToolpathPrintLength),
-      field(path, arrays::ToolpathPerimeterLength), field(path, arrays::ToolpathPerimeterLoops),
-      field(path, arrays::ToolpathAirLength), field(path, arrays::ToolpathRetractions),
-      field(path, arrays::ToolpathTours), field(path, arrays::ToolpathSplitSubgraphs),
-      field(path, arrays::ToolpathTrimmedEdges), field(path, arrays::ToolpathTrimmedLength),
-      field(path, arrays::ToolpathRotationSteps), field(path, arrays::ToolpathFilament),
-      field(path, arrays::ToolpathThicknessDeviation, 0),
-      field(path, arrays::ToolpathThicknessDeviation, 1), field(path, arrays::ToolpathSeconds));
+      static_cast<long long>(path->GetNumberOfCells()),
+      fieldValue(path, arrays::ToolpathPrintLength),
+      fieldValue(path, arrays::ToolpathPerimeterLength),
+      fieldValue(path, arrays::ToolpathPerimeterLoops), fieldValue(path, arrays::ToolpathAirLength),
+      fieldValue(path, arrays::ToolpathRetractions), fieldValue(path, arrays::ToolpathTours),
+      fieldValue(path, arrays::ToolpathSplitSubgraphs),
+      fieldValue(path, arrays::ToolpathTrimmedEdges),
+      fieldValue(path, arrays::ToolpathTrimmedLength),
+      fieldValue(path, arrays::ToolpathRotationSteps), fieldValue(path, arrays::ToolpathFilament),
+      fieldValue(path, arrays::ToolpathThicknessDeviation, 0),
+      fieldValue(path, arrays::ToolpathThicknessDeviation, 1),
+      fieldValue(path, arrays::ToolpathSeconds));
 }
 
 TEST_F(BranchingYToolpath, SequencedSkeletonGivesTheSamePath) {
@@ -794,8 +720,8 @@ TEST_F(BranchingYToolpath, SequencedSkeletonGivesTheSamePath) {
   ASSERT_FALSE(p->errors->HasError()) << p->errors->Errors();
   EXPECT_EQ(planner->GetOutput()->GetNumberOfPoints(),
             p->planner->GetOutput()->GetNumberOfPoints());
-  EXPECT_EQ(field(planner->GetOutput(), arrays::ToolpathAirLength),
-            field(p->planner->GetOutput(), arrays::ToolpathAirLength));
+  EXPECT_EQ(fieldValue(planner->GetOutput(), arrays::ToolpathAirLength),
+            fieldValue(p->planner->GetOutput(), arrays::ToolpathAirLength));
 }
 
 TEST_F(BranchingYToolpath, VerifierUsesOnlyPrintedPointsAsMaterial) {
@@ -815,22 +741,24 @@ TEST_F(BranchingYToolpath, VerifierUsesOnlyPrintedPointsAsMaterial) {
     return out;
   };
   vtkSmartPointer<vtkPolyData> masked = verify(path);
-  EXPECT_EQ(field(masked, arrays::CollisionStations),
+  EXPECT_EQ(fieldValue(masked, arrays::CollisionStations),
             static_cast<double>(path->GetNumberOfPoints()));
   // The same points with every air point as material: at least as many violations.
   auto copy = vtkSmartPointer<vtkPolyData>::New();
   copy->ShallowCopy(path);
   copy->GetPointData()->RemoveArray(arrays::MoveKind);
   vtkSmartPointer<vtkPolyData> unmasked = verify(copy);
-  EXPECT_GE(field(unmasked, arrays::CollisionViolatingStations),
-            field(masked, arrays::CollisionViolatingStations));
+  EXPECT_GE(fieldValue(unmasked, arrays::CollisionViolatingStations),
+            fieldValue(masked, arrays::CollisionViolatingStations));
   std::printf(
       "[toolpath filter] Y, NA 45, verifier on the toolpath: %g stations, %g violating (%g "
       "unavoidable), "
       "collision-free %g; air points as material: %g violating\n",
-      field(masked, arrays::CollisionStations), field(masked, arrays::CollisionViolatingStations),
-      field(masked, arrays::CollisionUnavoidableStations), field(masked, arrays::CollisionFree),
-      field(unmasked, arrays::CollisionViolatingStations));
+      fieldValue(masked, arrays::CollisionStations),
+      fieldValue(masked, arrays::CollisionViolatingStations),
+      fieldValue(masked, arrays::CollisionUnavoidableStations),
+      fieldValue(masked, arrays::CollisionFree),
+      fieldValue(unmasked, arrays::CollisionViolatingStations));
 }
 
 TEST_F(BranchingYToolpath, ProgressAndAbortBeforeAndAfterThePlanning) {
