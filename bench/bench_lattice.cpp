@@ -2,12 +2,8 @@
 // the bunny scaled to 100 mm, tetrahedralized by TetGen to ~66k tets (the paper's bunny size),
 // 0.6 mm layers, fields from the heat-method GDF. Arguments: lattice width (mm), threads.
 // Run: build/bin/bench_lattice
-#include "gdf/GeodesicDistanceFields.h"
-#include "gdf/HeatSources.h"
-#include "io/MeshReader.h"
+#include "../tests/common/CoreStages.h"
 #include "lattice/LatticeInfill.h"
-#include "slicer/CurvedLayerSlicer.h"
-#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <benchmark/benchmark.h>
 
@@ -18,24 +14,7 @@ using namespace geolattice;
 namespace {
 
 const CurvedLayers& bunnyLayers() {
-  static const CurvedLayers layers = [] {
-    TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/bunny.obj");
-    Eigen::AlignedBox3d box;
-    for (const Vec3& p : s.points) {
-      box.extend(p);
-    }
-    const double scale = 100.0 / box.sizes().maxCoeff();
-    for (Vec3& p : s.points) {
-      p = (p - box.min()) * scale;
-    }
-    TetrahedralizeOptions options;
-    options.autoTargetTets = 66000;
-    const TetMesh mesh = tetrahedralizeSurface(s, options).mesh;
-    const GeodesicFields fields =
-        computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 1.0));
-    return sliceCurvedLayers(mesh, fields.gamma, fields.alpha, fields.beta,
-                             vertexGradientDirections(mesh, fields.gamma), SlicerOptions{});
-  }();
+  static const CurvedLayers layers = fixtures::paperBunny(fixtures::CoreStage::Layers).layers;
   return layers;
 }
 

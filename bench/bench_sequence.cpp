@@ -5,6 +5,7 @@
 //    air-move length, collision-free by the independent verifier, seconds) as Markdown.
 //  - Without --table: Google Benchmark timings of PCG (Algorithm 3) + A4 (Algorithm 4), of the
 //    rollout order, and of the verifier, per nozzle angle.
+#include "../tests/common/CoreStages.h"
 #include "collision/CollisionVerifier.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
@@ -49,15 +50,13 @@ const TreePart& threeBranchPart() {
     }
     const TetMesh mesh = tetrahedralizeSurface(s, TetrahedralizeOptions{}).mesh;
     p.tets = mesh.tets.size();
-    const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
-    const CurvedLayers layers = sliceCurvedLayers(
-        mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
-    p.layers = static_cast<int>(layers.layerValues.size());
-    LatticeOptions o;
-    o.alphaWidth = o.betaWidth = 4.0;
-    p.lattice = buildLatticeGraph(layers, o);
+    fixtures::CoreStageOptions o;
+    o.until = fixtures::CoreStage::Lattice;
+    fixtures::CoreStages stages = fixtures::runCoreStages(mesh, o);
+    p.layers = static_cast<int>(stages.layers.layerValues.size());
+    p.lattice = std::move(stages.lattice);
     const auto t0 = std::chrono::steady_clock::now();
-    p.tree = buildSkeletonTree(mesh, f.gamma, p.lattice);
+    p.tree = buildSkeletonTree(stages.mesh, stages.fields.gamma, p.lattice);
     p.skeletonSeconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     p.material = sampleLatticeMaterial(p.lattice, 1.0);

@@ -1,12 +1,9 @@
 // Curved layer slicing (core/slicer) on the bunny scaled to 100 mm and tetrahedralized by TetGen
 // to ~66k tets (the paper's bunny size), 0.6 mm layers. Fields from the heat-method GDF.
 // Run: build/bin/bench_slicer ; results in docs/performance.md.
-#include "gdf/GeodesicDistanceFields.h"
-#include "gdf/HeatSources.h"
-#include "io/MeshReader.h"
+#include "../tests/common/CoreStages.h"
 #include "slicer/CurvedLayerSlicer.h"
 #include "slicer/LayerStatistics.h"
-#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <benchmark/benchmark.h>
 
@@ -16,36 +13,14 @@ using namespace geolattice;
 
 namespace {
 
-struct Part {
-  TetMesh mesh;
-  GeodesicFields fields;
-  std::vector<Vec3> normals;
-};
-
-const Part& bunny66k() {
-  static const Part part = [] {
-    TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/bunny.obj");
-    Eigen::AlignedBox3d box;
-    for (const Vec3& p : s.points) {
-      box.extend(p);
-    }
-    const double scale = 100.0 / box.sizes().maxCoeff();
-    for (Vec3& p : s.points) {
-      p = (p - box.min()) * scale;
-    }
-    TetrahedralizeOptions options;
-    options.autoTargetTets = 66000;
-    Part out;
-    out.mesh = tetrahedralizeSurface(s, options).mesh;
-    out.fields = computeGeodesicDistanceFields(out.mesh, sourcesNearLowestZ(out.mesh, 1.0));
-    out.normals = vertexGradientDirections(out.mesh, out.fields.gamma);
-    return out;
-  }();
+/// The bunny at 100 mm, ~66k tets, and its fields (base: 1 mm above the lowest z).
+const fixtures::CoreStages& bunny66k() {
+  static const fixtures::CoreStages part = fixtures::paperBunny(fixtures::CoreStage::Fields);
   return part;
 }
 
 void BM_SliceAllLayers(benchmark::State& state) {
-  const Part& part = bunny66k();
+  const fixtures::CoreStages& part = bunny66k();
   SlicerOptions options;  // 0.6 mm
   size_t triangles = 0, layers = 0;
   for (auto _ : state) {
@@ -63,7 +38,7 @@ void BM_SliceAllLayers(benchmark::State& state) {
 BENCHMARK(BM_SliceAllLayers)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 void BM_LayerStatistics(benchmark::State& state) {
-  const Part& part = bunny66k();
+  const fixtures::CoreStages& part = bunny66k();
   const CurvedLayers layers = sliceCurvedLayers(part.mesh, part.fields.gamma, part.fields.alpha,
                                                 part.fields.beta, part.normals, SlicerOptions{});
   for (auto _ : state) {

@@ -3,15 +3,11 @@
 // trimming + crossover-free Euler tours + layer thickness (the paper's steps), and the whole
 // planner (with support perimeters, rotation steps, air moves, extrusion).
 // Run: build/bin/bench_toolpath
-#include "gdf/GeodesicDistanceFields.h"
-#include "gdf/HeatSources.h"
-#include "io/MeshReader.h"
+#include "../tests/common/CoreStages.h"
 #include "lattice/LatticeInfill.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
 #include "skeleton/SkeletonTree.h"
-#include "slicer/CurvedLayerSlicer.h"
-#include "tetrahedralize/TetrahedralizeSurface.h"
 #include "toolpath/EulerTour.h"
 #include "toolpath/EulerianTrimming.h"
 #include "toolpath/LayerThickness.h"
@@ -33,24 +29,10 @@ struct Bunny {
 
 const Bunny& bunny() {
   static const Bunny b = [] {
+    fixtures::CoreStages stages = fixtures::paperBunny(fixtures::CoreStage::Skeleton, 6.0);
     Bunny r;
-    TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/bunny.obj");
-    Eigen::AlignedBox3d box;
-    for (const Vec3& p : s.points)
-      box.extend(p);
-    const double scale = 100.0 / box.sizes().maxCoeff();
-    for (Vec3& p : s.points)
-      p = (p - box.min()) * scale;
-    TetrahedralizeOptions options;
-    options.autoTargetTets = 66000;
-    const TetMesh mesh = tetrahedralizeSurface(s, options).mesh;
-    const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 1.0));
-    const CurvedLayers layers = sliceCurvedLayers(
-        mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
-    LatticeOptions lo;
-    lo.alphaWidth = lo.betaWidth = 6.0;
-    r.lattice = buildLatticeGraph(layers, lo);
-    r.tree = buildSkeletonTree(mesh, f.gamma, r.lattice);
+    r.lattice = std::move(stages.lattice);
+    r.tree = std::move(stages.tree);
     SequenceOptions so;
     so.strategy = SequenceStrategy::LayerPriority;
     r.order = sequencePrint(r.tree, sampleLatticeMaterial(r.lattice, 1.0), nullptr, so).order;

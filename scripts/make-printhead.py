@@ -50,10 +50,7 @@ import sys
 
 import numpy as np
 
-from vtkmodules.vtkFiltersCore import (vtkFeatureEdges, vtkMassProperties,
-                                       vtkPolyDataConnectivityFilter)
-from vtkmodules.vtkIOGeometry import vtkOBJReader
-from vtkmodules.util.numpy_support import vtk_to_numpy
+from surface_checks import check_obj, signed_volume
 
 GENERATOR = "scripts/make-printhead.py (GeoLattice)"
 
@@ -117,28 +114,12 @@ def revolve(pts, n, outside):
     return V, np.concatenate(F).astype(np.int64)
 
 
-def signed_volume(V, F):
-    a, b, c = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
-    return np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0
-
-
 def polygon_revolution_volume(pts, n, scale):
     """Exact volume of the profile revolved as an N-gon: (N/2) sin(2 pi/N) x the circular volume."""
     vol = 0.0
     for (r0, z0), (r1, z1) in zip(pts[:-1], pts[1:]):
         vol += math.pi * (z1 - z0) * (r0 * r0 + r0 * r1 + r1 * r1) / 3.0  # frustum (signed by dz)
     return vol * scale * scale * n * math.sin(2 * math.pi / n) / (2 * math.pi), vol
-
-
-def _count(pd, boundary, nonmanifold):
-    fe = vtkFeatureEdges()
-    fe.SetInputData(pd)
-    fe.SetBoundaryEdges(boundary)
-    fe.SetNonManifoldEdges(nonmanifold)
-    fe.FeatureEdgesOff()
-    fe.ManifoldEdgesOff()
-    fe.Update()
-    return fe.GetOutput().GetNumberOfCells()
 
 
 def main(argv):
@@ -182,40 +163,16 @@ def main(argv):
         np.savetxt(f, F + 1, fmt="f %d %d %d")
 
     # ---- verification of the written file
-    r = vtkOBJReader()
-    r.SetFileName(out)
-    r.Update()
-    pd = r.GetOutput()
-    V = vtk_to_numpy(pd.GetPoints().GetData()).astype(float)
-    F = vtk_to_numpy(pd.GetPolys().GetConnectivityArray()).reshape(-1, 3).astype(np.int64)
-    boundary, nonmanifold = _count(pd, True, False), _count(pd, False, True)
-    conn = vtkPolyDataConnectivityFilter()
-    conn.SetInputData(pd)
-    conn.SetExtractionModeToAllRegions()
-    conn.Update()
-    comps = conn.GetNumberOfExtractedRegions()
-    mp = vtkMassProperties()
-    mp.SetInputData(pd)
-    mp.Update()
-    svol = signed_volume(V, F)
-    d = np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]])
-    _, dcount = np.unique(d, axis=0, return_counts=True)
-    inconsistent = int(np.count_nonzero(dcount > 1))
-    e = np.sort(d, axis=1)
-    E = np.unique(e, axis=0)
-    euler = len(np.unique(F)) - len(E) + len(F)
-    genus = (2 - euler) / 2.0
-    lo, hi = V.min(axis=0), V.max(axis=0)
-    diag = float(np.linalg.norm(hi - lo))
-    area = 0.5 * np.linalg.norm(np.cross(V[F[:, 1]] - V[F[:, 0]], V[F[:, 2]] - V[F[:, 0]]), axis=1)
-    degenerate = int(np.count_nonzero(area <= 1e-12 * diag * diag))
+    c = check_obj(out)
+    V, F, lo, hi = c["V"], c["F"], c["bbox"][0], c["bbox"][1]
     base = V[V[:, 2] == 0.0]
     face_r = float(np.hypot(base[:, 0], base[:, 1]).max())
     tip_on_axis = bool(np.any(np.all(base == 0.0, axis=1)))
     expected_vol, round_vol = polygon_revolution_volume(pts, n, 1.0 / math.cos(math.pi / n) if outside else 1.0)
     want_r = TIP_FACE_RADIUS / math.cos(math.pi / n) if outside else TIP_FACE_RADIUS
-    ok = (boundary == 0 and nonmanifold == 0 and comps == 1 and inconsistent == 0 and degenerate == 0
-          and svol > 0 and genus == 0 and lo[2] == 0.0 and tip_on_axis and abs(face_r - want_r) < 1e-5
+    svol = c["signed_volume"]
+    ok = (c["boundary"] == 0 and c["nonmanifold"] == 0 and c["components"] == 1 and c["inconsistent"] == 0
+          and c["degenerate"] == 0 and svol > 0 and c["genus"] == 0 and lo[2] == 0.0 and tip_on_axis and abs(face_r - want_r) < 1e-5
           and abs(svol - expected_vol) < 1e-6 * expected_vol)
     head = ["file", "triangles", "vertices", "bounding box (mm)", "volume vtk (mm^3)", "signed volume",
             "N-gon solid volume", "round solid volume", "V-E+F", "genus", "boundary e.", "non-manifold e.",
@@ -223,8 +180,9 @@ def main(argv):
             "face radius at z=0", "check"]
     row = [os.path.basename(out), len(F), len(V),
            f"[{lo[0]:.3f},{hi[0]:.3f}]x[{lo[1]:.3f},{hi[1]:.3f}]x[{lo[2]:.3f},{hi[2]:.3f}]",
-           f"{mp.GetVolume():.1f}", f"{svol:.1f}", f"{expected_vol:.1f}", f"{round_vol:.1f}", euler, f"{genus:g}",
-           boundary, nonmanifold, inconsistent, degenerate, comps, f"{lo[2]:g}", "yes" if tip_on_axis else "no",
+           f"{c['vtk_volume']:.1f}", f"{svol:.1f}", f"{expected_vol:.1f}", f"{round_vol:.1f}", c["euler"],
+           f"{c['genus']:g}", c["boundary"], c["nonmanifold"], c["inconsistent"], c["degenerate"],
+           c["components"], f"{lo[2]:g}", "yes" if tip_on_axis else "no",
            f"{face_r:.6f}", "ok" if ok else "**FAIL**"]
     print("| " + " | ".join(head) + " |")
     print("|" + "---|" * len(head))

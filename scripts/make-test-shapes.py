@@ -68,23 +68,12 @@ import time
 
 import numpy as np
 
-try:
-    from vtkmodules.vtkCommonCore import vtkDoubleArray
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    from vtkmodules.vtkFiltersCore import (vtkCleanPolyData, vtkFeatureEdges, vtkFlyingEdges3D,
-                                           vtkMassProperties, vtkPolyDataConnectivityFilter,
-                                           vtkTriangleFilter)
-    from vtkmodules.vtkIOGeometry import vtkOBJReader
-    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
-except ImportError:  # older pvpython layouts
-    from paraview import vtk  # noqa: F401
-    from vtkmodules.vtkCommonCore import vtkDoubleArray
-    from vtkmodules.vtkCommonDataModel import vtkImageData
-    from vtkmodules.vtkFiltersCore import (vtkCleanPolyData, vtkFeatureEdges, vtkFlyingEdges3D,
-                                           vtkMassProperties, vtkPolyDataConnectivityFilter,
-                                           vtkTriangleFilter)
-    from vtkmodules.vtkIOGeometry import vtkOBJReader
-    from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+from vtkmodules.vtkCommonCore import vtkDoubleArray
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkFiltersCore import vtkCleanPolyData, vtkFlyingEdges3D, vtkTriangleFilter
+from vtkmodules.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+
+from surface_checks import check_obj, signed_volume
 
 GENERATOR = "scripts/make-test-shapes.py (GeoLattice)"
 BASE_BLEND = 0.6          # mm, smooth max with the platform half-space z >= 0
@@ -465,11 +454,6 @@ def relax(sdf, V, F):
     return V
 
 
-def signed_volume(V, F):
-    a, b, c = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
-    return np.einsum("ij,ij->i", a, np.cross(b, c)).sum() / 6.0
-
-
 def triangle_stats(V, F):
     a, b, c = V[F[:, 0]], V[F[:, 1]], V[F[:, 2]]
     cr = np.cross(b - a, c - a)
@@ -527,50 +511,10 @@ def write_obj(path, name, spec, V, F, info):
 # --------------------------------------------------------------------------------------------
 
 
-def _count_cells(pd, boundary, nonmanifold):
-    fe = vtkFeatureEdges()
-    fe.SetInputData(pd)
-    fe.SetBoundaryEdges(boundary)
-    fe.SetNonManifoldEdges(nonmanifold)
-    fe.FeatureEdgesOff()
-    fe.ManifoldEdgesOff()
-    fe.Update()
-    return fe.GetOutput().GetNumberOfCells()
-
-
 def verify_obj(path):
-    r = vtkOBJReader()
-    r.SetFileName(path)
-    r.Update()
-    pd = r.GetOutput()
-    V = vtk_to_numpy(pd.GetPoints().GetData()).astype(float)
-    F = vtk_to_numpy(pd.GetPolys().GetConnectivityArray()).reshape(-1, 3).astype(np.int64)
-    out = dict(vertices=len(V), triangles=len(F))
-    out["boundary"] = _count_cells(pd, True, False)
-    out["nonmanifold"] = _count_cells(pd, False, True)
-    conn = vtkPolyDataConnectivityFilter()
-    conn.SetInputData(pd)
-    conn.SetExtractionModeToAllRegions()
-    conn.Update()
-    out["components"] = conn.GetNumberOfExtractedRegions()
-    mp = vtkMassProperties()
-    mp.SetInputData(pd)
-    mp.Update()
-    out["vtk_volume"] = mp.GetVolume()
-    out["area"] = mp.GetSurfaceArea()
-    out["signed_volume"] = signed_volume(V, F)
-    d = np.concatenate([F[:, [0, 1]], F[:, [1, 2]], F[:, [2, 0]]])
-    _, dcount = np.unique(d, axis=0, return_counts=True)
-    out["inconsistent"] = int(np.count_nonzero(dcount > 1))  # a directed edge used twice
-    E = unique_edges(F)
-    used = np.unique(F)
-    out["euler"] = len(used) - len(E) + len(F)
-    out["genus"] = (2 - out["euler"]) / 2.0
-    lo, hi = V.min(axis=0), V.max(axis=0)
-    out["bbox"] = (lo, hi)
-    diag = float(np.linalg.norm(hi - lo))
+    out = check_obj(path)
+    V, F = out.pop("V"), out.pop("F")
     _, area, minang = triangle_stats(V, F)
-    out["degenerate"] = int(np.count_nonzero(area <= 1e-12 * diag * diag))
     out["min_angle"] = float(minang.min())
     out["min_angle_p1"] = float(np.percentile(minang, 1))
     out["base_vertices"] = int(np.count_nonzero(V[:, 2] == 0.0))

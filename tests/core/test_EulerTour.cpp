@@ -1,6 +1,7 @@
 // Eulerian trimming and crossover-free Euler tours (paper Section 3.2, Figs. 14-15): on the
 // analytic box lattice, on the real three-branch tree and bunny lattices, and on hand-built
 // graphs for the odd-loop fallback and bad input.
+#include "../common/CoreStages.h"
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
@@ -39,22 +40,11 @@ LatticeGraph boxLattice() {
 }
 
 LatticeGraph realLattice(const std::string& file, double size, double edge, double width) {
-  TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/" + file);
-  Eigen::AlignedBox3d box;
-  for (const Vec3& p : s.points)
-    box.extend(p);
-  const double scale = size / box.sizes().maxCoeff();  // largest side = size (mm)
-  for (Vec3& p : s.points)
-    p = (p - box.min()) * scale;
-  TetrahedralizeOptions t;
-  t.targetEdgeLength = edge;
-  const TetMesh mesh = tetrahedralizeSurface(s, t).mesh;
-  const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
-  const CurvedLayers layers = sliceCurvedLayers(
-      mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
-  LatticeOptions o;
-  o.alphaWidth = o.betaWidth = width;
-  return buildLatticeGraph(layers, o);
+  fixtures::CoreStageOptions o;
+  o.edgeLength = edge;
+  o.latticeWidth = width;
+  o.until = fixtures::CoreStage::Lattice;
+  return fixtures::runCoreStages(fixtures::scaledModel(file, size), o).lattice;
 }
 
 /// Every acceptance property of trimming + tours on a lattice.

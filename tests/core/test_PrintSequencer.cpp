@@ -1,6 +1,7 @@
 // Potential collisions (Algorithm 3) and printing orders (LPT, DPT, A4, rollout) on a
 // synthetic two-tower part whose skeleton splits above a common base; every order is checked by
 // the independent collision verifier.
+#include "../common/CoreStages.h"
 #include "collision/CollisionVerifier.h"
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
@@ -197,17 +198,12 @@ TEST(PrintSequencer, ThreeBranchTreeAcceptance) {
   // The acceptance on the real pipeline (coarser than bench_sequence for test time):
   // A4 and best free of avoidable collisions at every NA, no worse than LPT, best no worse than
   // A4, and DPT reported as colliding at a wide nozzle.
-  TriangleSurface surface = readObj(std::string(GEOLATTICE_TESTDATA) + "/three_branch_tree.obj");
-  TetrahedralizeOptions to;
-  to.targetEdgeLength = 2.0;
-  const TetMesh mesh = tetrahedralizeSurface(surface, to).mesh;
-  const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
-  const CurvedLayers layers = sliceCurvedLayers(
-      mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
-  LatticeOptions lo;
-  lo.alphaWidth = lo.betaWidth = 4.0;
-  const LatticeGraph lattice = buildLatticeGraph(layers, lo);
-  const SkeletonTree tree = buildSkeletonTree(mesh, f.gamma, lattice);
+  fixtures::CoreStageOptions o;
+  o.edgeLength = 2.0;
+  const fixtures::CoreStages stages = fixtures::runCoreStages(
+      readObj(std::string(GEOLATTICE_TESTDATA) + "/three_branch_tree.obj"), o);
+  const LatticeGraph& lattice = stages.lattice;
+  const SkeletonTree& tree = stages.tree;
   EXPECT_GE(tree.splitNodes, 1);
   const MaterialSamples m = sampleLatticeMaterial(lattice, 1.0);
   const SkeletonAncestry ancestry(tree);

@@ -1,6 +1,7 @@
 // Skeleton tree (Algorithm 2, volumetric adjacency): a chain on a box with analytic fields, a
 // split on the branching Y, a split and a merge on a torus lying on its side, and the
 // validation errors (cyclic or missing adjacency).
+#include "../common/CoreStages.h"
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
@@ -22,26 +23,16 @@ namespace {
 
 const std::string kData = GEOLATTICE_TESTDATA;
 
-struct Part {
-  TetMesh mesh;
-  GeodesicFields fields;
-  LatticeGraph lattice;
-};
+using Part = fixtures::CoreStages;  // mesh, fields and lattice (the tests build the skeleton)
 
 Part buildPart(const TriangleSurface& surface, double edgeLength, double sourceTolerance,
                double latticeWidth) {
-  Part p;
-  TetrahedralizeOptions t;
-  t.targetEdgeLength = edgeLength;
-  p.mesh = tetrahedralizeSurface(surface, t).mesh;
-  p.fields = computeGeodesicDistanceFields(p.mesh, sourcesNearLowestZ(p.mesh, sourceTolerance));
-  const CurvedLayers layers =
-      sliceCurvedLayers(p.mesh, p.fields.gamma, p.fields.alpha, p.fields.beta,
-                        vertexGradientDirections(p.mesh, p.fields.gamma), SlicerOptions{});
-  LatticeOptions o;
-  o.alphaWidth = o.betaWidth = latticeWidth;
-  p.lattice = buildLatticeGraph(layers, o);
-  return p;
+  fixtures::CoreStageOptions o;
+  o.edgeLength = edgeLength;
+  o.baseTolerance = sourceTolerance;
+  o.latticeWidth = latticeWidth;
+  o.until = fixtures::CoreStage::Lattice;
+  return fixtures::runCoreStages(surface, o);
 }
 
 /// Structural invariants every skeleton must satisfy.

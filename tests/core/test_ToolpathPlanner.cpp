@@ -2,6 +2,7 @@
 // one closed tour per sub-graph, no self-crossing, thickness capped (Eq. 15), extrusion by
 // mass conservation (Eq. 14), safe air moves, and the independent collision verifier on the
 // full path including the air moves.
+#include "../common/CoreStages.h"
 #include "collision/CollisionVerifier.h"
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
@@ -33,25 +34,13 @@ struct Part {
 
 Part buildPart(const std::string& file, double size, double edge, double width,
                double nozzleAngle) {
-  TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/" + file);
-  Eigen::AlignedBox3d box;
-  for (const Vec3& p : s.points)
-    box.extend(p);
-  const double scale = size / box.sizes().maxCoeff();
-  for (Vec3& p : s.points)
-    p = Vec3((p.x() - box.center().x()) * scale, (p.y() - box.center().y()) * scale,
-             (p.z() - box.min().z()) * scale);
-  TetrahedralizeOptions t;
-  t.targetEdgeLength = edge;
-  const TetMesh mesh = tetrahedralizeSurface(s, t).mesh;
-  const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
-  const CurvedLayers layers = sliceCurvedLayers(
-      mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
-  LatticeOptions lo;
-  lo.alphaWidth = lo.betaWidth = width;
+  fixtures::CoreStageOptions o;
+  o.edgeLength = edge;
+  o.latticeWidth = width;
+  fixtures::CoreStages stages = fixtures::runCoreStages(fixtures::scaledModel(file, size, true), o);
   Part p;
-  p.lattice = buildLatticeGraph(layers, lo);
-  p.tree = buildSkeletonTree(mesh, f.gamma, p.lattice);
+  p.lattice = std::move(stages.lattice);
+  p.tree = std::move(stages.tree);
   const MaterialSamples m = sampleLatticeMaterial(p.lattice, 1.0);
   NozzleModel n;
   n.halfAngleDeg = nozzleAngle;

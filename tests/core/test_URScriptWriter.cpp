@@ -1,6 +1,7 @@
 // URScript programs for a real toolpath (the Y part in the UR5 cell): syntax check of every
 // file (balanced def/end, valid pose literals, numbers with at most 6 decimals, line length),
 // splitting at air moves, segment times within the joint speed limits.
+#include "../common/CoreStages.h"
 #include "common/Error.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
@@ -28,17 +29,12 @@ namespace {
 
 const Toolpath& yToolpath() {
   static const Toolpath path = [] {
-    const TriangleSurface s = readObj(std::string(GEOLATTICE_TESTDATA) + "/y_shape.obj");
-    TetrahedralizeOptions t;
-    t.targetEdgeLength = 2.5;
-    const TetMesh mesh = tetrahedralizeSurface(s, t).mesh;
-    const GeodesicFields f = computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 0.5));
-    const CurvedLayers layers = sliceCurvedLayers(
-        mesh, f.gamma, f.alpha, f.beta, vertexGradientDirections(mesh, f.gamma), SlicerOptions{});
-    LatticeOptions lo;
-    lo.alphaWidth = lo.betaWidth = 4.0;
-    const LatticeGraph g = buildLatticeGraph(layers, lo);
-    const SkeletonTree tree = buildSkeletonTree(mesh, f.gamma, g);
+    fixtures::CoreStageOptions o;
+    o.edgeLength = 2.5;
+    const fixtures::CoreStages stages =
+        fixtures::runCoreStages(readObj(std::string(GEOLATTICE_TESTDATA) + "/y_shape.obj"), o);
+    const LatticeGraph& g = stages.lattice;
+    const SkeletonTree& tree = stages.tree;
     SequenceOptions so;
     so.strategy = SequenceStrategy::LayerPriority;
     const PrintSequence seq = sequencePrint(tree, sampleLatticeMaterial(g, 1.0), nullptr, so);
