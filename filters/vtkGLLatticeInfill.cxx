@@ -171,13 +171,6 @@ gl::CurvedLayers toCurvedLayers(vtkPolyData* input, std::vector<vtkIdType>& inpu
   return c;
 }
 
-vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n) {
-  auto a = vtkSmartPointer<vtkIntArray>::New();
-  a->SetName(name);
-  a->SetNumberOfTuples(n);
-  return a;
-}
-
 void addCount(vtkFieldData* fd, const char* name, double value) {
   gl::addFieldArray(fd, name, {value});
 }
@@ -198,9 +191,9 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out) {
   alpha->SetNumberOfTuples(V);
   beta->SetName(gl::arrays::Beta);
   beta->SetNumberOfTuples(V);
-  auto kind = intArray(gl::arrays::VertexKind, V);
-  auto degree = intArray(gl::arrays::Degree, V);
-  auto vertexSubgraph = intArray(gl::arrays::SubgraphId, V);
+  auto kind = gl::intArray(gl::arrays::VertexKind, V);
+  auto degree = gl::intArray(gl::arrays::Degree, V);
+  auto vertexSubgraph = gl::intArray(gl::arrays::SubgraphId, V);
   for (vtkIdType v = 0; v < V; ++v) {
     points->SetPoint(v, g.points[v].data());
     normals->SetTypedTuple(v, g.normals[v].data());
@@ -214,9 +207,9 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out) {
   out->SetPoints(points);
   vtkNew<vtkCellArray> lines;
   lines->AllocateExact(E, 2 * E);
-  auto edgeKind = intArray(gl::arrays::EdgeKind, E);
-  auto layerId = intArray(gl::arrays::LayerId, E);
-  auto edgeSubgraph = intArray(gl::arrays::SubgraphId, E);
+  auto edgeKind = gl::intArray(gl::arrays::EdgeKind, E);
+  auto layerId = gl::intArray(gl::arrays::LayerId, E);
+  auto edgeSubgraph = gl::intArray(gl::arrays::SubgraphId, E);
   vtkNew<vtkDoubleArray> level;
   level->SetName(gl::arrays::IsolineLevel);
   level->SetNumberOfTuples(E);

@@ -7,6 +7,7 @@
 
 #include "common/Error.h"
 
+#include <vtkIntArray.h>
 #include <vtkCellArray.h>
 #include <vtkCellArrayIterator.h>
 #include <vtkCellData.h>
@@ -492,21 +493,7 @@ SkeletonTree toSkeletonTree(vtkPolyData* skeleton) {
   }
   std::sort(tree.edges.begin(), tree.edges.end());
   tree.edges.erase(std::unique(tree.edges.begin(), tree.edges.end()), tree.edges.end());
-  for (const auto& e : tree.edges) {
-    tree.nodes[e[0]].upper.push_back(e[1]);
-    tree.nodes[e[1]].lower.push_back(e[0]);
-  }
-  const int firstLayer =
-      static_cast<int>(std::find_if(count.begin(), count.end(), [](int c) { return c > 0; }) -
-                       count.begin());  // as buildSkeletonTree: the lowest layer with a node
-  for (SkeletonNode& n : tree.nodes) {
-    std::sort(n.lower.begin(), n.lower.end());
-    std::sort(n.upper.begin(), n.upper.end());
-    tree.roots += n.lower.empty();
-    tree.floatingNodes += n.lower.empty() && n.layer > firstLayer;
-    tree.mergeNodes += n.lower.size() > 1;
-    tree.splitNodes += n.upper.size() > 1;
-  }
+  linkSkeletonEdges(tree);
   if (vtkDataArray* values = skeleton->GetFieldData()->GetArray(arrays::LayerValues)) {
     for (vtkIdType l = 0; l < values->GetNumberOfTuples(); ++l) {
       tree.layerValues.push_back(values->GetComponent(l, 0));
@@ -626,6 +613,13 @@ BuildPlate buildPlate(vtkGLNozzle* n) {
   plate.thickness = n->GetPlateThickness();
   plate.validate();
   return plate;
+}
+
+vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n) {
+  auto a = vtkSmartPointer<vtkIntArray>::New();
+  a->SetName(name);
+  a->SetNumberOfTuples(n);
+  return a;
 }
 
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values,

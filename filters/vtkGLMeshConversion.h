@@ -19,6 +19,7 @@
 class vtkAlgorithm;
 class vtkDataArray;
 class vtkDoubleArray;
+class vtkIntArray;
 class vtkGLNozzle;
 class vtkFieldData;
 class vtkPointData;
@@ -99,15 +100,17 @@ struct ToolpathArrays {
 /// feed rate that is not finite and > 0 after the first point, a MoveKind other than 0, 1 or 2.
 ToolpathArrays toToolpathArrays(vtkPolyData* toolpath);
 
-/// A named double array of values.size() / components tuples holding values.
 /// The nozzle of the filters' properties (NozzleLength 0 = cone only); validated, throws
 /// GeoLatticeError naming a bad parameter.
 NozzleModel nozzleModel(vtkGLNozzle* nozzle);
 /// The build plate of the filters' nozzle block; validated (throws naming a bad parameter).
 BuildPlate buildPlate(vtkGLNozzle* nozzle);
 
+/// A named double array of values.size() / components tuples holding values.
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values,
                                             int components = 1);
+/// A named int array of n tuples (their values to be set).
+vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n);
 /// Adds doubleArray(name, values, components) to the field data (replacing one of that name).
 void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values,
                    int components = 1);

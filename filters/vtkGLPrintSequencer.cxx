@@ -48,13 +48,6 @@ static_assert(static_cast<int>(gl::SequenceStrategy::LayerPriority) == vtkGLPrin
                   static_cast<int>(gl::SequenceStrategy::Rollout) == vtkGLPrintSequencer::BEST,
               "vtkGLPrintSequencer::Strategies must match core/sequence/PrintSequencer.h");
 
-vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n) {
-  auto a = vtkSmartPointer<vtkIntArray>::New();
-  a->SetName(name);
-  a->SetNumberOfTuples(n);
-  return a;
-}
-
 /// Position of sub-graph `value` in the order, -1 when it is no sub-graph.
 int positionOf(double value, const std::vector<int>& printIndex) {
   if (!std::isfinite(value) || value < 0 || value >= static_cast<double>(printIndex.size())) {
@@ -116,8 +109,8 @@ void sequencedLattice(vtkPolyData* input, const gl::LatticeGraph& graph,
   const gl::PrintSequence& seq = pieces.sequence;
   out->ShallowCopy(input);
   const vtkIdType C = input->GetNumberOfCells();
-  auto cellOrder = intArray(gl::arrays::PrintOrder, C);
-  auto cellPiece = intArray(gl::arrays::PieceId, C);
+  auto cellOrder = gl::intArray(gl::arrays::PrintOrder, C);
+  auto cellPiece = gl::intArray(gl::arrays::PieceId, C);
   vtkDataArray* cellSubgraph = input->GetCellData()->GetArray(gl::arrays::SubgraphId);
   for (vtkIdType c = 0; c < C; ++c) {  // every cell by its sub-graph; lines below by their piece
     const int position = positionOf(cellSubgraph->GetComponent(c, 0), seq.printIndex);
@@ -125,7 +118,7 @@ void sequencedLattice(vtkPolyData* input, const gl::LatticeGraph& graph,
     cellPiece->SetValue(c, position >= 0 ? seq.order[position] : -1);
   }
   const vtkIdType V = input->GetNumberOfPoints();
-  auto pointOrder = intArray(gl::arrays::PrintOrder, V);
+  auto pointOrder = gl::intArray(gl::arrays::PrintOrder, V);
   for (vtkIdType v = 0; v < V; ++v) {
     const int s = graph.vertexSubgraph[v];
     pointOrder->SetValue(v, s >= 0 ? seq.printIndex[s] : -1);
@@ -173,7 +166,7 @@ void sequencedSkeleton(vtkPolyData* input, const gl::PieceSequence& pieces, int 
   }
   vtkDataArray* nodeId = input->GetPointData()->GetArray(gl::arrays::NodeId);
   const vtkIdType N = input->GetNumberOfPoints();
-  auto order = intArray(gl::arrays::PrintOrder, N);
+  auto order = gl::intArray(gl::arrays::PrintOrder, N);
   for (vtkIdType p = 0; p < N; ++p) {
     order->SetValue(
         p, positionOf(nodeId ? nodeId->GetComponent(p, 0) : static_cast<double>(p), first));
@@ -189,9 +182,9 @@ void printOrderPolyline(const gl::PieceSequence& pieces, vtkPolyData* out) {
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(K);
-  auto position = intArray(gl::arrays::PrintOrder, K);
-  auto subgraph = intArray(gl::arrays::SubgraphId, K);
-  auto piece = intArray(gl::arrays::PieceId, K);
+  auto position = gl::intArray(gl::arrays::PrintOrder, K);
+  auto subgraph = gl::intArray(gl::arrays::SubgraphId, K);
+  auto piece = gl::intArray(gl::arrays::PieceId, K);
   for (vtkIdType k = 0; k < K; ++k) {
     points->SetPoint(k, seq.start[k].data());
     position->SetValue(k, static_cast<int>(k));
@@ -202,8 +195,8 @@ void printOrderPolyline(const gl::PieceSequence& pieces, vtkPolyData* out) {
   const vtkIdType T = std::max<vtkIdType>(K - 1, 0);
   vtkNew<vtkCellArray> lines;
   lines->AllocateExact(T, 2 * T);
-  auto from = intArray(gl::arrays::PrintOrder, T);
-  auto retraction = intArray(gl::arrays::Retraction, T);
+  auto from = gl::intArray(gl::arrays::PrintOrder, T);
+  auto retraction = gl::intArray(gl::arrays::Retraction, T);
   for (vtkIdType k = 0; k < T; ++k) {
     const vtkIdType ids[2] = {k, k + 1};
     lines->InsertNextCell(2, ids);

@@ -33,23 +33,16 @@ vtkStandardNewMacro(vtkGLSkeletonTree);
 namespace {
 namespace gl = geolattice;
 
-vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n) {
-  auto a = vtkSmartPointer<vtkIntArray>::New();
-  a->SetName(name);
-  a->SetNumberOfTuples(n);
-  return a;
-}
-
 void buildOutput(const gl::SkeletonTree& tree, double seconds, vtkPolyData* out) {
   const vtkIdType N = static_cast<vtkIdType>(tree.nodes.size());
   vtkNew<vtkPoints> points;
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(N);
-  auto nodeId = intArray(gl::arrays::NodeId, N);
-  auto layerId = intArray(gl::arrays::LayerId, N);
-  auto subgraphId = intArray(gl::arrays::SubgraphId, N);
-  auto lowerCount = intArray(gl::arrays::LowerCount, N);
-  auto upperCount = intArray(gl::arrays::UpperCount, N);
+  auto nodeId = gl::intArray(gl::arrays::NodeId, N);
+  auto layerId = gl::intArray(gl::arrays::LayerId, N);
+  auto subgraphId = gl::intArray(gl::arrays::SubgraphId, N);
+  auto lowerCount = gl::intArray(gl::arrays::LowerCount, N);
+  auto upperCount = gl::intArray(gl::arrays::UpperCount, N);
   vtkNew<vtkDoubleArray> gamma, length;
   gamma->SetName(gl::arrays::Gamma);
   gamma->SetNumberOfTuples(N);

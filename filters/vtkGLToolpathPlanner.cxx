@@ -45,13 +45,6 @@ static_assert(static_cast<int>(gl::MoveKind::Print) == gl::movekind::Print &&
                   static_cast<int>(gl::MoveKind::Air) == gl::movekind::Air,
               "geolattice::movekind must match core/toolpath/ToolpathPlanner.h");
 
-vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n) {
-  auto a = vtkSmartPointer<vtkIntArray>::New();
-  a->SetName(name);
-  a->SetNumberOfTuples(n);
-  return a;
-}
-
 vtkSmartPointer<vtkDoubleArray> pointDoubles(const char* name, const std::vector<double>& values) {
   auto a = vtkSmartPointer<vtkDoubleArray>::New();
   a->SetName(name);
@@ -122,11 +115,11 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   normals->SetName(gl::arrays::NozzleAxis);
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(N);
-  auto kind = intArray(gl::arrays::MoveKind, N);
-  auto layer = intArray(gl::arrays::LayerId, N);
-  auto subgraph = intArray(gl::arrays::SubgraphId, N);
-  auto pathIndex = intArray(gl::arrays::PathIndex, N);
-  auto pointIndex = intArray(gl::arrays::PointIndex, N);
+  auto kind = gl::intArray(gl::arrays::MoveKind, N);
+  auto layer = gl::intArray(gl::arrays::LayerId, N);
+  auto subgraph = gl::intArray(gl::arrays::SubgraphId, N);
+  auto pathIndex = gl::intArray(gl::arrays::PathIndex, N);
+  auto pointIndex = gl::intArray(gl::arrays::PointIndex, N);
   auto latticeLayerId = [&graph](int l) {
     return l >= 0 && l < static_cast<int>(graph.layerIndex.size()) ? graph.layerIndex[l] : l;
   };

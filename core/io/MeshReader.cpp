@@ -81,6 +81,18 @@ public:
     return false;
   }
 
+  /// Reads the header line into `tokens`: it must exist and hold minTokens..maxTokens tokens
+  /// (else "expected " + layout).
+  void header(std::vector<std::string_view>& tokens, size_t minTokens, size_t maxTokens,
+              const char* layout) {
+    if (!next(tokens)) {
+      throw GeoLatticeError("empty mesh: " + path_ + " has no header line");
+    }
+    if (tokens.size() < minTokens || tokens.size() > maxTokens) {
+      fail(std::string("expected '") + layout + "'");
+    }
+  }
+
   /// Throws "path:line: message" for the line last returned by next().
   [[noreturn]] void fail(const std::string& message) const {
     throw GeoLatticeError(path_ + ":" + std::to_string(line_) + ": " + message);
@@ -456,12 +468,7 @@ TetMesh readTetGenMesh(const std::string& path) {
     // .node: "<#points> <dimension> [<#attributes> [<#boundary markers>]]", then
     // "<point #> <x> <y> <z> [attributes] [marker]".
     LineTokenizer lines(nodePath.string(), loadFile(nodePath.string()));
-    if (!lines.next(tok)) {
-      throw GeoLatticeError("empty mesh: " + nodePath.string() + " has no header line");
-    }
-    if (tok.size() < 2 || tok.size() > 4) {
-      lines.fail("expected '<#points> <dimension> <#attributes> <#boundary markers>'");
-    }
+    lines.header(tok, 2, 4, "<#points> <dimension> <#attributes> <#boundary markers>");
     const int numPoints = lines.count(tok[0], "point count");
     const long long dim = lines.integer(tok[1], "dimension");
     if (dim != 3) {
@@ -506,12 +513,7 @@ TetMesh readTetGenMesh(const std::string& path) {
     // .ele: "<#tets> <nodes per tet (4 or 10)> [<#attributes>]", then
     // "<tet #> <n1> ... <nk> [attributes]" with point numbers of the .node file.
     LineTokenizer lines(elePath.string(), loadFile(elePath.string()));
-    if (!lines.next(tok)) {
-      throw GeoLatticeError("empty mesh: " + elePath.string() + " has no header line");
-    }
-    if (tok.size() < 2 || tok.size() > 3) {
-      lines.fail("expected '<#tetrahedra> <nodes per tetrahedron> <#attributes>'");
-    }
+    lines.header(tok, 2, 3, "<#tetrahedra> <nodes per tetrahedron> <#attributes>");
     const int numTets = lines.count(tok[0], "tet count");
     const long long nodesPerTet = lines.integer(tok[1], "nodes per tetrahedron");
     if (nodesPerTet != 4 && nodesPerTet != 10) {

@@ -243,4 +243,33 @@ TetMesh boxTetMesh(const Vec3& size, int nx, int ny, int nz) {
   return mesh;
 }
 
+TetMesh voxelTetMesh(const Vec3& size, int nx, int ny, int nz,
+                     const std::function<bool(const Vec3&)>& keep) {
+  const TetMesh box = boxTetMesh(size, nx, ny, nz);
+  const Vec3 cell(size.x() / nx, size.y() / ny, size.z() / nz);
+  TetMesh out;
+  std::vector<int> id(box.points.size(), -1);
+  for (const auto& t : box.tets) {
+    const Vec3 centroid =
+        0.25 * (box.points[t[0]] + box.points[t[1]] + box.points[t[2]] + box.points[t[3]]);
+    Vec3 centre;
+    for (int a = 0; a < 3; ++a) {
+      centre[a] = (std::floor(centroid[a] / cell[a]) + 0.5) * cell[a];
+    }
+    if (!keep(centre)) {
+      continue;
+    }
+    std::array<int, 4> tet;
+    for (int k = 0; k < 4; ++k) {
+      if (id[t[k]] < 0) {
+        id[t[k]] = static_cast<int>(out.points.size());
+        out.points.push_back(box.points[t[k]]);
+      }
+      tet[k] = id[t[k]];
+    }
+    out.tets.push_back(tet);
+  }
+  return out;
+}
+
 }  // namespace geolattice

@@ -7,6 +7,8 @@
 /// (boxTetMesh) wherever a test needs a mesh whose geometry is known exactly.
 #include "mesh/TetMesh.h"
 
+#include <functional>
+
 namespace geolattice {
 
 /// @brief Surface of the axis-aligned box [0,sx] x [0,sy] x [0,sz] (mm).
@@ -43,5 +45,10 @@ TriangleSurface torusSurface(const Vec3& centre, double majorRadius, double mino
 /// Vertex (i,j,k) has id i + (nx+1)*(j + (ny+1)*k); #V = (nx+1)(ny+1)(nz+1), #T = 6*nx*ny*nz.
 /// @throws GeoLatticeError on non-positive sizes or counts, or more than 2^31 tets.
 TetMesh boxTetMesh(const Vec3& size, int nx, int ny, int nz);
+
+/// @brief A conforming voxel solid: the tets of boxTetMesh(size, nx, ny, nz) whose cell centre
+/// satisfies `keep`, unused vertices removed (e.g. a T-shaped "mushroom" with a flat overhang).
+TetMesh voxelTetMesh(const Vec3& size, int nx, int ny, int nz,
+                     const std::function<bool(const Vec3&)>& keep);
 
 }  // namespace geolattice

@@ -217,16 +217,27 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
     }
     i = i2;
   }
+  linkSkeletonEdges(tree);
+  progress.report(1.0);
+  return tree;
+}
+
+void linkSkeletonEdges(SkeletonTree& tree) {
   std::sort(tree.edges.begin(), tree.edges.end());
+  for (SkeletonNode& n : tree.nodes) {
+    n.lower.clear();
+    n.upper.clear();
+  }
   for (const auto& e : tree.edges) {
     tree.nodes[e[0]].upper.push_back(e[1]);
     tree.nodes[e[1]].lower.push_back(e[0]);
   }
-  int firstLayer = L;
-  for (const auto& n : tree.nodes) {
+  int firstLayer = std::numeric_limits<int>::max();
+  for (const SkeletonNode& n : tree.nodes) {
     firstLayer = std::min(firstLayer, n.layer);
   }
-  for (auto& n : tree.nodes) {
+  tree.roots = tree.floatingNodes = tree.mergeNodes = tree.splitNodes = 0;
+  for (SkeletonNode& n : tree.nodes) {
     std::sort(n.lower.begin(), n.lower.end());
     std::sort(n.upper.begin(), n.upper.end());
     tree.roots += n.lower.empty();
@@ -234,8 +245,6 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
     tree.mergeNodes += n.lower.size() > 1;
     tree.splitNodes += n.upper.size() > 1;
   }
-  progress.report(1.0);
-  return tree;
 }
 
 SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma,

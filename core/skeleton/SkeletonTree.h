@@ -81,6 +81,12 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
                                const LatticeGraph& lattice,
                                const SkeletonTreeOptions& options = {});
 
+/// Sorts tree.edges and derives what follows from them: every node's lower and upper lists
+/// (sorted) and the tree's counts (roots, floating, merge and split nodes; floating: a root above
+/// the lowest layer that has a node). buildSkeletonTree ends with it; a tree read from elsewhere
+/// (the filters' VTK input) is completed with it.
+void linkSkeletonEdges(SkeletonTree& tree);
+
 /// @brief Transitive "must be printed before" relation of a skeleton: a is an ancestor of b
 /// iff a chain of edges leads upwards from a to b (Criterion 1 then forces a before b in every
 /// order). Bit sets per node, built bottom-up in O(K² / 64 + E·K / 64).

@@ -44,41 +44,10 @@ std::vector<std::uint8_t> flagsOf(const TetMesh& mesh, const std::vector<int>& i
   return flags;
 }
 
-/// The tets of boxTetMesh(size, n) whose cell centre satisfies `keep`, unused vertices removed:
-/// a conforming voxel solid.
-TetMesh voxelMesh(const Vec3& size, int nx, int ny, int nz,
-                  const std::function<bool(const Vec3&)>& keep) {
-  const TetMesh box = boxTetMesh(size, nx, ny, nz);
-  const Vec3 cell(size.x() / nx, size.y() / ny, size.z() / nz);
-  TetMesh out;
-  std::vector<int> id(box.points.size(), -1);
-  for (const auto& t : box.tets) {
-    const Vec3 centroid =
-        0.25 * (box.points[t[0]] + box.points[t[1]] + box.points[t[2]] + box.points[t[3]]);
-    Vec3 centre;
-    for (int a = 0; a < 3; ++a) {
-      centre[a] = (std::floor(centroid[a] / cell[a]) + 0.5) * cell[a];
-    }
-    if (!keep(centre)) {
-      continue;
-    }
-    std::array<int, 4> tet;
-    for (int k = 0; k < 4; ++k) {
-      if (id[t[k]] < 0) {
-        id[t[k]] = static_cast<int>(out.points.size());
-        out.points.push_back(box.points[t[k]]);
-      }
-      tet[k] = id[t[k]];
-    }
-    out.tets.push_back(tet);
-  }
-  return out;
-}
-
 /// T / mushroom: stem 10 x 10 x 20 mm on the platform, cap 30 x 30 x 10 mm on top, 2 mm voxels.
 /// Its cap has 30^2 - 10^2 = 800 mm^2 of underside facing straight down.
 TetMesh mushroom() {
-  return voxelMesh(Vec3(30, 30, 30), 15, 15, 15, [](const Vec3& c) {
+  return voxelTetMesh(Vec3(30, 30, 30), 15, 15, 15, [](const Vec3& c) {
     return c.z() > 20.0 || (c.x() > 10.0 && c.x() < 20.0 && c.y() > 10.0 && c.y() < 20.0);
   });
 }

@@ -43,6 +43,12 @@ struct Recorder {
       return abortAfter >= 0 && static_cast<int>(values.size()) >= abortAfter;
     };
   }
+  /// Gives a stage's options this recorder's progress and abort callbacks.
+  template <class Options>
+  void attach(Options& options) {
+    options.progress = progress();
+    options.shouldAbort = shouldAbort();
+  }
   /// Non-decreasing, in [0, 1], ending at 1, with at least minDistinct distinct values.
   void expectComplete(size_t minDistinct) const {
     ASSERT_FALSE(values.empty());
@@ -140,8 +146,7 @@ TEST(ProgressCallbacks, TetrahedralizeReportsEveryRunAndAborts) {
   Recorder r;
   TetrahedralizeOptions t;
   t.targetEdgeLength = 2.5;
-  t.progress = r.progress();
-  t.shouldAbort = r.shouldAbort();
+  r.attach(t);
   const TetMesh mesh = tetrahedralizeSurface(y.surface, t).mesh;
   r.expectComplete(2);
   EXPECT_EQ(mesh.points, y.mesh.points);
@@ -150,8 +155,7 @@ TEST(ProgressCallbacks, TetrahedralizeReportsEveryRunAndAborts) {
   Recorder automatic;
   TetrahedralizeOptions a;
   a.autoTargetTets = 5000;
-  a.progress = automatic.progress();
-  a.shouldAbort = automatic.shouldAbort();
+  automatic.attach(a);
   const TetrahedralizeResult result = tetrahedralizeSurface(y.surface, a);
   automatic.expectComplete(2);
   // (plus the surface preparation's, when this coarse target remeshes the Y's finer surface)
@@ -160,8 +164,7 @@ TEST(ProgressCallbacks, TetrahedralizeReportsEveryRunAndAborts) {
   // Abort while TetGen runs (the first poll).
   Recorder stop;
   stop.abortAfter = 0;
-  t.progress = stop.progress();
-  t.shouldAbort = stop.shouldAbort();
+  stop.attach(t);
   EXPECT_EQ(abortMessage([&] { tetrahedralizeSurface(y.surface, t); }),
             "tetrahedralization aborted");
 }
@@ -170,8 +173,7 @@ TEST(ProgressCallbacks, GeodesicFieldsSetUpAndSolveReportAndAbort) {
   const YPart& y = yPart();
   Recorder r;
   GeodesicFieldOptions o;
-  o.progress = r.progress();
-  o.shouldAbort = r.shouldAbort();
+  r.attach(o);
   GeodesicDistanceFields solver(y.mesh, o);
   r.expectComplete(4);  // set-up: assembly, two factorizations, topology
   r.values.clear();
@@ -184,8 +186,7 @@ TEST(ProgressCallbacks, GeodesicFieldsSetUpAndSolveReportAndAbort) {
   // Aborted in the set-up.
   Recorder stop;
   stop.abortAfter = 2;
-  o.progress = stop.progress();
-  o.shouldAbort = stop.shouldAbort();
+  stop.attach(o);
   EXPECT_EQ(abortMessage([&] { GeodesicDistanceFields aborted(y.mesh, o); }),
             "geodesic distance fields aborted");
   // Aborted in a solve (after the Dirichlet factorization), then solved again.
@@ -204,8 +205,7 @@ TEST(ProgressCallbacks, SlicerReportsPerTetAndAborts) {
   const YPart& y = yPart();
   Recorder r;
   SlicerOptions o;
-  o.progress = r.progress();
-  o.shouldAbort = r.shouldAbort();
+  r.attach(o);
   const std::vector<Vec3> normals = vertexGradientDirections(y.mesh, y.fields.gamma);
   const CurvedLayers layers =
       sliceCurvedLayers(y.mesh, y.fields.gamma, y.fields.alpha, y.fields.beta, normals, o);
@@ -215,8 +215,7 @@ TEST(ProgressCallbacks, SlicerReportsPerTetAndAborts) {
   EXPECT_EQ(layers.alpha, y.layers.alpha);
   Recorder stop;
   stop.abortAfter = 10;
-  o.progress = stop.progress();
-  o.shouldAbort = stop.shouldAbort();
+  stop.attach(o);
   EXPECT_EQ(abortMessage([&] {
               sliceCurvedLayers(y.mesh, y.fields.gamma, y.fields.alpha, y.fields.beta, normals, o);
             }),
@@ -228,16 +227,14 @@ TEST(ProgressCallbacks, SkeletonTreeReportsAndAborts) {
   const YPart& y = yPart();
   Recorder r;
   SkeletonTreeOptions o;
-  o.progress = r.progress();
-  o.shouldAbort = r.shouldAbort();
+  r.attach(o);
   const SkeletonTree tree = buildSkeletonTree(y.mesh, y.fields.gamma, y.lattice, o);
   r.expectComplete(20);
   EXPECT_EQ(tree.edges, y.tree.edges);
   EXPECT_EQ(tree.roots, y.tree.roots);
   Recorder stop;
   stop.abortAfter = 5;
-  o.progress = stop.progress();
-  o.shouldAbort = stop.shouldAbort();
+  stop.attach(o);
   EXPECT_EQ(abortMessage([&] { buildSkeletonTree(y.mesh, y.fields.gamma, y.lattice, o); }),
             "skeleton tree aborted");
 }
@@ -250,16 +247,14 @@ TEST(ProgressCallbacks, PotentialCollisionsOnWorkerThreadsReportAndAbort) {
     Recorder r;
     PotentialCollisionOptions o;
     o.threads = threads;
-    o.progress = r.progress();
-    o.shouldAbort = r.shouldAbort();
+    r.attach(o);
     const PotentialCollisions pcg = computePotentialCollisions(y.material, y.nozzle, o);
     r.expectComplete(threads == 1 ? 20 : 10);
     EXPECT_EQ(pcg.pcg, reference.pcg);
     EXPECT_EQ(pcg.pairs, reference.pairs);
     Recorder stop;
     stop.abortAfter = 3;
-    o.progress = stop.progress();
-    o.shouldAbort = stop.shouldAbort();
+    stop.attach(o);
     EXPECT_EQ(abortMessage([&] { computePotentialCollisions(y.material, y.nozzle, o); }),
               "potential collisions aborted");
   }
@@ -276,8 +271,7 @@ TEST(ProgressCallbacks, SequencerReportsEveryStrategyAndAborts) {
     const PrintSequence reference = sequencePrint(y.tree, y.material, &pcg, plain);
     Recorder r;
     SequenceOptions o = plain;
-    o.progress = r.progress();
-    o.shouldAbort = r.shouldAbort();
+    r.attach(o);
     const PrintSequence seq = sequencePrint(y.tree, y.material, &pcg, o);
     r.expectComplete(20);
     EXPECT_EQ(seq.order, reference.order);
@@ -285,8 +279,7 @@ TEST(ProgressCallbacks, SequencerReportsEveryStrategyAndAborts) {
     EXPECT_EQ(seq.airLength, reference.airLength);
     Recorder stop;
     stop.abortAfter = 8;
-    o.progress = stop.progress();
-    o.shouldAbort = stop.shouldAbort();
+    stop.attach(o);
     EXPECT_EQ(abortMessage([&] { sequencePrint(y.tree, y.material, &pcg, o); }),
               "print sequencing aborted");
   }

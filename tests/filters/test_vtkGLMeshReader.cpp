@@ -48,27 +48,25 @@ ReadResult read(const std::string& path, bool setName = true) {
   return r;
 }
 
-/// Edges used by one triangle only (0 for a closed surface).
-vtkIdType boundaryEdges(vtkPolyData* poly) {
+/// Edges used by one triangle only (boundary; 0 for a closed surface), or by more than two
+/// (non-manifold).
+vtkIdType featureEdges(vtkPolyData* poly, bool boundary) {
   vtkNew<vtkFeatureEdges> edges;
   edges->SetInputData(poly);
-  edges->BoundaryEdgesOn();
+  edges->SetBoundaryEdges(boundary);
   edges->FeatureEdgesOff();
-  edges->NonManifoldEdgesOff();
+  edges->SetNonManifoldEdges(!boundary);
   edges->ManifoldEdgesOff();
   edges->Update();
   return edges->GetOutput()->GetNumberOfLines();
 }
 
+vtkIdType boundaryEdges(vtkPolyData* poly) {
+  return featureEdges(poly, true);
+}
+
 vtkIdType nonManifoldEdges(vtkPolyData* poly) {
-  vtkNew<vtkFeatureEdges> edges;
-  edges->SetInputData(poly);
-  edges->BoundaryEdgesOff();
-  edges->FeatureEdgesOff();
-  edges->NonManifoldEdgesOn();
-  edges->ManifoldEdgesOff();
-  edges->Update();
-  return edges->GetOutput()->GetNumberOfLines();
+  return featureEdges(poly, false);
 }
 
 /// Polydata with triangles only, no verts/lines/strips, every polygon a triangle.

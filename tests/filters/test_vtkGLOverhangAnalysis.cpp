@@ -41,26 +41,9 @@ namespace {
 /// boxTetMesh whose cell lies in the T, unused points removed. The cap's underside (800 mm^2)
 /// faces straight down.
 gl::TetMesh mushroom() {
-  const gl::TetMesh box = gl::boxTetMesh(gl::Vec3(30, 30, 30), 15, 15, 15);
-  gl::TetMesh out;
-  std::vector<int> id(box.points.size(), -1);
-  for (const auto& t : box.tets) {
-    const gl::Vec3 c =
-        0.25 * (box.points[t[0]] + box.points[t[1]] + box.points[t[2]] + box.points[t[3]]);
-    if (!(c.z() > 20.0 || (c.x() > 10.0 && c.x() < 20.0 && c.y() > 10.0 && c.y() < 20.0))) {
-      continue;
-    }
-    std::array<int, 4> tet;
-    for (int k = 0; k < 4; ++k) {
-      if (id[t[k]] < 0) {
-        id[t[k]] = static_cast<int>(out.points.size());
-        out.points.push_back(box.points[t[k]]);
-      }
-      tet[k] = id[t[k]];
-    }
-    out.tets.push_back(tet);
-  }
-  return out;
+  return gl::voxelTetMesh(gl::Vec3(30, 30, 30), 15, 15, 15, [](const gl::Vec3& c) {
+    return c.z() > 20.0 || (c.x() > 10.0 && c.x() < 20.0 && c.y() > 10.0 && c.y() < 20.0);
+  });
 }
 
 /// The GDF filter's output for the mushroom (base = its lowest vertices).

@@ -93,15 +93,19 @@ PRINT_PART_PARAMETERS = {"FitSize": 80.0, "Orient": 1}
 TREE_ROWS = {"GLGeodesicDistanceFields1": "0/0/0/0/0|0", "GLSkeletonTree1": "0/0/0/0/0/0/0/0/0|0"}
 
 
-def plugin_filters(source_dir):
-    """{proxy name: (group, ShowInMenu category or None)} of the plugin's XML files listed in
-    plugin/CMakeLists.txt."""
+def plugin_xml_texts(source_dir):
+    """The texts of the plugin's XML files listed in plugin/CMakeLists.txt."""
     with open(os.path.join(source_dir, "plugin", "CMakeLists.txt")) as f:
         files = re.findall(r"(xml/\S+\.xml)", f.read())
-    found = {}
     for rel in files:
         with open(os.path.join(source_dir, "plugin", rel)) as f:
-            text = f.read()
+            yield f.read()
+
+
+def plugin_filters(source_dir):
+    """{proxy name: (group, ShowInMenu category or None)} of the plugin's XML files."""
+    found = {}
+    for text in plugin_xml_texts(source_dir):
         for group, body in re.findall(r'<ProxyGroup name="(\w+)">(.*?)</ProxyGroup>', text, re.S):
             for name, proxy in re.findall(r'<SourceProxy name="(\w+)"(.*?)</SourceProxy>', body, re.S):
                 category = re.search(r'<ShowInMenu[^>]*category="([^"]+)"', proxy)
@@ -112,12 +116,8 @@ def plugin_filters(source_dir):
 def none_array_properties(source_dir):
     """{filter: {property: none string}}: the array-selection properties (ArrayListDomain with a
     none_string) whose XML default is that none string, i.e. "no array" unless the user picks one."""
-    with open(os.path.join(source_dir, "plugin", "CMakeLists.txt")) as f:
-        files = re.findall(r"(xml/\S+\.xml)", f.read())
     found = {}
-    for rel in files:
-        with open(os.path.join(source_dir, "plugin", rel)) as f:
-            text = f.read()
+    for text in plugin_xml_texts(source_dir):
         for name, proxy in re.findall(r'<SourceProxy name="(\w+)"(.*?)</SourceProxy>', text, re.S):
             for prop, attributes, body in re.findall(
                     r'<StringVectorProperty name="(\w+)"([^>]*)>(.*?)</StringVectorProperty>', proxy, re.S):
