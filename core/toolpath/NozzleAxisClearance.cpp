@@ -609,17 +609,48 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
     for (long j = t.station + 1; j < static_cast<long>(N) && visit(j); ++j) {
     }
   }
+  // With fadeOnlyWhereClear, a faded axis that would put earlier material into the nozzle is not
+  // taken: the point keeps its clear axis (the rotation steps still bound the turn between
+  // neighbours). The faded axes are checked either way (result.keptPoints counts those).
+  std::vector<int> faded;
   for (size_t j = 0; j < N; ++j) {
-    if (owner[j] < 0) {
+    if (owner[j] >= 0) {
+      faded.push_back(static_cast<int>(j));
+    }
+  }
+  std::vector<Vec3> fadedAxis(faded.size());
+  std::vector<char> fadedClear(faded.size(), 0);
+  const size_t fadeChunks = (faded.size() + kChunk - 1) / kChunk;
+  parallelFor(
+      fadeChunks, o.threads,
+      [&](size_t c, int) {
+        NozzleBound bound = detect;
+        for (size_t f = c * kChunk; f < std::min(faded.size(), (c + 1) * kChunk); ++f) {
+          const int j = faded[f];
+          const Tilt& t = tilts[owner[j]];
+          Vec3 turned = (Eigen::AngleAxisd(fadeAngle[j], t.rotation) * axes[j]).normalized();
+          const double fromReference = angleBetween(turned, reference[j]);
+          if (fromReference > maxTilt) {  // keep blends inside the tilt limit too
+            turned = slerpAxis(reference[j], turned, maxTilt / fromReference);
+          }
+          fadedAxis[f] = turned;
+          bound.setStation(points[j], turned);
+          bool hit = false;
+          tree.forEachCandidate(bound, j, [&](int q) {
+            hit = volume.contains(points[j], turned, all[q]);
+            return hit;
+          });
+          fadedClear[f] = !hit;
+        }
+      },
+      abortPoll);
+  for (size_t f = 0; f < faded.size(); ++f) {
+    if (!fadedClear[f] && o.fadeOnlyWhereClear) {
+      ++result.keptPoints;
       continue;
     }
-    const Tilt& t = tilts[owner[j]];
-    Vec3 turned = (Eigen::AngleAxisd(fadeAngle[j], t.rotation) * axes[j]).normalized();
-    const double fromReference = angleBetween(turned, reference[j]);
-    if (fromReference > maxTilt) {  // keep blends inside the tilt limit too
-      turned = slerpAxis(reference[j], turned, maxTilt / fromReference);
-    }
-    axes[j] = turned;
+    const int j = faded[f];
+    axes[j] = fadedAxis[f];
     ++result.blendedPoints;
     if (known) {
       known->clear[j] = 0;

@@ -33,7 +33,12 @@ struct AxisClearanceOptions {
   double maxTiltDeg = 30.0;
   double marginDeg = 0.5;    ///< obstacles end at least this far outside the cone (deg, >= 0)
   double blendLength = 5.0;  ///< a tilt fades out over this path length on each side (mm, >= 0)
-  int threads = 0;           ///< workers over the stations (0 = hardware concurrency); same result
+  /// A fade that would turn a point's axis into earlier material is not applied (the point keeps
+  /// its axis). Off: every fade is applied, and a point it pushes into material is a colliding
+  /// station of the next pass (which is how a region of stations finds a common side; the
+  /// toolpath planner's first rounds do this, its later ones settle with the check on).
+  bool fadeOnlyWhereClear = false;
+  int threads = 0;  ///< workers over the stations (0 = hardware concurrency); same result
   /// Polled every 4096 stations; true stops with GeoLatticeError "nozzle axis clearance
   /// aborted". Optional.
   std::function<bool()> shouldAbort;
@@ -47,6 +52,7 @@ struct AxisClearanceResult {
   int tiltedStations = 0;      ///< of those, given a tilt that clears all of their obstacles
   int unresolvedStations = 0;  ///< of those, no tilt within maxTilt clears them (left as they were)
   int blendedPoints = 0;       ///< other points whose axis was turned by a fading tilt
+  int keptPoints = 0;  ///< with fadeOnlyWhereClear: points a fade would have turned into material
   double seconds = 0;
 };
 

@@ -129,6 +129,13 @@ void requireToolpathWithinLimit(const LatticeGraph& g, const ToolpathOptions& o)
 
 /// Rounds of axis clearance a path gets at most.
 constexpr int kClearanceRounds = 4;
+/// From this round on, a fade that would push a point into material is not applied. The first
+/// rounds fade freely (a neighbour pushed into material gets a tilt of its own in the next round,
+/// so a region of stations turns to a common side); without the check later, fades push cleared
+/// neighbours back round after round where a station sits in a groove between taller beads (spot
+/// auto-oriented under the example printhead: 111 -> 18 -> 20 -> 12 -> 24 -> 11 ... colliding
+/// stations over 16 rounds; with the check from round 2: 0 after 4).
+constexpr int kSettlingRound = 2;
 
 /// Rotation steps and subdivision, then rounds of axis clearance (each followed by the rotation
 /// steps its tilts need) until no station collides or no tilt helps. Returns the stations left
@@ -189,6 +196,7 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
     return c;
   };
   for (int round = 0; round < kClearanceRounds && o.clearance.maxTiltDeg > 0; ++round) {
+    clearance.fadeOnlyWhereClear = round >= kSettlingRound;
     const AxisClearanceResult r = clearNozzleAxes(
         path.points, path.normals, reference, materialOf(), o.nozzle, clearance, fixed,
         &unresolvable, memos ? &(*memos)[static_cast<size_t>(round)] : nullptr, &known);

@@ -808,7 +808,9 @@ class CliVerifyTest(unittest.TestCase):
             listed = [d for d in sets if float(d.get("timestep")) == t]
             self.assertEqual(sorted(int(d.get("part")) for d in listed), list(range(steps)))
             shown = sum(points_in(os.path.join(self.out, d.get("file"))) for d in listed)
-            self.assertEqual(shown - (k - 1), round(t * (tp["points"] - 1)) + 1)  # GL Toolpath Replay's rule
+            # GL Toolpath Replay's rule, std::llround: halves away from zero (Python's round() takes
+            # them to the even neighbour)
+            self.assertEqual(shown - (k - 1), math.floor(t * (tp["points"] - 1) + 0.5) + 1)
 
     def test_outputs_of_the_program_stage(self):
         with open(os.path.join(self.out, "report.json")) as f:

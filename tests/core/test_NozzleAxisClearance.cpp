@@ -168,6 +168,46 @@ TEST(NozzleAxisClearance, AWideLimitStillGivesTheLeastTilt) {
   }
 }
 
+TEST(NozzleAxisClearance, AFadeThatWouldPushAPointIntoMaterialIsNotTakenWhenAsked) {
+  // The Scene's stations near y = 0 tilt towards -x, and their tilts fade along the path. Earlier
+  // material on the -x side of the path near y = -3.5, just outside the 45° cone of the untilted
+  // axis there (45.4°, 3 mm away): the fade turns the points there towards it and, unchecked,
+  // into it.
+  Scene s;
+  std::vector<Vec3> points = s.points, axes = s.axes;
+  std::vector<char> material = s.material;
+  const double a = 45.4 * M_PI / 180;
+  for (double y : {-3.6, -3.5, -3.4}) {
+    points.insert(points.begin(), Vec3(-3 * std::sin(a), y, 3 * std::cos(a)));
+    axes.insert(axes.begin(), Vec3(0, 0, 1));
+    material.insert(material.begin(), 1);
+  }
+  std::vector<int> time(points.size());
+  for (size_t i = 0; i < time.size(); ++i)
+    time[i] = static_cast<int>(i);
+  auto colliding = [&](const std::vector<Vec3>& n) {
+    return verifyNozzleClearance(points, n, time, cone45(), 0, nullptr, &material)
+        .violatingStations;
+  };
+  // Only the Scene's stations collide as they are (the new material is outside every cone).
+  const size_t before = colliding(axes);
+  ASSERT_EQ(before, static_cast<size_t>(collidingStations(s, s.axes)));
+  AxisClearanceOptions o;
+  o.blendLength = 3;
+  std::vector<Vec3> unchecked = axes;
+  const AxisClearanceResult free = clearNozzleAxes(points, unchecked, axes, material, cone45(), o);
+  EXPECT_EQ(static_cast<size_t>(free.tiltedStations), before);
+  EXPECT_EQ(free.keptPoints, 0);
+  EXPECT_GT(colliding(unchecked), 0u);  // points near y = -3.5 faded into the material
+  o.fadeOnlyWhereClear = true;
+  std::vector<Vec3> checked = axes;
+  const AxisClearanceResult settled = clearNozzleAxes(points, checked, axes, material, cone45(), o);
+  EXPECT_EQ(static_cast<size_t>(settled.tiltedStations), before);
+  EXPECT_GT(settled.keptPoints, 0);
+  EXPECT_GT(settled.blendedPoints, 0);  // the fades that stay clear are still taken
+  EXPECT_EQ(colliding(checked), 0u);
+}
+
 TEST(NozzleAxisClearance, ALaterPassReusesTheSearchesOfStationsWithTheSameEarlierMaterial) {
   // The toolpath planner's attempts differ only in air moves (not material): a second pass on
   // the path with air points inserted takes the first pass's searches and gives the axes a pass
