@@ -611,7 +611,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   }
   // With fadeOnlyWhereClear, a faded axis that would put earlier material into the nozzle is not
   // taken: the point keeps its clear axis (the rotation steps still bound the turn between
-  // neighbours). The faded axes are checked either way (result.keptPoints counts those).
+  // neighbours; result.keptPoints counts those points).
   std::vector<int> faded;
   for (size_t j = 0; j < N; ++j) {
     if (owner[j] >= 0) {
@@ -634,18 +634,20 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
             turned = slerpAxis(reference[j], turned, maxTilt / fromReference);
           }
           fadedAxis[f] = turned;
-          bound.setStation(points[j], turned);
           bool hit = false;
-          tree.forEachCandidate(bound, j, [&](int q) {
-            hit = volume.contains(points[j], turned, all[q]);
-            return hit;
-          });
+          if (o.fadeOnlyWhereClear) {
+            bound.setStation(points[j], turned);
+            tree.forEachCandidate(bound, j, [&](int q) {
+              hit = volume.contains(points[j], turned, all[q]);
+              return hit;
+            });
+          }
           fadedClear[f] = !hit;
         }
       },
       abortPoll);
   for (size_t f = 0; f < faded.size(); ++f) {
-    if (!fadedClear[f] && o.fadeOnlyWhereClear) {
+    if (!fadedClear[f]) {
       ++result.keptPoints;
       continue;
     }
