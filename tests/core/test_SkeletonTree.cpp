@@ -93,13 +93,23 @@ TEST(SkeletonTree, BoxIsAChain) {
   EXPECT_EQ(tree.floatingNodes, 0);
 }
 
-TEST(SkeletonTree, YSplitsIntoTwoBranches) {
-  Part p = buildPart(readObj(kData + "/y_shape.obj"), 2.0, 0.5, 4.0);
+namespace {
+
+/// The part's skeleton, checked with expectConsistent and summed up on stdout.
+SkeletonTree consistentSkeleton(const Part& p, const char* name) {
   const SkeletonTree tree = buildSkeletonTree(p.mesh, p.fields.gamma, p.lattice);
   expectConsistent(tree, p.lattice);
-  std::printf("[skeleton] Y: %zu nodes, %zu edges, roots %d, split %d, merge %d, floating %d\n",
-              tree.nodes.size(), tree.edges.size(), tree.roots, tree.splitNodes, tree.mergeNodes,
-              tree.floatingNodes);
+  std::printf("[skeleton] %s: %zu nodes, %zu edges, roots %d, split %d, merge %d, floating %d\n",
+              name, tree.nodes.size(), tree.edges.size(), tree.roots, tree.splitNodes,
+              tree.mergeNodes, tree.floatingNodes);
+  return tree;
+}
+
+}  // namespace
+
+TEST(SkeletonTree, YSplitsIntoTwoBranches) {
+  Part p = buildPart(readObj(kData + "/y_shape.obj"), 2.0, 0.5, 4.0);
+  const SkeletonTree tree = consistentSkeleton(p, "Y");
   EXPECT_EQ(tree.roots, 1);
   EXPECT_EQ(tree.floatingNodes, 0);
   EXPECT_GE(tree.splitNodes, 1);
@@ -120,11 +130,7 @@ TEST(SkeletonTree, TorusOnItsSideSplitsAndMerges) {
   // Layers grow from the bottom point up both halves of the ring and meet at the top.
   const TriangleSurface torus = torusSurface(Vec3(0, 0, 16), 12.0, 4.0, 96, 32);
   Part p = buildPart(torus, 1.5, 0.3, 3.0);
-  const SkeletonTree tree = buildSkeletonTree(p.mesh, p.fields.gamma, p.lattice);
-  expectConsistent(tree, p.lattice);
-  std::printf("[skeleton] torus: %zu nodes, %zu edges, roots %d, split %d, merge %d, floating %d\n",
-              tree.nodes.size(), tree.edges.size(), tree.roots, tree.splitNodes, tree.mergeNodes,
-              tree.floatingNodes);
+  const SkeletonTree tree = consistentSkeleton(p, "torus");
   EXPECT_GE(tree.splitNodes, 1);
   EXPECT_GE(tree.mergeNodes, 1);  // a DAG: the two arcs have one common upper node
   EXPECT_EQ(tree.floatingNodes, 0);

@@ -33,6 +33,13 @@ const std::string kData = GEOLATTICE_TESTDATA;
 struct ReadResult {
   vtkSmartPointer<vtkDataObject> Output;
   vtkSmartPointer<GLTestErrorObserver> Errors;
+  /// The output as a T after a read that reported no error (a failure otherwise; nullptr if the
+  /// output is not a T).
+  template <class T>
+  T* Get() const {
+    EXPECT_FALSE(Errors->HasError()) << Errors->Errors();
+    return T::SafeDownCast(Output);
+  }
 };
 
 ReadResult read(const std::string& path, bool setName = true) {
@@ -115,8 +122,7 @@ TEST_F(MeshReaderTest, ReadsEverySurfaceModelAsClosedTriangles) {
     const std::string path = kData + "/" + c.File;
     EXPECT_FALSE(vtkGLMeshReader::IsTetMeshFile(path.c_str()));
     ReadResult r = read(path);
-    EXPECT_FALSE(r.Errors->HasError()) << r.Errors->Errors();
-    vtkPolyData* poly = vtkPolyData::SafeDownCast(r.Output);
+    vtkPolyData* poly = r.Get<vtkPolyData>();
     ASSERT_NE(poly, nullptr);
     EXPECT_EQ(poly->GetNumberOfPoints(), c.Points);
     EXPECT_EQ(poly->GetNumberOfPolys(), c.Triangles);
@@ -142,8 +148,7 @@ TEST_F(MeshReaderTest, ReadsTetMeshes) {
     SCOPED_TRACE(c.File);
     EXPECT_TRUE(vtkGLMeshReader::IsTetMeshFile(c.File.c_str()));
     ReadResult r = read(c.File);
-    EXPECT_FALSE(r.Errors->HasError()) << r.Errors->Errors();
-    vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(r.Output);
+    vtkUnstructuredGrid* grid = r.Get<vtkUnstructuredGrid>();
     ASSERT_NE(grid, nullptr);
     EXPECT_EQ(grid->GetNumberOfPoints(), c.Points);
     ASSERT_EQ(grid->GetNumberOfCells(), c.Tets);
@@ -166,8 +171,7 @@ TEST_F(MeshReaderTest, StlSoupBecomesConnectedSurface) {
     binary ? writer->SetFileTypeToBinary() : writer->SetFileTypeToASCII();
     ASSERT_EQ(writer->Write(), 1);
     ReadResult r = read(path);
-    EXPECT_FALSE(r.Errors->HasError()) << r.Errors->Errors();
-    vtkPolyData* poly = vtkPolyData::SafeDownCast(r.Output);
+    vtkPolyData* poly = r.Get<vtkPolyData>();
     ASSERT_NE(poly, nullptr);
     EXPECT_EQ(poly->GetNumberOfPoints(), 1839);
     EXPECT_EQ(poly->GetNumberOfPolys(), 3674);
@@ -194,8 +198,7 @@ TEST_F(MeshReaderTest, PlyAndVtpAndVtuRoundTrips) {
   for (const char* name : {"bunny.ply", "bunny.vtp"}) {
     SCOPED_TRACE(name);
     ReadResult r = read(this->Path(name));
-    EXPECT_FALSE(r.Errors->HasError()) << r.Errors->Errors();
-    vtkPolyData* poly = vtkPolyData::SafeDownCast(r.Output);
+    vtkPolyData* poly = r.Get<vtkPolyData>();
     ASSERT_NE(poly, nullptr);
     EXPECT_EQ(poly->GetNumberOfPoints(), 1839);
     EXPECT_EQ(poly->GetNumberOfPolys(), 3674);
@@ -211,8 +214,7 @@ TEST_F(MeshReaderTest, PlyAndVtpAndVtuRoundTrips) {
   writer->SetFileName(this->Path("ring.vtu").c_str());
   ASSERT_EQ(writer->Write(), 1);
   ReadResult r = read(this->Path("ring.vtu"));
-  EXPECT_FALSE(r.Errors->HasError()) << r.Errors->Errors();
-  vtkUnstructuredGrid* grid = vtkUnstructuredGrid::SafeDownCast(r.Output);
+  vtkUnstructuredGrid* grid = r.Get<vtkUnstructuredGrid>();
   ASSERT_NE(grid, nullptr);
   EXPECT_EQ(grid->GetNumberOfPoints(), 8150);
   EXPECT_EQ(grid->GetNumberOfCells(), 40064);
@@ -226,8 +228,7 @@ TEST_F(MeshReaderTest, ObjQuadsAreTriangulatedAndLinesDropped) {
                   "f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n"
                   "l 1 7\np 3\n");
   ReadResult r = read(path);
-  EXPECT_FALSE(r.Errors->HasError()) << r.Errors->Errors();
-  vtkPolyData* poly = vtkPolyData::SafeDownCast(r.Output);
+  vtkPolyData* poly = r.Get<vtkPolyData>();
   ASSERT_NE(poly, nullptr);
   EXPECT_EQ(poly->GetNumberOfPoints(), 8);
   EXPECT_EQ(poly->GetNumberOfPolys(), 12);
