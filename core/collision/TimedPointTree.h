@@ -7,6 +7,7 @@
 #include "nozzle/NozzleBound.h"
 
 #include <Eigen/Core>
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -53,17 +54,20 @@ public:
     if (nodes_.empty()) {
       return;
     }
-    static thread_local std::vector<int> stack;
-    stack.assign(1, 0);
-    while (!stack.empty()) {
-      const Node& node = nodes_[stack.back()];
-      stack.pop_back();
+    // Depth first on a fixed stack (no allocation, no thread-local lookup per query): the tree
+    // splits at medians, so it is at most log2(N / 8) + 2 < 34 deep, and the stack holds at most
+    // one entry more than the depth.
+    std::array<int, 64> stack;
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& node = nodes_[stack[--top]];
       if (node.minTime >= now || !bound.mayTouch(node.centre, node.radius)) {
         continue;
       }
       if (node.left >= 0 && !small(node.centre, node.radius)) {
-        stack.push_back(node.left);
-        stack.push_back(node.right);
+        stack[top++] = node.left;
+        stack[top++] = node.right;
         continue;
       }
       if (visit(node)) {
