@@ -6,6 +6,7 @@
 #include "nozzle/NozzleBound.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -122,11 +123,14 @@ struct PairSearch {
 
   /// Does any station of tree A (sub-graph i) have material of tree B (sub-graph j) inside its
   /// nozzle? Dual descent; the station cluster's nozzles lie in ball(c, ρ) ⊕ cone(n̄, NA* + δ).
-  bool collides(const SampleTree& A, const SampleTree& B, std::vector<std::pair<int, int>>& stack) {
-    stack.assign(1, {0, 0});
-    while (!stack.empty()) {
-      const auto [ia, ib] = stack.back();
-      stack.pop_back();
+  bool collides(const SampleTree& A, const SampleTree& B) {
+    // Depth first on a fixed stack: both trees split at medians, so each is under 30 deep and
+    // the stack holds at most their depths together plus one.
+    std::array<std::pair<int, int>, 128> stack;
+    int top = 0;
+    stack[top++] = {0, 0};
+    while (top > 0) {
+      const auto [ia, ib] = stack[--top];
       const auto& a = A.nodes[ia];
       const auto& b = B.nodes[ib];
       const Vec3 d = b.centre - a.centre;
@@ -167,11 +171,11 @@ struct PairSearch {
       }
       // Split the larger cluster (a leaf cannot be split).
       if (leafB || (!leafA && a.radius >= b.radius)) {
-        stack.push_back({a.right, ib});
-        stack.push_back({a.left, ib});
+        stack[top++] = {a.right, ib};
+        stack[top++] = {a.left, ib};
       } else {
-        stack.push_back({ia, b.right});
-        stack.push_back({ia, b.left});
+        stack[top++] = {ia, b.right};
+        stack[top++] = {ia, b.left};
       }
     }
     return false;
@@ -223,12 +227,11 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
 
   PotentialCollisions out;
   out.pcg.resize(K);
-  // One pair search (and its stack) per worker; sub-graphs are handed out one at a time.
+  // One pair search per worker; sub-graphs are handed out one at a time.
   const int workers = workerCount(threads, static_cast<size_t>(K));
   std::vector<PairSearch> searches(
       workers, PairSearch{m, nozzle, boundAngle, model.boundingApexOffset(), model.reach(),
                           model.tipClearance, NozzleBound(model, nozzle)});
-  std::vector<std::vector<std::pair<int, int>>> stacks(workers);
   progress.report(0.0);
   size_t reported = 0;  // in 64ths
   parallelFor(
@@ -239,8 +242,7 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
           return;
         }
         for (int j = 0; j < K; ++j) {
-          if (j != i && !trees[j].nodes.empty() &&
-              searches[w].collides(trees[i], trees[j], stacks[w])) {
+          if (j != i && !trees[j].nodes.empty() && searches[w].collides(trees[i], trees[j])) {
             out.pcg[i].push_back(j);
           }
         }
