@@ -7,6 +7,8 @@
 #include "nozzle/NozzleModel.h"
 
 #include <Eigen/Core>
+#include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace geolattice {
@@ -25,7 +27,7 @@ struct NozzleBound {
     tip = tipPoint;
     axis = unitAxis;
   }
-  bool mayTouch(const Eigen::Vector3d& centre, double radius) const;
+  bool mayTouch(const Eigen::Vector3d& centre, double radius) const;  // defined below (inline)
 
   Eigen::Vector3d tip = Eigen::Vector3d::Zero(), axis = Eigen::Vector3d::UnitZ();
   double sinAngle = 0, cosAngle = 1;
@@ -35,5 +37,32 @@ struct NozzleBound {
   double apexOffset = 0;
   const NozzleVolume* volume = nullptr;
 };
+
+// Inline: every node visit of the collision searches calls it.
+inline bool NozzleBound::mayTouch(const Eigen::Vector3d& c, double rho) const {
+  const Eigen::Vector3d v = c - tip;
+  const double h = v.dot(axis);
+  if (h + rho <= clearance) {
+    return false;  // the whole ball is at or below the tip plane
+  }
+  const double v2 = v.squaredNorm();
+  if (v2 > (rho + reach) * (rho + reach)) {
+    return false;  // beyond the end of the nozzle
+  }
+  const double r = std::sqrt(std::max(0.0, v2 - h * h));
+  if (volume && !volume->mayContainBall(h, r, rho)) {
+    return false;  // outside the printhead's profile
+  }
+  if (halfSpaceOrMore) {
+    return true;
+  }
+  const double ha = h + apexOffset;  // height above the bounding cone's apex
+  if (r * cosAngle <= ha * sinAngle) {
+    return true;  // centre inside the bounding cone
+  }
+  const double along = r * sinAngle + ha * cosAngle;
+  const double distance = along <= 0 ? std::sqrt(r * r + ha * ha) : r * cosAngle - ha * sinAngle;
+  return distance <= rho;
+}
 
 }  // namespace geolattice

@@ -171,15 +171,6 @@ Printhead::Printhead(const TriangleSurface& mesh, const std::string& name) : nam
   clearAngleMax_ = RangeMax(clearAngle_);
 }
 
-double Printhead::maxRadiusBetween(double h0, double h1) const {
-  h0 = std::max(h0, 0.0);
-  h1 = std::min(h1, height_);
-  if (!(h0 <= h1)) {
-    return 0.0;
-  }
-  return radiusMax_(static_cast<int>(h0 * invBin_), static_cast<int>(h1 * invBin_));
-}
-
 double Printhead::maxClearAngleBetween(double rho0, double rho1) const {
   rho0 = std::max(rho0, 0.0);
   rho1 = std::min(rho1, reach_);

@@ -65,7 +65,14 @@ public:
     return radius_[k];
   }
   /// The largest R over heights in [h0, h1] (clamped to [0, height]); 0 for an empty range.
-  double maxRadiusBetween(double h0, double h1) const;
+  double maxRadiusBetween(double h0, double h1) const {  // inline: the collision searches' hot path
+    h0 = std::max(h0, 0.0);
+    h1 = std::min(h1, height_);
+    if (!(h0 <= h1)) {
+      return 0.0;
+    }
+    return radiusMax_(static_cast<int>(h0 * invBin_), static_cast<int>(h1 * invBin_));
+  }
 
   /// A cone that contains the swept solid: apex `boundApexOffset()` below the tip on the axis,
   /// half-angle `boundHalfAngleRad()`. The offset is chosen so that the cone is slim (a flat
