@@ -3,6 +3,7 @@
 #include "common/Error.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <numeric>
@@ -26,10 +27,13 @@ public:
     if (nodes_.empty()) {
       return best;
     }
-    std::vector<int> stack{0};
-    while (!stack.empty()) {
-      const Node& n = nodes_[stack.back()];
-      stack.pop_back();
+    // Depth first on a fixed stack (no allocation per query): the tree splits at medians, so it
+    // is under 32 deep and the stack holds at most one entry more than the depth.
+    std::array<int, 64> stack;
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+      const Node& n = nodes_[stack[--top]];
       if ((x - n.centre).norm() - n.radius >= best) {
         continue;
       }
@@ -42,8 +46,8 @@ public:
         const Node& a = nodes_[n.left];
         const Node& b = nodes_[n.right];
         const bool leftNearer = (x - a.centre).norm() - a.radius < (x - b.centre).norm() - b.radius;
-        stack.push_back(leftNearer ? n.right : n.left);
-        stack.push_back(leftNearer ? n.left : n.right);
+        stack[top++] = leftNearer ? n.right : n.left;
+        stack[top++] = leftNearer ? n.left : n.right;
       }
     }
     return best;
