@@ -7,7 +7,9 @@ from the pipeline's cache), the total is the whole run.
 
 Runs `geolattice run MODEL -o OUT/... --until toolpath --replay-steps 0 -q` for each combination,
 one after the other, and prints a Markdown table from report.json: colliding toolpath stations
-(strict verifier, no exemption; of them at the build plate), forced sequence steps, retractions,
+(strict verifier, no exemption; of them at the build plate), the same toolpath judged by the
+example printhead (`geolattice verify OUT --printhead`: the cone's paths against the real body;
+a point apex cannot see contacts next to the tip), forced sequence steps, retractions,
 air length, and the seconds of the orientation search, the sequence, the toolpath and the whole
 run.
 
@@ -16,6 +18,7 @@ Usage: scripts/printability-run.py [OUTDIR] [--bin PATH] [--models a,b] [--extra
 """
 import json
 import os
+import re
 import subprocess
 import sys
 import time
@@ -41,6 +44,13 @@ CONFIGS = [  # nozzle, orientation (and pedestal), options
 ]
 
 
+def colliding_with_printhead(binary, d):
+    """Stations of d/toolpath.vtp with earlier material or the plate inside the example printhead."""
+    p = subprocess.run([binary, "verify", d, "--printhead", PRINTHEAD], capture_output=True, text=True)
+    m = re.search(r"(\d+) stations with earlier material", p.stderr + p.stdout)
+    return m.group(1) if m else "?"
+
+
 def main():
     args = sys.argv[1:]
     extra = []
@@ -62,7 +72,7 @@ def main():
     print("| model | nozzle | orientation | colliding stations (plate) | of stations | forced steps "
           "| retractions | air (mm) | orient search s | orientation tries (rank: colliding) | sequence s "
           "| toolpath s | total s |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
     for name, file, placement in MODELS:
         if only and name not in only:
             continue
@@ -80,13 +90,15 @@ def main():
                 r = {}
             if p.returncode != 0 or "toolpath" not in r:
                 err = (p.stderr.strip().splitlines() or ["?"])[0]
-                print(f"| {name} | {nozzle} | {orient} | exit {p.returncode}: {err} |||||||| {wall:.1f} |")
+                print(f"| {name} | {nozzle} | {orient} | exit {p.returncode}: {err} ||||||||| {wall:.1f} |")
                 continue
             t, s = r["toolpath"], r.get("sequence", {})
             o = r.get("orient", {})
             tries = ", ".join("%d: %d" % (x["rank"], x["colliding_stations"]) for x in o.get("tries", [])) or "–"
+            judged = (str(t["violating_stations"]) if nozzle == "printhead"
+                      else colliding_with_printhead(binary, d))
             # After orientation tries the stage seconds are the final pass's (cached stages: ~0).
-            print(f"| {name} | {nozzle} | {orient} | {t['violating_stations']} ({t['plate_stations']}) "
+            print(f"| {name} | {nozzle} | {orient} | {t['violating_stations']} ({t['plate_stations']}) | {judged} "
                   f"| {t['stations']} | {s.get('forced_steps')} | {t['retractions']} | {t['air_length_mm']:.0f} "
                   f"| {o.get('search_seconds', 0):.1f} | {tries} | {s.get('seconds', 0):.2f} | {t['seconds']:.2f} "
                   f"| {wall:.1f} |", flush=True)
