@@ -681,7 +681,8 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
   // go away with denser samples, and each round keeps the samples of the one before.
   RobotPathOptions perRound = o;
   perRound.refinements = std::min(o.refinements, 1);
-  size_t fewestLarge = N + 1;  // over the rounds so far
+  size_t fewestLarge = N + 1;         // over the rounds so far
+  std::vector<char> seenLarge(N, 0);  // points where a plan of a round stepped too far
   int roundsWithoutProgress = 0;
   for (int round = 0; round < kReconfigurationRounds; ++round) {
     RobotPath path;
@@ -692,10 +693,17 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
     }
     if (!path.unreachable.empty())
       return false;
-    // Two plans in a row without fewer large steps: the changes the rounds can make do not
-    // remove them (e.g. a joint step bound below what the path needs between its points).
-    if (path.largeSteps.size() < fewestLarge) {
-      fewestLarge = path.largeSteps.size();
+    // Two plans in a row with neither fewer large steps nor one at a new place: the changes the
+    // rounds can make do not remove them (e.g. a joint step bound below what the path needs
+    // between its points). A large step at a new place is progress: barring the branch there
+    // moved the plan, and the next plan knows more (the bunny's demo path: 1, 1, 6, 0 steps).
+    bool newPlace = false;
+    for (int i : path.largeSteps) {
+      newPlace = newPlace || !seenLarge[static_cast<size_t>(i)];
+      seenLarge[static_cast<size_t>(i)] = 1;
+    }
+    if (path.largeSteps.size() < fewestLarge || newPlace) {
+      fewestLarge = std::min(fewestLarge, path.largeSteps.size());
       roundsWithoutProgress = 0;
     } else if (++roundsWithoutProgress >= 2) {
       return false;
