@@ -69,7 +69,7 @@ def main():
         only = args[i + 1].split(",")
         del args[i:i + 2]
     out = args[0] if args else "/tmp/geolattice-printability"
-    print("| model | nozzle | orientation | colliding stations (plate) | of stations | forced steps "
+    print("| model | nozzle | orientation | colliding stations (plate) | with the example printhead | of stations | forced steps "
           "| retractions | air (mm) | orient search s | orientation tries (rank: colliding) | sequence s "
           "| toolpath s | total s |")
     print("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|")
