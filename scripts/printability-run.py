@@ -48,7 +48,9 @@ def colliding_with_printhead(binary, d):
     """Stations of d/toolpath.vtp with earlier material or the plate inside the example printhead."""
     p = subprocess.run([binary, "verify", d, "--printhead", PRINTHEAD], capture_output=True, text=True)
     m = re.search(r"(\d+) stations with earlier material", p.stderr + p.stdout)
-    return m.group(1) if m else "?"
+    if m:
+        return m.group(1)
+    return "0" if "collision-free" in p.stderr + p.stdout else "?"
 
 
 def main():
