@@ -76,8 +76,6 @@ constexpr const char* SimplificationDistance =
     "SimplificationDistance";  ///< largest input-vertex distance to the meshed surface (mm)
 constexpr const char* SimplificationSeconds = "SimplificationSeconds";  ///< its wall time (s)
 constexpr const char* TetGenRuns = "TetGenRuns";  ///< TetGen runs (edge search and retries)
-constexpr const char* TetGenCoarseGuess =
-    "TetGenCoarseGuess";  ///< 1: the mesh is the automatic edge's concurrent coarse guess, else 0
 constexpr const char* RemovedFlatTets = "RemovedFlatTets";  ///< zero-volume slivers dropped
 // Overhang analysis (vtkGLOverhangAnalysis): cell data on the boundary surface.
 constexpr const char* OverhangPlanar =

@@ -370,9 +370,6 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
   // default): after an edge collapse TetGen made 202k tets in 12 s of a genus-3 block, 18k in
   // 0.2 s after remeshing. Nothing finer than the coarse mesh needs is kept.
   tetOptions.simplifyFinerThan = 1.0;
-  // The coarse mesh is small (TetGen ~0.1-0.2 s) and the candidates' scores were measured on
-  // the sequential search's meshes.
-  tetOptions.concurrentCoarseGuess = false;
   const TetrahedralizeResult tets = tetrahedralizeSurface(surface, tetOptions);
   result.evaluationTets = static_cast<int>(tets.mesh.tets.size());
   progress.report(0.1);

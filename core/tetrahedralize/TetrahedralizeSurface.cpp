@@ -9,14 +9,11 @@
 #include "tetrahedralize/TetGenRunner.h"
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <exception>
 #include <map>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -59,12 +56,6 @@ constexpr double kLargestMeanTetVolumeOverBound = 0.55;
 constexpr double kVolumeTolerance = 1e-3;
 // The automatic search accepts a count within this factor of the target.
 constexpr double kAutoTolerance = 1.25;
-// Where the surface drives the refinement the first guess overshoots: the accepted edge was
-// 1.29x (bunny), 1.35x (spot) and 1.45x (topopt) the first guess, 1x on knight, Y and
-// three-branch, 0.76-0.9x on the cube and the ring. So a second run at this factor starts with
-// the first, on the other core, and is taken when its count is within the tolerance: the search
-// then costs one run's wall time instead of two runs one after the other.
-constexpr double kCoarseGuessFactor = 1.40;
 
 double regularTetVolume(double edge) {
   return edge * edge * edge / (6.0 * std::sqrt(2.0));
@@ -197,43 +188,6 @@ TriangleSurface withoutUnusedPoints(const TriangleSurface& input) {
   return out;
 }
 
-// A run of the concurrent coarse guess: one TetGen run and the checks of the search's own runs
-// (regions, volume, valid tets), no retry and no fallback; any failure leaves it not valid.
-struct CoarseGuess {
-  TetMesh mesh;
-  int removedRegions = 0;
-  size_t removedFlatTets = 0;
-  bool valid = false;
-};
-
-CoarseGuess meshCoarseGuess(const TriangleSurface& surface, const std::string& switches,
-                            double enclosedVolume, double limitSeconds,
-                            const std::atomic<bool>& stop) {
-  CoarseGuess guess;
-  const auto started = std::chrono::steady_clock::now();
-  try {
-    TetGenOutput out = runTetGen(surface, switches, [&] {
-      return stop.load() ||
-             std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() >
-                 limitSeconds;
-    });
-    const RegionSummary regions = classifyRegions(surface, out);
-    if (out.mesh.tets.empty() ||
-        std::abs(regions.windingVolume - enclosedVolume) > kVolumeTolerance * enclosedVolume) {
-      return guess;
-    }
-    guess.mesh = std::move(out.mesh);
-    orientTetsPositively(guess.mesh);
-    guess.removedFlatTets = removeFlatTets(guess.mesh);
-    const TetMeshCheckReport check = checkTetMesh(guess.mesh);
-    guess.valid = check.invertedTets == 0 && check.nonManifoldFaces == 0 && check.tetCount > 0;
-    guess.removedRegions = regions.removedRegions;
-  } catch (const GeoLatticeError&) {
-    guess.valid = false;  // the search goes on without it
-  }
-  return guess;
-}
-
 }  // namespace
 
 double automaticEdgeLength(double enclosedVolume, int targetTets) {
@@ -339,22 +293,14 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   // simplified for one edge length): each run gets a time limit far above its expected time,
   // and a run past it counts as failed.
   bool timedOut = false;
-  auto limitFor = [&](double edge) {
-    return kTetGenBaseSeconds + kTetGenSecondsPerTet * result.enclosedVolume /
-                                    (kGuessMeanTetVolumeOverBound * regularTetVolume(edge));
-  };
-  // Set when the concurrent coarse guess (automatic edge length, kCoarseGuessFactor) is taken:
-  // the first guess's run then stops.
-  std::atomic<bool> coarseAccepted{false};
-  auto stopped = [&] {
-    return (options.shouldAbort && options.shouldAbort()) || coarseAccepted.load();
-  };
   auto runOnce = [&](double edge) {
-    const double limit = limitFor(edge);
+    const double limit =
+        kTetGenBaseSeconds + kTetGenSecondsPerTet * result.enclosedVolume /
+                                 (kGuessMeanTetVolumeOverBound * regularTetVolume(edge));
     auto started = std::chrono::steady_clock::now();
     timedOut = false;
     const std::function<bool()> abortOrTimeout = [&] {
-      if (stopped()) {
+      if (options.shouldAbort && options.shouldAbort()) {
         return true;
       }
       timedOut =
@@ -365,7 +311,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     try {
       out = runTetGen(surface, switchesFor(edge), abortOrTimeout);
     } catch (const GeoLatticeError& e) {
-      if (!result.simplified || stopped()) {
+      if (!result.simplified || (options.shouldAbort && options.shouldAbort())) {
         throw;
       }
       // TetGen failed on the simplified surface (e.g. nearly coincident vertices it made, or a
@@ -443,73 +389,20 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
                           "another edge length (--edge-length) or repair the surface");
   };
 
-  const double target = options.autoTargetTets;
-  auto miss = [&](size_t count) {
-    return std::abs(std::log(static_cast<double>(count) / target));
-  };
-  // The coarse guess runs on its own copy of the surface TetGen gets, beside the first guess.
-  const double coarseEdge = kCoarseGuessFactor * firstEdge;
-  const bool simplifiedForGuess = result.simplified;
-  const double volumeForGuess = result.enclosedVolume;
-  const size_t trianglesForGuess = result.meshedTriangles;
-  std::atomic<bool> stopCoarse{false};
-  CoarseGuess coarse;
-  std::thread coarseRun;
-  if (automatic && options.concurrentCoarseGuess) {
-    coarseRun = std::thread([&, copy = surface, switches = switchesFor(coarseEdge),
-                             limit = limitFor(coarseEdge)] {
-      coarse = meshCoarseGuess(copy, switches, volumeForGuess, limit, stopCoarse);
-      coarseAccepted = coarse.valid && miss(coarse.mesh.tets.size()) <= std::log(kAutoTolerance);
-    });
-  }
-  struct StopAndJoin {  // on every way out, an exception included
-    std::thread& thread;
-    std::atomic<bool>& stop;
-    ~StopAndJoin() {
-      if (thread.joinable()) {
-        stop = true;
-        thread.join();
-      }
-    }
-  } stopAndJoin{coarseRun, stopCoarse};
-
-  TetMesh best;
-  std::exception_ptr firstFailure;
-  try {
-    best = run(firstEdge);
-  } catch (const GeoLatticeError&) {
-    if (options.shouldAbort && options.shouldAbort()) {
-      throw;
-    }
-    firstFailure = std::current_exception();  // stopped for the coarse guess, or failed
-  }
-  if (coarseRun.joinable()) {
-    coarseRun.join();  // its count decides, whichever run ended first
-  }
+  TetMesh best = run(firstEdge);
   double bestEdge = firstEdge;
+  result.removedCavityRegions = removedRegions;
   result.attempts = 1;
-  if (coarseAccepted) {
-    best = std::move(coarse.mesh);
-    bestEdge = coarseEdge;
-    result.coarseGuessTaken = true;
-    result.removedCavityRegions = coarse.removedRegions;
-    result.removedFlatTets = coarse.removedFlatTets;
-    result.simplified = simplifiedForGuess;  // the first guess may have fallen back to the input
-    result.enclosedVolume = volumeForGuess;
-    result.meshedTriangles = trianglesForGuess;
-    result.simplificationRefused.clear();
-  } else if (firstFailure) {
-    std::rethrow_exception(firstFailure);
-  } else {
-    result.removedCavityRegions = removedRegions;
-  }
-  if (automatic && !coarseAccepted) {
+  if (automatic) {
     // Secant search on log(count) = slope * log(edge) + c. A volume-filling mesh has slope -3;
     // surface-driven refinement flattens it (and makes it jumpy near the surface's own edge
     // length), so the measured slope is used from run 2 on, and a proposal outside the
     // bracket (largest edge known to give too many tets, smallest known to give too few) is
-    // replaced by the bracket's geometric mean. (The coarse guess's count is not used: the
-    // search is the same as without it.)
+    // replaced by the bracket's geometric mean.
+    const double target = options.autoTargetTets;
+    auto miss = [&](size_t count) {
+      return std::abs(std::log(static_cast<double>(count) / target));
+    };
     double edge = firstEdge, count = static_cast<double>(best.tets.size());
     double slope = count > target ? kFirstSlopeOver : kFirstSlopeUnder;
     double tooFine = 0.0,

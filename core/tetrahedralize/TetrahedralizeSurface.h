@@ -24,10 +24,7 @@ struct TetrahedralizeOptions {
   /// edge length automaticEdgeLength(enclosed volume, autoTargetTets); if the tet count misses
   /// autoTargetTets by more than a factor 1.25, the edge length is corrected from the measured
   /// counts (secant on log count vs log length) and TetGen runs again, at most
-  /// kMaxAutoAttempts times in all; the run closest to the target is returned. A run at 1.35x
-  /// the first guess starts with it on another thread and is taken when its count is within
-  /// the factor (finely curved surfaces drive the refinement, so the first guess overshoots
-  /// there); the search is otherwise unchanged. (The count is
+  /// kMaxAutoAttempts times in all; the run closest to the target is returned. (The count is
   /// not a function of the volume alone: the refinement near a finely triangulated surface adds
   /// tets that no volume bound removes, e.g. ~46k tets for the 3674-triangle bunny.)
   double targetEdgeLength = 0.0;
@@ -46,9 +43,6 @@ struct TetrahedralizeOptions {
   /// checked against a quarter of the edge, else the edge collapse (the default), or the edge
   /// collapse alone. simplifyFinerThan 0 turns both off.
   SimplificationMethod simplification = SimplificationMethod::IsotropicRemeshing;
-  /// With the automatic edge length: run TetGen at 1.4x the first guess beside it, on another
-  /// thread, and take that mesh when its count is within the tolerance (see targetEdgeLength).
-  bool concurrentCoarseGuess = true;
   /// Polled about every 50 ms while TetGen runs, and after each run; returning true stops it
   /// and throws "tetrahedralization aborted" (filters pass their AbortExecute flag). Optional.
   std::function<bool()> shouldAbort;
@@ -73,16 +67,14 @@ struct TetrahedralizeResult {
   int flippedSurfaceTriangles = 0;  ///< input triangles reversed because the surface faced inward
   int flippedTets = 0;  ///< output tets reoriented (0 in practice: TetGen 1.5 writes positive tets)
   int removedCavityRegions =
-      0;             ///< regions TetGen filled with winding number 0 (cavities), removed
-  int attempts = 0;  ///< TetGen runs (1 unless the edge length was automatic)
-  bool coarseGuessTaken = false;  ///< the automatic edge length's concurrent coarse guess (1.35x
-                                  ///< the first guess) was within the tolerance and is the mesh
-  int tetgenRetries = 0;          ///< extra runs: TetGen's output was invalid or it ran too long
-  size_t removedFlatTets = 0;     ///< zero-volume slivers dropped from TetGen's output
-  double seconds = 0.0;           ///< wall time of the whole call
-  bool simplified = false;        ///< the surface was simplified before TetGen
-  size_t inputTriangles = 0;      ///< triangles of the input surface
-  size_t meshedTriangles = 0;     ///< triangles given to TetGen
+      0;                       ///< regions TetGen filled with winding number 0 (cavities), removed
+  int attempts = 0;            ///< TetGen runs (1 unless the edge length was automatic)
+  int tetgenRetries = 0;       ///< extra runs: TetGen's output was invalid or it ran too long
+  size_t removedFlatTets = 0;  ///< zero-volume slivers dropped from TetGen's output
+  double seconds = 0.0;        ///< wall time of the whole call
+  bool simplified = false;     ///< the surface was simplified before TetGen
+  size_t inputTriangles = 0;   ///< triangles of the input surface
+  size_t meshedTriangles = 0;  ///< triangles given to TetGen
   double simplificationDistance = 0;  ///< largest input-vertex distance to them (mm)
   double simplificationSeconds = 0;
   std::string simplificationRefused;  ///< why TetGen got the input after all (empty: it did not)
