@@ -693,16 +693,19 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
     }
     if (!path.unreachable.empty())
       return false;
-    // Two plans in a row with neither fewer large steps nor one at a new place: the changes the
-    // rounds can make do not remove them (e.g. a joint step bound below what the path needs
-    // between its points). A large step at a new place is progress: barring the branch there
-    // moved the plan, and the next plan knows more (the bunny's demo path: 1, 1, 6, 0 steps).
-    bool newPlace = false;
+    // Two plans in a row with neither fewer large steps nor all of them at new places: the
+    // changes the rounds can make do not remove them (e.g. a joint step bound below what the
+    // path needs between its points, whose steps recur where they were). Large steps all at
+    // new places are progress: barring the branch where the last plans flipped removed those,
+    // and the next plan knows more (the bunny's demo path at one edge length: 1, 1, 6, 0).
+    bool allNew = !path.largeSteps.empty();
     for (int i : path.largeSteps) {
-      newPlace = newPlace || !seenLarge[static_cast<size_t>(i)];
+      allNew = allNew && !seenLarge[static_cast<size_t>(i)];
+    }
+    for (int i : path.largeSteps) {
       seenLarge[static_cast<size_t>(i)] = 1;
     }
-    if (path.largeSteps.size() < fewestLarge || newPlace) {
+    if (path.largeSteps.size() < fewestLarge || allNew) {
       fewestLarge = std::min(fewestLarge, path.largeSteps.size());
       roundsWithoutProgress = 0;
     } else if (++roundsWithoutProgress >= 2) {

@@ -42,7 +42,7 @@
 ///    that station, which the collision verifier checked). The retreat lines are solved every
 ///    5 mm (no step above maxJointStepDeg) and the joint move is checked every degree; a change
 ///    whose move cannot be made so is excluded and the plan made again (at most 12 plans, and
-///    no more once two plans in a row leave neither fewer large steps nor one at a new place). The
+///    no more once two plans in a row leave neither fewer large steps nor all at new places). The
 ///    path as solved by 1–3 is kept when this does not remove every unreachable point and large
 ///    step. Robot self-collision and other obstacles of the cell are not modelled.
 /// Cost O(samples · ψ · 8) IK solutions for the plan and O(N) for each fine pass (the other
