@@ -48,31 +48,24 @@ def main():
         d.DiffuseColor = colour
         d.AmbientColor = colour
 
-    # Every toolpath point as a vertex, then the colliding ones.
-    toolpath = simple.XMLPolyDataReader(FileName=[os.path.join(run, "toolpath.vtp")])
-    vertices = simple.MaskPoints(Input=toolpath)
-    vertices.OnRatio = 1
-    vertices.MaximumNumberofPoints = 1 << 30
-    vertices.GenerateVertices = 1
-    vertices.SingleVertexPerCell = 1
-    stations = simple.Threshold(Input=vertices)
-    stations.Scalars = ["POINTS", "Collision"]
-    stations.LowerThreshold = 1
-    stations.UpperThreshold = 255
-    spheres(stations, [0.1, 0.3, 1.0], 0.012)
+    def points_where(file_name, array, lower, upper):
+        """The points of a file (as vertices) whose point array lies in [lower, upper]."""
+        vertices = simple.MaskPoints(Input=simple.XMLPolyDataReader(FileName=[file_name]))
+        vertices.OnRatio = 1
+        vertices.MaximumNumberofPoints = 1 << 30
+        vertices.GenerateVertices = 1
+        vertices.SingleVertexPerCell = 1
+        selected = simple.Threshold(Input=vertices)
+        selected.Scalars = ["POINTS", array]
+        selected.LowerThreshold = lower
+        selected.UpperThreshold = upper
+        return selected
 
+    spheres(points_where(os.path.join(run, "toolpath.vtp"), "Collision", 1, 255),
+            [0.1, 0.3, 1.0], 0.012)
     pairs = os.path.join(run, "toolpath_collisions.vtp")
     if os.path.exists(pairs):
-        reported = simple.MaskPoints(Input=simple.XMLPolyDataReader(FileName=[pairs]))
-        reported.OnRatio = 1
-        reported.MaximumNumberofPoints = 1 << 30
-        reported.GenerateVertices = 1
-        reported.SingleVertexPerCell = 1
-        obstacles = simple.Threshold(Input=reported)
-        obstacles.Scalars = ["POINTS", "Role"]
-        obstacles.LowerThreshold = 1
-        obstacles.UpperThreshold = 1
-        spheres(obstacles, [1.0, 0.1, 0.1], 0.008)
+        spheres(points_where(pairs, "Role", 1, 1), [1.0, 0.1, 0.1], 0.008)
 
     text = simple.Show(simple.Text(Text=title), view)
     text.FontSize = 14
