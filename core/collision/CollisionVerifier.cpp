@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <sstream>
 
@@ -79,6 +80,14 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
     obstacleTime.resize(all.size(), std::numeric_limits<int>::min());
   }
   const TimedPointTree tree(all, obstacleTime);
+  // With an exemption, a station whose nozzle reaches the plate must still be searched to its
+  // end for material some order could have kept out, but not through the plate's samples (a cone
+  // that reaches the plate holds thousands of them): after its first plate sample that search
+  // runs on the material alone.
+  std::unique_ptr<TimedPointTree> materialTree;
+  if (exemption && all.size() > N) {
+    materialTree = std::make_unique<TimedPointTree>(points, obstacleTime);
+  }
   const NozzleVolume volume(nozzle);
   NozzleBound bound(nozzle, volume);
 
@@ -109,6 +118,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
       // order keeps out (a skeleton ancestor's); plateHit: the build plate (no order moves it).
       int hit = -1, exemptHit = -1, plateHit = -1;
       double height = 0, radial = 0, exemptHeight = 0, exemptRadial = 0;
+      bool materialLeft = false;  // the plate was found first: search the material alone
       tree.forEachCandidate(station, time[k], [&](int q) {
         double h = 0, r = 0;
         if (!volume.contains(points[k], axis[k], all[q], &h, &r)) {
@@ -130,6 +140,8 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
           }
           if (onPlate && plateHit < 0) {
             plateHit = q;
+            materialLeft = materialTree != nullptr;
+            return materialLeft;
           }
           return false;
         }
@@ -138,6 +150,19 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
         radial = r;
         return true;
       });
+      if (materialLeft) {  // an avoidable obstacle, if any (the plate outranks exempt material)
+        materialTree->forEachCandidate(station, time[k], [&](int q) {
+          double h = 0, r = 0;
+          if (!volume.contains(points[k], axis[k], points[q], &h, &r) ||
+              exemption->unavoidable(exemption->group[k], exemption->group[q])) {
+            return false;
+          }
+          hit = q;
+          height = h;
+          radial = r;
+          return true;
+        });
+      }
       if (hit < 0 && exemptHit < 0 && plate && tipInsidePlate(*plate, partLo, partHi, points[k])) {
         plateHit = exemptHit = static_cast<int>(all.size());  // the tip itself is in the plate
         exemptHeight = exemptRadial = 0;

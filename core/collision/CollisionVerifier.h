@@ -11,6 +11,8 @@
 ///
 /// For a sub-graph order, time = the sub-graph's position (all of its points share it, a
 /// sub-graph is not tested against itself); for a toolpath, time = the point's index on it.
+/// With an exemption and the build plate, a station's search past its first plate sample (for
+/// material an order could have kept out) runs on a second tree of the material alone.
 #include "nozzle/BuildPlate.h"
 #include "nozzle/NozzleModel.h"
 

@@ -1,5 +1,6 @@
 // The independent collision verifier on hand-built cases: two towers printed in the wrong
 // order must collide, layer by layer must not; the holder, the tip clearance and bad input.
+#include <algorithm>
 #include "collision/CollisionVerifier.h"
 #include "common/Error.h"
 
@@ -253,4 +254,44 @@ TEST(CollisionVerifier, BuildPlateIsAnObstacle) {
   EXPECT_THROW(
       verifyNozzleClearance(up.points, up.normals, up.time, nozzle, 20, nullptr, nullptr, &bad),
       GeoLatticeError);
+}
+
+// With an order to judge, a station whose nozzle reaches the plate is still searched for material
+// an order could have kept out (after the first plate sample the search runs on the material
+// alone): such a station is avoidable, not a plate station.
+TEST(CollisionVerifier, AnOrderIsJudgedPastThePlate) {
+  const double t = 60 * M_PI / 180;
+  const V axis(std::sin(t), 0, std::cos(t));
+  Towers line;
+  for (int i = 0; i <= 20; ++i) {  // every station's cone reaches the plate (see above)
+    line.points.push_back(V(i, 0, 0.6));
+    line.normals.push_back(axis);
+    line.time.push_back(i + 1);
+  }
+  line.points.push_back(V(10, 0, 0.6) + 3.0 * axis);  // printed first, up station 10's axis
+  line.normals.push_back(axis);
+  line.time.push_back(0);
+  CollisionExemption exemption;
+  exemption.group.assign(line.points.size(), 0);
+  exemption.group.back() = 1;
+  bool ancestor = false;  // is group 1 material no order can keep out?
+  exemption.unavoidable = [&](int, int obstacle) {
+    return ancestor && obstacle == 1;
+  };
+  const BuildPlate plate;
+  CollisionReport r = verifyNozzleClearance(line.points, line.normals, line.time, cone(45), 20,
+                                            &exemption, nullptr, &plate);
+  EXPECT_EQ(r.violatingStations, 22);
+  const auto& plateIds = r.plateStationIds;
+  EXPECT_EQ(std::count(plateIds.begin(), plateIds.end(), 10), 0);  // avoidable: the material
+  EXPECT_LT(r.plateStations, 22);
+  EXPECT_EQ(r.unavoidableStations, r.plateStations);
+  EXPECT_FALSE(r.orderCollisionFree);
+  ancestor = true;  // the same material, now exempt: the plate outranks it
+  r = verifyNozzleClearance(line.points, line.normals, line.time, cone(45), 20, &exemption, nullptr,
+                            &plate);
+  EXPECT_EQ(r.violatingStations, 22);
+  EXPECT_EQ(r.plateStations, 22);
+  EXPECT_EQ(r.unavoidableStations, 22);
+  EXPECT_TRUE(r.orderCollisionFree);
 }
