@@ -10,12 +10,10 @@
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
-#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <regex>
-#include <utility>
 #include <unistd.h>
 
 namespace geolattice {
@@ -61,85 +59,6 @@ void writeVtkXml(vtkDataObject* data, const std::string& path) {
     throw GeoLatticeError("cannot write a " + std::string(data ? data->GetClassName() : "null") +
                           " to " + tmp);
   });
-}
-
-BackgroundVtkWriter::BackgroundVtkWriter() : thread_([this] { this->work(); }) {}
-
-BackgroundVtkWriter::~BackgroundVtkWriter() {
-  {
-    std::unique_lock<std::mutex> lock(mutex_);
-    idle_.wait(lock, [this] { return jobs_.empty() && !busy_; });
-    stop_ = true;
-  }
-  wake_.notify_all();
-  thread_.join();
-}
-
-void BackgroundVtkWriter::write(vtkDataObject* data, const std::string& path) {
-  vtkSmartPointer<vtkDataObject> copy;
-  if (data) {
-    copy = vtkSmartPointer<vtkDataObject>::Take(data->NewInstance());
-    copy->ShallowCopy(data);
-  }
-  {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (!error_.empty()) {
-      throw GeoLatticeError(error_);
-    }
-    jobs_.push_back({copy, path});
-  }
-  wake_.notify_all();
-}
-
-std::vector<std::pair<std::string, double>> BackgroundVtkWriter::takeLocked() {
-  if (!error_.empty()) {
-    throw GeoLatticeError(error_);
-  }
-  return std::exchange(written_, {});
-}
-
-std::vector<std::pair<std::string, double>> BackgroundVtkWriter::takeWritten() {
-  std::lock_guard<std::mutex> lock(mutex_);
-  return takeLocked();
-}
-
-std::vector<std::pair<std::string, double>> BackgroundVtkWriter::drain() {
-  std::unique_lock<std::mutex> lock(mutex_);
-  idle_.wait(lock, [this] { return jobs_.empty() && !busy_; });
-  return takeLocked();
-}
-
-void BackgroundVtkWriter::work() {
-  std::unique_lock<std::mutex> lock(mutex_);
-  while (true) {
-    wake_.wait(lock, [this] { return stop_ || !jobs_.empty(); });
-    if (jobs_.empty()) {
-      return;  // stop_, and nothing left
-    }
-    Job job = std::move(jobs_.front());
-    jobs_.pop_front();
-    busy_ = true;
-    lock.unlock();
-    std::string failure;
-    const auto start = std::chrono::steady_clock::now();
-    try {
-      writeVtkXml(job.data, job.path);
-    } catch (const std::exception& e) {
-      failure = e.what();
-    }
-    const double seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    job.data = nullptr;  // released off the lock
-    lock.lock();
-    busy_ = false;
-    if (failure.empty()) {
-      written_.emplace_back(job.path, seconds);
-    } else if (error_.empty()) {
-      error_ = failure;
-      jobs_.clear();  // the run stops at its next write or drain
-    }
-    idle_.notify_all();
-  }
 }
 
 namespace {

@@ -4,13 +4,7 @@
 /// through core/common/AtomicFile.h.
 #include "common/AtomicFile.h"
 
-#include <vtkSmartPointer.h>
-
-#include <condition_variable>
-#include <deque>
-#include <mutex>
 #include <string>
-#include <thread>
 #include <utility>
 #include <vector>
 
@@ -27,41 +21,6 @@ void prepareOutputDirectory(const std::string& dir);
 /// (level 5) took 25-35 s of a 1M-tet run for ~400 MB of files, LZ4 about a third of that for
 /// ~20% larger files (docs/scale-run.md). VTK and ParaView read both.
 void writeVtkXml(vtkDataObject* data, const std::string& path);
-
-/// Writes VTK XML files (writeVtkXml) on one background thread, in the order they are handed
-/// in, so that a run's next stage computes while a file is encoded and compressed (the 1M-tet
-/// run spends ~7 s on them). Each file is written from a shallow copy taken when it is handed
-/// in: the stages do not change their outputs in place, and a run drains the queue before it
-/// runs stages again.
-class BackgroundVtkWriter {
-public:
-  BackgroundVtkWriter();
-  ~BackgroundVtkWriter();  ///< waits for the queued files (their errors are dropped)
-  BackgroundVtkWriter(const BackgroundVtkWriter&) = delete;
-  BackgroundVtkWriter& operator=(const BackgroundVtkWriter&) = delete;
-  /// Queues `data` for `path`. Throws GeoLatticeError with the first failed write's message.
-  void write(vtkDataObject* data, const std::string& path);
-  /// The files written since the last call, with their seconds, without waiting. Throws like
-  /// write.
-  std::vector<std::pair<std::string, double>> takeWritten();
-  /// Waits until every queued file is written, then as takeWritten.
-  std::vector<std::pair<std::string, double>> drain();
-
-private:
-  struct Job {
-    vtkSmartPointer<vtkDataObject> data;
-    std::string path;
-  };
-  void work();
-  std::vector<std::pair<std::string, double>> takeLocked();
-  std::mutex mutex_;
-  std::condition_variable wake_, idle_;
-  std::deque<Job> jobs_;
-  bool busy_ = false, stop_ = false;
-  std::string error_;
-  std::vector<std::pair<std::string, double>> written_;
-  std::thread thread_;  // last: started when everything above exists
-};
 
 /// The files one run writes into its output directory, with the seconds each took. At the end
 /// of a run (finished or failed) every GeoLattice output of an earlier run that this run did not

@@ -49,7 +49,6 @@ public:
     const InterruptHandler interrupt;
     try {
       const int status = this->Stages();
-      this->DrainWrites();  // a file that could not be written fails the run, as before
       this->Finish(status);
       return status;
     } catch (const StageError& e) {
@@ -214,7 +213,6 @@ private:
       return false;
     }
     this->OrientationsTried = true;
-    this->DrainWrites();  // the tries run the stages again: their outputs change
     const auto tries = P.ChooseOrientationByToolpath(
         P.OrientationTries, [&](const GLPrintPipeline::OrientationTry& t) {
           if (!R.quiet) {

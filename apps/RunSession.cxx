@@ -144,28 +144,15 @@ void RunSession::GateLine(const std::string& line, bool warning) {
 }
 
 void RunSession::Write(vtkDataObject* data, const char* name) {
-  this->RecordWrites(this->Writer.takeWritten());
-  this->Writer.write(data, (fs::path(R.outDir) / name).string());
-}
-
-void RunSession::RecordWrites(const std::vector<std::pair<std::string, double>>& written) {
-  for (const auto& [path, seconds] : written) {
-    this->Files.add(path, seconds);
-  }
-}
-
-void RunSession::DrainWrites() {
-  this->RecordWrites(this->Writer.drain());
+  const std::string path = (fs::path(R.outDir) / name).string();
+  const auto start = Clock::now();
+  writeVtkXml(data, path);
+  this->Files.add(path, secondsSince(start));
 }
 
 /// Moves the earlier run's leftovers to previous/, then writes report.json (with every file
 /// written and its seconds, and the exit status).
 void RunSession::Finish(int status) {
-  try {
-    this->DrainWrites();
-  } catch (const GeoLatticeError& e) {  // the run failed already; the report says how
-    std::cerr << "geolattice: " << e.what() << "\n";
-  }
   const std::vector<std::string> retired = this->Files.retireStaleOutputs();
   Json files = Json::array();
   for (const auto& [name, seconds] : this->Files.files()) {

@@ -55,28 +55,19 @@ public:
   static void RemoveFiles(const std::vector<std::string>& files);
   /// One stderr line of a gate: "stopped: ..." or "warning: ...".
   void GateLine(const std::string& line, bool warning = false);
-  /// Writes `data` as OUTDIR/name (VTK XML) on the background writer and records it when it is
-  /// written. Throws GeoLatticeError when an earlier file could not be written.
+  /// Writes `data` as OUTDIR/name (VTK XML) and records it.
   void Write(vtkDataObject* data, const char* name);
-  /// Waits for the background writer and records its files; throws when one failed. Called
-  /// before stages run again (orientation tries) and before report.json.
-  void DrainWrites();
   /// Runs write(OUTDIR/name) and records the file.
   template <class F>
   void WriteFile(const char* name, F&& write) {
-    this->RecordWrites(this->Writer.takeWritten());
     const std::string path = (std::filesystem::path(R.outDir) / name).string();
     const auto start = Clock::now();
     write(path);
     this->Files.add(path, secondsSince(start));
   }
   /// Moves the earlier run's leftovers to previous/, then writes report.json (every file written
-  /// and its seconds, and the exit status). Waits for the background writer first.
+  /// and its seconds, and the exit status).
   void Finish(int status);
-
-private:
-  void RecordWrites(const std::vector<std::pair<std::string, double>>& written);
-  BackgroundVtkWriter Writer;
 };
 
 /// The program stage behind its gates: a colliding toolpath (unless --allow-collisions),
