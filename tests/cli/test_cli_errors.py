@@ -484,6 +484,16 @@ class CliErrorTest(unittest.TestCase):
         self.expect_error([os.path.join(TESTDATA, "cube.obj")], "output directory",
                           out=os.path.join(blocker, "sub"))
 
+    def test_a_file_that_cannot_be_written_fails_the_run(self):
+        # A failed write fails the run with one line naming the file and keeps the files written
+        # before it (complete: each is written to a temporary name and renamed).
+        os.makedirs(os.path.join(self.out, "layers.vtp"))  # the rename onto it fails
+        self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--until", "toolpath"],
+                          "could not write", "layers.vtp")
+        for name in ("tets.vtu", "fields.vtu"):
+            self.assertGreater(os.path.getsize(os.path.join(self.out, name)), 0, name)
+        self.assertFalse(os.path.exists(os.path.join(self.out, "toolpath.vtp")))
+
     def test_failure_keeps_earlier_results(self):
         # A good run, then a failing one into the same directory: the earlier files the failing run
         # did not write again are kept intact in previous/ (with their report.json), the new
