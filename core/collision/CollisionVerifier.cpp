@@ -10,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <numeric>
 #include <sstream>
 
@@ -83,11 +84,16 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
   // With an exemption, a station whose nozzle reaches the plate must still be searched to its
   // end for material some order could have kept out, but not through the plate's samples (a cone
   // that reaches the plate holds thousands of them): after its first plate sample that search
-  // runs on the material alone.
+  // runs on the material alone. Built when a station first needs it (most parts placed with
+  // room under them have none).
+  const bool searchPastThePlate = exemption && all.size() > N;
   std::unique_ptr<TimedPointTree> materialTree;
-  if (exemption && all.size() > N) {
-    materialTree = std::make_unique<TimedPointTree>(points, obstacleTime);
-  }
+  std::once_flag materialTreeBuilt;
+  auto materialOnly = [&]() -> const TimedPointTree& {
+    std::call_once(materialTreeBuilt,
+                   [&] { materialTree = std::make_unique<TimedPointTree>(points, obstacleTime); });
+    return *materialTree;
+  };
   const NozzleVolume volume(nozzle);
   NozzleBound bound(nozzle, volume);
 
@@ -140,7 +146,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
           }
           if (onPlate && plateHit < 0) {
             plateHit = q;
-            materialLeft = materialTree != nullptr;
+            materialLeft = searchPastThePlate;
             return materialLeft;
           }
           return false;
@@ -151,7 +157,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
         return true;
       });
       if (materialLeft) {  // an avoidable obstacle, if any (the plate outranks exempt material)
-        materialTree->forEachCandidate(station, time[k], [&](int q) {
+        materialOnly().forEachCandidate(station, time[k], [&](int q) {
           double h = 0, r = 0;
           if (!volume.contains(points[k], axis[k], points[q], &h, &r) ||
               exemption->unavoidable(exemption->group[k], exemption->group[q])) {
