@@ -218,14 +218,17 @@ GeodesicDistanceFields::GeodesicDistanceFields(TetMesh mesh, const GeodesicField
   progress.report(0.15);
 
   start = Clock::now();
-  heat_.factorize(heatMatrix, "heat (V + tK)");
-  setupTimings_.factorization = secondsSince(start);
-  progress.report(0.55);
-  start = Clock::now();
-  pinnedLaplacian_.shareAnalysis(heat_);
-  pinnedLaplacian_.factorize(pinnedK, "pinned Laplacian");
+  if (options_.factorTogether) {
+    factorizeTogether(heat_, heatMatrix, "heat (V + tK)", pinnedLaplacian_, pinnedK,
+                      "pinned Laplacian");
+  } else {
+    heat_.factorize(heatMatrix, "heat (V + tK)");
+    progress.report(0.55);
+    pinnedLaplacian_.shareAnalysis(heat_);
+    pinnedLaplacian_.factorize(pinnedK, "pinned Laplacian");
+  }
   dirichletLaplacian_.shareAnalysis(heat_);
-  setupTimings_.factorization += secondsSince(start);
+  setupTimings_.factorization = secondsSince(start);
   progress.report(0.95);
 
   start = Clock::now();

@@ -40,6 +40,10 @@ struct GeodesicFieldOptions {
   /// component (the heat method's Neumann variant): no factorization per source set, for callers
   /// that solve for many (the orientation search: one per candidate).
   bool dirichletGamma = true;
+  /// true (default): the heat matrix and the pinned Laplacian are factored at the same time on
+  /// two threads (factorizeTogether). false: one after the other, for callers that already run
+  /// one solver per core (the orientation search).
+  bool factorTogether = true;
   /// Called on the calling thread with the fraction done: the constructor reports its set-up
   /// (assembly, factorizations) from 0 to 1, each solve() its own work again from 0 to 1.
   /// Optional; not part of the set-up (changing it needs no new factorization).

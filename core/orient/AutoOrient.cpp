@@ -380,6 +380,7 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
   parallelFor(static_cast<size_t>(workers), workers, [&](size_t w, int) {
     GeodesicFieldOptions fields;
     fields.dirichletGamma = false;  // a source set per candidate: no factorization each
+    fields.factorTogether = false;  // the workers already take the cores
     gdf[w] = std::make_unique<GeodesicDistanceFields>(tets.mesh, fields);
   });
   progress.report(0.15);

@@ -105,6 +105,44 @@ TEST_P(SparseCholeskyBackends, RejectsIndefiniteNonSquareAndNonFiniteMatrices) {
   EXPECT_THROW(solver.solve(Eigen::VectorXd::Ones(35)), GeoLatticeError);
 }
 
+TEST_P(SparseCholeskyBackends, FactorizedTogetherSolvesAsOneAfterTheOther) {
+  const SpMat A = gridMatrix(70, 0.01);  // large enough for CHOLMOD's supernodal factor
+  SpMat B = A;
+  B *= 2.0;
+  B.diagonal().array() += 0.5;  // same pattern, other values
+  SparseCholesky a(GetParam()), b(GetParam());
+  factorizeTogether(a, A, "A", b, B, "B");
+  ASSERT_TRUE(a.factorized());
+  ASSERT_TRUE(b.factorized());
+  SparseCholesky alone(GetParam());
+  alone.factorize(B, "B alone");
+  const Eigen::VectorXd rhs = Eigen::VectorXd::LinSpaced(A.rows(), -2.0, 3.0);
+  EXPECT_LT(relativeResidual(A, a.solve(rhs), rhs), 1e-12);
+  EXPECT_LT(relativeResidual(B, b.solve(rhs), rhs), 1e-12);
+  EXPECT_LT((b.solve(rhs) - alone.solve(rhs)).lpNorm<Eigen::Infinity>(),
+            1e-12 * alone.solve(rhs).lpNorm<Eigen::Infinity>());
+
+  // A failure on either thread is thrown, naming its matrix, after both have ended.
+  SpMat indefinite = B;
+  indefinite.coeffRef(100, 100) = -3.0;
+  SparseCholesky c(GetParam()), d(GetParam());
+  try {
+    factorizeTogether(c, A, "first", d, indefinite, "second-indefinite");
+    FAIL() << "an indefinite matrix was accepted";
+  } catch (const GeoLatticeError& e) {
+    EXPECT_NE(std::string(e.what()).find("second-indefinite"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(d.factorized());
+  try {
+    factorizeTogether(c, indefinite, "first-indefinite", d, A, "second");
+    FAIL() << "an indefinite matrix was accepted";
+  } catch (const GeoLatticeError& e) {
+    EXPECT_NE(std::string(e.what()).find("first-indefinite"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(c.factorized());
+  EXPECT_TRUE(d.factorized());
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, SparseCholeskyBackends,
                          ::testing::Values(CholeskyBackend::Cholmod, CholeskyBackend::EigenLDLT),
                          [](const ::testing::TestParamInfo<CholeskyBackend>& info) {
