@@ -193,10 +193,13 @@ GeodesicDistanceFields::GeodesicDistanceFields(TetMesh mesh, const GeodesicField
   std::future<void> topologyDone = std::async(
       std::launch::async, [this] { topology_ = std::make_unique<TetMeshTopology>(mesh_); });
   componentCount_ = vertexComponents(mesh_, component_);
+  // The pinned vertex of a component is its lowest one: a base vertex in the default source
+  // selection, so that the Dirichlet γ can reuse the pinned factor (prepareDirichlet).
   pinned_.assign(componentCount_, -1);
   for (size_t v = 0; v < component_.size(); ++v) {
-    if (pinned_[component_[v]] < 0) {
-      pinned_[component_[v]] = static_cast<int>(v);
+    int& p = pinned_[component_[v]];
+    if (p < 0 || mesh_.points[v].z() < mesh_.points[p].z()) {
+      p = static_cast<int>(v);
     }
   }
   heatTime_ = options_.timeFactor * ops_.meanEdgeLength * ops_.meanEdgeLength;
@@ -256,6 +259,81 @@ void GeodesicDistanceFields::startComponentsAtZero(Eigen::VectorXd& f) const {
   }
 }
 
+void GeodesicDistanceFields::prepareDirichlet(const std::vector<int>& sources,
+                                              const std::vector<char>& isSource,
+                                              GeodesicFieldTimings& timings) {
+  auto start = Clock::now();
+  DirichletCorrection& c = dirichletCorrection_;
+  auto clear = [&c] {  // (the LLT keeps its last factor, unused while inactive)
+    c.active = false;
+    c.constrained.clear();
+    c.Z.resize(0, 0);
+  };
+  clear();
+  // K_D (source rows and columns identity) differs from the pinned K_P only in the rows and
+  // columns of the m sources that are not pinned, if every pinned vertex is a source. Then
+  // K_D x = b is K_P x + E λ = b with E^T x = 0 (E: those sources' identity columns; λ their
+  // reactions): x = y - Z λ with y = K_P^-1 b, Z = K_P^-1 E and (E^T Z) λ = E^T y. That costs m
+  // solves with the pinned factor instead of a factorization: taken when m * (4 flops per factor
+  // non-zero) is below half the factorization's flops, and Z stays under kMaxCorrectionEntries.
+  constexpr double kMaxCorrectionEntries = 2e7;  // 160 MB of Z
+  const bool pinnedAreSources =
+      std::all_of(pinned_.begin(), pinned_.end(), [&](int p) { return isSource[p] != 0; });
+  if (pinnedAreSources) {
+    const std::vector<char> isPinned = indexMask(mesh_.points.size(), pinned_);
+    for (int s : sources) {
+      if (!isPinned[s]) {
+        c.constrained.push_back(s);
+      }
+    }
+  }
+  const double n = static_cast<double>(mesh_.points.size());
+  const double m = static_cast<double>(c.constrained.size());
+  const double flops = pinnedLaplacian_.factorFlops();
+  if (pinnedAreSources && flops > 0 && 4.0 * m * pinnedLaplacian_.factorNonZeros() < 0.5 * flops &&
+      n * m <= kMaxCorrectionEntries) {
+    const Eigen::Index mi = static_cast<Eigen::Index>(c.constrained.size());
+    Eigen::MatrixXd E = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), mi);
+    for (Eigen::Index k = 0; k < mi; ++k) {
+      E(c.constrained[k], k) = 1.0;
+    }
+    c.Z = pinnedLaplacian_.solveColumns(E);
+    Eigen::MatrixXd capacitance(mi, mi);
+    for (Eigen::Index i = 0; i < mi; ++i) {
+      capacitance.row(i) = c.Z.row(c.constrained[i]);
+    }
+    c.capacitance.compute(0.5 * (capacitance + capacitance.transpose()));
+    if (c.capacitance.info() == Eigen::Success) {
+      c.active = true;
+      timings.factorization += secondsSince(start);
+      return;
+    }
+    clear();  // not positive definite to rounding: factor K_D instead
+  }
+  SparseMatrix K = lowerWithDiagonal(ops_.stiffness);
+  fixRows(K, isSource);
+  timings.assembly += secondsSince(start);
+  start = Clock::now();
+  dirichletLaplacian_.factorize(K, "Dirichlet Laplacian");  // the heat matrix's ordering
+  timings.factorization += secondsSince(start);
+}
+
+Eigen::VectorXd GeodesicDistanceFields::solveDirichlet(const Eigen::VectorXd& b) const {
+  const DirichletCorrection& c = dirichletCorrection_;
+  if (!c.active) {
+    return dirichletLaplacian_.solve(b);
+  }
+  Eigen::VectorXd x = pinnedLaplacian_.solve(b);  // x_p = b_p = 0 on the pinned sources
+  if (!c.constrained.empty()) {
+    Eigen::VectorXd yConstrained(static_cast<Eigen::Index>(c.constrained.size()));
+    for (size_t i = 0; i < c.constrained.size(); ++i) {
+      yConstrained[static_cast<Eigen::Index>(i)] = x[c.constrained[i]];
+    }
+    x -= c.Z * c.capacitance.solve(yConstrained);
+  }
+  return x;
+}
+
 GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) {
   const size_t nv = mesh_.points.size();
   const int nt = static_cast<int>(mesh_.tets.size());
@@ -287,21 +365,14 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
   GeodesicFields out;
   out.timings = setupTimings_;
 
-  // Dirichlet Laplacian for γ: factor once per source set (the ordering is the heat matrix's).
+  // Dirichlet Laplacian for γ: set up once per source set.
   const std::vector<char> isSource = indexMask(nv, sources);
-  if (options_.dirichletGamma &&
-      (sources != dirichletSources_ || !dirichletLaplacian_.factorized())) {
-    auto start = Clock::now();
-    SparseMatrix K = lowerWithDiagonal(ops_.stiffness);
-    fixRows(K, isSource);
-    const double t0 = secondsSince(start);
-    start = Clock::now();
-    dirichletSources_.clear();
-    dirichletLaplacian_.factorize(K, "Dirichlet Laplacian");
+  if (options_.dirichletGamma && sources != dirichletSources_) {
+    dirichletSources_.clear();  // stays clear if the set-up throws
+    prepareDirichlet(sources, isSource, out.timings);
     dirichletSources_ = sources;
-    out.timings.assembly += t0;
-    out.timings.factorization += secondsSince(start);
   }
+  out.dirichletFromPinned = options_.dirichletGamma && dirichletCorrection_.active;
   progress.report(0.4);
 
   const auto start = Clock::now();
@@ -340,9 +411,9 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
       for (int s : sources) {
         b[s] = 0;
       }
-      out.gamma = dirichletLaplacian_.solve(b);
+      out.gamma = solveDirichlet(b);
       for (int s : sources) {
-        out.gamma[s] = 0;  // exact already (decoupled identity rows); stated for the reader
+        out.gamma[s] = 0;  // exact already up to rounding; stated for the reader
       }
     } else {
       for (int p : pinned_) {

@@ -15,6 +15,8 @@
 #include "gdf/TetLaplacian.h"
 #include "mesh/TetMesh.h"
 
+#include <Eigen/Cholesky>
+
 #include <functional>
 #include <memory>
 #include <vector>
@@ -72,6 +74,9 @@ struct GeodesicFields {
   std::vector<Vec3> betaDirection;   ///< #T unit g_β (Eq. 3)
   int referenceFallbackTets = 0;     ///< tets where r was nearly parallel to g_γ (see options)
   int zeroHeatGradientTets = 0;      ///< tets where ∇u vanished (g_γ taken from neighbours)
+  /// How the Dirichlet γ was solved: true, with the pinned Laplacian's factor and a small dense
+  /// correction for the other sources; false, with a factorization of its own (or not Dirichlet).
+  bool dirichletFromPinned = false;
   /// Deviation from 90° (degrees) between the solved ∇α and ∇γ, and ∇β and ∇γ, over all tets:
   /// {median αγ, 95th percentile αγ, median βγ, 95th percentile βγ}.
   std::array<double, 4> orthogonalityDeviationDeg{};
@@ -106,6 +111,12 @@ public:
 private:
   /// Shifts f so that its minimum in each connected component is 0.
   void startComponentsAtZero(Eigen::VectorXd& f) const;
+  /// Makes the Dirichlet Laplacian of a new source set solvable: as a correction of the pinned
+  /// Laplacian's factor when that is cheaper, else by factoring it.
+  void prepareDirichlet(const std::vector<int>& sources, const std::vector<char>& isSource,
+                        GeodesicFieldTimings& timings);
+  /// K γ = b with γ = 0 on the sources (b is zero there already).
+  Eigen::VectorXd solveDirichlet(const Eigen::VectorXd& b) const;
 
   TetMesh mesh_;
   GeodesicFieldOptions options_;
@@ -118,7 +129,16 @@ private:
   SparseCholesky heat_;
   SparseCholesky pinnedLaplacian_;
   SparseCholesky dirichletLaplacian_;
-  std::vector<int> dirichletSources_;  ///< source set the Dirichlet factorization belongs to
+  std::vector<int> dirichletSources_;  ///< source set the Dirichlet set-up belongs to
+  /// The Dirichlet Laplacian as a correction of the pinned one (used when `constrained` is set):
+  /// the sources that are not pinned, Z = K_pinned^-1 E (E: their identity columns) and the
+  /// Cholesky factor of E^T Z (the capacitance matrix).
+  struct DirichletCorrection {
+    bool active = false;
+    std::vector<int> constrained;
+    Eigen::MatrixXd Z;
+    Eigen::LLT<Eigen::MatrixXd> capacitance;
+  } dirichletCorrection_;
   GeodesicFieldTimings setupTimings_;
 };
 

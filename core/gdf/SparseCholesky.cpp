@@ -266,6 +266,14 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& A, const char* w
   impl_->analysis = std::move(analysis);
 }
 
+double SparseCholesky::factorFlops() const {
+  return impl_->analysis ? impl_->analysis->common.fl : 0.0;
+}
+
+double SparseCholesky::factorNonZeros() const {
+  return impl_->analysis ? impl_->analysis->common.lnz : 0.0;
+}
+
 bool SparseCholesky::hasAnalysis() const {
   return impl_->analysis != nullptr;
 }

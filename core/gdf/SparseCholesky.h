@@ -43,6 +43,10 @@ public:
   void shareAnalysis(const SparseCholesky& other);
   /// True if a symbolic analysis is held (CHOLMOD only).
   bool hasAnalysis() const;
+  /// CHOLMOD's estimates from the symbolic analysis: floating-point operations of a numeric
+  /// factorization and non-zeros of the factor (0 without an analysis, and for Eigen).
+  double factorFlops() const;
+  double factorNonZeros() const;
   /// Computes and keeps the symbolic analysis of A's pattern (CHOLMOD; nothing for Eigen) unless
   /// it is held already, so that other solvers can shareAnalysis() before factorizing.
   void analyze(const Eigen::SparseMatrix<double>& A, const char* what);

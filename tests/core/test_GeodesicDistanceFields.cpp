@@ -8,6 +8,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 
 using namespace geolattice;
@@ -204,6 +206,38 @@ TEST(GeodesicDistanceFields, BackendsAgree) {
   EXPECT_LT((a.gamma - b.gamma).lpNorm<Eigen::Infinity>(), 1e-8);
   EXPECT_LT((a.alpha - b.alpha).lpNorm<Eigen::Infinity>(), 1e-8);
   EXPECT_LT((a.beta - b.beta).lpNorm<Eigen::Infinity>(), 1e-8);
+}
+
+TEST(GeodesicDistanceFields, DirichletGammaFromThePinnedFactorMatchesItsOwnFactorization) {
+  // A few sources that include the lowest vertex (the pinned one): γ is solved with the pinned
+  // Laplacian's factor and a 3 x 3 capacitance matrix instead of a factorization of its own.
+  const TetMesh mesh = boxTetMesh(Vec3(10, 12, 20), 6, 6, 10);
+  std::vector<int> sources = sourcesNearLowestZ(mesh, 1e-6);
+  std::sort(sources.begin(), sources.end(), [&](int a, int b) {
+    return mesh.points[a].z() < mesh.points[b].z() ||
+           (mesh.points[a].z() == mesh.points[b].z() && a < b);
+  });
+  sources.resize(4);
+  GeodesicDistanceFields solver(mesh);
+  const GeodesicFields corrected = solver.solve(sources);
+  ASSERT_TRUE(corrected.dirichletFromPinned);
+  GeodesicFieldOptions eigen;
+  eigen.backend = CholeskyBackend::EigenLDLT;
+  const GeodesicFields factored = computeGeodesicDistanceFields(mesh, sources, eigen);
+  EXPECT_FALSE(factored.dirichletFromPinned);
+  EXPECT_LT((corrected.gamma - factored.gamma).lpNorm<Eigen::Infinity>(), 1e-9);
+  EXPECT_LT((corrected.alpha - factored.alpha).lpNorm<Eigen::Infinity>(), 1e-9);
+  for (int s : sources) {
+    EXPECT_EQ(corrected.gamma[s], 0.0);
+  }
+  // Sources without the lowest vertex: the Dirichlet Laplacian is factored, same answer.
+  std::vector<int> others = sourcesNearLowestZ(mesh, 1e-6);
+  others.erase(std::find(others.begin(), others.end(), sources.front()));
+  const GeodesicFields ownFactor = solver.solve(others);
+  EXPECT_FALSE(ownFactor.dirichletFromPinned);
+  EXPECT_LT((ownFactor.gamma - computeGeodesicDistanceFields(mesh, others, eigen).gamma)
+                .lpNorm<Eigen::Infinity>(),
+            1e-9);
 }
 
 TEST(GeodesicDistanceFields, SolverIsReusedForNewSources) {
