@@ -32,6 +32,14 @@ constexpr double kSimplificationShare = 0.7;
 // length (0.4 overshot the count by about 2x, costing two or three more TetGen runs); 0.55
 // (above every measured value) gives the smallest plausible count for the size guard.
 constexpr double kGuessMeanTetVolumeOverBound = 0.21;
+// Finer meshes hold a smaller share of the small tets the surface's own triangles force, so the
+// ratio grows with the count: measured 0.26 (knight, 139k tets), 0.32 (spot, 475k), 0.35-0.39
+// (bunny, 596k-897k), all at 100 mm, where 0.21 made the first run for a 1M-tet target give
+// only 0.45-0.6 of it (and a second, larger run). Above kGuessCalibrationTets the first guess
+// takes ratio = 0.21 * (N / 75k)^kGuessRatioExponent (0.22-0.34 fits those three parts; the low
+// end is taken). At and below 75k (the default target) the guess is as before.
+constexpr double kGuessCalibrationTets = 75000.0;
+constexpr double kGuessRatioExponent = 0.22;
 // log(count) / log(edge) near the target, for the first correction: -3 for a volume-filling
 // mesh, measured -0.5 to -3.2 (median -1.6) on the parts above, flatter where the surface's own
 // triangles drive the refinement. A first run with too many tets is refined by the surface
@@ -200,8 +208,10 @@ double automaticEdgeLength(double enclosedVolume, int targetTets) {
                           std::to_string(targetTets));
   }
   // N = V / (k * L^3 / (6 sqrt 2))  =>  L = cbrt(6 sqrt 2 * V / (k * N)).
-  return std::cbrt(6.0 * std::sqrt(2.0) * enclosedVolume /
-                   (kGuessMeanTetVolumeOverBound * targetTets));
+  const double k =
+      kGuessMeanTetVolumeOverBound *
+      std::pow(std::max(1.0, targetTets / kGuessCalibrationTets), kGuessRatioExponent);
+  return std::cbrt(6.0 * std::sqrt(2.0) * enclosedVolume / (k * targetTets));
 }
 
 void TetrahedralizeOptions::validate() const {

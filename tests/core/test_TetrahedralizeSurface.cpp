@@ -124,9 +124,14 @@ TEST(TetrahedralizeSurface, AVolumeDrivenMissIsCorrectedInOneRun) {
   EXPECT_LE(r.tetCount, 93750);
 }
 
-TEST(TetrahedralizeSurface, AutomaticEdgeLengthOnTheBunnyAt100mm) {
+namespace {
+
+/// The bundled bunny scaled so that its largest extent is 100 mm (empty if the file is missing).
+TriangleSurface bunnyAt100mm() {
   const std::string path = testModel("bunny.obj");
-  ASSERT_FALSE(path.empty()) << "bunny.obj not found in " << GEOLATTICE_TESTDATA;
+  if (path.empty()) {
+    return {};
+  }
   TriangleSurface bunny = readObj(path);
   Eigen::AlignedBox3d box;
   for (const Vec3& p : bunny.points) {
@@ -136,6 +141,14 @@ TEST(TetrahedralizeSurface, AutomaticEdgeLengthOnTheBunnyAt100mm) {
   for (Vec3& p : bunny.points) {
     p *= scale;
   }
+  return bunny;
+}
+
+}  // namespace
+
+TEST(TetrahedralizeSurface, AutomaticEdgeLengthOnTheBunnyAt100mm) {
+  const TriangleSurface bunny = bunnyAt100mm();
+  ASSERT_FALSE(bunny.points.empty()) << "bunny.obj not found in " << GEOLATTICE_TESTDATA;
   const double enclosed = checkSurface(bunny).signedVolume;
   const TetrahedralizeResult r = tetrahedralizeSurface(bunny);
   std::printf(
@@ -145,6 +158,21 @@ TEST(TetrahedralizeSurface, AutomaticEdgeLengthOnTheBunnyAt100mm) {
   EXPECT_LE(r.tetCount, 100000);
   EXPECT_NEAR(r.meshVolume, enclosed, 1e-6 * enclosed);
   EXPECT_TRUE(checkTetMesh(r.mesh).isValid());
+}
+
+TEST(TetrahedralizeSurface, ALargeTargetIsReachedByTheFirstRun) {
+  // Above 75k tets the first guess assumes larger tets (the surface's small ones are a smaller
+  // share): 300k on the 100 mm bunny in one TetGen run (the 75k ratio gave ~236k and a second).
+  const TriangleSurface bunny = bunnyAt100mm();
+  ASSERT_FALSE(bunny.points.empty()) << "bunny.obj not found in " << GEOLATTICE_TESTDATA;
+  TetrahedralizeOptions o;
+  o.autoTargetTets = 300000;
+  const TetrahedralizeResult r = tetrahedralizeSurface(bunny, o);
+  std::printf("[ bunny 100 mm, 300k ] edge %.3f mm, %d tets, %d TetGen runs, %.2f s\n",
+              r.targetEdgeLength, r.tetCount, r.attempts, r.seconds);
+  EXPECT_EQ(r.attempts, 1);
+  EXPECT_GE(r.tetCount, 240000);
+  EXPECT_LE(r.tetCount, 375000);
 }
 
 TEST(TetrahedralizeSurface, AutomaticTargetTetCountIsHonoured) {
