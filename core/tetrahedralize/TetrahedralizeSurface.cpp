@@ -208,9 +208,8 @@ double automaticEdgeLength(double enclosedVolume, int targetTets) {
                           std::to_string(targetTets));
   }
   // N = V / (k * L^3 / (6 sqrt 2))  =>  L = cbrt(6 sqrt 2 * V / (k * N)).
-  const double k =
-      kGuessMeanTetVolumeOverBound *
-      std::pow(std::max(1.0, targetTets / kGuessCalibrationTets), kGuessRatioExponent);
+  const double k = kGuessMeanTetVolumeOverBound *
+                   std::pow(std::max(1.0, targetTets / kGuessCalibrationTets), kGuessRatioExponent);
   return std::cbrt(6.0 * std::sqrt(2.0) * enclosedVolume / (k * targetTets));
 }
 
