@@ -43,32 +43,45 @@ Vec3 linearGradient(const TetMesh& mesh, const std::array<int, 4>& t, const Eige
   return edges.partialPivLu().solve(df);
 }
 
-/// Unique edges of the mesh (a < b) and, per tet, the id of each of its six local edges.
+/// Unique edges of the mesh (a < b), in (a, b) order, and, per tet, the id of each of its six
+/// local edges. A counting sort on a, then a short sort of each vertex's list on b: linear in
+/// the tets (a full sort of the 6 #T edge records took 1.1 s of the 1M-tet slicing).
 void uniqueEdges(const TetMesh& mesh, std::vector<std::array<int, 2>>& edges,
                  std::vector<std::array<int, 6>>& tetEdges) {
   struct Rec {
-    int a, b, slot;
+    int b, slot;
   };
-  std::vector<Rec> recs;
-  recs.reserve(6 * mesh.tets.size());
-  for (size_t t = 0; t < mesh.tets.size(); ++t) {
-    for (int k = 0; k < 6; ++k) {
-      int a = mesh.tets[t][kTetEdges[k][0]], b = mesh.tets[t][kTetEdges[k][1]];
-      if (a > b) {
-        std::swap(a, b);
-      }
-      recs.push_back({a, b, static_cast<int>(6 * t + k)});
+  const size_t nv = mesh.points.size();
+  std::vector<int> start(nv + 1, 0);
+  for (const auto& tet : mesh.tets) {
+    for (const auto& e : kTetEdges) {
+      ++start[std::min(tet[e[0]], tet[e[1]]) + 1];
     }
   }
-  std::sort(recs.begin(), recs.end(),
-            [](const Rec& x, const Rec& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+  for (size_t v = 0; v < nv; ++v) {
+    start[v + 1] += start[v];
+  }
+  std::vector<Rec> recs(6 * mesh.tets.size());
+  {
+    std::vector<int> cursor(start.begin(), start.end() - 1);
+    for (size_t t = 0; t < mesh.tets.size(); ++t) {
+      for (int k = 0; k < 6; ++k) {
+        const int a = mesh.tets[t][kTetEdges[k][0]], b = mesh.tets[t][kTetEdges[k][1]];
+        recs[cursor[std::min(a, b)]++] = {std::max(a, b), static_cast<int>(6 * t + k)};
+      }
+    }
+  }
   tetEdges.resize(mesh.tets.size());
   edges.clear();
-  for (size_t i = 0; i < recs.size(); ++i) {
-    if (i == 0 || recs[i].a != recs[i - 1].a || recs[i].b != recs[i - 1].b) {
-      edges.push_back({recs[i].a, recs[i].b});
+  for (size_t a = 0; a < nv; ++a) {
+    const auto begin = recs.begin() + start[a], end = recs.begin() + start[a + 1];
+    std::sort(begin, end, [](const Rec& x, const Rec& y) { return x.b < y.b; });
+    for (auto it = begin; it != end; ++it) {
+      if (it == begin || it->b != (it - 1)->b) {
+        edges.push_back({static_cast<int>(a), it->b});
+      }
+      tetEdges[it->slot / 6][it->slot % 6] = static_cast<int>(edges.size() - 1);
     }
-    tetEdges[recs[i].slot / 6][recs[i].slot % 6] = static_cast<int>(edges.size() - 1);
   }
 }
 
