@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <numeric>
 
 namespace geolattice {
@@ -13,14 +14,19 @@ TimedPointTree::TimedPointTree(const std::vector<Vec>& points, const std::vector
   order_.resize(points.size());
   std::iota(order_.begin(), order_.end(), 0);
   if (!order_.empty()) {
-    nodes_.reserve(2 * points.size() / kLeafSize + 2);
-    build(0, static_cast<int>(order_.size()));
+    const int n = static_cast<int>(order_.size());
+    nodes_.resize(static_cast<size_t>(subtreeNodes(n)));
+    // Below this many points a second thread costs more than it saves.
+    constexpr int kParallelPoints = 50000;
+    build(0, 0, n, n >= kParallelPoints ? 1 : 0);
   }
 }
 
-int TimedPointTree::build(int begin, int end) {
-  const int id = static_cast<int>(nodes_.size());
-  nodes_.emplace_back();
+int TimedPointTree::subtreeNodes(int n) {
+  return n > kLeafSize ? 1 + subtreeNodes(n / 2) + subtreeNodes(n - n / 2) : 1;
+}
+
+void TimedPointTree::build(int id, int begin, int end, int parallelDepth) {
   Vec lo = Vec::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   int minTime = std::numeric_limits<int>::max();
   for (int i = begin; i < end; ++i) {
@@ -37,13 +43,23 @@ int TimedPointTree::build(int begin, int end) {
   if (end - begin > kLeafSize) {
     int axis = 0;
     (hi - lo).maxCoeff(&axis);
-    const int mid = (begin + end) / 2;
+    const int mid = begin + (end - begin) / 2;
     std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
                      [&](int a, int b) { return points_[a][axis] < points_[b][axis]; });
-    left = build(begin, mid);
-    right = build(mid, end);
+    left = id + 1;
+    right = left + subtreeNodes(mid - begin);
+    if (parallelDepth > 0) {  // disjoint ranges of order_ and nodes_
+      std::future<void> leftDone = std::async(
+          std::launch::async,
+          [this, left, begin, mid, parallelDepth] { build(left, begin, mid, parallelDepth - 1); });
+      build(right, mid, end, parallelDepth - 1);
+      leftDone.get();
+    } else {
+      build(left, begin, mid, 0);
+      build(right, mid, end, 0);
+    }
   }
-  Node& n = nodes_[id];
+  Node& n = nodes_[static_cast<size_t>(id)];
   n.centre = centre;
   n.radius = std::sqrt(r2);
   n.minTime = minTime;
@@ -51,7 +67,6 @@ int TimedPointTree::build(int begin, int end) {
   n.end = end;
   n.left = left;
   n.right = right;
-  return id;
 }
 
 }  // namespace geolattice
