@@ -276,7 +276,7 @@ void GeodesicDistanceFields::prepareDirichlet(const std::vector<int>& sources,
   // reactions): x = y - Z λ with y = K_P^-1 b, Z = K_P^-1 E and (E^T Z) λ = E^T y. That costs m
   // solves with the pinned factor instead of a factorization: taken when m * (4 flops per factor
   // non-zero) is below half the factorization's flops, and Z stays under kMaxCorrectionEntries.
-  constexpr double kMaxCorrectionEntries = 2e7;  // 160 MB of Z
+  constexpr double kMaxCorrectionEntries = 2e7;  // 160 MB of Z (solved 16 columns at a time)
   const bool pinnedAreSources =
       std::all_of(pinned_.begin(), pinned_.end(), [&](int p) { return isSource[p] != 0; });
   if (pinnedAreSources) {
@@ -293,11 +293,18 @@ void GeodesicDistanceFields::prepareDirichlet(const std::vector<int>& sources,
   if (pinnedAreSources && flops > 0 && 4.0 * m * pinnedLaplacian_.factorNonZeros() < 0.5 * flops &&
       n * m <= kMaxCorrectionEntries) {
     const Eigen::Index mi = static_cast<Eigen::Index>(c.constrained.size());
-    Eigen::MatrixXd E = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n), mi);
-    for (Eigen::Index k = 0; k < mi; ++k) {
-      E(c.constrained[k], k) = 1.0;
+    const Eigen::Index ni = static_cast<Eigen::Index>(n);
+    // Z in blocks of columns, so that E and the solver's result stay small beside Z.
+    constexpr Eigen::Index kBlock = 16;
+    c.Z.resize(ni, mi);
+    for (Eigen::Index k0 = 0; k0 < mi; k0 += kBlock) {
+      const Eigen::Index w = std::min(kBlock, mi - k0);
+      Eigen::MatrixXd E = Eigen::MatrixXd::Zero(ni, w);
+      for (Eigen::Index k = 0; k < w; ++k) {
+        E(c.constrained[k0 + k], k) = 1.0;
+      }
+      c.Z.middleCols(k0, w) = pinnedLaplacian_.solveColumns(E);
     }
-    c.Z = pinnedLaplacian_.solveColumns(E);
     Eigen::MatrixXd capacitance(mi, mi);
     for (Eigen::Index i = 0; i < mi; ++i) {
       capacitance.row(i) = c.Z.row(c.constrained[i]);

@@ -44,7 +44,7 @@ struct GeodesicFieldOptions {
   bool dirichletGamma = true;
   /// true (default): the heat matrix and the pinned Laplacian are factored at the same time on
   /// two threads (factorizeTogether). false: one after the other, for callers that already run
-  /// one solver per core (the orientation search).
+  /// one solver per core (the orientation search, under a SingleThreadedBlas guard).
   bool factorTogether = true;
   /// Called on the calling thread with the fraction done: the constructor reports its set-up
   /// (assembly, factorizations) from 0 to 1, each solve() its own work again from 0 to 1.
@@ -60,7 +60,8 @@ struct GeodesicFieldOptions {
 /// @brief Seconds spent in each part of the computation.
 struct GeodesicFieldTimings {
   double assembly = 0;       ///< operators, topology, matrices
-  double factorization = 0;  ///< heat, pinned Laplacian and (if not cached) Dirichlet Laplacian
+  double factorization = 0;  ///< heat, pinned and (if not cached) Dirichlet Laplacian, or the
+                             ///< Dirichlet correction's solves with the pinned factor
   double solve = 0;          ///< heat step, vector fields, three Poisson solves
 };
 
@@ -130,7 +131,7 @@ private:
   SparseCholesky pinnedLaplacian_;
   SparseCholesky dirichletLaplacian_;
   std::vector<int> dirichletSources_;  ///< source set the Dirichlet set-up belongs to
-  /// The Dirichlet Laplacian as a correction of the pinned one (used when `constrained` is set):
+  /// The Dirichlet Laplacian as a correction of the pinned one (used while `active`):
   /// the sources that are not pinned, Z = K_pinned^-1 E (E: their identity columns) and the
   /// Cholesky factor of E^T Z (the capacitance matrix).
   struct DirichletCorrection {

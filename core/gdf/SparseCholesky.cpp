@@ -82,65 +82,6 @@ std::string cholmodStatus(int status) {
   }
 }
 
-/// Holds OpenBLAS to one thread while at least one guard lives (process-wide, counted), and
-/// gives it back its thread count after the last. Two CHOLMOD factorizations side by side each
-/// calling a multi-threaded OpenBLAS oversubscribe the cores and its threads spin: measured
-/// 14.3 s for two 1M-tet factorizations instead of 6.5 s with one BLAS thread each. The BLAS is
-/// found among the libraries already loaded (Debian's libblas.so.3 alternative); another BLAS
-/// (reference BLAS, single-threaded) is left as it is.
-class SingleThreadedBlas {
-public:
-  SingleThreadedBlas() {
-    std::lock_guard<std::mutex> lock(mutex());
-    State& s = state();
-    if (s.holders++ == 0 && s.set && s.get) {
-      s.saved = s.get();
-      s.set(1);
-    }
-  }
-  ~SingleThreadedBlas() {
-    std::lock_guard<std::mutex> lock(mutex());
-    State& s = state();
-    if (--s.holders == 0 && s.set && s.get) {
-      s.set(s.saved);
-    }
-  }
-  SingleThreadedBlas(const SingleThreadedBlas&) = delete;
-  SingleThreadedBlas& operator=(const SingleThreadedBlas&) = delete;
-
-private:
-  struct State {
-    void (*set)(int) = nullptr;
-    int (*get)() = nullptr;
-    int holders = 0;
-    int saved = 1;
-  };
-  static std::mutex& mutex() {
-    static std::mutex m;
-    return m;
-  }
-  static State& state() {
-    static State s = [] {
-      State found;
-      for (const char* library : {"libblas.so.3", "libopenblas.so.0"}) {
-        void* handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD);
-        if (!handle) {
-          continue;
-        }
-        found.set = reinterpret_cast<void (*)(int)>(dlsym(handle, "openblas_set_num_threads"));
-        found.get = reinterpret_cast<int (*)()>(dlsym(handle, "openblas_get_num_threads"));
-        dlclose(handle);  // only drops the count taken by RTLD_NOLOAD: the library stays loaded
-        if (found.set && found.get) {
-          break;
-        }
-        found = State{};
-      }
-      return found;
-    }();
-    return s;
-  }
-};
-
 }  // namespace
 
 /// Ordering and symbolic factor of one sparsity pattern (immutable once built, shared).
@@ -245,6 +186,10 @@ void SparseCholesky::shareAnalysis(const SparseCholesky& other) {
 }
 
 void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& A, const char* what) {
+  if (A.rows() != A.cols()) {
+    throw GeoLatticeError(std::string("the ") + what + " matrix is not square (" +
+                          std::to_string(A.rows()) + " x " + std::to_string(A.cols()) + ")");
+  }
   if (backend_ != CholeskyBackend::Cholmod || (impl_->analysis && impl_->analysis->matches(A))) {
     return;
   }
@@ -315,6 +260,68 @@ Eigen::MatrixXd SparseCholesky::solveColumns(const Eigen::MatrixXd& B) const {
 
 bool SparseCholesky::factorized() const {
   return impl_->ok;
+}
+
+namespace {
+
+/// OpenBLAS's thread-count functions, if the loaded BLAS is OpenBLAS (Debian's libblas.so.3
+/// alternative or libopenblas.so.0); another BLAS (reference BLAS, single-threaded) has none.
+struct BlasThreads {
+  void (*set)(int) = nullptr;
+  int (*get)() = nullptr;
+  int holders = 0;  ///< live SingleThreadedBlas guards
+  int saved = 1;    ///< the count before the first of them
+};
+
+std::mutex& blasMutex() {
+  static std::mutex m;
+  return m;
+}
+
+BlasThreads& blasThreads() {
+  static BlasThreads s = [] {
+    BlasThreads found;
+    for (const char* library : {"libblas.so.3", "libopenblas.so.0"}) {
+      void* handle = dlopen(library, RTLD_LAZY | RTLD_NOLOAD);
+      if (!handle) {
+        continue;
+      }
+      found.set = reinterpret_cast<void (*)(int)>(dlsym(handle, "openblas_set_num_threads"));
+      found.get = reinterpret_cast<int (*)()>(dlsym(handle, "openblas_get_num_threads"));
+      dlclose(handle);  // only drops the count taken by RTLD_NOLOAD: the library stays loaded
+      if (found.set && found.get) {
+        break;
+      }
+      found = BlasThreads{};
+    }
+    return found;
+  }();
+  return s;
+}
+
+}  // namespace
+
+SingleThreadedBlas::SingleThreadedBlas() {
+  std::lock_guard<std::mutex> lock(blasMutex());
+  BlasThreads& s = blasThreads();
+  if (s.holders++ == 0 && s.set && s.get) {
+    s.saved = s.get();
+    s.set(1);
+  }
+}
+
+SingleThreadedBlas::~SingleThreadedBlas() {
+  std::lock_guard<std::mutex> lock(blasMutex());
+  BlasThreads& s = blasThreads();
+  if (--s.holders == 0 && s.set && s.get) {
+    s.set(s.saved);
+  }
+}
+
+int SingleThreadedBlas::currentThreads() {
+  std::lock_guard<std::mutex> lock(blasMutex());
+  const BlasThreads& s = blasThreads();
+  return s.get ? s.get() : 0;
 }
 
 void factorizeTogether(SparseCholesky& a, const Eigen::SparseMatrix<double>& A, const char* whatA,

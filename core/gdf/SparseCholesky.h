@@ -65,11 +65,30 @@ private:
   std::unique_ptr<Impl> impl_;
 };
 
+/// @class SingleThreadedBlas
+/// @brief Holds OpenBLAS to one thread while at least one guard lives (process-wide, counted),
+/// and gives it back its thread count after the last. For code that runs CHOLMOD factorizations
+/// or supernodal solves on several threads at once: each calling a multi-threaded OpenBLAS
+/// oversubscribes the cores and its threads spin (measured: two 1M-tet factorizations side by
+/// side 14.3 s, 6.5 s with one BLAS thread each). The setting is process-wide: BLAS calls of
+/// other threads made while a guard lives run on one thread too. Another BLAS (reference BLAS,
+/// single-threaded) is left as it is.
+class SingleThreadedBlas {
+public:
+  SingleThreadedBlas();
+  ~SingleThreadedBlas();
+  SingleThreadedBlas(const SingleThreadedBlas&) = delete;
+  SingleThreadedBlas& operator=(const SingleThreadedBlas&) = delete;
+  /// OpenBLAS's thread count now (0 if the BLAS is not OpenBLAS).
+  static int currentThreads();
+};
+
 /// Factors A into `a` and B into `b` at the same time, one on the calling thread and one on a
 /// second thread, with the BLAS held to one thread while both run (when it is OpenBLAS: its
 /// threads would spin against each other). B must have A's sparsity pattern (`b` then shares
 /// `a`'s analysis). On 2 cores two 1M-tet factorizations take 6.5 s this way instead of 8.9 s one
-/// after the other (docs/performance.md). Throws as factorize() does, after both have ended.
+/// after the other (docs/performance.md). Throws as factorize() does, after both have ended
+/// (A's error if both fail).
 void factorizeTogether(SparseCholesky& a, const Eigen::SparseMatrix<double>& A, const char* whatA,
                        SparseCholesky& b, const Eigen::SparseMatrix<double>& B, const char* whatB);
 

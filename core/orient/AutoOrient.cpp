@@ -374,7 +374,9 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
   result.evaluationTets = static_cast<int>(tets.mesh.tets.size());
   progress.report(0.1);
 
-  // Each worker its own set-up of the fields (the heat and Laplacian factorizations).
+  // Each worker its own set-up of the fields (the heat and Laplacian factorizations) and its
+  // own solves, side by side: the BLAS on one thread each until the search ends.
+  const SingleThreadedBlas oneBlasThreadPerWorker;
   const int workers = workerCount(o.threads, result.candidates.size());
   std::vector<std::unique_ptr<GeodesicDistanceFields>> gdf(workers);
   parallelFor(static_cast<size_t>(workers), workers, [&](size_t w, int) {

@@ -98,9 +98,9 @@ constexpr double kMaxEstimatedTets = 2.0e7;
 
 /// @brief First guess of the automatic target edge length (mm) for a solid of the given
 /// enclosed volume (mm^3): the edge L for which targetTets tets of mean volume
-/// 0.4 * L^3 / (6 sqrt 2) fill the volume (0.4 calibrated with q1.414: TetGen's mean tet
-/// volume is ~0.5 of the bound on a box and ~0.25 on the bunny). Throws on a non-positive
-/// volume or target.
+/// k * L^3 / (6 sqrt 2) fill the volume, k = 0.21 * max(1, targetTets / 75000)^0.22 (calibrated
+/// with q1.414 on the bundled parts: ~0.5 on a box, 0.17-0.24 near 75k tets, 0.26-0.39 at
+/// 139k-897k; see TetrahedralizeSurface.cpp). Throws on a non-positive volume or target.
 double automaticEdgeLength(double enclosedVolume, int targetTets = 75000);
 
 /// @brief Tetrahedralize the solid bounded by `surface` (closed, edge-manifold, consistently

@@ -238,6 +238,17 @@ TEST(GeodesicDistanceFields, DirichletGammaFromThePinnedFactorMatchesItsOwnFacto
   EXPECT_LT((ownFactor.gamma - computeGeodesicDistanceFields(mesh, others, eigen).gamma)
                 .lpNorm<Eigen::Infinity>(),
             1e-9);
+  // Back to the first set: the correction again, the same fields.
+  const GeodesicFields again = solver.solve(sources);
+  EXPECT_TRUE(again.dirichletFromPinned);
+  EXPECT_LT((again.gamma - corrected.gamma).lpNorm<Eigen::Infinity>(), 1e-12);
+  // The lowest vertex alone (no other source to correct for): the pinned solve itself.
+  const std::vector<int> lowest = {sources.front()};
+  const GeodesicFields alone = solver.solve(lowest);
+  EXPECT_TRUE(alone.dirichletFromPinned);
+  EXPECT_LT((alone.gamma - computeGeodesicDistanceFields(mesh, lowest, eigen).gamma)
+                .lpNorm<Eigen::Infinity>(),
+            1e-9);
 }
 
 TEST(GeodesicDistanceFields, SolverIsReusedForNewSources) {

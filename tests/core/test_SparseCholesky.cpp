@@ -143,6 +143,27 @@ TEST_P(SparseCholeskyBackends, FactorizedTogetherSolvesAsOneAfterTheOther) {
   EXPECT_TRUE(d.factorized());
 }
 
+TEST(SparseCholesky, TheBlasIsHeldToOneThreadWhileAGuardLivesAndGivenBackAfter) {
+  const int before = SingleThreadedBlas::currentThreads();
+  if (before == 0) {
+    GTEST_SKIP() << "the loaded BLAS is not OpenBLAS: nothing to hold";
+  }
+  {
+    const SingleThreadedBlas outer;
+    EXPECT_EQ(SingleThreadedBlas::currentThreads(), 1);
+    {
+      const SingleThreadedBlas inner;  // nested (another solver's): still one
+      EXPECT_EQ(SingleThreadedBlas::currentThreads(), 1);
+    }
+    EXPECT_EQ(SingleThreadedBlas::currentThreads(), 1);  // the outer guard still lives
+  }
+  EXPECT_EQ(SingleThreadedBlas::currentThreads(), before);
+  const SpMat A = gridMatrix(20, 0.1);
+  SparseCholesky a, b;
+  factorizeTogether(a, A, "A", b, A, "B");
+  EXPECT_EQ(SingleThreadedBlas::currentThreads(), before);
+}
+
 INSTANTIATE_TEST_SUITE_P(Backends, SparseCholeskyBackends,
                          ::testing::Values(CholeskyBackend::Cholmod, CholeskyBackend::EigenLDLT),
                          [](const ::testing::TestParamInfo<CholeskyBackend>& info) {

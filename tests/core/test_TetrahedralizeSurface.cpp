@@ -175,6 +175,18 @@ TEST(TetrahedralizeSurface, ALargeTargetIsReachedByTheFirstRun) {
   EXPECT_LE(r.tetCount, 375000);
 }
 
+TEST(TetrahedralizeSurface, FirstGuessFollowsTheVolumeLawUpTo75kAndAssumesLargerTetsAbove) {
+  const double volume = 123456.0;
+  const double at75k = automaticEdgeLength(volume, 75000);
+  // 0.21 of the bound at 75k tets: 75000 * 0.21 * L^3 / (6 sqrt 2) = V.
+  EXPECT_NEAR(75000 * 0.21 * std::pow(at75k, 3) / (6 * std::sqrt(2.0)), volume, 1e-6 * volume);
+  // Below 75k the same ratio: L ~ N^(-1/3).
+  EXPECT_NEAR(automaticEdgeLength(volume, 40000) / at75k, std::cbrt(75000.0 / 40000.0), 1e-12);
+  // Above, the ratio grows as (N / 75k)^0.22, so L ~ N^(-1/3) (N / 75k)^(-0.22 / 3).
+  EXPECT_NEAR(automaticEdgeLength(volume, 1000000) / at75k,
+              std::cbrt(75000.0 / 1e6) * std::pow(1e6 / 75000.0, -0.22 / 3), 1e-12);
+}
+
 TEST(TetrahedralizeSurface, AutomaticTargetTetCountIsHonoured) {
   TetrahedralizeOptions o;
   o.autoTargetTets = 5000;
