@@ -174,7 +174,9 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
   if (graph.subgraphs.empty()) {
     return;
   }
-  const SkeletonTree tree = buildSkeletonTree(mesh, fields.gamma, graph);
+  SkeletonTreeOptions skeleton;
+  skeleton.topology = &gdf.topology();  // the candidates share the mesh: its adjacency too
+  const SkeletonTree tree = buildSkeletonTree(mesh, fields.gamma, graph, skeleton);
   lap("skeleton");
 
   // The paper's A4 order and the independent verifier on it, with the nozzle and the plate.

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <sstream>
 
 namespace geolattice {
@@ -86,7 +87,16 @@ SkeletonTree buildSkeletonTree(const TetMesh& mesh, const Eigen::VectorXd& gamma
 
   // Pieces of face-adjacent tets touch iff the shared face meets the slab.
   UnionFind pieces(elementOffset[T]);
-  const TetMeshTopology topology(mesh);
+  std::unique_ptr<TetMeshTopology> ownTopology;
+  if (options.topology && static_cast<int>(options.topology->neighbors().size()) != T) {
+    throw GeoLatticeError("skeleton tree: the given tet adjacency is of another mesh (" +
+                          std::to_string(options.topology->neighbors().size()) +
+                          " tets, the mesh " + std::to_string(T) + ")");
+  }
+  if (!options.topology) {
+    ownTopology = std::make_unique<TetMeshTopology>(mesh);
+  }
+  const TetMeshTopology& topology = options.topology ? *options.topology : *ownTopology;
   progress.report(0.35);
   const ProgressReporter unionProgress = progress.part(0.35, 0.65);
   for (int t = 0; t < T; ++t) {

@@ -28,6 +28,8 @@
 
 namespace geolattice {
 
+class TetMeshTopology;
+
 /// @brief One node = one connected sub-graph G_{i,j}; node index == sub-graph id.
 struct SkeletonNode {
   int layer = 0;                 ///< lattice layer (0..L-1)
@@ -56,8 +58,11 @@ struct SkeletonAnchor {
   Vec3 point = Vec3::Zero();
 };
 
-/// @brief Optional callbacks of buildSkeletonTree() (the result does not depend on them).
+/// @brief Optional inputs of buildSkeletonTree() (the result does not depend on them).
 struct SkeletonTreeOptions {
+  /// The mesh's face adjacency, if the caller has it already (the orientation search builds one
+  /// skeleton per candidate on one mesh); else it is built here. Must be the mesh's own.
+  const TetMeshTopology* topology = nullptr;
   /// Called on the calling thread with the fraction done. Optional.
   std::function<void(double)> progress;
   /// Polled where progress is reported; true stops with a GeoLatticeError "skeleton tree

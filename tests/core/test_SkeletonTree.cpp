@@ -8,6 +8,7 @@
 #include "io/MeshReader.h"
 #include "lattice/LatticeInfill.h"
 #include "mesh/AnalyticShapes.h"
+#include "mesh/TetMeshTopology.h"
 #include "skeleton/SkeletonTree.h"
 #include "slicer/CurvedLayerSlicer.h"
 #include "tetrahedralize/TetrahedralizeSurface.h"
@@ -140,6 +141,31 @@ TEST(SkeletonTree, TorusOnItsSideSplitsAndMerges) {
       EXPECT_LT(tree.nodes[node.lower[0]].centroid.x() * tree.nodes[node.lower[1]].centroid.x(),
                 0.0);
     }
+  }
+}
+
+TEST(SkeletonTree, AGivenAdjacencyGivesTheSameTreeAndAnotherMeshsIsRefused) {
+  Part p = buildPart(readObj(kData + "/y_shape.obj"), 2.0, 0.5, 4.0);
+  const SkeletonTree own = buildSkeletonTree(p.mesh, p.fields.gamma, p.lattice);
+  const TetMeshTopology topology(p.mesh);
+  SkeletonTreeOptions given;
+  given.topology = &topology;
+  const SkeletonTree shared = buildSkeletonTree(p.mesh, p.fields.gamma, p.lattice, given);
+  EXPECT_EQ(shared.edges, own.edges);
+  ASSERT_EQ(shared.nodes.size(), own.nodes.size());
+  for (size_t k = 0; k < own.nodes.size(); ++k) {
+    EXPECT_EQ(shared.nodes[k].lower, own.nodes[k].lower) << k;
+  }
+  TetMesh smaller = p.mesh;
+  smaller.tets.pop_back();
+  const TetMeshTopology other(smaller);
+  given.topology = &other;
+  try {
+    buildSkeletonTree(p.mesh, p.fields.gamma, p.lattice, given);
+    FAIL() << "another mesh's adjacency was accepted";
+  } catch (const GeoLatticeError& e) {
+    EXPECT_NE(std::string(e.what()).find("adjacency is of another mesh"), std::string::npos)
+        << e.what();
   }
 }
 
