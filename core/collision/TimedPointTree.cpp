@@ -26,7 +26,7 @@ int TimedPointTree::subtreeNodes(int n) {
   return n > kLeafSize ? 1 + subtreeNodes(n / 2) + subtreeNodes(n - n / 2) : 1;
 }
 
-void TimedPointTree::build(int id, int begin, int end, int parallelDepth) {
+int TimedPointTree::build(int id, int begin, int end, int parallelDepth) {
   Vec lo = Vec::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
   int minTime = std::numeric_limits<int>::max();
   for (int i = begin; i < end; ++i) {
@@ -39,7 +39,7 @@ void TimedPointTree::build(int id, int begin, int end, int parallelDepth) {
   for (int i = begin; i < end; ++i) {
     r2 = std::max(r2, (points_[order_[i]] - centre).squaredNorm());
   }
-  int left = -1, right = -1;
+  int left = -1, right = -1, next = id + 1;
   if (end - begin > kLeafSize) {
     int axis = 0;
     (hi - lo).maxCoeff(&axis);
@@ -47,16 +47,17 @@ void TimedPointTree::build(int id, int begin, int end, int parallelDepth) {
     std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
                      [&](int a, int b) { return points_[a][axis] < points_[b][axis]; });
     left = id + 1;
-    right = left + subtreeNodes(mid - begin);
     if (parallelDepth > 0) {  // disjoint ranges of order_ and nodes_
-      std::future<void> leftDone = std::async(
-          std::launch::async,
-          [this, left, begin, mid, parallelDepth] { build(left, begin, mid, parallelDepth - 1); });
-      build(right, mid, end, parallelDepth - 1);
+      right = left + subtreeNodes(mid - begin);
+      std::future<int> leftDone =
+          std::async(std::launch::async, [this, left, begin, mid, parallelDepth] {
+            return build(left, begin, mid, parallelDepth - 1);
+          });
+      next = build(right, mid, end, parallelDepth - 1);
       leftDone.get();
     } else {
-      build(left, begin, mid, 0);
-      build(right, mid, end, 0);
+      right = build(left, begin, mid, 0);
+      next = build(right, mid, end, 0);
     }
   }
   Node& n = nodes_[static_cast<size_t>(id)];
@@ -67,6 +68,7 @@ void TimedPointTree::build(int id, int begin, int end, int parallelDepth) {
   n.end = end;
   n.left = left;
   n.right = right;
+  return next;
 }
 
 }  // namespace geolattice

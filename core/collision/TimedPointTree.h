@@ -82,9 +82,10 @@ private:
   static constexpr int kLeafSize = 8;
   /// Nodes of the subtree over n points (its shape depends on n only: median splits).
   static int subtreeNodes(int n);
-  /// Builds the subtree over order_[begin, end) into nodes_[id ...] in depth-first order; the
-  /// two halves of the top `parallelDepth` levels are built on two threads.
-  void build(int id, int begin, int end, int parallelDepth);
+  /// Builds the subtree over order_[begin, end) into nodes_[id ...] in depth-first order and
+  /// returns the id after it; the two halves of the top `parallelDepth` levels are built on two
+  /// threads (the right half's first id from subtreeNodes).
+  int build(int id, int begin, int end, int parallelDepth);
 
   const std::vector<Eigen::Vector3d>& points_;
   const std::vector<int>& time_;

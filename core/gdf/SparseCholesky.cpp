@@ -69,6 +69,17 @@ void factorizeWithOneOpenMPThread(cholmod_sparse* A, cholmod_factor* L, cholmod_
   cholmod_factorize(A, L, common);
 }
 
+/// A in compressed storage: A itself, or `copy` made from it.
+const Eigen::SparseMatrix<double>& compressed(const Eigen::SparseMatrix<double>& A,
+                                              Eigen::SparseMatrix<double>& copy) {
+  if (A.isCompressed()) {
+    return A;
+  }
+  copy = A;
+  copy.makeCompressed();
+  return copy;
+}
+
 std::string cholmodStatus(int status) {
   switch (status) {
     case CHOLMOD_OUT_OF_MEMORY:
@@ -135,11 +146,7 @@ void SparseCholesky::factorize(const Eigen::SparseMatrix<double>& Ain, const cha
                           std::to_string(Ain.rows()) + " x " + std::to_string(Ain.cols()) + ")");
   }
   Eigen::SparseMatrix<double> compressedCopy;
-  if (!Ain.isCompressed()) {
-    compressedCopy = Ain;
-    compressedCopy.makeCompressed();
-  }
-  const Eigen::SparseMatrix<double>& A = Ain.isCompressed() ? Ain : compressedCopy;
+  const Eigen::SparseMatrix<double>& A = compressed(Ain, compressedCopy);
   if (!Eigen::Map<const Eigen::VectorXd>(A.valuePtr(), A.nonZeros()).allFinite()) {
     throw GeoLatticeError(std::string("the ") + what + " matrix contains non-finite values");
   }
@@ -194,11 +201,7 @@ void SparseCholesky::analyze(const Eigen::SparseMatrix<double>& A, const char* w
     return;
   }
   Eigen::SparseMatrix<double> compressedCopy;
-  if (!A.isCompressed()) {
-    compressedCopy = A;
-    compressedCopy.makeCompressed();
-  }
-  const Eigen::SparseMatrix<double>& C = A.isCompressed() ? A : compressedCopy;
+  const Eigen::SparseMatrix<double>& C = compressed(A, compressedCopy);
   cholmod_sparse view = viewLower(C);
   auto analysis = std::make_shared<Analysis>();
   analysis->symbolic = cholmod_analyze(&view, &analysis->common);

@@ -91,6 +91,19 @@ TetMeshCheckReport checkTetMesh(const TetMesh& mesh) {
   return r;
 }
 
+void requireTetVertexIndicesInRange(const TetMesh& mesh) {
+  const int n = static_cast<int>(mesh.points.size());
+  for (size_t t = 0; t < mesh.tets.size(); ++t) {
+    for (int v : mesh.tets[t]) {
+      if (v < 0 || v >= n) {
+        throw GeoLatticeError("tet " + std::to_string(t) + " has vertex index " +
+                              std::to_string(v) + ", outside the mesh's " + std::to_string(n) +
+                              " vertices");
+      }
+    }
+  }
+}
+
 TetMeshCheckReport requireValidTetMesh(const TetMesh& mesh) {
   const TetMeshCheckReport r = checkTetMesh(mesh);
   if (r.tetCount == 0 || r.pointCount == 0) {

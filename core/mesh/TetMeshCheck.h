@@ -41,6 +41,10 @@ TetMeshCheckReport checkTetMesh(const TetMesh& mesh);
 /// faces, unused vertices. @return the report of the accepted mesh.
 TetMeshCheckReport requireValidTetMesh(const TetMesh& mesh);
 
+/// @brief Throw GeoLatticeError naming the first tet with a vertex index outside the points
+/// (cheap, O(T): for stages that index arrays by vertex before any other check).
+void requireTetVertexIndicesInRange(const TetMesh& mesh);
+
 /// @brief Documented repair for a mesh written with the opposite orientation convention: if
 /// EVERY tet has a negative signed volume, swap vertices 2 and 3 of every tet and return the
 /// number of tets flipped. Otherwise the mesh is left unchanged and 0 is returned (a mix of

@@ -1,6 +1,7 @@
 #include "slicer/CurvedLayerSlicer.h"
 
 #include "common/Error.h"
+#include "mesh/TetMeshCheck.h"
 #include "common/Progress.h"
 
 #include <Eigen/LU>
@@ -100,15 +101,7 @@ void validate(const TetMesh& mesh, const Eigen::VectorXd& gamma, const Eigen::Ve
   if (!gamma.allFinite()) {
     throw GeoLatticeError("γ has non-finite values");
   }
-  for (size_t t = 0; t < mesh.tets.size(); ++t) {
-    for (int v : mesh.tets[t]) {
-      if (v < 0 || v >= n) {
-        throw GeoLatticeError("tet " + std::to_string(t) + " has vertex index " +
-                              std::to_string(v) + ", outside the mesh's " + std::to_string(n) +
-                              " vertices");
-      }
-    }
-  }
+  requireTetVertexIndicesInRange(mesh);  // uniqueEdges writes by vertex index
   o.validate();
 }
 
