@@ -164,6 +164,13 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
     }
     throw StageError("program", csvError);
   }
+  try {
+    run.WaitForFiles();  // the inspection files (written meanwhile): a program only with all of them
+  } catch (...) {
+    programFiles.push_back(csvPath);
+    RunSession::RemoveFiles(programFiles);
+    throw;
+  }
   for (int k = 0; k < script->GetNumberOfFilesWritten(); ++k) {
     run.Files.add(script->GetFileWritten(k), scriptSeconds / script->GetNumberOfFilesWritten());
   }

@@ -22,6 +22,7 @@
 #include <vtkFieldData.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 #include <vtkWriter.h>
 
 #include <algorithm>
@@ -181,13 +182,16 @@ private:
     const int steps =
         replayStepCount(vtkDataSet::SafeDownCast(toolpath)->GetNumberOfPoints(), R.replaySteps);
     path["replay_steps"] = steps;
-    const auto replayStart = Clock::now();
-    for (const std::string& f :
-         writeToolpathReplay(vtkPolyData::SafeDownCast(P.ToolpathVerifier->GetOutputDataObject(1)),
-                             R.outDir, steps)) {
-      if (f.find('*') == std::string::npos) {
-        this->Files.add(f, secondsSince(replayStart));
-      }
+    // The replay's files on the writer thread too; its seconds are on toolpath.pvd.
+    const std::string pvd = (fs::path(R.outDir) / "toolpath.pvd").string();
+    vtkSmartPointer<vtkPolyData> replayed = vtkSmartPointer<vtkPolyData>::New();
+    replayed->DeepCopy(P.ToolpathVerifier->GetOutputDataObject(1));
+    this->Writer.post(steps > 0 ? pvd : "", [replayed, dir = R.outDir, steps] {
+      writeToolpathReplay(replayed, dir, steps);  // steps 0: removes an earlier replay
+    });
+    if (steps > 0) {
+      this->Files.add(pvd, 0.0);
+      this->Files.add((fs::path(R.outDir) / "toolpath" / "empty.vtp").string(), 0.0);
     }
     for (int k = 1; k <= steps; ++k) {
       char name[32];

@@ -9,7 +9,9 @@
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
 #include <vtkExecutive.h>
+#include <vtkDataObject.h>
 #include <vtkNew.h>
+#include <vtkSmartPointer.h>
 #include <vtkWriter.h>
 
 #include <fstream>
@@ -75,6 +77,7 @@ vtkDataObject* RunSession::Update(const char* stage, vtkAlgorithm* last,
   if (!R.quiet) {
     std::cout << "geolattice: " << stage << " ..." << std::flush;
   }
+  this->Writer.check();  // a file of an earlier stage could not be written: stop here
   ErrorCapture errors;
   for (vtkAlgorithm* a : watched) {
     errors.Watch(a);
@@ -144,15 +147,33 @@ void RunSession::GateLine(const std::string& line, bool warning) {
 }
 
 void RunSession::Write(vtkDataObject* data, const char* name) {
+  this->Writer.check();
   const std::string path = (fs::path(R.outDir) / name).string();
-  const auto start = Clock::now();
-  writeVtkXml(data, path);
-  this->Files.add(path, secondsSince(start));
+  vtkSmartPointer<vtkDataObject> copy = vtk::TakeSmartPointer(data->NewInstance());
+  copy->DeepCopy(data);        // the pipeline goes on (and may run the stage again) meanwhile
+  this->Files.add(path, 0.0);  // its place in the list now, its seconds when written
+  this->Writer.post(path, [copy, path] { writeVtkXml(copy, path); });
+}
+
+void RunSession::WaitForFiles() {
+  for (const auto& [path, seconds] : this->Writer.wait()) {
+    if (!path.empty()) {  // a job that writes no file of its own (e.g. removes a replay)
+      this->Files.add(path, seconds);
+    }
+  }
 }
 
 /// Moves the earlier run's leftovers to previous/, then writes report.json (with every file
 /// written and its seconds, and the exit status).
 void RunSession::Finish(int status) {
+  try {
+    this->WaitForFiles();
+  } catch (const std::exception& e) {
+    if (!this->Report.contains("failed")) {
+      throw;  // the run fails with it
+    }
+    std::cerr << "geolattice: " << e.what() << "\n";  // the run failed before: report that
+  }
   const std::vector<std::string> retired = this->Files.retireStaleOutputs();
   Json files = Json::array();
   for (const auto& [name, seconds] : this->Files.files()) {

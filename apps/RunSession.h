@@ -9,6 +9,7 @@
 #include "StageReports.h"
 
 #include "GLPrintPipeline.h"
+#include "common/BackgroundWriter.h"
 #include "common/Error.h"
 
 #include <chrono>
@@ -38,6 +39,7 @@ public:
   GLPrintPipeline P;
   RunOptions R;
   OutputRecord Files{""};
+  BackgroundWriter Writer;  ///< the VTK XML files, written while the next stages run
   Json Report = Json::object();
   double LastSeconds = 0;
 
@@ -55,8 +57,10 @@ public:
   static void RemoveFiles(const std::vector<std::string>& files);
   /// One stderr line of a gate: "stopped: ..." or "warning: ...".
   void GateLine(const std::string& line, bool warning = false);
-  /// Writes `data` as OUTDIR/name (VTK XML) and records it.
+  /// Writes a deep copy of `data` as OUTDIR/name (VTK XML) on the writer thread and records it.
   void Write(vtkDataObject* data, const char* name);
+  /// Waits for the writer thread; records each file's seconds. Throws a failed write's error.
+  void WaitForFiles();
   /// Runs write(OUTDIR/name) and records the file.
   template <class F>
   void WriteFile(const char* name, F&& write) {
@@ -65,8 +69,8 @@ public:
     write(path);
     this->Files.add(path, secondsSince(start));
   }
-  /// Moves the earlier run's leftovers to previous/, then writes report.json (every file written
-  /// and its seconds, and the exit status).
+  /// Waits for the files, moves the earlier run's leftovers to previous/, then writes report.json
+  /// (every file written and its seconds, and the exit status).
   void Finish(int status);
 };
 

@@ -63,13 +63,11 @@ vtkSmartPointer<vtkPolyData> toolpathPiece(vtkPolyData* whole, vtkIdType first, 
   const vtkIdType n = std::max<vtkIdType>(0, last - first + 1);
   vtkNew<vtkPoints> points;
   points->SetDataType(whole->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(n);
-  vtkPointData* inPd = whole->GetPointData();
   vtkPointData* outPd = piece->GetPointData();
-  outPd->CopyAllocate(inPd, n);
-  for (vtkIdType i = 0; i < n; ++i) {
-    points->SetPoint(i, whole->GetPoint(first + i));
-    outPd->CopyData(inPd, first + i, i);
+  outPd->CopyAllocate(whole->GetPointData(), n);
+  if (n > 0) {  // one range copy per array
+    points->GetData()->InsertTuples(0, n, first, whole->GetPoints()->GetData());
+    outPd->CopyData(whole->GetPointData(), 0, n, first);
   }
   piece->SetPoints(points);
   vtkNew<vtkCellArray> lines;
@@ -112,16 +110,14 @@ int replayStepCount(long long points, int maxSteps) {
   return static_cast<int>(std::max(1LL, std::min<long long>(maxSteps, points - 1)));
 }
 
-std::vector<std::string> writeToolpathReplay(vtkPolyData* toolpath, const std::string& outDir,
-                                             int steps) {
+void writeToolpathReplay(vtkPolyData* toolpath, const std::string& outDir, int steps) {
   const fs::path dir = fs::path(outDir) / "toolpath";
   const fs::path pvd = fs::path(outDir) / "toolpath.pvd";
-  std::vector<std::string> written;
   if (steps <= 0) {
     std::error_code ec;
     fs::remove(pvd, ec);
     removeStaleSteps(dir, 0);
-    return written;
+    return;
   }
   if (!toolpath || toolpath->GetNumberOfPoints() == 0 || !toolpath->GetLines()) {
     throw GeoLatticeError("toolpath: no points to replay");
@@ -156,10 +152,6 @@ std::vector<std::string> writeToolpathReplay(vtkPolyData* toolpath, const std::s
     return static_cast<bool>(out);
   });
   removeStaleSteps(dir, steps);
-  written.push_back((dir / "step_*.vtp").string());
-  written.push_back((dir / "empty.vtp").string());
-  written.push_back(pvd.string());
-  return written;
 }
 
 }  // namespace geolattice

@@ -31,9 +31,8 @@ int replayStepCount(long long points, int maxSteps);
 /// vtkGLToolpathReplay), OUTDIR/toolpath/empty.vtp and OUTDIR/toolpath.pvd (timestep k / steps:
 /// the pieces up to k, so ParaView shows at time t what GL Toolpath Replay shows). Every file is
 /// written atomically, the .pvd last; step files of an earlier run beyond the new count are
-/// removed, and with steps == 0 the .pvd and every step file. Returns the paths written (the
-/// steps as one pattern). Throws GeoLatticeError on a write failure or a toolpath without points.
-std::vector<std::string> writeToolpathReplay(vtkPolyData* toolpath, const std::string& outDir,
-                                             int steps);
+/// removed, and with steps == 0 the .pvd and every step file. Throws GeoLatticeError on a write
+/// failure or a toolpath without points.
+void writeToolpathReplay(vtkPolyData* toolpath, const std::string& outDir, int steps);
 
 }  // namespace geolattice
