@@ -3,13 +3,20 @@
 // edge length (~75k tets). The surface is first simplified to the target edge length
 // (core/mesh/SurfaceSimplification), then given to TetGen. Counters: the tets, the triangles
 // TetGen got, the largest input-vertex distance to the simplified surface (mm) and the time of
-// the simplification. Run: build/bin/bench_mesh (results in docs/performance.md).
+// the simplification. Also the tet adjacency (TetMeshTopology: built by the mesh check, the GDF,
+// the overhang and the skeleton stages) of a 1.04M-tet block with shuffled vertex ids, as a
+// TetGen mesh numbers them. Run: build/bin/bench_mesh (results in docs/performance.md).
 #include "mesh/AnalyticShapes.h"
+#include "mesh/TetMeshTopology.h"
 #include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
 #include <exception>
+#include <numeric>
+#include <random>
+#include <vector>
 
 using namespace geolattice;
 
@@ -35,6 +42,27 @@ void BM_MeshMillionTriangleTorus(benchmark::State& state) {
   state.counters["tetgen_runs"] = r.attempts;
 }
 BENCHMARK(BM_MeshMillionTriangleTorus)->Unit(benchmark::kSecond)->Iterations(1);
+
+void BM_TetMeshTopologyMillionTets(benchmark::State& state) {
+  TetMesh mesh = boxTetMesh(Vec3(100, 100, 100), 56, 56, 56 - 1);  // 1,034,880 tets
+  std::vector<int> relabel(mesh.points.size());
+  std::iota(relabel.begin(), relabel.end(), 0);
+  std::shuffle(relabel.begin(), relabel.end(), std::mt19937(1));
+  for (auto& tet : mesh.tets) {
+    for (int& v : tet) {
+      v = relabel[v];
+    }
+  }
+  size_t boundary = 0;
+  for (auto _ : state) {
+    const TetMeshTopology topology(mesh);
+    boundary = topology.boundaryFaces().size();
+    benchmark::DoNotOptimize(boundary);
+  }
+  state.counters["tets"] = static_cast<double>(mesh.tets.size());
+  state.counters["boundary_faces"] = static_cast<double>(boundary);
+}
+BENCHMARK(BM_TetMeshTopologyMillionTets)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -105,7 +105,10 @@ void requireTetVertexIndicesInRange(const TetMesh& mesh) {
 }
 
 TetMeshCheckReport requireValidTetMesh(const TetMesh& mesh) {
-  const TetMeshCheckReport r = checkTetMesh(mesh);
+  return requireValidTetMesh(checkTetMesh(mesh));
+}
+
+const TetMeshCheckReport& requireValidTetMesh(const TetMeshCheckReport& r) {
   if (r.tetCount == 0 || r.pointCount == 0) {
     throw GeoLatticeError("empty tet mesh: " + std::to_string(r.pointCount) + " points, " +
                           std::to_string(r.tetCount) + " tets");

@@ -32,7 +32,8 @@ struct TetMeshCheckReport {
   bool isValid() const;
 };
 
-/// @brief Count every defect listed in TetMeshCheckReport. Never throws; O(T log T).
+/// @brief Count every defect listed in TetMeshCheckReport. Never throws; O(T) (faces matched
+/// through TetMeshTopology).
 TetMeshCheckReport checkTetMesh(const TetMesh& mesh);
 
 /// @brief Throw GeoLatticeError naming the first problem, with its count and first offending
@@ -40,6 +41,8 @@ TetMeshCheckReport checkTetMesh(const TetMesh& mesh);
 /// out-of-range indices, non-finite points, inverted tets, zero-volume tets, non-manifold
 /// faces, unused vertices. @return the report of the accepted mesh.
 TetMeshCheckReport requireValidTetMesh(const TetMesh& mesh);
+/// The same on the report of checkTetMesh(mesh) already made (the mesh unchanged since).
+const TetMeshCheckReport& requireValidTetMesh(const TetMeshCheckReport& report);
 
 /// @brief Throw GeoLatticeError naming the first tet with a vertex index outside the points
 /// (cheap, O(T): for stages that index arrays by vertex before any other check).

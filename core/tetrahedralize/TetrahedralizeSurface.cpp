@@ -364,6 +364,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   // plane, where boundary facets are nearly coplanar) are dropped, a documented repair that
   // changes no volume; inverted or overlapping tets, or a run past its time limit, make the same
   // target run again with the edge length changed by kRetryEdgeFactors.
+  TetMeshCheckReport lastCheck;  // of the mesh the last run() returned
   auto run = [&](double edge) {
     std::string failure;
     std::vector<double> factors = {1.0};
@@ -387,6 +388,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       result.removedFlatTets += removeFlatTets(mesh);
       const TetMeshCheckReport check = checkTetMesh(mesh);
       if (check.invertedTets == 0 && check.nonManifoldFaces == 0 && check.tetCount > 0) {
+        lastCheck = check;
         return mesh;
       }
       failure = "TetGen's mesh at edge length " + formatSwitchNumber(edge * factor) + " mm has " +
@@ -399,6 +401,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   };
 
   TetMesh best = run(firstEdge);
+  TetMeshCheckReport bestCheck = lastCheck;
   double bestEdge = firstEdge;
   result.removedCavityRegions = removedRegions;
   result.attempts = 1;
@@ -444,6 +447,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       updateBracket(edge, count);
       if (miss(mesh.tets.size()) < miss(best.tets.size())) {
         best = std::move(mesh);
+        bestCheck = lastCheck;
         bestEdge = edge;
         result.removedCavityRegions = removedRegions;
       }
@@ -457,7 +461,8 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   // TetGen 1.5 writes positively oriented tets (measured); flip only if a build ever wrote
   // them all the other way, and let the validation below reject anything else.
   result.flippedTets = orientTetsPositively(result.mesh);
-  const TetMeshCheckReport check = requireValidTetMesh(result.mesh);
+  const TetMeshCheckReport check =
+      result.flippedTets == 0 ? requireValidTetMesh(bestCheck) : requireValidTetMesh(result.mesh);
 
   result.tetCount = check.tetCount;
   result.meshVolume = check.totalVolume;
