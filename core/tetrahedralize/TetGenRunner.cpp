@@ -48,7 +48,7 @@ struct ChildJob {
   int fd;
   int stderrFd;  // memfd that receives the child's stderr (assertion messages), or -1
   const TriangleSurface* surface;
-  const char* switches;
+  const char* switches;  // nullptr: only test the surface for intersecting facets
 };
 // Pipe to the parent, for the terminate handler. Written only in a child process after fork,
 // so concurrent calls in the parent never share it.
@@ -120,14 +120,12 @@ void* childTetgenThread(void* arg) {
   const ChildJob& job = *static_cast<const ChildJob*>(arg);
   tetgenio in;
   fillInput(*job.surface, in);
-  {
+  if (!job.switches) {
     // "d": report intersecting facets (output trifaces) without meshing.
     char detect[] = "pdQ";
     tetgenio found;
     tetrahedralize(detect, &in, &found);
-    if (found.numberoftrifaces > 0) {
-      childFinish(kSelfIntersecting, found.numberoftrifaces);
-    }
+    childFinish(found.numberoftrifaces > 0 ? kSelfIntersecting : kOk, found.numberoftrifaces);
   }
   std::vector<char> switches(job.switches, job.switches + std::strlen(job.switches) + 1);
   tetgenio out;
@@ -233,17 +231,24 @@ std::string tetgenErrorMessage(int code) {
   }
 }
 
-TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switches,
-                       const std::function<bool()>& shouldAbort) {
-  if (switches.find('p') == std::string::npos) {
-    throw GeoLatticeError("runTetGen: switches \"" + switches + "\" lack 'p' (mesh a surface)");
-  }
+namespace {
+
+/// A running TetGen child process: its pid, the read end of its pipe and its stderr memfd.
+struct Child {
+  pid_t pid = -1;
+  int fd = -1;
+  int stderrFd = -1;
+};
+
+/// Forks a child that meshes `surface` with `switches` (nullptr: tests it for intersecting
+/// facets only).
+Child startChild(const TriangleSurface& surface, const char* switches) {
   int fds[2];
   if (::pipe2(fds, O_CLOEXEC) != 0) {
     throw GeoLatticeError(std::string("cannot start TetGen: pipe failed: ") + std::strerror(errno));
   }
   const int stderrFd = ::memfd_create("geolattice-tetgen-stderr", MFD_CLOEXEC);  // -1 is tolerated
-  const ChildJob job{fds[1], stderrFd, &surface, switches.c_str()};
+  const ChildJob job{fds[1], stderrFd, &surface, switches};
   const pid_t pid = ::fork();
   if (pid < 0) {
     const int err = errno;
@@ -259,14 +264,30 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
     runChild(job);
   }
   ::close(fds[1]);
+  return {pid, fds[0], stderrFd};
+}
 
-  // Read everything the child sends, polling the abort callback.
+/// Kills a child that is no longer needed and reaps it.
+void killChild(Child& child) {
+  ::kill(child.pid, SIGKILL);
+  int status = 0;
+  while (::waitpid(child.pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  ::close(child.fd);
+  if (child.stderrFd >= 0) {
+    ::close(child.stderrFd);
+  }
+}
+
+/// Reads everything the child sends, polling the abort callback, reaps it and returns its
+/// message after the header's checks (throws the child's error as a GeoLatticeError).
+std::vector<char> finishChild(Child& child, const std::function<bool()>& shouldAbort, Header& h) {
   std::vector<char> data;
   bool aborted = false;
   std::string readError;
   char buffer[1 << 16];
   while (true) {
-    pollfd p{fds[0], POLLIN, 0};
+    pollfd p{child.fd, POLLIN, 0};
     const int ready = ::poll(&p, 1, 50);
     if (ready < 0 && errno != EINTR) {
       readError = std::string("poll failed: ") + std::strerror(errno);
@@ -279,7 +300,7 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
     if (ready <= 0) {
       continue;
     }
-    const ssize_t n = ::read(fds[0], buffer, sizeof(buffer));
+    const ssize_t n = ::read(child.fd, buffer, sizeof(buffer));
     if (n < 0) {
       if (errno == EINTR) {
         continue;
@@ -292,16 +313,16 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
     }
     data.insert(data.end(), buffer, buffer + n);
   }
-  ::close(fds[0]);
+  ::close(child.fd);
   if (aborted || !readError.empty()) {
-    ::kill(pid, SIGKILL);
+    ::kill(child.pid, SIGKILL);
   }
   int status = 0;
-  while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  while (::waitpid(child.pid, &status, 0) < 0 && errno == EINTR) {
   }
-  const std::string stderrLine = lastStderrLine(stderrFd);
-  if (stderrFd >= 0) {
-    ::close(stderrFd);
+  const std::string stderrLine = lastStderrLine(child.stderrFd);
+  if (child.stderrFd >= 0) {
+    ::close(child.stderrFd);
   }
   if (aborted) {
     throw GeoLatticeError("tetrahedralization aborted");
@@ -309,8 +330,6 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
   if (!readError.empty()) {
     throw GeoLatticeError("lost contact with the TetGen process: " + readError);
   }
-
-  Header h{};
   if (data.size() < sizeof(Header)) {
     if (WIFSIGNALED(status)) {
       throw GeoLatticeError(
@@ -335,6 +354,31 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
     default:
       throw GeoLatticeError("TetGen failed with an unexpected exception");
   }
+  return data;
+}
+
+}  // namespace
+
+TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switches,
+                       const std::function<bool()>& shouldAbort, IntersectionTest test) {
+  if (switches.find('p') == std::string::npos) {
+    throw GeoLatticeError("runTetGen: switches \"" + switches + "\" lack 'p' (mesh a surface)");
+  }
+  Child mesher = startChild(surface, switches.c_str());
+  if (test == IntersectionTest::Run) {
+    // The test in a second child beside the meshing one (on another core): its verdict comes
+    // first, as if it had run before the meshing, but costs no time of its own.
+    try {
+      Child tester = startChild(surface, nullptr);
+      Header verdict{};
+      finishChild(tester, shouldAbort, verdict);
+    } catch (...) {
+      killChild(mesher);
+      throw;
+    }
+  }
+  Header h{};
+  const std::vector<char> data = finishChild(mesher, shouldAbort, h);
   if (h.corners != 4 || h.pointCount < 0 || h.tetCount < 0) {
     throw GeoLatticeError("TetGen produced an unexpected mesh (" + std::to_string(h.corners) +
                           " corners per tet)");

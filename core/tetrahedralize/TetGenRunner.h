@@ -11,8 +11,9 @@
 /// terminate handler sends the code to the parent and exits. The child also silences TetGen's
 /// stdout, and the parent can kill it when the caller aborts.
 ///
-/// Data flow: surface -> fork -> child: TetGen "pdQ" (self-intersection test), then the meshing
-/// switches -> pipe (points, tets, region attributes) -> parent.
+/// Data flow: surface -> fork -> child: TetGen with the meshing switches -> pipe (points, tets,
+/// region attributes) -> parent; beside it (unless skipped) a second child runs TetGen "pdQ"
+/// (self-intersection test) and sends only its verdict.
 #include "mesh/TetMesh.h"
 
 #include <functional>
@@ -28,16 +29,23 @@ struct TetGenOutput {
   std::vector<int> regions;  ///< empty without "A"
 };
 
+/// Whether runTetGen tests the surface for intersecting facets (TetGen's "d" switch) first.
+enum class IntersectionTest {
+  Run,   ///< in a second child process beside the meshing one; its verdict comes first
+  Skip,  ///< the surface passed the test before (e.g. another edge length on the same surface)
+};
+
 /// @brief Mesh the PLC given by `surface` (one facet per triangle) with TetGen `switches`
-/// (e.g. "pq1.414a0.4AQ"; must contain "p"). Before meshing, the surface is tested for
-/// intersecting facets with TetGen's "d" switch.
+/// (e.g. "pq1.414a0.4AQ"; must contain "p"), the surface tested for intersecting facets unless
+/// `test` is Skip.
 /// @param shouldAbort polled about every 50 ms while TetGen runs; returning true kills it.
 /// @throws GeoLatticeError "self-intersecting surface: ..." when facets intersect, a message
 /// per TetGen error code (1 memory, 2 internal, 3 intersections, 4 tiny feature, 5 close
 /// facets, 10 input), "tetrahedralization aborted" on abort, or when the child process cannot
 /// be started or dies (signal named).
 TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switches,
-                       const std::function<bool()>& shouldAbort = {});
+                       const std::function<bool()>& shouldAbort = {},
+                       IntersectionTest test = IntersectionTest::Run);
 
 /// Message for a TetGen terminatetetgen() error code.
 std::string tetgenErrorMessage(int code);

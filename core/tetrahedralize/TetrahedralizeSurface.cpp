@@ -302,6 +302,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   // simplified for one edge length): each run gets a time limit far above its expected time,
   // and a run past it counts as failed.
   bool timedOut = false;
+  IntersectionTest intersectionTest = IntersectionTest::Run;
   auto runOnce = [&](double edge) {
     const double limit =
         kTetGenBaseSeconds + kTetGenSecondsPerTet * result.enclosedVolume /
@@ -318,7 +319,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     };
     TetGenOutput out;
     try {
-      out = runTetGen(surface, switchesFor(edge), abortOrTimeout);
+      out = runTetGen(surface, switchesFor(edge), abortOrTimeout, intersectionTest);
     } catch (const GeoLatticeError& e) {
       if (!result.simplified || (options.shouldAbort && options.shouldAbort())) {
         throw;
@@ -334,8 +335,10 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       result.simplified = false;
       result.enclosedVolume = std::abs(report.signedVolume);
       result.meshedTriangles = surface.triangles.size();
-      out = runTetGen(surface, switchesFor(edge), abortOrTimeout);
+      intersectionTest = IntersectionTest::Run;
+      out = runTetGen(surface, switchesFor(edge), abortOrTimeout, intersectionTest);
     }
+    intersectionTest = IntersectionTest::Skip;  // this surface passed: not again at other edges
     if (out.mesh.tets.empty()) {
       throw GeoLatticeError("TetGen produced no tetrahedra (switches " + switchesFor(edge) + ")");
     }

@@ -416,6 +416,24 @@ TEST(TetGenRunner, ReturnsRegionsWithSwitchA) {
   EXPECT_TRUE(runTetGen(boxSurface(Vec3(1, 1, 1), 10.0), "pQ").regions.empty());
 }
 
+TEST(TetGenRunner, TheIntersectionTestRunsBesideTheMeshingAndCanBeSkipped) {
+  const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 1.5);
+  const TriangleSurface crossing =
+      append(box, box, Eigen::Matrix3d::Identity(), Vec3(5.3, 5.1, 4.9), false);
+  // The test's verdict comes first, whatever the meshing child does meanwhile.
+  EXPECT_TRUE(contains(errorOf([&] { runTetGen(crossing, "pq1.414a2AQ"); }),
+                       "self-intersecting surface: TetGen found"));
+  // Skipped, TetGen meshes (or fails on) the crossing facets itself: never that verdict.
+  EXPECT_FALSE(
+      contains(errorOf([&] { runTetGen(crossing, "pq1.414a2AQ", {}, IntersectionTest::Skip); }),
+               "self-intersecting surface: TetGen found"));
+  // A clean surface gives the same mesh with and without the test.
+  const TetGenOutput tested = runTetGen(box, "pq1.414a2AQ");
+  const TetGenOutput skipped = runTetGen(box, "pq1.414a2AQ", {}, IntersectionTest::Skip);
+  EXPECT_EQ(tested.mesh.tets, skipped.mesh.tets);
+  EXPECT_EQ(tested.mesh.points.size(), skipped.mesh.points.size());
+}
+
 TEST(TetGenRunner, ErrorCodesHaveMessages) {
   EXPECT_EQ(tetgenErrorMessage(3), "self-intersecting surface: TetGen found intersecting facets");
   EXPECT_TRUE(contains(tetgenErrorMessage(1), "out of memory"));
