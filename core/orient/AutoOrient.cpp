@@ -41,54 +41,6 @@ double seconds(Clock::time_point t0) {
   return std::chrono::duration<double>(Clock::now() - t0).count();
 }
 
-/// Outward normals of the convex hull's facets, coplanar ones merged (within 2°), largest area
-/// first: a part lying on such a facet sits flat on the plate.
-std::vector<Vec3> hullFacetNormals(const TriangleSurface& surface, int count) {
-  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  using Mesh = CGAL::Surface_mesh<K::Point_3>;
-  std::vector<K::Point_3> points;
-  points.reserve(surface.points.size());
-  for (const Vec3& p : surface.points) {
-    points.emplace_back(p.x(), p.y(), p.z());
-  }
-  Mesh hull;
-  CGAL::convex_hull_3(points.begin(), points.end(), hull);
-  std::vector<std::pair<double, Vec3>> groups;  // (area, area-weighted normal)
-  for (auto f : hull.faces()) {
-    Vec3 v[3];
-    int k = 0;
-    for (auto vertex : CGAL::vertices_around_face(hull.halfedge(f), hull)) {
-      const K::Point_3& p = hull.point(vertex);
-      v[k++] = Vec3(p.x(), p.y(), p.z());
-    }
-    const Vec3 cross = (v[1] - v[0]).cross(v[2] - v[0]);
-    const double area = 0.5 * cross.norm();
-    if (!(area > 0)) {
-      continue;
-    }
-    const Vec3 n = cross.normalized();
-    bool merged = false;
-    for (auto& g : groups) {
-      if (g.second.normalized().dot(n) > std::cos(2 * kDeg)) {
-        g.first += area;
-        g.second += area * n;
-        merged = true;
-        break;
-      }
-    }
-    if (!merged) {
-      groups.emplace_back(area, area * n);
-    }
-  }
-  std::sort(groups.begin(), groups.end(),
-            [](const auto& a, const auto& b) { return a.first > b.first; });
-  std::vector<Vec3> normals;
-  for (size_t i = 0; i < groups.size() && static_cast<int>(normals.size()) < count; ++i) {
-    normals.push_back(groups[i].second.normalized());
-  }
-  return normals;
-}
-
 /// `count` unit directions spread evenly over the sphere (Fibonacci lattice).
 std::vector<Vec3> fibonacciSphere(int count) {
   std::vector<Vec3> out;
@@ -274,6 +226,72 @@ void OrientOptions::validate() const {
     return;
   }
   throw GeoLatticeError(m.str());
+}
+
+std::vector<Vec3> hullFacetNormals(const TriangleSurface& surface, int count) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using Mesh = CGAL::Surface_mesh<K::Point_3>;
+  std::vector<K::Point_3> points;
+  points.reserve(surface.points.size());
+  for (const Vec3& p : surface.points) {
+    points.emplace_back(p.x(), p.y(), p.z());
+  }
+  Mesh hull;
+  CGAL::convex_hull_3(points.begin(), points.end(), hull);
+  // The facets in an order of their own (by corners), not the hull's: the grouping below is
+  // greedy, and the hull's face order follows where the allocator put its nodes (measured: the
+  // same part gave another merged normal with malloc on huge pages).
+  struct Facet {
+    std::array<Vec3, 3> corners;  ///< rotated so the lexicographically smallest comes first
+    Vec3 cross;
+  };
+  auto less = [](const Vec3& a, const Vec3& b) {
+    return std::lexicographical_compare(a.data(), a.data() + 3, b.data(), b.data() + 3);
+  };
+  std::vector<Facet> facets;
+  for (auto f : hull.faces()) {
+    Facet facet;
+    int k = 0;
+    for (auto vertex : CGAL::vertices_around_face(hull.halfedge(f), hull)) {
+      const K::Point_3& p = hull.point(vertex);
+      facet.corners[k++] = Vec3(p.x(), p.y(), p.z());
+    }
+    auto& c = facet.corners;
+    std::rotate(c.begin(), std::min_element(c.begin(), c.end(), less), c.end());
+    facet.cross = (c[1] - c[0]).cross(c[2] - c[0]);
+    facets.push_back(facet);
+  }
+  std::sort(facets.begin(), facets.end(), [&](const Facet& a, const Facet& b) {
+    return std::lexicographical_compare(a.corners.begin(), a.corners.end(), b.corners.begin(),
+                                        b.corners.end(), less);
+  });
+  std::vector<std::pair<double, Vec3>> groups;  // (area, area-weighted normal)
+  for (const Facet& facet : facets) {
+    const double area = 0.5 * facet.cross.norm();
+    if (!(area > 0)) {
+      continue;
+    }
+    const Vec3 n = facet.cross.normalized();
+    bool merged = false;
+    for (auto& g : groups) {
+      if (g.second.normalized().dot(n) > std::cos(2 * kDeg)) {
+        g.first += area;
+        g.second += area * n;
+        merged = true;
+        break;
+      }
+    }
+    if (!merged) {
+      groups.emplace_back(area, area * n);
+    }
+  }
+  std::sort(groups.begin(), groups.end(),
+            [](const auto& a, const auto& b) { return a.first > b.first; });
+  std::vector<Vec3> normals;
+  for (size_t i = 0; i < groups.size() && static_cast<int>(normals.size()) < count; ++i) {
+    normals.push_back(groups[i].second.normalized());
+  }
+  return normals;
 }
 
 Eigen::Matrix3d rotationTakingDownToMinusZ(const Vec3& down) {

@@ -124,6 +124,12 @@ struct OrientResult {
   double seconds = 0;
 };
 
+/// Outward normals of the convex hull's facets of `surface`, coplanar ones (within 2°) merged,
+/// the `count` of largest area first: on such a facet the part sits flat on the plate. The
+/// result depends only on the hull's facets, not on their order in CGAL's hull (nor on the
+/// order of the surface's points).
+std::vector<Vec3> hullFacetNormals(const TriangleSurface& surface, int count);
+
 /// Rotation that turns `down` onto -z by the smallest angle.
 Eigen::Matrix3d rotationTakingDownToMinusZ(const Vec3& down);
 
