@@ -1,9 +1,12 @@
 // Toolpath planning (paper Section 3.2) on the bunny scaled to 100 mm, ~66k tets, 0.6 mm layers,
 // lattice width 6 mm (the paper's bunny: Fleury 77 s + thickness 36 s). Timed separately:
 // trimming + crossover-free Euler tours + layer thickness (the paper's steps), and the whole
-// planner (with support perimeters, rotation steps, air moves, extrusion).
+// planner (with support perimeters, rotation steps, air moves, extrusion). Also the point tree
+// of the axis clearance and the verifier (TimedPointTree) over 470k points along a helix, the
+// stations of a topopt-sized toolpath, built once per clearance round.
 // Run: build/bin/bench_toolpath
 #include "../tests/common/CoreStages.h"
+#include "collision/TimedPointTree.h"
 #include "lattice/LatticeInfill.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
@@ -15,7 +18,9 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <string>
+#include <vector>
 
 using namespace geolattice;
 
@@ -92,6 +97,23 @@ void BM_PlanToolpath(benchmark::State& state) {
   state.counters["inserted"] = p.subdivisionPoints;
 }
 BENCHMARK(BM_PlanToolpath)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+void BM_BuildTimedPointTree(benchmark::State& state) {
+  const int n = 470000;
+  std::vector<Vec3> points(n);
+  std::vector<int> time(n);
+  for (int i = 0; i < n; ++i) {  // 300 turns of a 40 mm helix, 0.3 mm apart along the path
+    const double a = 2 * M_PI * 300.0 * i / n;
+    points[i] = Vec3(40 * std::cos(a), 40 * std::sin(a), 120.0 * i / n);
+    time[i] = i;
+  }
+  for (auto _ : state) {
+    const TimedPointTree tree(points, time);
+    benchmark::DoNotOptimize(tree.pointAt(0));
+  }
+  state.counters["points"] = n;
+}
+BENCHMARK(BM_BuildTimedPointTree)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -1,6 +1,6 @@
 #pragma once
 /// @file BackgroundWriter.h
-/// @brief A queue of file writes run on a second thread (and by the caller while it waits).
+/// @brief A queue of file writes run in order on a second thread.
 #include <condition_variable>
 #include <deque>
 #include <exception>
@@ -13,13 +13,13 @@
 
 namespace geolattice {
 
-/// Writes files on a thread of its own, in the order posted, while the caller goes on: the CLI
-/// writes each stage's VTK file while the next stages compute, so on two cores the encoding of the
-/// files (LZ4 + base64, most of their time) overlaps the stages instead of adding to them. A job
-/// must own what it writes (e.g. a deep copy of a VTK output: VTK caches array ranges and bounds
-/// inside the arrays, so an array read by a writer and a filter at once is a data race). Once a
-/// job has failed no other one starts (one already running beside it, in wait(), finishes), and
-/// check() and wait() rethrow its error: the caller stops at the file that failed.
+/// Writes files on a thread of its own, one after another in the order posted, while the caller
+/// goes on: the CLI writes each stage's VTK file while the next stages compute, so on two cores
+/// the encoding of the files (LZ4 + base64, most of their time) overlaps the stages instead of
+/// adding to them. A job must own what it writes (e.g. a deep copy of a VTK output: VTK caches
+/// array ranges and bounds inside the arrays, so an array read by a writer and a filter at once
+/// is a data race). Once a job has failed the later ones are skipped, and check() and wait()
+/// rethrow its error: the files are written as far as they would have been in line, no further.
 class BackgroundWriter {
 public:
   BackgroundWriter() = default;
@@ -33,24 +33,20 @@ public:
   void post(std::string path, std::function<void()> write);
   /// Throws the error of a failed job, if any, without waiting.
   void check();
-  /// Waits for every posted job, running queued ones on the calling thread too (two files at a
-  /// time; never two of the same path); returns (path, seconds) of each one finished since the
-  /// last call. Throws the error of a failed job.
+  /// Waits for every posted job; returns (path, seconds) of each one finished since the last
+  /// call, in the order posted. Throws the error of a failed job.
   std::vector<std::pair<std::string, double>> wait();
 
 private:
+  void work();
   struct Job {
     std::string path;
     std::function<void()> write;
   };
-  /// Takes the next job and runs it unlocked; false when the front job's path is being written
-  /// (it waits for that) or the queue is empty.
-  bool runNext(std::unique_lock<std::mutex>& lock);
-  void work();
   std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<Job> queue_;
-  std::vector<std::string> running_;  ///< paths being written now
+  bool busy_ = false;  ///< a job is running
   std::vector<std::pair<std::string, double>> done_;
   std::exception_ptr error_;
   bool stop_ = false;

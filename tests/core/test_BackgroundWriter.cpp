@@ -1,5 +1,5 @@
-// BackgroundWriter: jobs run on a second thread and on the waiting caller, the same path in the
-// order posted, and a failed job stops the later ones and reaches the caller.
+// BackgroundWriter: jobs run on a second thread, one at a time in the order posted, and a failed
+// job stops the later ones and reaches the caller.
 #include "common/BackgroundWriter.h"
 #include "common/AtomicFile.h"
 
@@ -61,48 +61,50 @@ TEST(BackgroundWriter, WritesEveryFileOnceAndTheSamePathInTheOrderPosted) {
   EXPECT_TRUE(writer.wait().empty());  // each finished job is returned once
 }
 
-TEST(BackgroundWriter, TheCallerRunsJobsWhileItWaits) {
+TEST(BackgroundWriter, JobsRunOneAtATimeInTheOrderPostedOffTheCallersThread) {
   gl::BackgroundWriter writer;
   std::mutex mutex;
+  std::vector<int> ran;
   std::vector<std::thread::id> threads;
   for (int k = 0; k < 40; ++k) {
-    writer.post("f" + std::to_string(k), [&] {
-      std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    writer.post("f" + std::to_string(k % 3), [&, k] {
+      std::this_thread::sleep_for(std::chrono::microseconds(300));
       const std::lock_guard<std::mutex> lock(mutex);
+      ran.push_back(k);
       threads.push_back(std::this_thread::get_id());
     });
   }
-  writer.wait();
-  ASSERT_EQ(threads.size(), 40u);
-  int byCaller = 0;
-  for (const auto& id : threads) {
-    byCaller += id == std::this_thread::get_id();
+  const auto done = writer.wait();
+  ASSERT_EQ(ran.size(), 40u);
+  for (int k = 0; k < 40; ++k) {
+    EXPECT_EQ(ran[static_cast<size_t>(k)], k);
+    EXPECT_EQ(done[static_cast<size_t>(k)].first, "f" + std::to_string(k % 3));
+    EXPECT_NE(threads[static_cast<size_t>(k)], std::this_thread::get_id());
   }
-  EXPECT_GT(byCaller, 0);   // the waiting thread helped
-  EXPECT_LT(byCaller, 40);  // and so did the writer's own thread
 }
 
 TEST(BackgroundWriter, AFailedWriteSkipsTheLaterOnesAndReachesTheCaller) {
   gl::BackgroundWriter writer;
   std::atomic<int> written{0};
   writer.post("tets.vtu", [&] { ++written; });
-  writer.post("layers.vtp", [] { throw gl::FileWriteError("could not write layers.vtp"); });
-  for (;;) {  // the CLI goes on computing until its next check() sees the failure
-    try {
-      writer.check();
-    } catch (const gl::FileWriteError& e) {
-      EXPECT_NE(std::string(e.what()).find("layers.vtp"), std::string::npos);
-      break;
-    }
-    std::this_thread::sleep_for(std::chrono::microseconds(100));
-  }
-  EXPECT_EQ(written.load(), 1);
+  writer.post("layers.vtp", [] {
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));  // slow, then fails
+    throw gl::FileWriteError("could not write layers.vtp");
+  });
   for (const char* later : {"lattice.vtp", "toolpath.vtp", "toolpath.pvd"}) {
     writer.post(later, [&] { ++written; });
   }
-  EXPECT_THROW(writer.wait(), gl::FileWriteError);
+  try {
+    writer.wait();
+    FAIL() << "wait() did not rethrow";
+  } catch (const gl::FileWriteError& e) {
+    EXPECT_NE(std::string(e.what()).find("layers.vtp"), std::string::npos);
+  }
   EXPECT_EQ(written.load(), 1);  // nothing after the failure was written
   EXPECT_THROW(writer.check(), gl::FileWriteError);
+  writer.post("report.json", [&] { ++written; });  // skipped too: the run has failed
+  EXPECT_THROW(writer.wait(), gl::FileWriteError);
+  EXPECT_EQ(written.load(), 1);
 }
 
 TEST(BackgroundWriter, CheckDoesNotWaitAndTheDestructorFinishesThePostedJobs) {
