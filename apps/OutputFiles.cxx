@@ -10,6 +10,7 @@
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -85,6 +86,13 @@ void OutputRecord::add(const std::string& path, double seconds) {
     }
   }
   files_.emplace_back(name, seconds);
+}
+
+void OutputRecord::remove(const std::string& path) {
+  const std::string name = fs::path(path).lexically_relative(dir_).generic_string();
+  files_.erase(
+      std::remove_if(files_.begin(), files_.end(), [&](const auto& f) { return f.first == name; }),
+      files_.end());
 }
 
 std::vector<std::string> OutputRecord::retireStaleOutputs() const {

@@ -32,6 +32,8 @@ public:
   explicit OutputRecord(std::string outDir) : dir_(std::move(outDir)) {}
   /// Records `path` (written now, `seconds` long); a path recorded twice keeps the later time.
   void add(const std::string& path, double seconds);
+  /// Takes `path` out of the record (a file that was to be written and was not).
+  void remove(const std::string& path);
   /// The recorded files, relative to the output directory, in the order first written.
   const std::vector<std::pair<std::string, double>>& files() const { return files_; }
   /// Moves the earlier run's outputs this run did not write into previous/; returns their

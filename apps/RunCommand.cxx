@@ -186,18 +186,18 @@ private:
     const std::string pvd = (fs::path(R.outDir) / "toolpath.pvd").string();
     vtkSmartPointer<vtkPolyData> replayed = vtkSmartPointer<vtkPolyData>::New();
     replayed->DeepCopy(P.ToolpathVerifier->GetOutputDataObject(1));
-    this->Writer.post(steps > 0 ? pvd : "", [replayed, dir = R.outDir, steps] {
-      writeToolpathReplay(replayed, dir, steps);  // steps 0: removes an earlier replay
-    });
+    std::vector<std::string> replayFiles;
     if (steps > 0) {
-      this->Files.add(pvd, 0.0);
-      this->Files.add((fs::path(R.outDir) / "toolpath" / "empty.vtp").string(), 0.0);
+      replayFiles = {pvd, (fs::path(R.outDir) / "toolpath" / "empty.vtp").string()};
     }
     for (int k = 1; k <= steps; ++k) {
       char name[32];
       std::snprintf(name, sizeof name, "toolpath/step_%04d.vtp", k);
-      this->Files.add((fs::path(R.outDir) / name).string(), 0.0);
+      replayFiles.push_back((fs::path(R.outDir) / name).string());
     }
+    this->Post(steps > 0 ? pvd : "", replayFiles, [replayed, dir = R.outDir, steps] {
+      writeToolpathReplay(replayed, dir, steps);  // steps 0: removes an earlier replay
+    });
     if (this->TryOtherOrientations(pathCollisions)) {
       return this->Stages();  // the stages again for the chosen candidate: its files and report
     }

@@ -14,6 +14,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkWriter.h>
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <system_error>
@@ -74,10 +75,10 @@ Json& RunSession::Section(const char* name) {
 /// Throws StageError with the first error message when the update fails.
 vtkDataObject* RunSession::Update(const char* stage, vtkAlgorithm* last,
                                   std::initializer_list<vtkAlgorithm*> watched) {
+  this->Writer.check();  // a file of an earlier stage could not be written: stop here
   if (!R.quiet) {
     std::cout << "geolattice: " << stage << " ..." << std::flush;
   }
-  this->Writer.check();  // a file of an earlier stage could not be written: stop here
   ErrorCapture errors;
   for (vtkAlgorithm* a : watched) {
     errors.Watch(a);
@@ -147,23 +148,58 @@ void RunSession::GateLine(const std::string& line, bool warning) {
 }
 
 void RunSession::Write(vtkDataObject* data, const char* name) {
-  this->Writer.check();
   const std::string path = (fs::path(R.outDir) / name).string();
+  if (!data) {
+    throw GeoLatticeError("cannot write a null data object to " + path);
+  }
   vtkSmartPointer<vtkDataObject> copy = vtk::TakeSmartPointer(data->NewInstance());
-  copy->DeepCopy(data);        // the pipeline goes on (and may run the stage again) meanwhile
-  this->Files.add(path, 0.0);  // its place in the list now, its seconds when written
-  this->Writer.post(path, [copy, path] { writeVtkXml(copy, path); });
+  copy->DeepCopy(data);  // the pipeline goes on (and may run the stage again) meanwhile
+  this->Post(path, {path}, [copy, path] { writeVtkXml(copy, path); });
+}
+
+void RunSession::Post(const std::string& path, const std::vector<std::string>& records,
+                      std::function<void()> write) {
+  this->Writer.check();  // a file before it could not be written: the run stops here
+  for (const std::string& f : records) {
+    this->Files.add(f, 0.0);  // its place in the list now, its seconds when written
+  }
+  this->Pending.push_back({path, records});
+  this->Writer.post(path, std::move(write));
 }
 
 void RunSession::WaitForFiles() {
-  for (const auto& [path, seconds] : this->Writer.wait()) {
-    if (!path.empty()) {  // a job that writes no file of its own (e.g. removes a replay)
-      this->Files.add(path, seconds);
+  std::vector<std::pair<std::string, double>> done;
+  std::exception_ptr error;
+  try {
+    done = this->Writer.wait();
+  } catch (...) {
+    error = std::current_exception();
+    done = this->Writer.finished();
+  }
+  // The jobs finish in the order posted: the first done.size() were written, the others failed
+  // or were skipped, and their files (unless an earlier job wrote the same one) are not this
+  // run's.
+  for (size_t k = 0; k < this->Pending.size(); ++k) {
+    const PendingJob& job = this->Pending[k];
+    if (k < done.size()) {
+      this->Written.insert(this->Written.end(), job.records.begin(), job.records.end());
+      if (!job.path.empty()) {
+        this->Files.add(job.path, done[k].second);
+      }
+      continue;
     }
+    for (const std::string& f : job.records) {
+      if (std::find(this->Written.begin(), this->Written.end(), f) == this->Written.end()) {
+        this->Files.remove(f);
+      }
+    }
+  }
+  this->Pending.clear();
+  if (error) {
+    std::rethrow_exception(error);
   }
 }
 
-/// Moves the earlier run's leftovers to previous/, then writes report.json (with every file
 /// written and its seconds, and the exit status).
 void RunSession::Finish(int status) {
   try {

@@ -14,6 +14,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <vector>
@@ -59,7 +60,13 @@ public:
   void GateLine(const std::string& line, bool warning = false);
   /// Writes a deep copy of `data` as OUTDIR/name (VTK XML) on the writer thread and records it.
   void Write(vtkDataObject* data, const char* name);
-  /// Waits for the writer thread; records each file's seconds. Throws a failed write's error.
+  /// Posts `write` to the writer thread as the job of `path` (its seconds) and records the files
+  /// it writes, `records`, in the order of the run; a job that fails or is skipped takes them out
+  /// of the record again (WaitForFiles).
+  void Post(const std::string& path, const std::vector<std::string>& records,
+            std::function<void()> write);
+  /// Waits for the writer thread; records each file's seconds and drops the files of failed or
+  /// skipped jobs from the record. Throws a failed write's error.
   void WaitForFiles();
   /// Runs write(OUTDIR/name) and records the file.
   template <class F>
@@ -72,6 +79,14 @@ public:
   /// Waits for the files, moves the earlier run's leftovers to previous/, then writes report.json
   /// (every file written and its seconds, and the exit status).
   void Finish(int status);
+
+private:
+  struct PendingJob {
+    std::string path;
+    std::vector<std::string> records;
+  };
+  std::vector<PendingJob> Pending;   ///< posted since the last WaitForFiles, in order
+  std::vector<std::string> Written;  ///< files the writer thread has written in this run
 };
 
 /// The program stage behind its gates: a colliding toolpath (unless --allow-collisions),

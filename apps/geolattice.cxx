@@ -18,6 +18,7 @@
 #include <iostream>
 #include <string>
 
+#include <sys/auxv.h>
 #include <unistd.h>
 
 namespace {
@@ -119,13 +120,24 @@ namespace {
 /// set already (e.g. glibc.malloc.hugetlb=0) is kept; when the restart fails the run goes on.
 void restartOnHugePages(char** argv) {
   const char* tunables = std::getenv("GLIBC_TUNABLES");
-  if (tunables && std::strstr(tunables, "glibc.malloc.hugetlb")) {
+  // Once only (a marker, in case the loader drops the tunable), and never for a setuid start
+  // (the loader ignores tunables there).
+  if ((tunables && std::strstr(tunables, "glibc.malloc.hugetlb")) ||
+      std::getenv("GEOLATTICE_RESTARTED") || ::getauxval(AT_SECURE) != 0) {
     return;
   }
-  const std::string value = (tunables && *tunables ? std::string(tunables) + ":" : std::string()) +
-                            "glibc.malloc.hugetlb=1";
-  if (::setenv("GLIBC_TUNABLES", value.c_str(), 1) == 0) {
+  const std::string old = tunables ? tunables : "";
+  const std::string value = (old.empty() ? old : old + ":") + "glibc.malloc.hugetlb=1";
+  if (::setenv("GLIBC_TUNABLES", value.c_str(), 1) == 0 &&
+      ::setenv("GEOLATTICE_RESTARTED", "1", 1) == 0) {
     ::execv("/proc/self/exe", argv);
+  }
+  // Not restarted: the environment as it was.
+  ::unsetenv("GEOLATTICE_RESTARTED");
+  if (tunables) {
+    ::setenv("GLIBC_TUNABLES", old.c_str(), 1);
+  } else {
+    ::unsetenv("GLIBC_TUNABLES");
   }
 }
 

@@ -42,6 +42,11 @@ std::vector<std::pair<std::string, double>> BackgroundWriter::wait() {
   return std::exchange(done_, {});
 }
 
+std::vector<std::pair<std::string, double>> BackgroundWriter::finished() {
+  const std::lock_guard<std::mutex> lock(mutex_);
+  return std::exchange(done_, {});
+}
+
 void BackgroundWriter::work() {
   std::unique_lock<std::mutex> lock(mutex_);
   for (;;) {

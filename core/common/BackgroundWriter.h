@@ -36,6 +36,9 @@ public:
   /// Waits for every posted job; returns (path, seconds) of each one finished since the last
   /// call, in the order posted. Throws the error of a failed job.
   std::vector<std::pair<std::string, double>> wait();
+  /// The (path, seconds) of the jobs finished since the last call of this or wait(), without
+  /// waiting: after wait() threw, the files written before the failure.
+  std::vector<std::pair<std::string, double>> finished();
 
 private:
   void work();

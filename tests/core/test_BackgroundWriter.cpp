@@ -101,6 +101,11 @@ TEST(BackgroundWriter, AFailedWriteSkipsTheLaterOnesAndReachesTheCaller) {
     EXPECT_NE(std::string(e.what()).find("layers.vtp"), std::string::npos);
   }
   EXPECT_EQ(written.load(), 1);  // nothing after the failure was written
+  // What was written before the failure is still told (the CLI keeps it in report.json).
+  const auto before = writer.finished();
+  ASSERT_EQ(before.size(), 1u);
+  EXPECT_EQ(before[0].first, "tets.vtu");
+  EXPECT_TRUE(writer.finished().empty());
   EXPECT_THROW(writer.check(), gl::FileWriteError);
   writer.post("report.json", [&] { ++written; });  // skipped too: the run has failed
   EXPECT_THROW(writer.wait(), gl::FileWriteError);
