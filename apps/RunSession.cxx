@@ -200,7 +200,8 @@ void RunSession::WaitForFiles() {
   }
 }
 
-/// written and its seconds, and the exit status).
+/// Waits for the files, moves the earlier run's leftovers to previous/, then writes report.json
+/// (with every file written and its seconds, and the exit status).
 void RunSession::Finish(int status) {
   try {
     this->WaitForFiles();
