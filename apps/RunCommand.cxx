@@ -175,17 +175,18 @@ private:
     reportToolpath(P, toolpath, path);
     reportCollisions(pathCollisions, path);
     // The toolpath with every station's verdict (point array Collision: colour by it in ParaView).
-    this->Write(P.ToolpathVerifier->GetOutputDataObject(1), "toolpath.vtp");
+    const vtkSmartPointer<vtkDataObject> checkedPath =
+        this->Write(P.ToolpathVerifier->GetOutputDataObject(1), "toolpath.vtp");
     this->Write(pathCollisions, "toolpath_collisions.vtp");
     vtkDataObject* summary = this->Update("summary", P.PrintSummary);  // before Section: its time
     reportSummary(summary, this->Section("summary"));
     const int steps =
         replayStepCount(vtkDataSet::SafeDownCast(toolpath)->GetNumberOfPoints(), R.replaySteps);
     path["replay_steps"] = steps;
-    // The replay's files on the writer thread too; its seconds are on toolpath.pvd.
+    // The replay's files on the writer thread too, from toolpath.vtp's copy (that job runs
+    // first); its seconds are on toolpath.pvd.
     const std::string pvd = (fs::path(R.outDir) / "toolpath.pvd").string();
-    vtkSmartPointer<vtkPolyData> replayed = vtkSmartPointer<vtkPolyData>::New();
-    replayed->DeepCopy(P.ToolpathVerifier->GetOutputDataObject(1));
+    vtkSmartPointer<vtkPolyData> replayed = vtkPolyData::SafeDownCast(checkedPath);
     std::vector<std::string> replayFiles;
     if (steps > 0) {
       replayFiles = {pvd, (fs::path(R.outDir) / "toolpath" / "empty.vtp").string()};

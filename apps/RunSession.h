@@ -12,6 +12,8 @@
 #include "common/BackgroundWriter.h"
 #include "common/Error.h"
 
+#include <vtkSmartPointer.h>
+
 #include <chrono>
 #include <filesystem>
 #include <functional>
@@ -59,7 +61,8 @@ public:
   /// One stderr line of a gate: "stopped: ..." or "warning: ...".
   void GateLine(const std::string& line, bool warning = false);
   /// Writes a deep copy of `data` as OUTDIR/name (VTK XML) on the writer thread and records it.
-  void Write(vtkDataObject* data, const char* name);
+  /// Returns the copy: a later job of the writer thread may read it too (it runs after this one).
+  vtkSmartPointer<vtkDataObject> Write(vtkDataObject* data, const char* name);
   /// Posts `write` to the writer thread as the job of `path` (its seconds) and records the files
   /// it writes, `records`, in the order of the run; a job that fails or is skipped takes them out
   /// of the record again (WaitForFiles).
