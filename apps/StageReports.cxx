@@ -107,6 +107,7 @@ void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {
     s["simplification_distance_mm"] = fieldValue(tets, arrays::SimplificationDistance);
     s["simplification_seconds"] = fieldValue(tets, arrays::SimplificationSeconds);
     s["tetgen_runs"] = fieldValue(tets, arrays::TetGenRuns);
+    s["tetgen_speculative_run"] = fieldValue(tets, arrays::TetGenSpeculativeRun) != 0;
     s["removed_flat_tets"] = fieldValue(tets, arrays::RemovedFlatTets);
   }
   s["points"] = points(tets);

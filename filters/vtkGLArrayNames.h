@@ -76,6 +76,8 @@ constexpr const char* SimplificationDistance =
     "SimplificationDistance";  ///< largest input-vertex distance to the meshed surface (mm)
 constexpr const char* SimplificationSeconds = "SimplificationSeconds";  ///< its wall time (s)
 constexpr const char* TetGenRuns = "TetGenRuns";  ///< TetGen runs (edge search and retries)
+constexpr const char* TetGenSpeculativeRun =
+    "TetGenSpeculativeRun";  ///< 1: a longer edge was meshed beside the first automatic run
 constexpr const char* RemovedFlatTets = "RemovedFlatTets";  ///< zero-volume slivers dropped
 // Overhang analysis (vtkGLOverhangAnalysis): cell data on the boundary surface.
 constexpr const char* OverhangPlanar =

@@ -359,26 +359,31 @@ std::vector<char> finishChild(Child& child, const std::function<bool()>& shouldA
 
 }  // namespace
 
-TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switches,
-                       const std::function<bool()>& shouldAbort, IntersectionTest test) {
+TetGenRun::TetGenRun(const TriangleSurface& surface, const std::string& switches) {
   if (switches.find('p') == std::string::npos) {
     throw GeoLatticeError("runTetGen: switches \"" + switches + "\" lack 'p' (mesh a surface)");
   }
-  Child mesher = startChild(surface, switches.c_str());
-  if (test == IntersectionTest::Run) {
-    // The test in a second child beside the meshing one (on another core): its verdict comes
-    // first, as if it had run before the meshing, but costs no time of its own.
-    try {
-      Child tester = startChild(surface, nullptr);
-      Header verdict{};
-      finishChild(tester, shouldAbort, verdict);
-    } catch (...) {
-      killChild(mesher);
-      throw;
-    }
+  const Child child = startChild(surface, switches.c_str());
+  pid_ = child.pid;
+  fd_ = child.fd;
+  stderrFd_ = child.stderrFd;
+}
+
+TetGenRun::~TetGenRun() {
+  if (pid_ >= 0) {
+    Child child{pid_, fd_, stderrFd_};
+    killChild(child);
   }
+}
+
+TetGenOutput TetGenRun::finish(const std::function<bool()>& shouldAbort) {
+  if (pid_ < 0) {
+    throw GeoLatticeError("TetGen run read twice");
+  }
+  Child child{pid_, fd_, stderrFd_};
+  pid_ = -1;  // finishChild reaps it and closes its descriptors, also when it throws
   Header h{};
-  const std::vector<char> data = finishChild(mesher, shouldAbort, h);
+  const std::vector<char> data = finishChild(child, shouldAbort, h);
   if (h.corners != 4 || h.pointCount < 0 || h.tetCount < 0) {
     throw GeoLatticeError("TetGen produced an unexpected mesh (" + std::to_string(h.corners) +
                           " corners per tet)");
@@ -409,6 +414,20 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
     std::memcpy(output.regions.data(), p, regionBytes);
   }
   return output;
+}
+
+TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switches,
+                       const std::function<bool()>& shouldAbort, IntersectionTest test) {
+  TetGenRun mesher(surface, switches);
+  if (test == IntersectionTest::Run) {
+    // The test in a second child beside the meshing one (on another core): its verdict comes
+    // first, as if it had run before the meshing, but costs no time of its own. A failure
+    // kills the mesher (its destructor).
+    Child tester = startChild(surface, nullptr);
+    Header verdict{};
+    finishChild(tester, shouldAbort, verdict);
+  }
+  return mesher.finish(shouldAbort);
 }
 
 }  // namespace geolattice

@@ -35,6 +35,22 @@ enum class IntersectionTest {
   Skip,  ///< the surface passed the test before (e.g. another edge length on the same surface)
 };
 
+/// @brief One TetGen meshing run in a child process, started on construction and read by
+/// finish(): runTetGen in two halves, so that a caller can mesh a second edge length on the
+/// other core meanwhile. Destroying it unread kills the child. `switches` as for runTetGen.
+class TetGenRun {
+public:
+  TetGenRun(const TriangleSurface& surface, const std::string& switches);
+  ~TetGenRun();
+  TetGenRun(const TetGenRun&) = delete;
+  TetGenRun& operator=(const TetGenRun&) = delete;
+  /// Waits for the child and returns its mesh (at most once); errors as for runTetGen.
+  TetGenOutput finish(const std::function<bool()>& shouldAbort = {});
+
+private:
+  int pid_ = -1, fd_ = -1, stderrFd_ = -1;  // the child; pid -1 once finished
+};
+
 /// @brief Mesh the PLC given by `surface` (one facet per triangle) with TetGen `switches`
 /// (e.g. "pq1.414a0.4AQ"; must contain "p"), the surface tested for intersecting facets unless
 /// `test` is Skip.

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -303,6 +304,10 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   // and a run past it counts as failed.
   bool timedOut = false;
   IntersectionTest intersectionTest = IntersectionTest::Run;
+  // The speculative run (kSpeculativeEdgeFactor): started beside the first run, read when the
+  // search asks for its edge length, killed when it does not.
+  std::unique_ptr<TetGenRun> speculative;
+  double speculativeEdge = 0.0;
   auto runOnce = [&](double edge) {
     const double limit =
         kTetGenBaseSeconds + kTetGenSecondsPerTet * result.enclosedVolume /
@@ -319,11 +324,17 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     };
     TetGenOutput out;
     try {
-      out = runTetGen(surface, switchesFor(edge), abortOrTimeout, intersectionTest);
+      if (speculative && edge == speculativeEdge) {
+        const std::unique_ptr<TetGenRun> run = std::move(speculative);
+        out = run->finish(abortOrTimeout);
+      } else {
+        out = runTetGen(surface, switchesFor(edge), abortOrTimeout, intersectionTest);
+      }
     } catch (const GeoLatticeError& e) {
       if (!result.simplified || (options.shouldAbort && options.shouldAbort())) {
         throw;
       }
+      speculative.reset();  // it meshes the surface refused here
       // TetGen failed on the simplified surface (e.g. nearly coincident vertices it made, or a
       // refinement that does not end: seen on a generated genus-3 block, where the input as it
       // is meshes in 3 s): mesh the input as it is, with a new time limit.
@@ -403,6 +414,11 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
                           "another edge length (--edge-length) or repair the surface");
   };
 
+  if (automatic && options.autoTargetTets <= kSpeculativeMaxTargetTets) {
+    speculativeEdge = firstEdge * kSpeculativeEdgeFactor;
+    speculative = std::make_unique<TetGenRun>(surface, switchesFor(speculativeEdge));
+    result.speculativeRun = true;
+  }
   TetMesh best = run(firstEdge);
   TetMeshCheckReport bestCheck = lastCheck;
   double bestEdge = firstEdge;
@@ -430,12 +446,21 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       }
     };
     updateBracket(edge, count);
+    if (!(miss(best.tets.size()) > std::log(kAutoTolerance) && count > target)) {
+      speculative.reset();  // not needed: stop it now, it holds a core
+    }
     while (miss(best.tets.size()) > std::log(kAutoTolerance) &&
            result.attempts < kMaxAutoAttempts) {
       double next = edge * std::exp(std::log(count / target) / -slope);
+      if (speculative) {  // too many tets in the first run: its longer edge is ready
+        next = speculativeEdge;
+      }
       next = std::max(edge / 4.0, std::min(next, std::min(edge * 4.0, report.bboxDiagonal)));
       if (tooFine > 0.0 && tooCoarse > tooFine && !(next > tooFine && next < tooCoarse)) {
         next = std::sqrt(tooFine * tooCoarse);
+      }
+      if (speculative && next != speculativeEdge) {
+        speculative.reset();
       }
       if (!(std::abs(next - edge) > 1e-9 * edge)) {
         break;  // no further change possible (the bound is the bounding-box diagonal)

@@ -12,10 +12,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cerrno>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <string>
+
+#include <sys/wait.h>
 
 using namespace geolattice;
 
@@ -158,6 +161,27 @@ TEST(TetrahedralizeSurface, AutomaticEdgeLengthOnTheBunnyAt100mm) {
   EXPECT_LE(r.tetCount, 100000);
   EXPECT_NEAR(r.meshVolume, enclosed, 1e-6 * enclosed);
   EXPECT_TRUE(checkTetMesh(r.mesh).isValid());
+}
+
+TEST(TetrahedralizeSurface, ASurfaceDrivenOvershootTakesTheSpeculativeRun) {
+  // The bunny's 3674 surface triangles drive the refinement: the first guess gives ~1.5x the
+  // target, and the run at 1.45x its edge, meshed beside it, is the second run (no third).
+  const TriangleSurface bunny = bunnyAt100mm();
+  ASSERT_FALSE(bunny.points.empty()) << "bunny.obj not found in " << GEOLATTICE_TESTDATA;
+  const TetrahedralizeResult r = tetrahedralizeSurface(bunny);
+  EXPECT_TRUE(r.speculativeRun);
+  EXPECT_EQ(r.attempts, 2);
+  EXPECT_NEAR(r.targetEdgeLength, kSpeculativeEdgeFactor * automaticEdgeLength(r.enclosedVolume),
+              1e-9);
+  EXPECT_GE(r.tetCount, 60000);
+  EXPECT_LE(r.tetCount, 93750);
+  // A first run with too few tets does not take it (the cube: see above); nor does a fixed edge
+  // length or a large target start it.
+  EXPECT_FALSE(
+      tetrahedralizeSurface(boxSurface(Vec3(10, 10, 10), 100.0), edge(2.0)).speculativeRun);
+  TetrahedralizeOptions large;
+  large.autoTargetTets = 300000;
+  EXPECT_FALSE(tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0), large).speculativeRun);
 }
 
 TEST(TetrahedralizeSurface, ALargeTargetIsReachedByTheFirstRun) {
@@ -432,6 +456,24 @@ TEST(TetGenRunner, TheIntersectionTestRunsBesideTheMeshingAndCanBeSkipped) {
   const TetGenOutput skipped = runTetGen(box, "pq1.414a2AQ", {}, IntersectionTest::Skip);
   EXPECT_EQ(tested.mesh.tets, skipped.mesh.tets);
   EXPECT_EQ(tested.mesh.points.size(), skipped.mesh.points.size());
+}
+
+TEST(TetGenRunner, AStartedRunIsReadLaterOrKilledUnread) {
+  const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 1.5);
+  TetGenRun started(box, "pq1.414a2AQ");
+  const TetGenOutput direct = runTetGen(box, "pq1.414a2AQ", {}, IntersectionTest::Skip);
+  const TetGenOutput later = started.finish();
+  EXPECT_EQ(later.mesh.tets, direct.mesh.tets);
+  EXPECT_EQ(later.regions, direct.regions);
+  EXPECT_TRUE(contains(errorOf([&] { started.finish(); }), "read twice"));
+  EXPECT_TRUE(contains(errorOf([&] { TetGenRun(box, "Q"); }), "lack 'p'"));
+  {
+    TetGenRun unread(boxSurface(Vec3(40, 40, 60), 100.0), "pq1.414a0.03AQ");  // ~1.5M tets
+  }
+  // Killed and reaped: this process has no child left.
+  errno = 0;
+  EXPECT_EQ(::waitpid(-1, nullptr, WNOHANG), -1);
+  EXPECT_EQ(errno, ECHILD);
 }
 
 TEST(TetGenRunner, ErrorCodesHaveMessages) {
