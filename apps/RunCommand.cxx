@@ -175,18 +175,22 @@ private:
     reportToolpath(P, toolpath, path);
     reportCollisions(pathCollisions, path);
     // The toolpath with every station's verdict (point array Collision: colour by it in ParaView).
-    const vtkSmartPointer<vtkDataObject> checkedPath =
-        this->Write(P.ToolpathVerifier->GetOutputDataObject(1), "toolpath.vtp");
+    vtkDataObject* checkedPath = P.ToolpathVerifier->GetOutputDataObject(1);
+    this->Write(checkedPath, "toolpath.vtp");
     this->Write(pathCollisions, "toolpath_collisions.vtp");
     vtkDataObject* summary = this->Update("summary", P.PrintSummary);  // before Section: its time
     reportSummary(summary, this->Section("summary"));
     const int steps =
         replayStepCount(vtkDataSet::SafeDownCast(toolpath)->GetNumberOfPoints(), R.replaySteps);
     path["replay_steps"] = steps;
-    // The replay's files on the writer thread too, from toolpath.vtp's copy (that job runs
-    // first); its seconds are on toolpath.pvd.
+    // The replay's files on a writer thread of their own, beside toolpath.vtp's, from a copy of
+    // their own (VTK caches array ranges inside the arrays: two writers must not share one);
+    // its seconds are on toolpath.pvd.
     const std::string pvd = (fs::path(R.outDir) / "toolpath.pvd").string();
-    vtkSmartPointer<vtkPolyData> replayed = vtkPolyData::SafeDownCast(checkedPath);
+    vtkNew<vtkPolyData> replayed;
+    if (steps > 0) {
+      replayed->DeepCopy(checkedPath);
+    }
     std::vector<std::string> replayFiles;
     if (steps > 0) {
       replayFiles = {pvd, (fs::path(R.outDir) / "toolpath" / "empty.vtp").string()};
@@ -196,9 +200,12 @@ private:
       std::snprintf(name, sizeof name, "toolpath/step_%04d.vtp", k);
       replayFiles.push_back((fs::path(R.outDir) / name).string());
     }
-    this->Post(steps > 0 ? pvd : "", replayFiles, [replayed, dir = R.outDir, steps] {
-      writeToolpathReplay(replayed, dir, steps);  // steps 0: removes an earlier replay
-    });
+    this->Post(
+        steps > 0 ? pvd : "", replayFiles,
+        [replayed = vtkSmartPointer<vtkPolyData>(replayed), dir = R.outDir, steps] {
+          writeToolpathReplay(replayed, dir, steps);  // steps 0: removes an earlier replay
+        },
+        true);
     if (this->TryOtherOrientations(pathCollisions)) {
       return this->Stages();  // the stages again for the chosen candidate: its files and report
     }

@@ -75,7 +75,7 @@ Json& RunSession::Section(const char* name) {
 /// Throws StageError with the first error message when the update fails.
 vtkDataObject* RunSession::Update(const char* stage, vtkAlgorithm* last,
                                   std::initializer_list<vtkAlgorithm*> watched) {
-  this->Writer.check();  // a file of an earlier stage could not be written: stop here
+  this->CheckWriters();  // a file of an earlier stage could not be written: stop here
   if (!R.quiet) {
     std::cout << "geolattice: " << stage << " ..." << std::flush;
   }
@@ -158,34 +158,47 @@ vtkSmartPointer<vtkDataObject> RunSession::Write(vtkDataObject* data, const char
   return copy;
 }
 
+void RunSession::CheckWriters() {
+  this->Writer.check();
+  this->ReplayWriter.check();
+}
+
 void RunSession::Post(const std::string& path, const std::vector<std::string>& records,
-                      std::function<void()> write) {
-  this->Writer.check();  // a file before it could not be written: the run stops here
+                      std::function<void()> write, bool replay) {
+  this->CheckWriters();  // a file before it could not be written: the run stops here
   for (const std::string& f : records) {
     this->Files.add(f, 0.0);  // its place in the list now, its seconds when written
   }
-  this->Pending.push_back({path, records});
-  this->Writer.post(path, std::move(write));
+  this->Pending.push_back({path, records, replay});
+  (replay ? this->ReplayWriter : this->Writer).post(path, std::move(write));
 }
 
 void RunSession::WaitForFiles() {
-  std::vector<std::pair<std::string, double>> done;
+  // Each writer finishes its jobs in the order posted: the first done.size() of its jobs were
+  // written, the others failed or were skipped, and their files (unless an earlier job wrote the
+  // same one) are not this run's. The first error (of the main writer first) is thrown.
+  std::vector<std::pair<std::string, double>> done[2];
   std::exception_ptr error;
-  try {
-    done = this->Writer.wait();
-  } catch (...) {
-    error = std::current_exception();
-    done = this->Writer.finished();
+  BackgroundWriter* writers[2] = {&this->Writer, &this->ReplayWriter};
+  for (int w = 0; w < 2; ++w) {
+    try {
+      done[w] = writers[w]->wait();
+    } catch (...) {
+      if (!error) {
+        error = std::current_exception();
+      }
+      done[w] = writers[w]->finished();
+    }
   }
-  // The jobs finish in the order posted: the first done.size() were written, the others failed
-  // or were skipped, and their files (unless an earlier job wrote the same one) are not this
-  // run's.
+  size_t next[2] = {0, 0};  // of each writer: its next job's index in done[]
   for (size_t k = 0; k < this->Pending.size(); ++k) {
     const PendingJob& job = this->Pending[k];
-    if (k < done.size()) {
+    const int w = job.replay ? 1 : 0;
+    const size_t j = next[w]++;
+    if (j < done[w].size()) {
       this->Written.insert(this->Written.end(), job.records.begin(), job.records.end());
       if (!job.path.empty()) {
-        this->Files.add(job.path, done[k].second);
+        this->Files.add(job.path, done[w][j].second);
       }
       continue;
     }

@@ -43,6 +43,9 @@ public:
   RunOptions R;
   OutputRecord Files{""};
   BackgroundWriter Writer;  ///< the VTK XML files, written while the next stages run
+  /// The print replay's files (the largest job, posted last): on a thread of its own beside
+  /// toolpath.vtp, from a copy of its own, so the two do not queue at the end of the run.
+  BackgroundWriter ReplayWriter;
   Json Report = Json::object();
   double LastSeconds = 0;
 
@@ -63,11 +66,11 @@ public:
   /// Writes a deep copy of `data` as OUTDIR/name (VTK XML) on the writer thread and records it.
   /// Returns the copy: a later job of the writer thread may read it too (it runs after this one).
   vtkSmartPointer<vtkDataObject> Write(vtkDataObject* data, const char* name);
-  /// Posts `write` to the writer thread as the job of `path` (its seconds) and records the files
-  /// it writes, `records`, in the order of the run; a job that fails or is skipped takes them out
-  /// of the record again (WaitForFiles).
+  /// Posts `write` to the writer thread (`replay`: to ReplayWriter) as the job of `path` (its
+  /// seconds) and records the files it writes, `records`, in the order of the run; a job that
+  /// fails or is skipped takes them out of the record again (WaitForFiles).
   void Post(const std::string& path, const std::vector<std::string>& records,
-            std::function<void()> write);
+            std::function<void()> write, bool replay = false);
   /// Waits for the writer thread; records each file's seconds and drops the files of failed or
   /// skipped jobs from the record. Throws a failed write's error.
   void WaitForFiles();
@@ -87,7 +90,10 @@ private:
   struct PendingJob {
     std::string path;
     std::vector<std::string> records;
+    bool replay = false;  ///< posted to ReplayWriter
   };
+  /// Throws the error of a failed job of either writer, without waiting.
+  void CheckWriters();
   std::vector<PendingJob> Pending;   ///< posted since the last WaitForFiles, in order
   std::vector<std::string> Written;  ///< files the writer thread has written in this run
 };

@@ -1,13 +1,15 @@
 #!/usr/bin/env python3
 """Whole pipeline on every bundled test model (docs/performance.md, "Whole pipeline per test model").
 
-Runs `geolattice run MODEL -o OUT/NN_NAME --replay-steps 0` with the default options (and the
-README's demo, the bunny with --orient auto) under
+Runs `geolattice run MODEL -o OUT/NN_NAME -q` with the default options, every file written (the
+print replay's too; `--no-replay` adds `--replay-steps 0`, as the tables before 2026-12-04, late
+night did), and the README's demo (the bunny with --orient auto), under
 /usr/bin/time, one model after the other, and prints a Markdown table: stage seconds from
 report.json, total wall and peak resident memory, toolpath points, the strict collision verdict
 on the full toolpath, the UR5 program's largest joint step and the G-code outcome.
 
-Usage: scripts/models-run.py [OUTDIR] [--bin PATH]   (OUTDIR default /tmp/geolattice-models)
+Usage: scripts/models-run.py [OUTDIR] [--bin PATH] [--no-replay]
+       (OUTDIR default /tmp/geolattice-models)
 """
 import json
 import os
@@ -35,13 +37,17 @@ def main():
         i = args.index("--bin")
         binary = args[i + 1]
         del args[i:i + 2]
+    replay = []
+    if "--no-replay" in args:
+        args.remove("--no-replay")
+        replay = ["--replay-steps", "0"]
     out = args[0] if args else "/tmp/geolattice-models"
     rows = []
     for k, (name, file, options) in enumerate(MODELS):
         d = os.path.join(out, "%02d_%s" % (k, file.split(".")[0]))
         os.makedirs(d, exist_ok=True)
         cmd = ["/usr/bin/time", "-f", "%e %M", binary, "run", os.path.join(ROOT, "testdata", file), "-o", d,
-               "--replay-steps", "0", "-q"] + options
+               "-q"] + replay + options
         p = subprocess.run(cmd, capture_output=True, text=True)
         wall, rss = p.stderr.strip().splitlines()[-1].split()
         if p.returncode != 0:

@@ -27,18 +27,41 @@ int TimedPointTree::subtreeNodes(int n) {
 }
 
 int TimedPointTree::build(int id, int begin, int end, int parallelDepth) {
-  Vec lo = Vec::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  // Plain scalars and two independent maxima: with Eigen temporaries GCC kept the running
+  // maximum on the stack, and the radius loop waited on store-to-load forwarding (a third of
+  // the build). max is exact, so the tree is the same.
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double lx = inf, ly = inf, lz = inf, hx = -inf, hy = -inf, hz = -inf;
   int minTime = std::numeric_limits<int>::max();
   for (int i = begin; i < end; ++i) {
-    lo = lo.cwiseMin(points_[order_[i]]);
-    hi = hi.cwiseMax(points_[order_[i]]);
-    minTime = std::min(minTime, time_[order_[i]]);
+    const int q = order_[i];
+    const Vec& p = points_[q];
+    lx = std::min(lx, p.x());
+    ly = std::min(ly, p.y());
+    lz = std::min(lz, p.z());
+    hx = std::max(hx, p.x());
+    hy = std::max(hy, p.y());
+    hz = std::max(hz, p.z());
+    minTime = std::min(minTime, time_[q]);
   }
+  const Vec lo(lx, ly, lz), hi(hx, hy, hz);
   const Vec centre = 0.5 * (lo + hi);
-  double r2 = 0;
-  for (int i = begin; i < end; ++i) {
-    r2 = std::max(r2, (points_[order_[i]] - centre).squaredNorm());
+  const double cx = centre.x(), cy = centre.y(), cz = centre.z();
+  auto squaredDistance = [&](int i) {
+    const Vec& p = points_[order_[i]];
+    const double dx = p.x() - cx, dy = p.y() - cy, dz = p.z() - cz;
+    return dx * dx + dy * dy + dz * dz;
+  };
+  double r2a = 0, r2b = 0;
+  int i = begin;
+  for (; i + 1 < end; i += 2) {
+    r2a = std::max(r2a, squaredDistance(i));
+    r2b = std::max(r2b, squaredDistance(i + 1));
   }
+  if (i < end) {
+    r2a = std::max(r2a, squaredDistance(i));
+  }
+  const double r2 = std::max(r2a, r2b);
   int left = -1, right = -1, next = id + 1;
   if (end - begin > kLeafSize) {
     int axis = 0;
