@@ -25,8 +25,9 @@
  *     TetGen's volume bound is the regular-tet volume L^3 / (6 sqrt 2). Must be >= 0.
  *   - TargetTetCount: tet count the automatic edge length aims at (default 75000, must be in
  *     [1000, 5000000]); TetGen runs up to 4 times to get within a factor 1.25 of it. Up to
- *     250000, a 1.45x longer edge is meshed beside the first run, on the other core, and is
- *     the second run when the first gives too many tets (field data `TetGenSpeculativeRun`).
+ *     250000, a 1.45x longer edge is meshed beside the first run, on the other core, and read
+ *     first: within the tolerance it is the mesh (the first run is stopped), else it is the
+ *     second run when the first gives too many tets (field data `TetGenSpeculativeRun`).
  *   - RadiusEdgeRatio: TetGen's quality bound -q (default 1.414, must be in [1.1, 10]; TetGen
  *     does not finish in practice below ~1.1).
  *

@@ -416,6 +416,13 @@ TetGenOutput TetGenRun::finish(const std::function<bool()>& shouldAbort) {
   return output;
 }
 
+void testForIntersectingFacets(const TriangleSurface& surface,
+                               const std::function<bool()>& shouldAbort) {
+  Child tester = startChild(surface, nullptr);
+  Header verdict{};
+  finishChild(tester, shouldAbort, verdict);
+}
+
 TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switches,
                        const std::function<bool()>& shouldAbort, IntersectionTest test) {
   TetGenRun mesher(surface, switches);
@@ -423,9 +430,7 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
     // The test in a second child beside the meshing one (on another core): its verdict comes
     // first, as if it had run before the meshing, but costs no time of its own. A failure
     // kills the mesher (its destructor).
-    Child tester = startChild(surface, nullptr);
-    Header verdict{};
-    finishChild(tester, shouldAbort, verdict);
+    testForIntersectingFacets(surface, shouldAbort);
   }
   return mesher.finish(shouldAbort);
 }

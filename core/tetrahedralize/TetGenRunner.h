@@ -63,6 +63,12 @@ TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switch
                        const std::function<bool()>& shouldAbort = {},
                        IntersectionTest test = IntersectionTest::Run);
 
+/// @brief TetGen's self-intersection test ("pdQ") of `surface` in a child process, waited for.
+/// @throws GeoLatticeError "self-intersecting surface: TetGen found N intersecting facets", or
+/// as runTetGen when the child fails or `shouldAbort` returns true.
+void testForIntersectingFacets(const TriangleSurface& surface,
+                               const std::function<bool()>& shouldAbort = {});
+
 /// Message for a TetGen terminatetetgen() error code.
 std::string tetgenErrorMessage(int code);
 

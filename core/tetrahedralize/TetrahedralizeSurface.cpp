@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -304,10 +305,9 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   // and a run past it counts as failed.
   bool timedOut = false;
   IntersectionTest intersectionTest = IntersectionTest::Run;
-  // The speculative run (kSpeculativeEdgeFactor): started beside the first run, read when the
-  // search asks for its edge length, killed when it does not.
-  std::unique_ptr<TetGenRun> speculative;
-  double speculativeEdge = 0.0;
+  // Runs started ahead (the first and the speculative run, kSpeculativeEdgeFactor), by edge
+  // length: runOnce reads one when the search asks for its edge length; the others are killed.
+  std::map<double, std::unique_ptr<TetGenRun>> startedRuns;
   auto runOnce = [&](double edge) {
     const double limit =
         kTetGenBaseSeconds + kTetGenSecondsPerTet * result.enclosedVolume /
@@ -324,8 +324,10 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     };
     TetGenOutput out;
     try {
-      if (speculative && edge == speculativeEdge) {
-        const std::unique_ptr<TetGenRun> run = std::move(speculative);
+      const auto ahead = startedRuns.find(edge);
+      if (ahead != startedRuns.end()) {
+        const std::unique_ptr<TetGenRun> run = std::move(ahead->second);
+        startedRuns.erase(ahead);
         out = run->finish(abortOrTimeout);
       } else {
         out = runTetGen(surface, switchesFor(edge), abortOrTimeout, intersectionTest);
@@ -334,7 +336,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       if (!result.simplified || (options.shouldAbort && options.shouldAbort())) {
         throw;
       }
-      speculative.reset();  // it meshes the surface refused here
+      startedRuns.clear();  // they mesh the surface refused here
       // TetGen failed on the simplified surface (e.g. nearly coincident vertices it made, or a
       // refinement that does not end: seen on a generated genus-3 block, where the input as it
       // is meshes in 3 s): mesh the input as it is, with a new time limit.
@@ -414,14 +416,54 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
                           "another edge length (--edge-length) or repair the surface");
   };
 
+  const double target = options.autoTargetTets;
+  auto miss = [&](size_t count) {
+    return std::abs(std::log(static_cast<double>(count) / target));
+  };
+  // The speculative run (kSpeculativeEdgeFactor): meshed beside the first run and read first
+  // (after the surface's intersection test, whose verdict comes first). Within the tolerance it
+  // is the result and the first run is killed unread (the first guess gives too many tets on
+  // surface-driven parts, whose first runs are the slow ones); otherwise the first run is read
+  // and the search goes on as if the speculative run were read after it, as its second run.
+  struct ReadRun {
+    double edge = 0.0;
+    TetMesh mesh;
+    TetMeshCheckReport check;
+    int removedRegions = 0;
+  };
+  std::optional<ReadRun> speculative;
+  TetMesh best;
+  double startEdge = firstEdge;  // of the run the search starts from
   if (automatic && options.autoTargetTets <= kSpeculativeMaxTargetTets) {
-    speculativeEdge = firstEdge * kSpeculativeEdgeFactor;
-    speculative = std::make_unique<TetGenRun>(surface, switchesFor(speculativeEdge));
+    const double speculativeEdge = firstEdge * kSpeculativeEdgeFactor;
+    startedRuns[firstEdge] = std::make_unique<TetGenRun>(surface, switchesFor(firstEdge));
+    startedRuns[speculativeEdge] =
+        std::make_unique<TetGenRun>(surface, switchesFor(speculativeEdge));
     result.speculativeRun = true;
+    testForIntersectingFacets(surface, options.shouldAbort);
+    intersectionTest = IntersectionTest::Skip;
+    try {
+      speculative = ReadRun{speculativeEdge, run(speculativeEdge), lastCheck, removedRegions};
+    } catch (const GeoLatticeError&) {
+      if (options.shouldAbort && options.shouldAbort()) {
+        throw;
+      }
+      // The first run decides (its own error, if any, is the one reported).
+    }
+    if (speculative && miss(speculative->mesh.tets.size()) <= std::log(kAutoTolerance)) {
+      startedRuns.clear();  // the first run is not needed: stop it now, it holds a core
+      best = std::move(speculative->mesh);
+      lastCheck = speculative->check;
+      removedRegions = speculative->removedRegions;
+      startEdge = speculativeEdge;
+      speculative.reset();
+    }
   }
-  TetMesh best = run(firstEdge);
+  if (best.tets.empty()) {
+    best = run(firstEdge);
+  }
   TetMeshCheckReport bestCheck = lastCheck;
-  double bestEdge = firstEdge;
+  double bestEdge = startEdge;
   result.removedCavityRegions = removedRegions;
   result.attempts = 1;
   if (automatic) {
@@ -430,11 +472,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     // length), so the measured slope is used from run 2 on, and a proposal outside the
     // bracket (largest edge known to give too many tets, smallest known to give too few) is
     // replaced by the bracket's geometric mean.
-    const double target = options.autoTargetTets;
-    auto miss = [&](size_t count) {
-      return std::abs(std::log(static_cast<double>(count) / target));
-    };
-    double edge = firstEdge, count = static_cast<double>(best.tets.size());
+    double edge = startEdge, count = static_cast<double>(best.tets.size());
     double slope = count > target ? kFirstSlopeOver : kFirstSlopeUnder;
     double tooFine = 0.0,
            tooCoarse = 0.0;  // largest edge with count > target, smallest with count < target
@@ -447,25 +485,33 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     };
     updateBracket(edge, count);
     if (!(miss(best.tets.size()) > std::log(kAutoTolerance) && count > target)) {
-      speculative.reset();  // not needed: stop it now, it holds a core
+      speculative.reset();  // a first run with too few tets: the longer edge is no correction
     }
     while (miss(best.tets.size()) > std::log(kAutoTolerance) &&
            result.attempts < kMaxAutoAttempts) {
       double next = edge * std::exp(std::log(count / target) / -slope);
       if (speculative) {  // too many tets in the first run: its longer edge is ready
-        next = speculativeEdge;
+        next = speculative->edge;
       }
       next = std::max(edge / 4.0, std::min(next, std::min(edge * 4.0, report.bboxDiagonal)));
       if (tooFine > 0.0 && tooCoarse > tooFine && !(next > tooFine && next < tooCoarse)) {
         next = std::sqrt(tooFine * tooCoarse);
       }
-      if (speculative && next != speculativeEdge) {
+      if (speculative && next != speculative->edge) {
         speculative.reset();
       }
       if (!(std::abs(next - edge) > 1e-9 * edge)) {
         break;  // no further change possible (the bound is the bounding-box diagonal)
       }
-      TetMesh mesh = run(next);
+      TetMesh mesh;
+      if (speculative) {
+        mesh = std::move(speculative->mesh);
+        lastCheck = speculative->check;
+        removedRegions = speculative->removedRegions;
+        speculative.reset();
+      } else {
+        mesh = run(next);
+      }
       ++result.attempts;
       const double nextCount = static_cast<double>(mesh.tets.size());
       // Keep the slope negative and not too flat, so the next step stays bounded.

@@ -164,13 +164,14 @@ TEST(TetrahedralizeSurface, AutomaticEdgeLengthOnTheBunnyAt100mm) {
 }
 
 TEST(TetrahedralizeSurface, ASurfaceDrivenOvershootTakesTheSpeculativeRun) {
-  // The bunny's 3674 surface triangles drive the refinement: the first guess gives ~1.5x the
-  // target, and the run at 1.45x its edge, meshed beside it, is the second run (no third).
+  // The bunny's 3674 surface triangles drive the refinement: the first guess would give ~1.5x
+  // the target; the run at 1.45x its edge, meshed beside it and read first, is within the
+  // tolerance, so it is the one run read (the first is killed unread).
   const TriangleSurface bunny = bunnyAt100mm();
   ASSERT_FALSE(bunny.points.empty()) << "bunny.obj not found in " << GEOLATTICE_TESTDATA;
   const TetrahedralizeResult r = tetrahedralizeSurface(bunny);
   EXPECT_TRUE(r.speculativeRun);
-  EXPECT_EQ(r.attempts, 2);
+  EXPECT_EQ(r.attempts, 1);
   EXPECT_NEAR(r.targetEdgeLength, kSpeculativeEdgeFactor * automaticEdgeLength(r.enclosedVolume),
               1e-9);
   EXPECT_GE(r.tetCount, 60000);
@@ -285,6 +286,11 @@ TEST(TetrahedralizeSurface, OverlappingBoxesAreSelfIntersecting) {
       append(box, box, Eigen::Matrix3d::Identity(), Vec3(5.3, 5.1, 4.9), false);
   EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(shifted, edge(1.0)); }),
                        "self-intersecting surface"));
+  // With the automatic edge length (two runs started ahead, the test's verdict first).
+  TetrahedralizeOptions automatic;
+  automatic.autoTargetTets = 5000;
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(shifted, automatic); }),
+                       "self-intersecting surface: TetGen found"));
 }
 
 TEST(TetrahedralizeSurface, GridAlignedOverlapMeshesTheUnion) {
