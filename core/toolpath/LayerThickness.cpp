@@ -1,11 +1,13 @@
 #include "toolpath/LayerThickness.h"
 
 #include "common/Error.h"
+#include "common/ParallelFor.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <numeric>
 
 namespace geolattice {
@@ -128,15 +130,30 @@ LayerThicknessResult computeLayerThickness(const LatticeGraph& g, const Skeleton
       edgesOf[g.edgeSubgraph[e]].push_back(static_cast<int>(e));
     }
   }
-  std::vector<SegmentTree> trees;
-  trees.reserve(K);
-  for (int k = 0; k < K; ++k) {
-    trees.emplace_back(g, std::move(edgesOf[k]));
-  }
+  // The trees and the nearest-segment queries on all cores (each is independent); the
+  // statistics below in vertex order, as before.
+  std::vector<std::unique_ptr<SegmentTree>> trees(K);
+  parallelFor(static_cast<size_t>(K), 0, [&](size_t k, int) {
+    trees[k] = std::make_unique<SegmentTree>(g, std::move(edgesOf[k]));
+  });
   int firstLayer = L;
   for (const auto& s : g.subgraphs) {
     firstLayer = std::min(firstLayer, s.layer);
   }
+
+  // Distance to the nearest segment of a sub-graph below, per vertex that has one.
+  std::vector<double> below(g.points.size(), std::numeric_limits<double>::infinity());
+  constexpr size_t kChunk = 4096;
+  parallelFor((g.points.size() + kChunk - 1) / kChunk, 0, [&](size_t c, int) {
+    for (size_t v = c * kChunk; v < std::min(g.points.size(), (c + 1) * kChunk); ++v) {
+      const int s = g.vertexSubgraph[v];
+      if (s >= 0 && s < K) {
+        for (int lower : tree.nodes[s].lower) {
+          below[v] = std::min(below[v], trees[lower]->nearest(g.points[v]));
+        }
+      }
+    }
+  });
 
   LayerThicknessResult r;
   r.thickness.assign(g.points.size(), 0.0);
@@ -158,10 +175,7 @@ LayerThicknessResult computeLayerThickness(const LatticeGraph& g, const Skeleton
       h = lambda * phi;
       ++r.unsupportedVertices;
     } else {
-      h = std::numeric_limits<double>::infinity();
-      for (int lower : tree.nodes[s].lower) {
-        h = std::min(h, trees[lower].nearest(g.points[v]));
-      }
+      h = below[v];
     }
     if (h > lambda * phi) {
       h = lambda * phi;
