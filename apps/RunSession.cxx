@@ -147,7 +147,7 @@ void RunSession::GateLine(const std::string& line, bool warning) {
   std::cerr << "geolattice: " << (warning ? "warning: " : "stopped: ") << line << "\n";
 }
 
-vtkSmartPointer<vtkDataObject> RunSession::Write(vtkDataObject* data, const char* name) {
+void RunSession::Write(vtkDataObject* data, const char* name) {
   const std::string path = (fs::path(R.outDir) / name).string();
   if (!data) {
     throw GeoLatticeError("cannot write a null data object to " + path);
@@ -155,7 +155,6 @@ vtkSmartPointer<vtkDataObject> RunSession::Write(vtkDataObject* data, const char
   vtkSmartPointer<vtkDataObject> copy = vtk::TakeSmartPointer(data->NewInstance());
   copy->DeepCopy(data);  // the pipeline goes on (and may run the stage again) meanwhile
   this->Post(path, {path}, [copy, path] { writeVtkXml(copy, path); });
-  return copy;
 }
 
 void RunSession::CheckWriters() {

@@ -64,8 +64,7 @@ public:
   /// One stderr line of a gate: "stopped: ..." or "warning: ...".
   void GateLine(const std::string& line, bool warning = false);
   /// Writes a deep copy of `data` as OUTDIR/name (VTK XML) on the writer thread and records it.
-  /// Returns the copy: a later job of the writer thread may read it too (it runs after this one).
-  vtkSmartPointer<vtkDataObject> Write(vtkDataObject* data, const char* name);
+  void Write(vtkDataObject* data, const char* name);
   /// Posts `write` to the writer thread (`replay`: to ReplayWriter) as the job of `path` (its
   /// seconds) and records the files it writes, `records`, in the order of the run; a job that
   /// fails or is skipped takes them out of the record again (WaitForFiles).

@@ -432,6 +432,13 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     int removedRegions = 0;
   };
   std::optional<ReadRun> speculative;
+  auto takeSpeculative = [&] {  // its mesh, as if run() had just returned it
+    TetMesh mesh = std::move(speculative->mesh);
+    lastCheck = speculative->check;
+    removedRegions = speculative->removedRegions;
+    speculative.reset();
+    return mesh;
+  };
   TetMesh best;
   double startEdge = firstEdge;  // of the run the search starts from
   if (automatic && options.autoTargetTets <= kSpeculativeMaxTargetTets) {
@@ -452,11 +459,8 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     }
     if (speculative && miss(speculative->mesh.tets.size()) <= std::log(kAutoTolerance)) {
       startedRuns.clear();  // the first run is not needed: stop it now, it holds a core
-      best = std::move(speculative->mesh);
-      lastCheck = speculative->check;
-      removedRegions = speculative->removedRegions;
+      best = takeSpeculative();
       startEdge = speculativeEdge;
-      speculative.reset();
     }
   }
   if (best.tets.empty()) {
@@ -503,15 +507,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       if (!(std::abs(next - edge) > 1e-9 * edge)) {
         break;  // no further change possible (the bound is the bounding-box diagonal)
       }
-      TetMesh mesh;
-      if (speculative) {
-        mesh = std::move(speculative->mesh);
-        lastCheck = speculative->check;
-        removedRegions = speculative->removedRegions;
-        speculative.reset();
-      } else {
-        mesh = run(next);
-      }
+      TetMesh mesh = speculative ? takeSpeculative() : run(next);
       ++result.attempts;
       const double nextCount = static_cast<double>(mesh.tets.size());
       // Keep the slope negative and not too flat, so the next step stays bounded.
