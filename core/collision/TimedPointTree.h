@@ -75,6 +75,7 @@ public:
       }
     }
   }
+  const Node& node(int id) const { return nodes_[static_cast<size_t>(id)]; }  ///< left, right
   int pointAt(int i) const { return order_[i]; }  ///< the point at position i of the tree's order
   int timeOf(int q) const { return time_[q]; }
 

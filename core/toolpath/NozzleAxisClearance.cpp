@@ -70,7 +70,7 @@ struct Obstacles {
     double cosSpread;   ///< cosine of the ball's angular radius seen from the tip
     double sinSpread;   ///< its sine
     bool around;        ///< the tip is inside the ball: never passed over
-    int begin, end;     ///< its points: tree.pointAt(i), i in [begin, end)
+    const TimedPointTree::Node* node;  ///< its points: tree.pointAt(i), i in [begin, end)
   };
   const std::vector<Vec3>& points;
   const NozzleVolume& wide;  ///< the nozzle with the margin added to its angle
@@ -79,30 +79,36 @@ struct Obstacles {
   Vec3 tip = Vec3::Zero();
   int now = 0;  ///< the station: material with an earlier time is an obstacle
   std::vector<Cluster> clusters;
+  std::vector<std::pair<double, int>> ranked;  ///< deepest()'s scratch: clusters by bound
   /// The points that blocked the latest candidate axes, most recent first: neighbouring
   /// candidates (around a ring of tilts) are mostly blocked by one of a few.
   std::array<int, 8> blockers{};
   int blockerCount = 0;
 
-  void add(const Vec3& centre, double radius, int begin, int end) {
-    Cluster c{Vec3::UnitZ(), -2.0, -1.0, 0.0, true, begin, end};
-    const Vec3 v = centre - tip;
+  /// A node with at most this many points is scanned, not descended (cheaper).
+  static constexpr int kScanPoints = 16;
+  /// A node of the tree as seen from the tip.
+  Cluster clusterOf(const TimedPointTree::Node& node) const {
+    Cluster c{Vec3::UnitZ(), -2.0, -1.0, 0.0, true, &node};
+    const Vec3 v = node.centre - tip;
     const double distance = v.norm();
-    if (distance > radius * (1 + 1e-12) && distance > 0) {
+    if (distance > node.radius * (1 + 1e-12) && distance > 0) {
       c.around = false;
       c.direction = v / distance;
-      c.sinSpread = radius / distance;
+      c.sinSpread = node.radius / distance;
       c.cosSpread = std::sqrt(std::max(0.0, 1 - c.sinSpread * c.sinSpread));
       double cosClear, sinClear;
-      clearAngle.between(distance - radius, distance + radius, cosClear, sinClear);
+      clearAngle.between(distance - node.radius, distance + node.radius, cosClear, sinClear);
       c.cosOutside = cosOfSum(cosClear, sinClear, c.sinSpread);
     }
-    clusters.push_back(c);
+    return c;
   }
-  /// Calls f(q) for the earlier material of a cluster; stops when f returns true.
+  void add(const TimedPointTree::Node& node) { clusters.push_back(clusterOf(node)); }
+  /// Calls f(q) for the earlier material of a cluster, in the tree's order; stops when f returns
+  /// true.
   template <class F>
   bool anyPoint(const Cluster& c, F&& f) const {
-    for (int i = c.begin; i < c.end; ++i) {
+    for (int i = c.node->begin; i < c.node->end; ++i) {
       const int q = tree.pointAt(i);
       if (tree.timeOf(q) < now && f(q)) {
         return true;
@@ -110,27 +116,111 @@ struct Obstacles {
     }
     return false;
   }
-  /// The obstacle deepest inside the wide nozzle at axis n (largest cosine to n), or -1.
-  int deepest(const Vec3& n) const {
-    int best = -1;
-    double bestCos = -2, bestSin = 0;
-    for (const Cluster& c : clusters) {
-      const double dot = c.direction.dot(n);
-      if (!c.around && (dot <= c.cosOutside ||
-                        (best >= 0 && dot <= bestCos * c.cosSpread - bestSin * c.sinSpread))) {
-        continue;  // outside, or no point of it nearer the axis than the best: angle >= best's
+  /// anyPoint, but a large cluster is descended instead of scanned: a sub-ball that
+  /// skip(its cluster) rules out is passed over (it holds no point f is looking for). The
+  /// points left are visited in the same order. A far cluster can hold thousands of points of
+  /// which a few lie inside the nozzle (e.g. the build plate seen from a tilted station).
+  template <class Skip, class F>
+  bool anyPoint(const Cluster& c, Skip&& skip, F&& f) const {
+    std::array<const TimedPointTree::Node*, 64> stack;  // depth < 34, see TimedPointTree
+    int top = 0;
+    stack[top++] = c.node;
+    while (top > 0) {
+      const TimedPointTree::Node& node = *stack[--top];
+      if (node.minTime >= now || (&node != c.node && skip(clusterOf(node)))) {
+        continue;
       }
-      anyPoint(c, [&](int q) {
-        if (wide.contains(tip, n, points[q])) {
-          const double cq = (points[q] - tip).normalized().dot(n);
-          if (cq > bestCos) {
-            bestCos = cq;
-            bestSin = std::sqrt(std::max(0.0, 1 - cq * cq));
-            best = q;
+      if (node.left < 0 || node.end - node.begin <= kScanPoints) {
+        for (int i = node.begin; i < node.end; ++i) {
+          const int q = tree.pointAt(i);
+          if (tree.timeOf(q) < now && f(q)) {
+            return true;
           }
         }
-        return false;
-      });
+        continue;
+      }
+      stack[top++] = &tree.node(node.right);  // the left half first: the tree's order
+      stack[top++] = &tree.node(node.left);
+    }
+    return false;
+  }
+  /// The largest cosine to n a point of cluster c can have (its angle to n less its angular
+  /// radius), or 2 around the tip; dot = c.direction·n.
+  static double upperCosine(const Cluster& c, double dot) {
+    if (c.around) {
+      return 2.0;
+    }
+    if (dot >= c.cosSpread) {
+      return 1.0;  // n points into the ball
+    }
+    return dot * c.cosSpread + std::sqrt(std::max(0.0, 1 - dot * dot)) * c.sinSpread;
+  }
+  /// The obstacle deepest inside the wide nozzle at axis n (largest cosine to n; of equals, the
+  /// first in the tree's order, which is the clusters' order), or -1. Best first: clusters and
+  /// then sub-balls by the largest cosine their points can have, so once a deep obstacle is
+  /// known the rest is passed over (a plate seen from a tilted station has thousands of points
+  /// inside the nozzle; scanning them in order found the deepest after ~1000 each).
+  int deepest(const Vec3& n) {
+    // A bound this much below the best cannot hide an equal point (rounding of the bound).
+    constexpr double kSlack = 1e-12;
+    ranked.clear();
+    for (size_t j = 0; j < clusters.size(); ++j) {
+      const Cluster& c = clusters[j];
+      const double dot = c.direction.dot(n);
+      if (c.around || dot > c.cosOutside) {
+        ranked.push_back({upperCosine(c, dot), static_cast<int>(j)});
+      }
+    }
+    std::sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) {
+      return x.first > y.first || (x.first == y.first && x.second < y.second);
+    });
+    int best = -1, bestAt = std::numeric_limits<int>::max();
+    double bestCos = -2;
+    std::array<std::pair<const TimedPointTree::Node*, double>, 64> stack;  // depth < 34
+    for (const auto& [bound, j] : ranked) {
+      if (bound < bestCos - kSlack) {
+        break;  // sorted: no later cluster holds a deeper point
+      }
+      int top = 0;
+      stack[top++] = {clusters[static_cast<size_t>(j)].node, bound};
+      while (top > 0) {
+        const auto [node, upper] = stack[--top];
+        if (node->minTime >= now || upper < bestCos - kSlack) {
+          continue;
+        }
+        if (node->left < 0 || node->end - node->begin <= kScanPoints) {
+          for (int i = node->begin; i < node->end; ++i) {
+            const int q = tree.pointAt(i);
+            if (tree.timeOf(q) >= now || !wide.contains(tip, n, points[q])) {
+              continue;
+            }
+            const double cq = (points[q] - tip).normalized().dot(n);
+            if (cq > bestCos || (cq == bestCos && i < bestAt)) {
+              bestCos = cq;
+              bestAt = i;
+              best = q;
+            }
+          }
+          continue;
+        }
+        // The child that may hold the deeper point is taken first.
+        std::array<std::pair<const TimedPointTree::Node*, double>, 2> children;
+        int count = 0;
+        for (const int id : {node->left, node->right}) {
+          const TimedPointTree::Node& child = tree.node(id);
+          const Cluster cc = clusterOf(child);
+          const double dot = cc.direction.dot(n);
+          if (cc.around || dot > cc.cosOutside) {
+            children[count++] = {&child, upperCosine(cc, dot)};
+          }
+        }
+        if (count == 2 && children[0].second > children[1].second) {
+          std::swap(children[0], children[1]);
+        }
+        for (int k = 0; k < count; ++k) {
+          stack[top++] = children[k];
+        }
+      }
     }
     return best;
   }
@@ -142,11 +232,14 @@ struct Obstacles {
         return false;
       }
     }
+    auto outside = [&](const Cluster& c) {
+      return !c.around && c.direction.dot(n) <= c.cosOutside;
+    };
     for (const Cluster& c : clusters) {
-      if (!c.around && c.direction.dot(n) <= c.cosOutside) {
+      if (outside(c)) {
         continue;
       }
-      if (anyPoint(c, [&](int q) {
+      if (anyPoint(c, outside, [&](int q) {
             if (!wide.contains(tip, n, points[q])) {
               return false;
             }
@@ -492,7 +585,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   const size_t searchChunks = (colliding.size() + 63) / 64;
   const int workers = workerCount(o.threads, searchChunks);
   std::vector<Obstacles> scratch(
-      workers, Obstacles{all, wide, tree, clearAngle, Vec3::Zero(), 0, {}, {}, 0});
+      workers, Obstacles{all, wide, tree, clearAngle, Vec3::Zero(), 0, {}, {}, {}, 0});
   // Clusters: a node is kept whole when it looks smaller than this from the tip. topopt's
   // toolpath stage (before KnownClear): 13.9 s at 0.5°, 9.3 s at 2°, 8.4 s at 4°, 7.2 s at 8°,
   // 8.0 s at 15° (docs/performance.md).
@@ -536,7 +629,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
                 return radius <= sinSmall * (centre - points[k]).norm();
               },
               [&](const TimedPointTree::Node& node) {
-                obstacles.add(node.centre, node.radius, node.begin, node.end);
+                obstacles.add(node);
                 const Obstacles::Cluster& cl = obstacles.clusters.back();
                 if (coneOnly && cosHopeless < 2 &&
                     (cl.around ||
