@@ -3,6 +3,7 @@
 #include "collision/TimedPointTree.h"
 #include "common/Error.h"
 #include "common/ParallelFor.h"
+#include "toolpath/PathObstacleTrees.h"
 #include "toolpath/PathSubdivision.h"
 
 #include <Eigen/Geometry>
@@ -58,7 +59,7 @@ struct ClearAngle {
 };
 
 /// Earlier material that may enter the nozzle at tip p for some axis within the tilt limit, held
-/// as clusters of the kd-tree: leaves near the tip, whole nodes far away (angularly small seen
+/// as clusters of the kd-trees: leaves near the tip, whole nodes far away (angularly small seen
 /// from the tip). A cluster whose ball lies outside the wide nozzle at an axis is passed over
 /// with one dot product (its angular radius plus the largest clear angle over its distances,
 /// the bound TiltedNozzleBound uses); every other point is tested exactly, so each answer is
@@ -70,26 +71,36 @@ struct Obstacles {
     double cosSpread;   ///< cosine of the ball's angular radius seen from the tip
     double sinSpread;   ///< its sine
     bool around;        ///< the tip is inside the ball: never passed over
-    const TimedPointTree::Node* node;  ///< its points: tree.pointAt(i), i in [begin, end)
+    int tree;           ///< which of the PathObstacleTrees
+    const TimedPointTree::Node* node;  ///< its points: the tree's pointAt(i), i in [begin, end)
   };
-  const std::vector<Vec3>& points;
-  const NozzleVolume& wide;  ///< the nozzle with the margin added to its angle
-  const TimedPointTree& tree;
+  const PathObstacleTrees& trees;
+  const NozzleVolume& wide;      ///< the nozzle with the margin added to its angle
   const ClearAngle& clearAngle;  ///< wide's clear angle
   Vec3 tip = Vec3::Zero();
-  int now = 0;  ///< the station: material with an earlier time is an obstacle
+  /// The station's time in each tree: material with an earlier time is an obstacle.
+  std::array<int, PathObstacleTrees::kTrees> now{};
   std::vector<Cluster> clusters;
   std::vector<std::pair<double, int>> ranked;  ///< deepest()'s scratch: clusters by bound
   /// The points that blocked the latest candidate axes, most recent first: neighbouring
   /// candidates (around a ring of tilts) are mostly blocked by one of a few.
-  std::array<int, 8> blockers{};
+  std::array<Vec3, 8> blockers;
   int blockerCount = 0;
 
+  /// For the station at path index k with its tip at p.
+  void setStation(int k, const Vec3& p) {
+    tip = p;
+    for (int s = 0; s < PathObstacleTrees::kTrees; ++s) {
+      now[static_cast<size_t>(s)] = trees.now(s, k);
+    }
+    clusters.clear();
+    blockerCount = 0;
+  }
   /// A node with at most this many points is scanned, not descended (cheaper).
   static constexpr int kScanPoints = 16;
-  /// A node of the tree as seen from the tip.
-  Cluster clusterOf(const TimedPointTree::Node& node) const {
-    Cluster c{Vec3::UnitZ(), -2.0, -1.0, 0.0, true, &node};
+  /// A node of tree s as seen from the tip.
+  Cluster clusterOf(const TimedPointTree::Node& node, int s) const {
+    Cluster c{Vec3::UnitZ(), -2.0, -1.0, 0.0, true, s, &node};
     const Vec3 v = node.centre - tip;
     const double distance = v.norm();
     if (distance > node.radius * (1 + 1e-12) && distance > 0) {
@@ -103,18 +114,26 @@ struct Obstacles {
     }
     return c;
   }
-  void add(const TimedPointTree::Node& node) { clusters.push_back(clusterOf(node)); }
-  /// Calls f(q) for the earlier material of a cluster, in the tree's order; stops when f returns
-  /// true.
+  void add(const TimedPointTree::Node& node, int s) { clusters.push_back(clusterOf(node, s)); }
+  /// Calls f(x, i) for the earlier material x of the points [begin, end) of a cluster's tree
+  /// (i: its position there); stops when f returns true.
   template <class F>
-  bool anyPoint(const Cluster& c, F&& f) const {
-    for (int i = c.node->begin; i < c.node->end; ++i) {
+  bool scan(int s, const TimedPointTree::Node& node, F&& f) const {
+    const TimedPointTree& tree = trees.tree(s);
+    const std::vector<Vec3>& x = trees.points(s);
+    for (int i = node.begin; i < node.end; ++i) {
       const int q = tree.pointAt(i);
-      if (tree.timeOf(q) < now && f(q)) {
+      if (tree.timeOf(q) < now[static_cast<size_t>(s)] && f(x[q], i)) {
         return true;
       }
     }
     return false;
+  }
+  /// Calls f(x) for the earlier material of a cluster, in the tree's order; stops when f returns
+  /// true.
+  template <class F>
+  bool anyPoint(const Cluster& c, F&& f) const {
+    return scan(c.tree, *c.node, [&](const Vec3& x, int) { return f(x); });
   }
   /// anyPoint, but a large cluster is descended instead of scanned: a sub-ball that
   /// skip(its cluster) rules out is passed over (it holds no point f is looking for). The
@@ -122,20 +141,19 @@ struct Obstacles {
   /// which a few lie inside the nozzle (e.g. the build plate seen from a tilted station).
   template <class Skip, class F>
   bool anyPoint(const Cluster& c, Skip&& skip, F&& f) const {
+    const TimedPointTree& tree = trees.tree(c.tree);
+    const int before = now[static_cast<size_t>(c.tree)];
     std::array<const TimedPointTree::Node*, 64> stack;  // depth < 34, see TimedPointTree
     int top = 0;
     stack[top++] = c.node;
     while (top > 0) {
       const TimedPointTree::Node& node = *stack[--top];
-      if (node.minTime >= now || (&node != c.node && skip(clusterOf(node)))) {
+      if (node.minTime >= before || (&node != c.node && skip(clusterOf(node, c.tree)))) {
         continue;
       }
       if (node.left < 0 || node.end - node.begin <= kScanPoints) {
-        for (int i = node.begin; i < node.end; ++i) {
-          const int q = tree.pointAt(i);
-          if (tree.timeOf(q) < now && f(q)) {
-            return true;
-          }
+        if (scan(c.tree, node, [&](const Vec3& x, int) { return f(x); })) {
+          return true;
         }
         continue;
       }
@@ -156,11 +174,11 @@ struct Obstacles {
     return dot * c.cosSpread + std::sqrt(std::max(0.0, 1 - dot * dot)) * c.sinSpread;
   }
   /// The obstacle deepest inside the wide nozzle at axis n (largest cosine to n; of equals, the
-  /// first in the tree's order, which is the clusters' order), or -1. Best first: clusters and
-  /// then sub-balls by the largest cosine their points can have, so once a deep obstacle is
-  /// known the rest is passed over (a plate seen from a tilted station has thousands of points
-  /// inside the nozzle; scanning them in order found the deepest after ~1000 each).
-  int deepest(const Vec3& n) {
+  /// first in the clusters' order, then the tree's), or null. Best first: clusters and then
+  /// sub-balls by the largest cosine their points can have, so once a deep obstacle is known
+  /// the rest is passed over (a plate seen from a tilted station has thousands of points inside
+  /// the nozzle; scanning them in order found the deepest after ~1000 each).
+  const Vec3* deepest(const Vec3& n) {
     // A bound this much below the best cannot hide an equal point (rounding of the bound).
     constexpr double kSlack = 1e-12;
     ranked.clear();
@@ -174,33 +192,36 @@ struct Obstacles {
     std::sort(ranked.begin(), ranked.end(), [](const auto& x, const auto& y) {
       return x.first > y.first || (x.first == y.first && x.second < y.second);
     });
-    int best = -1, bestAt = std::numeric_limits<int>::max();
+    const Vec3* best = nullptr;
+    std::pair<int, int> bestAt{0, 0};  // (cluster, position in its tree) of the best
     double bestCos = -2;
     std::array<std::pair<const TimedPointTree::Node*, double>, 64> stack;  // depth < 34
     for (const auto& [bound, j] : ranked) {
       if (bound < bestCos - kSlack) {
         break;  // sorted: no later cluster holds a deeper point
       }
+      const Cluster& c = clusters[static_cast<size_t>(j)];
+      const TimedPointTree& tree = trees.tree(c.tree);
+      const int before = now[static_cast<size_t>(c.tree)];
       int top = 0;
-      stack[top++] = {clusters[static_cast<size_t>(j)].node, bound};
+      stack[top++] = {c.node, bound};
       while (top > 0) {
         const auto [node, upper] = stack[--top];
-        if (node->minTime >= now || upper < bestCos - kSlack) {
+        if (node->minTime >= before || upper < bestCos - kSlack) {
           continue;
         }
         if (node->left < 0 || node->end - node->begin <= kScanPoints) {
-          for (int i = node->begin; i < node->end; ++i) {
-            const int q = tree.pointAt(i);
-            if (tree.timeOf(q) >= now || !wide.contains(tip, n, points[q])) {
-              continue;
+          scan(c.tree, *node, [&](const Vec3& x, int i) {
+            if (wide.contains(tip, n, x)) {
+              const double cq = (x - tip).normalized().dot(n);
+              if (cq > bestCos || (cq == bestCos && std::make_pair(j, i) < bestAt)) {
+                bestCos = cq;
+                bestAt = {j, i};
+                best = &x;
+              }
             }
-            const double cq = (points[q] - tip).normalized().dot(n);
-            if (cq > bestCos || (cq == bestCos && i < bestAt)) {
-              bestCos = cq;
-              bestAt = i;
-              best = q;
-            }
-          }
+            return false;
+          });
           continue;
         }
         // The child that may hold the deeper point is taken first.
@@ -208,7 +229,7 @@ struct Obstacles {
         int count = 0;
         for (const int id : {node->left, node->right}) {
           const TimedPointTree::Node& child = tree.node(id);
-          const Cluster cc = clusterOf(child);
+          const Cluster cc = clusterOf(child, c.tree);
           const double dot = cc.direction.dot(n);
           if (cc.around || dot > cc.cosOutside) {
             children[count++] = {&child, upperCosine(cc, dot)};
@@ -227,7 +248,7 @@ struct Obstacles {
   /// No obstacle inside the wide nozzle at axis n.
   bool clear(const Vec3& n) {
     for (int b = 0; b < blockerCount; ++b) {
-      if (wide.contains(tip, n, points[blockers[b]])) {
+      if (wide.contains(tip, n, blockers[b])) {
         std::rotate(blockers.begin(), blockers.begin() + b, blockers.begin() + b + 1);
         return false;
       }
@@ -239,14 +260,14 @@ struct Obstacles {
       if (outside(c)) {
         continue;
       }
-      if (anyPoint(c, outside, [&](int q) {
-            if (!wide.contains(tip, n, points[q])) {
+      if (anyPoint(c, outside, [&](const Vec3& x) {
+            if (!wide.contains(tip, n, x)) {
               return false;
             }
             blockerCount = std::min<int>(blockerCount + 1, static_cast<int>(blockers.size()));
             std::rotate(blockers.begin(), blockers.begin() + blockerCount - 1,
                         blockers.begin() + blockerCount);
-            blockers[0] = q;
+            blockers[0] = x;
             return true;
           })) {
         return false;
@@ -294,13 +315,13 @@ bool findClearAxis(Obstacles& obstacles, const Vec3& reference, const Vec3& curr
   bool projected = false;
   double projectedTilt = maxTilt;
   for (int iteration = 0; iteration < 30; ++iteration) {
-    const int q = obstacles.deepest(n);
-    if (q < 0) {
+    const Vec3* q = obstacles.deepest(n);
+    if (!q) {
       projected = true;
       projectedTilt = angleBetween(n, reference);
       break;
     }
-    const Vec3 toObstacle = obstacles.points[q] - obstacles.tip;
+    const Vec3 toObstacle = *q - obstacles.tip;
     const Vec3 u = toObstacle.normalized();
     Vec3 w = n - u.dot(n) * u;
     if (w.norm() < 1e-12) {
@@ -331,9 +352,9 @@ bool findClearAxis(Obstacles& obstacles, const Vec3& reference, const Vec3& curr
   // those rings hold no clear axis (with a margin: the skipped rings are blocked for certain).
   double blockedBelow = 0;
   if (coneAngle > 0) {
-    const int q = obstacles.deepest(reference);
-    if (q >= 0) {
-      const Vec3 d = obstacles.points[q] - obstacles.tip;
+    const Vec3* q = obstacles.deepest(reference);
+    if (q) {
+      const Vec3 d = *q - obstacles.tip;
       if (d.norm() * std::cos(coneAngle) > obstacles.wide.clearance) {
         blockedBelow = coneAngle - angleBetween(d.normalized(), reference) - 1e-9;
       }
@@ -386,7 +407,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
                                     const AxisClearanceOptions& o,
                                     const std::vector<Vec3>* fixedObstacles,
                                     std::vector<char>* unresolvable, AxisSearchMemo* memo,
-                                    KnownClear* known) {
+                                    KnownClear* known, PathObstacleTrees* obstacleTrees) {
   const auto t0 = std::chrono::steady_clock::now();
   nozzle.validate();
   o.validate();
@@ -399,18 +420,11 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
         "flags must have the same length");
   }
   AxisClearanceResult result;
-  // Obstacles: the material points at their index along the path, then the fixed obstacles
-  // (present at every station).
-  std::vector<Vec3> all = points;
-  std::vector<int> obstacleTime(N);
-  for (size_t i = 0; i < N; ++i) {
-    obstacleTime[i] = material[i] ? static_cast<int>(i) : std::numeric_limits<int>::max();
-  }
-  if (fixedObstacles) {
-    all.insert(all.end(), fixedObstacles->begin(), fixedObstacles->end());
-    obstacleTime.resize(all.size(), -1);
-  }
-  const TimedPointTree tree(all, obstacleTime);
+  // Obstacles: the material before each station and the fixed obstacles (present at every
+  // station), indexed once per pass or kept from an earlier pass (PathObstacleTrees).
+  PathObstacleTrees ownTrees;
+  PathObstacleTrees& trees = obstacleTrees ? *obstacleTrees : ownTrees;
+  trees.index(points, material, fixedObstacles);
 
   // With a memo: each station's material ordinal, and the material and the axes it is checked
   // at, by ordinal. The memo's answers hold for the stations whose earlier material is the
@@ -476,13 +490,17 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
             }
             continue;
           }
-          const bool onlyInserted = known && known->clear[k];
-          const std::vector<Vec3>& candidates = onlyInserted ? insertedPoints : all;
-          (onlyInserted ? insertedTree : tree)
-              .forEachCandidate(bound, static_cast<int>(k), [&](int q) {
-                hit = volume.contains(points[k], axes[k], candidates[q]);
-                return hit;
-              });
+          if (known && known->clear[k]) {
+            insertedTree.forEachCandidate(bound, static_cast<int>(k), [&](int q) {
+              hit = volume.contains(points[k], axes[k], insertedPoints[q]);
+              return hit;
+            });
+          } else {
+            trees.forEachCandidate(bound, static_cast<int>(k), [&](const Vec3& x) {
+              hit = volume.contains(points[k], axes[k], x);
+              return hit;
+            });
+          }
           if (hit) {
             found[c].push_back(static_cast<int>(k));
           }
@@ -585,7 +603,7 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   const size_t searchChunks = (colliding.size() + 63) / 64;
   const int workers = workerCount(o.threads, searchChunks);
   std::vector<Obstacles> scratch(
-      workers, Obstacles{all, wide, tree, clearAngle, Vec3::Zero(), 0, {}, {}, {}, 0});
+      workers, Obstacles{trees, wide, clearAngle, Vec3::Zero(), {}, {}, {}, {}, 0});
   // Clusters: a node is kept whole when it looks smaller than this from the tip. topopt's
   // toolpath stage (before KnownClear): 13.9 s at 0.5°, 9.3 s at 2°, 8.4 s at 4°, 7.2 s at 8°,
   // 8.0 s at 15° (docs/performance.md).
@@ -604,16 +622,13 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
             outcome[i] = Known;
             continue;
           }
-          obstacles.tip = points[k];
-          obstacles.now = k;
-          obstacles.clusters.clear();
-          obstacles.blockerCount = 0;
+          obstacles.setStation(k, points[k]);
           bound.cone.setStation(points[k], reference[k]);
           const Vec3& r = reference[k];
           // A point above the tip plane for every allowed axis and inside every allowed cone
           // (cone-only nozzle): the station cannot be cleared, stop looking.
-          auto hopelessPoint = [&](int q) {
-            const Vec3 d = all[q] - points[k];
+          auto hopelessPoint = [&](const Vec3& x) {
+            const Vec3 d = x - points[k];
             const double d2 = d.squaredNorm();
             if (d2 <= face2) {
               return false;
@@ -623,21 +638,23 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
                    d.dot(r) * std::cos(maxTilt) > nozzle.tipClearance + length * std::sin(maxTilt);
           };
           bool cannot = false;
-          tree.forEachCluster(
-              bound, k,
-              [&](const Vec3& centre, double radius) {
-                return radius <= sinSmall * (centre - points[k]).norm();
-              },
-              [&](const TimedPointTree::Node& node) {
-                obstacles.add(node);
-                const Obstacles::Cluster& cl = obstacles.clusters.back();
-                if (coneOnly && cosHopeless < 2 &&
-                    (cl.around ||
-                     cl.direction.dot(r) > cosOfSum(cosHopeless, sinHopeless, cl.sinSpread))) {
-                  cannot = obstacles.anyPoint(cl, hopelessPoint);
-                }
-                return cannot;
-              });
+          for (int t = 0; t < PathObstacleTrees::kTrees && !cannot; ++t) {
+            trees.tree(t).forEachCluster(
+                bound, trees.now(t, k),
+                [&](const Vec3& centre, double radius) {
+                  return radius <= sinSmall * (centre - points[k]).norm();
+                },
+                [&](const TimedPointTree::Node& node) {
+                  obstacles.add(node, t);
+                  const Obstacles::Cluster& cl = obstacles.clusters.back();
+                  if (coneOnly && cosHopeless < 2 &&
+                      (cl.around ||
+                       cl.direction.dot(r) > cosOfSum(cosHopeless, sinHopeless, cl.sinSpread))) {
+                    cannot = obstacles.anyPoint(cl, hopelessPoint);
+                  }
+                  return cannot;
+                });
+          }
           if (cannot) {
             outcome[i] = Unresolved;
             continue;
@@ -730,8 +747,8 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
           bool hit = false;
           if (o.fadeOnlyWhereClear) {
             bound.setStation(points[j], turned);
-            tree.forEachCandidate(bound, j, [&](int q) {
-              hit = volume.contains(points[j], turned, all[q]);
+            trees.forEachCandidate(bound, j, [&](const Vec3& x) {
+              hit = volume.contains(points[j], turned, x);
               return hit;
             });
           }

@@ -19,6 +19,7 @@
 /// obstacle search and tilt only for colliding stations.
 #include "nozzle/NozzleModel.h"
 #include "mesh/TetMesh.h"
+#include "toolpath/PathObstacleTrees.h"
 
 #include <functional>
 #include <vector>
@@ -96,13 +97,16 @@ struct KnownClear {
 /// inserted, none move), so one no tilt cleared stays so. memo (optional, in/out): searches of
 /// an earlier pass reused where their inputs are the same (AxisSearchMemo); then replaced by
 /// this pass's. known (optional, in/out): KnownClear; on return `clear` holds this pass's clear
-/// stations whose axes it left as they were, `inserted` is untouched.
+/// stations whose axes it left as they were, `inserted` is untouched. obstacleTrees (optional,
+/// in/out): the obstacles' kd-trees of an earlier pass, kept where they still hold
+/// (PathObstacleTrees.h), and this pass's for the next; the result is the same without.
 AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector<Vec3>& axes,
                                     const std::vector<Vec3>& reference,
                                     const std::vector<char>& material, const NozzleModel& nozzle,
                                     const AxisClearanceOptions& options,
                                     const std::vector<Vec3>* fixedObstacles = nullptr,
                                     std::vector<char>* unresolvable = nullptr,
-                                    AxisSearchMemo* memo = nullptr, KnownClear* known = nullptr);
+                                    AxisSearchMemo* memo = nullptr, KnownClear* known = nullptr,
+                                    PathObstacleTrees* obstacleTrees = nullptr);
 
 }  // namespace geolattice

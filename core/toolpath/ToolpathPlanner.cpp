@@ -146,7 +146,8 @@ constexpr int kSettlingRound = 2;
 std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
                             const ProgressReporter& progress,
                             const std::function<bool(int)>& replannable = {},
-                            std::vector<AxisSearchMemo>* memos = nullptr) {
+                            std::vector<AxisSearchMemo>* memos = nullptr,
+                            PathObstacleTrees* trees = nullptr) {
   AxisClearanceOptions clearance = o.clearance;
   clearance.shouldAbort = o.shouldAbort;
   const double maxTurn = o.maxTurnDeg * M_PI / 180.0;
@@ -199,7 +200,7 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
     clearance.fadeOnlyWhereClear = round >= kSettlingRound;
     const AxisClearanceResult r = clearNozzleAxes(
         path.points, path.normals, reference, materialOf(), o.nozzle, clearance, fixed,
-        &unresolvable, memos ? &(*memos)[static_cast<size_t>(round)] : nullptr, &known);
+        &unresolvable, memos ? &(*memos)[static_cast<size_t>(round)] : nullptr, &known, trees);
     progress.report(static_cast<double>(round + 1) / kClearanceRounds);
     if (replannable) {
       std::vector<int> stuck;
@@ -229,7 +230,7 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
     detectOnly.maxTiltDeg = 0;
     const AxisClearanceResult r =
         clearNozzleAxes(path.points, path.normals, reference, materialOf(), o.nozzle, detectOnly,
-                        fixed, nullptr, nullptr, &known);
+                        fixed, nullptr, nullptr, &known, trees);
     path.unclearedStations = r.collidingStations;
     uncleared = r.colliding;
     if (path.clearanceRounds == 0) {
@@ -426,6 +427,9 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
   // attempt reuses the same round's detection and least-tilt searches of the earlier one where
   // the material before a station is still the same (AxisSearchMemo).
   std::vector<AxisSearchMemo> memos(kClearanceRounds);
+  // Their material is also the same up to inserted points: every pass keeps the obstacles'
+  // kd-trees of the first where it can (PathObstacleTrees).
+  PathObstacleTrees trees;
   for (int attempt = 0;; ++attempt) {
     path = base;
     loopsAt = loopsAtStart;
@@ -544,7 +548,7 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
     constexpr int kLastAttempt = 2;
     const std::vector<int> uncleared = finishAxes(
         path, o, attemptProgress.part(0.3, 1.0),
-        attempt < kLastAttempt ? std::function<bool(int)>(replannable) : nullptr, &memos);
+        attempt < kLastAttempt ? std::function<bool(int)>(replannable) : nullptr, &memos, &trees);
     int replan = 0;
     for (int i : uncleared) {
       if (replannable(i)) {
