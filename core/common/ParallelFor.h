@@ -4,7 +4,8 @@
 /// workers (0 = hardware concurrency, never more than n). The first exception a worker throws
 /// stops the hand-out and is rethrown on the calling thread after all workers have joined, so
 /// errors propagate like in a serial loop. Progress callbacks stay on the calling thread:
-/// `onDone` (optional) runs there after each finished item, with the number finished so far.
+/// `onDone` (optional) runs there once per finished item, with the number finished so far (1,
+/// 2, ..., n in order; a late wake-up makes up the counts it missed).
 #include <algorithm>
 #include <atomic>
 #include <condition_variable>
@@ -67,16 +68,21 @@ inline void parallelFor(size_t n, int threads, const std::function<void(size_t, 
   {  // progress on the calling thread
     std::unique_lock<std::mutex> lock(mutex);
     size_t reported = 0;
-    while (done < n && !failed) {
+    while (reported < n && !failed) {  // to n, also when the workers were done first
       changed.wait(lock, [&] { return done > reported || failed; });
       if (done > reported && !failed) {
-        reported = done;
+        const size_t now = done;
         if (!onDone) {
+          reported = now;
           continue;
         }
         lock.unlock();
         try {
-          onDone(reported);  // may throw, e.g. an abort: stop the workers, rethrow below
+          // Every count, also when this thread woke late and several items finished meanwhile:
+          // callers report progress at counts of their choosing (e.g. each 64th of n).
+          while (reported < now) {
+            onDone(++reported);  // may throw, e.g. an abort: stop the workers, rethrow below
+          }
         } catch (...) {
           lock.lock();
           if (!error) {

@@ -11,10 +11,12 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cmath>
 #include <numeric>
 #include <random>
 #include <stdexcept>
+#include <thread>
 #include <vector>
 
 using namespace geolattice;
@@ -242,6 +244,25 @@ TEST(ParallelFor, EveryItemOnceErrorsAndProgressOnTheCallingThread) {
                      }
                    }),
                GeoLatticeError);
+}
+
+TEST(ParallelFor, ProgressCountsEveryItemWhenTheCallerWakesLate) {
+  // The calling thread is held up in its first callback while the workers finish the rest: it
+  // still reports 2, 3, ..., n after it (callers report at counts of their choosing, e.g. each
+  // 64th, and must not miss one; under load this made the progress of the potential-collision
+  // search skip most of its reports).
+  std::vector<size_t> counts;
+  parallelFor(
+      200, 2, [](size_t, int) {},
+      [&](size_t done) {
+        if (counts.empty()) {
+          std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        counts.push_back(done);
+      });
+  std::vector<size_t> expected(200);
+  std::iota(expected.begin(), expected.end(), size_t{1});
+  EXPECT_EQ(counts, expected);
 }
 
 TEST(AutoOrient, HullCandidatesDoNotDependOnThePointOrder) {
