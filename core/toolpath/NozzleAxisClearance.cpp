@@ -314,8 +314,12 @@ bool findClearAxis(Obstacles& obstacles, const Vec3& reference, const Vec3& curr
   Vec3 n = current;
   bool projected = false;
   double projectedTilt = maxTilt;
+  const Vec3* deepestAtCurrent = nullptr;
   for (int iteration = 0; iteration < 30; ++iteration) {
     const Vec3* q = obstacles.deepest(n);
+    if (iteration == 0) {
+      deepestAtCurrent = q;
+    }
     if (!q) {
       projected = true;
       projectedTilt = angleBetween(n, reference);
@@ -351,8 +355,9 @@ bool findClearAxis(Obstacles& obstacles, const Vec3& reference, const Vec3& curr
   // every axis of a ring of tilt t < NA - θ (its angle to such an axis is at most θ + t), so
   // those rings hold no clear axis (with a margin: the skipped rings are blocked for certain).
   double blockedBelow = 0;
-  if (coneAngle > 0) {
-    const Vec3* q = obstacles.deepest(reference);
+  if (coneAngle > 0 && step <= largest) {  // only where a ring is tried
+    // Untilted stations (most of them in a first round) have it from the projection's start.
+    const Vec3* q = current == reference ? deepestAtCurrent : obstacles.deepest(reference);
     if (q) {
       const Vec3 d = *q - obstacles.tip;
       if (d.norm() * std::cos(coneAngle) > obstacles.wide.clearance) {
