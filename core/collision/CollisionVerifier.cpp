@@ -94,8 +94,37 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
                    [&] { materialTree = std::make_unique<TimedPointTree>(points, obstacleTime); });
     return *materialTree;
   };
+  // The plate's samples alone, for the nearest of them to a station's tip (through the whole
+  // tree, that search would open every ball of material near the tip too).
+  const std::vector<Vec> plateSamples(all.begin() + static_cast<std::ptrdiff_t>(N), all.end());
+  const std::vector<int> plateTime(plateSamples.size(), std::numeric_limits<int>::min());
+  std::unique_ptr<TimedPointTree> plateTree;
+  std::once_flag plateTreeBuilt;
+  auto plateOnly = [&]() -> const TimedPointTree& {
+    std::call_once(plateTreeBuilt,
+                   [&] { plateTree = std::make_unique<TimedPointTree>(plateSamples, plateTime); });
+    return *plateTree;
+  };
   const NozzleVolume volume(nozzle);
   NozzleBound bound(nozzle, volume);
+  // The reported obstacle of a violating station: the one nearest its tip (ties: the lowest
+  // index) among the obstacles of the reported kind (sameKind), so the report does not depend
+  // on the order the tree happens to visit them. hit (one of them) bounds the search.
+  auto nearestOfItsKind = [&](const NozzleBound& station, int k, int& hit, double& height,
+                              double& radial, auto&& sameKind) {
+    hit = tree.nearestCandidate(station, points[k], time[k], hit, [&](int q) {
+      return sameKind(q) && volume.contains(points[k], axis[k], all[q]);
+    });
+    volume.contains(points[k], axis[k], all[hit], &height, &radial);
+  };
+  auto nearestPlateSample = [&](const NozzleBound& station, int k, int& hit, double& height,
+                                double& radial) {
+    const int first = static_cast<int>(N);
+    hit = first + plateOnly().nearestCandidate(
+                      station, points[k], time[k], hit - first,
+                      [&](int q) { return volume.contains(points[k], axis[k], plateSamples[q]); });
+    volume.contains(points[k], axis[k], all[hit], &height, &radial);
+  };
 
   // Stations in print-time order, so the reported violations are the first ones.
   std::vector<int> stations(N);
@@ -122,65 +151,75 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
       station.setStation(points[k], axis[k]);
       // hit: material some order could have kept out of the nozzle; exemptHit: material no
       // order keeps out (a skeleton ancestor's); plateHit: the build plate (no order moves it).
+      // The verdict takes the first kind present in that order (without an exemption material
+      // and plate are one kind), and reports its obstacle nearest the tip.
+      const int plateFirst = static_cast<int>(N);
       int hit = -1, exemptHit = -1, plateHit = -1;
       double height = 0, radial = 0, exemptHeight = 0, exemptRadial = 0;
+      double exemptD2 = 0;
       bool materialLeft = false;  // the plate was found first: search the material alone
       tree.forEachCandidate(station, time[k], [&](int q) {
         double h = 0, r = 0;
         if (!volume.contains(points[k], axis[k], all[q], &h, &r)) {
           return false;
         }
-        const bool onPlate = q >= static_cast<int>(N);
-        if (onPlate && !exemption) {  // no order to blame: the first obstacle decides
-          plateHit = hit = q;
-          height = h;
-          radial = r;
+        const bool onPlate = q >= plateFirst;
+        if (!exemption ||
+            (!onPlate && !exemption->unavoidable(exemption->group[k], exemption->group[q]))) {
+          hit = q;
           return true;
         }
-        if (onPlate ||
-            (exemption && exemption->unavoidable(exemption->group[k], exemption->group[q]))) {
-          if (exemptHit < 0 || (onPlate && plateHit < 0)) {  // keep looking for an avoidable one
-            exemptHit = q;
-            exemptHeight = h;
-            exemptRadial = r;
-          }
-          if (onPlate && plateHit < 0) {
-            plateHit = q;
-            materialLeft = searchPastThePlate;
-            return materialLeft;
-          }
-          return false;
+        if (onPlate) {  // outranks exempt material: only an avoidable obstacle is left to find
+          plateHit = q;
+          materialLeft = searchPastThePlate;
+          return true;
         }
-        hit = q;
-        height = h;
-        radial = r;
-        return true;
+        // Exempt material: the search goes on to its end (unless an avoidable obstacle or the
+        // plate turns up), so its nearest obstacle is found on the way.
+        const double d2 = (all[q] - points[k]).squaredNorm();
+        if (exemptHit < 0 || d2 < exemptD2 || (d2 == exemptD2 && q < exemptHit)) {
+          exemptHit = q;
+          exemptD2 = d2;
+          exemptHeight = h;
+          exemptRadial = r;
+        }
+        return false;
       });
       if (materialLeft) {  // an avoidable obstacle, if any (the plate outranks exempt material)
         materialOnly().forEachCandidate(station, time[k], [&](int q) {
-          double h = 0, r = 0;
-          if (!volume.contains(points[k], axis[k], points[q], &h, &r) ||
+          if (!volume.contains(points[k], axis[k], points[q]) ||
               exemption->unavoidable(exemption->group[k], exemption->group[q])) {
             return false;
           }
           hit = q;
-          height = h;
-          radial = r;
           return true;
         });
       }
-      if (hit < 0 && exemptHit < 0 && plate && tipInsidePlate(*plate, partLo, partHi, points[k])) {
-        plateHit = exemptHit = static_cast<int>(all.size());  // the tip itself is in the plate
-        exemptHeight = exemptRadial = 0;
-      }
-      const bool unavoidable = hit < 0 && exemptHit >= 0;
-      if (unavoidable) {
+      bool unavoidable = false;
+      if (hit >= 0) {
+        if (!exemption) {  // one kind: material or plate
+          nearestOfItsKind(station, k, hit, height, radial, [](int) { return true; });
+        } else {
+          nearestOfItsKind(station, k, hit, height, radial, [&](int q) {
+            return q < plateFirst &&
+                   !exemption->unavoidable(exemption->group[k], exemption->group[q]);
+          });
+        }
+      } else if (plateHit >= 0) {
+        unavoidable = true;
+        hit = plateHit;
+        nearestPlateSample(station, k, hit, height, radial);
+      } else if (exemptHit >= 0) {
+        unavoidable = true;
         hit = exemptHit;
         height = exemptHeight;
         radial = exemptRadial;
+      } else if (plate && tipInsidePlate(*plate, partLo, partHi, points[k])) {
+        unavoidable = true;
+        plateHit = hit = static_cast<int>(all.size());  // the tip itself is in the plate
       }
       if (hit >= 0) {
-        const bool onPlate = plateHit >= 0 && (unavoidable || hit >= static_cast<int>(N));
+        const bool onPlate = hit >= plateFirst;
         verdicts[c].push_back({k, hit, height, radial, unavoidable, onPlate});
       }
     }

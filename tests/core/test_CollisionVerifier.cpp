@@ -139,31 +139,69 @@ TEST(CollisionVerifier, ManyPointsMatchBruteForce) {
     nz.holderLength = holderLength;
     nz.tipClearance = 0.05;
     nz.tipFaceRadius = 0.2;
-    const CollisionReport r = verifyNozzleClearance(p, n, time, nz, 100000);
-    long long brute = 0, nearTip = 0;
-    const double c2 = std::pow(std::cos(20 * M_PI / 180), 2);
-    for (size_t k = 0; k < p.size(); ++k) {
-      bool hit = false;
-      for (size_t q = 0; q < p.size() && !hit; ++q) {
-        if (time[q] >= time[k])
-          continue;
-        const V d = p[q] - p[k];
-        const double h = d.dot(n[k]);
-        if (h <= 0.05)
-          continue;
-        if (d.norm() <= 0.2) {
-          nearTip += h * h > d.squaredNorm() * c2;  // inside the cone but under the tip face
-          continue;
-        }
-        const double r2 = d.squaredNorm() - h * h;
-        hit = h <= 4 ? h * h > d.squaredNorm() * c2 : h <= 4 + holderLength && r2 < 9;
-      }
-      brute += hit;
+    // With an exemption (group g's obstacles from groups below g are unavoidable), the
+    // reported obstacle is the nearest avoidable one, else the nearest exempt one.
+    CollisionExemption exemption;
+    for (size_t i = 0; i < p.size(); ++i) {
+      exemption.group.push_back(static_cast<int>(i % 5));
     }
-    EXPECT_EQ(r.violatingStations, brute) << holderLength;
-    EXPECT_GT(nearTip, 0);  // the face radius was exercised
-    EXPECT_GT(brute, 0);
-    EXPECT_LT(brute, static_cast<long long>(p.size()));
+    exemption.unavoidable = [](int station, int obstacle) {
+      return obstacle < station;
+    };
+    for (const CollisionExemption* judged : {static_cast<const CollisionExemption*>(nullptr),
+                                             static_cast<const CollisionExemption*>(&exemption)}) {
+      const CollisionReport r = verifyNozzleClearance(p, n, time, nz, 100000, judged);
+      long long brute = 0, nearTip = 0, exempt = 0;
+      const double c2 = std::pow(std::cos(20 * M_PI / 180), 2);
+      // Per station: its obstacle nearest the tip, of the avoidable and of the exempt kind.
+      std::vector<int> nearest(p.size(), -1), nearestExempt(p.size(), -1);
+      for (size_t k = 0; k < p.size(); ++k) {
+        for (size_t q = 0; q < p.size(); ++q) {
+          if (time[q] >= time[k])
+            continue;
+          const V d = p[q] - p[k];
+          const double h = d.dot(n[k]);
+          if (h <= 0.05)
+            continue;
+          if (d.norm() <= 0.2) {
+            nearTip += h * h > d.squaredNorm() * c2;  // inside the cone but under the tip face
+            continue;
+          }
+          const double r2 = d.squaredNorm() - h * h;
+          if (!(h <= 4 ? h * h > d.squaredNorm() * c2 : h <= 4 + holderLength && r2 < 9))
+            continue;
+          int& best = judged && exemption.unavoidable(exemption.group[k], exemption.group[q])
+                          ? nearestExempt[k]
+                          : nearest[k];
+          if (best < 0 || d.squaredNorm() < (p[best] - p[k]).squaredNorm()) {
+            best = static_cast<int>(q);
+          }
+        }
+        brute += nearest[k] >= 0 || nearestExempt[k] >= 0;
+        exempt += nearest[k] < 0 && nearestExempt[k] >= 0;
+      }
+      EXPECT_EQ(r.violatingStations, brute) << holderLength;
+      EXPECT_EQ(r.unavoidableStations, exempt) << holderLength;
+      // The reported obstacle is the one nearest the tip, whatever order the tree visits them
+      // in, with its height along the axis and distance from it.
+      ASSERT_EQ(static_cast<long long>(r.violations.size()), brute);
+      for (const CollisionViolation& v : r.violations) {
+        const int k = v.station;
+        const int expected = nearest[k] >= 0 ? nearest[k] : nearestExempt[k];
+        EXPECT_EQ(v.obstacle, expected) << "station " << k;
+        EXPECT_EQ(v.unavoidable, nearest[k] < 0);
+        const V d = p[expected] - p[k];
+        EXPECT_NEAR(v.height, d.dot(n[k]), 1e-9);
+        EXPECT_NEAR(v.radial, (d - d.dot(n[k]) * n[k]).norm(), 1e-9);
+      }
+      EXPECT_GT(nearTip, 0);  // the face radius was exercised
+      EXPECT_GT(brute, 0);
+      EXPECT_LT(brute, static_cast<long long>(p.size()));
+      if (judged) {
+        EXPECT_GT(exempt, 0);
+        EXPECT_LT(exempt, brute);
+      }
+    }
   }
 }
 
@@ -228,8 +266,14 @@ TEST(CollisionVerifier, BuildPlateIsAnObstacle) {
   EXPECT_EQ(judged.plateStations, 21);
   EXPECT_EQ(judged.unavoidableStations, 21);
   EXPECT_TRUE(judged.orderCollisionFree);
-  EXPECT_EQ(r.violations[0].obstacle, -1);
-  EXPECT_NEAR(r.violations[0].obstaclePoint.z(), 0.0, 1e-12);
+  // Either way the obstacle shown is the plate's sample nearest the tip: on its top face.
+  for (const CollisionReport* report : {static_cast<const CollisionReport*>(&r), &judged}) {
+    ASSERT_EQ(report->violations.size(), 20u);
+    for (const CollisionViolation& v : report->violations) {
+      EXPECT_EQ(v.obstacle, -1);
+      EXPECT_NEAR(v.obstaclePoint.z(), 0.0, 1e-12);
+    }
+  }
   // 40° from vertical: the cone's lower side rises 5° above the horizon, the plate stays out.
   const double u = 40 * M_PI / 180;
   Towers mild = line(V(std::sin(u), 0, std::cos(u)), 0.6);
