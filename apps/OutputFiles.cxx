@@ -1,14 +1,8 @@
 #include "OutputFiles.h"
 
+#include "GLXMLFileWriter.h"
 #include "common/AtomicFile.h"
 #include "common/Error.h"
-
-#include <vtkDataObject.h>
-#include <vtkNew.h>
-#include <vtkPolyData.h>
-#include <vtkUnstructuredGrid.h>
-#include <vtkXMLPolyDataWriter.h>
-#include <vtkXMLUnstructuredGridWriter.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -40,26 +34,7 @@ void prepareOutputDirectory(const std::string& dir) {
 }
 
 void writeVtkXml(vtkDataObject* data, const std::string& path) {
-  writeAtomically(path, [data](const std::string& tmp) {
-    if (auto* grid = vtkUnstructuredGrid::SafeDownCast(data)) {
-      vtkNew<vtkXMLUnstructuredGridWriter> writer;
-      writer->SetInputData(grid);
-      writer->SetDataModeToBinary();
-      writer->SetCompressorTypeToLZ4();
-      writer->SetFileName(tmp.c_str());
-      return writer->Write() == 1;
-    }
-    if (auto* poly = vtkPolyData::SafeDownCast(data)) {
-      vtkNew<vtkXMLPolyDataWriter> writer;
-      writer->SetInputData(poly);
-      writer->SetDataModeToBinary();
-      writer->SetCompressorTypeToLZ4();
-      writer->SetFileName(tmp.c_str());
-      return writer->Write() == 1;
-    }
-    throw GeoLatticeError("cannot write a " + std::string(data ? data->GetClassName() : "null") +
-                          " to " + tmp);
-  });
+  writeAtomically(path, [data](const std::string& tmp) { return writeXmlDataFile(data, tmp); });
 }
 
 namespace {

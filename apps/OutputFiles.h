@@ -16,10 +16,11 @@ namespace geolattice {
 /// it. Throws GeoLatticeError naming the directory otherwise.
 void prepareOutputDirectory(const std::string& dir);
 
-/// VTK XML file (.vtu/.vtp by data type) in binary inline mode (appended mode is unreadable
-/// by Debian 12's ParaView 5.11, see docs/design.md), LZ4-compressed: VTK's default zlib
-/// (level 5) took 25-35 s of a 1M-tet run for ~400 MB of files, LZ4 about a third of that for
-/// ~20% larger files (docs/scale-run.md). VTK and ParaView read both.
+/// VTK XML file (.vtu/.vtp by data type), written all-or-nothing (a temporary file renamed over
+/// path) by filters/GLXMLFileWriter.h: binary inline mode (appended mode is unreadable by Debian
+/// 12's ParaView 5.11, see docs/design.md), LZ4-compressed (VTK's default zlib, level 5, took
+/// 25-35 s of a 1M-tet run for ~400 MB of files, LZ4 about a third of that for ~20% larger
+/// files, docs/scale-run.md). VTK and ParaView read both.
 void writeVtkXml(vtkDataObject* data, const std::string& path);
 
 /// The files one run writes into its output directory, with the seconds each took. At the end

@@ -1,0 +1,113 @@
+// The XML file writer with buffered base64: the same bytes as VTK's own writer (arrays of odd
+// byte counts, so the encoding's leftover bytes cross array and block boundaries), files that
+// read back, and its failures.
+#include "GLTestFiles.h"
+#include "GLXMLFileWriter.h"
+#include "common/Error.h"
+
+#include <gtest/gtest.h>
+
+#include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkImageData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <cmath>
+
+using geolattice::writeXmlDataFile;
+
+namespace {
+
+/// n points on a curve, one polyline through them, and arrays of 1, 3 and 8 bytes per value
+/// (n odd: every array's byte count leaves 1 or 2 bytes for the next write).
+vtkNew<vtkPolyData> polyline(int n) {
+  vtkNew<vtkPolyData> poly;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkDoubleArray> axis;
+  axis->SetName("NozzleAxis");
+  axis->SetNumberOfComponents(3);
+  vtkNew<vtkIntArray> index;
+  index->SetName("PointIndex");
+  vtkNew<vtkUnsignedCharArray> kind;
+  kind->SetName("MoveKind");
+  vtkNew<vtkCellArray> lines;
+  lines->InsertNextCell(n);
+  for (int i = 0; i < n; ++i) {
+    const double t = 0.01 * i;
+    points->InsertNextPoint(std::cos(t) * (50 + t), std::sin(t) * 40, 0.3 * t);
+    axis->InsertNextTuple3(std::sin(3 * t), 0.1 * t, 1.0);
+    index->InsertNextValue(i * 7919 % 1000003);
+    kind->InsertNextValue(static_cast<unsigned char>(i % 3));
+    lines->InsertCellPoint(i);
+  }
+  poly->SetPoints(points);
+  poly->SetLines(lines);
+  poly->GetPointData()->AddArray(axis);
+  poly->GetPointData()->AddArray(index);
+  poly->GetPointData()->AddArray(kind);
+  return poly;
+}
+
+}  // namespace
+
+TEST(GLXMLFileWriter, SameBytesAsVtksWriter) {
+  const auto dir = glFreshDirectory("xmlwriter");
+  // Small (one block, leftovers), large (many 48 KiB blocks, LZ4's 32 KiB blocks) and empty.
+  for (const int n : {1, 2, 3, 101, 200001}) {
+    vtkNew<vtkPolyData> poly = polyline(n);
+    const std::string ours = (dir / "ours.vtp").string(), vtk = (dir / "vtk.vtp").string();
+    ASSERT_TRUE(writeXmlDataFile(poly, ours));
+    ASSERT_TRUE(writeXmlDataFile(poly, vtk, false));
+    const std::string bytes = glReadFile(ours);
+    EXPECT_GT(bytes.size(), 500u);
+    EXPECT_EQ(bytes, glReadFile(vtk)) << n << " points";
+
+    vtkNew<vtkXMLPolyDataReader> reader;
+    reader->SetFileName(ours.c_str());
+    reader->Update();
+    vtkPolyData* back = reader->GetOutput();
+    ASSERT_EQ(back->GetNumberOfPoints(), n);
+    double p[3], q[3];
+    back->GetPoint(n - 1, p);
+    poly->GetPoint(n - 1, q);
+    EXPECT_EQ(p[0], q[0]);
+    EXPECT_EQ(p[2], q[2]);
+    EXPECT_EQ(back->GetPointData()->GetArray("PointIndex")->GetTuple1(n - 1),
+              poly->GetPointData()->GetArray("PointIndex")->GetTuple1(n - 1));
+  }
+  // An unstructured grid: one tet.
+  vtkNew<vtkUnstructuredGrid> grid;
+  vtkNew<vtkPoints> points;
+  points->InsertNextPoint(0, 0, 0);
+  points->InsertNextPoint(1, 0, 0);
+  points->InsertNextPoint(0, 1, 0);
+  points->InsertNextPoint(0, 0, 1);
+  grid->SetPoints(points);
+  const vtkIdType tet[4] = {0, 1, 2, 3};
+  grid->InsertNextCell(VTK_TETRA, 4, tet);
+  const std::string ours = (dir / "ours.vtu").string(), vtk = (dir / "vtk.vtu").string();
+  ASSERT_TRUE(writeXmlDataFile(grid, ours));
+  ASSERT_TRUE(writeXmlDataFile(grid, vtk, false));
+  EXPECT_EQ(glReadFile(ours), glReadFile(vtk));
+  vtkNew<vtkXMLUnstructuredGridReader> reader;
+  reader->SetFileName(ours.c_str());
+  reader->Update();
+  EXPECT_EQ(reader->GetOutput()->GetNumberOfCells(), 1);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(GLXMLFileWriter, Failures) {
+  vtkNew<vtkPolyData> poly = polyline(10);
+  EXPECT_FALSE(writeXmlDataFile(poly, "/nonexistent-directory/toolpath.vtp"));
+  vtkNew<vtkImageData> image;
+  EXPECT_THROW(writeXmlDataFile(image, "/tmp/image.vti"), geolattice::GeoLatticeError);
+  EXPECT_THROW(writeXmlDataFile(nullptr, "/tmp/none.vtp"), geolattice::GeoLatticeError);
+}
