@@ -18,6 +18,27 @@ namespace geolattice {
 
 using Vec = Eigen::Vector3d;
 
+namespace {
+
+/// A kd-tree built when a station first needs it (from any worker thread).
+class LazyTree {
+public:
+  LazyTree(const std::vector<Vec>& points, const std::vector<int>& time)
+      : points_(points), time_(time) {}
+  const TimedPointTree& get() {
+    std::call_once(built_, [this] { tree_ = std::make_unique<TimedPointTree>(points_, time_); });
+    return *tree_;
+  }
+
+private:
+  const std::vector<Vec>& points_;
+  const std::vector<int>& time_;
+  std::unique_ptr<TimedPointTree> tree_;
+  std::once_flag built_;
+};
+
+}  // namespace
+
 CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
                                       const std::vector<Vec>& normals, const std::vector<int>& time,
                                       const NozzleModel& nozzle, int maxReported,
@@ -87,24 +108,12 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
   // runs on the material alone. Built when a station first needs it (most parts placed with
   // room under them have none).
   const bool searchPastThePlate = exemption && all.size() > N;
-  std::unique_ptr<TimedPointTree> materialTree;
-  std::once_flag materialTreeBuilt;
-  auto materialOnly = [&]() -> const TimedPointTree& {
-    std::call_once(materialTreeBuilt,
-                   [&] { materialTree = std::make_unique<TimedPointTree>(points, obstacleTime); });
-    return *materialTree;
-  };
+  LazyTree materialOnly(points, obstacleTime);
   // The plate's samples alone, for the nearest of them to a station's tip (through the whole
   // tree, that search would open every ball of material near the tip too).
   const std::vector<Vec> plateSamples(all.begin() + static_cast<std::ptrdiff_t>(N), all.end());
   const std::vector<int> plateTime(plateSamples.size(), std::numeric_limits<int>::min());
-  std::unique_ptr<TimedPointTree> plateTree;
-  std::once_flag plateTreeBuilt;
-  auto plateOnly = [&]() -> const TimedPointTree& {
-    std::call_once(plateTreeBuilt,
-                   [&] { plateTree = std::make_unique<TimedPointTree>(plateSamples, plateTime); });
-    return *plateTree;
-  };
+  LazyTree plateOnly(plateSamples, plateTime);
   const NozzleVolume volume(nozzle);
   NozzleBound bound(nozzle, volume);
   // The reported obstacle of a violating station: the one nearest its tip (ties: the lowest
@@ -120,7 +129,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
   auto nearestPlateSample = [&](const NozzleBound& station, int k, int& hit, double& height,
                                 double& radial) {
     const int first = static_cast<int>(N);
-    hit = first + plateOnly().nearestCandidate(
+    hit = first + plateOnly.get().nearestCandidate(
                       station, points[k], time[k], hit - first,
                       [&](int q) { return volume.contains(points[k], axis[k], plateSamples[q]); });
     volume.contains(points[k], axis[k], all[hit], &height, &radial);
@@ -186,7 +195,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
         return false;
       });
       if (materialLeft) {  // an avoidable obstacle, if any (the plate outranks exempt material)
-        materialOnly().forEachCandidate(station, time[k], [&](int q) {
+        materialOnly.get().forEachCandidate(station, time[k], [&](int q) {
           if (!volume.contains(points[k], axis[k], points[q]) ||
               exemption->unavoidable(exemption->group[k], exemption->group[q])) {
             return false;
