@@ -92,8 +92,8 @@ constexpr int kMinAutoTargetTets = 1000;
 constexpr int kMaxAutoTargetTets = 5000000;
 /// Most TetGen runs of the automatic edge length search.
 constexpr int kMaxAutoAttempts = 4;
-/// The automatic search meshes a second, longer edge length (this times the first guess) on the
-/// other core beside its first run and reads it first: within the tolerance it is the result
+/// The automatic search meshes a second, longer edge length (this times the first guess) beside
+/// its first run (started when the surface's intersection test is done) and reads it first: within the tolerance it is the result
 /// and the first run is killed unread; otherwise the first run is read, and the speculative run
 /// is the search's second run when the first gave too many tets. The first guess gives too many
 /// on parts whose surface triangles drive the refinement: 1.1-2.1x the target on 10 of 15
