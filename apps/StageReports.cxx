@@ -108,6 +108,7 @@ void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {
     s["simplification_seconds"] = fieldValue(tets, arrays::SimplificationSeconds);
     s["tetgen_runs"] = fieldValue(tets, arrays::TetGenRuns);
     s["tetgen_speculative_run"] = fieldValue(tets, arrays::TetGenSpeculativeRun) != 0;
+    s["tetgen_count_set_by_surface"] = fieldValue(tets, arrays::TetGenSurfaceBoundCount) != 0;
     s["removed_flat_tets"] = fieldValue(tets, arrays::RemovedFlatTets);
   }
   s["points"] = points(tets);

@@ -78,6 +78,8 @@ constexpr const char* SimplificationSeconds = "SimplificationSeconds";  ///< its
 constexpr const char* TetGenRuns = "TetGenRuns";  ///< TetGen runs (edge search and retries)
 constexpr const char* TetGenSpeculativeRun =
     "TetGenSpeculativeRun";  ///< 1: a longer edge was meshed beside the first automatic run
+constexpr const char* TetGenSurfaceBoundCount =
+    "TetGenSurfaceBoundCount";  ///< 1: the count stays above the target whatever the edge
 constexpr const char* RemovedFlatTets = "RemovedFlatTets";  ///< zero-volume slivers dropped
 // Overhang analysis (vtkGLOverhangAnalysis): cell data on the boundary surface.
 constexpr const char* OverhangPlanar =

@@ -171,6 +171,7 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::TetGenRuns,
              static_cast<double>(result.attempts + result.tetgenRetries));
     addValue(fd, gl::arrays::TetGenSpeculativeRun, result.speculativeRun ? 1.0 : 0.0);
+    addValue(fd, gl::arrays::TetGenSurfaceBoundCount, result.surfaceBoundCount ? 1.0 : 0.0);
     addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
     if (!result.simplificationRefused.empty()) {
       vtkWarningMacro(<< "the simplified surface was not used (" << result.simplificationRefused

@@ -28,6 +28,8 @@
  *     250000, a 1.45x longer edge is meshed beside the first run, on the other core, and read
  *     first: within the tolerance it is the mesh (the first run is stopped), else it is the
  *     second run when the first gives too many tets (field data `TetGenSpeculativeRun`).
+ *     The search stops early when a 1.3x longer edge leaves the count above 90 % of the last
+ *     one: the surface sets the count (field data `TetGenSurfaceBoundCount`).
  *   - RadiusEdgeRatio: TetGen's quality bound -q (default 1.414, must be in [1.1, 10]; TetGen
  *     does not finish in practice below ~1.1).
  *

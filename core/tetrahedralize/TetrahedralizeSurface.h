@@ -76,6 +76,9 @@ struct TetrahedralizeResult {
   /// A speculative run at a longer edge was started beside the first automatic one (counted in
   /// attempts when it is the result, or the correction of a first run with too many tets).
   bool speculativeRun = false;
+  /// The automatic search stopped above the target: a much longer edge left the count nearly
+  /// unchanged, so the count is set by the surface (fine triangles or thin walls).
+  bool surfaceBoundCount = false;
   size_t removedFlatTets = 0;         ///< zero-volume slivers dropped from TetGen's output
   double seconds = 0.0;               ///< wall time of the whole call
   bool simplified = false;            ///< the surface was simplified before TetGen

@@ -490,3 +490,20 @@ TEST(TetGenRunner, ErrorCodesHaveMessages) {
   EXPECT_TRUE(contains(tetgenErrorMessage(10), "input error"));
   EXPECT_TRUE(contains(tetgenErrorMessage(77), "error code 77"));
 }
+
+TEST(TetrahedralizeSurface, ACountSetByTheSurfaceEndsTheSearch) {
+  // A 20 x 20 x 1 mm plate whose faces keep their 0.6 mm triangles (no simplification): TetGen fills it
+  // with small tets whatever the volume bound, so a target far below that count cannot be met.
+  // The search stops once a longer edge has left the count nearly unchanged, and says so.
+  TetrahedralizeOptions o;
+  o.autoTargetTets = 2000;
+  o.simplifyFinerThan = 0;
+  const TetrahedralizeResult r = tetrahedralizeSurface(boxSurface(Vec3(20, 20, 1), 0.6), o);
+  std::printf("[ plate 20 x 20 x 1 mm, target 2000 ] edge %.3f mm, %d tets, %d runs, %.2f s\n",
+              r.targetEdgeLength, r.tetCount, r.attempts, r.seconds);
+  EXPECT_TRUE(r.surfaceBoundCount);
+  EXPECT_GT(r.tetCount, 2500);  // above the tolerance
+  EXPECT_LE(r.attempts, 2);     // kMaxAutoAttempts without the stop
+  // A volume-driven count is not stopped: the cube of the tests above reaches its target.
+  EXPECT_FALSE(tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0)).surfaceBoundCount);
+}
