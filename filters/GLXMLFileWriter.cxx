@@ -22,11 +22,7 @@ namespace {
 class BufferedBase64OutputStream : public vtkOutputStream {
 public:
   vtkTypeMacro(BufferedBase64OutputStream, vtkOutputStream);
-  static BufferedBase64OutputStream* New() {
-    auto* stream = new BufferedBase64OutputStream;
-    stream->InitializeObjectBase();
-    return stream;
-  }
+  static BufferedBase64OutputStream* New();
 
   int StartWriting() override {
     this->Pending = 0;
@@ -83,6 +79,8 @@ private:
   std::array<unsigned char, 3> Leftover{};
   size_t Pending = 0;
 };
+
+vtkStandardNewMacro(BufferedBase64OutputStream);
 
 /// A VTK XML writer whose binary data goes through BufferedBase64OutputStream.
 template <class Writer>
