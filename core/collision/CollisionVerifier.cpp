@@ -225,7 +225,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
         radial = exemptRadial;
       } else if (plate && tipInsidePlate(*plate, partLo, partHi, points[k])) {
         unavoidable = true;
-        plateHit = hit = static_cast<int>(all.size());  // the tip itself is in the plate
+        hit = static_cast<int>(all.size());  // the tip itself is in the plate
       }
       if (hit >= 0) {
         const bool onPlate = hit >= plateFirst;
