@@ -24,7 +24,7 @@ namespace {
 vtkNew<vtkPolyData> toolpathLike(int n) {
   vtkNew<vtkPolyData> poly;
   vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
+  points->SetDataType(VTK_DOUBLE);  // as the toolpath's points
   vtkNew<vtkCellArray> lines;
   lines->InsertNextCell(n);
   vtkNew<vtkDoubleArray> axis;
