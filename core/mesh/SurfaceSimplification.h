@@ -13,9 +13,13 @@
 /// relaxation, vertices projected back onto the input; edges sharper than sharpAngleDeg kept as
 /// constraints): well-shaped triangles of about that length whatever the input's triangulation.
 /// It runs where the edge collapse would (an input finer than finerThan x the target) and also
-/// on a coarse input full of slivers (CAD needles); a remeshed surface farther than the tolerance
-/// from the input (a sharp tip cut off) or self-intersecting is refused, and the edge collapse
-/// runs instead (for a finer input) or the input stays. Why: TetGen keeps every input triangle
+/// on a coarse input full of slivers (CAD needles). A remeshed surface farther than the
+/// tolerance from the input (a sharp tip cut off) is remeshed again with the input kept as it is
+/// within one remeshed edge of the far vertices (at most twice, when those are few); one still
+/// too far, or self-intersecting, is refused, and the edge collapse runs instead (for a finer
+/// input) or the input stays. A collapse that leaves a surface full of needles (it keeps the
+/// distance by sliding vertices along a cone's or a cylinder's straight lines) is refused too,
+/// unless the input had them already. Why: TetGen keeps every input triangle
 /// and refines around small and thin ones; a well-shaped surface at the tets' size meshes in a
 /// fraction of the time and near the asked count (a generated genus-3 block, 17k triangles, 75k
 /// target: 15.0 s after the collapse was refused, 0.78 s remeshed; the 1M-triangle torus: 33 s ->
