@@ -215,6 +215,7 @@ void checkBinaryStl(const std::string& path) {
   char head[84] = {};
   in.read(head, sizeof head);
   const std::streamsize got = in.gcount();
+  in.clear();  // a file shorter than the header left eof and fail set: tellg() would say -1
   in.seekg(0, std::ios::end);
   const auto size = static_cast<unsigned long long>(in.tellg());
   const bool solid = got >= 5 && std::string(head, 5) == "solid";

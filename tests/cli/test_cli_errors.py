@@ -347,7 +347,7 @@ class CliErrorTest(unittest.TestCase):
         tiny = os.path.join(self.tmp, "tiny.stl")
         with open(tiny, "wb") as f:
             f.write(b"\x00\x01\x02")
-        self.expect_error([tiny], "not an STL file")
+        self.expect_error([tiny], "not an STL file", "has 3 bytes")  # its size, not -1
         good = os.path.join(self.tmp, "cube.stl")
         with open(good, "wb") as f:
             f.write(data)
