@@ -56,6 +56,7 @@ f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\
 class CliErrorTest(unittest.TestCase):
     def setUp(self):
         self.tmp = tempfile.mkdtemp(prefix="geolattice-cli-")
+        self.addCleanup(shutil.rmtree, self.tmp, True)
         self.out = os.path.join(self.tmp, "out")
 
     def run_cli(self, *args):
@@ -739,6 +740,10 @@ class CliVerifyTest(unittest.TestCase):
                               "--strategy", "dpt", "--nozzle-angle", "75", "--allow-collisions", "-q"], capture_output=True, text=True,
                              timeout=600)
         assert run.returncode == 0, run.stderr
+
+    @classmethod
+    def tearDownClass(cls):
+        shutil.rmtree(cls.tmp, ignore_errors=True)
 
     def verify(self, *args):
         return subprocess.run([CLI, "verify", *args], capture_output=True, text=True, timeout=300)

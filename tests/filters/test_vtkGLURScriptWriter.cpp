@@ -105,6 +105,7 @@ TEST(vtkGLURScriptWriter, SmallToolpathInOneFile) {
   EXPECT_EQ(checkURScriptSyntax(text, "small", 1000), static_cast<size_t>(w->GetNumberOfMoves()));
   EXPECT_NE(text.find("set_tcp(p[0, 0, 0.04, 0, 0, 0])"), std::string::npos);
   EXPECT_NE(text.find("set_standard_analog_out(0, "), std::string::npos);
+  fs::remove_all(dir);
 }
 
 // ---------------------------------------------------------------------------------------------
