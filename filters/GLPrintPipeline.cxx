@@ -92,6 +92,7 @@ void GLPrintPipeline::MatchOrientationToPrint() {
   this->Orientation->SetRefineLatticeWidth(
       std::min(this->LatticeInfill->GetAlphaWidth(), this->LatticeInfill->GetBetaWidth()));
   this->Orientation->SetRefineStrategy(this->Sequencer->GetStrategy());
+  this->Orientation->SetMaxAxisTilt(this->Planner->GetMaxAxisTilt());
 }
 
 std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationByToolpath(
@@ -106,6 +107,7 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
   };
   // The ranks to try: the best ones, then the part as placed (on the plate) if it can stand:
   // the user's placement is never beaten by a candidate that prints worse.
+  this->Orientation->Update();  // the search (cached); a failure shows in the first try
   vtkPolyData* candidates = vtkPolyData::SafeDownCast(this->Orientation->GetOutputDataObject(1));
   auto array = [candidates](const char* name) {
     return candidates ? candidates->GetPointData()->GetAbstractArray(name) : nullptr;
@@ -127,15 +129,19 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
     }
     return false;
   };
+  // `tries` candidates besides the placement: where the placement ranks among them it does not
+  // take one's place (its plate stations the tilt clears are not counted, so it may rank first).
   std::vector<int> ranks;
-  for (int rank = 0; rank < tries; ++rank) {
-    ranks.push_back(rank);
-  }
-  for (vtkIdType rank = tries; candidates && rank < candidates->GetNumberOfPoints(); ++rank) {
-    if (usable(static_cast<int>(rank), true)) {
-      ranks.push_back(static_cast<int>(rank));
-      break;
+  const vtkIdType count =
+      candidates && candidates->GetNumberOfPoints() > 0 ? candidates->GetNumberOfPoints() : tries;
+  bool placementIn = false;
+  for (int rank = 0, others = 0; rank < count && (others < tries || !placementIn); ++rank) {
+    const bool placement = candidates && usable(rank, true);
+    if (placement || others < tries) {
+      ranks.push_back(rank);
     }
+    placementIn = placementIn || placement;
+    others += !placement;
   }
   for (int rank : ranks) {
     if (geolattice::stopRequest().load() || (rank > 0 && !usable(rank, false))) {

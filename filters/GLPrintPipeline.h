@@ -88,7 +88,8 @@ public:
   double GetPedestalRequest();
 
   /// Gives the orientation search's refinement the print's resolution and order: the slicer's
-  /// layer interval, the lattice's (smaller) width and the sequencer's strategy. Call after
+  /// layer interval, the lattice's (smaller) width, the sequencer's strategy and the planner's
+  /// largest axis tilt. Call after
   /// setting parameters, before updating; it modifies nothing when they already match or the
   /// orientation is Keep (then a print setting re-runs no orientation).
   void MatchOrientationToPrint();
@@ -105,8 +106,8 @@ public:
 
   /// The orientation the real toolpath prints best: with Orient Auto, the search's candidates are
   /// run through the toolpath verifier in rank order, up to `tries` of them (feasible ones scored
-  /// at the print's resolution), then the part as placed (on the plate, when it can stand there
-  /// and was not among them), until one is strictly collision-free; the one with the fewest
+  /// at the print's resolution) besides the part as placed (on the plate, when it can stand
+  /// there), which is tried where it ranks or else last, until one is strictly collision-free; the one with the fewest
   /// colliding stations is kept (Orientation's CandidateRank; the earlier rank on a tie). The
   /// search runs once: a rank change only re-places the part. Why: the search scores sub-graph
   /// orders, not toolpaths (no axis tilts, no collision inside a sub-graph), so two close

@@ -67,6 +67,7 @@ vtkGLAutoOrient::vtkGLAutoOrient() {
   this->RefineLayerInterval = d.refineLayerInterval;
   this->RefineLatticeWidth = d.refineLatticeWidth;
   this->RefineStrategy = static_cast<int>(d.refineStrategy);
+  this->MaxAxisTilt = d.maxTiltDeg;
   this->NumberOfThreads = d.threads;
 }
 
@@ -167,6 +168,7 @@ gl::OrientOptions orientOptions(vtkGLAutoOrient* f) {
   o.refineLayerInterval = f->GetRefineLayerInterval();
   o.refineLatticeWidth = f->GetRefineLatticeWidth();
   o.refineStrategy = static_cast<gl::SequenceStrategy>(f->GetRefineStrategy());
+  o.maxTiltDeg = f->GetMaxAxisTilt();
   o.threads = f->GetNumberOfThreads();
   o.nozzle = gl::nozzleModel(f->GetNozzle());
   o.plate = gl::buildPlate(f->GetNozzle());
@@ -277,6 +279,7 @@ void vtkGLAutoOrient::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "RefineLayerInterval: " << this->RefineLayerInterval << " mm\n";
   os << indent << "RefineLatticeWidth: " << this->RefineLatticeWidth << " mm\n";
   os << indent << "RefineStrategy: " << this->RefineStrategy << "\n";
+  os << indent << "MaxAxisTilt: " << this->MaxAxisTilt << " deg\n";
   os << indent << "CandidateRank: " << this->CandidateRank << "\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

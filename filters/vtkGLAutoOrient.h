@@ -38,8 +38,8 @@
  *   default 8), Pedestal (0 = Never, 1 = When It Helps (default), 2 = Always), PedestalHeight (mm,
  *   default 10), PedestalContactHeight (mm, default 1), RefineCandidates (default 4),
  *   RefineLayerInterval (mm, default 0.6), RefineLatticeWidth (mm, default 4), RefineStrategy
- *   (0 LPT .. 3 Best, default 3 = the sequencer's), NumberOfThreads
- *   (default 0 = all cores). Defaults from core (OrientOptions).
+ *   (0 LPT .. 3 Best, default 3 = the sequencer's), MaxAxisTilt (degrees, default 30 = the
+ *   toolpath planner's), NumberOfThreads (default 0 = all cores). Defaults from core (OrientOptions).
  * Errors (an empty or open surface, bad parameters, no candidate with the base area: the message
  * names the largest area found) are reported with vtkErrorMacro; RequestData returns 0.
  */
@@ -148,6 +148,15 @@ public:
   ///@}
 
   ///@{
+  /// The toolpath's largest axis tilt off the layer normal (degrees, default 30 = the planner's
+  /// MaxAxisTilt, in [0, 60]): a plate station of the part as placed whose nozzle a tilt this
+  /// large towards +z lifts wholly off the plate is not counted (GL Print Part sets the
+  /// planner's).
+  vtkSetClampMacro(MaxAxisTilt, double, 0.0, 60.0);
+  vtkGetMacro(MaxAxisTilt, double);
+  ///@}
+
+  ///@{
   /// Which candidate the output shows: 0 (default) the best, k the k-th best (clamped to the
   /// last). Changing it re-places the part without searching again (the search is cached until
   /// the input or another parameter changes): GLPrintPipeline::ChooseOrientationByToolpath tries
@@ -183,6 +192,7 @@ protected:
   double RefineLayerInterval;
   double RefineLatticeWidth;
   int RefineStrategy;
+  double MaxAxisTilt;
   int CandidateRank = 0;
   int NumberOfThreads;
 

@@ -34,7 +34,9 @@
 ///   1. the base contact area is at least minBaseArea (the part sticks to the plate or its
 ///      pedestal's column is that wide);
 ///   2. fewest strict collision stations (material or plate inside the nozzle, the verifier on
-///      the printing order of the evaluation lattice);
+///      the printing order of the evaluation lattice; for the part as placed on the plate, a
+///      plate station whose nozzle the toolpath's tilt, at most maxTiltDeg towards +z, lifts
+///      wholly off the plate is not counted);
 ///   3. fewest forced steps of the order (sub-graphs that block each other);
 ///   4. no pedestal (it costs material and a cut) over a pedestal;
 ///   5. the smallest curved-layer overhang fraction (surface that needs support, paper Fig. 8);
@@ -47,6 +49,7 @@
 #include "nozzle/NozzleModel.h"
 #include "sequence/PrintSequencer.h"
 #include "slicer/CurvedLayerSlicer.h"
+#include "toolpath/NozzleAxisClearance.h"
 
 #include <Eigen/Core>
 #include <functional>
@@ -84,9 +87,13 @@ struct OrientOptions {
   double refineLayerInterval = SlicerOptions{}.interval;    ///< layers of the refinement (mm, > 0)
   double refineLatticeWidth = LatticeOptions{}.alphaWidth;  ///< its lattice width (mm, > 0)
   SequenceStrategy refineStrategy = SequenceOptions{}.strategy;  ///< its printing order
-  NozzleModel nozzle;                                            ///< the configured nozzle
-  BuildPlate plate;  ///< the build plate (an obstacle when enabled)
-  int threads = 0;   ///< candidates evaluated in parallel; 0 = hardware concurrency
+  /// The toolpath's largest axis tilt off the layer normal (deg, in [0, 60]): a plate station
+  /// of the part as placed whose nozzle a tilt this large towards +z lifts off the plate is not
+  /// counted (objective 2).
+  double maxTiltDeg = AxisClearanceOptions{}.maxTiltDeg;
+  NozzleModel nozzle;  ///< the configured nozzle
+  BuildPlate plate;    ///< the build plate (an obstacle when enabled)
+  int threads = 0;     ///< candidates evaluated in parallel; 0 = hardware concurrency
   std::function<void(double)> progress;  ///< fraction done (calling thread). Optional.
   std::function<bool()> shouldAbort;     ///< true stops with "orientation search aborted".
   /// Throws GeoLatticeError naming a bad option.

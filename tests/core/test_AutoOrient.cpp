@@ -151,6 +151,7 @@ TEST(AutoOrient, ThePlateInTheNozzlesWayIsLiftedOnAPedestal) {
   const TriangleSurface blob = cutBall(15, 15 - std::sqrt(15.0 * 15.0 - 16.0), 24, 32);
   OrientOptions o = fewCandidates(0);
   o.pedestal = PedestalChoice::Never;
+  o.maxTiltDeg = 0;  // a toolpath that never tilts: a 30° tilt lifts these off the plate (below)
   const OrientResult onPlate = searchOrientation(blob, o);
   ASSERT_EQ(onPlate.candidates.size(), 1u);
   const OrientCandidate& keep = onPlate.candidates[0];
@@ -167,6 +168,34 @@ TEST(AutoOrient, ThePlateInTheNozzlesWayIsLiftedOnAPedestal) {
   const OrientResult always = searchOrientation(blob, o);
   ASSERT_EQ(always.candidates.size(), 1u);
   EXPECT_EQ(always.candidates[0].pedestal, o.pedestalHeight);
+  // The toolpath's default tilt lifts the nozzle off the plate there: no pedestal is tried.
+  o.pedestal = PedestalChoice::WhenItHelps;
+  o.maxTiltDeg = OrientOptions{}.maxTiltDeg;
+  const OrientResult tilted = searchOrientation(blob, o);
+  ASSERT_EQ(tilted.candidates.size(), 1u);
+  EXPECT_EQ(tilted.candidates[0].plateStations, 0);
+}
+
+TEST(AutoOrient, PlateStationsTheToolpathsTiltLiftsOffThePlateAreNotCounted) {
+  // A bowl widening 60° off the vertical from a 10 mm foot: along its wall the layer normal
+  // leans 60° out, so a 45° cone on it reaches below its tip, into the plate; a 30° tilt
+  // towards +z stands the cone's lowest line level. Only the placement is a candidate.
+  const double widen = std::tan(60 * M_PI / 180);
+  const TriangleSurface bowl =
+      revolve({{0, 0}, {10, 0}, {10 + 12 * widen, 12}, {10 + 12 * widen - 2, 14}, {0, 14}}, 48);
+  OrientOptions o = fewCandidates(0);
+  o.pedestal = PedestalChoice::Never;
+  o.maxTiltDeg = 0;
+  const OrientCandidate untilted = searchOrientation(bowl, o).candidates[0];
+  EXPECT_GT(untilted.plateStations, 20);
+  o.maxTiltDeg = OrientOptions{}.maxTiltDeg;
+  const OrientCandidate tilted = searchOrientation(bowl, o).candidates[0];
+  EXPECT_EQ(tilted.stations, untilted.stations);
+  EXPECT_LT(tilted.plateStations, untilted.plateStations / 3);  // the lowest 1 mm stay counted
+  EXPECT_EQ(untilted.collidingStations - tilted.collidingStations,
+            untilted.plateStations - tilted.plateStations);
+  o.maxTiltDeg = 61;
+  EXPECT_THROW(searchOrientation(bowl, o), GeoLatticeError);
 }
 
 TEST(AutoOrient, TheBestCoarseCandidatesAndThePlacementAreScoredAtThePrintsResolution) {
