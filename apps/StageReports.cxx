@@ -110,6 +110,7 @@ void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {
     s["tetgen_speculative_run"] = fieldValue(tets, arrays::TetGenSpeculativeRun) != 0;
     s["tetgen_count_set_by_surface"] = fieldValue(tets, arrays::TetGenSurfaceBoundCount) != 0;
     s["removed_flat_tets"] = fieldValue(tets, arrays::RemovedFlatTets);
+    s["merged_bodies"] = fieldValue(tets, arrays::MergedBodies);
   }
   s["points"] = points(tets);
   s["tets"] = cells(tets);

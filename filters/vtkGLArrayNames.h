@@ -75,6 +75,8 @@ constexpr const char* MeshedTriangles = "MeshedTriangles";  ///< triangles given
 constexpr const char* SimplificationDistance =
     "SimplificationDistance";  ///< largest input-vertex distance to the meshed surface (mm)
 constexpr const char* SimplificationSeconds = "SimplificationSeconds";  ///< its wall time (s)
+/// Bodies merged into another one they cross (core/mesh/OverlappingBodies.h), 1 value.
+constexpr const char* MergedBodies = "MergedBodies";
 constexpr const char* TetGenRuns = "TetGenRuns";  ///< TetGen runs (edge search and retries)
 constexpr const char* TetGenSpeculativeRun =
     "TetGenSpeculativeRun";  ///< 1: a longer edge was meshed beside the first automatic run

@@ -173,6 +173,11 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::TetGenSpeculativeRun, result.speculativeRun ? 1.0 : 0.0);
     addValue(fd, gl::arrays::TetGenSurfaceBoundCount, result.surfaceBoundCount ? 1.0 : 0.0);
     addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
+    addValue(fd, gl::arrays::MergedBodies, static_cast<double>(result.mergedBodies));
+    if (result.mergedBodies > 0) {
+      vtkWarningMacro(<< "bodies of the surface cross each other; meshed as their union ("
+                      << result.mergedBodies << " fewer bodies)");
+    }
     if (!result.simplificationRefused.empty()) {
       vtkWarningMacro(<< "the simplified surface was not used (" << result.simplificationRefused
                       << "): TetGen meshed all " << result.inputTriangles << " input triangles");

@@ -2,6 +2,7 @@
 #include "mesh/BranchingShapes.h"
 
 #include "common/Error.h"
+#include "mesh/CgalSurfaceMesh.h"
 #include "mesh/SurfaceCheck.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -22,8 +23,8 @@ namespace geolattice {
 
 namespace {
 
-using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
-using Mesh = CGAL::Surface_mesh<Kernel::Point_3>;
+using Kernel = cgal::Kernel;
+using Mesh = cgal::SurfaceMesh;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
 constexpr double kPi = 3.14159265358979323846;
@@ -199,21 +200,7 @@ TriangleSurface branchingSurface(const BranchingShapeParameters& p, int branchCo
     throw GeoLatticeError(std::string(name) + ": the remeshed surface has self-intersections");
   }
 
-  TriangleSurface surface;
-  surface.points.reserve(result.number_of_vertices());
-  for (Mesh::Vertex_index vi : result.vertices()) {
-    const Kernel::Point_3& q = result.point(vi);
-    surface.points.emplace_back(q.x(), q.y(), q.z());
-  }
-  surface.triangles.reserve(result.number_of_faces());
-  for (Mesh::Face_index f : result.faces()) {
-    std::array<int, 3> tri{};
-    int c = 0;
-    for (Mesh::Vertex_index vi : CGAL::vertices_around_face(result.halfedge(f), result)) {
-      tri[c++] = static_cast<int>(vi.idx());  // indices are contiguous after collect_garbage()
-    }
-    surface.triangles.push_back(tri);
-  }
+  const TriangleSurface surface = cgal::toTriangleSurface(result);
   const SurfaceCheckReport report = checkSurface(surface);
   if (!report.isClosedManifold()) {
     throw GeoLatticeError(std::string(name) +

@@ -7,6 +7,9 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <array>
 
 #include <string>
 #include <vector>
@@ -31,6 +34,34 @@ inline SurfaceMesh toSurfaceMesh(const TriangleSurface& s, const std::string& wh
     }
   }
   return m;
+}
+
+/// The triangles of a triangle mesh `m` (removed elements skipped, points renumbered densely).
+inline TriangleSurface toTriangleSurface(const SurfaceMesh& m) {
+  TriangleSurface s;
+  std::vector<int> id(m.num_vertices(), -1);  // by index, removed vertices included
+  s.points.reserve(m.number_of_vertices());
+  for (SurfaceMesh::Vertex_index v : m.vertices()) {
+    id[v.idx()] = static_cast<int>(s.points.size());
+    const Kernel::Point_3& p = m.point(v);
+    s.points.emplace_back(p.x(), p.y(), p.z());
+  }
+  s.triangles.reserve(m.number_of_faces());
+  for (SurfaceMesh::Face_index f : m.faces()) {
+    std::array<int, 3> t{};
+    int k = 0;
+    for (SurfaceMesh::Vertex_index v : CGAL::vertices_around_face(m.halfedge(f), m)) {
+      if (k < 3) {
+        t[k] = id[v.idx()];
+      }
+      ++k;
+    }
+    if (k != 3) {
+      throw GeoLatticeError("a face of the mesh has " + std::to_string(k) + " vertices, not 3");
+    }
+    s.triangles.push_back(t);
+  }
+  return s;
 }
 
 }  // namespace geolattice::cgal

@@ -31,25 +31,6 @@ using Mesh = cgal::SurfaceMesh;
 namespace SMS = CGAL::Surface_mesh_simplification;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
-TriangleSurface fromMesh(const Mesh& m) {
-  TriangleSurface s;
-  std::unordered_map<Mesh::Vertex_index, int> id;
-  for (auto v : m.vertices()) {
-    id[v] = static_cast<int>(s.points.size());
-    const K::Point_3& p = m.point(v);
-    s.points.emplace_back(p.x(), p.y(), p.z());
-  }
-  for (auto f : m.faces()) {
-    std::array<int, 3> t{};
-    int k = 0;
-    for (auto v : CGAL::vertices_around_face(m.halfedge(f), m)) {
-      t[k++] = id[v];
-    }
-    s.triangles.push_back(t);
-  }
-  return s;
-}
-
 /// Counts the collapses for progress and abort (CGAL calls OnCollapsed after each one).
 struct CollapseVisitor : SMS::Edge_collapse_visitor_base<Mesh> {
   CollapseVisitor(const ProgressReporter& report, double expected, bool& aborted)
@@ -240,7 +221,7 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
       r.refused = m.str();
       return false;
     }
-    TriangleSurface result = fromMesh(mesh);
+    TriangleSurface result = cgal::toTriangleSurface(mesh);
     // The collapse keeps the distance by sliding vertices along flat directions: on a cone or
     // a cylinder it leaves needles from end to end, which TetGen refines far below the target
     // edge (a generated 100 mm spire at 2 mm: 1,702 triangles, two thirds of them needles, gave

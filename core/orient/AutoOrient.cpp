@@ -180,6 +180,7 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
                         material.points[k].z() - apexBelowTip * std::cos(tilted) >= 0;
     }
   }
+  c.tiltClearedPlateStations = liftedOffPlate;
   c.collidingStations = report.violatingStations - liftedOffPlate;
   c.plateStations = report.plateStations - liftedOffPlate;
   c.stations = report.stations;
@@ -482,7 +483,9 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
   if (o.pedestal == PedestalChoice::WhenItHelps) {
     const size_t before = result.candidates.size();
     for (size_t i = 0; i < directions; ++i) {
-      if (result.candidates[i].feasible && result.candidates[i].plateStations > 0) {
+      // The placement too where only the tilt clears the plate: on a pedestal it needs none.
+      const OrientCandidate& c = result.candidates[i];
+      if (c.feasible && c.plateStations + c.tiltClearedPlateStations > 0) {
         addPedestal(i);
       }
     }

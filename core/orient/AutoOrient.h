@@ -111,7 +111,9 @@ struct OrientCandidate {
   bool evaluated = false;           ///< the stages ran (skipped below the base area)
   long long collidingStations = 0;  ///< strict verifier, printing order of the coarse lattice
   long long plateStations = 0;      ///< of those, where the nozzle meets the plate
-  long long stations = 0;           ///< stations checked
+  /// The placement's plate stations the toolpath's tilt lifts off the plate (not counted above)
+  long long tiltClearedPlateStations = 0;
+  long long stations = 0;  ///< stations checked
   int forcedSteps = 0;
   double overhangFraction = 0;  ///< curved-layer overhang area fraction
   int layers = 0;

@@ -1,5 +1,6 @@
 #include "tetrahedralize/TetrahedralizeSurface.h"
 
+#include "mesh/OverlappingBodies.h"
 #include "mesh/SurfaceSimplification.h"
 
 #include "common/Error.h"
@@ -257,7 +258,13 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   // TetGen ignores facet orientation, but the cavity test (winding number) needs an outward
   // surface.
   result.flippedSurfaceTriangles = orientOutward(surface);
-  result.enclosedVolume = std::abs(report.signedVolume);
+  // Closed bodies that cross each other (an assembly exported as it is) are one solid: their
+  // union, which TetGen accepts (it refuses the crossing facets).
+  result.mergedBodies = mergeOverlappingBodies(surface).merged;
+  const double inputVolume = result.mergedBodies > 0
+                                 ? std::abs(requireClosedManifold(surface).signedVolume)
+                                 : std::abs(report.signedVolume);
+  result.enclosedVolume = inputVolume;
 
   const double firstEdge = automatic
                                ? automaticEdgeLength(result.enclosedVolume, options.autoTargetTets)
@@ -351,7 +358,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       timedOut = false;
       surface = original;
       result.simplified = false;
-      result.enclosedVolume = std::abs(report.signedVolume);
+      result.enclosedVolume = inputVolume;
       result.meshedTriangles = surface.triangles.size();
       intersectionTest = IntersectionTest::Run;
       out = runTetGen(surface, switchesFor(edge), abortOrTimeout, intersectionTest);

@@ -94,11 +94,27 @@ class CliErrorTest(unittest.TestCase):
         self.expect_error([write(os.path.join(self.tmp, "fin.obj"), fin)], "non-manifold")
 
     def test_self_intersecting_surface(self):
+        # One body crossing itself: the cube's top face folded down through its bottom (a vertex
+        # in the top face's middle pushed below the bottom).
+        folded = CUBE_OBJ + "v 0.5 0.5 -0.3\n"
+        folded = folded.replace("f 5 6 7\nf 5 7 8\n", "f 5 6 9\nf 6 7 9\nf 7 8 9\nf 8 5 9\n")
+        self.expect_error([write(os.path.join(self.tmp, "folded.obj"), folded)], "self-intersecting")
+
+    def test_overlapping_bodies_print_as_their_union(self):
+        # Two closed cubes that overlap (an assembly exported as it is): meshed as one solid, said on
+        # stderr and in report.json (it was "self-intersecting surface").
         second = "".join("v %g %g %g\n" % (x + 0.5, y + 0.5, z + 0.5) for x, y, z in
                          [(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0), (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)])
         faces = "".join("f %d %d %d\n" % tuple(int(i) + 8 for i in line.split()[1:])
                         for line in CUBE_OBJ.splitlines() if line.startswith("f"))
-        self.expect_error([write(os.path.join(self.tmp, "two.obj"), CUBE_OBJ + second + faces)], "self-intersecting")
+        model = write(os.path.join(self.tmp, "two.obj"), CUBE_OBJ + second + faces)
+        result = self.run_cli(model, "-o", self.out, "-q", "--scale", "20", "--until", "mesh")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("bodies of the surface cross each other", result.stderr)
+        with open(os.path.join(self.out, "report.json")) as f:
+            report = json.load(f)
+        self.assertEqual(report["mesh"]["merged_bodies"], 1)
+        self.assertGreater(report["mesh"]["tets"], 0)
 
     def test_inverted_tet(self):
         tet = "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 2 1 3\n"

@@ -168,12 +168,16 @@ TEST(AutoOrient, ThePlateInTheNozzlesWayIsLiftedOnAPedestal) {
   const OrientResult always = searchOrientation(blob, o);
   ASSERT_EQ(always.candidates.size(), 1u);
   EXPECT_EQ(always.candidates[0].pedestal, o.pedestalHeight);
-  // The toolpath's default tilt lifts the nozzle off the plate there: no pedestal is tried.
+  // The toolpath's default tilt lifts the nozzle off the plate there: the placement stays on
+  // the plate (its pedestal is tried too, and needs no tilt, but costs a column).
   o.pedestal = PedestalChoice::WhenItHelps;
   o.maxTiltDeg = OrientOptions{}.maxTiltDeg;
   const OrientResult tilted = searchOrientation(blob, o);
-  ASSERT_EQ(tilted.candidates.size(), 1u);
-  EXPECT_EQ(tilted.candidates[0].plateStations, 0);
+  ASSERT_EQ(tilted.candidates.size(), 2u);
+  const OrientCandidate& placement = tilted.candidates[tilted.best];
+  EXPECT_EQ(placement.pedestal, 0);
+  EXPECT_EQ(placement.plateStations, 0);
+  EXPECT_EQ(placement.tiltClearedPlateStations, keep.plateStations);
 }
 
 TEST(AutoOrient, PlateStationsTheToolpathsTiltLiftsOffThePlateAreNotCounted) {
@@ -194,6 +198,8 @@ TEST(AutoOrient, PlateStationsTheToolpathsTiltLiftsOffThePlateAreNotCounted) {
   EXPECT_LT(tilted.plateStations, untilted.plateStations / 3);  // the lowest 1 mm stay counted
   EXPECT_EQ(untilted.collidingStations - tilted.collidingStations,
             untilted.plateStations - tilted.plateStations);
+  EXPECT_EQ(tilted.tiltClearedPlateStations, untilted.plateStations - tilted.plateStations);
+  EXPECT_EQ(untilted.tiltClearedPlateStations, 0);
   o.maxTiltDeg = 61;
   EXPECT_THROW(searchOrientation(bowl, o), GeoLatticeError);
 }

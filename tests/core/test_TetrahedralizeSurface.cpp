@@ -271,37 +271,59 @@ TEST(TetrahedralizeSurface, DisjointPartsAreAllMeshed) {
   EXPECT_NEAR(r.meshVolume, 2000.0, 1e-6 * 2000.0);
 }
 
-TEST(TetrahedralizeSurface, OverlappingBoxesAreSelfIntersecting) {
+TEST(TetrahedralizeSurface, OverlappingBoxesAreMeshedAsTheirUnion) {
   const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 1.5);
   // Two closed boxes (each valid on its own) that overlap: shifted and rotated copy.
   const Eigen::Matrix3d rotation =
       Eigen::AngleAxisd(0.3, Vec3(1, 2, 3).normalized()).toRotationMatrix();
   const TriangleSurface both = append(box, box, rotation, Vec3(3.3, 4.1, 2.7), false);
   ASSERT_TRUE(checkSurface(both).isClosedManifold());
-  const std::string message = errorOf([&] { tetrahedralizeSurface(both, edge(1.0)); });
-  EXPECT_TRUE(contains(message, "self-intersecting surface: TetGen found")) << message;
-  EXPECT_TRUE(contains(message, "intersecting facets")) << message;
-  // The same with a plain shift (facets crossing at right angles).
+  const TetrahedralizeResult rotated = tetrahedralizeSurface(both, edge(1.0));
+  EXPECT_EQ(rotated.mergedBodies, 1);
+  EXPECT_GT(rotated.meshVolume, 1000.0);
+  EXPECT_LT(rotated.meshVolume, 2000.0);
+  // The same with a plain shift (facets crossing at right angles): 2000 - 4.7 x 4.9 x 5.1 mm^3,
+  // also with the automatic edge length.
   const TriangleSurface shifted =
       append(box, box, Eigen::Matrix3d::Identity(), Vec3(5.3, 5.1, 4.9), false);
-  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(shifted, edge(1.0)); }),
-                       "self-intersecting surface"));
-  // With the automatic edge length (two runs started ahead, the test's verdict first).
+  const double union3 = 2000.0 - 4.7 * 4.9 * 5.1;
+  EXPECT_NEAR(tetrahedralizeSurface(shifted, edge(1.0)).meshVolume, union3, 1e-6 * union3);
   TetrahedralizeOptions automatic;
   automatic.autoTargetTets = 5000;
-  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(shifted, automatic); }),
+  EXPECT_NEAR(tetrahedralizeSurface(shifted, automatic).meshVolume, union3, 1e-6 * union3);
+}
+
+TEST(TetrahedralizeSurface, ASurfaceThatCrossesItselfIsAnError) {
+  // One body: a box whose top-face vertex nearest the middle is pushed down through the bottom.
+  TriangleSurface box = boxSurface(Vec3(10, 10, 10), 5.0);
+  auto distance = [](const Vec3& p) {
+    return (p - Vec3(5, 5, 10)).norm();
+  };
+  const auto top =
+      std::min_element(box.points.begin(), box.points.end(),
+                       [&](const Vec3& a, const Vec3& b) { return distance(a) < distance(b); });
+  ASSERT_EQ(top->z(), 10.0);
+  ASSERT_GT(std::min({top->x(), top->y(), 10 - top->x(), 10 - top->y()}), 1.0);  // inside the face
+  top->z() = -3;
+  ASSERT_TRUE(checkSurface(box).isClosedManifold());
+  const std::string message = errorOf([&] { tetrahedralizeSurface(box, edge(1.0)); });
+  EXPECT_TRUE(contains(message, "self-intersecting surface: TetGen found")) << message;
+  EXPECT_TRUE(contains(message, "intersecting facets")) << message;
+  TetrahedralizeOptions automatic;
+  automatic.autoTargetTets = 5000;
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(box, automatic); }),
                        "self-intersecting surface: TetGen found"));
 }
 
 TEST(TetrahedralizeSurface, GridAlignedOverlapMeshesTheUnion) {
-  // Overlapping boxes whose vertices and facet lines coincide: TetGen's intersection test
-  // does not flag them; it meshes the union (1875 mm^3) with the common part (winding number
-  // 2) as a region of its own, which is a valid mesh of the solid {winding >= 1}.
+  // Overlapping boxes whose vertices and facet lines coincide (TetGen's intersection test does
+  // not flag them): merged into their union (1875 mm^3) before TetGen.
   const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 2.0);
   const TriangleSurface both = append(box, box, Eigen::Matrix3d::Identity(), Vec3(5, 5, 5), false);
   const TetrahedralizeResult r = tetrahedralizeSurface(both, edge(1.0));
+  EXPECT_EQ(r.mergedBodies, 1);
   EXPECT_NEAR(r.meshVolume, 1875.0, 1e-6 * 1875.0);
-  EXPECT_NEAR(r.enclosedVolume, 2000.0, 1e-9 * 2000.0);
+  EXPECT_NEAR(r.enclosedVolume, 1875.0, 1e-9 * 1875.0);
   EXPECT_TRUE(checkTetMesh(r.mesh).isValid());
 }
 

@@ -1,0 +1,95 @@
+// Overlapping closed bodies become their union before meshing (core/mesh/OverlappingBodies.h):
+// boxes whose volumes are known exactly, merged, left alone, and refused.
+#include "mesh/AnalyticShapes.h"
+#include "mesh/OverlappingBodies.h"
+#include "mesh/SurfaceCheck.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
+#include "common/Error.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+using namespace geolattice;
+
+namespace {
+
+/// A box of the given size with its lowest corner at `at`; outward unless `inward`.
+TriangleSurface box(const Vec3& size, const Vec3& at, bool inward = false) {
+  TriangleSurface s = boxSurface(size, 2.0);
+  for (Vec3& p : s.points) {
+    p += at;
+  }
+  if (inward) {
+    for (auto& t : s.triangles) {
+      std::swap(t[1], t[2]);
+    }
+  }
+  return s;
+}
+
+TriangleSurface together(const std::vector<TriangleSurface>& parts) {
+  TriangleSurface out;
+  for (const TriangleSurface& s : parts) {
+    const int offset = static_cast<int>(out.points.size());
+    out.points.insert(out.points.end(), s.points.begin(), s.points.end());
+    for (auto t : s.triangles) {
+      out.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    }
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(OverlappingBodies, TwoCrossingBoxesBecomeTheirUnion) {
+  // 10 mm cubes, the second shifted by (5, 5, 5): union 2000 - 125 mm^3.
+  TriangleSurface s = together({box({10, 10, 10}, {0, 0, 0}), box({10, 10, 10}, {5, 5, 5})});
+  const OverlappingBodiesResult r = mergeOverlappingBodies(s);
+  EXPECT_EQ(r.bodies, 2);
+  EXPECT_EQ(r.merged, 1);
+  const SurfaceCheckReport check = requireClosedManifold(s);
+  EXPECT_NEAR(check.signedVolume, 2000.0 - 125.0, 1e-6);
+  // Meshed as one solid, with no "self-intersecting surface" from TetGen.
+  TetrahedralizeOptions o;
+  o.targetEdgeLength = 2.0;
+  const TetrahedralizeResult meshed = tetrahedralizeSurface(
+      together({box({10, 10, 10}, {0, 0, 0}), box({10, 10, 10}, {5, 5, 5})}), o);
+  EXPECT_EQ(meshed.mergedBodies, 1);
+  EXPECT_NEAR(meshed.meshVolume, 1875.0, 1e-6 * 1875.0);
+}
+
+TEST(OverlappingBodies, AChainOfThreeIsOneSolid) {
+  TriangleSurface s = together(
+      {box({10, 4, 4}, {0, 0, 0}), box({10, 4, 4}, {8, 0, 0}), box({10, 4, 4}, {16, 0, 0})});
+  const OverlappingBodiesResult r = mergeOverlappingBodies(s);
+  EXPECT_EQ(r.bodies, 3);
+  EXPECT_EQ(r.merged, 2);
+  EXPECT_NEAR(requireClosedManifold(s).signedVolume, 26.0 * 16.0, 1e-6);
+}
+
+TEST(OverlappingBodies, SeparateAndNestedBodiesAreLeftAsTheyAre) {
+  // Two bodies apart, and a box with a cavity (an inward shell inside, not touching): unchanged.
+  for (const TriangleSurface& input :
+       {together({box({10, 10, 10}, {0, 0, 0}), box({10, 10, 10}, {20, 0, 0})}),
+        together({box({10, 10, 10}, {0, 0, 0}), box({4, 4, 4}, {3, 3, 3}, true)}),
+        box({10, 10, 10}, {0, 0, 0})}) {
+    TriangleSurface s = input;
+    const OverlappingBodiesResult r = mergeOverlappingBodies(s);
+    EXPECT_EQ(r.merged, 0);
+    EXPECT_EQ(s.points, input.points);
+    EXPECT_EQ(s.triangles, input.triangles);
+  }
+}
+
+TEST(OverlappingBodies, ACavityCrossingTheOuterShellIsAnError) {
+  TriangleSurface s = together({box({10, 10, 10}, {0, 0, 0}), box({4, 4, 4}, {8, 3, 3}, true)});
+  try {
+    mergeOverlappingBodies(s);
+    FAIL() << "expected an error";
+  } catch (const GeoLatticeError& e) {
+    EXPECT_NE(std::string(e.what()).find("inward-facing shell (a cavity) near (10, 5, 5)"),
+              std::string::npos)
+        << e.what();
+  }
+}
