@@ -43,6 +43,16 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
            << fieldValue(pathCollisions, arrays::CollisionLayerRange, 1);
     }
     line << ": see toolpath_collisions.vtp";
+    // A closed void: a nozzle never gets inside to print its walls and roof from there.
+    const double cavities =
+        P.GetTetMeshInput()
+            ? 0.0
+            : fieldValue(P.Tetrahedralize->GetOutputDataObject(0), arrays::CavityRegions);
+    if (cavities > 0) {
+      line << "; the part has " << cavities << " closed inner "
+           << (cavities == 1 ? "cavity" : "cavities")
+           << " (no nozzle can enter: if the collisions are on its walls, fill it or open it)";
+    }
     // What to try, cheapest first: the orientation search, then the real printhead's shape.
     std::string hint;
     if (P.Orientation->GetOrient() == vtkGLAutoOrient::KEEP) {

@@ -111,6 +111,7 @@ void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {
     s["tetgen_count_set_by_surface"] = fieldValue(tets, arrays::TetGenSurfaceBoundCount) != 0;
     s["removed_flat_tets"] = fieldValue(tets, arrays::RemovedFlatTets);
     s["merged_bodies"] = fieldValue(tets, arrays::MergedBodies);
+    s["cavities"] = fieldValue(tets, arrays::CavityRegions);
   }
   s["points"] = points(tets);
   s["tets"] = cells(tets);

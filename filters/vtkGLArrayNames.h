@@ -77,6 +77,8 @@ constexpr const char* SimplificationDistance =
 constexpr const char* SimplificationSeconds = "SimplificationSeconds";  ///< its wall time (s)
 /// Bodies merged into another one they cross (core/mesh/OverlappingBodies.h), 1 value.
 constexpr const char* MergedBodies = "MergedBodies";
+/// Closed inner cavities of the solid (TetGen regions outside the surface, removed), 1 value.
+constexpr const char* CavityRegions = "CavityRegions";
 constexpr const char* TetGenRuns = "TetGenRuns";  ///< TetGen runs (edge search and retries)
 constexpr const char* TetGenSpeculativeRun =
     "TetGenSpeculativeRun";  ///< 1: a longer edge was meshed beside the first automatic run

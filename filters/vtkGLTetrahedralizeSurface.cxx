@@ -174,6 +174,7 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::TetGenSurfaceBoundCount, result.surfaceBoundCount ? 1.0 : 0.0);
     addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
     addValue(fd, gl::arrays::MergedBodies, static_cast<double>(result.mergedBodies));
+    addValue(fd, gl::arrays::CavityRegions, static_cast<double>(result.removedCavityRegions));
     if (result.mergedBodies > 0) {
       vtkWarningMacro(<< "bodies of the surface cross each other; meshed as their union ("
                       << result.mergedBodies << " fewer bodies)");

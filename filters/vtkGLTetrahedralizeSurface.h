@@ -11,7 +11,8 @@
  *         consistently oriented surface (mm). Several shells are allowed: disjoint parts are all
  *         meshed; an inner shell oriented inward is a cavity and stays empty. Bodies whose
  *         surfaces cross each other (an assembly exported as it is) are meshed as their union
- *         (core/mesh/OverlappingBodies.h; field data `MergedBodies`, and a warning). An
+ *         (core/mesh/OverlappingBodies.h; field data `MergedBodies`, and a warning). Closed
+ *         cavities are counted in field data `CavityRegions`. An
  *         inward-oriented surface is flipped. Input arrays are not passed (the vertices change).
  * Output: vtkUnstructuredGrid of linear, positively oriented VTK_TETRA cells;
  *   - cell data `RadiusEdgeRatio` (arrays::TetQuality): circumradius / shortest edge per tet

@@ -566,6 +566,22 @@ class CliGateTest(unittest.TestCase):
         self.assertEqual(report["gates"][gate]["stopped"], ["program"])
         self.assertEqual(report["exit_status"], status)
 
+    def test_a_closed_cavity_is_named_in_the_collision_gate(self):
+        # A 20 mm cube with a closed 12 mm cavity (an inward shell): the layers over the void
+        # collide; the stop line says the part has a cavity no nozzle can enter, report.json counts it.
+        cube = [line.split() for line in CUBE_OBJ.splitlines()]
+        points = [[float(x) for x in c[1:]] for c in cube if c[0] == "v"]
+        faces = [[int(i) for i in c[1:]] for c in cube if c[0] == "f"]
+        text = "".join("v %g %g %g\n" % tuple(20 * x for x in p) for p in points)
+        text += "".join("v %g %g %g\n" % tuple(4 + 12 * x for x in p) for p in points)
+        text += "".join("f %d %d %d\n" % tuple(f) for f in faces)
+        text += "".join("f %d %d %d\n" % (f[0] + 8, f[2] + 8, f[1] + 8) for f in faces)  # inward
+        model = write(os.path.join(self.tmp, "hollow_cube.obj"), text)
+        result, report, programs, out = self.run_cli(model)
+        self.expect_gate(result, report, programs, out, 4, "collision",
+                         ["the part has 1 closed inner cavity", "fill it or open it"])
+        self.assertEqual(report["mesh"]["cavities"], 1)
+
     def test_the_bunny_keeps_the_printhead_out_of_the_plate(self):
         # Issue 15's acceptance for the bunny: with the example printhead on a 10 mm pedestal, no
         # station and no air move of the 80 mm bunny (as placed) has the printhead in the build
