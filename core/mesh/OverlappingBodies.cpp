@@ -113,6 +113,13 @@ OverlappingBodiesResult mergeOverlappingBodies(TriangleSurface& surface) {
                 where(bodies[k].box) +
                 " crosses another body; repair the part in its CAD tool and export it again");
           }
+          // The union needs bodies that do not cross themselves.
+          if (PMP::does_self_intersect(mesh(k))) {
+            throw GeoLatticeError("self-intersecting surface: the body near " +
+                                  where(bodies[k].box) +
+                                  " crosses itself (and another body); repair it in its CAD "
+                                  "tool and export it again");
+          }
         }
         Mesh united;
         bool ok = false;

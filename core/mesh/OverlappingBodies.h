@@ -27,7 +27,8 @@ struct OverlappingBodiesResult {
 /// three overlapping bodies becomes one); the surface is replaced only when something merged.
 /// Every body must be closed and consistently oriented (requireClosedManifold holds for the whole
 /// surface). Throws GeoLatticeError when a crossing body is oriented inward (a cavity's shell
-/// that crosses another body: no union is meant) or CGAL cannot build a closed union.
+/// that crosses another body: no union is meant) or crosses itself, or CGAL cannot build a
+/// closed union.
 OverlappingBodiesResult mergeOverlappingBodies(TriangleSurface& surface);
 
 }  // namespace geolattice

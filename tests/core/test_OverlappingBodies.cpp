@@ -93,3 +93,23 @@ TEST(OverlappingBodies, ACavityCrossingTheOuterShellIsAnError) {
         << e.what();
   }
 }
+
+TEST(OverlappingBodies, ABodyThatCrossesItselfIsNotMerged) {
+  // A box folded through itself (a top-face vertex pushed below the bottom) and a box crossing it.
+  TriangleSurface folded = box({10, 10, 10}, {0, 0, 0});
+  auto distance = [](const Vec3& p) {
+    return (p - Vec3(5, 5, 10)).norm();
+  };
+  const auto top =
+      std::min_element(folded.points.begin(), folded.points.end(),
+                       [&](const Vec3& a, const Vec3& b) { return distance(a) < distance(b); });
+  ASSERT_EQ(top->z(), 10.0);
+  top->z() = -3;
+  TriangleSurface s = together({folded, box({10, 10, 10}, {5, 5, 5})});
+  try {
+    mergeOverlappingBodies(s);
+    FAIL() << "expected an error";
+  } catch (const GeoLatticeError& e) {
+    EXPECT_NE(std::string(e.what()).find("crosses itself"), std::string::npos) << e.what();
+  }
+}
