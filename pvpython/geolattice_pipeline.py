@@ -170,12 +170,13 @@ def set_pedestal(p, pedestal):
 
 
 def match_orientation_to_print(p):
-    """The orientation search's refinement at the print's layer interval and lattice width
-    (GLPrintPipeline::MatchOrientationToPrint)."""
+    """The orientation search's refinement at the print's layer interval, lattice width, order and
+    largest axis tilt (GLPrintPipeline::MatchOrientationToPrint)."""
     set_property(p["orient"], "RefineLayerInterval", get_property(p["layers"], "LayerInterval"))
     set_property(p["orient"], "RefineLatticeWidth",
                  min(get_property(p["lattice"], "AlphaWidth"), get_property(p["lattice"], "BetaWidth")))
     p["orient"].RefineStrategy = p["sequencer"].Strategy
+    set_property(p["orient"], "MaxAxisTilt", get_property(p["toolpath"], "MaxAxisTilt"))
 
 
 def summary_values(table):
