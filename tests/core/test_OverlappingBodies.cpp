@@ -6,6 +6,8 @@
 #include "tetrahedralize/TetrahedralizeSurface.h"
 #include "common/Error.h"
 
+#include "../common/FoldedSurface.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -97,14 +99,7 @@ TEST(OverlappingBodies, ACavityCrossingTheOuterShellIsAnError) {
 TEST(OverlappingBodies, ABodyThatCrossesItselfIsNotMerged) {
   // A box folded through itself (a top-face vertex pushed below the bottom) and a box crossing it.
   TriangleSurface folded = box({10, 10, 10}, {0, 0, 0});
-  auto distance = [](const Vec3& p) {
-    return (p - Vec3(5, 5, 10)).norm();
-  };
-  const auto top =
-      std::min_element(folded.points.begin(), folded.points.end(),
-                       [&](const Vec3& a, const Vec3& b) { return distance(a) < distance(b); });
-  ASSERT_EQ(top->z(), 10.0);
-  top->z() = -3;
+  foldTopThroughBottom(folded, 3.0);
   TriangleSurface s = together({folded, box({10, 10, 10}, {5, 5, 5})});
   try {
     mergeOverlappingBodies(s);

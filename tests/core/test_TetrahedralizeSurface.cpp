@@ -8,6 +8,7 @@
 #include "tetrahedralize/TetGenRunner.h"
 
 #include "../common/ErrorOf.h"
+#include "../common/FoldedSurface.h"
 #include "../common/TestModels.h"
 
 #include <gtest/gtest.h>
@@ -296,15 +297,8 @@ TEST(TetrahedralizeSurface, OverlappingBoxesAreMeshedAsTheirUnion) {
 TEST(TetrahedralizeSurface, ASurfaceThatCrossesItselfIsAnError) {
   // One body: a box whose top-face vertex nearest the middle is pushed down through the bottom.
   TriangleSurface box = boxSurface(Vec3(10, 10, 10), 5.0);
-  auto distance = [](const Vec3& p) {
-    return (p - Vec3(5, 5, 10)).norm();
-  };
-  const auto top =
-      std::min_element(box.points.begin(), box.points.end(),
-                       [&](const Vec3& a, const Vec3& b) { return distance(a) < distance(b); });
-  ASSERT_EQ(top->z(), 10.0);
-  ASSERT_GT(std::min({top->x(), top->y(), 10 - top->x(), 10 - top->y()}), 1.0);  // inside the face
-  top->z() = -3;
+  const Vec3 moved = box.points[foldTopThroughBottom(box, 3.0)];
+  ASSERT_GT(std::min({moved.x(), moved.y(), 10 - moved.x(), 10 - moved.y()}), 1.0);  // mid-face
   ASSERT_TRUE(checkSurface(box).isClosedManifold());
   const std::string message = errorOf([&] { tetrahedralizeSurface(box, edge(1.0)); });
   EXPECT_TRUE(contains(message, "self-intersecting surface: TetGen found")) << message;
