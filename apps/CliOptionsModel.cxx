@@ -67,8 +67,8 @@ void addModelOptions(std::vector<CliOption>& t) {
   t.push_back({"--pedestal", "auto|MM", orient,
                "raise the part on a printed column of its footprint, MM tall, so\n"
                "overhangs right above the plate can be printed; auto: --orient auto\n"
-               "puts it on a 10 mm one where that prints better (none with keep);\n"
-               "0 = never",
+               "puts it on a 10 mm one where that prints better (20 or 30 mm when its\n"
+               "toolpath still meets the plate; none with keep); 0 = never",
                "GLPrintPart.PedestalHeight",
                [](P& p, RunOptions&, const std::string& v) {
                  if (v == "auto") {

@@ -54,7 +54,9 @@ void addPrintOptions(std::vector<CliOption>& t) {
                }});
 
   t.push_back({"--strategy", "NAME", seq,
-               "lpt | dpt | a4 | best (best = rollout of a4, never worse)",
+               "lpt | dpt | a4 | best (best = rollout of a4, never worse; with --orient\n"
+               "auto, when its toolpath collides, the lpt and dpt orders are tried through\n"
+               "the toolpath and the one that collides least is printed)",
                "GLPrintSequencer.Strategy",
                [](P& p, RunOptions&, const std::string& v) {
                  p.Sequencer->SetStrategy(choice("--strategy", v, kStrategies));

@@ -12,6 +12,7 @@
 
 #include "GLPrintPipeline.h"
 #include "common/Error.h"
+#include "sequence/PrintSequencer.h"
 #include "vtkGLArrayNames.h"
 
 #include <vtkAlgorithm.h>
@@ -162,6 +163,9 @@ private:
     reportSequence(P, sequenced, sequence);
     sequence["subgraphs"] = vtkDataSet::SafeDownCast(tree)->GetNumberOfPoints();
     reportCollisions(collisions, sequence);
+    if (!this->OrderTries.empty()) {
+      sequence["order_tries"] = this->OrderTries;
+    }
     this->Write(sequenced, "lattice.vtp");
     this->Write(P.Sequencer->GetOutputDataObject(1), "skeleton.vtp");
     this->Write(P.Sequencer->GetOutputDataObject(2), "sequence.vtp");
@@ -215,6 +219,12 @@ private:
     if (this->TryOtherOrientations(pathCollisions)) {
       return this->Stages();  // the stages again for the chosen candidate: its files and report
     }
+    if (this->TryTallerPedestals(pathCollisions)) {
+      return this->Stages();  // the same for the chosen pedestal
+    }
+    if (this->TryOtherOrders(pathCollisions)) {
+      return this->Stages();  // and for the chosen print order
+    }
     if (R.until == "toolpath") {
       return kExitOk;
     }
@@ -267,6 +277,92 @@ private:
     return true;
   }
   bool OrientationsTried = false;
+
+  /// With the Best strategy, when its toolpath collides (in the orientation chosen): the LPT and
+  /// DPT orders through the toolpath verifier (GLPrintPipeline::ChooseOrderByToolpath), recorded
+  /// in report.json sequence.order_tries. True when other orders ran, so the stages must run
+  /// again for the chosen one (once a run).
+  bool TryOtherOrders(vtkDataObject* pathCollisions) {
+    if (this->OrdersTried || fieldValue(pathCollisions, arrays::CollisionViolatingStations) == 0) {
+      return false;
+    }
+    this->OrdersTried = true;
+    auto name = [](int strategy) {
+      return sequenceStrategyName(static_cast<SequenceStrategy>(strategy));
+    };
+    const auto tries = P.ChooseOrderByToolpath([&](const GLPrintPipeline::OrderTry& t) {
+      if (!R.quiet) {
+        std::cout << "geolattice: the toolpath collides: trying the " << name(t.strategy)
+                  << " print order\n";
+      }
+    });
+    this->OrderTries = Json::array();
+    for (const auto& t : tries) {
+      this->OrderTries.push_back({{"strategy", name(t.strategy)},
+                                  {"ok", t.ok},
+                                  {"colliding_stations", t.colliding},
+                                  {"stations", t.stations},
+                                  {"seconds", t.seconds}});
+    }
+    if (tries.size() < 2) {
+      this->OrderTries = Json::array();  // nothing else ran: Best's own outputs stand
+      return false;
+    }
+    for (const char* stale : {"sequence", "toolpath", "summary"}) {
+      this->Report.erase(stale);
+    }
+    if (!R.quiet) {
+      const int chosen = P.Sequencer->GetStrategyOverride();
+      std::cout << "geolattice: printing the "
+                << name(chosen >= 0 ? chosen : P.Sequencer->GetStrategy())
+                << " order (its toolpath collides least)\n";
+    }
+    return true;
+  }
+  bool OrdersTried = false;
+  Json OrderTries = Json::array();
+
+  /// With --orient auto and the automatic pedestal, when the toolpath meets the build plate
+  /// though the part stands on a pedestal: taller ones through the toolpath verifier
+  /// (GLPrintPipeline::RaisePedestalByToolpath), recorded in report.json orient.pedestal_tries.
+  /// True when a taller one ran, so the stages must run again for the chosen one (once a run).
+  bool TryTallerPedestals(vtkDataObject* pathCollisions) {
+    if (this->PedestalsTried ||
+        fieldValue(pathCollisions, arrays::CollisionViolatingStations) == 0) {
+      return false;
+    }
+    this->PedestalsTried = true;
+    const auto tries = P.RaisePedestalByToolpath([&](const GLPrintPipeline::PedestalTry& t) {
+      if (!R.quiet) {
+        std::cout << "geolattice: the toolpath meets the build plate: trying a " << t.height
+                  << " mm pedestal\n";
+      }
+    });
+    if (tries.size() < 2) {
+      return false;
+    }
+    Json list = Json::array();
+    for (const auto& t : tries) {
+      list.push_back({{"height_mm", t.height},
+                      {"ok", t.ok},
+                      {"colliding_stations", t.colliding},
+                      {"plate_stations", t.plate},
+                      {"stations", t.stations},
+                      {"seconds", t.seconds}});
+    }
+    this->Section("orient")["pedestal_tries"] = list;
+    for (const char* stale : {"pedestal", "mesh", "gdf", "layers", "overhang", "lattice",
+                              "skeleton", "sequence", "toolpath", "summary"}) {
+      this->Report.erase(stale);
+    }
+    if (!R.quiet) {
+      std::cout << "geolattice: printing on the "
+                << P.Pedestal->HeightFor(P.Orientation->GetOutputDataObject(0))
+                << " mm pedestal (its toolpath collides least)\n";
+    }
+    return true;
+  }
+  bool PedestalsTried = false;
 
   /// Checks the parameters of every stage the run will reach before the first one runs: VTK's
   /// information pass visits every filter upstream of the last ones, and each filter checks its

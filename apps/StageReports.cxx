@@ -207,7 +207,11 @@ void reportSkeleton(vtkDataObject* tree, Json& s) {
 
 void reportSequence(GLPrintPipeline& p, vtkDataObject* sequenced, Json& s) {
   static const char* const names[] = {"lpt", "dpt", "a4", "best"};
-  s["strategy"] = names[p.Sequencer->GetStrategy()];
+  // The strategy whose order this is (the one chosen by the toolpath in place of Best, if any),
+  // and the one asked for.
+  const int used = p.Sequencer->GetStrategyOverride();
+  s["strategy"] = names[used >= 0 ? used : p.Sequencer->GetStrategy()];
+  s["requested_strategy"] = names[p.Sequencer->GetStrategy()];
   vtkGLNozzle* n = p.Nozzle;
   s["nozzle_angle_deg"] = n->GetNozzleAngle();
   s["nozzle_length_mm"] = n->GetNozzleLength();

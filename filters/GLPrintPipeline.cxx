@@ -153,16 +153,13 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
     if (rank > 0 && starting) {
       starting(t);
     }
-    const auto start = std::chrono::steady_clock::now();
-    t.ok = this->ToolpathVerifier->GetExecutive()->Update() != 0;
-    t.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    vtkDataObject* verdict = this->ToolpathVerifier->GetOutputDataObject(0);
-    t.colliding =
-        static_cast<long long>(field(verdict, geolattice::arrays::CollisionViolatingStations));
-    t.stations = static_cast<long long>(field(verdict, geolattice::arrays::CollisionStations));
+    const ToolpathVerdict verdict = this->UpdateToolpathVerdict();
+    t.ok = verdict.ok;
+    t.colliding = verdict.colliding;
+    t.stations = verdict.stations;
+    t.seconds = verdict.seconds;
     t.pedestal =
         field(this->Orientation->GetOutputDataObject(0), geolattice::arrays::OrientPedestalHeight);
-    t.ok = t.ok && t.colliding >= 0;
     done.push_back(t);
     if (t.ok && t.colliding == 0) {
       break;
@@ -175,6 +172,111 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
     }
   }
   this->Orientation->SetCandidateRank(best ? best->rank : 0);
+  return done;
+}
+
+GLPrintPipeline::ToolpathVerdict GLPrintPipeline::UpdateToolpathVerdict() {
+  ToolpathVerdict v;
+  const auto start = std::chrono::steady_clock::now();
+  v.ok = this->ToolpathVerifier->GetExecutive()->Update() != 0;
+  v.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  vtkDataObject* out = this->ToolpathVerifier->GetOutputDataObject(0);
+  auto count = [out](const char* name) {
+    vtkDataArray* a = out ? out->GetFieldData()->GetArray(name) : nullptr;
+    return a && a->GetNumberOfTuples() > 0 ? static_cast<long long>(a->GetTuple1(0)) : -1LL;
+  };
+  v.colliding = count(geolattice::arrays::CollisionViolatingStations);
+  v.plate = count(geolattice::arrays::CollisionPlateStations);
+  v.stations = count(geolattice::arrays::CollisionStations);
+  v.ok = v.ok && v.colliding >= 0;
+  return v;
+}
+
+std::vector<GLPrintPipeline::OrderTry> GLPrintPipeline::ChooseOrderByToolpath(
+    const std::function<void(const OrderTry&)>& starting) {
+  std::vector<OrderTry> done;
+  if (this->Orientation->GetOrient() != vtkGLAutoOrient::AUTO || this->TetMeshInput ||
+      this->Sequencer->GetStrategy() != vtkGLPrintSequencer::BEST) {
+    return done;
+  }
+  for (int strategy :
+       {vtkGLPrintSequencer::BEST, vtkGLPrintSequencer::LPT, vtkGLPrintSequencer::DPT}) {
+    if (geolattice::stopRequest().load()) {
+      break;
+    }
+    const bool best = strategy == vtkGLPrintSequencer::BEST;
+    this->Sequencer->SetStrategyOverride(best ? -1 : strategy);
+    OrderTry t;
+    t.strategy = strategy;
+    if (!best && starting) {
+      starting(t);
+    }
+    const ToolpathVerdict verdict = this->UpdateToolpathVerdict();  // Best's: from the cache
+    t.ok = verdict.ok;
+    t.colliding = verdict.colliding;
+    t.stations = verdict.stations;
+    t.seconds = verdict.seconds;
+    done.push_back(t);
+    // Done when it is collision-free, or (Best's) when it collides only with the build plate,
+    // which is there from the start whatever the order.
+    if (t.ok && (t.colliding == 0 || (best && verdict.plate == t.colliding))) {
+      break;
+    }
+  }
+  const OrderTry* chosen = nullptr;
+  for (const OrderTry& t : done) {
+    if (t.ok && (!chosen || t.colliding < chosen->colliding)) {
+      chosen = &t;
+    }
+  }
+  this->Sequencer->SetStrategyOverride(
+      chosen && chosen->strategy != vtkGLPrintSequencer::BEST ? chosen->strategy : -1);
+  return done;
+}
+
+std::vector<GLPrintPipeline::PedestalTry> GLPrintPipeline::RaisePedestalByToolpath(
+    const std::function<void(const PedestalTry&)>& starting) {
+  std::vector<PedestalTry> done;
+  if (this->Orientation->GetOrient() != vtkGLAutoOrient::AUTO || this->TetMeshInput ||
+      this->Orientation->GetPedestal() != vtkGLAutoOrient::PEDESTAL_WHEN_IT_HELPS) {
+    return done;
+  }
+  this->Pedestal->SetHeightOverride(-1);
+  ToolpathVerdict verdict = this->UpdateToolpathVerdict();  // the search's pedestal: cached
+  const double chosen = this->Pedestal->HeightFor(this->Orientation->GetOutputDataObject(0));
+  if (!verdict.ok || verdict.plate <= 0 || !(chosen > 0)) {
+    return done;
+  }
+  for (double factor : {1.0, 2.0, 3.0}) {
+    if (geolattice::stopRequest().load()) {
+      break;
+    }
+    PedestalTry t;
+    t.height = factor * chosen;
+    if (factor > 1) {
+      if (starting) {
+        starting(t);
+      }
+      this->Pedestal->SetHeightOverride(t.height);
+      verdict = this->UpdateToolpathVerdict();
+    }
+    t.ok = verdict.ok;
+    t.colliding = verdict.colliding;
+    t.plate = verdict.plate;
+    t.stations = verdict.stations;
+    t.seconds = verdict.seconds;
+    done.push_back(t);
+    if (t.ok && t.plate == 0) {  // a taller one cannot do better
+      break;
+    }
+  }
+  const PedestalTry* best = nullptr;
+  for (const PedestalTry& t : done) {
+    if (t.ok && (!best || t.colliding < best->colliding)) {
+      best = &t;
+    }
+  }
+  this->Pedestal->SetHeightOverride(best && best->height != chosen ? best->height : -1.0);
   return done;
 }
 

@@ -116,6 +116,57 @@ public:
   std::vector<OrientationTry> ChooseOrientationByToolpath(
       int tries, const std::function<void(const OrientationTry&)>& starting = {});
 
+  /// One pedestal height run through the toolpath verifier by RaisePedestalByToolpath.
+  struct PedestalTry {
+    double height = 0;        ///< mm
+    bool ok = false;          ///< the stages ran
+    long long colliding = 0;  ///< strict toolpath stations with the nozzle in material/plate
+    long long plate = 0;      ///< of them, at the build plate
+    long long stations = 0;   ///< stations checked
+    double seconds = 0;
+  };
+
+  /// A taller pedestal where the toolpath meets the build plate, with Orient Auto and the
+  /// automatic pedestal (after ChooseOrientationByToolpath): when the part stands on the search's
+  /// pedestal of h mm and stations of its toolpath have the plate in the nozzle, the same
+  /// orientation on pedestals of 2h and 3h mm runs through the toolpath verifier, until one has
+  /// no plate station, and the height with the fewest colliding stations is kept (the
+  /// pedestal's HeightOverride; the lower on a tie). Why: the search scores its pedestal at one
+  /// height (10 mm by default) on a coarse mesh without axis tilts; where the lowest layers
+  /// overhang far, the tilted nozzle reaches further down than that (the knight: 71 plate
+  /// stations on 10 mm, none on 20). The first entry is h's own (from the current outputs).
+  /// `starting` (optional) is called before each taller one. Nothing is tried otherwise (Orient
+  /// Keep, a pedestal asked for or none, a tet-mesh input, no pedestal chosen, no plate station)
+  /// or after a stop request (Ctrl-C).
+  std::vector<PedestalTry> RaisePedestalByToolpath(
+      const std::function<void(const PedestalTry&)>& starting = {});
+
+  /// One print order run through the toolpath verifier by ChooseOrderByToolpath.
+  struct OrderTry {
+    int strategy = 0;         ///< vtkGLPrintSequencer::LPT .. BEST
+    bool ok = false;          ///< the stages ran
+    long long colliding = 0;  ///< strict toolpath stations with the nozzle in material/plate
+    long long stations = 0;   ///< stations checked
+    double seconds = 0;
+  };
+
+  /// The print order the real toolpath prints best, for the sequencer's Best strategy with Orient
+  /// Auto (the mode that searches for a set-up that prints; after RaisePedestalByToolpath):
+  /// when the toolpath of Best's order collides, the layer-priority and the depth-priority orders
+  /// (LPT, DPT) run through the toolpath verifier too, until one is strictly collision-free, and
+  /// the order with the fewest colliding stations is kept (the sequencer's StrategyOverride; Best
+  /// on a tie). With Orient Keep the part and the order are printed as asked (and fast: each try
+  /// plans a whole toolpath). Why: Best, like the paper's A4, orders whole sub-graphs by the collisions of a nozzle
+  /// along their normals; where every such order collides it forces the step blocked by the
+  /// fewest sub-graphs, and that can leave collisions the planner's axis tilts cannot clear
+  /// where printing layer by layer leaves none (a coil over a disc: 78 colliding stations with
+  /// Best's order, 0 with LPT's). The first entry is Best's own (from the current outputs).
+  /// `starting` (optional) is called before each other order. Nothing is tried with Orient Keep
+  /// or a tet-mesh input, for another strategy, when Best's toolpath is collision-free or
+  /// collides only with the build plate (no order moves it), or after a stop request (Ctrl-C).
+  std::vector<OrderTry> ChooseOrderByToolpath(
+      const std::function<void(const OrderTry&)>& starting = {});
+
   /// Candidates ChooseOrientationByToolpath runs at most (CLI --orient-tries, GL Print Part
   /// OrientTries; 1 = the search's best only).
   int OrientationTries = 3;
@@ -154,6 +205,15 @@ public:
   vtkNew<vtkGLWaypointCsvWriter> WaypointWriter;
 
 private:
+  /// The toolpath verifier brought up to date: whether it ran, its colliding and checked
+  /// stations (-1 when missing) and the seconds it took.
+  struct ToolpathVerdict {
+    bool ok = false;
+    long long colliding = -1, plate = -1, stations = -1;  ///< plate: of colliding, at the plate
+    double seconds = 0;
+  };
+  ToolpathVerdict UpdateToolpathVerdict();
+
   bool TetMeshInput = false;
 };
 

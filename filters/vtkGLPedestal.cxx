@@ -32,6 +32,9 @@ gl::PedestalOptions pedestalOptions(vtkGLPedestal* f, vtkDataObject* input = nul
     o.height = height->GetTuple1(0);
     o.contactHeight = reach->GetTuple1(0);
   }
+  if (f->GetHeightOverride() >= 0) {
+    o.height = f->GetHeightOverride();
+  }
   return o;
 }
 }  // namespace
@@ -47,6 +50,7 @@ void vtkGLPedestal::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Height: " << this->Height << " mm\n";
   os << indent << "ContactHeight: " << this->ContactHeight << " mm\n";
   os << indent << "UseOrientation: " << (this->UseOrientation ? "on" : "off") << "\n";
+  os << indent << "HeightOverride: " << this->HeightOverride << " mm\n";
 }
 
 double vtkGLPedestal::HeightFor(vtkDataObject* input) {

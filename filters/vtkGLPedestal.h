@@ -21,7 +21,8 @@
  * ContactHeight (mm, default 0.3, > 0), UseOrientation (default on): when the input comes from
  * GL Auto Orient's search (field data `OrientPedestalHeight`), the pedestal it chose for that
  * orientation (height and `OrientPedestalContactHeight`) replaces Height and ContactHeight, so
- * the part is built as it was scored (0: none).
+ * the part is built as it was scored (0: none); HeightOverride (mm, default -1 = none): the
+ * height used in place of both (GLPrintPipeline::RaisePedestalByToolpath).
  *
  * Errors (vtkErrorMacro, empty output, RequestData returns 0): a bad parameter, an empty or
  * non-triangle input, a part that touches the plate at a tip or an edge only (no footprint:
@@ -59,6 +60,14 @@ public:
   vtkBooleanMacro(UseOrientation, bool);
   ///@}
 
+  ///@{
+  /// The height used in place of Height and of the orientation's choice (mm, default -1 = none;
+  /// the footprint stays the orientation's). Not a user setting: GLPrintPipeline::
+  /// RaisePedestalByToolpath sets it when a taller pedestal keeps the nozzle off the plate.
+  vtkSetClampMacro(HeightOverride, double, -1.0, 500.0);
+  vtkGetMacro(HeightOverride, double);
+  ///@}
+
   /// The height of the pedestal this filter builds for `input` (mm; 0: it passes it through).
   double HeightFor(vtkDataObject* input);
 
@@ -72,6 +81,7 @@ protected:
   double Height;
   double ContactHeight;
   bool UseOrientation = true;
+  double HeightOverride = -1.0;
 
 private:
   vtkGLPedestal(const vtkGLPedestal&) = delete;

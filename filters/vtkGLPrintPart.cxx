@@ -255,7 +255,9 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
       I.inputTime = input->GetMTime();
     }
     p.MatchOrientationToPrint();
-    p.Orientation->SetCandidateRank(0);  // the search's best first
+    p.Orientation->SetCandidateRank(0);    // the search's best first
+    p.Sequencer->SetStrategyOverride(-1);  // and the order of the Strategy asked for
+    p.Pedestal->SetHeightOverride(-1);     // and the search's pedestal
     GLPrintPipeline::ClearStopRequest();
     I.error.clear();
     // Each stage in order, so a failure names its stage.
@@ -274,14 +276,28 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
       }
     };
     stages();
-    vtkDataArray* colliding = p.ToolpathVerifier->GetOutputDataObject(0)->GetFieldData()->GetArray(
-        gl::arrays::CollisionViolatingStations);
-    if (colliding && colliding->GetTuple1(0) > 0) {
+    auto collides = [&p] {
+      vtkDataArray* colliding =
+          p.ToolpathVerifier->GetOutputDataObject(0)->GetFieldData()->GetArray(
+              gl::arrays::CollisionViolatingStations);
+      return colliding && colliding->GetTuple1(0) > 0;
+    };
+    if (collides()) {
       // Other candidates of the orientation search through the toolpath (Orient Auto only); a
       // failing one is skipped, so its errors are not this filter's.
       p.ChooseOrientationByToolpath(p.OrientationTries);
       I.error.clear();
       stages();  // brings every stage to the chosen candidate (cached when it was the last tried)
+    }
+    if (collides()) {  // then taller pedestals (the plate in the nozzle's way), the same way
+      p.RaisePedestalByToolpath();
+      I.error.clear();
+      stages();
+    }
+    if (collides()) {  // then other print orders (Strategy Best only)
+      p.ChooseOrderByToolpath();
+      I.error.clear();
+      stages();
     }
     vtkPolyData::GetData(outputVector, ToolpathPort)  // with the verifier's Collision array
         ->ShallowCopy(p.ToolpathVerifier->GetOutputDataObject(1));

@@ -28,8 +28,10 @@
  * collides: GLPrintPipeline::ChooseOrientationByToolpath; default 3), PedestalHeight (mm; -1 = the
  * orientation search decides, 0 = none: GLPrintPipeline::
  * SetPedestalRequest), TargetEdgeLength (mm, 0 = automatic), LayerInterval (mm; the first layer
- * follows it, as on the command line), LatticeWidth (mm, α and β), Strategy (0 LPT .. 3 Best),
- * NozzleAngle (degrees), PrintheadFile (empty = the parametric cone).
+ * follows it, as on the command line), LatticeWidth (mm, α and β), Strategy (0 LPT .. 3 Best;
+ * with Best and Orient Auto, when the toolpath of its order collides, the LPT and DPT orders are run through the
+ * toolpath too and the one that collides least is printed: GLPrintPipeline::
+ * ChooseOrderByToolpath), NozzleAngle (degrees), PrintheadFile (empty = the parametric cone).
  *
  * Errors (vtkErrorMacro naming the stage and its message, empty outputs, RequestData returns 0):
  * whatever a stage rejects.

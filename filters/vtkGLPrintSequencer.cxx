@@ -217,7 +217,9 @@ void printOrderPolyline(const gl::PieceSequence& pieces, vtkPolyData* out) {
 /// The core options of the filter's parameters (checked by RequestInformation).
 gl::SequenceOptions sequenceOptions(vtkGLPrintSequencer* f) {
   gl::SequenceOptions o;
-  o.strategy = static_cast<gl::SequenceStrategy>(f->GetStrategy());  // clamped by the setter
+  // Both clamped by their setters.
+  o.strategy = static_cast<gl::SequenceStrategy>(
+      f->GetStrategyOverride() >= 0 ? f->GetStrategyOverride() : f->GetStrategy());
   o.rolloutCandidates = f->GetRolloutCandidates();
   o.retractionCost = f->GetRetractionCost();
   return o;
@@ -321,6 +323,7 @@ int vtkGLPrintSequencer::RequestData(vtkInformation*, vtkInformationVector** inp
 void vtkGLPrintSequencer::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Strategy: " << this->Strategy << "\n";
+  os << indent << "StrategyOverride: " << this->StrategyOverride << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << " mm\n";
   os << indent << "MaximumElements: " << this->MaximumElements << "\n";
   os << indent << "RolloutCandidates: " << this->RolloutCandidates << "\n";

@@ -83,6 +83,14 @@ public:
   ///@}
 
   ///@{
+  /// The strategy used in place of Strategy (default -1 = none: Strategy is used). Not a user
+  /// setting: GLPrintPipeline::ChooseOrderByToolpath sets it when, for Best, another order's
+  /// toolpath collides less; `SequenceStrategy` names the strategy used.
+  vtkSetClampMacro(StrategyOverride, int, -1, BEST);
+  vtkGetMacro(StrategyOverride, int);
+  ///@}
+
+  ///@{
   /// Bound against runaway work (core/common/WorkLimit.h): more pairs of sub-graphs to test for
   /// potential collisions than this is refused (default 40e6, about 9000 sub-graphs).
   vtkSetClampMacro(MaximumElements, double, 1.0, VTK_DOUBLE_MAX);
@@ -129,6 +137,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   int Strategy;
+  int StrategyOverride = -1;
   double SampleSpacing;
   double MaximumElements;
   int RolloutCandidates;

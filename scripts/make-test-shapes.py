@@ -24,6 +24,10 @@ nozzle is a cone of half-angle 45 deg printing curved layers that grow from the 
   wrench.obj             flat ring spanner 100 x 20 x 6 mm (bar 80 x 10, a ring r 10 / hole r 5 at
                          each end, edges rounded 1 mm), lying flat (genus 2): its best print
                          orientation is the one written, flat on the plate (orientation search test)
+  coil.obj               three-turn coil (tube r 3, coil radius 14, pitch 12 mm) rising from a
+                         post on a disc (r 18, 3.5 mm thick): its first turn passes 4 mm over the
+                         disc, a gap a 45 deg nozzle fits only if the disc under it is printed
+                         first (print order test)
 
 Method (deterministic, no random numbers):
   1. Each part is a signed distance function (SDF, < 0 inside) built from exact primitive SDFs
@@ -333,6 +337,23 @@ def wrench_sdf(p):
     return sd_extrude_z(d2, p[:, 2], 0.0, W["thickness"], W["edge_radius"])
 
 
+COIL = dict(turns=3, coil_radius=14.0, tube_radius=3.0, pitch=12.0, start_height=6.0, segments=90,
+            disc_radius=18.0, disc_half_height=2.0, post_radii=(3.5, 3.0), blend=1.5)
+
+
+def coil_sdf(p):
+    c = COIL
+    n = c["segments"]
+    t = np.linspace(0, c["turns"] * 2 * math.pi, n + 1)
+    R = c["coil_radius"]
+    pts = np.stack([R * np.cos(t), R * np.sin(t), c["start_height"] + c["pitch"] * t / (2 * math.pi)], 1)
+    tube = np.min(np.stack([sd_round_cone(p, pts[i], pts[i + 1], c["tube_radius"], c["tube_radius"])
+                            for i in range(n)]), 0)
+    disc = sd_round_cylinder_z(p, (0, 0, 1.5), c["disc_radius"], c["disc_half_height"], 1.0)
+    post = sd_round_cone(p, (R, 0, 0), (R, 0, c["start_height"]), *c["post_radii"])
+    return on_platform(union([tube, disc, post], c["blend"]), p)
+
+
 def _fmt(params):
     return ", ".join(f"{k} {v}" for k, v in params.items())
 
@@ -359,6 +380,9 @@ PARTS = {
     "wrench": dict(sdf=wrench_sdf, bounds=(-51, 51, -11, 11, -1, 7), feature=3.0, genus=2,
                    what="flat ring spanner lying flat: bar with a ring at each end, edges rounded (genus 2)",
                    params=WRENCH),
+    "coil": dict(sdf=coil_sdf, bounds=(-19, 19, -19, 19, -1, 45), feature=3.0, genus=0,
+                 what="coil: three turns rising from a post on a disc, the first turn 4 mm over the disc",
+                 params=COIL),
 }
 
 # --------------------------------------------------------------------------------------------

@@ -1,7 +1,8 @@
 """Unseen, generated parts (scripts/make-test-shapes.py) through the mesh stage: every one must
 mesh, as placed and in the orientation search's coarse evaluation. These parts found three ways
 TetGen's output or run can fail (a volume check too strict for finely curved facets, flat slivers,
-a refinement that does not end on a simplified surface) that the bundled models never showed."""
+a refinement that does not end on a simplified surface) that the bundled models never showed; the
+coil, that the print order must be chosen by the real toolpath."""
 import json
 import os
 import shutil
@@ -12,7 +13,7 @@ import unittest
 
 CLI = os.environ["GEOLATTICE_CLI"]
 SOURCE_DIR = os.environ["GEOLATTICE_SOURCE_DIR"]
-SHAPES = ["genus3_block", "handle_mug", "mushroom", "wrench", "arch"]
+SHAPES = ["genus3_block", "handle_mug", "mushroom", "wrench", "arch", "coil"]
 
 
 class ShapesMeshTest(unittest.TestCase):
@@ -50,6 +51,35 @@ class ShapesMeshTest(unittest.TestCase):
             with self.subTest(shape=name):
                 report = self.mesh(name, "--orient", "auto")
                 self.assertGreater(report["orient"]["candidates"], 100)
+
+    def run_coil(self, *args):
+        out = os.path.join(self.tmp, "coil-order" + "".join(args))
+        result = subprocess.run([CLI, "run", os.path.join(self.tmp, "coil.obj"), "-o", out, "-q",
+                                 "--until", "toolpath", *args],
+                                capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(out, "report.json")) as f:
+            report = json.load(f)
+        return report["sequence"], report["toolpath"]
+
+    def test_the_toolpath_chooses_the_print_order(self):
+        # The coil's first turn passes 4 mm over its disc. best's order (like the paper's A4)
+        # prints that turn before the disc under it, and its toolpath collides there: as placed
+        # (--orient keep) that is printed as asked and stopped at the gate ...
+        sequence, toolpath = self.run_coil()
+        self.assertNotIn("order_tries", sequence)
+        self.assertEqual(sequence["strategy"], "best")
+        self.assertGreater(toolpath["violating_stations"], 0)
+        # ... and with --orient auto, the run plans lpt's order too, which prints the disc
+        # first, and prints that one (no other side of the coil prints better).
+        sequence, toolpath = self.run_coil("--orient", "auto")
+        tries = sequence["order_tries"]
+        self.assertEqual(tries[0]["strategy"], "best")
+        self.assertGreater(tries[0]["colliding_stations"], 0)
+        self.assertEqual(tries[-1]["colliding_stations"], 0, tries)
+        self.assertEqual(sequence["strategy"], tries[-1]["strategy"])
+        self.assertEqual(sequence["requested_strategy"], "best")
+        self.assertEqual(toolpath["violating_stations"], 0)
 
 
 if __name__ == "__main__":

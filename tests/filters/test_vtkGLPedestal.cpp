@@ -104,6 +104,15 @@ TEST(vtkGLPedestal, BuildsThePedestalTheOrientationSearchChose) {
   f->SetHeight(7);
   ASSERT_TRUE(f->Update(0, nullptr));
   EXPECT_LT(fieldValue(f->GetOutputDataObject(0), geolattice::arrays::PedestalFootprintArea), wide);
+  // A height override (GLPrintPipeline::RaisePedestalByToolpath) replaces the search's height
+  // and keeps its footprint.
+  f->SetUseOrientation(true);
+  f->SetHeightOverride(14);
+  EXPECT_EQ(f->HeightFor(chosen), 14.0);
+  ASSERT_TRUE(f->Update(0, nullptr)) << errors->Errors();
+  EXPECT_EQ(fieldValue(f->GetOutputDataObject(0), geolattice::arrays::PedestalHeight), 14);
+  EXPECT_EQ(fieldValue(f->GetOutputDataObject(0), geolattice::arrays::PedestalFootprintArea), wide);
+  f->SetHeightOverride(-1);
   // The search chose none: nothing is built, with UseOrientation on.
   fd->GetArray(geolattice::arrays::OrientPedestalHeight)->SetTuple1(0, 0.0);
   chosen->Modified();

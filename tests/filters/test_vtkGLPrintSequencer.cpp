@@ -253,6 +253,26 @@ TEST(vtkGLPrintSequencer, DepthPriorityCollidesWhereA4DoesNot) {
   }
 }
 
+TEST(vtkGLPrintSequencer, AStrategyOverrideOrdersAsThatStrategyWouldAndIsNamed) {
+  // GLPrintPipeline::ChooseOrderByToolpath puts another order in place of Best's this way.
+  const int layers = 8;
+  auto lattice = towerLattice(layers);
+  auto skeleton = towerSkeleton(layers);
+  SequenceRun dpt(lattice, skeleton, vtkGLPrintSequencer::DPT, 60.0);
+  const std::vector<int> dptOrder = checkedPrintOrder(dpt.output(1));
+  SequenceRun best(lattice, skeleton, vtkGLPrintSequencer::BEST, 60.0);
+  const std::vector<int> bestOrder = checkedPrintOrder(best.output(1));
+  ASSERT_NE(bestOrder, dptOrder);  // DPT collides here, Best does not
+  best.sequencer->SetStrategyOverride(vtkGLPrintSequencer::DPT);
+  vtkPolyData* out = best.output(1);
+  EXPECT_EQ(checkedPrintOrder(out), dptOrder);
+  EXPECT_EQ(strategyName(out), "dpt");
+  EXPECT_EQ(best.sequencer->GetStrategy(), vtkGLPrintSequencer::BEST);  // the setting is kept
+  best.sequencer->SetStrategyOverride(-1);
+  EXPECT_EQ(checkedPrintOrder(best.output(1)), bestOrder);
+  EXPECT_FALSE(best.errors->HasError()) << best.errors->Errors();
+}
+
 TEST(vtkGLPrintSequencer, CollisionsWithAnAncestorAreUnavoidable) {
   // One tower of two layers; the upper square is moved 4 mm to -x and its nozzle axis turned to
   // +x, so the lower square (its skeleton parent, printed first in every order) is in its nozzle.
