@@ -9,7 +9,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -208,6 +210,31 @@ TEST(SurfaceSimplification, FineSphereIsCoarsenedWithinTolerance) {
     EXPECT_GE(progress[i], progress[i - 1]);
   }
   EXPECT_LE(progress.back(), 1.0);
+}
+
+TEST(SurfaceSimplification, NoVertexGoesBelowThePartsLowestPoint) {
+  // The part stands on its lowest point (its base, where the layers start): a vertex the
+  // collapse or the remeshing puts under it would be the base alone. A fine sphere standing on
+  // the plate: the collapse's quadric placement puts vertices outside a convex surface, so under
+  // its south pole too (the remeshing projects onto the input); they are lifted onto the plane of
+  // the lowest point.
+  const TriangleSurface sphere = sphereSurface(Vec3(0, 0, 20), 20.0, 6);
+  double lowest = std::numeric_limits<double>::infinity();
+  for (const Vec3& p : sphere.points) {
+    lowest = std::min(lowest, p.z());
+  }
+  for (SimplificationMethod method :
+       {SimplificationMethod::EdgeCollapse, SimplificationMethod::IsotropicRemeshing}) {
+    SimplificationOptions o;
+    o.method = method;
+    o.targetEdgeLength = 4.0;
+    const SimplificationResult r = simplifySurface(sphere, o);
+    ASSERT_TRUE(r.simplified) << r.refused;
+    for (const Vec3& p : r.surface.points) {
+      EXPECT_GE(p.z(), lowest);
+    }
+    EXPECT_TRUE(checkSurface(r.surface).isClosedManifold());
+  }
 }
 
 TEST(SurfaceSimplification, CoarseSurfaceIsLeftAlone) {
