@@ -93,6 +93,18 @@ private:
     if (!tetMesh) {
       if (P.Orientation->GetOrient() == vtkGLAutoOrient::AUTO) {  // Keep: it passes the part on
         placed = this->Update("orient", P.Orientation);
+        if (!this->BaseConsidered) {  // the part on its own base first, where that is as good
+          this->BaseConsidered = true;
+          if (const int rank = P.PreferTheBaseToAPedestal(); rank >= 0) {
+            P.Orientation->Update();  // re-places the part (the search is cached)
+            placed = P.Orientation->GetOutputDataObject(0);
+            this->Section("orient")["base_first_rank"] = rank;
+            if (!R.quiet) {
+              std::cout << "geolattice: trying the search's candidate of rank " << rank
+                        << " first: the best one's direction without its pedestal\n";
+            }
+          }
+        }
         reportOrientation(placed, this->Section("orient"));
         this->Write(P.Orientation->GetOutputDataObject(1), "orientation.vtp");
         this->WriteFile("orientation.csv", [&](const std::string& path) {
@@ -277,6 +289,7 @@ private:
     return true;
   }
   bool OrientationsTried = false;
+  bool BaseConsidered = false;
 
   /// With the Best strategy, when its toolpath collides (in the orientation chosen): the LPT and
   /// DPT orders through the toolpath verifier (GLPrintPipeline::ChooseOrderByToolpath), recorded

@@ -143,14 +143,19 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
     placementIn = placementIn || placement;
     others += !placement;
   }
+  // The current candidate first: its outputs are the pipeline's (the search's best, or the one
+  // PreferTheBaseToAPedestal put first).
+  const int current = this->Orientation->GetCandidateRank();
+  ranks.erase(std::remove(ranks.begin(), ranks.end(), current), ranks.end());
+  ranks.insert(ranks.begin(), current);
   for (int rank : ranks) {
-    if (geolattice::stopRequest().load() || (rank > 0 && !usable(rank, false))) {
+    if (geolattice::stopRequest().load() || (rank != current && !usable(rank, false))) {
       continue;
     }
     this->Orientation->SetCandidateRank(rank);
     OrientationTry t;
     t.rank = rank;
-    if (rank > 0 && starting) {
+    if (rank != current && starting) {
       starting(t);
     }
     const ToolpathVerdict verdict = this->UpdateToolpathVerdict();
@@ -173,6 +178,47 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
   }
   this->Orientation->SetCandidateRank(best ? best->rank : 0);
   return done;
+}
+
+int GLPrintPipeline::PreferTheBaseToAPedestal() {
+  if (this->Orientation->GetOrient() != vtkGLAutoOrient::AUTO || this->TetMeshInput ||
+      !this->Orientation->GetExecutive()->Update()) {
+    return -1;
+  }
+  vtkPolyData* candidates = vtkPolyData::SafeDownCast(this->Orientation->GetOutputDataObject(1));
+  vtkPointData* pd = candidates ? candidates->GetPointData() : nullptr;
+  auto array = [pd](const char* name) {
+    return pd ? vtkDataArray::SafeDownCast(pd->GetAbstractArray(name)) : nullptr;
+  };
+  namespace arrays = geolattice::arrays;
+  vtkDataArray *rank = array(arrays::OrientRank), *up = array(arrays::OrientUp),
+               *pedestal = array(arrays::Pedestal), *feasible = array(arrays::Feasible),
+               *refined = array(arrays::Refined), *colliding = array(arrays::CollidingStations),
+               *stations = array(arrays::CollisionStations);
+  if (!rank || !up || !pedestal || !feasible || !refined || !colliding || !stations) {
+    return -1;
+  }
+  const vtkIdType n = candidates->GetNumberOfPoints();
+  vtkIdType best = -1;
+  for (vtkIdType i = 0; i < n && best < 0; ++i) {
+    best = rank->GetTuple1(i) == 0 ? i : -1;
+  }
+  if (best < 0 || !(pedestal->GetTuple1(best) > 0)) {
+    return -1;
+  }
+  for (vtkIdType i = 0; i < n; ++i) {
+    double a[3], b[3];
+    up->GetTuple(i, a);
+    up->GetTuple(best, b);
+    const bool sameDirection = a[0] == b[0] && a[1] == b[1] && a[2] == b[2];
+    if (i != best && sameDirection && pedestal->GetTuple1(i) == 0 && feasible->GetTuple1(i) > 0 &&
+        refined->GetTuple1(i) > 0 && colliding->GetTuple1(i) <= 0.01 * stations->GetTuple1(i)) {
+      const int r = static_cast<int>(rank->GetTuple1(i));
+      this->Orientation->SetCandidateRank(r);
+      return r;
+    }
+  }
+  return -1;
 }
 
 GLPrintPipeline::ToolpathVerdict GLPrintPipeline::UpdateToolpathVerdict() {

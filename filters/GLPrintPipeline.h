@@ -94,6 +94,16 @@ public:
   /// orientation is Keep (then a print setting re-runs no orientation).
   void MatchOrientationToPrint();
 
+  /// With Orient Auto: when the search's best candidate stands on a pedestal and the same
+  /// direction without one was scored at the print's resolution (feasible, refined) within 1 % of
+  /// its stations of collision-free, that one is put first (CandidateRank) and the part printed
+  /// on its own base if its toolpath is collision-free (ChooseOrientationByToolpath tries the
+  /// search's best next if it collides). Why: the search scores sub-graph orders with the nozzle
+  /// along the layer normals; the toolpath's axis tilts clear a few hundred such stations, and a
+  /// pedestal costs material and time (a 100 x 60 x 3 mm plate: 125 instead of 29 minutes).
+  /// Returns the rank put first, or -1 (nothing changed). Updates the orientation search.
+  int PreferTheBaseToAPedestal();
+
   /// One orientation run through the toolpath verifier by ChooseOrientationByToolpath.
   struct OrientationTry {
     int rank = 0;             ///< the search's rank of the candidate
@@ -104,7 +114,8 @@ public:
     double seconds = 0;
   };
 
-  /// The orientation the real toolpath prints best: with Orient Auto, the search's candidates are
+  /// The orientation the real toolpath prints best: with Orient Auto, the current candidate (from
+  /// the pipeline's outputs) and then the search's candidates are
   /// run through the toolpath verifier in rank order, up to `tries` of them (feasible ones scored
   /// at the print's resolution) besides the part as placed (on the plate, when it can stand
   /// there), which is tried where it ranks or else last, until one is strictly collision-free; the one with the fewest

@@ -260,6 +260,8 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
     p.Pedestal->SetHeightOverride(-1);     // and the search's pedestal
     GLPrintPipeline::ClearStopRequest();
     I.error.clear();
+    p.PreferTheBaseToAPedestal();  // Orient Auto: the part on its own base first, where as good
+    I.error.clear();               // (a failing search is reported by its stage below)
     // Each stage in order, so a failure names its stage.
     auto stages = [&] {
       for (GLPrintPipeline::Stage s :

@@ -81,6 +81,25 @@ class ShapesMeshTest(unittest.TestCase):
         self.assertEqual(sequence["requested_strategy"], "best")
         self.assertEqual(toolpath["violating_stations"], 0)
 
+    def test_a_flat_part_prints_on_its_own_base(self):
+        # The wrench lying flat: the search's best is that side on a 10 mm pedestal (its
+        # evaluation, with the nozzle along the layer normals, counts a few stations on the plate
+        # without one), and the same side without the pedestal is within 1 % of collision-free,
+        # so that one is tried first through the toolpath: it prints, on its own base.
+        out = os.path.join(self.tmp, "wrench-base")
+        result = subprocess.run([CLI, "run", os.path.join(self.tmp, "wrench.obj"), "-o", out, "-q",
+                                 "--orient", "auto", "--until", "toolpath"],
+                                capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(out, "report.json")) as f:
+            report = json.load(f)
+        orient = report["orient"]
+        self.assertIn("base_first_rank", orient)
+        self.assertEqual(orient["chosen_rank"], orient["base_first_rank"])
+        self.assertEqual(orient["pedestal_mm"], 0)
+        self.assertNotIn("pedestal", report)  # no pedestal stage ran
+        self.assertEqual(report["toolpath"]["violating_stations"], 0)
+
 
 if __name__ == "__main__":
     result = unittest.main(exit=False, verbosity=2).result
