@@ -153,6 +153,7 @@ private:
     this->Write(layers, "layers.vtp");
     vtkDataObject* surface = this->Update("overhang", P.OverhangAnalysis);
     reportOverhang(surface, this->Section("overhang"));
+    this->WarnOfASmallBase(surface);
     this->Write(surface, "overhang.vtp");
     if (R.until == "layers") {
       return kExitOk;
@@ -290,6 +291,24 @@ private:
   }
   bool OrientationsTried = false;
   bool BaseConsidered = false;
+
+  /// The part's contact with the plate below --min-base-area (what --orient auto asks of a
+  /// side): it may come loose while printing. Said on stderr (even with -q: it is about the part)
+  /// and in report.json overhang.small_base; the run goes on (the user placed it so).
+  void WarnOfASmallBase(vtkDataObject* surface) {
+    const double area = fieldValue(surface, arrays::OverhangBaseArea);
+    const double least = P.Orientation->GetMinBaseArea();
+    Json& overhang = this->Section("overhang");
+    overhang["small_base"] = area < least;
+    if (area < least && !this->SmallBaseSaid) {
+      this->SmallBaseSaid = true;
+      std::cerr << "geolattice: warning: the part touches the plate on " << area
+                << " mm^2 only (less than --min-base-area " << least
+                << " mm^2): it may come loose while printing; --orient auto looks for a side "
+                   "with more contact\n";
+    }
+  }
+  bool SmallBaseSaid = false;
 
   /// With the Best strategy, when its toolpath collides (in the orientation chosen): the LPT and
   /// DPT orders through the toolpath verifier (GLPrintPipeline::ChooseOrderByToolpath), recorded

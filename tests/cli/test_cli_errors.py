@@ -547,7 +547,10 @@ class CliGateTest(unittest.TestCase):
         out = os.path.join(self.tmp, "out")
         result = subprocess.run([CLI, "run", os.path.join(TESTDATA, model), "-o", out, "-q", "--replay-steps", "0",
                                  "--gcode", "none", *args], capture_output=True, text=True, timeout=600)
-        with open(os.path.join(out, "report.json")) as f:
+        path = os.path.join(out, "report.json")
+        self.assertTrue(os.path.isfile(path), "no report.json: exit %d, stderr %r, stdout %r" %
+                        (result.returncode, result.stderr, result.stdout[-2000:]))
+        with open(path) as f:
             report = json.load(f)
         programs = sorted(n for n in os.listdir(out) if n.endswith((".script", ".gcode")) or n == "waypoints.csv")
         return result, report, programs, out
@@ -565,6 +568,24 @@ class CliGateTest(unittest.TestCase):
         self.assertFalse(report["gates"][gate]["passed"])
         self.assertEqual(report["gates"][gate]["stopped"], ["program"])
         self.assertEqual(report["exit_status"], status)
+
+    def test_a_small_base_is_warned_of(self):
+        # topopt as placed touches the plate at a vertex: it may come loose while printing. The
+        # run goes on (the user placed it so) with a warning that holds even with -q; the cube
+        # stands on a whole face: no warning.
+        result, report, programs, out = self.run_cli("topopt_new4_surf.obj", "--until", "layers")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        lines = [l for l in result.stderr.splitlines() if l.strip()]
+        self.assertEqual(len(lines), 1, result.stderr)
+        self.assertIn("warning: the part touches the plate on", lines[0])
+        self.assertIn("--min-base-area 10", lines[0])
+        self.assertIn("--orient auto", lines[0])
+        self.assertTrue(report["overhang"]["small_base"])
+        self.assertLess(report["overhang"]["base_area_mm2"], 10)
+        result, report, programs, out = self.run_cli("cube.obj", "--fit-size", "30", "--until", "layers")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertEqual(result.stderr, "")
+        self.assertFalse(report["overhang"]["small_base"])
 
     def test_a_closed_cavity_is_named_in_the_collision_gate(self):
         # A 20 mm cube with a closed 12 mm cavity (an inward shell): the layers over the void
