@@ -51,6 +51,9 @@ public:
     const InterruptHandler interrupt;
     try {
       const int status = this->Stages();
+      if (!this->SmallBaseWarning.empty()) {  // not before an error's one line
+        std::cerr << this->SmallBaseWarning;
+      }
       this->Finish(status);
       return status;
     } catch (const StageError& e) {
@@ -293,22 +296,26 @@ private:
   bool BaseConsidered = false;
 
   /// The part's contact with the plate below --min-base-area (what --orient auto asks of a
-  /// side): it may come loose while printing. Said on stderr (even with -q: it is about the part)
-  /// and in report.json overhang.small_base; the run goes on (the user placed it so).
+  /// side): it may come loose while printing. Said in report.json overhang.small_base and, when
+  /// the run ends without an error (whose one line stays alone), on stderr (even with -q: it is
+  /// about the part); the run goes on (the user placed it so).
   void WarnOfASmallBase(vtkDataObject* surface) {
     const double area = fieldValue(surface, arrays::OverhangBaseArea);
     const double least = P.Orientation->GetMinBaseArea();
     Json& overhang = this->Section("overhang");
     overhang["small_base"] = area < least;
-    if (area < least && !this->SmallBaseSaid) {
-      this->SmallBaseSaid = true;
-      std::cerr << "geolattice: warning: the part touches the plate on " << area
-                << " mm^2 only (less than --min-base-area " << least
-                << " mm^2): it may come loose while printing; --orient auto looks for a side "
-                   "with more contact\n";
+    if (area < least) {
+      std::ostringstream w;
+      w << "geolattice: warning: the part touches the plate on " << area
+        << " mm^2 only (less than --min-base-area " << least
+        << " mm^2): it may come loose while printing; --orient auto looks for a side with more "
+           "contact\n";
+      this->SmallBaseWarning = w.str();  // the last pass's (other orientations may run)
+    } else {
+      this->SmallBaseWarning.clear();
     }
   }
-  bool SmallBaseSaid = false;
+  std::string SmallBaseWarning;
 
   /// With the Best strategy, when its toolpath collides (in the orientation chosen): the LPT and
   /// DPT orders through the toolpath verifier (GLPrintPipeline::ChooseOrderByToolpath), recorded
