@@ -17,6 +17,23 @@
 
 #include <algorithm>
 
+namespace {
+
+/// Of the tries that ran, the one with the fewest colliding stations (the earlier on a tie), or
+/// null when none ran.
+template <class Try>
+const Try* leastColliding(const std::vector<Try>& tries) {
+  const Try* least = nullptr;
+  for (const Try& t : tries) {
+    if (t.ok && (!least || t.colliding < least->colliding)) {
+      least = &t;
+    }
+  }
+  return least;
+}
+
+}  // namespace
+
 GLPrintPipeline::GLPrintPipeline(bool tetMeshInput) {
   this->Placement->SetInputConnection(this->Reader->GetOutputPort());
   this->Orientation->SetInputConnection(this->Placement->GetOutputPort());
@@ -170,12 +187,7 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
       break;
     }
   }
-  const OrientationTry* best = nullptr;
-  for (const OrientationTry& t : done) {
-    if (t.ok && (!best || t.colliding < best->colliding)) {
-      best = &t;
-    }
-  }
+  const OrientationTry* best = leastColliding(done);
   this->Orientation->SetCandidateRank(best ? best->rank : 0);
   return done;
 }
@@ -269,12 +281,7 @@ std::vector<GLPrintPipeline::OrderTry> GLPrintPipeline::ChooseOrderByToolpath(
       break;
     }
   }
-  const OrderTry* chosen = nullptr;
-  for (const OrderTry& t : done) {
-    if (t.ok && (!chosen || t.colliding < chosen->colliding)) {
-      chosen = &t;
-    }
-  }
+  const OrderTry* chosen = leastColliding(done);
   this->Sequencer->SetStrategyOverride(
       chosen && chosen->strategy != vtkGLPrintSequencer::BEST ? chosen->strategy : -1);
   return done;
@@ -316,12 +323,7 @@ std::vector<GLPrintPipeline::PedestalTry> GLPrintPipeline::RaisePedestalByToolpa
       break;
     }
   }
-  const PedestalTry* best = nullptr;
-  for (const PedestalTry& t : done) {
-    if (t.ok && (!best || t.colliding < best->colliding)) {
-      best = &t;
-    }
-  }
+  const PedestalTry* best = leastColliding(done);
   this->Pedestal->SetHeightOverride(best && best->height != chosen ? best->height : -1.0);
   return done;
 }
