@@ -335,17 +335,15 @@ private:
                   << " print order\n";
       }
     });
-    this->OrderTries = Json::array();
+    if (tries.size() < 2) {
+      return false;  // nothing else ran: Best's own outputs stand
+    }
     for (const auto& t : tries) {
       this->OrderTries.push_back({{"strategy", name(t.strategy)},
                                   {"ok", t.ok},
                                   {"colliding_stations", t.colliding},
                                   {"stations", t.stations},
                                   {"seconds", t.seconds}});
-    }
-    if (tries.size() < 2) {
-      this->OrderTries = Json::array();  // nothing else ran: Best's own outputs stand
-      return false;
     }
     for (const char* stale : {"sequence", "toolpath", "summary"}) {
       this->Report.erase(stale);

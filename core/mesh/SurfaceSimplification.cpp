@@ -192,9 +192,6 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
   const Mesh input = cgal::toSurfaceMesh(surface, "surface simplification");
   const double tolerance = o.tolerance > 0 ? o.tolerance : 0.25 * o.targetEdgeLength;
   const ProgressReporter report(o.progress, o.shouldAbort, "surface simplification");
-  // The one-sided distance of the input from `mesh` when it is usable (closed, not
-  // self-intersecting, within the tolerance when remeshing), else a reason in r.refused and, when
-  // `far` is given, the input vertices farther than the tolerance.
   // The part stands on its lowest point, the base the layers grow from. A remeshed or collapsed
   // vertex near the base's rim can land under it (a 10 mm gear with a rounded rim: 164 vertices
   // up to 0.1 mm below, and the base found at the lowest one alone); no vertex may: the input has
@@ -211,6 +208,10 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
       }
     }
   };
+  // The one-sided distance of the input from `mesh` (its vertices under the base lifted onto
+  // it) when it is usable (closed, not self-intersecting, within the tolerance when remeshing),
+  // else a reason in r.refused and, when `far` is given, the input vertices farther than the
+  // tolerance.
   auto accept = [&](Mesh& mesh, const char* what, bool collapsed,
                     std::vector<Mesh::Vertex_index>* far = nullptr) {
     mesh.collect_garbage();
