@@ -106,6 +106,11 @@ void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {
         fieldValue(tets, arrays::MeshedTriangles) < fieldValue(tets, arrays::InputTriangles);
     s["simplification_distance_mm"] = fieldValue(tets, arrays::SimplificationDistance);
     s["simplification_seconds"] = fieldValue(tets, arrays::SimplificationSeconds);
+    s["simplification_edge_mm"] = fieldValue(tets, arrays::SimplificationEdgeLength);
+    auto* refused = vtkStringArray::SafeDownCast(
+        tets->GetFieldData()->GetAbstractArray(arrays::SimplificationRefused));
+    s["simplification_refused"] =
+        refused && refused->GetNumberOfValues() > 0 ? refused->GetValue(0) : std::string();
     s["tetgen_runs"] = fieldValue(tets, arrays::TetGenRuns);
     s["tetgen_speculative_run"] = fieldValue(tets, arrays::TetGenSpeculativeRun) != 0;
     s["tetgen_count_set_by_surface"] = fieldValue(tets, arrays::TetGenSurfaceBoundCount) != 0;

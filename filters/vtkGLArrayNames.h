@@ -75,6 +75,10 @@ constexpr const char* MeshedTriangles = "MeshedTriangles";  ///< triangles given
 constexpr const char* SimplificationDistance =
     "SimplificationDistance";  ///< largest input-vertex distance to the meshed surface (mm)
 constexpr const char* SimplificationSeconds = "SimplificationSeconds";  ///< its wall time (s)
+constexpr const char* SimplificationEdgeLength =
+    "SimplificationEdgeLength";  ///< edge the meshed surface was prepared for (mm; 0: input kept)
+/// vtkStringArray: why the surface remeshed for the target edge was refused (empty: it was not)
+constexpr const char* SimplificationRefused = "SimplificationRefused";
 /// Bodies merged into another one they cross (core/mesh/OverlappingBodies.h), 1 value.
 constexpr const char* MergedBodies = "MergedBodies";
 /// Closed inner cavities of the solid (TetGen regions outside the surface, removed), 1 value.

@@ -16,6 +16,7 @@
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
+#include <vtkStringArray.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
@@ -168,6 +169,11 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::MeshedTriangles, static_cast<double>(result.meshedTriangles));
     addValue(fd, gl::arrays::SimplificationDistance, result.simplificationDistance);
     addValue(fd, gl::arrays::SimplificationSeconds, result.simplificationSeconds);
+    addValue(fd, gl::arrays::SimplificationEdgeLength, result.simplificationEdgeLength);
+    vtkNew<vtkStringArray> refused;
+    refused->SetName(gl::arrays::SimplificationRefused);
+    refused->InsertNextValue(result.simplificationRefused);
+    fd->AddArray(refused);
     addValue(fd, gl::arrays::TetGenRuns,
              static_cast<double>(result.attempts + result.tetgenRetries));
     addValue(fd, gl::arrays::TetGenSpeculativeRun, result.speculativeRun ? 1.0 : 0.0);
@@ -179,7 +185,7 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
       vtkWarningMacro(<< "bodies of the surface cross each other; meshed as their union ("
                       << result.mergedBodies << " fewer bodies)");
     }
-    if (!result.simplificationRefused.empty()) {
+    if (!result.simplificationRefused.empty() && !result.simplified) {
       vtkWarningMacro(<< "the simplified surface was not used (" << result.simplificationRefused
                       << "): TetGen meshed all " << result.inputTriangles << " input triangles");
     }

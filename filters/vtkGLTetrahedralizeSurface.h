@@ -20,8 +20,11 @@
  *     angles);
  *   - field data `TargetEdgeLength` (mm, the value used: set or automatic), `MeanEdgeLength`
  *     (mm), `TetCount`, `TetrahedralizeSeconds`, and of the surface simplification before TetGen
- *     `InputTriangles`, `MeshedTriangles`, `SimplificationDistance` (mm), `SimplificationSeconds`
- *     (names in vtkGLArrayNames.h).
+ *     `InputTriangles`, `MeshedTriangles`, `SimplificationDistance` (mm), `SimplificationSeconds`,
+ *     `SimplificationEdgeLength` (mm, the edge the surface was prepared for: the target edge, or
+ *     a shorter one (down to a third) when the remeshing for it was refused; 0 = the input as it is) and
+ *     `SimplificationRefused` (vtkStringArray: why the target edge's remeshing was refused, empty
+ *     if it was not) (names in vtkGLArrayNames.h).
  *
  * Parameters:
  *   - TargetEdgeLength: mm, default 0 = automatic (about TargetTetCount tets, see below);

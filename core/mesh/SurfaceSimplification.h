@@ -16,8 +16,10 @@
 /// on a coarse input full of slivers (CAD needles). A remeshed surface farther than the
 /// tolerance from the input (a sharp tip cut off) is remeshed again with the input kept as it is
 /// within one remeshed edge of the far vertices (at most twice, when those are few); one still
-/// too far, or self-intersecting, is refused, and the edge collapse runs instead (for a finer
-/// input) or the input stays. A collapse that leaves a surface full of needles (it keeps the
+/// too far, or self-intersecting, is refused and the surface is remeshed for shorter edges (by
+/// factors of sqrt 2 down to a third), within the same tolerance (rounded features narrower than the edge all
+/// over: a gear's teeth, a cone's rounded tip); when those are refused too, the edge collapse
+/// runs instead (for a finer input) or the input stays. A collapse that leaves a surface full of needles (it keeps the
 /// distance by sliding vertices along a cone's or a cylinder's straight lines) is refused too,
 /// unless the input had them already. Why: TetGen keeps every input triangle
 /// and refines around small and thin ones; a well-shaped surface at the tets' size meshes in a
@@ -65,7 +67,10 @@ struct SimplificationResult {
   /// Hausdorff distance.
   double hausdorff = 0;
   double seconds = 0;
-  std::string refused;  ///< why a simplified surface was not used (empty when used or not tried)
+  /// Why the surface remeshed for the target edge (or else the collapse) was refused: empty when
+  /// it was used or not tried. Also set when a shorter remeshing edge was then used.
+  std::string refused;
+  double remeshEdgeLength = 0;  ///< edge of the remeshed output (mm; 0: not remeshed)
 };
 
 /// Mean edge length of a triangle surface (mm).

@@ -286,9 +286,12 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     if (s.simplified) {
       surface = s.surface;
       result.simplified = true;
+      result.simplificationEdgeLength =
+          s.remeshEdgeLength > 0 ? s.remeshEdgeLength / simplify.remeshEdgeFactor : firstEdge;
       result.simplificationDistance = s.hausdorff;
       result.enclosedVolume = std::abs(requireClosedManifold(surface).signedVolume);
     }
+    result.simplificationRefused = s.refused;
     result.simplificationSeconds = s.seconds;
   }
   result.meshedTriangles = surface.triangles.size();
@@ -358,6 +361,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       timedOut = false;
       surface = original;
       result.simplified = false;
+      result.simplificationEdgeLength = 0;
       result.enclosedVolume = inputVolume;
       result.meshedTriangles = surface.triangles.size();
       intersectionTest = IntersectionTest::Run;

@@ -80,15 +80,21 @@ struct TetrahedralizeResult {
   /// The automatic search stopped above the target: a much longer edge left the count nearly
   /// unchanged, so the count is set by the surface (fine triangles or thin walls).
   bool surfaceBoundCount = false;
-  size_t removedFlatTets = 0;         ///< zero-volume slivers dropped from TetGen's output
-  double seconds = 0.0;               ///< wall time of the whole call
-  bool simplified = false;            ///< the surface was simplified before TetGen
-  size_t inputTriangles = 0;          ///< triangles of the input surface
-  size_t meshedTriangles = 0;         ///< triangles given to TetGen
+  size_t removedFlatTets = 0;  ///< zero-volume slivers dropped from TetGen's output
+  double seconds = 0.0;        ///< wall time of the whole call
+  bool simplified = false;     ///< the surface was simplified before TetGen
+  size_t inputTriangles = 0;   ///< triangles of the input surface
+  size_t meshedTriangles = 0;  ///< triangles given to TetGen
+  /// Edge the meshed surface was prepared for (mm): the first target edge, or a shorter one
+  /// (down to a third) when the remeshing for it was refused; 0 when TetGen got the input as it is.
+  double simplificationEdgeLength = 0;
   double simplificationDistance = 0;  ///< largest input-vertex distance to them (mm)
   double simplificationSeconds = 0;
-  std::string simplificationRefused;  ///< why TetGen got the input after all (empty: it did not)
-  std::string switches;               ///< TetGen switches used
+  /// Why the surface remeshed for the target edge was refused (mesh/SurfaceSimplification.h;
+  /// then a shorter edge or the collapse was tried), or why TetGen failed on the prepared
+  /// surface and meshed the input instead. Empty: nothing was refused.
+  std::string simplificationRefused;
+  std::string switches;  ///< TetGen switches used
 };
 
 /// Range of TetrahedralizeOptions::autoTargetTets.

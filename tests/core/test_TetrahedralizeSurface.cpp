@@ -17,7 +17,10 @@
 #include <chrono>
 #include <cmath>
 #include <filesystem>
+#include <cstdlib>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <sys/wait.h>
 
@@ -42,6 +45,58 @@ TriangleSurface append(TriangleSurface a, const TriangleSurface& b, const Eigen:
     a.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
   }
   return a;
+}
+
+/// A surface of revolution about z: `profile` (radius, z) from the bottom pole to the top pole
+/// (both endpoints on the axis, radius 0), `segments` around.
+TriangleSurface revolved(const std::vector<std::pair<double, double>>& profile, int segments) {
+  TriangleSurface s;
+  const int inner = static_cast<int>(profile.size()) - 2;  // rings between the poles
+  s.points.emplace_back(0, 0, profile.front().second);
+  for (int i = 1; i <= inner; ++i) {
+    for (int j = 0; j < segments; ++j) {
+      const double a = 2 * M_PI * j / segments, r = profile[i].first;
+      s.points.emplace_back(r * std::cos(a), r * std::sin(a), profile[i].second);
+    }
+  }
+  const int top = static_cast<int>(s.points.size());
+  s.points.emplace_back(0, 0, profile.back().second);
+  auto ring = [&](int i, int j) {
+    return 1 + (i - 1) * segments + (j % segments);
+  };
+  for (int j = 0; j < segments; ++j) {
+    s.triangles.push_back({0, ring(1, j + 1), ring(1, j)});
+    for (int i = 1; i < inner; ++i) {
+      s.triangles.push_back({ring(i, j), ring(i, j + 1), ring(i + 1, j + 1)});
+      s.triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)});
+    }
+    s.triangles.push_back({ring(inner, j), ring(inner, j + 1), top});
+  }
+  return s;
+}
+
+/// A cone standing on its tip, as a user might place a funnel or a vase: a rounded tip of radius
+/// 1.5 mm on the plate, radius 30 mm at z = 50, a flat top with a rounded rim (r 0.5); about 0.5
+/// mm between rings, 200 segments around.
+TriangleSurface coneOnItsTip() {
+  std::vector<std::pair<double, double>> profile;
+  const double slope = std::atan2(28.5, 48.5);  // the flank's angle from the axis
+  for (int k = 0; k <= 8; ++k) {  // the tip's cap, from the pole to where the flank begins
+    const double a = (M_PI / 2 - slope) * k / 8.0;
+    profile.emplace_back(1.5 * std::sin(a), 1.5 - 1.5 * std::cos(a));
+  }
+  const auto [r0, z0] = profile.back();
+  for (int k = 1; k <= 100; ++k) {
+    profile.emplace_back(r0 + (29.5 - r0) * k / 100.0, z0 + (49.5 - z0) * k / 100.0);
+  }
+  for (int k = 1; k <= 4; ++k) {  // the rim: a quarter of a 0.5 mm circle, roughly
+    const double a = (M_PI / 2) * k / 4.0;
+    profile.emplace_back(29.5 + 0.5 * std::sin(a), 49.5 + 0.5 * (1 - std::cos(a)));
+  }
+  for (int k = 1; k <= 60; ++k) {
+    profile.emplace_back(30.0 * (1 - k / 60.0), 50.0);
+  }
+  return revolved(profile, 200);
 }
 
 TetrahedralizeOptions edge(double length) {
@@ -522,4 +577,29 @@ TEST(TetrahedralizeSurface, ACountSetByTheSurfaceEndsTheSearch) {
   EXPECT_LE(r.attempts, 2);     // kMaxAutoAttempts without the stop
   // A volume-driven count is not stopped: the cube of the tests above reaches its target.
   EXPECT_FALSE(tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0)).surfaceBoundCount);
+}
+
+TEST(TetrahedralizeSurface, ASurfaceRefusedAtTheTargetEdgeIsRemeshedForAShorterOne) {
+  // A fine cone standing on its rounded tip, meshed for ~15k tets (the orientation search's
+  // coarse mesh): remeshed for the target edge (~5 mm), its 1.5 mm tip is cut by more than the
+  // tolerance; the edge collapse that ran instead kept the tip with needles, and TetGen refined
+  // them to 220k tets in 10 s. Remeshed for a shorter edge (1/sqrt 2 of it), within the same
+  // tolerance, it follows the tip: 19k tets in 1.6 s.
+  const TriangleSurface cone = coneOnItsTip();
+  ASSERT_TRUE(checkSurface(cone).isClosedManifold());
+  TetrahedralizeOptions o;
+  o.autoTargetTets = 15000;
+  o.simplifyFinerThan = 1.0;
+  const TetrahedralizeResult r = tetrahedralizeSurface(cone, o);
+  std::printf(
+      "[ cone on its tip, target 15000 ] %zu -> %zu triangles, prepared for %.2f mm "
+      "(refused: %s), %d tets, %.2f s\n",
+      r.inputTriangles, r.meshedTriangles, r.simplificationEdgeLength,
+      r.simplificationRefused.c_str(), r.tetCount, r.seconds);
+  EXPECT_NE(r.simplificationRefused.find("remeshed surface is"), std::string::npos);
+  ASSERT_TRUE(r.simplified);
+  const double firstEdge = automaticEdgeLength(r.enclosedVolume, 15000);
+  EXPECT_LT(r.simplificationEdgeLength, 0.75 * firstEdge);
+  EXPECT_LE(r.simplificationDistance, 0.25 * firstEdge);  // the target edge's tolerance
+  EXPECT_LT(r.tetCount, 4 * 15000);
 }
