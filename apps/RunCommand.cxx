@@ -31,6 +31,7 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <iostream>
 #include <sstream>
 
@@ -71,7 +72,22 @@ public:
   }
 
 private:
+  /// The stages, the search for a printable set-up where the toolpath collides (--orient auto),
+  /// then the robot program.
   int Stages() {
+    if (const std::optional<int> done = this->StagesThroughToolpath()) {
+      return *done;  // --until stopped earlier
+    }
+    this->FindAPrintableSetUp();
+    if (R.until == "toolpath") {
+      return kExitOk;
+    }
+    return runProgramStage(*this, P.ToolpathVerifier->GetOutputDataObject(0));
+  }
+
+  /// Every stage up to the toolpath's verdict, with its report section and files; the exit
+  /// status when --until ends the run before it.
+  std::optional<int> StagesThroughToolpath() {
     const bool tetMesh = vtkGLMeshReader::IsTetMeshFile(R.model.c_str());
     P.SetTetMeshInput(tetMesh);
     P.MatchOrientationToPrint();
@@ -179,9 +195,6 @@ private:
     reportSequence(P, sequenced, sequence);
     sequence["subgraphs"] = vtkDataSet::SafeDownCast(tree)->GetNumberOfPoints();
     reportCollisions(collisions, sequence);
-    if (!this->OrderTries.empty()) {
-      sequence["order_tries"] = this->OrderTries;
-    }
     this->Write(sequenced, "lattice.vtp");
     this->Write(P.Sequencer->GetOutputDataObject(1), "skeleton.vtp");
     this->Write(P.Sequencer->GetOutputDataObject(2), "sequence.vtp");
@@ -232,67 +245,102 @@ private:
           writeToolpathReplay(replayed, dir, steps);  // steps 0: removes an earlier replay
         },
         true);
-    if (this->TryOtherOrientations(pathCollisions)) {
-      return this->Stages();  // the stages again for the chosen candidate: its files and report
-    }
-    if (this->TryTallerPedestals(pathCollisions)) {
-      return this->Stages();  // the same for the chosen pedestal
-    }
-    if (this->TryOtherOrders(pathCollisions)) {
-      return this->Stages();  // and for the chosen print order
-    }
-    if (R.until == "toolpath") {
-      return kExitOk;
-    }
-    return runProgramStage(*this, pathCollisions);
+    return std::nullopt;
   }
 
-  /// With --orient auto, when the search's best candidate gives a colliding toolpath: the next
-  /// candidates through the toolpath verifier (GLPrintPipeline::ChooseOrientationByToolpath),
-  /// recorded in report.json orient.tries. True when other candidates ran, so the stages must run
-  /// again for the chosen one (once a run).
-  bool TryOtherOrientations(vtkDataObject* pathCollisions) {
-    if (this->OrientationsTried || P.Orientation->GetOrient() != vtkGLAutoOrient::AUTO ||
-        fieldValue(pathCollisions, arrays::CollisionViolatingStations) == 0) {
-      return false;
+  /// With --orient auto, when the toolpath collides: other candidates of the orientation search,
+  /// taller pedestals and other print orders through the toolpath verifier
+  /// (GLPrintPipeline::FindAPrintableSetUp), recorded in report.json orient.tries,
+  /// orient.pedestal_tries and sequence.order_tries; the stages run again, with their files and
+  /// report sections, for each set-up chosen.
+  void FindAPrintableSetUp() {
+    auto say = [this](const std::string& text) {
+      if (!R.quiet) {
+        std::cout << "geolattice: " << text << "\n";
+      }
+    };
+    auto orderName = [](int strategy) {
+      return std::string(sequenceStrategyName(static_cast<SequenceStrategy>(strategy)));
+    };
+    GLPrintPipeline::SetUpListener listener;
+    listener.orientation = [&](const GLPrintPipeline::OrientationTry& t) {
+      say("the toolpath collides: trying the orientation search's candidate of rank " +
+          std::to_string(t.rank));
+    };
+    listener.pedestal = [&](const GLPrintPipeline::PedestalTry& t) {
+      std::ostringstream m;
+      m << "the toolpath meets the build plate: trying a " << t.height << " mm pedestal";
+      say(m.str());
+    };
+    listener.order = [&](const GLPrintPipeline::OrderTry& t) {
+      say("the toolpath collides: trying the " + orderName(t.strategy) + " print order");
+    };
+    auto runAgain = [&](GLPrintPipeline::SetUpStep step) {
+      std::ostringstream m;
+      switch (step) {
+        case GLPrintPipeline::SetUpStep::Orientation:
+          m << "printing the candidate of rank " << P.Orientation->GetCandidateRank();
+          break;
+        case GLPrintPipeline::SetUpStep::Pedestal:
+          m << "printing on the " << P.Pedestal->HeightFor(P.Orientation->GetOutputDataObject(0))
+            << " mm pedestal";
+          break;
+        case GLPrintPipeline::SetUpStep::Order: {
+          const int chosen = P.Sequencer->GetStrategyOverride();
+          m << "printing the " << orderName(chosen >= 0 ? chosen : P.Sequencer->GetStrategy())
+            << " order";
+          break;
+        }
+      }
+      say(m.str() + " (its toolpath collides least)");
+      // The pipeline holds the last try; its stages run again for the chosen set-up (read from
+      // the cache when that was the last), their report sections anew.
+      for (const char* stale : {"pedestal", "mesh", "gdf", "layers", "overhang", "lattice",
+                                "skeleton", "sequence", "toolpath", "summary"}) {
+        this->Report.erase(stale);
+      }
+      this->StagesThroughToolpath();
+    };
+    const GLPrintPipeline::SetUpTries tries = P.FindAPrintableSetUp(runAgain, listener);
+
+    if (!tries.orientations.empty()) {
+      Json list = Json::array();
+      for (const auto& t : tries.orientations) {
+        list.push_back({{"rank", t.rank},
+                        {"ok", t.ok},
+                        {"colliding_stations", t.colliding},
+                        {"stations", t.stations},
+                        {"pedestal_mm", t.pedestal},
+                        {"seconds", t.seconds}});
+      }
+      Json& orient = this->Section("orient");
+      orient["tries"] = list;
+      orient["chosen_rank"] = P.Orientation->GetCandidateRank();
     }
-    this->OrientationsTried = true;
-    const auto tries = P.ChooseOrientationByToolpath(
-        P.OrientationTries, [&](const GLPrintPipeline::OrientationTry& t) {
-          if (!R.quiet) {
-            std::cout << "geolattice: the toolpath collides: trying the orientation search's "
-                         "candidate of rank "
-                      << t.rank << "\n";
-          }
-        });
-    Json list = Json::array();
-    for (const auto& t : tries) {
-      list.push_back({{"rank", t.rank},
-                      {"ok", t.ok},
-                      {"colliding_stations", t.colliding},
-                      {"stations", t.stations},
-                      {"pedestal_mm", t.pedestal},
-                      {"seconds", t.seconds}});
+    if (tries.pedestals.size() > 1) {
+      Json list = Json::array();
+      for (const auto& t : tries.pedestals) {
+        list.push_back({{"height_mm", t.height},
+                        {"ok", t.ok},
+                        {"colliding_stations", t.colliding},
+                        {"plate_stations", t.plate},
+                        {"stations", t.stations},
+                        {"seconds", t.seconds}});
+      }
+      this->Section("orient")["pedestal_tries"] = list;
     }
-    Json& orient = this->Section("orient");
-    orient["tries"] = list;
-    orient["chosen_rank"] = P.Orientation->GetCandidateRank();
-    if (tries.size() < 2) {
-      return false;  // nothing else was run: the stages' outputs are the chosen candidate's
+    if (tries.orders.size() > 1) {
+      Json list = Json::array();
+      for (const auto& t : tries.orders) {
+        list.push_back({{"strategy", orderName(t.strategy)},
+                        {"ok", t.ok},
+                        {"colliding_stations", t.colliding},
+                        {"stations", t.stations},
+                        {"seconds", t.seconds}});
+      }
+      this->Section("sequence")["order_tries"] = list;
     }
-    // The pipeline holds the last try; its stages run again for the chosen one (read from the
-    // cache when that was the last).
-    for (const char* stale : {"pedestal", "mesh", "gdf", "layers", "overhang", "lattice",
-                              "skeleton", "sequence", "toolpath", "summary"}) {
-      this->Report.erase(stale);
-    }
-    if (!R.quiet) {
-      std::cout << "geolattice: printing the candidate of rank "
-                << P.Orientation->GetCandidateRank() << " (its toolpath collides least)\n";
-    }
-    return true;
   }
-  bool OrientationsTried = false;
   bool BaseConsidered = false;
 
   /// The part's contact with the plate below --min-base-area (what --orient auto asks of a
@@ -316,90 +364,6 @@ private:
     }
   }
   std::string SmallBaseWarning;
-
-  /// With the Best strategy, when its toolpath collides (in the orientation chosen): the LPT and
-  /// DPT orders through the toolpath verifier (GLPrintPipeline::ChooseOrderByToolpath), recorded
-  /// in report.json sequence.order_tries. True when other orders ran, so the stages must run
-  /// again for the chosen one (once a run).
-  bool TryOtherOrders(vtkDataObject* pathCollisions) {
-    if (this->OrdersTried || fieldValue(pathCollisions, arrays::CollisionViolatingStations) == 0) {
-      return false;
-    }
-    this->OrdersTried = true;
-    auto name = [](int strategy) {
-      return sequenceStrategyName(static_cast<SequenceStrategy>(strategy));
-    };
-    const auto tries = P.ChooseOrderByToolpath([&](const GLPrintPipeline::OrderTry& t) {
-      if (!R.quiet) {
-        std::cout << "geolattice: the toolpath collides: trying the " << name(t.strategy)
-                  << " print order\n";
-      }
-    });
-    if (tries.size() < 2) {
-      return false;  // nothing else ran: Best's own outputs stand
-    }
-    for (const auto& t : tries) {
-      this->OrderTries.push_back({{"strategy", name(t.strategy)},
-                                  {"ok", t.ok},
-                                  {"colliding_stations", t.colliding},
-                                  {"stations", t.stations},
-                                  {"seconds", t.seconds}});
-    }
-    for (const char* stale : {"sequence", "toolpath", "summary"}) {
-      this->Report.erase(stale);
-    }
-    if (!R.quiet) {
-      const int chosen = P.Sequencer->GetStrategyOverride();
-      std::cout << "geolattice: printing the "
-                << name(chosen >= 0 ? chosen : P.Sequencer->GetStrategy())
-                << " order (its toolpath collides least)\n";
-    }
-    return true;
-  }
-  bool OrdersTried = false;
-  Json OrderTries = Json::array();
-
-  /// With --orient auto and the automatic pedestal, when the toolpath meets the build plate
-  /// though the part stands on a pedestal: taller ones through the toolpath verifier
-  /// (GLPrintPipeline::RaisePedestalByToolpath), recorded in report.json orient.pedestal_tries.
-  /// True when a taller one ran, so the stages must run again for the chosen one (once a run).
-  bool TryTallerPedestals(vtkDataObject* pathCollisions) {
-    if (this->PedestalsTried ||
-        fieldValue(pathCollisions, arrays::CollisionViolatingStations) == 0) {
-      return false;
-    }
-    this->PedestalsTried = true;
-    const auto tries = P.RaisePedestalByToolpath([&](const GLPrintPipeline::PedestalTry& t) {
-      if (!R.quiet) {
-        std::cout << "geolattice: the toolpath meets the build plate: trying a " << t.height
-                  << " mm pedestal\n";
-      }
-    });
-    if (tries.size() < 2) {
-      return false;
-    }
-    Json list = Json::array();
-    for (const auto& t : tries) {
-      list.push_back({{"height_mm", t.height},
-                      {"ok", t.ok},
-                      {"colliding_stations", t.colliding},
-                      {"plate_stations", t.plate},
-                      {"stations", t.stations},
-                      {"seconds", t.seconds}});
-    }
-    this->Section("orient")["pedestal_tries"] = list;
-    for (const char* stale : {"pedestal", "mesh", "gdf", "layers", "overhang", "lattice",
-                              "skeleton", "sequence", "toolpath", "summary"}) {
-      this->Report.erase(stale);
-    }
-    if (!R.quiet) {
-      std::cout << "geolattice: printing on the "
-                << P.Pedestal->HeightFor(P.Orientation->GetOutputDataObject(0))
-                << " mm pedestal (its toolpath collides least)\n";
-    }
-    return true;
-  }
-  bool PedestalsTried = false;
 
   /// Checks the parameters of every stage the run will reach before the first one runs: VTK's
   /// information pass visits every filter upstream of the last ones, and each filter checks its

@@ -328,6 +328,40 @@ std::vector<GLPrintPipeline::PedestalTry> GLPrintPipeline::RaisePedestalByToolpa
   return done;
 }
 
+GLPrintPipeline::SetUpTries GLPrintPipeline::FindAPrintableSetUp(
+    const std::function<void(SetUpStep)>& runStages, const SetUpListener& listener) {
+  SetUpTries tries;
+  auto collides = [this] {
+    const ToolpathVerdict v = this->UpdateToolpathVerdict();  // the current outputs: cached
+    return v.ok && v.colliding > 0;
+  };
+  if (!collides()) {
+    return tries;
+  }
+  tries.orientations =
+      this->ChooseOrientationByToolpath(this->OrientationTries, listener.orientation);
+  if (tries.orientations.size() > 1) {
+    runStages(SetUpStep::Orientation);
+  }
+  if (!collides()) {
+    return tries;
+  }
+  // Then taller pedestals, where the plate is in the nozzle's way.
+  tries.pedestals = this->RaisePedestalByToolpath(listener.pedestal);
+  if (tries.pedestals.size() > 1) {
+    runStages(SetUpStep::Pedestal);
+  }
+  if (!collides()) {
+    return tries;
+  }
+  // Then other print orders (Strategy Best only).
+  tries.orders = this->ChooseOrderByToolpath(listener.order);
+  if (tries.orders.size() > 1) {
+    runStages(SetUpStep::Order);
+  }
+  return tries;
+}
+
 vtkAlgorithm* GLPrintPipeline::Filter(Stage stage) {
   switch (stage) {
     case Read:

@@ -178,6 +178,33 @@ public:
   std::vector<OrderTry> ChooseOrderByToolpath(
       const std::function<void(const OrderTry&)>& starting = {});
 
+  /// The step of FindAPrintableSetUp that chose another set-up.
+  enum class SetUpStep { Orientation, Pedestal, Order };
+  /// What FindAPrintableSetUp tried: each list empty when its step did not run; a list of one
+  /// entry is the current set-up alone (nothing else was tried).
+  struct SetUpTries {
+    std::vector<OrientationTry> orientations;
+    std::vector<PedestalTry> pedestals;
+    std::vector<OrderTry> orders;
+  };
+  /// Called before each other set-up FindAPrintableSetUp runs (each optional).
+  struct SetUpListener {
+    std::function<void(const OrientationTry&)> orientation;
+    std::function<void(const PedestalTry&)> pedestal;
+    std::function<void(const OrderTry&)> order;
+  };
+
+  /// The set-up the real toolpath prints (Orient Auto; the one sequence of tries for the CLI and
+  /// GL Print Part): after the stages ran, while the toolpath collides,
+  /// ChooseOrientationByToolpath (OrientationTries), then RaisePedestalByToolpath, then
+  /// ChooseOrderByToolpath. After a step that ran another set-up, `runStages(step)` is called to
+  /// bring every stage (and whatever the caller keeps of them: files, a report) to the one it
+  /// chose, read from the cache when that was the last tried; it may throw, which ends the
+  /// search. Nothing is tried with Orient Keep, a tet-mesh input, a collision-free toolpath or
+  /// after a stop request.
+  SetUpTries FindAPrintableSetUp(const std::function<void(SetUpStep)>& runStages,
+                                 const SetUpListener& listener = {});
+
   /// Candidates ChooseOrientationByToolpath runs at most (CLI --orient-tries, GL Print Part
   /// OrientTries; 1 = the search's best only).
   int OrientationTries = 3;

@@ -278,29 +278,12 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
       }
     };
     stages();
-    auto collides = [&p] {
-      vtkDataArray* colliding =
-          p.ToolpathVerifier->GetOutputDataObject(0)->GetFieldData()->GetArray(
-              gl::arrays::CollisionViolatingStations);
-      return colliding && colliding->GetTuple1(0) > 0;
-    };
-    if (collides()) {
-      // Other candidates of the orientation search through the toolpath (Orient Auto only); a
-      // failing one is skipped, so its errors are not this filter's.
-      p.ChooseOrientationByToolpath(p.OrientationTries);
+    // Where the toolpath collides, other orientations, pedestals and orders (Orient Auto only).
+    // A try that fails is skipped, so its errors are not this filter's.
+    p.FindAPrintableSetUp([&](GLPrintPipeline::SetUpStep) {
       I.error.clear();
-      stages();  // brings every stage to the chosen candidate (cached when it was the last tried)
-    }
-    if (collides()) {  // then taller pedestals (the plate in the nozzle's way), the same way
-      p.RaisePedestalByToolpath();
-      I.error.clear();
-      stages();
-    }
-    if (collides()) {  // then other print orders (Strategy Best only)
-      p.ChooseOrderByToolpath();
-      I.error.clear();
-      stages();
-    }
+      stages();  // every stage at the chosen set-up (cached when it was the last tried)
+    });
     vtkPolyData::GetData(outputVector, ToolpathPort)  // with the verifier's Collision array
         ->ShallowCopy(p.ToolpathVerifier->GetOutputDataObject(1));
     vtkTable::GetData(outputVector, SummaryPort)

@@ -32,6 +32,8 @@
  * with Best and Orient Auto, when the toolpath of its order collides, the LPT and DPT orders are run through the
  * toolpath too and the one that collides least is printed: GLPrintPipeline::
  * ChooseOrderByToolpath), NozzleAngle (degrees), PrintheadFile (empty = the parametric cone).
+ * Those tries (orientations, then taller pedestals, then orders) are
+ * GLPrintPipeline::FindAPrintableSetUp, the sequence the command line runs too.
  *
  * Errors (vtkErrorMacro naming the stage and its message, empty outputs, RequestData returns 0):
  * whatever a stage rejects.
