@@ -6,6 +6,7 @@
 #include "mesh/TetMeshTopology.h"
 
 #include <algorithm>
+#include <sstream>
 #include <chrono>
 #include <cmath>
 #include <future>
@@ -361,9 +362,27 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
   const int without =
       static_cast<int>(std::count(componentHasSource.begin(), componentHasSource.end(), 0));
   if (without > 0) {
-    throw GeoLatticeError("the tet mesh has " + std::to_string(componentCount_) +
-                          " connected components and " + std::to_string(without) +
-                          " of them contain no source vertex (γ is undefined there)");
+    // In the words of a print: a body with no base vertex does not stand on the plate (the
+    // sources are the base), so no layer can grow into it. Name the lowest such body.
+    double base = std::numeric_limits<double>::infinity();
+    for (int s : sources) {
+      base = std::min(base, mesh_.points[s].z());
+    }
+    double lowest = std::numeric_limits<double>::infinity();
+    for (size_t v = 0; v < nv; ++v) {
+      if (!componentHasSource[component_[v]]) {
+        lowest = std::min(lowest, mesh_.points[v].z());
+      }
+    }
+    std::ostringstream m;
+    m << "the part has " << componentCount_ << " separate bodies and " << without
+      << (without == 1 ? " of them does" : " of them do")
+      << " not touch the base the layers grow from (no source vertex: γ is undefined there; "
+         "the lowest such body starts "
+      << (lowest - base)
+      << " mm above the base): stand every body on the build plate, print the bodies one at a "
+         "time, or let the automatic orientation look for a side on which they all stand";
+    throw GeoLatticeError(m.str());
   }
 
   const ProgressReporter progress(options_.progress, options_.shouldAbort,

@@ -311,12 +311,13 @@ TEST(GeodesicDistanceFields, BadInputIsReported) {
   EXPECT_THROW(GeodesicDistanceFields(mesh, zeroRef), GeoLatticeError);
   EXPECT_THROW(GeodesicDistanceFields(TetMesh{}), GeoLatticeError);
 
-  // Two disjoint boxes with sources in only one of them.
+  // Two disjoint boxes, the second 2 mm higher, with sources in only the first: the error says
+  // which body floats, and how high, in the words of a print.
   TetMesh two = boxTetMesh(Vec3(1, 1, 1), 1, 1, 1);
   const int n = static_cast<int>(two.points.size());
   const size_t nt = two.tets.size();
   for (int v = 0; v < n; ++v) {
-    two.points.push_back(two.points[v] + Vec3(5, 0, 0));
+    two.points.push_back(two.points[v] + Vec3(5, 0, 2));
   }
   for (size_t t = 0; t < nt; ++t) {
     auto tet = two.tets[t];
@@ -331,7 +332,10 @@ TEST(GeodesicDistanceFields, BadInputIsReported) {
     twoSolver.solve({0});
     FAIL() << "expected an error";
   } catch (const GeoLatticeError& e) {
-    EXPECT_NE(std::string(e.what()).find("contain no source"), std::string::npos) << e.what();
+    const std::string m = e.what();
+    EXPECT_NE(m.find("2 separate bodies and 1 of them does not touch the base"), std::string::npos)
+        << m;
+    EXPECT_NE(m.find("starts 2 mm above"), std::string::npos) << m;
   }
   EXPECT_NO_THROW(twoSolver.solve({0, n}));
 }
