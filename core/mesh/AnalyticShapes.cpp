@@ -188,6 +188,36 @@ TriangleSurface sphereSurface(const Vec3& centre, double radius, int subdivision
   return surface;
 }
 
+TriangleSurface revolvedSurface(const std::vector<std::pair<double, double>>& profile,
+                                int segments) {
+  if (profile.size() < 3 || segments < 3) {
+    throw GeoLatticeError("surface of revolution: needs at least 3 profile points and 3 segments");
+  }
+  TriangleSurface s;
+  const int rings = static_cast<int>(profile.size()) - 2;  // the circles between the poles
+  s.points.emplace_back(0, 0, profile.front().second);
+  for (int i = 1; i <= rings; ++i) {
+    for (int j = 0; j < segments; ++j) {
+      const double a = 2 * M_PI * j / segments, r = profile[i].first;
+      s.points.emplace_back(r * std::cos(a), r * std::sin(a), profile[i].second);
+    }
+  }
+  const int top = static_cast<int>(s.points.size());
+  s.points.emplace_back(0, 0, profile.back().second);
+  auto ring = [segments](int i, int j) {
+    return 1 + (i - 1) * segments + (j % segments);
+  };
+  for (int j = 0; j < segments; ++j) {
+    s.triangles.push_back({0, ring(1, j + 1), ring(1, j)});
+    for (int i = 1; i < rings; ++i) {
+      s.triangles.push_back({ring(i, j), ring(i, j + 1), ring(i + 1, j + 1)});
+      s.triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)});
+    }
+    s.triangles.push_back({ring(rings, j), ring(rings, j + 1), top});
+  }
+  return s;
+}
+
 TetMesh boxTetMesh(const Vec3& size, int nx, int ny, int nz) {
   requirePositiveSize(size, "boxTetMesh");
   if (nx < 1 || ny < 1 || nz < 1) {

@@ -8,6 +8,8 @@
 #include "mesh/TetMesh.h"
 
 #include <functional>
+#include <utility>
+#include <vector>
 
 namespace geolattice {
 
@@ -38,6 +40,14 @@ TriangleSurface sphereSurface(const Vec3& centre, double radius, int subdivision
 /// @throws GeoLatticeError unless 0 < minorRadius < majorRadius and both segment counts are in 3..4096.
 TriangleSurface torusSurface(const Vec3& centre, double majorRadius, double minorRadius,
                              int majorSegments, int minorSegments);
+
+/// @brief Surface of revolution about the z axis: the profile's (radius, z) points revolved
+/// with `segments` points on each circle; the first and last profile points lie on the axis
+/// (radius 0, the poles). Counter-clockwise seen from outside for a profile that runs from the
+/// bottom pole outwards and up.
+/// @throws GeoLatticeError for fewer than 3 profile points or 3 segments.
+TriangleSurface revolvedSurface(const std::vector<std::pair<double, double>>& profile,
+                                int segments);
 
 /// @brief Structured tet mesh of the box [0,sx] x [0,sy] x [0,sz] (mm) with nx*ny*nz cells,
 /// each cell split into 6 tets along its main diagonal (Kuhn / Freudenthal split). The split

@@ -5,6 +5,7 @@
 #include "common/Error.h"
 #include "common/ParallelFor.h"
 #include "io/MeshReader.h"
+#include "mesh/AnalyticShapes.h"
 #include "orient/AutoOrient.h"
 
 #include <gtest/gtest.h>
@@ -23,37 +24,8 @@ using namespace geolattice;
 
 namespace {
 
-/// A closed surface of revolution about z from a profile (r, z), first and last point on the
-/// axis (r = 0), outward for a profile that runs from the bottom pole outwards and up.
-TriangleSurface revolve(const std::vector<std::pair<double, double>>& profile, int segments) {
-  TriangleSurface s;
-  const int rings = static_cast<int>(profile.size()) - 2;  // without the two poles
-  s.points.emplace_back(0, 0, profile.front().second);
-  for (int i = 1; i <= rings; ++i) {
-    for (int k = 0; k < segments; ++k) {
-      const double a = 2 * M_PI * k / segments;
-      s.points.emplace_back(profile[i].first * std::cos(a), profile[i].first * std::sin(a),
-                            profile[i].second);
-    }
-  }
-  s.points.emplace_back(0, 0, profile.back().second);
-  const int top = static_cast<int>(s.points.size()) - 1;
-  auto ring = [segments](int i, int k) {
-    return 1 + (i - 1) * segments + (k % segments);
-  };
-  for (int k = 0; k < segments; ++k) {
-    s.triangles.push_back({0, ring(1, k + 1), ring(1, k)});
-    for (int i = 1; i < rings; ++i) {
-      s.triangles.push_back({ring(i, k), ring(i, k + 1), ring(i + 1, k + 1)});
-      s.triangles.push_back({ring(i, k), ring(i + 1, k + 1), ring(i + 1, k)});
-    }
-    s.triangles.push_back({top, ring(rings, k), ring(rings, k + 1)});
-  }
-  return s;
-}
-
 TriangleSurface flatMushroom() {
-  return revolve({{0, 0}, {10, 0}, {10, 26}, {25, 26}, {25, 30}, {0, 30}}, 48);
+  return revolvedSurface({{0, 0}, {10, 0}, {10, 26}, {25, 26}, {25, 30}, {0, 30}}, 48);
 }
 
 /// A ball of radius R centred at z = R, its bottom cut flat at height `cut` (0: no cut, a ball).
@@ -68,7 +40,7 @@ TriangleSurface cutBall(double R, double cut, int rings, int segments) {
     profile.emplace_back(R * std::sin(a), R - R * std::cos(a));
   }
   profile.back().first = 0;
-  return revolve(profile, segments);
+  return revolvedSurface(profile, segments);
 }
 
 OrientOptions fewCandidates(int sphere) {
@@ -185,8 +157,8 @@ TEST(AutoOrient, PlateStationsTheToolpathsTiltLiftsOffThePlateAreNotCounted) {
   // leans 60° out, so a 45° cone on it reaches below its tip, into the plate; a 30° tilt
   // towards +z stands the cone's lowest line level. Only the placement is a candidate.
   const double widen = std::tan(60 * M_PI / 180);
-  const TriangleSurface bowl =
-      revolve({{0, 0}, {10, 0}, {10 + 12 * widen, 12}, {10 + 12 * widen - 2, 14}, {0, 14}}, 48);
+  const TriangleSurface bowl = revolvedSurface(
+      {{0, 0}, {10, 0}, {10 + 12 * widen, 12}, {10 + 12 * widen - 2, 14}, {0, 14}}, 48);
   OrientOptions o = fewCandidates(0);
   o.pedestal = PedestalChoice::Never;
   o.maxTiltDeg = 0;

@@ -6,6 +6,7 @@
 #include "collision/TimedPointTree.h"
 #include "common/Error.h"
 #include "io/MeshReader.h"
+#include "mesh/AnalyticShapes.h"
 #include "nozzle/NozzleModel.h"
 #include "nozzle/Printhead.h"
 #include "sequence/PotentialCollisions.h"
@@ -27,35 +28,6 @@ using namespace geolattice;
 
 namespace {
 
-/// Closed mesh of the profile (r, z) revolved about z with n segments; the first and last
-/// profile points lie on the axis. Vertices on the circles.
-TriangleSurface revolve(const std::vector<std::pair<double, double>>& profile, int n) {
-  TriangleSurface s;
-  s.points.push_back(Vec3(0, 0, profile.front().second));
-  for (size_t i = 1; i + 1 < profile.size(); ++i) {
-    for (int j = 0; j < n; ++j) {
-      const double a = 2 * M_PI * j / n;
-      s.points.push_back(
-          Vec3(profile[i].first * std::cos(a), profile[i].first * std::sin(a), profile[i].second));
-    }
-  }
-  s.points.push_back(Vec3(0, 0, profile.back().second));
-  const int rings = static_cast<int>(profile.size()) - 2;
-  const int top = static_cast<int>(s.points.size()) - 1;
-  for (int j = 0; j < n; ++j) {
-    const int jn = (j + 1) % n;
-    s.triangles.push_back({0, 1 + jn, 1 + j});
-    for (int i = 0; i + 1 < rings; ++i) {
-      const int a = 1 + i * n, b = 1 + (i + 1) * n;
-      s.triangles.push_back({a + j, a + jn, b + jn});
-      s.triangles.push_back({a + j, b + jn, b + j});
-    }
-    const int last = 1 + (rings - 1) * n;
-    s.triangles.push_back({last + j, last + jn, top});
-  }
-  return s;
-}
-
 /// An axis-aligned box [lo, hi] as 12 outward triangles.
 TriangleSurface box(const Vec3& lo, const Vec3& hi) {
   TriangleSurface s;
@@ -72,18 +44,18 @@ TriangleSurface box(const Vec3& lo, const Vec3& hi) {
 /// heater r 10 to 40, heat sink r 11 to 70.
 TriangleSurface slimHead(int n = 96) {
   const double coneTop = 1.5 / std::tan(40 * M_PI / 180);
-  return revolve({{0, 0},
-                  {0.5, 0},
-                  {2, coneTop},
-                  {2, 8},
-                  {3, 8},
-                  {3, 30},
-                  {10, 30},
-                  {10, 40},
-                  {11, 40},
-                  {11, 70},
-                  {0, 70}},
-                 n);
+  return revolvedSurface({{0, 0},
+                          {0.5, 0},
+                          {2, coneTop},
+                          {2, 8},
+                          {3, 8},
+                          {3, 30},
+                          {10, 30},
+                          {10, 40},
+                          {11, 40},
+                          {11, 70},
+                          {0, 70}},
+                         n);
 }
 
 /// The analytic radius of slimHead's round solid at height h (the largest at a step).
@@ -144,7 +116,8 @@ TEST(Printhead, ContainsEveryPointOfTheMeshAtEveryTurnAboutTheAxis) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   using Mesh = CGAL::Surface_mesh<K::Point_3>;
   // A round nozzle, and a box off the axis (its bottom face holds the tip at the origin).
-  const TriangleSurface round = revolve({{0, 0}, {0.5, 0}, {1.5, 1.2}, {1.5, 10}, {0, 10}}, 64);
+  const TriangleSurface round =
+      revolvedSurface({{0, 0}, {0.5, 0}, {1.5, 1.2}, {1.5, 10}, {0, 10}}, 64);
   const TriangleSurface offAxis = box(Vec3(-3, -2, 0), Vec3(7, 3, 4));
   for (const TriangleSurface* solid : {&round, &offAxis}) {
     const TriangleSurface& mesh = *solid;

@@ -47,34 +47,6 @@ TriangleSurface append(TriangleSurface a, const TriangleSurface& b, const Eigen:
   return a;
 }
 
-/// A surface of revolution about z: `profile` (radius, z) from the bottom pole to the top pole
-/// (both endpoints on the axis, radius 0), `segments` around.
-TriangleSurface revolved(const std::vector<std::pair<double, double>>& profile, int segments) {
-  TriangleSurface s;
-  const int inner = static_cast<int>(profile.size()) - 2;  // rings between the poles
-  s.points.emplace_back(0, 0, profile.front().second);
-  for (int i = 1; i <= inner; ++i) {
-    for (int j = 0; j < segments; ++j) {
-      const double a = 2 * M_PI * j / segments, r = profile[i].first;
-      s.points.emplace_back(r * std::cos(a), r * std::sin(a), profile[i].second);
-    }
-  }
-  const int top = static_cast<int>(s.points.size());
-  s.points.emplace_back(0, 0, profile.back().second);
-  auto ring = [&](int i, int j) {
-    return 1 + (i - 1) * segments + (j % segments);
-  };
-  for (int j = 0; j < segments; ++j) {
-    s.triangles.push_back({0, ring(1, j + 1), ring(1, j)});
-    for (int i = 1; i < inner; ++i) {
-      s.triangles.push_back({ring(i, j), ring(i, j + 1), ring(i + 1, j + 1)});
-      s.triangles.push_back({ring(i, j), ring(i + 1, j + 1), ring(i + 1, j)});
-    }
-    s.triangles.push_back({ring(inner, j), ring(inner, j + 1), top});
-  }
-  return s;
-}
-
 /// A cone standing on its tip, as a user might place a funnel or a vase: a rounded tip of radius
 /// 1.5 mm on the plate, radius 30 mm at z = 50, a flat top with a rounded rim (r 0.5); about 0.5
 /// mm between rings, 200 segments around.
@@ -96,7 +68,7 @@ TriangleSurface coneOnItsTip() {
   for (int k = 1; k <= 60; ++k) {
     profile.emplace_back(30.0 * (1 - k / 60.0), 50.0);
   }
-  return revolved(profile, 200);
+  return revolvedSurface(profile, 200);
 }
 
 TetrahedralizeOptions edge(double length) {
