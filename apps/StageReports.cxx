@@ -134,6 +134,7 @@ void reportOrientation(vtkDataObject* o, Json& s) {
   s["candidates"] = count(o, arrays::OrientCandidates);
   s["search_seconds"] = fieldValue(o, arrays::OrientSeconds);
   s["evaluation_tets"] = count(o, arrays::OrientEvaluationTets);
+  s["evaluation_scale"] = fieldValue(o, arrays::OrientEvaluationScale);
   s["refined_candidates"] = count(o, arrays::OrientRefined);
   s["chosen_rank"] = count(o, arrays::OrientChosenRank);
   s["pedestal_mm"] = fieldValue(o, arrays::OrientPedestalHeight);

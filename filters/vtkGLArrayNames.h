@@ -312,6 +312,8 @@ constexpr const char* OrientSeconds = "OrientSeconds";
 constexpr const char* OrientBefore = "OrientBefore";  ///< colliding stations as placed
 constexpr const char* OrientAfter = "OrientAfter";    ///< colliding stations as chosen
 constexpr const char* OrientEvaluationTets = "OrientEvaluationTets";
+/// factor on the evaluation's layer interval, lattice width and samples (1: as given; a large part)
+constexpr const char* OrientEvaluationScale = "OrientEvaluationScale";
 /// mm of pedestal the search chose (0: none; GL Pedestal builds it, see its UseOrientation)
 constexpr const char* OrientPedestalHeight = "OrientPedestalHeight";
 constexpr const char* OrientPedestalContactHeight =

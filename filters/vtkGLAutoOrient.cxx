@@ -249,6 +249,7 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::addFieldArray(fd, gl::arrays::OrientAfter, {static_cast<double>(chosen.collidingStations)});
     gl::addFieldArray(fd, gl::arrays::OrientEvaluationTets,
                       {static_cast<double>(r.evaluationTets)});
+    gl::addFieldArray(fd, gl::arrays::OrientEvaluationScale, {r.evaluationScale});
     gl::addFieldArray(fd, gl::arrays::OrientRefined, {static_cast<double>(r.refined)});
     gl::addFieldArray(fd, gl::arrays::OrientChosenRank, {static_cast<double>(rank)});
     gl::addFieldArray(fd, gl::arrays::OrientPedestalHeight, {chosen.pedestal});

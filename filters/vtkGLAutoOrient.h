@@ -22,7 +22,9 @@
  *   ("keep" or "auto"), and with Auto `OrientUp` (3: the part's direction, as it came in, that
  *   now points up), `OrientRotation` (9, row major: input -> output), `OrientCandidates`,
  *   `OrientSeconds`, `OrientBefore` and `OrientAfter` (colliding stations as placed and chosen, at
- *   the printing resolution when refined), `OrientEvaluationTets`, `OrientRefined`, and
+ *   the printing resolution when refined), `OrientEvaluationTets`, `OrientEvaluationScale` (the
+ *   factor on every evaluation's layer interval, lattice width and samples: 1, or for a part of
+ *   more than 200,000 mm³ sqrt(volume / 200,000), core evaluationScale), `OrientRefined`, and
  *   `OrientPedestalHeight` / `OrientPedestalContactHeight` (mm: the pedestal chosen, 0 = none),
  *   `OrientChosenRank` (the candidate shown: CandidateRank, clamped).
  * Output port 1 (Candidates): with Auto, one vertex per candidate at centre + radius × its up

@@ -59,6 +59,7 @@ std::vector<Vec3> fibonacciSphere(int count) {
 struct Evaluation {
   double layerInterval, latticeWidth;
   SequenceStrategy strategy;
+  double sampleSpacing;  ///< material samples of the collision check (mm)
 };
 
 /// The scores of one candidate, with the real stages on the coarse mesh (see the file comment).
@@ -134,7 +135,7 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
   lap("skeleton");
 
   // The paper's A4 order and the independent verifier on it, with the nozzle and the plate.
-  MaterialSamples material = sampleLatticeMaterial(graph, o.sampleSpacing);
+  MaterialSamples material = sampleLatticeMaterial(graph, at.sampleSpacing);
   const PotentialCollisions pcg = computePotentialCollisions(material, o.nozzle, 1);
   lap("pcg");
   SequenceOptions order;
@@ -321,6 +322,10 @@ std::vector<Vec3> hullFacetNormals(const TriangleSurface& surface, int count) {
   return normals;
 }
 
+double evaluationScale(double volume) {
+  return volume > kFullResolutionVolume ? std::sqrt(volume / kFullResolutionVolume) : 1.0;
+}
+
 Eigen::Matrix3d rotationTakingDownToMinusZ(const Vec3& down) {
   return Eigen::Quaterniond::FromTwoVectors(down.normalized(), -Vec3::UnitZ()).toRotationMatrix();
 }
@@ -467,7 +472,12 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
         },
         [&](size_t done) { part.report(static_cast<double>(done) / ids.size()); });
   };
-  const Evaluation coarse{o.layerInterval, o.latticeWidth, SequenceStrategy::Greedy};
+  // A large part is scored at a resolution its size scales (see evaluationScale): the same
+  // layers and lattice per candidate, relative to the part, as a part of kFullResolutionVolume.
+  result.evaluationScale = evaluationScale(tets.meshVolume);
+  const double f = result.evaluationScale;
+  const Evaluation coarse{f * o.layerInterval, f * o.latticeWidth, SequenceStrategy::Greedy,
+                          f * o.sampleSpacing};
   // Candidates that cannot stick to the plate are not worth the stages; "keep" is always scored.
   auto worthScoring = [&](size_t begin, size_t end) {
     std::vector<size_t> ids;
@@ -514,8 +524,10 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
     for (size_t i : ranked) {
       result.candidates[i].coarseCollidingStations = result.candidates[i].collidingStations;
     }
-    score(ranked, Evaluation{o.refineLayerInterval, o.refineLatticeWidth, o.refineStrategy}, 0.7,
-          1.0);
+    score(ranked,
+          Evaluation{f * o.refineLayerInterval, f * o.refineLatticeWidth, o.refineStrategy,
+                     f * o.sampleSpacing},
+          0.7, 1.0);
     for (size_t i : ranked) {
       result.candidates[i].refined = result.candidates[i].evaluated;
     }

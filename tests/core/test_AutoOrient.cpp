@@ -14,6 +14,7 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <numeric>
 #include <random>
 #include <stdexcept>
@@ -297,4 +298,37 @@ TEST(AutoOrient, HullCandidatesDoNotDependOnThePointOrder) {
     EXPECT_EQ(a[i], b[i]) << "normal " << i;
     EXPECT_NEAR(a[i].norm(), 1.0, 1e-12);
   }
+}
+
+TEST(AutoOrient, ALargePartIsScoredAtAResolutionItsSizeScales) {
+  // An evaluation's stations grow as volume / (layer interval x lattice width): the bunny at
+  // 300 mm had 3.0M stations per refined candidate and a 251 s search. Above
+  // kFullResolutionVolume both (and the material samples' spacing) are scaled by
+  // sqrt(volume / kFullResolutionVolume), so a part four times as large as one of that volume is
+  // scored with no more stations than that one (measured: 0.62x; 4x at the given resolution).
+  EXPECT_EQ(evaluationScale(0.5 * kFullResolutionVolume), 1.0);
+  EXPECT_DOUBLE_EQ(evaluationScale(4 * kFullResolutionVolume), 2.0);
+  const TriangleSurface mushroom = flatMushroom();  // 16,022 mm³
+  auto scaled = [&](double volume) {
+    TriangleSurface s = mushroom;
+    const double k = std::cbrt(volume / 16022.0);
+    for (Vec3& p : s.points) {
+      p *= k;
+    }
+    return s;
+  };
+  OrientOptions o = fewCandidates(0);  // the placement alone, coarse only
+  o.refineCandidates = 0;
+  o.pedestal = PedestalChoice::Never;
+  const OrientResult reference = searchOrientation(scaled(kFullResolutionVolume), o);
+  const OrientResult large = searchOrientation(scaled(4 * kFullResolutionVolume), o);
+  EXPECT_NEAR(reference.evaluationScale, 1.0, 0.05);
+  EXPECT_NEAR(large.evaluationScale, 2.0, 0.1);
+  const double ratio = static_cast<double>(large.candidates[0].stations) /
+                       static_cast<double>(reference.candidates[0].stations);
+  std::printf("[ mushroom at 1x and 4x %.0f mm³ ] stations %lld and %lld, scale %.2f and %.2f\n",
+              kFullResolutionVolume, reference.candidates[0].stations, large.candidates[0].stations,
+              reference.evaluationScale, large.evaluationScale);
+  EXPECT_GT(ratio, 0.3);
+  EXPECT_LT(ratio, 1.2);
 }
