@@ -151,9 +151,10 @@ private:
     reportMesh(tets, !tetMesh, this->Section("mesh"));
     if (const int merged = static_cast<int>(fieldValue(tets, arrays::MergedBodies)); merged > 0) {
       // The part printed is not the surface as given: always said, even with -q.
-      std::cerr << "geolattice: note: bodies of the surface cross each other; meshed as their "
-                   "union ("
-                << merged << " fewer bodies, report.json mesh.merged_bodies)\n";
+      std::cerr
+          << "geolattice: note: bodies of the surface touch or cross each other; meshed as their "
+             "union ("
+          << merged << " fewer bodies, report.json mesh.merged_bodies)\n";
     }
     this->Write(tets, "tets.vtu");
     if (R.until == "mesh") {

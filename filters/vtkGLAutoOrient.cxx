@@ -7,6 +7,7 @@
 #include "vtkGLRequest.h"
 
 #include "common/Error.h"
+#include "mesh/OverlappingBodies.h"
 #include "orient/AutoOrient.h"
 
 #include <algorithm>
@@ -200,7 +201,10 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
       return;
     }
     gl::OrientOptions options = orientOptions(this);
-    const gl::TriangleSurface surface = gl::toTriangleSurface(input);
+    gl::TriangleSurface surface = gl::toTriangleSurface(input);
+    // Bodies the reader welded where they touch along a face: one solid before it is turned (a
+    // union of faces that are coplanar as read; turned, they may not be exactly).
+    const bool merged = gl::mergeTouchingBodies(surface) > 0;
     if (!this->Cache || this->Cache->filterTime != this->GetMTime() ||
         this->Cache->inputTime != input->GetMTime()) {
       this->Cache.reset();
@@ -222,14 +226,18 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
         std::min(this->CandidateRank, static_cast<int>(this->Cache->byRank.size()) - 1);
     const gl::OrientCandidate& chosen = r.candidates[this->Cache->byRank[rank]];
     const gl::TriangleSurface placed = gl::orientSurface(surface, chosen.rotation);
-    output->ShallowCopy(input);
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToDouble();
-    points->SetNumberOfPoints(static_cast<vtkIdType>(placed.points.size()));
-    for (size_t i = 0; i < placed.points.size(); ++i) {
-      points->SetPoint(static_cast<vtkIdType>(i), placed.points[i].data());
+    if (merged) {
+      gl::fromTriangleSurface(placed, output);  // new triangles: the input's arrays do not fit
+    } else {
+      output->ShallowCopy(input);
+      vtkNew<vtkPoints> points;
+      points->SetDataTypeToDouble();
+      points->SetNumberOfPoints(static_cast<vtkIdType>(placed.points.size()));
+      for (size_t i = 0; i < placed.points.size(); ++i) {
+        points->SetPoint(static_cast<vtkIdType>(i), placed.points[i].data());
+      }
+      output->SetPoints(points);  // the same triangles, rotated points (the triangle ids match)
     }
-    output->SetPoints(points);  // the same triangles, rotated points (the triangle ids match)
     vtkNew<vtkFieldData> fd;
     fd->ShallowCopy(input->GetFieldData());
     addMode(fd, "auto");

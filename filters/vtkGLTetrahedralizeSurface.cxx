@@ -182,7 +182,7 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::MergedBodies, static_cast<double>(result.mergedBodies));
     addValue(fd, gl::arrays::CavityRegions, static_cast<double>(result.removedCavityRegions));
     if (result.mergedBodies > 0) {
-      vtkWarningMacro(<< "bodies of the surface cross each other; meshed as their union ("
+      vtkWarningMacro(<< "bodies of the surface touch or cross each other; meshed as their union ("
                       << result.mergedBodies << " fewer bodies)");
     }
     if (!result.simplificationRefused.empty() && !result.simplified) {

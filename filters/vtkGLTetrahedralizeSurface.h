@@ -10,7 +10,8 @@
  * Input:  vtkPolyData whose polygons are triangles forming a closed, edge-manifold,
  *         consistently oriented surface (mm). Several shells are allowed: disjoint parts are all
  *         meshed; an inner shell oriented inward is a cavity and stays empty. Bodies whose
- *         surfaces cross each other (an assembly exported as it is) are meshed as their union
+ *         surfaces cross each other (an assembly exported as it is), or touch along a face (then
+ *         welded into non-manifold edges by the reader), are meshed as their union
  *         (core/mesh/OverlappingBodies.h; field data `MergedBodies`, and a warning). Closed
  *         cavities are counted in field data `CavityRegions`. An
  *         inward-oriented surface is flipped. Input arrays are not passed (the vertices change).

@@ -3,6 +3,7 @@
 #include "common/Error.h"
 #include "common/UnionFind.h"
 #include "mesh/CgalSurfaceMesh.h"
+#include "mesh/SurfaceCheck.h"
 
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/intersection.h>
@@ -10,7 +11,13 @@
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
 #include <Eigen/Geometry>
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <map>
 #include <string>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace geolattice {
@@ -163,6 +170,172 @@ OverlappingBodiesResult mergeOverlappingBodies(TriangleSurface& surface) {
   }
   surface = std::move(out);
   return r;
+}
+
+namespace {
+
+/// Drops the walls between bodies that touch along identically triangulated faces: pairs of
+/// triangles on the same three vertices in opposite directions. Returns the wall patches
+/// (connected sets of dropped pairs: one per contact), 0 when there is none.
+int dropInnerWalls(TriangleSurface& surface) {
+  std::map<std::array<int, 3>, std::vector<int>> byVertices;
+  for (int t = 0; t < static_cast<int>(surface.triangles.size()); ++t) {
+    std::array<int, 3> sorted = surface.triangles[t];
+    std::sort(sorted.begin(), sorted.end());
+    byVertices[sorted].push_back(t);
+  }
+  auto parity = [](const std::array<int, 3>& t) {  // the cyclic order of the triangle
+    const int first = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
+    return t[(first + 1) % 3] < t[(first + 2) % 3];
+  };
+  std::map<std::pair<int, int>, int> uses;  // undirected edge -> triangles on it
+  for (const auto& t : surface.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      ++uses[std::minmax(t[k], t[(k + 1) % 3])];
+    }
+  }
+  // A wall between two bodies meets their other faces at each of its edges (4 uses or more); a
+  // pair that is alone on an edge is a sheet of its own (a fin with nothing on either side),
+  // which is not the part's and stays a defect.
+  auto sheet = [&](const std::array<int, 3>& t) {
+    for (int k = 0; k < 3; ++k) {
+      if (uses[std::minmax(t[k], t[(k + 1) % 3])] == 2) {
+        return true;
+      }
+    }
+    return false;
+  };
+  std::vector<char> dropped(surface.triangles.size(), 0);
+  std::vector<int> walls;  // one triangle of each dropped pair
+  for (const auto& [vertices, list] : byVertices) {
+    if (list.size() == 2 && !sheet(surface.triangles[list[0]]) &&
+        parity(surface.triangles[list[0]]) != parity(surface.triangles[list[1]])) {
+      dropped[list[0]] = dropped[list[1]] = 1;
+      walls.push_back(list[0]);
+    }
+  }
+  if (walls.empty()) {
+    return 0;
+  }
+  UnionFind patches(static_cast<int>(walls.size()));
+  std::map<std::pair<int, int>, int> wallOfEdge;
+  for (int w = 0; w < static_cast<int>(walls.size()); ++w) {
+    const auto& t = surface.triangles[walls[w]];
+    for (int k = 0; k < 3; ++k) {
+      const auto edge = std::minmax(t[k], t[(k + 1) % 3]);
+      const auto [it, added] = wallOfEdge.try_emplace(edge, w);
+      if (!added) {
+        patches.unite(it->second, w);
+      }
+    }
+  }
+  std::vector<int> label;
+  const int count = patches.labels(label);
+  std::vector<std::array<int, 3>> kept;
+  for (size_t t = 0; t < surface.triangles.size(); ++t) {
+    if (!dropped[t]) {
+      kept.push_back(surface.triangles[t]);
+    }
+  }
+  // The walls' inner vertices go too: only the triangles' vertices are kept.
+  std::vector<int> newId(surface.points.size(), -1);
+  TriangleSurface compact;
+  for (auto t : kept) {
+    for (int& v : t) {
+      if (newId[v] < 0) {
+        newId[v] = static_cast<int>(compact.points.size());
+        compact.points.push_back(surface.points[v]);
+      }
+      v = newId[v];
+    }
+    compact.triangles.push_back(t);
+  }
+  surface = std::move(compact);
+  return count;
+}
+
+}  // namespace
+
+int mergeTouchingBodies(TriangleSurface& surface) {
+  if (checkSurface(surface).nonManifoldEdges == 0) {
+    return 0;
+  }
+  // Faces triangulated alike on both sides (bodies split from one solid): the walls go.
+  {
+    TriangleSurface withoutWalls = surface;
+    const int contacts = dropInnerWalls(withoutWalls);
+    if (contacts > 0 && checkSurface(withoutWalls).isClosedManifold()) {
+      surface = std::move(withoutWalls);
+      return contacts;
+    }
+  }
+  // Each undirected edge's uses: (triangle, +1 when it runs from the smaller vertex id).
+  std::unordered_map<std::uint64_t, std::vector<std::pair<int, int>>> uses;
+  auto key = [](int a, int b) {
+    return (static_cast<std::uint64_t>(std::min(a, b)) << 32) |
+           static_cast<std::uint32_t>(std::max(a, b));
+  };
+  const int nt = static_cast<int>(surface.triangles.size());
+  uses.reserve(3 * static_cast<size_t>(nt) / 2);
+  for (int t = 0; t < nt; ++t) {
+    const auto& tri = surface.triangles[t];
+    for (int k = 0; k < 3; ++k) {
+      const int a = tri[k], b = tri[(k + 1) % 3];
+      uses[key(a, b)].emplace_back(t, a < b ? 1 : -1);
+    }
+  }
+  bool nonManifold = false;
+  UnionFind bodies(nt);
+  for (const auto& [edge, list] : uses) {
+    if (list.size() > 2) {
+      nonManifold = true;
+    } else if (list.size() == 2 && list[0].second != list[1].second) {
+      bodies.unite(list[0].first, list[1].first);
+    }
+  }
+  if (!nonManifold) {
+    return 0;
+  }
+  // Every body closed: each of its edges used once in each direction by its own triangles.
+  for (const auto& [edge, list] : uses) {
+    std::map<int, int> balance, count;  // body -> sum of directions, uses
+    for (const auto& [t, direction] : list) {
+      balance[bodies.find(t)] += direction;
+      ++count[bodies.find(t)];
+    }
+    for (const auto& [body, n] : count) {
+      if (n != 2 || balance[body] != 0) {
+        return 0;
+      }
+    }
+  }
+  // Each body its own vertices.
+  TriangleSurface separated;
+  std::map<std::pair<int, int>, int> vertexOf;  // (body, input vertex) -> output vertex
+  for (int t = 0; t < nt; ++t) {
+    std::array<int, 3> tri{};
+    for (int k = 0; k < 3; ++k) {
+      const int v = surface.triangles[t][k];
+      const auto [it, added] = vertexOf.try_emplace({bodies.find(t), v}, 0);
+      if (added) {
+        it->second = static_cast<int>(separated.points.size());
+        separated.points.push_back(surface.points[v]);
+      }
+      tri[k] = it->second;
+    }
+    separated.triangles.push_back(tri);
+  }
+  try {
+    orientOutward(separated);
+    const int merged = mergeOverlappingBodies(separated).merged;
+    if (merged == 0 || !checkSurface(separated).isClosedManifold()) {
+      return 0;
+    }
+    surface = std::move(separated);
+    return merged;
+  } catch (const GeoLatticeError&) {
+    return 0;  // no manifold union (touching along an edge): the caller reports the input's
+  }
 }
 
 }  // namespace geolattice

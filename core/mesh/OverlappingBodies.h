@@ -31,4 +31,19 @@ struct OverlappingBodiesResult {
 /// closed union.
 OverlappingBodiesResult mergeOverlappingBodies(TriangleSurface& surface);
 
+/// Bodies that touch along a face, welded into one surface by the reader's exact point merging
+/// (an STL of a multi-body CAD part has no shared vertices; merged, the touching bodies' edges are
+/// used by more than two triangles), replaced by their union. Faces triangulated alike on both
+/// sides (bodies split from one solid) are pairs of triangles on the same vertices in opposite
+/// directions: the pairs are dropped. Otherwise triangles are grouped into bodies
+/// across the edges two triangles share in opposite directions; when there are non-manifold
+/// edges and every group is a closed body, each gets its own vertices, the surface is oriented
+/// outward and mergeOverlappingBodies unions them. The surface is replaced only when that gives a
+/// closed manifold (bodies that touch along an edge or at a point have no manifold union: the
+/// input stays as it is, and its non-manifold edges are reported by the caller's check).
+/// Returns the bodies merged (0: unchanged; for dropped walls, their connected patches); the
+/// new surface has only the triangles' vertices. Cost: one checkSurface (O(F log F)) when nothing is
+/// non-manifold.
+int mergeTouchingBodies(TriangleSurface& surface);
+
 }  // namespace geolattice

@@ -1,6 +1,7 @@
 #include "pedestal/Pedestal.h"
 
 #include "common/Error.h"
+#include "mesh/OverlappingBodies.h"
 #include "mesh/SurfaceCheck.h"
 #include "placement/PlaceOnPlatform.h"
 
@@ -69,9 +70,12 @@ std::vector<int> withoutPinches(const TriangleSurface& part, std::vector<int> fa
 
 }  // namespace
 
-PedestalResult addPedestal(const TriangleSurface& part, const PedestalOptions& o) {
+PedestalResult addPedestal(const TriangleSurface& input, const PedestalOptions& o) {
   o.validate();
   PedestalResult result;
+  // Bodies that touch along a face (welded by the reader) stand on it as one solid.
+  TriangleSurface part = input;
+  mergeTouchingBodies(part);
   const std::vector<int> contact =
       withoutPinches(part, baseContactFaces(part, Eigen::Matrix3d::Identity(), o.contactHeight));
   for (int f : contact) {

@@ -250,17 +250,28 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   const auto start = std::chrono::steady_clock::now();
   options.validate();
   const bool automatic = options.targetEdgeLength == 0.0;
-  const SurfaceCheckReport report = requireClosedManifold(input);
   // Only the vertices of triangles go to TetGen: a stray point inside the solid would become a
   // mesh vertex.
   TriangleSurface surface = withoutUnusedPoints(input);
   TetrahedralizeResult result;
+  SurfaceCheckReport report;
+  try {
+    report = requireClosedManifold(input);  // its errors name the input's point ids
+  } catch (const GeoLatticeError&) {
+    // Bodies that touch along a face (welded by the reader) are one solid: their union. Any
+    // other defect is the input's own.
+    result.mergedBodies = mergeTouchingBodies(surface);
+    if (result.mergedBodies == 0) {
+      throw;
+    }
+    report = requireClosedManifold(surface);
+  }
   // TetGen ignores facet orientation, but the cavity test (winding number) needs an outward
   // surface.
   result.flippedSurfaceTriangles = orientOutward(surface);
   // Closed bodies that cross each other (an assembly exported as it is) are one solid: their
   // union, which TetGen accepts (it refuses the crossing facets).
-  result.mergedBodies = mergeOverlappingBodies(surface).merged;
+  result.mergedBodies += mergeOverlappingBodies(surface).merged;
   const double inputVolume = result.mergedBodies > 0
                                  ? std::abs(requireClosedManifold(surface).signedVolume)
                                  : std::abs(report.signedVolume);

@@ -68,7 +68,7 @@ struct TetrahedralizeResult {
   double meshVolume = 0.0;        ///< sum of tet volumes (mm^3)
   int tetCount = 0;
   int flippedSurfaceTriangles = 0;  ///< input triangles reversed because the surface faced inward
-  int mergedBodies = 0;  ///< bodies merged into another one they cross (mesh/OverlappingBodies.h)
+  int mergedBodies = 0;  ///< bodies merged into one they cross or touch (mesh/OverlappingBodies.h)
   int flippedTets = 0;  ///< output tets reoriented (0 in practice: TetGen 1.5 writes positive tets)
   int removedCavityRegions =
       0;                  ///< regions TetGen filled with winding number 0 (cavities), removed

@@ -110,7 +110,7 @@ class CliErrorTest(unittest.TestCase):
         model = write(os.path.join(self.tmp, "two.obj"), CUBE_OBJ + second + faces)
         result = self.run_cli(model, "-o", self.out, "-q", "--scale", "20", "--until", "mesh")
         self.assertEqual(result.returncode, 0, result.stderr)
-        self.assertIn("bodies of the surface cross each other", result.stderr)
+        self.assertIn("bodies of the surface touch or cross each other", result.stderr)
         with open(os.path.join(self.out, "report.json")) as f:
             report = json.load(f)
         self.assertEqual(report["mesh"]["merged_bodies"], 1)

@@ -575,3 +575,37 @@ TEST(TetrahedralizeSurface, ASurfaceRefusedAtTheTargetEdgeIsRemeshedForAShorterO
   EXPECT_LE(r.simplificationDistance, 0.25 * firstEdge);  // the target edge's tolerance
   EXPECT_LT(r.tetCount, 4 * 15000);
 }
+
+TEST(TetrahedralizeSurface, BodiesTouchingAlongAFaceAreMeshedAsTheirUnion) {
+  // An STL of a multi-body part has no shared vertices; the reader's exact merging welds bodies
+  // that touch along a face into edges of four triangles. Two such boxes are one solid.
+  auto weld = [](TriangleSurface s) {
+    for (auto& t : s.triangles) {
+      for (int& v : t) {
+        for (int j = 0; j < v; ++j) {
+          if ((s.points[v] - s.points[j]).norm() < 1e-12) {
+            v = j;
+            break;
+          }
+        }
+      }
+    }
+    return s;
+  };
+  const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 5.0);
+  // The same face triangulation on both sides: the wall between them is dropped.
+  const TriangleSurface alike =
+      weld(append(box, box, Eigen::Matrix3d::Identity(), Vec3(10, 0, 0), false));
+  ASSERT_GT(checkSurface(alike).nonManifoldEdges, 0);
+  const TetrahedralizeResult a = tetrahedralizeSurface(alike, edge(2.0));
+  EXPECT_EQ(a.mergedBodies, 1);
+  EXPECT_NEAR(a.meshVolume, 2000.0, 1e-6);
+  // A smaller box on top of the first, touching part of its top face: a union by CGAL.
+  const TriangleSurface small = boxSurface(Vec3(5, 10, 5), 5.0);
+  const TriangleSurface partly =
+      weld(append(box, small, Eigen::Matrix3d::Identity(), Vec3(0, 0, 10), false));
+  ASSERT_GT(checkSurface(partly).nonManifoldEdges, 0);
+  const TetrahedralizeResult b = tetrahedralizeSurface(partly, edge(2.0));
+  EXPECT_EQ(b.mergedBodies, 1);
+  EXPECT_NEAR(b.meshVolume, 1250.0, 1e-6);
+}

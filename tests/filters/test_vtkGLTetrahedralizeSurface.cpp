@@ -209,7 +209,7 @@ TEST(vtkGLTetrahedralizeSurface, SelfIntersectingSurfaceGivesError) {
   vtkDataArray* merged = run.Output->GetFieldData()->GetArray(geolattice::arrays::MergedBodies);
   ASSERT_NE(merged, nullptr);
   EXPECT_EQ(merged->GetTuple1(0), 1.0);
-  EXPECT_NE(run.Errors->Warnings().find("bodies of the surface cross each other"),
+  EXPECT_NE(run.Errors->Warnings().find("bodies of the surface touch or cross each other"),
             std::string::npos)
       << run.Errors->Warnings();
   const double union3 = 2000.0 - 4.7 * 4.9 * 5.1;  // mm^3
