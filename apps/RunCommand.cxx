@@ -149,7 +149,13 @@ private:
       this->LastSeconds = 0;
     }
     reportMesh(tets, !tetMesh, this->Section("mesh"));
-    if (const int merged = static_cast<int>(fieldValue(tets, arrays::MergedBodies)); merged > 0) {
+    // Bodies touching along a face are merged by the orientation search (before it turns the
+    // part) or by the mesh stage; crossing ones by the mesh stage.
+    const int merged =
+        static_cast<int>(fieldValue(tets, arrays::MergedBodies) +
+                         fieldValue(P.Orientation->GetOutputDataObject(0), arrays::MergedBodies));
+    this->Section("mesh")["merged_bodies"] = merged;
+    if (merged > 0) {
       // The part printed is not the surface as given: always said, even with -q.
       std::cerr
           << "geolattice: note: bodies of the surface touch or cross each other; meshed as their "

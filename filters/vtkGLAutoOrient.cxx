@@ -204,7 +204,8 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::TriangleSurface surface = gl::toTriangleSurface(input);
     // Bodies the reader welded where they touch along a face: one solid before it is turned (a
     // union of faces that are coplanar as read; turned, they may not be exactly).
-    const bool merged = gl::mergeTouchingBodies(surface) > 0;
+    const int mergedBodies = gl::mergeTouchingBodies(surface);
+    const bool merged = mergedBodies > 0;
     if (!this->Cache || this->Cache->filterTime != this->GetMTime() ||
         this->Cache->inputTime != input->GetMTime()) {
       this->Cache.reset();
@@ -261,6 +262,9 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::addFieldArray(fd, gl::arrays::OrientRefined, {static_cast<double>(r.refined)});
     gl::addFieldArray(fd, gl::arrays::OrientChosenRank, {static_cast<double>(rank)});
     gl::addFieldArray(fd, gl::arrays::OrientPedestalHeight, {chosen.pedestal});
+    if (merged) {  // as GL Tetrahedralize Surface says it
+      gl::addFieldArray(fd, gl::arrays::MergedBodies, {static_cast<double>(mergedBodies)});
+    }
     gl::addFieldArray(fd, gl::arrays::OrientPedestalContactHeight, {options.pedestalContactHeight});
     output->SetFieldData(fd);
     double bounds[6];

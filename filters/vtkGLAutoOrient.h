@@ -26,7 +26,9 @@
  *   factor on every evaluation's layer interval, lattice width and samples: 1, or for a part of
  *   more than 200,000 mm³ sqrt(volume / 200,000), core evaluationScale), `OrientRefined`, and
  *   `OrientPedestalHeight` / `OrientPedestalContactHeight` (mm: the pedestal chosen, 0 = none),
- *   `OrientChosenRank` (the candidate shown: CandidateRank, clamped).
+ *   `OrientChosenRank` (the candidate shown: CandidateRank, clamped), and `MergedBodies` where
+ *   bodies of the input that touch along a face (welded by the reader) were merged into their
+ *   union before the search (core mergeTouchingBodies: the output is that union).
  * Output port 1 (Candidates): with Auto, one vertex per candidate at centre + radius × its up
  *   direction (a sphere around the part), point data `OrientRank` (0 = chosen),
  *   `CollidingStations`, `PlateStations`, `ForcedSteps`, `BaseArea` (mm²), `OverhangFraction`,

@@ -116,6 +116,28 @@ class CliErrorTest(unittest.TestCase):
         self.assertEqual(report["mesh"]["merged_bodies"], 1)
         self.assertGreater(report["mesh"]["tets"], 0)
 
+    def test_bodies_touching_along_a_face_print_as_their_union(self):
+        # A post with a shelf touching its side, as an STL of two bodies gives it: the reader welds
+        # the contact into an edge of four triangles (it was "non-manifold surface"). As placed the
+        # mesh stage merges them; with --orient auto the search does, before it turns the part.
+        def box(x0, y0, z0, x1, y1, z1, offset):
+            v = "".join("v %g %g %g\n" % (x, y, z) for z in (z0, z1) for y in (y0, y1) for x in (x0, x1))
+            f = "".join("f %d %d %d\n" % (a + offset, b + offset, c + offset) for a, b, c in
+                        [(1, 3, 2), (2, 3, 4), (5, 6, 7), (6, 8, 7), (1, 2, 5), (2, 6, 5),
+                         (3, 7, 4), (4, 7, 8), (1, 5, 3), (3, 5, 7), (2, 4, 6), (4, 8, 6)])
+            return v, f
+        post_v, post_f = box(0, 0, 0, 10, 20, 40, 0)
+        shelf_v, shelf_f = box(10, 0, 30, 40, 20, 40, 8)
+        model = write(os.path.join(self.tmp, "shelf.obj"), post_v + shelf_v + post_f + shelf_f)
+        for extra in ([], ["--orient", "auto"]):
+            out = self.out + "-".join(extra)
+            result = self.run_cli(model, "-o", out, "-q", "--until", "mesh", *extra)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            self.assertIn("bodies of the surface touch or cross each other", result.stderr)
+            with open(os.path.join(out, "report.json")) as f:
+                report = json.load(f)
+            self.assertEqual(report["mesh"]["merged_bodies"], 1)
+
     def test_inverted_tet(self):
         tet = "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 2 1 3\n"
         self.expect_error([write(os.path.join(self.tmp, "inverted.tet"), tet)], "inverted")
