@@ -593,19 +593,24 @@ TEST(TetrahedralizeSurface, BodiesTouchingAlongAFaceAreMeshedAsTheirUnion) {
     return s;
   };
   const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 5.0);
-  // The same face triangulation on both sides: the wall between them is dropped.
-  const TriangleSurface alike =
-      weld(append(box, box, Eigen::Matrix3d::Identity(), Vec3(10, 0, 0), false));
-  ASSERT_GT(checkSurface(alike).nonManifoldEdges, 0);
-  const TetrahedralizeResult a = tetrahedralizeSurface(alike, edge(2.0));
-  EXPECT_EQ(a.mergedBodies, 1);
-  EXPECT_NEAR(a.meshVolume, 2000.0, 1e-6);
-  // A smaller box on top of the first, touching part of its top face: a union by CGAL.
   const TriangleSurface small = boxSurface(Vec3(5, 10, 5), 5.0);
-  const TriangleSurface partly =
-      weld(append(box, small, Eigen::Matrix3d::Identity(), Vec3(0, 0, 10), false));
-  ASSERT_GT(checkSurface(partly).nonManifoldEdges, 0);
-  const TetrahedralizeResult b = tetrahedralizeSurface(partly, edge(2.0));
-  EXPECT_EQ(b.mergedBodies, 1);
-  EXPECT_NEAR(b.meshVolume, 1250.0, 1e-6);
+  const struct {
+    const char* contact;
+    TriangleSurface surface;
+    double volume;
+  } cases[] = {
+      // The same face triangulation on both sides: the wall between them is dropped.
+      {"whole face, alike",
+       weld(append(box, box, Eigen::Matrix3d::Identity(), Vec3(10, 0, 0), false)), 2000.0},
+      // A smaller box on top of the first, touching part of its top face: a union by CGAL.
+      {"part of a face",
+       weld(append(box, small, Eigen::Matrix3d::Identity(), Vec3(0, 0, 10), false)), 1250.0},
+  };
+  for (const auto& c : cases) {
+    SCOPED_TRACE(c.contact);
+    ASSERT_GT(checkSurface(c.surface).nonManifoldEdges, 0);
+    const TetrahedralizeResult r = tetrahedralizeSurface(c.surface, edge(2.0));
+    EXPECT_EQ(r.mergedBodies, 1);
+    EXPECT_NEAR(r.meshVolume, c.volume, 1e-6);
+  }
 }
