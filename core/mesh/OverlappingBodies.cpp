@@ -284,17 +284,12 @@ int mergeTouchingBodies(TriangleSurface& surface) {
       uses[key(a, b)].emplace_back(t, a < b ? 1 : -1);
     }
   }
-  bool nonManifold = false;
+  // Non-manifold edges exist (checked above): bodies join across the others only.
   UnionFind bodies(nt);
   for (const auto& [edge, list] : uses) {
-    if (list.size() > 2) {
-      nonManifold = true;
-    } else if (list.size() == 2 && list[0].second != list[1].second) {
+    if (list.size() == 2 && list[0].second != list[1].second) {
       bodies.unite(list[0].first, list[1].first);
     }
-  }
-  if (!nonManifold) {
-    return 0;
   }
   // Every body closed: each of its edges used once in each direction by its own triangles.
   for (const auto& [edge, list] : uses) {
