@@ -37,13 +37,25 @@ private:
   std::once_flag built_;
 };
 
+/// A nozzle bound cut to the ball of radius r about c.
+struct WithinBall {
+  const NozzleBound& bound;
+  const Vec& c;
+  double r;
+  bool mayTouch(const Vec& centre, double radius) const {
+    return (centre - c).squaredNorm() <= (r + radius) * (r + radius) &&
+           bound.mayTouch(centre, radius);
+  }
+};
+
 }  // namespace
 
 CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
                                       const std::vector<Vec>& normals, const std::vector<int>& time,
                                       const NozzleModel& nozzle, int maxReported,
                                       const CollisionExemption* exemption,
-                                      const std::vector<char>* material, const BuildPlate* plate) {
+                                      const std::vector<char>* material, const BuildPlate* plate,
+                                      const std::vector<char>* checked) {
   const auto t0 = std::chrono::steady_clock::now();
   nozzle.validate();
   const size_t N = points.size();
@@ -57,6 +69,9 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
   }
   if (material && material->size() != N) {
     throw GeoLatticeError("collision verifier: the material mask needs one flag per point");
+  }
+  if (checked && checked->size() != N) {
+    throw GeoLatticeError("collision verifier: the station mask needs one flag per point");
   }
   std::vector<Vec> axis(N);
   for (size_t i = 0; i < N; ++i) {
@@ -135,9 +150,53 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
     volume.contains(points[k], axis[k], all[hit], &height, &radial);
   };
 
+  // Without an exemption the obstacle reported is the nearest to the tip of either kind, and its
+  // kind decides whether the station is a plate station. A nearest search through the whole
+  // tree costs as much again as the first search (a nozzle that reaches the plate holds
+  // thousands of its samples), so: the plate's nearest sample inside the nozzle, then whether
+  // any material inside lies as near. Returns whether `hit` is then the nearest obstacle (always
+  // when it is the plate's); a material hit is located later only if it is reported.
+  auto nearerOfTheKinds = [&](const NozzleBound& station, int k, int& hit, double& height,
+                              double& radial) {
+    const int plateHit =
+        plateSamples.empty()
+            ? -1
+            : plateOnly.get().nearestCandidate(station, points[k], time[k], -1, [&](int q) {
+                return volume.contains(points[k], axis[k], plateSamples[q]);
+              });
+    if (plateHit < 0) {
+      return false;  // material only
+    }
+    const double plateD2 = (plateSamples[plateHit] - points[k]).squaredNorm();
+    // Ties go to the lower index, the material's.
+    if (hit < static_cast<int>(N) && (all[hit] - points[k]).squaredNorm() <= plateD2) {
+      return false;
+    }
+    int material = -1;
+    tree.forEachCandidate(WithinBall{station, points[k], std::sqrt(plateD2)}, time[k], [&](int q) {
+      if (q < static_cast<int>(N) && (points[q] - points[k]).squaredNorm() <= plateD2 &&
+          volume.contains(points[k], axis[k], points[q])) {
+        material = q;
+      }
+      return material >= 0;
+    });
+    if (material >= 0) {
+      hit = material;
+      return false;
+    }
+    hit = static_cast<int>(N) + plateHit;
+    volume.contains(points[k], axis[k], all[hit], &height, &radial);
+    return true;
+  };
+
   // Stations in print-time order, so the reported violations are the first ones.
-  std::vector<int> stations(N);
-  std::iota(stations.begin(), stations.end(), 0);
+  std::vector<int> stations;
+  stations.reserve(N);
+  for (size_t i = 0; i < N; ++i) {
+    if (!checked || (*checked)[i]) {
+      stations.push_back(static_cast<int>(i));
+    }
+  }
   std::stable_sort(stations.begin(), stations.end(),
                    [&](int a, int b) { return time[a] < time[b]; });
 
@@ -148,14 +207,14 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
   struct Verdict {
     int station, hit;
     double height, radial;
-    bool unavoidable, onPlate;
+    bool unavoidable, onPlate, located;
   };
   constexpr size_t kChunk = 2048;
-  const size_t chunks = (N + kChunk - 1) / kChunk;
+  const size_t chunks = (stations.size() + kChunk - 1) / kChunk;
   std::vector<std::vector<Verdict>> verdicts(chunks);
   parallelFor(chunks, 0, [&](size_t c, int) {
     NozzleBound station = bound;
-    for (size_t i = c * kChunk; i < std::min(N, (c + 1) * kChunk); ++i) {
+    for (size_t i = c * kChunk; i < std::min(stations.size(), (c + 1) * kChunk); ++i) {
       const int k = stations[i];
       station.setStation(points[k], axis[k]);
       // hit: material some order could have kept out of the nozzle; exemptHit: material no
@@ -205,9 +264,10 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
         });
       }
       bool unavoidable = false;
+      bool located = true;  // hit is the obstacle nearest the tip (height, radial are its)
       if (hit >= 0) {
         if (!exemption) {  // one kind: material or plate
-          nearestOfItsKind(station, k, hit, height, radial, [](int) { return true; });
+          located = nearerOfTheKinds(station, k, hit, height, radial);
         } else {
           nearestOfItsKind(station, k, hit, height, radial, [&](int q) {
             return q < plateFirst &&
@@ -229,12 +289,12 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
       }
       if (hit >= 0) {
         const bool onPlate = hit >= plateFirst;
-        verdicts[c].push_back({k, hit, height, radial, unavoidable, onPlate});
+        verdicts[c].push_back({k, hit, height, radial, unavoidable, onPlate, located});
       }
     }
   });
-  for (const std::vector<Verdict>& chunk : verdicts) {
-    for (const Verdict& v : chunk) {
+  for (std::vector<Verdict>& chunk : verdicts) {
+    for (Verdict& v : chunk) {
       report.unavoidableStations += v.unavoidable;
       ++report.violatingStations;
       report.violatingStationIds.push_back(v.station);
@@ -244,6 +304,11 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
       }
       if (static_cast<int>(report.violations.size()) < maxReported) {
         const int k = v.station;
+        if (!v.located) {
+          NozzleBound station = bound;
+          station.setStation(points[k], axis[k]);
+          nearestOfItsKind(station, k, v.hit, v.height, v.radial, [](int) { return true; });
+        }
         const Vec obstacle = v.hit == static_cast<int>(all.size())
                                  ? Vec(points[k].x(), points[k].y(), 0.0)
                                  : all[v.hit];

@@ -69,13 +69,17 @@ struct VerifierOptions {
 /// tip lies inside the plate is one. With an exemption (a printing order to judge), no order
 /// avoids the plate, so its violations count as unavoidable (orderCollisionFree ignores them);
 /// without one the first obstacle found decides. The reported obstacle of a plate violation is
-/// the plate sample (obstacle index -1).
+/// the plate sample (obstacle index -1). checked (optional, one flag per point): only stations
+/// with a non-zero flag are searched, the others are known to be clear (a caller that has
+/// proved it, e.g. the orientation search from the sub-graphs' potential collisions); they are
+/// still obstacles and are still counted in `stations`.
 CollisionReport verifyNozzleClearance(const std::vector<Eigen::Vector3d>& points,
                                       const std::vector<Eigen::Vector3d>& normals,
                                       const std::vector<int>& time, const NozzleModel& nozzle,
                                       int maxReported = VerifierOptions{}.maxReported,
                                       const CollisionExemption* exemption = nullptr,
                                       const std::vector<char>* material = nullptr,
-                                      const BuildPlate* plate = nullptr);
+                                      const BuildPlate* plate = nullptr,
+                                      const std::vector<char>* checked = nullptr);
 
 }  // namespace geolattice

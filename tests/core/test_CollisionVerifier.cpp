@@ -339,3 +339,85 @@ TEST(CollisionVerifier, AnOrderIsJudgedPastThePlate) {
   EXPECT_EQ(r.unavoidableStations, 22);
   EXPECT_TRUE(r.orderCollisionFree);
 }
+
+// Without an order to judge, a station's obstacle is the plate's or the material's, whichever
+// lies nearest its tip (ties: the material), whatever the search finds first: against an all-pairs
+// check over the material and the plate's samples, on stations low over the plate with axes
+// tilted so that many nozzles hold both.
+TEST(CollisionVerifier, ThePlateOrTheMaterialNearestTheTipIsReported) {
+  std::srand(11);
+  auto rnd = [] {
+    return std::rand() / double(RAND_MAX);
+  };
+  std::vector<V> p, n;
+  std::vector<int> time;
+  for (int i = 0; i < 800; ++i) {
+    p.push_back(V(20 * rnd(), 20 * rnd(), 0.2 + 4 * rnd()));
+    const double tilt = 70 * M_PI / 180 * rnd(), turn = 2 * M_PI * rnd();
+    n.push_back(
+        V(std::sin(tilt) * std::cos(turn), std::sin(tilt) * std::sin(turn), std::cos(tilt)));
+    time.push_back(static_cast<int>(40 * rnd()));
+  }
+  const NozzleModel nozzle = cone(45);
+  const BuildPlate plate;
+  const std::vector<V> samples = buildPlateSamples(plate, p);
+  const CollisionReport r =
+      verifyNozzleClearance(p, n, time, nozzle, 100000, nullptr, nullptr, &plate);
+  const double c2 = 0.5;  // cos² 45°
+  auto inside = [&](size_t k, const V& x) {
+    const V d = x - p[k];
+    const double h = d.dot(n[k]);
+    return h > nozzle.tipClearance && d.norm() > nozzle.tipFaceRadius &&
+           h * h > d.squaredNorm() * c2;
+  };
+  long long colliding = 0, onPlate = 0;
+  std::vector<double> nearestD2(p.size(), -1);
+  std::vector<char> plateNearest(p.size(), 0);
+  for (size_t k = 0; k < p.size(); ++k) {
+    double material = std::numeric_limits<double>::infinity(), fromPlate = material;
+    for (size_t q = 0; q < p.size(); ++q) {
+      if (time[q] < time[k] && inside(k, p[q])) {
+        material = std::min(material, (p[q] - p[k]).squaredNorm());
+      }
+    }
+    for (const V& s : samples) {
+      if (inside(k, s)) {
+        fromPlate = std::min(fromPlate, (s - p[k]).squaredNorm());
+      }
+    }
+    if (std::isfinite(material) || std::isfinite(fromPlate)) {
+      ++colliding;
+      plateNearest[k] = fromPlate < material;
+      onPlate += plateNearest[k];
+      nearestD2[k] = std::min(material, fromPlate);
+    }
+  }
+  EXPECT_EQ(r.violatingStations, colliding);
+  EXPECT_EQ(r.plateStations, onPlate);
+  EXPECT_GT(onPlate, 0);
+  EXPECT_LT(onPlate, colliding);
+  ASSERT_EQ(static_cast<long long>(r.violations.size()), colliding);
+  for (const CollisionViolation& v : r.violations) {
+    EXPECT_EQ(v.obstacle == -1, static_cast<bool>(plateNearest[v.station])) << v.station;
+    EXPECT_NEAR((v.obstaclePoint - v.stationPoint).squaredNorm(), nearestD2[v.station], 1e-9);
+  }
+
+  // Stations left out of the search (known clear by the caller) are not searched, but are
+  // still counted as stations and are still obstacles.
+  std::vector<char> checked(p.size(), 1);
+  EXPECT_EQ(verifyNozzleClearance(p, n, time, nozzle, 0, nullptr, nullptr, &plate, &checked)
+                .violatingStations,
+            colliding);
+  for (int k : r.violatingStationIds) {
+    checked[k] = k % 2;
+  }
+  const CollisionReport some =
+      verifyNozzleClearance(p, n, time, nozzle, 0, nullptr, nullptr, &plate, &checked);
+  EXPECT_EQ(some.stations, static_cast<long long>(p.size()));
+  EXPECT_EQ(some.violatingStations,
+            std::count_if(r.violatingStationIds.begin(), r.violatingStationIds.end(),
+                          [](int k) { return k % 2 == 1; }));
+  checked.pop_back();
+  EXPECT_THROW(verifyNozzleClearance(p, n, time, nozzle, 0, nullptr, nullptr, &plate, &checked),
+               GeoLatticeError);
+}
