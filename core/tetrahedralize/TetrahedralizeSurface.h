@@ -26,8 +26,9 @@ struct TetrahedralizeOptions {
   /// counts (secant on log count vs log length) and TetGen runs again, at most
   /// kMaxAutoAttempts times in all; the run closest to the target is returned. A run at
   /// kSpeculativeEdgeFactor x the first edge is meshed beside the first run and read first:
-  /// within the tolerance it is the result, else it is the first correction of a count above
-  /// the tolerance (autoTargetTets <= kSpeculativeMaxTargetTets). (The count is
+  /// within the tolerance it is the result, above it the search goes on from it (the first run
+  /// is stopped), below it it is the first correction of a first run above the tolerance
+  /// (autoTargetTets <= kSpeculativeMaxTargetTets). (The count is
   /// not a function of the volume alone: the refinement near a finely triangulated surface adds
   /// tets that no volume bound removes, e.g. ~46k tets for the 3674-triangle bunny.)
   double targetEdgeLength = 0.0;
@@ -104,14 +105,15 @@ constexpr int kMaxAutoTargetTets = 5000000;
 constexpr int kMaxAutoAttempts = 4;
 /// The automatic search meshes a second, longer edge length (this times the first guess) beside
 /// its first run (started when the surface's intersection test is done) and reads it first: within the tolerance it is the result
-/// and the first run is killed unread; otherwise the first run is read, and the speculative run
-/// is the search's second run when the first gave too many tets. The first guess gives too many
+/// and the first run is killed unread; with too many tets the first run (finer still) is killed
+/// too and the search corrects from the speculative run; with too few the first run is read, and
+/// the speculative run is the search's second run when the first gave too many tets. The first guess gives too many
 /// on parts whose surface triangles drive the refinement: 1.1-2.1x the target on 10 of 15
 /// measured parts (bunny 80 mm 1.50x, spot 80 mm 1.61x, topopt 1.81x), too few only on the cube,
 /// the ring and a mug, whose first runs are the cheap ones. At 1.45x bunny, topopt and a
 /// generated wrench land within the 1.25x tolerance of 75k (1.35x left topopt at 105k, 1.4x at
-/// 91k, the count jumps there); spot's count stays near 93k over 4.5-5.3 mm and takes a third
-/// run. On knight, Y and three-branch (first runs within the tolerance) it gives 46k, 33k and
+/// 91k, the count jumps there); spot's count stays near 93k over 4.5-5.3 mm and takes a second
+/// run (7.14 mm, 81k tets). On knight, Y and three-branch (first runs within the tolerance) it gives 46k, 33k and
 /// 51k tets: below the tolerance, so the first run is read and used, as without it.
 constexpr double kSpeculativeEdgeFactor = 1.45;
 /// Above this target the speculative run is not started: two large TetGen runs at once would
