@@ -87,6 +87,9 @@ struct NozzleVolume {
         contactRadius2(m.printhead ? std::pow(m.printhead->faceRadius() + m.faceContact, 2) : 0.0),
         head(m.printhead.get()),
         headSlope(std::tan(m.printheadMarginRad)),
+        headMargin(std::atan(headSlope)),
+        cosHeadMargin(std::cos(headMargin)),
+        sinHeadMargin(std::sin(headMargin)),
         coneAngle(m.printhead ? 0.0 : m.boundingHalfAngleRad()) {
     if (head) {
       length = -std::numeric_limits<double>::infinity();  // never the cone branch
@@ -146,16 +149,29 @@ struct NozzleVolume {
   /// puts the point outside (cone: NA, with a holder the bounding angle max(NA, atan(R / L));
   /// printhead: its tabulated clear angle, plus the margin).
   double clearAngleAt(double rho) const {
-    return head ? head->clearAngleAt(rho) + std::atan(headSlope) : coneAngle;
+    return head ? head->clearAngleAt(rho) + headMargin : coneAngle;
   }
   /// The largest clearAngleAt over distances in [rho0, rho1].
   double maxClearAngleBetween(double rho0, double rho1) const {
-    return head ? head->maxClearAngleBetween(rho0, rho1) + std::atan(headSlope) : coneAngle;
+    return head ? head->maxClearAngleBetween(rho0, rho1) + headMargin : coneAngle;
+  }
+  /// Its cosine, without trigonometry for a printhead (-1 when it reaches π).
+  double cosMaxClearAngleBetween(double rho0, double rho1) const {
+    if (!head) {
+      return std::cos(coneAngle);
+    }
+    const double c = head->cosMaxClearAngleBetween(rho0, rho1);
+    const double s = std::sqrt(std::max(0.0, 1.0 - c * c));  // the angle is in [0, π]
+    if (c < -cosHeadMargin) {
+      return -1.0;  // angle + margin >= π
+    }
+    return c * cosHeadMargin - s * sinHeadMargin;  // cos(angle + margin)
   }
 
   double cos2, length, holder2, top, clearance, face2, contact, contactRadius2;
   const Printhead* head;  ///< owned by the NozzleModel this volume was made from
   double headSlope;
+  double headMargin, cosHeadMargin, sinHeadMargin;  ///< atan(headSlope): the margin as an angle
   double coneAngle;  ///< the parametric model's bounding half-angle (rad)
 };
 

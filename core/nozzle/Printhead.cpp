@@ -169,6 +169,11 @@ Printhead::Printhead(const TriangleSurface& mesh, const std::string& name) : nam
     }
   }
   clearAngleMax_ = RangeMax(clearAngle_);
+  std::vector<double> negCos(clearAngle_.size());
+  for (size_t j = 0; j < negCos.size(); ++j) {
+    negCos[j] = -std::cos(clearAngle_[j]);
+  }
+  negCosClearMax_ = RangeMax(negCos);
 }
 
 double Printhead::maxClearAngleBetween(double rho0, double rho1) const {

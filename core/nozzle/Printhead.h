@@ -86,6 +86,16 @@ public:
   double clearAngleAt(double rho) const;
   /// The largest clear angle over distances in [rho0, rho1] (rad); 0 for an empty range.
   double maxClearAngleBetween(double rho0, double rho1) const;
+  /// Its cosine, without trigonometry (inline: the sequencer's pair search tests every node
+  /// pair with it); 1 for an empty range.
+  double cosMaxClearAngleBetween(double rho0, double rho1) const {
+    rho0 = std::max(rho0, 0.0);
+    rho1 = std::min(rho1, reach_);
+    if (!(rho0 <= rho1)) {
+      return 1.0;
+    }
+    return -negCosClearMax_(static_cast<int>(rho0 / angleBin_), static_cast<int>(rho1 / angleBin_));
+  }
 
 private:
   std::string name_;
@@ -98,6 +108,7 @@ private:
   double angleBin_ = 0;
   std::vector<double> clearAngle_;  ///< per distance bin
   RangeMax clearAngleMax_;
+  RangeMax negCosClearMax_;  ///< of -cos(clear angle): the cosine of the largest, negated
 };
 
 }  // namespace geolattice

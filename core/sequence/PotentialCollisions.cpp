@@ -24,7 +24,8 @@ struct SampleTree {
     double radius = 0;
     Vec3 axis = Vec3::UnitZ();
     double spread = 0;
-    double axisSlack = 0;             ///< 2 sin(spread / 2): |n - axis| for every axis n below
+    double axisSlack = 0;  ///< 2 sin(spread / 2): |n - axis| for every axis n below
+    double cosSpread = -1, sinSpread = 0;
     double coneSin = 0, coneCos = 1;  ///< of the bounding angle + spread (set per search)
     int begin = 0, end = 0;
     int left = -1, right = -1;
@@ -71,6 +72,8 @@ int buildNode(SampleTree& tree, const MaterialSamples& m, int begin, int end) {
   n.axis = axis;
   n.spread = axisNorm > 0 ? std::acos(std::clamp(minCos, -1.0, 1.0)) + 1e-12 : M_PI;
   n.axisSlack = 2 * std::sin(0.5 * std::min(n.spread, M_PI));
+  n.cosSpread = std::cos(std::min(n.spread, M_PI));
+  n.sinSpread = std::sin(std::min(n.spread, M_PI));
   n.begin = begin;
   n.end = end;
   n.left = left;
@@ -144,7 +147,23 @@ struct PairSearch {
       if (h + slack <= clearance || dn > a.radius + b.radius + reach) {
         continue;
       }
-      if (!nozzle.mayContainBall(h, std::sqrt(std::max(0.0, dn * dn - h * h)), slack)) {
+      const double rc = std::sqrt(std::max(0.0, dn * dn - h * h));
+      if (nozzle.head && a.cosSpread > 0 && dn > a.radius + b.radius && dn > 0) {
+        // The printhead's clear angle by distance from the tip: every point of B seen from every
+        // station of A lies at least θ - σ - δ off the station's axis (θ: d off the mean axis, σ:
+        // the axes' spread, δ = asin((ρa + ρb) / |d|)) and at |d| ± (ρa + ρb) from its tip.
+        // In cosines and sines (no trigonometry on this path).
+        const double rab = a.radius + b.radius;
+        const double sd = rab / dn, cd = std::sqrt(1.0 - sd * sd);
+        const double cphi = a.cosSpread * cd - a.sinSpread * sd;  // φ = σ + δ < π
+        const double sphi = a.sinSpread * cd + a.cosSpread * sd;
+        const double u = h / dn, v = rc / dn;  // cos θ, sin θ
+        if (v * cphi - u * sphi > 0 &&         // θ - φ > 0
+            u * cphi + v * sphi < nozzle.cosMaxClearAngleBetween(dn - rab, dn + rab)) {
+          continue;  // θ - φ beyond the clear angle at those distances
+        }
+      }
+      if (!nozzle.mayContainBall(h, rc, slack)) {
         continue;  // outside the printhead's profile
       }
       // The bounding cone's apexes (apexOffset below each tip) lie within a.radius +

@@ -280,21 +280,87 @@ TEST(Printhead, VerifierAndPotentialCollisionsMatchBruteForce) {
     }
   }
   m.offset.push_back(static_cast<int>(m.points.size()));
-  const PotentialCollisions pcg = computePotentialCollisions(m, model, 2);
-  long long pairs = 0;
-  for (int i = 0; i < groups; ++i) {
-    for (int j = 0; j < groups; ++j) {
-      bool hit = false;
-      for (int s = m.offset[i]; s < m.offset[i + 1] && !hit && i != j; ++s) {
-        for (int q = m.offset[j]; q < m.offset[j + 1] && !hit; ++q) {
-          hit = volume.contains(m.points[s], m.normals[s], m.points[q]);
+  // As planned and widened by a margin (the clear-angle test adds it as an angle).
+  for (double margin : {0.0, 3.0}) {
+    const NozzleModel widened = model.widened(margin);
+    const NozzleVolume wide(widened);
+    const PotentialCollisions pcg = computePotentialCollisions(m, widened, 2);
+    long long pairs = 0;
+    for (int i = 0; i < groups; ++i) {
+      for (int j = 0; j < groups; ++j) {
+        bool hit = false;
+        for (int s = m.offset[i]; s < m.offset[i + 1] && !hit && i != j; ++s) {
+          for (int q = m.offset[j]; q < m.offset[j + 1] && !hit; ++q) {
+            hit = wide.contains(m.points[s], m.normals[s], m.points[q]);
+          }
         }
+        EXPECT_EQ(hit, std::binary_search(pcg.pcg[i].begin(), pcg.pcg[i].end(), j))
+            << i << " " << j << " margin " << margin;
+        pairs += hit;
       }
-      EXPECT_EQ(hit, std::binary_search(pcg.pcg[i].begin(), pcg.pcg[i].end(), j)) << i << " " << j;
-      pairs += hit;
+    }
+    EXPECT_GT(pairs, 0);
+  }
+}
+
+TEST(Printhead, PotentialCollisionsOfSmallSubgraphsMatchBruteForce) {
+  // Sub-graphs of two samples 0.5-2 mm apart with axes up to 40° apart: each pair's verdict
+  // hangs on one or two points, so a node test that rejects a ball reaching into the printhead
+  // (the profile, the clear angle, the bounding cone) shows as a missing pair.
+  const auto head = std::make_shared<const Printhead>(slimHead(48), "slim");
+  NozzleModel model;
+  model.printhead = head;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(0, 1);
+  MaterialSamples m;
+  const int groups = 250;
+  for (int g = 0; g < groups; ++g) {
+    m.offset.push_back(static_cast<int>(m.points.size()));
+    const Vec3 at(30 * u(rng), 30 * u(rng), 30 * u(rng));
+    for (int k = 0; k < 2; ++k) {
+      m.points.push_back(at + (0.5 + 1.5 * u(rng)) * k * Vec3(1, u(rng), u(rng)).normalized());
+      m.normals.push_back(Vec3(0.8 * u(rng) - 0.4, 0.8 * u(rng) - 0.4, 1.0).normalized());
     }
   }
-  EXPECT_GT(pairs, 0);
+  m.offset.push_back(static_cast<int>(m.points.size()));
+  for (double margin : {0.0, 3.0}) {
+    const NozzleModel widened = model.widened(margin);
+    const NozzleVolume wide(widened);
+    const PotentialCollisions pcg = computePotentialCollisions(m, widened, 2);
+    long long pairs = 0;
+    for (int i = 0; i < groups; ++i) {
+      for (int j = 0; j < groups; ++j) {
+        bool hit = false;
+        for (int s = m.offset[i]; s < m.offset[i + 1] && !hit && i != j; ++s) {
+          for (int q = m.offset[j]; q < m.offset[j + 1] && !hit; ++q) {
+            hit = wide.contains(m.points[s], m.normals[s], m.points[q]);
+          }
+        }
+        EXPECT_EQ(hit, std::binary_search(pcg.pcg[i].begin(), pcg.pcg[i].end(), j))
+            << i << " " << j << " margin " << margin;
+        pairs += hit;
+      }
+    }
+    EXPECT_GT(pairs, 100);
+  }
+}
+
+TEST(Printhead, TheClearAnglesCosineIsTheCosineOfTheClearAngle) {
+  const auto head = std::make_shared<const Printhead>(slimHead(48), "slim");
+  NozzleModel model;
+  model.printhead = head;
+  for (double margin : {0.0, 3.0, 60.0}) {
+    const NozzleVolume volume(model.widened(margin));
+    for (double rho0 : {0.0, 0.3, 1.0, 5.0, 20.0, 47.0}) {
+      for (double width : {0.0, 0.5, 4.0, 30.0}) {
+        const double angle = volume.maxClearAngleBetween(rho0, rho0 + width);
+        EXPECT_NEAR(volume.cosMaxClearAngleBetween(rho0, rho0 + width),
+                    angle >= M_PI ? -1.0 : std::cos(angle), 1e-12)
+            << rho0 << " " << width << " margin " << margin;
+      }
+    }
+  }
+  EXPECT_EQ(head->cosMaxClearAngleBetween(5.0, 1.0), 1.0);  // an empty range: no angle
 }
 
 TEST(Printhead, BadMeshesAreRefusedWithTheReason) {
