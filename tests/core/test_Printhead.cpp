@@ -58,6 +58,13 @@ TriangleSurface slimHead(int n = 96) {
                          n);
 }
 
+/// The nozzle model of the slim printhead of slimHead(48).
+NozzleModel slimPrintheadModel() {
+  NozzleModel model;
+  model.printhead = std::make_shared<const Printhead>(slimHead(48), "slim");
+  return model;
+}
+
 /// The analytic radius of slimHead's round solid at height h (the largest at a step).
 double slimRadius(double h) {
   const double coneTop = 1.5 / std::tan(40 * M_PI / 180);
@@ -210,9 +217,7 @@ TEST(Printhead, TheShippedSlimPrintheadIsValid) {
 }
 
 TEST(Printhead, BoundsNeverRejectABallThatReachesInside) {
-  const auto head = std::make_shared<const Printhead>(slimHead(48), "slim");
-  NozzleModel model;
-  model.printhead = head;
+  const NozzleModel model = slimPrintheadModel();
   for (double margin : {0.0, 2.0}) {
     const NozzleModel m = model.widened(margin);
     const NozzleVolume volume(m);
@@ -238,10 +243,40 @@ TEST(Printhead, BoundsNeverRejectABallThatReachesInside) {
   }
 }
 
+namespace {
+
+/// j in PCG(i) iff some station of sub-graph i has a sample of j inside the printhead, as
+/// planned and widened by a margin (the clear-angle test adds it as an angle); at least
+/// `leastPairs` such pairs.
+void expectPotentialCollisionsMatchBruteForce(const MaterialSamples& m, const NozzleModel& model,
+                                              long long leastPairs) {
+  const int groups = static_cast<int>(m.offset.size()) - 1;
+  for (double margin : {0.0, 3.0}) {
+    const NozzleModel widened = model.widened(margin);
+    const NozzleVolume wide(widened);
+    const PotentialCollisions pcg = computePotentialCollisions(m, widened, 2);
+    long long pairs = 0;
+    for (int i = 0; i < groups; ++i) {
+      for (int j = 0; j < groups; ++j) {
+        bool hit = false;
+        for (int s = m.offset[i]; s < m.offset[i + 1] && !hit && i != j; ++s) {
+          for (int q = m.offset[j]; q < m.offset[j + 1] && !hit; ++q) {
+            hit = wide.contains(m.points[s], m.normals[s], m.points[q]);
+          }
+        }
+        EXPECT_EQ(hit, std::binary_search(pcg.pcg[i].begin(), pcg.pcg[i].end(), j))
+            << i << " " << j << " margin " << margin;
+        pairs += hit;
+      }
+    }
+    EXPECT_GE(pairs, leastPairs);
+  }
+}
+
+}  // namespace
+
 TEST(Printhead, VerifierAndPotentialCollisionsMatchBruteForce) {
-  const auto head = std::make_shared<const Printhead>(slimHead(48), "slim");
-  NozzleModel model;
-  model.printhead = head;
+  const NozzleModel model = slimPrintheadModel();
   std::mt19937 rng(9);
   std::uniform_real_distribution<double> u(0, 1);
   std::vector<Vec3> p, n;
@@ -280,36 +315,14 @@ TEST(Printhead, VerifierAndPotentialCollisionsMatchBruteForce) {
     }
   }
   m.offset.push_back(static_cast<int>(m.points.size()));
-  // As planned and widened by a margin (the clear-angle test adds it as an angle).
-  for (double margin : {0.0, 3.0}) {
-    const NozzleModel widened = model.widened(margin);
-    const NozzleVolume wide(widened);
-    const PotentialCollisions pcg = computePotentialCollisions(m, widened, 2);
-    long long pairs = 0;
-    for (int i = 0; i < groups; ++i) {
-      for (int j = 0; j < groups; ++j) {
-        bool hit = false;
-        for (int s = m.offset[i]; s < m.offset[i + 1] && !hit && i != j; ++s) {
-          for (int q = m.offset[j]; q < m.offset[j + 1] && !hit; ++q) {
-            hit = wide.contains(m.points[s], m.normals[s], m.points[q]);
-          }
-        }
-        EXPECT_EQ(hit, std::binary_search(pcg.pcg[i].begin(), pcg.pcg[i].end(), j))
-            << i << " " << j << " margin " << margin;
-        pairs += hit;
-      }
-    }
-    EXPECT_GT(pairs, 0);
-  }
+  expectPotentialCollisionsMatchBruteForce(m, model, 1);
 }
 
 TEST(Printhead, PotentialCollisionsOfSmallSubgraphsMatchBruteForce) {
   // Sub-graphs of two samples 0.5-2 mm apart with axes up to 40° apart: each pair's verdict
   // hangs on one or two points, so a node test that rejects a ball reaching into the printhead
   // (the profile, the clear angle, the bounding cone) shows as a missing pair.
-  const auto head = std::make_shared<const Printhead>(slimHead(48), "slim");
-  NozzleModel model;
-  model.printhead = head;
+  const NozzleModel model = slimPrintheadModel();
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0, 1);
   MaterialSamples m;
@@ -323,26 +336,7 @@ TEST(Printhead, PotentialCollisionsOfSmallSubgraphsMatchBruteForce) {
     }
   }
   m.offset.push_back(static_cast<int>(m.points.size()));
-  for (double margin : {0.0, 3.0}) {
-    const NozzleModel widened = model.widened(margin);
-    const NozzleVolume wide(widened);
-    const PotentialCollisions pcg = computePotentialCollisions(m, widened, 2);
-    long long pairs = 0;
-    for (int i = 0; i < groups; ++i) {
-      for (int j = 0; j < groups; ++j) {
-        bool hit = false;
-        for (int s = m.offset[i]; s < m.offset[i + 1] && !hit && i != j; ++s) {
-          for (int q = m.offset[j]; q < m.offset[j + 1] && !hit; ++q) {
-            hit = wide.contains(m.points[s], m.normals[s], m.points[q]);
-          }
-        }
-        EXPECT_EQ(hit, std::binary_search(pcg.pcg[i].begin(), pcg.pcg[i].end(), j))
-            << i << " " << j << " margin " << margin;
-        pairs += hit;
-      }
-    }
-    EXPECT_GT(pairs, 100);
-  }
+  expectPotentialCollisionsMatchBruteForce(m, model, 100);
 }
 
 TEST(Printhead, TheClearAnglesCosineIsTheCosineOfTheClearAngle) {
