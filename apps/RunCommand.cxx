@@ -7,6 +7,7 @@
 #include "OutputFiles.h"
 #include "OrientationCsv.h"
 #include "SequenceCsv.h"
+#include "SetUpTriesReport.h"
 #include "StageReports.h"
 #include "ToolpathOutput.h"
 
@@ -310,43 +311,8 @@ private:
     };
     const GLPrintPipeline::SetUpTries tries = P.FindAPrintableSetUp(runAgain, listener);
 
-    if (!tries.orientations.empty()) {
-      Json list = Json::array();
-      for (const auto& t : tries.orientations) {
-        list.push_back({{"rank", t.rank},
-                        {"ok", t.ok},
-                        {"colliding_stations", t.colliding},
-                        {"stations", t.stations},
-                        {"pedestal_mm", t.pedestal},
-                        {"seconds", t.seconds}});
-      }
-      Json& orient = this->Section("orient");
-      orient["tries"] = list;
-      orient["chosen_rank"] = P.Orientation->GetCandidateRank();
-    }
-    if (tries.pedestals.size() > 1) {
-      Json list = Json::array();
-      for (const auto& t : tries.pedestals) {
-        list.push_back({{"height_mm", t.height},
-                        {"ok", t.ok},
-                        {"colliding_stations", t.colliding},
-                        {"plate_stations", t.plate},
-                        {"stations", t.stations},
-                        {"seconds", t.seconds}});
-      }
-      this->Section("orient")["pedestal_tries"] = list;
-    }
-    if (tries.orders.size() > 1) {
-      Json list = Json::array();
-      for (const auto& t : tries.orders) {
-        list.push_back({{"strategy", orderName(t.strategy)},
-                        {"ok", t.ok},
-                        {"colliding_stations", t.colliding},
-                        {"stations", t.stations},
-                        {"seconds", t.seconds}});
-      }
-      this->Section("sequence")["order_tries"] = list;
-    }
+    reportSetUpTries(tries, P.Orientation->GetCandidateRank(),
+                     [this](const char* name) -> Json& { return this->Section(name); });
   }
   bool BaseConsidered = false;
 
