@@ -1,6 +1,7 @@
 #include "RunCommand.h"
 #include "RunSession.h"
 
+#include "BaseContactReport.h"
 #include "CliOptions.h"
 #include "ErrorCapture.h"
 #include "Interrupt.h"
@@ -13,10 +14,8 @@
 
 #include "GLPrintPipeline.h"
 #include "common/Error.h"
-#include "orient/AutoOrient.h"
 #include "sequence/PrintSequencer.h"
 #include "vtkGLArrayNames.h"
-#include "vtkGLMeshConversion.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -182,7 +181,7 @@ private:
     this->Write(layers, "layers.vtp");
     vtkDataObject* surface = this->Update("overhang", P.OverhangAnalysis);
     reportOverhang(surface, this->Section("overhang"));
-    this->WarnOfASmallBase(surface);
+    this->SmallBaseWarning = reportBaseContact(P, surface, this->Section("overhang"));
     this->Write(surface, "overhang.vtp");
     if (R.until == "layers") {
       return kExitOk;
@@ -318,38 +317,10 @@ private:
   }
   bool BaseConsidered = false;
 
-  /// The part's contact with the plate below --min-base-area (what --orient auto asks of a
-  /// side): it may come loose while printing. Said in report.json overhang.small_base and, when
-  /// the run ends without an error (whose one line stays alone), on stderr (even with -q: it is
-  /// about the part); the run goes on (the user placed it so).
-  /// The contact is measured as the orientation search measures a side's (baseContactArea:
-  /// faces facing down within OrientOptions::contactHeight of the lowest point) on the surface
-  /// that is meshed, so that --orient auto never warns of the side it chose (topopt as placed:
-  /// 10.8 mm^2 so, 0 mm^2 of faces on the base vertices the layers grow from, 0.05 mm). A tet
-  /// mesh input has no such surface: its base faces (the overhang analysis's) then.
-  void WarnOfASmallBase(vtkDataObject* surface) {
-    double area = fieldValue(surface, arrays::OverhangBaseArea);
-    if (!P.GetTetMeshInput()) {
-      if (auto* meshed = vtkPolyData::SafeDownCast(P.Pedestal->GetOutputDataObject(0))) {
-        area = baseContactArea(toTriangleSurface(meshed), Eigen::Matrix3d::Identity(),
-                               OrientOptions{}.contactHeight);
-      }
-    }
-    const double least = P.Orientation->GetMinBaseArea();
-    Json& overhang = this->Section("overhang");
-    overhang["base_contact_mm2"] = area;
-    overhang["small_base"] = area < least;
-    if (area < least) {
-      std::ostringstream w;
-      w << "geolattice: warning: the part touches the plate on " << area
-        << " mm^2 only (less than --min-base-area " << least
-        << " mm^2): it may come loose while printing; --orient auto looks for a side with more "
-           "contact\n";
-      this->SmallBaseWarning = w.str();  // the last pass's (other orientations may run)
-    } else {
-      this->SmallBaseWarning.clear();
-    }
-  }
+  /// The part's contact below --min-base-area (BaseContactReport.h): said in report.json and,
+  /// when the run ends without an error (whose one line stays alone), on stderr (even with -q: it
+  /// is about the part); the run goes on (the user placed it so). The last pass's (other
+  /// orientations may run).
   std::string SmallBaseWarning;
 
   /// Checks the parameters of every stage the run will reach before the first one runs: VTK's
