@@ -62,6 +62,13 @@ struct Evaluation {
   double sampleSpacing;  ///< material samples of the collision check (mm)
 };
 
+/// Does the nozzle's bounding cone (nozzle/NozzleBound.h), its tip at height z and its axis
+/// `tilt` (rad) off +z, lie wholly above the plate's top face (z = 0)?
+bool boundingConeAbovePlate(const NozzleModel& nozzle, double z, double tilt) {
+  return tilt + nozzle.boundingHalfAngleRad() <= M_PI / 2 &&
+         z - nozzle.boundingApexOffset() * std::cos(tilt) >= 0;
+}
+
 /// The stations the verifier has to search: those of a sub-graph with a blocker printed before
 /// it, and those whose nozzle may reach the plate. The others are clear: the potential-collision
 /// graph holds j in pcg[i] exactly when some station of i has material of j inside its nozzle (the
@@ -78,18 +85,12 @@ std::vector<char> stationsThatMayCollide(const MaterialSamples& material,
       blocked[i] |= sequence.printIndex[j] < sequence.printIndex[i];
     }
   }
-  const double spread = o.nozzle.boundingHalfAngleRad();
-  const double apexBelowTip = o.nozzle.boundingApexOffset();
   std::vector<char> checked(material.points.size(), 0);
   for (size_t s = 0; s < checked.size(); ++s) {
-    if (blocked[material.subgraph[s]]) {
-      checked[s] = 1;
-      continue;
-    }
-    const Vec3 n = material.normals[s].normalized();
-    const double tilt = std::acos(std::clamp(n.z(), -1.0, 1.0));
-    checked[s] = o.plate.enabled &&
-                 (tilt + spread >= M_PI / 2 || material.points[s].z() - apexBelowTip * n.z() <= 0);
+    const double tilt = std::acos(std::clamp(material.normals[s].normalized().z(), -1.0, 1.0));
+    checked[s] =
+        blocked[material.subgraph[s]] ||
+        (o.plate.enabled && !boundingConeAbovePlate(o.nozzle, material.points[s].z(), tilt));
   }
   return checked;
 }
@@ -208,13 +209,10 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
   long long liftedOffPlate = 0;
   if (c.source == "keep" && c.pedestal == 0) {
     const double maxTilt = o.maxTiltDeg * kDeg;
-    const double spread = o.nozzle.boundingHalfAngleRad();
-    const double apexBelowTip = o.nozzle.boundingApexOffset();
     for (int k : report.plateStationIds) {
       const Vec3 n = material.normals[k].normalized();
       const double tilted = std::max(0.0, std::acos(std::clamp(n.z(), -1.0, 1.0)) - maxTilt);
-      liftedOffPlate += tilted + spread <= M_PI / 2 &&
-                        material.points[k].z() - apexBelowTip * std::cos(tilted) >= 0;
+      liftedOffPlate += boundingConeAbovePlate(o.nozzle, material.points[k].z(), tilted);
     }
   }
   c.tiltClearedPlateStations = liftedOffPlate;

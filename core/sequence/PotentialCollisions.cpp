@@ -148,12 +148,12 @@ struct PairSearch {
         continue;
       }
       const double rc = std::sqrt(std::max(0.0, dn * dn - h * h));
-      if (nozzle.head && a.cosSpread > 0 && dn > a.radius + b.radius && dn > 0) {
+      const double rab = a.radius + b.radius;
+      if (nozzle.head && a.cosSpread > 0 && dn > rab) {
         // The printhead's clear angle by distance from the tip: every point of B seen from every
         // station of A lies at least θ - σ - δ off the station's axis (θ: d off the mean axis, σ:
         // the axes' spread, δ = asin((ρa + ρb) / |d|)) and at |d| ± (ρa + ρb) from its tip.
         // In cosines and sines (no trigonometry on this path).
-        const double rab = a.radius + b.radius;
         const double sd = rab / dn, cd = std::sqrt(1.0 - sd * sd);
         const double cphi = a.cosSpread * cd - a.sinSpread * sd;  // φ = σ + δ < π
         const double sphi = a.sinSpread * cd + a.cosSpread * sd;
