@@ -157,12 +157,21 @@ private:
         static_cast<int>(fieldValue(tets, arrays::MergedBodies) +
                          fieldValue(P.Orientation->GetOutputDataObject(0), arrays::MergedBodies));
     this->Section("mesh")["merged_bodies"] = merged;
+    const int duplicates = static_cast<int>(
+        fieldValue(tets, arrays::DuplicateTriangles) +
+        fieldValue(P.Orientation->GetOutputDataObject(0), arrays::DuplicateTriangles));
+    this->Section("mesh")["duplicate_triangles"] = duplicates;
+    // The part printed is not the surface as given: always said, even with -q.
     if (merged > 0) {
-      // The part printed is not the surface as given: always said, even with -q.
       std::cerr
           << "geolattice: note: bodies of the surface touch or cross each other; meshed as their "
              "union ("
           << merged << " fewer bodies, report.json mesh.merged_bodies)\n";
+    }
+    if (duplicates > 0) {
+      std::cerr << "geolattice: note: " << duplicates
+                << " triangles of the surface repeat another one (the same face twice); meshed "
+                   "without the copies (report.json mesh.duplicate_triangles)\n";
     }
     this->Write(tets, "tets.vtu");
     if (R.until == "mesh") {

@@ -81,6 +81,8 @@ constexpr const char* SimplificationEdgeLength =
 constexpr const char* SimplificationRefused = "SimplificationRefused";
 /// Bodies merged into another one they cross (core/mesh/OverlappingBodies.h), 1 value.
 constexpr const char* MergedBodies = "MergedBodies";
+/// Triangles dropped as copies of another one (core dropDuplicateTriangles), 1 value.
+constexpr const char* DuplicateTriangles = "DuplicateTriangles";
 /// Closed inner cavities of the solid (TetGen regions outside the surface, removed), 1 value.
 constexpr const char* CavityRegions = "CavityRegions";
 constexpr const char* TetGenRuns = "TetGenRuns";  ///< TetGen runs (edge search and retries)

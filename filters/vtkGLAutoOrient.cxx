@@ -204,8 +204,9 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::TriangleSurface surface = gl::toTriangleSurface(input);
     // Bodies the reader welded where they touch along a face: one solid before it is turned (a
     // union of faces that are coplanar as read; turned, they may not be exactly).
-    const int mergedBodies = gl::mergeTouchingBodies(surface);
-    const bool merged = mergedBodies > 0;
+    int duplicates = 0;
+    const int mergedBodies = gl::mergeTouchingBodies(surface, &duplicates);
+    const bool merged = mergedBodies > 0 || duplicates > 0;
     if (!this->Cache || this->Cache->filterTime != this->GetMTime() ||
         this->Cache->inputTime != input->GetMTime()) {
       this->Cache.reset();
@@ -264,6 +265,7 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::addFieldArray(fd, gl::arrays::OrientPedestalHeight, {chosen.pedestal});
     if (merged) {  // as GL Tetrahedralize Surface says it
       gl::addFieldArray(fd, gl::arrays::MergedBodies, {static_cast<double>(mergedBodies)});
+      gl::addFieldArray(fd, gl::arrays::DuplicateTriangles, {static_cast<double>(duplicates)});
     }
     gl::addFieldArray(fd, gl::arrays::OrientPedestalContactHeight, {options.pedestalContactHeight});
     output->SetFieldData(fd);

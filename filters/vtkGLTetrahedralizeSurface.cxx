@@ -180,10 +180,16 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::TetGenSurfaceBoundCount, result.surfaceBoundCount ? 1.0 : 0.0);
     addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
     addValue(fd, gl::arrays::MergedBodies, static_cast<double>(result.mergedBodies));
+    addValue(fd, gl::arrays::DuplicateTriangles, static_cast<double>(result.duplicateTriangles));
     addValue(fd, gl::arrays::CavityRegions, static_cast<double>(result.removedCavityRegions));
     if (result.mergedBodies > 0) {
       vtkWarningMacro(<< "bodies of the surface touch or cross each other; meshed as their union ("
                       << result.mergedBodies << " fewer bodies)");
+    }
+    if (result.duplicateTriangles > 0) {
+      vtkWarningMacro(<< result.duplicateTriangles
+                      << " triangles of the surface repeat another one (the same face twice); "
+                         "meshed without the copies");
     }
     if (!result.simplificationRefused.empty() && !result.simplified) {
       vtkWarningMacro(<< "the simplified surface was not used (" << result.simplificationRefused

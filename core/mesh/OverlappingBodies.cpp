@@ -17,6 +17,7 @@
 #include <map>
 #include <string>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -174,6 +175,14 @@ OverlappingBodiesResult mergeOverlappingBodies(TriangleSurface& surface) {
 
 namespace {
 
+/// The cyclic order of a triangle's vertices: true when, from its smallest vertex id, the next
+/// id is the smaller of the other two. Two triangles on the same vertices run the same way
+/// exactly when their parities are equal.
+bool cyclicParity(const std::array<int, 3>& t) {
+  const int first = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
+  return t[(first + 1) % 3] < t[(first + 2) % 3];
+}
+
 /// Drops the walls between bodies that touch along identically triangulated faces: pairs of
 /// triangles on the same three vertices in opposite directions. Returns the wall patches
 /// (connected sets of dropped pairs: one per contact), 0 when there is none.
@@ -184,10 +193,6 @@ int dropInnerWalls(TriangleSurface& surface) {
     std::sort(sorted.begin(), sorted.end());
     byVertices[sorted].push_back(t);
   }
-  auto parity = [](const std::array<int, 3>& t) {  // the cyclic order of the triangle
-    const int first = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
-    return t[(first + 1) % 3] < t[(first + 2) % 3];
-  };
   std::map<std::pair<int, int>, int> uses;  // undirected edge -> triangles on it
   for (const auto& t : surface.triangles) {
     for (int k = 0; k < 3; ++k) {
@@ -209,7 +214,7 @@ int dropInnerWalls(TriangleSurface& surface) {
   std::vector<int> walls;  // one triangle of each dropped pair
   for (const auto& [vertices, list] : byVertices) {
     if (list.size() == 2 && !sheet(surface.triangles[list[0]]) &&
-        parity(surface.triangles[list[0]]) != parity(surface.triangles[list[1]])) {
+        cyclicParity(surface.triangles[list[0]]) != cyclicParity(surface.triangles[list[1]])) {
       dropped[list[0]] = dropped[list[1]] = 1;
       walls.push_back(list[0]);
     }
@@ -256,7 +261,41 @@ int dropInnerWalls(TriangleSurface& surface) {
 
 }  // namespace
 
-int mergeTouchingBodies(TriangleSurface& surface) {
+int dropDuplicateTriangles(TriangleSurface& surface) {
+  // A triangle's key: its sorted vertices, the last one complemented when it runs the other way.
+  struct KeyHash {
+    size_t operator()(const std::array<int, 3>& k) const {
+      const std::hash<int> h;
+      return (h(k[0]) * 0x9E3779B97F4A7C15ULL) ^ (h(k[1]) * 0xC2B2AE3D27D4EB4FULL) ^ h(k[2]);
+    }
+  };
+  std::unordered_set<std::array<int, 3>, KeyHash> seen;
+  seen.reserve(surface.triangles.size());
+  std::vector<std::array<int, 3>> kept;
+  kept.reserve(surface.triangles.size());
+  for (const std::array<int, 3>& t : surface.triangles) {
+    std::array<int, 3> key = t;
+    std::sort(key.begin(), key.end());
+    if (!cyclicParity(t)) {
+      key[2] = ~key[2];
+    }
+    if (seen.insert(key).second) {
+      kept.push_back(t);
+    }
+  }
+  const int dropped = static_cast<int>(surface.triangles.size() - kept.size());
+  if (dropped > 0) {
+    surface.triangles = std::move(kept);
+  }
+  return dropped;
+}
+
+int mergeTouchingBodies(TriangleSurface& surface, int* duplicates) {
+  // A face written twice (the same vertices, the same way round) is one face.
+  const int copies = dropDuplicateTriangles(surface);
+  if (duplicates) {
+    *duplicates = copies;
+  }
   if (checkSurface(surface).nonManifoldEdges == 0) {
     return 0;
   }

@@ -264,10 +264,10 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   try {
     report = requireClosedManifold(input);  // its errors name the input's point ids
   } catch (const GeoLatticeError&) {
-    // Bodies that touch along a face (welded by the reader) are one solid: their union. Any
-    // other defect is the input's own.
-    result.mergedBodies = mergeTouchingBodies(surface);
-    if (result.mergedBodies == 0) {
+    // A face written twice is one face; bodies that touch along a face (welded by the reader)
+    // are one solid: their union. Any other defect is the input's own.
+    result.mergedBodies = mergeTouchingBodies(surface, &result.duplicateTriangles);
+    if (result.mergedBodies == 0 && result.duplicateTriangles == 0) {
       throw;
     }
     report = requireClosedManifold(surface);
