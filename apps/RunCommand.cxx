@@ -9,6 +9,7 @@
 #include "OrientationCsv.h"
 #include "SequenceCsv.h"
 #include "SetUpTriesReport.h"
+#include "SurfaceRepairReport.h"
 #include "StageReports.h"
 #include "ToolpathOutput.h"
 
@@ -151,28 +152,8 @@ private:
       this->LastSeconds = 0;
     }
     reportMesh(tets, !tetMesh, this->Section("mesh"));
-    // Bodies touching along a face are merged by the orientation search (before it turns the
-    // part) or by the mesh stage; crossing ones by the mesh stage.
-    const int merged =
-        static_cast<int>(fieldValue(tets, arrays::MergedBodies) +
-                         fieldValue(P.Orientation->GetOutputDataObject(0), arrays::MergedBodies));
-    this->Section("mesh")["merged_bodies"] = merged;
-    const int duplicates = static_cast<int>(
-        fieldValue(tets, arrays::DuplicateTriangles) +
-        fieldValue(P.Orientation->GetOutputDataObject(0), arrays::DuplicateTriangles));
-    this->Section("mesh")["duplicate_triangles"] = duplicates;
-    // The part printed is not the surface as given: always said, even with -q.
-    if (merged > 0) {
-      std::cerr
-          << "geolattice: note: bodies of the surface touch or cross each other; meshed as their "
-             "union ("
-          << merged << " fewer bodies, report.json mesh.merged_bodies)\n";
-    }
-    if (duplicates > 0) {
-      std::cerr << "geolattice: note: " << duplicates
-                << " triangles of the surface repeat another one (the same face twice); meshed "
-                   "without the copies (report.json mesh.duplicate_triangles)\n";
-    }
+    reportSurfaceRepairs(P.Orientation->GetOutputDataObject(0), tets, this->Section("mesh"),
+                         std::cerr);
     this->Write(tets, "tets.vtu");
     if (R.until == "mesh") {
       return kExitOk;

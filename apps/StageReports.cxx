@@ -115,8 +115,6 @@ void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {
     s["tetgen_speculative_run"] = fieldValue(tets, arrays::TetGenSpeculativeRun) != 0;
     s["tetgen_count_set_by_surface"] = fieldValue(tets, arrays::TetGenSurfaceBoundCount) != 0;
     s["removed_flat_tets"] = fieldValue(tets, arrays::RemovedFlatTets);
-    s["merged_bodies"] = fieldValue(tets, arrays::MergedBodies);
-    s["duplicate_triangles"] = fieldValue(tets, arrays::DuplicateTriangles);
     s["cavities"] = fieldValue(tets, arrays::CavityRegions);
   }
   s["points"] = points(tets);

@@ -81,8 +81,10 @@ constexpr const char* SimplificationEdgeLength =
 constexpr const char* SimplificationRefused = "SimplificationRefused";
 /// Bodies merged into another one they cross (core/mesh/OverlappingBodies.h), 1 value.
 constexpr const char* MergedBodies = "MergedBodies";
-/// Triangles dropped as copies of another one (core dropDuplicateTriangles), 1 value.
+/// Triangles dropped as copies of another one (core/mesh/SurfaceRepair.h), 1 value.
 constexpr const char* DuplicateTriangles = "DuplicateTriangles";
+/// Triangles turned to agree with their neighbours (core/mesh/SurfaceRepair.h), 1 value.
+constexpr const char* ReorientedTriangles = "ReorientedTriangles";
 /// Closed inner cavities of the solid (TetGen regions outside the surface, removed), 1 value.
 constexpr const char* CavityRegions = "CavityRegions";
 constexpr const char* TetGenRuns = "TetGenRuns";  ///< TetGen runs (edge search and retries)

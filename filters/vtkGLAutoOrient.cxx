@@ -7,7 +7,7 @@
 #include "vtkGLRequest.h"
 
 #include "common/Error.h"
-#include "mesh/OverlappingBodies.h"
+#include "mesh/SurfaceRepair.h"
 #include "orient/AutoOrient.h"
 
 #include <algorithm>
@@ -204,9 +204,8 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::TriangleSurface surface = gl::toTriangleSurface(input);
     // Bodies the reader welded where they touch along a face: one solid before it is turned (a
     // union of faces that are coplanar as read; turned, they may not be exactly).
-    int duplicates = 0;
-    const int mergedBodies = gl::mergeTouchingBodies(surface, &duplicates);
-    const bool merged = mergedBodies > 0 || duplicates > 0;
+    const gl::SurfaceRepairCounts repaired = gl::repairSurface(surface);
+    const bool merged = repaired.any();
     if (!this->Cache || this->Cache->filterTime != this->GetMTime() ||
         this->Cache->inputTime != input->GetMTime()) {
       this->Cache.reset();
@@ -264,8 +263,11 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::addFieldArray(fd, gl::arrays::OrientChosenRank, {static_cast<double>(rank)});
     gl::addFieldArray(fd, gl::arrays::OrientPedestalHeight, {chosen.pedestal});
     if (merged) {  // as GL Tetrahedralize Surface says it
-      gl::addFieldArray(fd, gl::arrays::MergedBodies, {static_cast<double>(mergedBodies)});
-      gl::addFieldArray(fd, gl::arrays::DuplicateTriangles, {static_cast<double>(duplicates)});
+      gl::addFieldArray(fd, gl::arrays::MergedBodies, {static_cast<double>(repaired.mergedBodies)});
+      gl::addFieldArray(fd, gl::arrays::DuplicateTriangles,
+                        {static_cast<double>(repaired.duplicateTriangles)});
+      gl::addFieldArray(fd, gl::arrays::ReorientedTriangles,
+                        {static_cast<double>(repaired.reorientedTriangles)});
     }
     gl::addFieldArray(fd, gl::arrays::OrientPedestalContactHeight, {options.pedestalContactHeight});
     output->SetFieldData(fd);

@@ -181,6 +181,7 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
     addValue(fd, gl::arrays::MergedBodies, static_cast<double>(result.mergedBodies));
     addValue(fd, gl::arrays::DuplicateTriangles, static_cast<double>(result.duplicateTriangles));
+    addValue(fd, gl::arrays::ReorientedTriangles, static_cast<double>(result.reorientedTriangles));
     addValue(fd, gl::arrays::CavityRegions, static_cast<double>(result.removedCavityRegions));
     if (result.mergedBodies > 0) {
       vtkWarningMacro(<< "bodies of the surface touch or cross each other; meshed as their union ("
@@ -190,6 +191,11 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
       vtkWarningMacro(<< result.duplicateTriangles
                       << " triangles of the surface repeat another one (the same face twice); "
                          "meshed without the copies");
+    }
+    if (result.reorientedTriangles > 0) {
+      vtkWarningMacro(<< result.reorientedTriangles
+                      << " triangles of the surface ran against their neighbours; turned to agree "
+                         "with them");
     }
     if (!result.simplificationRefused.empty() && !result.simplified) {
       vtkWarningMacro(<< "the simplified surface was not used (" << result.simplificationRefused

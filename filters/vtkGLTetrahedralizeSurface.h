@@ -13,8 +13,9 @@
  *         surfaces cross each other (an assembly exported as it is), or touch along a face (then
  *         welded into non-manifold edges by the reader), are meshed as their union
  *         (core/mesh/OverlappingBodies.h; field data `MergedBodies`, and a warning). A triangle
- *         that repeats another (the same vertices, the same way round) is dropped (field data
- *         `DuplicateTriangles`, and a warning). Closed
+ *         that repeats another (the same vertices, the same way round) is dropped, triangles
+ *         flipped against their neighbours are turned (core/mesh/SurfaceRepair.h; field data
+ *         `DuplicateTriangles`, `ReorientedTriangles`, and a warning). Closed
  *         cavities are counted in field data `CavityRegions`. An
  *         inward-oriented surface is flipped. Input arrays are not passed (the vertices change).
  * Output: vtkUnstructuredGrid of linear, positively oriented VTK_TETRA cells;

@@ -4,6 +4,7 @@
 #include "common/UnionFind.h"
 #include "mesh/CgalSurfaceMesh.h"
 #include "mesh/SurfaceCheck.h"
+#include "mesh/SurfaceRepair.h"
 
 #include <CGAL/Polygon_mesh_processing/corefinement.h>
 #include <CGAL/Polygon_mesh_processing/intersection.h>
@@ -17,7 +18,6 @@
 #include <map>
 #include <string>
 #include <unordered_map>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -175,14 +175,6 @@ OverlappingBodiesResult mergeOverlappingBodies(TriangleSurface& surface) {
 
 namespace {
 
-/// The cyclic order of a triangle's vertices: true when, from its smallest vertex id, the next
-/// id is the smaller of the other two. Two triangles on the same vertices run the same way
-/// exactly when their parities are equal.
-bool cyclicParity(const std::array<int, 3>& t) {
-  const int first = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
-  return t[(first + 1) % 3] < t[(first + 2) % 3];
-}
-
 /// Drops the walls between bodies that touch along identically triangulated faces: pairs of
 /// triangles on the same three vertices in opposite directions. Returns the wall patches
 /// (connected sets of dropped pairs: one per contact), 0 when there is none.
@@ -261,41 +253,7 @@ int dropInnerWalls(TriangleSurface& surface) {
 
 }  // namespace
 
-int dropDuplicateTriangles(TriangleSurface& surface) {
-  // A triangle's key: its sorted vertices, the last one complemented when it runs the other way.
-  struct KeyHash {
-    size_t operator()(const std::array<int, 3>& k) const {
-      const std::hash<int> h;
-      return (h(k[0]) * 0x9E3779B97F4A7C15ULL) ^ (h(k[1]) * 0xC2B2AE3D27D4EB4FULL) ^ h(k[2]);
-    }
-  };
-  std::unordered_set<std::array<int, 3>, KeyHash> seen;
-  seen.reserve(surface.triangles.size());
-  std::vector<std::array<int, 3>> kept;
-  kept.reserve(surface.triangles.size());
-  for (const std::array<int, 3>& t : surface.triangles) {
-    std::array<int, 3> key = t;
-    std::sort(key.begin(), key.end());
-    if (!cyclicParity(t)) {
-      key[2] = ~key[2];
-    }
-    if (seen.insert(key).second) {
-      kept.push_back(t);
-    }
-  }
-  const int dropped = static_cast<int>(surface.triangles.size() - kept.size());
-  if (dropped > 0) {
-    surface.triangles = std::move(kept);
-  }
-  return dropped;
-}
-
-int mergeTouchingBodies(TriangleSurface& surface, int* duplicates) {
-  // A face written twice (the same vertices, the same way round) is one face.
-  const int copies = dropDuplicateTriangles(surface);
-  if (duplicates) {
-    *duplicates = copies;
-  }
+int mergeTouchingBodies(TriangleSurface& surface) {
   if (checkSurface(surface).nonManifoldEdges == 0) {
     return 0;
   }

@@ -42,16 +42,8 @@ OverlappingBodiesResult mergeOverlappingBodies(TriangleSurface& surface);
 /// closed manifold (bodies that touch along an edge or at a point have no manifold union: the
 /// input stays as it is, and its non-manifold edges are reported by the caller's check).
 /// Returns the bodies merged (0: unchanged; for dropped walls, their connected patches); the
-/// new surface has only the triangles' vertices. First, triangles that repeat another one
-/// (dropDuplicateTriangles) are dropped, whatever follows; `duplicates` (if given) gets how
-/// many. Cost: O(F) and one checkSurface (O(F log F)) when nothing is non-manifold.
-int mergeTouchingBodies(TriangleSurface& surface, int* duplicates = nullptr);
-
-/// Drops every triangle on the same three vertices, the same way round, as an earlier one (a
-/// face an exporter wrote twice: its edges are used by more than two triangles); the first is
-/// kept. Pairs the opposite way round are walls, not copies (mergeTouchingBodies). Points are
-/// not renumbered. Returns how many were dropped. Hand-written: vtkRemoveDuplicatePolys treats
-/// both directions alike and would keep one triangle of such a wall. O(F).
-int dropDuplicateTriangles(TriangleSurface& surface);
+/// new surface has only the triangles' vertices. Cost: one checkSurface (O(F log F)) when nothing is
+/// non-manifold. mesh/SurfaceRepair.h runs it after the repairs that must come first.
+int mergeTouchingBodies(TriangleSurface& surface);
 
 }  // namespace geolattice

@@ -1,7 +1,7 @@
 #include "pedestal/Pedestal.h"
 
 #include "common/Error.h"
-#include "mesh/OverlappingBodies.h"
+#include "mesh/SurfaceRepair.h"
 #include "mesh/SurfaceCheck.h"
 #include "placement/PlaceOnPlatform.h"
 
@@ -75,7 +75,7 @@ PedestalResult addPedestal(const TriangleSurface& input, const PedestalOptions& 
   PedestalResult result;
   // Bodies that touch along a face (welded by the reader) stand on it as one solid.
   TriangleSurface part = input;
-  mergeTouchingBodies(part);
+  repairSurface(part);
   const std::vector<int> contact =
       withoutPinches(part, baseContactFaces(part, Eigen::Matrix3d::Identity(), o.contactHeight));
   for (int f : contact) {

@@ -6,6 +6,7 @@
 #include "common/Error.h"
 #include "common/Progress.h"
 #include "mesh/SurfaceCheck.h"
+#include "mesh/SurfaceRepair.h"
 #include "mesh/TetMeshCheck.h"
 #include "tetrahedralize/TetGenRunner.h"
 
@@ -264,10 +265,13 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   try {
     report = requireClosedManifold(input);  // its errors name the input's point ids
   } catch (const GeoLatticeError&) {
-    // A face written twice is one face; bodies that touch along a face (welded by the reader)
-    // are one solid: their union. Any other defect is the input's own.
-    result.mergedBodies = mergeTouchingBodies(surface, &result.duplicateTriangles);
-    if (result.mergedBodies == 0 && result.duplicateTriangles == 0) {
+    // A face written twice, faces flipped against their neighbours, bodies that touch along a
+    // face (welded by the reader): mesh/SurfaceRepair.h. Any other defect is the input's own.
+    const SurfaceRepairCounts repaired = repairSurface(surface);
+    result.duplicateTriangles = repaired.duplicateTriangles;
+    result.reorientedTriangles = repaired.reorientedTriangles;
+    result.mergedBodies = repaired.mergedBodies;
+    if (!repaired.any()) {
       throw;
     }
     report = requireClosedManifold(surface);

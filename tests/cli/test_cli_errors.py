@@ -138,22 +138,29 @@ class CliErrorTest(unittest.TestCase):
                 report = json.load(f)
             self.assertEqual(report["mesh"]["merged_bodies"], 1)
 
-    def test_a_face_written_twice_is_printed_once(self):
-        # The cube with two of its triangles written again (an STL exporter's doubled faces): their
-        # edges had three triangles ("non-manifold surface"); the copies are dropped, as placed by
-        # the mesh stage and with --orient auto by the search, and said on stderr and in report.json.
+    def test_doubled_and_flipped_faces_are_repaired(self):
+        # The cube with two of its triangles written again (an STL exporter's doubled faces: their
+        # edges had three triangles, "non-manifold surface"), and the cube with one triangle
+        # flipped ("inconsistently oriented"): repaired, as placed by the mesh stage and with
+        # --orient auto by the search, and said on stderr and in report.json.
         faces = [line for line in CUBE_OBJ.splitlines() if line.startswith("f")]
-        model = write(os.path.join(self.tmp, "doubled.obj"), CUBE_OBJ + faces[0] + "\n" + faces[3] + "\n")
-        for extra in ([], ["--orient", "auto"]):
-            out = self.out + "-".join(extra)
-            result = self.run_cli(model, "-o", out, "-q", "--scale", "20", "--until", "mesh", *extra)
-            self.assertEqual(result.returncode, 0, result.stderr)
-            self.assertIn("2 triangles of the surface repeat another one", result.stderr)
-            with open(os.path.join(out, "report.json")) as f:
-                report = json.load(f)
-            self.assertEqual(report["mesh"]["duplicate_triangles"], 2)
-            self.assertEqual(report["mesh"]["merged_bodies"], 0)
-            self.assertGreater(report["mesh"]["tets"], 0)
+        doubled = write(os.path.join(self.tmp, "doubled.obj"), CUBE_OBJ + faces[0] + "\n" + faces[3] + "\n")
+        a, b, c = faces[4].split()[1:]
+        flipped = write(os.path.join(self.tmp, "flipped.obj"),
+                        CUBE_OBJ.replace(faces[4] + "\n", "f %s %s %s\n" % (a, c, b)))
+        for model, note, key in ((doubled, "2 triangles of the surface repeat another one", "duplicate_triangles"),
+                                 (flipped, "1 triangle of the surface ran against its neighbours",
+                                  "reoriented_triangles")):
+            for extra in ([], ["--orient", "auto"]):
+                out = self.out + os.path.basename(model) + "-".join(extra)
+                result = self.run_cli(model, "-o", out, "-q", "--scale", "20", "--until", "mesh", *extra)
+                self.assertEqual(result.returncode, 0, result.stderr)
+                self.assertIn(note, result.stderr)
+                with open(os.path.join(out, "report.json")) as f:
+                    report = json.load(f)
+                self.assertEqual(report["mesh"][key], 2 if key == "duplicate_triangles" else 1)
+                self.assertEqual(report["mesh"]["merged_bodies"], 0)
+                self.assertGreater(report["mesh"]["tets"], 0)
 
     def test_inverted_tet(self):
         tet = "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 2 1 3\n"

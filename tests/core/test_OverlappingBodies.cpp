@@ -108,36 +108,3 @@ TEST(OverlappingBodies, ABodyThatCrossesItselfIsNotMerged) {
     EXPECT_NE(std::string(e.what()).find("crosses itself"), std::string::npos) << e.what();
   }
 }
-
-TEST(OverlappingBodies, AFaceWrittenTwiceIsMeshedOnce) {
-  // A 10 mm cube whose first five triangles are written again (one of them starting at another
-  // corner: the same way round): the copies make its edges non-manifold.
-  const TriangleSurface cube = box({10, 10, 10}, {0, 0, 0});
-  TriangleSurface doubled = cube;
-  for (int t = 0; t < 5; ++t) {
-    auto copy = cube.triangles[t];
-    if (t == 2) {
-      std::rotate(copy.begin(), copy.begin() + 1, copy.end());
-    }
-    doubled.triangles.push_back(copy);
-  }
-  EXPECT_FALSE(checkSurface(doubled).isClosedManifold());
-  TetrahedralizeOptions o;
-  o.targetEdgeLength = 2.0;
-  const TetrahedralizeResult meshed = tetrahedralizeSurface(doubled, o);
-  EXPECT_EQ(meshed.duplicateTriangles, 5);
-  EXPECT_EQ(meshed.mergedBodies, 0);
-  EXPECT_NEAR(meshed.meshVolume, 1000.0, 1e-6 * 1000.0);
-
-  // The other way round a pair is a wall, not a copy: dropDuplicateTriangles keeps both.
-  TriangleSurface wall = cube;
-  auto flipped = cube.triangles[0];
-  std::swap(flipped[1], flipped[2]);
-  wall.triangles.push_back(flipped);
-  EXPECT_EQ(dropDuplicateTriangles(wall), 0);
-  EXPECT_EQ(wall.triangles.size(), cube.triangles.size() + 1);
-  // And without copies nothing changes.
-  TriangleSurface same = cube;
-  EXPECT_EQ(dropDuplicateTriangles(same), 0);
-  EXPECT_EQ(same.triangles, cube.triangles);
-}

@@ -1,0 +1,23 @@
+#pragma once
+/// @file SurfaceRepairReport.h
+/// @brief The repairs the part's surface got before it was meshed (core/mesh/SurfaceRepair.h and
+/// the union of crossing bodies): the part printed is not exactly the surface as given, so each
+/// is said on stderr (even with -q) and counted in report.json.
+#include <nlohmann/json.hpp>
+
+#include <iosfwd>
+
+class vtkDataObject;
+
+namespace geolattice {
+
+using Json = nlohmann::ordered_json;
+
+/// Sums each repair's count over the orientation search's output `oriented` (it repairs before
+/// it turns the part) and the mesh stage's output `tets` (it repairs what is left), writes
+/// mesh.merged_bodies, mesh.duplicate_triangles and mesh.reoriented_triangles into `mesh`, and
+/// one note line per repair done to `err`.
+void reportSurfaceRepairs(vtkDataObject* oriented, vtkDataObject* tets, Json& mesh,
+                          std::ostream& err);
+
+}  // namespace geolattice

@@ -1,0 +1,53 @@
+#pragma once
+/// @file SurfaceRepair.h
+/// @brief The documented repairs a surface as read gets before it is one closed solid, each done
+/// only where its defect is there, so a valid surface passes through unchanged:
+///  1. a triangle written twice (the same vertices, the same way round) loses its copies;
+///  2. triangles traversed against their neighbours (an exporter that flipped some faces) are
+///     turned to agree with them (CGAL's orient_polygon_soup; whole bodies still point either
+///     way: orientOutward in mesh/SurfaceCheck.h turns them outward);
+///  3. bodies welded where they touch along a face become their union (mergeTouchingBodies,
+///     mesh/OverlappingBodies.h).
+/// Holes, self-intersections and non-manifold edges of another origin are not repaired: the
+/// caller's check (requireClosedManifold) names them.
+///
+/// Used before meshing (TetrahedralizeSurface), before the orientation search (GL Auto Orient)
+/// and before a pedestal is added (Pedestal), so each sees the same solid.
+/// Cost: one checkSurface (O(F log F)) when nothing is wrong; each repair O(F) (the union:
+/// OverlappingBodies.h).
+#include "mesh/TetMesh.h"
+
+#include <array>
+
+namespace geolattice {
+
+/// What repairSurface did (0: that defect was not there).
+struct SurfaceRepairCounts {
+  int duplicateTriangles = 0;   ///< copies dropped
+  int reorientedTriangles = 0;  ///< triangles turned to agree with their neighbours
+  int mergedBodies = 0;         ///< bodies merged into another (mergeTouchingBodies' count)
+  bool any() const { return duplicateTriangles + reorientedTriangles + mergedBodies > 0; }
+};
+
+/// The repairs 1-3 above, in that order; the surface is changed only by the repairs done.
+SurfaceRepairCounts repairSurface(TriangleSurface& surface);
+
+/// Repair 1: drops every triangle on the same three vertices, the same way round, as an earlier
+/// one (its edges are used by more than two triangles); the first is kept. Pairs the opposite
+/// way round are walls between bodies, not copies (mergeTouchingBodies). Points are not
+/// renumbered. Returns how many were dropped. Hand-written: vtkRemoveDuplicatePolys treats both
+/// directions alike and would keep one triangle of such a wall. O(F).
+int dropDuplicateTriangles(TriangleSurface& surface);
+
+/// Repair 2: turns triangles so that every edge between two of them is traversed once each way,
+/// with CGAL::Polygon_mesh_processing::orient_polygon_soup. Only where that needs no new points
+/// (a surface whose edges are manifold and whose bodies are orientable); otherwise the surface
+/// is left as it is. Returns the triangles turned.
+int orientConsistently(TriangleSurface& surface);
+
+/// The cyclic order of a triangle's vertices: true when, from its smallest vertex id, the next
+/// id is the smaller of the other two. Two triangles on the same vertices run the same way
+/// exactly when their parities are equal.
+bool cyclicParity(const std::array<int, 3>& t);
+
+}  // namespace geolattice

@@ -1,0 +1,111 @@
+// The repairs a surface as read gets before it is meshed (core/mesh/SurfaceRepair.h): a face
+// written twice, triangles flipped against their neighbours; boxes whose volumes are known.
+#include "mesh/AnalyticShapes.h"
+#include "mesh/SurfaceCheck.h"
+#include "mesh/SurfaceRepair.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <utility>
+
+using namespace geolattice;
+
+namespace {
+
+TriangleSurface cube10() {
+  return boxSurface({10, 10, 10}, 2.0);
+}
+
+void flip(std::array<int, 3>& t) {
+  std::swap(t[1], t[2]);
+}
+
+}  // namespace
+
+TEST(SurfaceRepair, AFaceWrittenTwiceIsMeshedOnce) {
+  // The cube's first five triangles written again (one of them starting at another corner: the
+  // same way round): the copies make its edges non-manifold.
+  const TriangleSurface cube = cube10();
+  TriangleSurface doubled = cube;
+  for (int t = 0; t < 5; ++t) {
+    auto copy = cube.triangles[t];
+    if (t == 2) {
+      std::rotate(copy.begin(), copy.begin() + 1, copy.end());
+    }
+    doubled.triangles.push_back(copy);
+  }
+  EXPECT_FALSE(checkSurface(doubled).isClosedManifold());
+  TetrahedralizeOptions o;
+  o.targetEdgeLength = 2.0;
+  const TetrahedralizeResult meshed = tetrahedralizeSurface(doubled, o);
+  EXPECT_EQ(meshed.duplicateTriangles, 5);
+  EXPECT_EQ(meshed.reorientedTriangles, 0);
+  EXPECT_EQ(meshed.mergedBodies, 0);
+  EXPECT_NEAR(meshed.meshVolume, 1000.0, 1e-6 * 1000.0);
+
+  // The other way round a pair is a wall, not a copy: both stay.
+  TriangleSurface wall = cube;
+  auto flipped = cube.triangles[0];
+  flip(flipped);
+  wall.triangles.push_back(flipped);
+  EXPECT_EQ(dropDuplicateTriangles(wall), 0);
+  EXPECT_EQ(wall.triangles.size(), cube.triangles.size() + 1);
+  // Without copies nothing changes.
+  TriangleSurface same = cube;
+  EXPECT_EQ(dropDuplicateTriangles(same), 0);
+  EXPECT_EQ(same.triangles, cube.triangles);
+}
+
+TEST(SurfaceRepair, TrianglesFlippedAgainstTheirNeighboursAreTurnedBack) {
+  const TriangleSurface cube = cube10();
+  ASSERT_GT(cube.triangles.size(), 20u);
+  // Three flipped, the first triangle among them (CGAL keeps a body's first triangle and turns
+  // the others to agree: the body must then be turned back as a whole).
+  TriangleSurface broken = cube;
+  for (int t : {0, 7, 19}) {
+    flip(broken.triangles[static_cast<size_t>(t)]);
+  }
+  EXPECT_GT(checkSurface(broken).inconsistentEdges, 0);
+  TriangleSurface repaired = broken;
+  const SurfaceRepairCounts r = repairSurface(repaired);
+  EXPECT_EQ(r.reorientedTriangles, 3);
+  EXPECT_EQ(repaired.triangles, cube.triangles);  // exactly the cube as it was
+
+  // A cavity (an inner box facing inward) with one triangle flipped: turned to face inward
+  // again, the solid is the outer box less the inner one.
+  TriangleSurface hollow = cube10();
+  TriangleSurface inner = boxSurface({4, 4, 4}, 2.0);
+  const int offset = static_cast<int>(hollow.points.size());
+  for (const Vec3& p : inner.points) {
+    hollow.points.push_back(p + Vec3(3, 3, 3));
+  }
+  for (auto t : inner.triangles) {
+    flip(t);  // inward
+    hollow.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  }
+  const double volume = requireClosedManifold(hollow).signedVolume;
+  EXPECT_NEAR(volume, 1000.0 - 64.0, 1e-9);
+  flip(hollow.triangles[hollow.triangles.size() - 2]);
+  EXPECT_EQ(repairSurface(hollow).reorientedTriangles, 1);
+  EXPECT_NEAR(requireClosedManifold(hollow).signedVolume, volume, 1e-9);
+
+  // Meshed from the broken cube: the mesh stage repairs it and says so.
+  TetrahedralizeOptions o;
+  o.targetEdgeLength = 2.0;
+  const TetrahedralizeResult meshed = tetrahedralizeSurface(broken, o);
+  EXPECT_EQ(meshed.reorientedTriangles, 3);
+  EXPECT_NEAR(meshed.meshVolume, 1000.0, 1e-6 * 1000.0);
+}
+
+TEST(SurfaceRepair, AValidSurfaceAndAnOpenOneAreLeftAsTheyAre) {
+  TriangleSurface cube = cube10();
+  EXPECT_FALSE(repairSurface(cube).any());
+  EXPECT_EQ(cube.triangles, cube10().triangles);
+  TriangleSurface open = cube10();
+  open.triangles.pop_back();
+  const TriangleSurface before = open;
+  EXPECT_FALSE(repairSurface(open).any());
+  EXPECT_EQ(open.triangles, before.triangles);
+}
