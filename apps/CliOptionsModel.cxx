@@ -48,6 +48,15 @@ void addModelOptions(std::vector<CliOption>& t) {
                  return std::string(p.Placement->GetCenterXY() ? "centred" : "kept");
                }});
 
+  t.push_back({"--fill-holes", "", place,
+               "close the holes of an open surface (a scan) before placing it: each gets\n"
+               "a patch faired into the surface around it (look at it before printing)",
+               "GLPlaceOnPlatform.FillHoles",
+               [](P& p, RunOptions&, const std::string&) { p.Placement->SetFillHoles(true); },
+               [](P& p, const RunOptions&) {
+                 return std::string(p.Placement->GetFillHoles() ? "on" : "off");
+               }});
+
   const char* orient = "Orientation (which side of the part faces the plate)";
   t.push_back({"--orient", "MODE", orient,
                "keep | auto: keep the placement, or search the best orientation\n"

@@ -106,6 +106,7 @@ private:
     Json& input = this->Section("input");
     input["file"] = R.model;
     reportInput(placed, tetMesh, input);
+    this->Note(filledHolesNote(input));
     if (!R.quiet && input.contains("size_mm")) {
       std::cout << "geolattice: the part is " << input["size_mm"][0].get<double>() << " x "
                 << input["size_mm"][1].get<double>() << " x " << input["size_mm"][2].get<double>()
@@ -152,8 +153,10 @@ private:
       this->LastSeconds = 0;
     }
     reportMesh(tets, !tetMesh, this->Section("mesh"));
-    reportSurfaceRepairs(P.Orientation->GetOutputDataObject(0), tets, this->Section("mesh"),
-                         std::cerr);
+    for (const std::string& note :
+         reportSurfaceRepairs(P.Orientation->GetOutputDataObject(0), tets, this->Section("mesh"))) {
+      this->Note(note);
+    }
     this->Write(tets, "tets.vtu");
     if (R.until == "mesh") {
       return kExitOk;

@@ -143,6 +143,15 @@ void RunSession::RemoveFiles(const std::vector<std::string>& files) {
   }
 }
 
+void RunSession::Note(const std::string& line) {
+  if (line.empty() ||
+      std::find(this->Noted.begin(), this->Noted.end(), line) != this->Noted.end()) {
+    return;
+  }
+  this->Noted.push_back(line);
+  std::cerr << "geolattice: note: " << line << "\n";
+}
+
 void RunSession::GateLine(const std::string& line, bool warning) {
   std::cerr << "geolattice: " << (warning ? "warning: " : "stopped: ") << line << "\n";
 }

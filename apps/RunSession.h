@@ -63,6 +63,9 @@ public:
   static void RemoveFiles(const std::vector<std::string>& files);
   /// One stderr line of a gate: "stopped: ..." or "warning: ...".
   void GateLine(const std::string& line, bool warning = false);
+  /// "geolattice: note: `line`" on stderr (even with -q: about the part), once per run (the
+  /// stages run again for other set-ups). Empty: nothing.
+  void Note(const std::string& line);
   /// Writes a deep copy of `data` as OUTDIR/name (VTK XML) on the writer thread and records it.
   void Write(vtkDataObject* data, const char* name);
   /// Posts `write` to the writer thread (`replay`: to ReplayWriter) as the job of `path` (its
@@ -95,6 +98,7 @@ private:
   void CheckWriters();
   std::vector<PendingJob> Pending;   ///< posted since the last WaitForFiles, in order
   std::vector<std::string> Written;  ///< files the writer thread has written in this run
+  std::vector<std::string> Noted;    ///< notes said (Note)
 };
 
 /// The program stage behind its gates: a colliding toolpath (unless --allow-collisions),

@@ -92,6 +92,8 @@ void reportInput(vtkDataObject* placed, bool tetMesh, Json& s) {
   vtkDataSet::SafeDownCast(placed)->GetBounds(b);
   s["size_mm"] = {b[1] - b[0], b[3] - b[2], b[5] - b[4]};
   s["bounds_mm"] = vec(b, 6);
+  s["filled_holes"] = fieldValue(placed, arrays::FilledHoles);
+  s["filled_hole_triangles"] = fieldValue(placed, arrays::FilledHoleTriangles);
 }
 
 void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {

@@ -4,12 +4,12 @@
 
 #include "vtkGLArrayNames.h"
 
-#include <ostream>
+#include <sstream>
 
 namespace geolattice {
 
-void reportSurfaceRepairs(vtkDataObject* oriented, vtkDataObject* tets, Json& mesh,
-                          std::ostream& err) {
+std::vector<std::string> reportSurfaceRepairs(vtkDataObject* oriented, vtkDataObject* tets,
+                                              Json& mesh) {
   auto count = [&](const char* name) {
     return static_cast<int>(fieldValue(oriented, name) + fieldValue(tets, name));
   };
@@ -19,27 +19,47 @@ void reportSurfaceRepairs(vtkDataObject* oriented, vtkDataObject* tets, Json& me
   mesh["merged_bodies"] = merged;
   mesh["duplicate_triangles"] = duplicates;
   mesh["reoriented_triangles"] = reoriented;
+  std::vector<std::string> notes;
   if (merged > 0) {
-    err << "geolattice: note: bodies of the surface touch or cross each other; meshed as their "
-           "union ("
-        << merged << " fewer bodies, report.json mesh.merged_bodies)\n";
+    std::ostringstream note;
+    note << "bodies of the surface touch or cross each other; meshed as their "
+            "union ("
+         << merged << " fewer bodies, report.json mesh.merged_bodies)";
+    notes.push_back(note.str());
   }
   if (duplicates > 0) {
-    err << "geolattice: note: " << duplicates
-        << (duplicates == 1 ? " triangle of the surface repeats"
-                            : " triangles of the surface repeat")
-        << " another one (the same face twice); meshed without the copies (report.json "
-           "mesh.duplicate_triangles)\n";
+    std::ostringstream note;
+    note << duplicates
+         << (duplicates == 1 ? " triangle of the surface repeats"
+                             : " triangles of the surface repeat")
+         << " another one (the same face twice); meshed without the copies (report.json "
+            "mesh.duplicate_triangles)";
+    notes.push_back(note.str());
   }
   if (reoriented > 0) {
-    err << "geolattice: note: " << reoriented
-        << (reoriented == 1
-                ? " triangle of the surface ran against its neighbours; turned to agree "
-                  "with them"
-                : " triangles of the surface ran against their neighbours; turned to "
-                  "agree with them")
-        << " (report.json mesh.reoriented_triangles)\n";
+    std::ostringstream note;
+    note << reoriented
+         << (reoriented == 1
+                 ? " triangle of the surface ran against its neighbours; turned to agree "
+                   "with them"
+                 : " triangles of the surface ran against their neighbours; turned to "
+                   "agree with them")
+         << " (report.json mesh.reoriented_triangles)";
+    notes.push_back(note.str());
   }
+  return notes;
+}
+
+std::string filledHolesNote(const Json& input) {
+  const int holes = input.value("filled_holes", 0.0) > 0 ? input["filled_holes"].get<int>() : 0;
+  std::ostringstream note;
+  if (holes > 0) {
+    note << holes << (holes == 1 ? " hole" : " holes") << " of the surface closed with "
+         << input["filled_hole_triangles"].get<int>()
+         << " triangles (--fill-holes; a patch is a guess at the part: look at tets.vtu before "
+            "printing; report.json input.filled_holes)";
+  }
+  return note.str();
 }
 
 }  // namespace geolattice

@@ -5,7 +5,8 @@
 /// is said on stderr (even with -q) and counted in report.json.
 #include <nlohmann/json.hpp>
 
-#include <iosfwd>
+#include <string>
+#include <vector>
 
 class vtkDataObject;
 
@@ -16,8 +17,11 @@ using Json = nlohmann::ordered_json;
 /// Sums each repair's count over the orientation search's output `oriented` (it repairs before
 /// it turns the part) and the mesh stage's output `tets` (it repairs what is left), writes
 /// mesh.merged_bodies, mesh.duplicate_triangles and mesh.reoriented_triangles into `mesh`, and
-/// one note line per repair done to `err`.
-void reportSurfaceRepairs(vtkDataObject* oriented, vtkDataObject* tets, Json& mesh,
-                          std::ostream& err);
+/// returns one note per repair done (for stderr, after "geolattice: note: ").
+std::vector<std::string> reportSurfaceRepairs(vtkDataObject* oriented, vtkDataObject* tets,
+                                              Json& mesh);
+
+/// The note on the holes --fill-holes closed (report.json input.filled_holes); empty if none.
+std::string filledHolesNote(const Json& input);
 
 }  // namespace geolattice

@@ -41,6 +41,9 @@ constexpr const char* SignedVolume = "SignedVolume";      ///< enclosed volume, 
 constexpr const char* SurfaceVerdict = "SurfaceVerdict";  ///< string: "closed manifold" or why not
 // Field data of vtkGLPlaceOnPlatform: p_out = PlacementScale * p_in + PlacementTranslation.
 constexpr const char* PlacementScale = "PlacementScale";  ///< 1 value, uniform scale factor
+/// With FillHoles: the holes closed and the triangles of their patches, 1 value each.
+constexpr const char* FilledHoles = "FilledHoles";
+constexpr const char* FilledHoleTriangles = "FilledHoleTriangles";
 constexpr const char* PlacementTranslation =
     "PlacementTranslation";  ///< 3 values (mm), applied after scaling
 // Curved layer slicer output (vtkGLCurvedLayerSlicer).

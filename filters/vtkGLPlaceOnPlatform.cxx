@@ -6,6 +6,7 @@
 #include "vtkGLRequest.h"
 
 #include "common/Error.h"
+#include "mesh/HoleFilling.h"
 #include "placement/PlaceOnPlatform.h"
 
 #include <vtkCellData.h>
@@ -17,6 +18,7 @@
 #include <vtkObjectFactory.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
+#include <vtkPolyData.h>
 #include <vtkPoints.h>
 
 #include <algorithm>
@@ -32,6 +34,7 @@ void vtkGLPlaceOnPlatform::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Scale: " << this->Scale << "\n";
   os << indent << "FitSize: " << this->FitSize << " mm\n";
   os << indent << "CenterXY: " << (this->CenterXY ? "on" : "off") << "\n";
+  os << indent << "FillHoles: " << (this->FillHoles ? "on" : "off") << "\n";
 }
 
 vtkGLPlaceOnPlatform::vtkGLPlaceOnPlatform() {
@@ -39,6 +42,7 @@ vtkGLPlaceOnPlatform::vtkGLPlaceOnPlatform() {
   this->Scale = defaults.scale;
   this->FitSize = defaults.fitSize;
   this->CenterXY = defaults.centerXY;
+  this->FillHoles = defaults.fillHoles;
 }
 
 namespace {
@@ -48,6 +52,7 @@ gl::PlacementOptions placementOptions(vtkGLPlaceOnPlatform* f) {
   o.scale = f->GetScale();
   o.fitSize = f->GetFitSize();
   o.centerXY = f->GetCenterXY() != 0;
+  o.fillHoles = f->GetFillHoles() != 0;
   return o;
 }
 }  // namespace
@@ -69,6 +74,19 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
     }
     const gl::PlacementOptions options = placementOptions(this);
     options.validate();
+    // The holes closed first: their patches belong to the part that is placed.
+    vtkNew<vtkPolyData> closed;
+    gl::HoleFillingResult filled;
+    if (options.fillHoles && vtkPolyData::SafeDownCast(input) &&
+        vtkPolyData::SafeDownCast(input)->GetNumberOfPolys() > 0) {
+      gl::TriangleSurface surface = gl::toTriangleSurface(vtkPolyData::SafeDownCast(input));
+      filled = gl::fillHoles(surface);
+      if (filled.holes > 0) {
+        gl::fromTriangleSurface(surface, closed);
+        closed->GetFieldData()->PassData(input->GetFieldData());
+        input = closed;
+      }
+    }
     vtkPoints* inPoints = input->GetPoints();
     const vtkIdType n = inPoints ? inPoints->GetNumberOfPoints() : 0;
     if (n == 0) {
@@ -108,6 +126,12 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
     gl::addFieldArray(output->GetFieldData(), gl::arrays::PlacementScale, {s});
     gl::addFieldArray(output->GetFieldData(), gl::arrays::PlacementTranslation,
                       {t.x(), t.y(), t.z()});
+    if (options.fillHoles) {
+      gl::addFieldArray(output->GetFieldData(), gl::arrays::FilledHoles,
+                        {static_cast<double>(filled.holes)});
+      gl::addFieldArray(output->GetFieldData(), gl::arrays::FilledHoleTriangles,
+                        {static_cast<double>(filled.addedTriangles)});
+    }
     this->UpdateProgress(1.0);
   });
 }

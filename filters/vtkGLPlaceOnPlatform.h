@@ -17,8 +17,10 @@
  * Field data (added to the input's): `PlacementScale` (1 value: s) and
  * `PlacementTranslation` (3 values: t, mm), names in vtkGLArrayNames.h.
  *
- * Parameters (core/placement/PlaceOnPlatform.h, defaults there): Scale, FitSize, CenterXY (see
- * the Set/Get blocks below).
+ * Parameters (core/placement/PlaceOnPlatform.h, defaults there): Scale, FitSize, CenterXY,
+ * FillHoles (see the Set/Get blocks below). With FillHoles, a surface's holes are closed first
+ * (core/mesh/HoleFilling.h; field data `FilledHoles`, `FilledHoleTriangles`), then placed: the
+ * patches count in the bounding box.
  *
  * Errors (vtkErrorMacro, empty output, RequestData returns 0): Scale <= 0, FitSize < 0, an empty
  * input, FitSize > 0 for a model whose bounding box has no extent, non-finite coordinates, a
@@ -57,6 +59,15 @@ public:
   vtkBooleanMacro(CenterXY, vtkTypeBool);
   ///@}
 
+  ///@{
+  /// Close the holes of a surface before placing it (default off; core/mesh/HoleFilling.h:
+  /// CGAL's triangulate, refine and fair). Ignored for a tet mesh. The output is then the closed
+  /// surface (new points and triangles: the input's point and cell arrays are not passed).
+  vtkSetMacro(FillHoles, vtkTypeBool);
+  vtkGetMacro(FillHoles, vtkTypeBool);
+  vtkBooleanMacro(FillHoles, vtkTypeBool);
+  ///@}
+
 protected:
   vtkGLPlaceOnPlatform();
   ~vtkGLPlaceOnPlatform() override = default;
@@ -67,6 +78,7 @@ protected:
   double Scale;
   double FitSize;
   vtkTypeBool CenterXY;
+  vtkTypeBool FillHoles;
 
 private:
   vtkGLPlaceOnPlatform(const vtkGLPlaceOnPlatform&) = delete;

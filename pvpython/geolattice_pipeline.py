@@ -66,6 +66,7 @@ PARAMETERS = {
     "scale": (("place",), "Scale"),
     "fit_size": (("place",), "FitSize"),
     "center": (("place",), "CenterXY"),
+    "fill_holes": (("place",), "FillHoles"),
     "orient": (("orient",), "Orient"),
     "min_base_area": (("orient",), "MinBaseArea"),
     "edge_length": (("tets",), "TargetEdgeLength"),
@@ -122,7 +123,7 @@ def build_pipeline(model, lattice_width=None, **parameters):
         parameters["strategy"] = {"lpt": "LPT", "dpt": "DPT", "a4": "A4", "best": "Best"}[parameters["strategy"].lower()]
     if isinstance(parameters.get("orient"), str):
         parameters["orient"] = {"keep": "Keep", "auto": "Auto"}[parameters["orient"].lower()]
-    for key in ("center", "support_perimeter"):
+    for key in ("center", "fill_holes", "support_perimeter"):
         if key in parameters:
             parameters[key] = int(parameters[key])
     pedestal = parameters.pop("pedestal", None)
@@ -209,6 +210,8 @@ def main(argv=None):
     # No defaults here: what is not given keeps the filters' defaults (the same as the CLI's).
     parser.add_argument("--scale", type=float, help="uniform scale factor")
     parser.add_argument("--fit-size", type=float, help="largest bounding-box side in mm")
+    parser.add_argument("--fill-holes", action="store_true", default=None,
+                        help="close the holes of an open surface (a scan) before placing it")
     parser.add_argument("--edge-length", type=float, help="target tet edge length in mm (0 = automatic)")
     parser.add_argument("--base-tolerance", type=float,
                         help="vertices this far above the lowest point are the base, mm")
@@ -221,7 +224,8 @@ def main(argv=None):
 
     load_plugin(args.plugin)
     os.makedirs(args.output, exist_ok=True)
-    given = dict(scale=args.scale, fit_size=args.fit_size, edge_length=args.edge_length,
+    given = dict(scale=args.scale, fit_size=args.fit_size, fill_holes=args.fill_holes,
+                 edge_length=args.edge_length,
                  base_tolerance=args.base_tolerance, time_factor=args.time_factor,
                  layer_interval=args.layer_interval, strategy=args.strategy, nozzle_angle=args.nozzle_angle)
     p = build_pipeline(args.model, lattice_width=args.lattice_width,

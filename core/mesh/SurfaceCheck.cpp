@@ -149,8 +149,8 @@ SurfaceCheckReport requireClosedManifold(const TriangleSurface& surface) {
     throw GeoLatticeError("open surface: " + std::to_string(r.boundaryEdges) +
                           " boundary edges (the surface must be closed / watertight)" +
                           at(r.firstBoundaryEdge) +
-                          ". Close the holes (ParaView: Fill Holes, then Clean; or repair the "
-                          "part in its CAD tool) and export it again");
+                          ". Close the holes: GL Place On Platform's Fill Holes (geolattice run "
+                          "--fill-holes), or repair the part in its CAD tool and export it again");
   }
   if (r.nonManifoldEdges > 0) {
     throw GeoLatticeError("non-manifold surface: " + std::to_string(r.nonManifoldEdges) +

@@ -22,6 +22,9 @@ struct PlacementOptions {
   double scale = 1.0;    ///< uniform scale factor (> 0), used when fitSize is 0
   double fitSize = 0.0;  ///< largest bounding-box side after scaling (mm); 0 = use scale
   bool centerXY = true;  ///< bounding box centred on x = y = 0
+  /// A surface's holes closed before it is placed (mesh/HoleFilling.h); off: an open surface is
+  /// refused by the stages that need a solid, naming the holes.
+  bool fillHoles = false;
   /// Checks the options; throws GeoLatticeError naming the bad one (Scale, FitSize).
   void validate() const;
 };

@@ -86,7 +86,17 @@ class CliErrorTest(unittest.TestCase):
 
     def test_open_surface(self):
         open_box = "\n".join(CUBE_OBJ.splitlines()[:-2]) + "\n"  # drop two triangles
-        self.expect_error([write(os.path.join(self.tmp, "open.obj"), open_box)], "open surface")
+        model = write(os.path.join(self.tmp, "open.obj"), open_box)
+        self.expect_error([model], "open surface", "--fill-holes")
+        # Asked for, the hole is closed before the part is placed, and said.
+        result = self.run_cli(model, "-o", self.out, "-q", "--scale", "20", "--until", "mesh", "--fill-holes")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("1 hole of the surface closed", result.stderr)
+        with open(os.path.join(self.out, "report.json")) as f:
+            report = json.load(f)
+        self.assertEqual(report["input"]["filled_holes"], 1)
+        self.assertGreaterEqual(report["input"]["filled_hole_triangles"], 2)
+        self.assertGreater(report["mesh"]["tets"], 0)
 
     def test_non_manifold_surface(self):
         # The cube plus a fin: a third triangle on the edge (1,2).

@@ -73,8 +73,8 @@ TEST(SurfaceCheck, OpenSurfaceIsRejectedWithTheBoundaryEdgeCount) {
   EXPECT_EQ(
       errorOf([&] { requireClosedManifold(box); }),
       "open surface: 3 boundary edges (the surface must be closed / watertight); the first is "
-      "between points 1 and 2, at (0, 0.5, 1). Close the holes (ParaView: Fill Holes, then Clean; "
-      "or repair the part in its CAD tool) and export it again");
+      "between points 1 and 2, at (0, 0.5, 1). Close the holes: GL Place On Platform's Fill Holes "
+      "(geolattice run --fill-holes), or repair the part in its CAD tool and export it again");
 }
 
 TEST(SurfaceCheck, OpenScanFromTestdataIsRejected) {

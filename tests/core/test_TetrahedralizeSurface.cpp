@@ -395,8 +395,8 @@ TEST(TetrahedralizeSurface, OpenSurfaceIsRejected) {
   EXPECT_EQ(
       errorOf([&] { tetrahedralizeSurface(box, edge(2.0)); }),
       "open surface: 3 boundary edges (the surface must be closed / watertight); the first is "
-      "between points 4 and 6, at (0, 0, 5). Close the holes (ParaView: Fill Holes, then "
-      "Clean; or repair the part in its CAD tool) and export it again");
+      "between points 4 and 6, at (0, 0, 5). Close the holes: GL Place On Platform's Fill Holes "
+      "(geolattice run --fill-holes), or repair the part in its CAD tool and export it again");
 }
 
 TEST(TetrahedralizeSurface, NonManifoldSurfaceIsRejected) {

@@ -3,7 +3,9 @@
 #include "GLTestErrorObserver.h"
 #include "GLTestProgress.h"
 #include "vtkGLArrayNames.h"
+#include "vtkGLMeshConversion.h"
 #include "vtkGLMeshReader.h"
+#include "mesh/SurfaceCheck.h"
 
 #include <gtest/gtest.h>
 
@@ -254,4 +256,51 @@ TEST(PlaceOnPlatform, ProgressAndAbort) {
   place->SetInputConnection(reader->GetOutputPort());
   glExpectProgressReport(place, 10);
   glExpectCleanAbort(place, glAbortAt(0.5));
+}
+
+TEST(PlaceOnPlatform, FillHolesClosesAnOpenSurfaceBeforePlacingIt) {
+  vtkNew<vtkGLPlaceOnPlatform> defaults;
+  EXPECT_FALSE(defaults->GetFillHoles());
+  // The bunny with the triangles around two of its vertices cut away: two holes in a curved
+  // surface, one of them at the bottom (its patch may reach below the rim: placed afterwards).
+  vtkSmartPointer<vtkPointSet> bunny = readModel("bunny.obj");
+  geolattice::TriangleSurface s = geolattice::toTriangleSurface(vtkPolyData::SafeDownCast(bunny));
+  int lowest = 0, highest = 0;
+  for (int i = 0; i < static_cast<int>(s.points.size()); ++i) {
+    lowest = s.points[i].z() < s.points[lowest].z() ? i : lowest;
+    highest = s.points[i].z() > s.points[highest].z() ? i : highest;
+  }
+  std::vector<std::array<int, 3>> kept;
+  for (const auto& t : s.triangles) {
+    const bool cut =
+        std::count(t.begin(), t.end(), lowest) + std::count(t.begin(), t.end(), highest);
+    if (!cut) {
+      kept.push_back(t);
+    }
+  }
+  ASSERT_LT(kept.size(), s.triangles.size());
+  s.triangles = kept;
+  vtkNew<vtkPolyData> open;
+  geolattice::fromTriangleSurface(s, open);
+  ASSERT_GT(geolattice::checkSurface(s).boundaryEdges, 0);
+
+  Placed asIs = place(open, 1.0, 0.0, true);  // off: passed on as it is
+  EXPECT_EQ(asIs.Output->GetNumberOfCells(), open->GetNumberOfCells());
+  EXPECT_FALSE(asIs.Output->GetFieldData()->GetArray(geolattice::arrays::FilledHoles));
+
+  vtkNew<vtkGLPlaceOnPlatform> filter;
+  vtkNew<GLTestErrorObserver> errors;
+  errors->Observe(filter);
+  filter->SetInputData(open);
+  filter->SetFillHoles(true);
+  filter->Update();
+  EXPECT_FALSE(errors->HasError()) << errors->Errors();
+  vtkPolyData* closed = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0));
+  ASSERT_TRUE(closed);
+  EXPECT_GT(closed->GetNumberOfCells(), open->GetNumberOfCells());
+  EXPECT_TRUE(geolattice::checkSurface(geolattice::toTriangleSurface(closed)).isClosedManifold());
+  EXPECT_EQ(fieldValue(closed, geolattice::arrays::FilledHoles, 0), 2.0);
+  EXPECT_EQ(fieldValue(closed, geolattice::arrays::FilledHoleTriangles, 0),
+            static_cast<double>(closed->GetNumberOfCells() - open->GetNumberOfCells()));
+  EXPECT_EQ(pointBounds(closed)[4], 0.0);  // the patches placed with the part
 }

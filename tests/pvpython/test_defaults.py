@@ -27,6 +27,7 @@ CLI_CHOICES = {
     "GLGeodesicDistanceFields.UseCholmod": {"cholmod": 1, "eigen": 0},
     "GLGCodeWriter.Kinematics": {"ac": 0, "bc": 1},
     "GLPlaceOnPlatform.CenterXY": {"centred": 1, "kept": 0},
+    "GLPlaceOnPlatform.FillHoles": {"on": 1, "off": 0},
     "GLToolpathPlanner.SupportPerimeter": {"perimeter": 1, "none": 0},
     "GLURScriptWriter.AllowUnreachable": {"on": 1, "off": 0},
     "GLNozzle.BuildPlate": {"obstacle": 1, "none": 0},
