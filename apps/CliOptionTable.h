@@ -74,6 +74,23 @@ CliOption number(const char* flag, const char* value, const char* section, const
           }};
 }
 
+/// A flag without a value that sets one filter's boolean property to `to`; the option listing
+/// shows the filter's value as `onWord` or `offWord` (the getter gives the default).
+template <class F, class Set, class Get>
+CliOption toggle(const char* flag, const char* section, const char* help,
+                 const std::string& property, F* (*filter)(P&), Set set, Get get, bool to,
+                 const char* onWord = "on", const char* offWord = "off") {
+  return {flag,
+          "",
+          section,
+          help,
+          property,
+          [=](P& p, RunOptions&, const std::string&) { (filter(p)->*set)(to); },
+          [=](P& p, const RunOptions&) {
+            return std::string((filter(p)->*get)() ? onWord : offWord);
+          }};
+}
+
 inline vtkGLNozzle* nozzle(P& p) {
   return p.Nozzle;
 }

@@ -40,22 +40,16 @@ void addModelOptions(std::vector<CliOption>& t) {
                      "scale so the largest bounding-box side is MM (0 = use --scale)",
                      "GLPlaceOnPlatform.FitSize", placement, &vtkGLPlaceOnPlatform::SetFitSize,
                      &vtkGLPlaceOnPlatform::GetFitSize));
-  t.push_back({"--no-center", "", place,
-               "keep x and y as they are (default: bounding box centred on x = y = 0)",
-               "GLPlaceOnPlatform.CenterXY",
-               [](P& p, RunOptions&, const std::string&) { p.Placement->SetCenterXY(false); },
-               [](P& p, const RunOptions&) {
-                 return std::string(p.Placement->GetCenterXY() ? "centred" : "kept");
-               }});
+  t.push_back(toggle("--no-center", place,
+                     "keep x and y as they are (default: bounding box centred on x = y = 0)",
+                     "GLPlaceOnPlatform.CenterXY", placement, &vtkGLPlaceOnPlatform::SetCenterXY,
+                     &vtkGLPlaceOnPlatform::GetCenterXY, false, "centred", "kept"));
 
-  t.push_back({"--fill-holes", "", place,
-               "close the holes of an open surface (a scan) before placing it: each gets\n"
-               "a patch faired into the surface around it (look at it before printing)",
-               "GLPlaceOnPlatform.FillHoles",
-               [](P& p, RunOptions&, const std::string&) { p.Placement->SetFillHoles(true); },
-               [](P& p, const RunOptions&) {
-                 return std::string(p.Placement->GetFillHoles() ? "on" : "off");
-               }});
+  t.push_back(toggle("--fill-holes", place,
+                     "close the holes of an open surface (a scan) before placing it: each gets\n"
+                     "a patch faired into the surface around it (look at it before printing)",
+                     "GLPlaceOnPlatform.FillHoles", placement, &vtkGLPlaceOnPlatform::SetFillHoles,
+                     &vtkGLPlaceOnPlatform::GetFillHoles, true));
 
   const char* orient = "Orientation (which side of the part faces the plate)";
   t.push_back({"--orient", "MODE", orient,

@@ -104,13 +104,10 @@ void addPrintOptions(std::vector<CliOption>& t) {
                      "the tip under the face's rim (within its radius + MM of the axis)",
                      "GLNozzle.FaceContact", nozzle, &vtkGLNozzle::SetFaceContact,
                      &vtkGLNozzle::GetFaceContact));
-  t.push_back({"--no-plate", "", seq,
-               "the build plate is no obstacle (default: it is, like printed material)",
-               "GLNozzle.BuildPlate",
-               [](P& p, RunOptions&, const std::string&) { p.Nozzle->SetBuildPlate(false); },
-               [](P& p, const RunOptions&) {
-                 return std::string(p.Nozzle->GetBuildPlate() ? "obstacle" : "none");
-               }});
+  t.push_back(toggle("--no-plate", seq,
+                     "the build plate is no obstacle (default: it is, like printed material)",
+                     "GLNozzle.BuildPlate", nozzle, &vtkGLNozzle::SetBuildPlate,
+                     &vtkGLNozzle::GetBuildPlate, false, "obstacle", "none"));
   t.push_back(number(
       "--plate-margin", "MM", seq, "the build plate extends this far beyond the part's footprint",
       "GLNozzle.PlateMargin", nozzle, &vtkGLNozzle::SetPlateMargin, &vtkGLNozzle::GetPlateMargin));
@@ -196,12 +193,10 @@ void addPrintOptions(std::vector<CliOption>& t) {
                      "support perimeter tooth length along trimmed edges, 0 = 2w",
                      "GLToolpathPlanner.ToothLength", planner,
                      &vtkGLToolpathPlanner::SetToothLength, &vtkGLToolpathPlanner::GetToothLength));
-  t.push_back({"--no-perimeter", "", path, "no support perimeter where boundary edges were trimmed",
-               "GLToolpathPlanner.SupportPerimeter",
-               [](P& p, RunOptions&, const std::string&) { p.Planner->SetSupportPerimeter(false); },
-               [](P& p, const RunOptions&) {
-                 return std::string(p.Planner->GetSupportPerimeter() ? "perimeter" : "none");
-               }});
+  t.push_back(toggle(
+      "--no-perimeter", path, "no support perimeter where boundary edges were trimmed",
+      "GLToolpathPlanner.SupportPerimeter", planner, &vtkGLToolpathPlanner::SetSupportPerimeter,
+      &vtkGLToolpathPlanner::GetSupportPerimeter, false, "perimeter", "none"));
   t.push_back({"--replay-steps", "N", path,
                "steps of the print replay (toolpath.pvd: step k adds the piece\n"
                "printed between progress (k-1)/N and k/N; all pieces together\n"

@@ -91,32 +91,23 @@ void addProgramOptions(std::vector<CliOption>& t) {
                      "re-planned around larger ones",
                      "GLURScriptWriter.MaxJointStep", script, &vtkGLURScriptWriter::SetMaxJointStep,
                      &vtkGLURScriptWriter::GetMaxJointStep));
-  t.push_back(
-      {"--no-layout-search", "", prog,
-       "do not search another mounting of the part on the flange when\n"
-       "the robot cannot follow the path as laid out",
-       "GLURScriptWriter.SearchCellLayout",
-       [](P& p, RunOptions&, const std::string&) { p.ScriptWriter->SetSearchCellLayout(false); },
-       [](P& p, const RunOptions&) {
-         return std::string(p.ScriptWriter->GetSearchCellLayout() ? "search" : "off");
-       }});
-  t.push_back({"--no-reconfiguration", "", prog,
-               "do not change the robot's configuration at air moves (away from\n"
-               "the part) when one IK branch cannot follow the whole path",
-               "GLURScriptWriter.Reconfigure",
-               [](P& p, RunOptions&, const std::string&) { p.ScriptWriter->SetReconfigure(false); },
-               [](P& p, const RunOptions&) {
-                 return std::string(p.ScriptWriter->GetReconfigure() ? "on" : "off");
-               }});
-  t.push_back(
-      {"--allow-unreachable", "", prog,
-       "write the program even if points are unreachable (the robot\n"
-       "holds still there; for simulation). Default: no program",
-       "GLURScriptWriter.AllowUnreachable",
-       [](P& p, RunOptions&, const std::string&) { p.ScriptWriter->SetAllowUnreachable(true); },
-       [](P& p, const RunOptions&) {
-         return std::string(p.ScriptWriter->GetAllowUnreachable() ? "on" : "off");
-       }});
+  t.push_back(toggle("--no-layout-search", prog,
+                     "do not search another mounting of the part on the flange when\n"
+                     "the robot cannot follow the path as laid out",
+                     "GLURScriptWriter.SearchCellLayout", script,
+                     &vtkGLURScriptWriter::SetSearchCellLayout,
+                     &vtkGLURScriptWriter::GetSearchCellLayout, false, "search", "off"));
+  t.push_back(toggle("--no-reconfiguration", prog,
+                     "do not change the robot's configuration at air moves (away from\n"
+                     "the part) when one IK branch cannot follow the whole path",
+                     "GLURScriptWriter.Reconfigure", script, &vtkGLURScriptWriter::SetReconfigure,
+                     &vtkGLURScriptWriter::GetReconfigure, false));
+  t.push_back(toggle("--allow-unreachable", prog,
+                     "write the program even if points are unreachable (the robot\n"
+                     "holds still there; for simulation). Default: no program",
+                     "GLURScriptWriter.AllowUnreachable", script,
+                     &vtkGLURScriptWriter::SetAllowUnreachable,
+                     &vtkGLURScriptWriter::GetAllowUnreachable, true));
   t.push_back(
       {"--gcode", "KIN", prog, "5-axis G-code table kinematics: ac | bc | none",
        "GLGCodeWriter.Kinematics",

@@ -263,11 +263,8 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::addFieldArray(fd, gl::arrays::OrientChosenRank, {static_cast<double>(rank)});
     gl::addFieldArray(fd, gl::arrays::OrientPedestalHeight, {chosen.pedestal});
     if (merged) {  // as GL Tetrahedralize Surface says it
-      gl::addFieldArray(fd, gl::arrays::MergedBodies, {static_cast<double>(repaired.mergedBodies)});
-      gl::addFieldArray(fd, gl::arrays::DuplicateTriangles,
-                        {static_cast<double>(repaired.duplicateTriangles)});
-      gl::addFieldArray(fd, gl::arrays::ReorientedTriangles,
-                        {static_cast<double>(repaired.reorientedTriangles)});
+      gl::addSurfaceRepairArrays(fd, repaired.mergedBodies, repaired.duplicateTriangles,
+                                 repaired.reorientedTriangles);
     }
     gl::addFieldArray(fd, gl::arrays::OrientPedestalContactHeight, {options.pedestalContactHeight});
     output->SetFieldData(fd);

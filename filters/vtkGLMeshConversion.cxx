@@ -637,4 +637,11 @@ void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>
   fd->AddArray(doubleArray(name, values, components));
 }
 
+void addSurfaceRepairArrays(vtkFieldData* fd, int mergedBodies, int duplicateTriangles,
+                            int reorientedTriangles) {
+  addFieldArray(fd, arrays::MergedBodies, {static_cast<double>(mergedBodies)});
+  addFieldArray(fd, arrays::DuplicateTriangles, {static_cast<double>(duplicateTriangles)});
+  addFieldArray(fd, arrays::ReorientedTriangles, {static_cast<double>(reorientedTriangles)});
+}
+
 }  // namespace geolattice

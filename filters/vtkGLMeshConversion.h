@@ -114,6 +114,10 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n);
 /// Adds doubleArray(name, values, components) to the field data (replacing one of that name).
 void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values,
                    int components = 1);
+/// The repairs a surface got before meshing (core/mesh/SurfaceRepair.h; mergedBodies also counts
+/// crossing bodies united): field data MergedBodies, DuplicateTriangles, ReorientedTriangles.
+void addSurfaceRepairArrays(vtkFieldData* fd, int mergedBodies, int duplicateTriangles,
+                            int reorientedTriangles);
 
 }  // namespace geolattice
 #endif

@@ -179,9 +179,8 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::TetGenSpeculativeRun, result.speculativeRun ? 1.0 : 0.0);
     addValue(fd, gl::arrays::TetGenSurfaceBoundCount, result.surfaceBoundCount ? 1.0 : 0.0);
     addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
-    addValue(fd, gl::arrays::MergedBodies, static_cast<double>(result.mergedBodies));
-    addValue(fd, gl::arrays::DuplicateTriangles, static_cast<double>(result.duplicateTriangles));
-    addValue(fd, gl::arrays::ReorientedTriangles, static_cast<double>(result.reorientedTriangles));
+    gl::addSurfaceRepairArrays(fd, result.mergedBodies, result.duplicateTriangles,
+                               result.reorientedTriangles);
     addValue(fd, gl::arrays::CavityRegions, static_cast<double>(result.removedCavityRegions));
     if (result.mergedBodies > 0) {
       vtkWarningMacro(<< "bodies of the surface touch or cross each other; meshed as their union ("

@@ -74,6 +74,18 @@ class CliErrorTest(unittest.TestCase):
             self.assertEqual(leftovers, [], "temporary files left behind")
         return lines[0]
 
+    def meshed_with_note(self, model, note, *extra, out=None):
+        """Runs `model` through the mesh stage (with `extra`), expects success and `note` on
+        stderr, and returns report.json."""
+        out = out or self.out
+        result = self.run_cli(model, "-o", out, "-q", "--until", "mesh", *extra)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn(note, result.stderr)
+        with open(os.path.join(out, "report.json")) as f:
+            report = json.load(f)
+        self.assertGreater(report["mesh"]["tets"], 0)
+        return report
+
     # Input files
     def test_missing_file(self):
         self.expect_error([os.path.join(self.tmp, "nope.stl")], "file not found")
@@ -89,14 +101,9 @@ class CliErrorTest(unittest.TestCase):
         model = write(os.path.join(self.tmp, "open.obj"), open_box)
         self.expect_error([model], "open surface", "--fill-holes")
         # Asked for, the hole is closed before the part is placed, and said.
-        result = self.run_cli(model, "-o", self.out, "-q", "--scale", "20", "--until", "mesh", "--fill-holes")
-        self.assertEqual(result.returncode, 0, result.stderr)
-        self.assertIn("1 hole of the surface closed", result.stderr)
-        with open(os.path.join(self.out, "report.json")) as f:
-            report = json.load(f)
+        report = self.meshed_with_note(model, "1 hole of the surface closed", "--scale", "20", "--fill-holes")
         self.assertEqual(report["input"]["filled_holes"], 1)
         self.assertGreaterEqual(report["input"]["filled_hole_triangles"], 2)
-        self.assertGreater(report["mesh"]["tets"], 0)
 
     def test_non_manifold_surface(self):
         # The cube plus a fin: a third triangle on the edge (1,2).
@@ -118,13 +125,8 @@ class CliErrorTest(unittest.TestCase):
         faces = "".join("f %d %d %d\n" % tuple(int(i) + 8 for i in line.split()[1:])
                         for line in CUBE_OBJ.splitlines() if line.startswith("f"))
         model = write(os.path.join(self.tmp, "two.obj"), CUBE_OBJ + second + faces)
-        result = self.run_cli(model, "-o", self.out, "-q", "--scale", "20", "--until", "mesh")
-        self.assertEqual(result.returncode, 0, result.stderr)
-        self.assertIn("bodies of the surface touch or cross each other", result.stderr)
-        with open(os.path.join(self.out, "report.json")) as f:
-            report = json.load(f)
+        report = self.meshed_with_note(model, "bodies of the surface touch or cross each other", "--scale", "20")
         self.assertEqual(report["mesh"]["merged_bodies"], 1)
-        self.assertGreater(report["mesh"]["tets"], 0)
 
     def test_bodies_touching_along_a_face_print_as_their_union(self):
         # A post with a shelf touching its side, as an STL of two bodies gives it: the reader welds
@@ -140,12 +142,8 @@ class CliErrorTest(unittest.TestCase):
         shelf_v, shelf_f = box(10, 0, 30, 40, 20, 40, 8)
         model = write(os.path.join(self.tmp, "shelf.obj"), post_v + shelf_v + post_f + shelf_f)
         for extra in ([], ["--orient", "auto"]):
-            out = self.out + "-".join(extra)
-            result = self.run_cli(model, "-o", out, "-q", "--until", "mesh", *extra)
-            self.assertEqual(result.returncode, 0, result.stderr)
-            self.assertIn("bodies of the surface touch or cross each other", result.stderr)
-            with open(os.path.join(out, "report.json")) as f:
-                report = json.load(f)
+            report = self.meshed_with_note(model, "bodies of the surface touch or cross each other", *extra,
+                                           out=self.out + "-".join(extra))
             self.assertEqual(report["mesh"]["merged_bodies"], 1)
 
     def test_doubled_and_flipped_faces_are_repaired(self):
@@ -162,15 +160,10 @@ class CliErrorTest(unittest.TestCase):
                                  (flipped, "1 triangle of the surface ran against its neighbours",
                                   "reoriented_triangles")):
             for extra in ([], ["--orient", "auto"]):
-                out = self.out + os.path.basename(model) + "-".join(extra)
-                result = self.run_cli(model, "-o", out, "-q", "--scale", "20", "--until", "mesh", *extra)
-                self.assertEqual(result.returncode, 0, result.stderr)
-                self.assertIn(note, result.stderr)
-                with open(os.path.join(out, "report.json")) as f:
-                    report = json.load(f)
+                report = self.meshed_with_note(model, note, "--scale", "20", *extra,
+                                               out=self.out + os.path.basename(model) + "-".join(extra))
                 self.assertEqual(report["mesh"][key], 2 if key == "duplicate_triangles" else 1)
                 self.assertEqual(report["mesh"]["merged_bodies"], 0)
-                self.assertGreater(report["mesh"]["tets"], 0)
 
     def test_inverted_tet(self):
         tet = "4 vertices\n1 tets\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n4 0 2 1 3\n"
