@@ -131,6 +131,9 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
                         {static_cast<double>(filled.holes)});
       gl::addFieldArray(output->GetFieldData(), gl::arrays::FilledHoleTriangles,
                         {static_cast<double>(filled.addedTriangles)});
+    } else {  // not this placement's (e.g. a part saved from an earlier run)
+      output->GetFieldData()->RemoveArray(gl::arrays::FilledHoles);
+      output->GetFieldData()->RemoveArray(gl::arrays::FilledHoleTriangles);
     }
     this->UpdateProgress(1.0);
   });

@@ -95,11 +95,11 @@ bool slivery(const TriangleSurface& s) {
   return 10 * bad > s.triangles.size();
 }
 
-/// Pins the vertices of `mesh` within `reach` of one of `far` (the far vertices and the input
-/// around them: one pinned vertex alone leaves its neighbours to be cut off in the next
-/// remeshing). A hash grid of reach-sized cells keeps it linear.
+/// Pins the vertices of `mesh` within `reach` of one of the points `around` (e.g. far vertices:
+/// they and the input around them, as one pinned vertex alone leaves its neighbours to be cut off
+/// in the next remeshing). A hash grid of reach-sized cells keeps it linear.
 template <class PinMap>
-void pinAround(const Mesh& mesh, const std::vector<Mesh::Vertex_index>& far, double reach,
+void pinAround(const Mesh& mesh, const std::vector<K::Point_3>& around, double reach,
                PinMap& pinned) {
   auto cell = [reach](const K::Point_3& p, int dx, int dy, int dz) {
     const auto index = [reach](double x, int d) {
@@ -108,8 +108,8 @@ void pinAround(const Mesh& mesh, const std::vector<Mesh::Vertex_index>& far, dou
     return (index(p.x(), dx) << 42) | (index(p.y(), dy) << 21) | index(p.z(), dz);
   };
   std::unordered_map<std::int64_t, std::vector<K::Point_3>> grid;
-  for (Mesh::Vertex_index f : far) {
-    grid[cell(mesh.point(f), 0, 0, 0)].push_back(mesh.point(f));
+  for (const K::Point_3& f : around) {
+    grid[cell(f, 0, 0, 0)].push_back(f);
   }
   for (Mesh::Vertex_index v : mesh.vertices()) {
     const K::Point_3& p = mesh.point(v);
@@ -213,14 +213,25 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
   };
   // The one-sided distance of the input from `mesh` (its vertices under the base lifted onto
   // it) when it is usable (closed, not self-intersecting, within the tolerance when remeshing),
-  // else a reason in r.refused and, when `far` is given, the input vertices farther than the
-  // tolerance.
+  // else a reason in r.refused and, when `far` is given, where it went wrong: the input
+  // vertices farther than the tolerance, or the corners of the triangles that cross each other.
   auto accept = [&](Mesh& mesh, const char* what, bool collapsed,
-                    std::vector<Mesh::Vertex_index>* far = nullptr) {
+                    std::vector<K::Point_3>* far = nullptr) {
     mesh.collect_garbage();
     liftOntoTheBase(mesh);
     if (PMP::does_self_intersect(mesh)) {
       r.refused = std::string("the ") + what + " surface self-intersects";
+      if (far) {
+        std::vector<std::pair<Mesh::Face_index, Mesh::Face_index>> crossing;
+        PMP::self_intersections(faces(mesh), mesh, std::back_inserter(crossing));
+        for (const auto& [a, b] : crossing) {
+          for (const Mesh::Face_index f : {a, b}) {
+            for (const Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+              far->push_back(mesh.point(v));
+            }
+          }
+        }
+      }
       return false;
     }
     using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
@@ -232,7 +243,7 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
       const double d2 = CGAL::to_double(tree.squared_distance(input.point(v)));
       h2 = std::max(h2, d2);
       if (far && d2 > tolerance * tolerance) {
-        far->push_back(v);
+        far->push_back(input.point(v));
       }
     }
     if (remesh && std::sqrt(h2) > tolerance) {
@@ -261,7 +272,9 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
   };
   if (remesh) {
     // Input vertices that a remeshing left farther than the tolerance (a sharp tip or a thin
-    // ridge it cut off) stay where they are in the next one (at most kPinRounds more): a
+    // ridge it cut off), and those around triangles it made cross (the filled bunny scan turned
+    // by the orientation search: every edge refused so, 331k tets from the collapse's surface, 82k
+    // with these pins), stay where they are in the next one (at most kPinRounds more): a
     // generated 100 mm spire with a 1 mm tip, remeshed for 2 mm, was 0.6 mm off at its tip, and
     // the collapse that ran instead gave needles. Where that is not enough (rounded features
     // narrower than the edge all over: a gear's teeth, a cone's rounded tip), the surface is
@@ -283,7 +296,7 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
                 .edge_is_constrained_map(sharp)
                 .vertex_is_constrained_map(
                     mesh.property_map<Mesh::Vertex_index, bool>("v:pinned").first));
-        std::vector<Mesh::Vertex_index> far;
+        std::vector<K::Point_3> far;  // where it went wrong: the input is kept around there
         if (accept(mesh, "remeshed", false, &far)) {
           r.refused = firstRefusal;  // the target edge's, if it was refused
           r.remeshEdgeLength = edge;
@@ -292,7 +305,7 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
         }
         if (far.empty() || round == kPinRounds ||
             static_cast<double>(far.size()) > kMostPinnedFraction * input.number_of_vertices()) {
-          break;  // self-intersecting, still too far, or too far in too many places
+          break;  // still too far or crossing, or in too many places
         }
         pinAround(base, far, edge, pinned);
       }
