@@ -205,7 +205,6 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     // Bodies the reader welded where they touch along a face: one solid before it is turned (a
     // union of faces that are coplanar as read; turned, they may not be exactly).
     const gl::SurfaceRepairCounts repaired = gl::repairSurface(surface);
-    const bool merged = repaired.any();
     if (!this->Cache || this->Cache->filterTime != this->GetMTime() ||
         this->Cache->inputTime != input->GetMTime()) {
       this->Cache.reset();
@@ -227,7 +226,7 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
         std::min(this->CandidateRank, static_cast<int>(this->Cache->byRank.size()) - 1);
     const gl::OrientCandidate& chosen = r.candidates[this->Cache->byRank[rank]];
     const gl::TriangleSurface placed = gl::orientSurface(surface, chosen.rotation);
-    if (merged) {
+    if (repaired.any()) {
       gl::fromTriangleSurface(placed, output);  // new triangles: the input's arrays do not fit
     } else {
       output->ShallowCopy(input);
@@ -262,7 +261,7 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::addFieldArray(fd, gl::arrays::OrientRefined, {static_cast<double>(r.refined)});
     gl::addFieldArray(fd, gl::arrays::OrientChosenRank, {static_cast<double>(rank)});
     gl::addFieldArray(fd, gl::arrays::OrientPedestalHeight, {chosen.pedestal});
-    if (merged) {  // as GL Tetrahedralize Surface says it
+    if (repaired.any()) {  // as GL Tetrahedralize Surface says it
       gl::addSurfaceRepairArrays(fd, repaired.mergedBodies, repaired.duplicateTriangles,
                                  repaired.reorientedTriangles);
     }

@@ -28,7 +28,7 @@ HoleFillingResult fillHoles(TriangleSurface& surface) {
   if (cycles.empty()) {
     return result;
   }
-  const size_t facesBefore = mesh.number_of_faces(), verticesBefore = mesh.number_of_vertices();
+  const size_t facesBefore = mesh.number_of_faces();
   for (const cgal::SurfaceMesh::Halfedge_index h : cycles) {
     std::vector<cgal::SurfaceMesh::Face_index> patch;
     std::vector<cgal::SurfaceMesh::Vertex_index> inner;
@@ -55,7 +55,6 @@ HoleFillingResult fillHoles(TriangleSurface& surface) {
     ++result.holes;
   }
   result.addedTriangles = static_cast<int>(mesh.number_of_faces() - facesBefore);
-  result.addedPoints = static_cast<int>(mesh.number_of_vertices() - verticesBefore);
   surface = cgal::toTriangleSurface(mesh);
   return result;
 }

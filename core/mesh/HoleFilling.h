@@ -18,7 +18,6 @@ namespace geolattice {
 struct HoleFillingResult {
   int holes = 0;           ///< boundary cycles closed
   int addedTriangles = 0;  ///< triangles of their patches
-  int addedPoints = 0;     ///< points inside the patches (refinement)
 };
 
 /// Fills every hole of `surface` (unchanged when it has none). Throws GeoLatticeError when the
