@@ -16,6 +16,7 @@
 #include "GLPrintPipeline.h"
 #include "common/Error.h"
 #include "sequence/PrintSequencer.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 #include "vtkGLArrayNames.h"
 
 #include <vtkAlgorithm.h>
@@ -153,6 +154,10 @@ private:
       this->LastSeconds = 0;
     }
     reportMesh(tets, !tetMesh, this->Section("mesh"));
+    if (this->Section("mesh").value("tetgen_quality_bound_dropped", false)) {
+      this->Note(qualityBoundDroppedNote(this->Section("mesh").value("tets", 0)) +
+                 " (report.json mesh.tetgen_quality_bound_dropped)");
+    }
     for (const std::string& note :
          reportSurfaceRepairs(P.Orientation->GetOutputDataObject(0), tets, this->Section("mesh"))) {
       this->Note(note);

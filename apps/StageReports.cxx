@@ -117,6 +117,7 @@ void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {
     s["tetgen_speculative_run"] = fieldValue(tets, arrays::TetGenSpeculativeRun) != 0;
     s["tetgen_count_set_by_surface"] = fieldValue(tets, arrays::TetGenSurfaceBoundCount) != 0;
     s["removed_flat_tets"] = fieldValue(tets, arrays::RemovedFlatTets);
+    s["tetgen_quality_bound_dropped"] = fieldValue(tets, arrays::TetGenQualityBoundDropped) != 0;
     s["cavities"] = fieldValue(tets, arrays::CavityRegions);
   }
   s["points"] = points(tets);

@@ -96,6 +96,8 @@ constexpr const char* TetGenSpeculativeRun =
 constexpr const char* TetGenSurfaceBoundCount =
     "TetGenSurfaceBoundCount";  ///< 1: the count stays above the target whatever the edge
 constexpr const char* RemovedFlatTets = "RemovedFlatTets";  ///< zero-volume slivers dropped
+/// 1: no quality-bounded TetGen run finished in time; the mesh has no radius-edge bound.
+constexpr const char* TetGenQualityBoundDropped = "TetGenQualityBoundDropped";
 // Overhang analysis (vtkGLOverhangAnalysis): cell data on the boundary surface.
 constexpr const char* OverhangPlanar =
     "OverhangPlanar";  ///< θ for d = +z, planar 2.5-axis slicing (degrees)

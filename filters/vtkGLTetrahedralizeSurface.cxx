@@ -179,6 +179,7 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::TetGenSpeculativeRun, result.speculativeRun ? 1.0 : 0.0);
     addValue(fd, gl::arrays::TetGenSurfaceBoundCount, result.surfaceBoundCount ? 1.0 : 0.0);
     addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
+    addValue(fd, gl::arrays::TetGenQualityBoundDropped, result.qualityBoundDropped ? 1.0 : 0.0);
     gl::addSurfaceRepairArrays(fd, result.mergedBodies, result.duplicateTriangles,
                                result.reorientedTriangles);
     addValue(fd, gl::arrays::CavityRegions, static_cast<double>(result.removedCavityRegions));
@@ -195,6 +196,9 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
       vtkWarningMacro(<< result.reorientedTriangles
                       << " triangles of the surface ran against their neighbours; turned to agree "
                          "with them");
+    }
+    if (result.qualityBoundDropped) {
+      vtkWarningMacro(<< gl::qualityBoundDroppedNote(result.tetCount));
     }
     if (!result.simplificationRefused.empty() && !result.simplified) {
       vtkWarningMacro(<< "the simplified surface was not used (" << result.simplificationRefused

@@ -460,7 +460,9 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
   // A coarse surface on a thin wall can make TetGen's quality bound refine the wall far beyond
   // the target (a generated 2 mm curved wall: 573,778 tets for 15k), and every evaluation costs
   // in proportion: mesh again at a fixed edge, twice as long, while that helps.
-  for (int again = 0; again < 2 && tets.mesh.tets.size() > kCoarseOvershoot * o.evaluationTets;
+  // (Not when the surface was meshed without TetGen's bounds: no edge length changes that mesh.)
+  for (int again = 0; again < 2 && !tets.qualityBoundDropped &&
+                      tets.mesh.tets.size() > kCoarseOvershoot * o.evaluationTets;
        ++again) {
     TetrahedralizeOptions longer = tetOptions;
     longer.targetEdgeLength = 2.0 * tets.targetEdgeLength;

@@ -65,6 +65,10 @@ constexpr double kRetryEdgeFactors[] = {0.93, 1.07, 0.87, 1.15};
 // 9-11 s, so the limit is 5x its time; a 75k-tet one 1-3 s, limit 13 s).
 constexpr double kTetGenBaseSeconds = 10.0;
 constexpr double kTetGenSecondsPerTet = 40e-6;
+// The unbounded run's (constrained Delaunay, "pAQ") limit: kTetGenBaseSeconds plus this much per
+// surface triangle: it adds no point inside, so its time follows the surface (a 143,520-triangle
+// thin ellipsoid: 3.6 s, 25 us per triangle; the limit is 5x that).
+constexpr double kUnboundedSecondsPerTriangle = 125e-6;
 
 constexpr double kLargestMeanTetVolumeOverBound = 0.55;
 // Largest accepted relative difference between the winding-weighted tet volume and the
@@ -250,6 +254,19 @@ void TetrahedralizeOptions::validate() const {
     throw GeoLatticeError("surface simplification threshold must be >= 0 (0 = never), got " +
                           std::to_string(this->simplifyFinerThan));
   }
+  if (!(this->tetgenSecondsLimit >= 0) || !std::isfinite(this->tetgenSecondsLimit)) {
+    throw GeoLatticeError("TetGen time limit must be >= 0 s (0 = automatic), got " +
+                          std::to_string(this->tetgenSecondsLimit));
+  }
+}
+
+std::string qualityBoundDroppedNote(int tetCount) {
+  return "TetGen's quality refinement did not finish within its time limit (it does not end "
+         "near a knife edge or a needle tip of the surface, e.g. a rim thinner than the "
+         "nozzle's bead): the surface was meshed without the quality and volume bounds (" +
+         std::to_string(tetCount) +
+         " tets, not quality-shaped; the layers follow the part less smoothly). A part with such "
+         "edges prints them thicker than modelled: round or thicken them for a better mesh";
 }
 
 TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
@@ -344,10 +361,17 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   // Runs started ahead (the first and the speculative run, kSpeculativeEdgeFactor), by edge
   // length: runOnce reads one when the search asks for its edge length; the others are killed.
   std::map<double, std::unique_ptr<TetGenRun>> startedRuns;
-  auto runOnce = [&](double edge) {
+  // unbounded: TetGen's constrained Delaunay tetrahedralization of the surface alone ("pAQ"),
+  // the last resort when the quality-bounded runs do not finish.
+  auto runOnce = [&](double edge, bool unbounded = false) {
     const double limit =
-        kTetGenBaseSeconds + kTetGenSecondsPerTet * result.enclosedVolume /
-                                 (kGuessMeanTetVolumeOverBound * regularTetVolume(edge));
+        options.tetgenSecondsLimit > 0 ? options.tetgenSecondsLimit
+        : unbounded
+            ? kTetGenBaseSeconds +
+                  kUnboundedSecondsPerTriangle * static_cast<double>(surface.triangles.size())
+            : kTetGenBaseSeconds + kTetGenSecondsPerTet * result.enclosedVolume /
+                                       (kGuessMeanTetVolumeOverBound * regularTetVolume(edge));
+    const std::string switches = unbounded ? "pAQ" : switchesFor(edge);
     auto started = std::chrono::steady_clock::now();
     timedOut = false;
     const std::function<bool()> abortOrTimeout = [&] {
@@ -360,13 +384,13 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     };
     TetGenOutput out;
     try {
-      const auto ahead = startedRuns.find(edge);
+      const auto ahead = unbounded ? startedRuns.end() : startedRuns.find(edge);
       if (ahead != startedRuns.end()) {
         const std::unique_ptr<TetGenRun> run = std::move(ahead->second);
         startedRuns.erase(ahead);
         out = run->finish(abortOrTimeout);
       } else {
-        out = runTetGen(surface, switchesFor(edge), abortOrTimeout, intersectionTest);
+        out = runTetGen(surface, switches, abortOrTimeout, intersectionTest);
       }
     } catch (const GeoLatticeError& e) {
       if (!result.simplified || (options.shouldAbort && options.shouldAbort())) {
@@ -386,11 +410,11 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       result.enclosedVolume = inputVolume;
       result.meshedTriangles = surface.triangles.size();
       intersectionTest = IntersectionTest::Run;
-      out = runTetGen(surface, switchesFor(edge), abortOrTimeout, intersectionTest);
+      out = runTetGen(surface, switches, abortOrTimeout, intersectionTest);
     }
     intersectionTest = IntersectionTest::Skip;  // this surface passed: not again at other edges
     if (out.mesh.tets.empty()) {
-      throw GeoLatticeError("TetGen produced no tetrahedra (switches " + switchesFor(edge) + ")");
+      throw GeoLatticeError("TetGen produced no tetrahedra (switches " + switches + ")");
     }
     const RegionSummary regions = classifyRegions(surface, out);
     removedRegions = regions.removedRegions;
@@ -415,9 +439,28 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   };
   // TetGen's output must be a valid mesh. Flat slivers (zero volume: all four corners in one
   // plane, where boundary facets are nearly coplanar) are dropped, a documented repair that
-  // changes no volume; inverted or overlapping tets, or a run past its time limit, make the same
-  // target run again with the edge length changed by kRetryEdgeFactors.
-  TetMeshCheckReport lastCheck;  // of the mesh the last run() returned
+  // changes no volume; inverted or overlapping tets make the same target run again with the
+  // edge length changed by kRetryEdgeFactors. A run past its time limit is not retried at other
+  // edges (its refinement does not end near a knife edge or a needle tip of the surface,
+  // whatever the edge: a 2 mm thin ellipsoid timed out at all five): the surface is meshed
+  // without the quality and volume bounds instead (qualityBoundDropped), which takes seconds.
+  TetMeshCheckReport lastCheck;        // of the mesh the last run() returned
+  auto checked = [&](TetMesh& mesh) {  // true: valid after its flat slivers are dropped
+    orientTetsPositively(mesh);
+    result.removedFlatTets += removeFlatTets(mesh);
+    const TetMeshCheckReport check = checkTetMesh(mesh);
+    if (check.invertedTets == 0 && check.nonManifoldFaces == 0 && check.tetCount > 0) {
+      lastCheck = check;
+      return true;
+    }
+    lastCheck = check;
+    return false;
+  };
+  auto invalid = [&](const std::string& what) {
+    return "TetGen's mesh " + what + " has " + std::to_string(lastCheck.invertedTets) +
+           " inverted tets and " + std::to_string(lastCheck.nonManifoldFaces) +
+           " overlapping faces";
+  };
   auto run = [&](double edge) {
     std::string failure;
     std::vector<double> factors = {1.0};
@@ -429,24 +472,35 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       TetMesh mesh;
       try {
         mesh = runOnce(edge * factor);
-      } catch (const GeoLatticeError& e) {
+      } catch (const GeoLatticeError&) {
         if (!timedOut) {
           throw;
         }
-        failure = "TetGen did not finish within its time limit at edge length " +
-                  formatSwitchNumber(edge * factor) + " mm";
-        continue;
-      }
-      orientTetsPositively(mesh);
-      result.removedFlatTets += removeFlatTets(mesh);
-      const TetMeshCheckReport check = checkTetMesh(mesh);
-      if (check.invertedTets == 0 && check.nonManifoldFaces == 0 && check.tetCount > 0) {
-        lastCheck = check;
+        ++result.tetgenRetries;
+        try {
+          mesh = runOnce(edge, /*unbounded=*/true);
+        } catch (const GeoLatticeError&) {
+          if (!timedOut) {
+            throw;
+          }
+          throw GeoLatticeError("TetGen did not finish within its time limit at edge length " +
+                                formatSwitchNumber(edge * factor) +
+                                " mm, nor without its quality bound; give another edge length "
+                                "(--edge-length) or repair the surface");
+        }
+        if (!checked(mesh)) {
+          throw GeoLatticeError("TetGen did not finish within its time limit at edge length " +
+                                formatSwitchNumber(edge * factor) + " mm, and " +
+                                invalid("without its quality bound") +
+                                "; give another edge length (--edge-length) or repair the surface");
+        }
+        result.qualityBoundDropped = true;
         return mesh;
       }
-      failure = "TetGen's mesh at edge length " + formatSwitchNumber(edge * factor) + " mm has " +
-                std::to_string(check.invertedTets) + " inverted tets and " +
-                std::to_string(check.nonManifoldFaces) + " overlapping faces";
+      if (checked(mesh)) {
+        return mesh;
+      }
+      failure = invalid("at edge length " + formatSwitchNumber(edge * factor) + " mm");
     }
     throw GeoLatticeError(failure +
                           ", and at 7 % and 15 % shorter and longer edges; give "
@@ -498,7 +552,9 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       }
       // The first run decides (its own error, if any, is the one reported).
     }
-    if (speculative && (miss(speculative->mesh.tets.size()) <= std::log(kAutoTolerance) ||
+    // Meshed without the bounds, the surface alone sets the count: no edge changes it.
+    if (speculative && (result.qualityBoundDropped ||
+                        miss(speculative->mesh.tets.size()) <= std::log(kAutoTolerance) ||
                         speculative->mesh.tets.size() > target)) {
       // Within the tolerance, or too many tets even here (kSecondSlopeOver): the first run is
       // not needed, stop it now, it holds a core.
@@ -515,7 +571,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   double bestEdge = startEdge;
   result.removedCavityRegions = removedRegions;
   result.attempts = 1;
-  if (automatic) {
+  if (automatic && !result.qualityBoundDropped) {
     // Secant search on log(count) = slope * log(edge) + c. A volume-filling mesh has slope -3;
     // surface-driven refinement flattens it (and makes it jumpy near the surface's own edge
     // length), so the measured slope is used from run 2 on, and a proposal outside the
@@ -556,6 +612,10 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       }
       TetMesh mesh = speculative ? takeSpeculative() : run(next);
       ++result.attempts;
+      if (result.qualityBoundDropped) {  // this edge's refinement did not end: keep the best
+        result.qualityBoundDropped = false;
+        break;
+      }
       const double nextCount = static_cast<double>(mesh.tets.size());
       const double measuredSlope = std::log(nextCount / count) / std::log(next / edge);
       // A count that hardly falls although the edge grew is set by the surface (its own
@@ -584,7 +644,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
 
   result.targetEdgeLength = bestEdge;
   result.maxTetVolume = regularTetVolume(bestEdge);
-  result.switches = switchesFor(bestEdge);
+  result.switches = result.qualityBoundDropped ? "pAQ" : switchesFor(bestEdge);
   result.mesh = std::move(best);
   // TetGen 1.5 writes positively oriented tets (measured); flip only if a build ever wrote
   // them all the other way, and let the validation below reject anything else.

@@ -6,9 +6,9 @@
 ///
 /// Data flow: closed surface (mm) -> requireClosedManifold (+ orientOutward) -> TetGen in a
 /// child process (TetGenRunner: intersection test "pdQ", then "pq<ratio>a<volume>AQ"; the
-/// boundary may be refined: no "Y") -> regions outside the solid (cavities of hollow parts,
-/// winding number 0) removed -> tets reoriented to positive volume -> requireValidTetMesh ->
-/// TetMesh for the GDF stages.
+/// boundary may be refined: no "Y"; "pAQ" when no such run finishes in time) -> regions
+/// outside the solid (cavities of hollow parts, winding number 0) removed -> tets reoriented
+/// to positive volume -> requireValidTetMesh -> TetMesh for the GDF stages.
 #include "mesh/SurfaceSimplification.h"
 #include "mesh/TetMesh.h"
 
@@ -47,6 +47,13 @@ struct TetrahedralizeOptions {
   /// checked against a quarter of the edge, else the edge collapse (the default), or the edge
   /// collapse alone. simplifyFinerThan 0 turns both off.
   SimplificationMethod simplification = SimplificationMethod::IsotropicRemeshing;
+  /// Time limit of one TetGen run (s); 0 = automatic: 10 s plus 40 us per expected tet (5x the
+  /// time such a mesh takes; the unbounded run 125 us per surface triangle). A bounded run
+  /// past it does not finish: TetGen's refinement does not end near a knife edge or a needle
+  /// tip of the surface (a 2 mm thin ellipsoid: no -q or -a run finished within 40 s), and the
+  /// surface is then meshed without the bounds (TetrahedralizeResult::qualityBoundDropped).
+  /// Must be >= 0 and finite.
+  double tetgenSecondsLimit = 0.0;
   /// Polled about every 50 ms while TetGen runs, and after each run; returning true stops it
   /// and throws "tetrahedralization aborted" (filters pass their AbortExecute flag). Optional.
   std::function<bool()> shouldAbort;
@@ -84,6 +91,11 @@ struct TetrahedralizeResult {
   /// unchanged, so the count is set by the surface (fine triangles or thin walls).
   bool surfaceBoundCount = false;
   size_t removedFlatTets = 0;  ///< zero-volume slivers dropped from TetGen's output
+  /// No quality-bounded TetGen run finished within its time limit: the mesh is TetGen's
+  /// constrained Delaunay tetrahedralization of the surface (switches "pAQ": no radius-edge or
+  /// volume bound, no point added inside), its flat slivers removed; the count is then set by
+  /// the surface (surfaceBoundCount) and the tets are not quality-shaped.
+  bool qualityBoundDropped = false;
   double seconds = 0.0;        ///< wall time of the whole call
   bool simplified = false;     ///< the surface was simplified before TetGen
   size_t inputTriangles = 0;   ///< triangles of the input surface
@@ -152,5 +164,9 @@ double automaticEdgeLength(double enclosedVolume, int targetTets = 75000);
 /// merged nearly coincident vertices).
 TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& surface,
                                            const TetrahedralizeOptions& options = {});
+
+/// @brief What a mesh with TetrahedralizeResult::qualityBoundDropped is, for the user (the
+/// filter's warning, the CLI's note).
+std::string qualityBoundDroppedNote(int tetCount);
 
 }  // namespace geolattice

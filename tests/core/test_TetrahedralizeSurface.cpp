@@ -573,6 +573,37 @@ TEST(TetrahedralizeSurface, ACountSetByTheSurfaceEndsTheSearch) {
   EXPECT_FALSE(tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0)).surfaceBoundCount);
 }
 
+TEST(TetrahedralizeSurface, AKnifeEdgeThatTetGenCannotRefineIsMeshedWithoutTheBounds) {
+  // An ellipsoid 2 x 30 x 60 mm (an ear, a blade): its rim is a knife edge, and TetGen's
+  // quality refinement near it does not end in practice (this one: 412k tets after 12.5 s at
+  // q1.414 for 0.05 mm^3; the 143k-triangle scan of such a part finished no -q or -a run
+  // within 40 s). With a 1 s limit every bounded run stops; the surface is then meshed without
+  // the bounds (it used to fail after five runs at other edges, which end the same way).
+  TriangleSurface ear = sphereSurface(Vec3::Zero(), 1.0, 4);
+  for (Vec3& p : ear.points) {
+    p = p.cwiseProduct(Vec3(1, 15, 30));
+  }
+  TetrahedralizeOptions o;
+  o.simplifyFinerThan = 0;
+  o.tetgenSecondsLimit = 1.0;
+  const TetrahedralizeResult r = tetrahedralizeSurface(ear, o);
+  std::printf("[ ellipsoid 2 x 30 x 60 mm, 1 s limit ] %d tets, %zu flat removed, %.2f s\n",
+              r.tetCount, r.removedFlatTets, r.seconds);
+  EXPECT_TRUE(r.qualityBoundDropped);
+  EXPECT_EQ(r.switches, "pAQ");
+  EXPECT_GT(r.tetCount, 1000);
+  EXPECT_NEAR(r.meshVolume, r.enclosedVolume, 1e-3 * r.enclosedVolume);
+  EXPECT_EQ(r.tetgenRetries, 1) << "the unbounded run only, no bounded run at other edges";
+  EXPECT_NE(qualityBoundDroppedNote(r.tetCount).find(std::to_string(r.tetCount) + " tets"),
+            std::string::npos);
+  // A part TetGen refines within its limit keeps its bounds.
+  EXPECT_FALSE(tetrahedralizeSurface(boxSurface(Vec3(40, 40, 60), 100.0)).qualityBoundDropped);
+  TetrahedralizeOptions negative;
+  negative.tetgenSecondsLimit = -1;
+  EXPECT_TRUE(contains(errorOf([&] { tetrahedralizeSurface(ear, negative); }),
+                       "TetGen time limit must be >= 0"));
+}
+
 TEST(TetrahedralizeSurface, ASurfaceRefusedAtTheTargetEdgeIsRemeshedForAShorterOne) {
   // A fine cone standing on its rounded tip, meshed for ~15k tets (the orientation search's
   // coarse mesh): remeshed for the target edge (~5 mm), its 1.5 mm tip is cut by more than the
