@@ -9,6 +9,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
 #include <vtkImageData.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
@@ -38,6 +39,13 @@ vtkNew<vtkPolyData> polyline(int n) {
   index->SetName("PointIndex");
   vtkNew<vtkUnsignedCharArray> kind;
   kind->SetName("MoveKind");
+  vtkNew<vtkDoubleArray> tilt;  // negative values and a NaN (left out of the range)
+  tilt->SetName("AxisTilt");
+  vtkNew<vtkIntArray> layer;
+  layer->SetName("LayerId");
+  vtkNew<vtkDoubleArray> wrench;  // a vector with a NaN component in one tuple
+  wrench->SetName("Wrench");
+  wrench->SetNumberOfComponents(2);
   vtkNew<vtkCellArray> lines;
   lines->InsertNextCell(n);
   for (int i = 0; i < n; ++i) {
@@ -46,6 +54,9 @@ vtkNew<vtkPolyData> polyline(int n) {
     axis->InsertNextTuple3(std::sin(3 * t), 0.1 * t, 1.0);
     index->InsertNextValue(i * 7919 % 1000003);
     kind->InsertNextValue(static_cast<unsigned char>(i % 3));
+    tilt->InsertNextValue(i == n / 2 ? std::nan("") : std::sin(0.37 * i) * 30);
+    layer->InsertNextValue(i % 5 - 1);
+    wrench->InsertNextTuple2(i == n - 1 ? std::nan("") : -0.5 * i, 2.0);
     lines->InsertCellPoint(i);
   }
   poly->SetPoints(points);
@@ -53,6 +64,13 @@ vtkNew<vtkPolyData> polyline(int n) {
   poly->GetPointData()->AddArray(axis);
   poly->GetPointData()->AddArray(index);
   poly->GetPointData()->AddArray(kind);
+  poly->GetPointData()->AddArray(tilt);
+  poly->GetPointData()->AddArray(layer);
+  poly->GetPointData()->AddArray(wrench);
+  vtkNew<vtkDoubleArray> length;
+  length->SetName("ToolpathPrintLength");
+  length->InsertNextValue(0.1 * n);
+  poly->GetFieldData()->AddArray(length);
   return poly;
 }
 
@@ -62,10 +80,12 @@ TEST(GLXMLFileWriter, SameBytesAsVtksWriter) {
   const auto dir = glFreshDirectory("xmlwriter");
   // Small (one block, leftovers), large (many 48 KiB blocks, LZ4's 32 KiB blocks) and empty.
   for (const int n : {1, 2, 3, 101, 200001}) {
+    // Ours stores the arrays' ranges in their information; VTK's writer gets data without them.
     vtkNew<vtkPolyData> poly = polyline(n);
+    vtkNew<vtkPolyData> same = polyline(n);
     const std::string ours = (dir / "ours.vtp").string(), vtk = (dir / "vtk.vtp").string();
     ASSERT_TRUE(writeXmlDataFile(poly, ours));
-    ASSERT_TRUE(writeXmlDataFile(poly, vtk, false));
+    ASSERT_TRUE(writeXmlDataFile(same, vtk, false));
     const std::string bytes = glReadFile(ours);
     EXPECT_GT(bytes.size(), 500u);
     EXPECT_EQ(bytes, glReadFile(vtk)) << n << " points";
@@ -84,18 +104,23 @@ TEST(GLXMLFileWriter, SameBytesAsVtksWriter) {
               poly->GetPointData()->GetArray("PointIndex")->GetTuple1(n - 1));
   }
   // An unstructured grid: one tet.
-  vtkNew<vtkUnstructuredGrid> grid;
-  vtkNew<vtkPoints> points;
-  points->InsertNextPoint(0, 0, 0);
-  points->InsertNextPoint(1, 0, 0);
-  points->InsertNextPoint(0, 1, 0);
-  points->InsertNextPoint(0, 0, 1);
-  grid->SetPoints(points);
-  const vtkIdType tet[4] = {0, 1, 2, 3};
-  grid->InsertNextCell(VTK_TETRA, 4, tet);
+  auto oneTet = [] {
+    vtkNew<vtkUnstructuredGrid> grid;
+    vtkNew<vtkPoints> points;
+    points->InsertNextPoint(0, 0, 0);
+    points->InsertNextPoint(1, 0, 0);
+    points->InsertNextPoint(0, 1, 0);
+    points->InsertNextPoint(0, 0, 1);
+    grid->SetPoints(points);
+    const vtkIdType tet[4] = {0, 1, 2, 3};
+    grid->InsertNextCell(VTK_TETRA, 4, tet);
+    return grid;
+  };
+  vtkNew<vtkUnstructuredGrid> grid = oneTet();
+  vtkNew<vtkUnstructuredGrid> same = oneTet();
   const std::string ours = (dir / "ours.vtu").string(), vtk = (dir / "vtk.vtu").string();
   ASSERT_TRUE(writeXmlDataFile(grid, ours));
-  ASSERT_TRUE(writeXmlDataFile(grid, vtk, false));
+  ASSERT_TRUE(writeXmlDataFile(same, vtk, false));
   EXPECT_EQ(glReadFile(ours), glReadFile(vtk));
   vtkNew<vtkXMLUnstructuredGridReader> reader;
   reader->SetFileName(ours.c_str());
