@@ -34,7 +34,11 @@ struct SampleTree {
   std::vector<Node> nodes;
 };
 
-constexpr int kLeafSize = 8;
+/// Samples per leaf. A larger leaf means fewer node pairs to descend through and more point
+/// tests in a leaf pair, which are cheap: on the three-branch tree (bench_sequence BM_Pcg, one
+/// thread, medians of 3 runs twice) 8 -> 32 took the cone 107-111 -> 88-89 ms and the example
+/// printhead 280-292 -> 209-214 ms (64: slower again); the same pairs.
+constexpr int kLeafSize = 32;
 
 int buildNode(SampleTree& tree, const MaterialSamples& m, int begin, int end) {
   const int id = static_cast<int>(tree.nodes.size());
