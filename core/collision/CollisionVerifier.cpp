@@ -9,8 +9,6 @@
 #include <chrono>
 #include <cmath>
 #include <limits>
-#include <memory>
-#include <mutex>
 #include <numeric>
 #include <sstream>
 
@@ -19,23 +17,6 @@ namespace geolattice {
 using Vec = Eigen::Vector3d;
 
 namespace {
-
-/// A kd-tree built when a station first needs it (from any worker thread).
-class LazyTree {
-public:
-  LazyTree(const std::vector<Vec>& points, const std::vector<int>& time)
-      : points_(points), time_(time) {}
-  const TimedPointTree& get() {
-    std::call_once(built_, [this] { tree_ = std::make_unique<TimedPointTree>(points_, time_); });
-    return *tree_;
-  }
-
-private:
-  const std::vector<Vec>& points_;
-  const std::vector<int>& time_;
-  std::unique_ptr<TimedPointTree> tree_;
-  std::once_flag built_;
-};
 
 /// A nozzle bound cut to the ball of radius r about c.
 struct WithinBall {
@@ -116,19 +97,20 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
     all.insert(all.end(), samples.begin(), samples.end());
     obstacleTime.resize(all.size(), std::numeric_limits<int>::min());
   }
-  const TimedPointTree tree(all, obstacleTime);
+  // One tree; with the plate its root's children are the material and the plate's samples, so
+  // each kind is searched alone where that is cheaper (one build instead of three: topopt's two
+  // verifications built 0.12 s of trees for the kinds alone).
+  const TimedPointTree tree(all, obstacleTime, static_cast<int>(N));
+  const bool withPlate = all.size() > N;
+  const int materialRoot = withPlate ? tree.firstChild() : 0;
+  // The plate's samples alone, for the nearest of them to a station's tip (through the whole
+  // tree, that search would open every ball of material near the tip too).
+  const int plateRoot = withPlate ? tree.secondChild() : -1;
   // With an exemption, a station whose nozzle reaches the plate must still be searched to its
   // end for material some order could have kept out, but not through the plate's samples (a cone
   // that reaches the plate holds thousands of them): after its first plate sample that search
-  // runs on the material alone. Built when a station first needs it (most parts placed with
-  // room under them have none).
-  const bool searchPastThePlate = exemption && all.size() > N;
-  LazyTree materialOnly(points, obstacleTime);
-  // The plate's samples alone, for the nearest of them to a station's tip (through the whole
-  // tree, that search would open every ball of material near the tip too).
-  const std::vector<Vec> plateSamples(all.begin() + static_cast<std::ptrdiff_t>(N), all.end());
-  const std::vector<int> plateTime(plateSamples.size(), std::numeric_limits<int>::min());
-  LazyTree plateOnly(plateSamples, plateTime);
+  // runs on the material alone.
+  const bool searchPastThePlate = exemption && withPlate;
   const NozzleVolume volume(nozzle);
   NozzleBound bound(nozzle, volume);
   // The reported obstacle of a violating station: the one nearest its tip (ties: the lowest
@@ -143,10 +125,9 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
   };
   auto nearestPlateSample = [&](const NozzleBound& station, int k, int& hit, double& height,
                                 double& radial) {
-    const int first = static_cast<int>(N);
-    hit = first + plateOnly.get().nearestCandidate(
-                      station, points[k], time[k], hit - first,
-                      [&](int q) { return volume.contains(points[k], axis[k], plateSamples[q]); });
+    hit = tree.nearestCandidate(
+        station, points[k], time[k], hit,
+        [&](int q) { return volume.contains(points[k], axis[k], all[q]); }, plateRoot);
     volume.contains(points[k], axis[k], all[hit], &height, &radial);
   };
 
@@ -158,16 +139,13 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
   // when it is the plate's); a material hit is located later only if it is reported.
   auto nearerOfTheKinds = [&](const NozzleBound& station, int k, int& hit, double& height,
                               double& radial) {
-    const int plateHit =
-        plateSamples.empty()
-            ? -1
-            : plateOnly.get().nearestCandidate(station, points[k], time[k], -1, [&](int q) {
-                return volume.contains(points[k], axis[k], plateSamples[q]);
-              });
+    const int plateHit = tree.nearestCandidate(
+        station, points[k], time[k], -1,
+        [&](int q) { return volume.contains(points[k], axis[k], all[q]); }, plateRoot);
     if (plateHit < 0) {
       return false;  // material only
     }
-    const double plateD2 = (plateSamples[plateHit] - points[k]).squaredNorm();
+    const double plateD2 = (all[plateHit] - points[k]).squaredNorm();
     // Ties go to the lower index, the material's.
     if (hit < static_cast<int>(N) && (all[hit] - points[k]).squaredNorm() <= plateD2) {
       return false;
@@ -184,7 +162,7 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
       hit = material;
       return false;
     }
-    hit = static_cast<int>(N) + plateHit;
+    hit = plateHit;
     volume.contains(points[k], axis[k], all[hit], &height, &radial);
     return true;
   };
@@ -254,14 +232,17 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
         return false;
       });
       if (materialLeft) {  // an avoidable obstacle, if any (the plate outranks exempt material)
-        materialOnly.get().forEachCandidate(station, time[k], [&](int q) {
-          if (!volume.contains(points[k], axis[k], points[q]) ||
-              exemption->unavoidable(exemption->group[k], exemption->group[q])) {
-            return false;
-          }
-          hit = q;
-          return true;
-        });
+        tree.forEachCandidate(
+            station, time[k],
+            [&](int q) {
+              if (!volume.contains(points[k], axis[k], points[q]) ||
+                  exemption->unavoidable(exemption->group[k], exemption->group[q])) {
+                return false;
+              }
+              hit = q;
+              return true;
+            },
+            materialRoot);
       }
       bool unavoidable = false;
       bool located = true;  // hit is the obstacle nearest the tip (height, radial are its)

@@ -9,16 +9,19 @@ namespace geolattice {
 
 using Vec = Eigen::Vector3d;
 
-TimedPointTree::TimedPointTree(const std::vector<Vec>& points, const std::vector<int>& time)
+TimedPointTree::TimedPointTree(const std::vector<Vec>& points, const std::vector<int>& time,
+                               int split)
     : points_(points), time_(time) {
   order_.resize(points.size());
   std::iota(order_.begin(), order_.end(), 0);
   if (!order_.empty()) {
     const int n = static_cast<int>(order_.size());
-    nodes_.resize(static_cast<size_t>(subtreeNodes(n)));
+    split_ = split > 0 && split < n;
+    nodes_.resize(static_cast<size_t>(split_ ? 1 + subtreeNodes(split) + subtreeNodes(n - split)
+                                             : subtreeNodes(n)));
     // Below this many points a second thread costs more than it saves.
     constexpr int kParallelPoints = 50000;
-    build(0, 0, n, n >= kParallelPoints ? 1 : 0);
+    build(0, 0, n, n >= kParallelPoints ? 1 : 0, split_ ? split : -1);
   }
 }
 
@@ -26,7 +29,7 @@ int TimedPointTree::subtreeNodes(int n) {
   return n > kLeafSize ? 1 + subtreeNodes(n / 2) + subtreeNodes(n - n / 2) : 1;
 }
 
-int TimedPointTree::build(int id, int begin, int end, int parallelDepth) {
+int TimedPointTree::build(int id, int begin, int end, int parallelDepth, int split) {
   // Plain scalars and two independent maxima: with Eigen temporaries GCC kept the running
   // maximum on the stack, and the radius loop waited on store-to-load forwarding (a third of
   // the build). max is exact, so the tree is the same.
@@ -63,12 +66,14 @@ int TimedPointTree::build(int id, int begin, int end, int parallelDepth) {
   }
   const double r2 = std::max(r2a, r2b);
   int left = -1, right = -1, next = id + 1;
-  if (end - begin > kLeafSize) {
+  if (split > begin || end - begin > kLeafSize) {
     int axis = 0;
     (hi - lo).maxCoeff(&axis);
-    const int mid = begin + (end - begin) / 2;
-    std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
-                     [&](int a, int b) { return points_[a][axis] < points_[b][axis]; });
+    const int mid = split > begin ? split : begin + (end - begin) / 2;
+    if (split <= begin) {
+      std::nth_element(order_.begin() + begin, order_.begin() + mid, order_.begin() + end,
+                       [&](int a, int b) { return points_[a][axis] < points_[b][axis]; });
+    }
     left = id + 1;
     if (parallelDepth > 0) {  // disjoint ranges of order_ and nodes_
       right = left + subtreeNodes(mid - begin);

@@ -25,14 +25,23 @@ public:
   };
 
   /// time: one entry per point; a point with time INT_MAX is never reported (not material).
-  /// Both vectors must outlive the tree.
-  TimedPointTree(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& time);
+  /// Both vectors must outlive the tree. split in (0, size): the root's children hold the
+  /// points [0, split) and [split, size) (firstChild(), secondChild()), e.g. material and the
+  /// build plate's samples, so either kind can be searched alone in the one tree; otherwise
+  /// (and below the root always) the tree splits at medians.
+  TimedPointTree(const std::vector<Eigen::Vector3d>& points, const std::vector<int>& time,
+                 int split = -1);
+
+  /// The subtrees of a split root (see the constructor), or -1 without one.
+  int firstChild() const { return split_ ? nodes_[0].left : -1; }
+  int secondChild() const { return split_ ? nodes_[0].right : -1; }
 
   /// Calls visit(q) for every point q with time[q] < now in a leaf whose sphere the bound may
   /// touch (candidates: the caller applies its exact test); stops when visit returns true.
-  /// Bound: anything with `bool mayTouch(centre, radius) const`, e.g. NozzleBound.
+  /// Bound: anything with `bool mayTouch(centre, radius) const`, e.g. NozzleBound. root: the
+  /// subtree searched (0: the whole tree).
   template <class Bound, class Visit>
-  void forEachCandidate(const Bound& bound, int now, Visit&& visit) const {
+  void forEachCandidate(const Bound& bound, int now, Visit&& visit, int root = 0) const {
     forEachCluster(
         bound, now, [](const Eigen::Vector3d&, double) { return false; },
         [&](const Node& leaf) {
@@ -43,7 +52,8 @@ public:
             }
           }
           return false;
-        });
+        },
+        root);
   }
 
   /// Calls visit(node) for clusters that hold every point with time < now in a leaf the bound
@@ -51,8 +61,9 @@ public:
   /// small(centre, radius) says so. Its points are pointAt(i) for i in [node.begin, node.end)
   /// (some may have time >= now: the caller checks timeOf). Stops when visit returns true.
   template <class Bound, class Small, class Visit>
-  void forEachCluster(const Bound& bound, int now, Small&& small, Visit&& visit) const {
-    if (nodes_.empty()) {
+  void forEachCluster(const Bound& bound, int now, Small&& small, Visit&& visit,
+                      int root = 0) const {
+    if (nodes_.empty() || root < 0) {
       return;
     }
     // Depth first on a fixed stack (no allocation, no thread-local lookup per query): the tree
@@ -60,7 +71,7 @@ public:
     // holds at most one entry more than the depth.
     std::array<int, 64> stack;
     int top = 0;
-    stack[top++] = 0;
+    stack[top++] = root;
     while (top > 0) {
       const Node& node = nodes_[stack[--top]];
       if (node.minTime >= now || !bound.mayTouch(node.centre, node.radius)) {
@@ -79,14 +90,14 @@ public:
   /// Of the points q with time[q] < now in leaves the bound may touch and accepted by
   /// accept(q), the one nearest `from` (ties: the lowest index); `start` (such a point, or -1)
   /// bounds the search from the outset. Depth first, the nearer child first, skipping balls
-  /// farther than the best point so far. Returns -1 if there is none.
+  /// farther than the best point so far. Returns -1 if there is none. root: the subtree searched.
   template <class Bound, class Accept>
   int nearestCandidate(const Bound& bound, const Eigen::Vector3d& from, int now, int start,
-                       Accept&& accept) const {
+                       Accept&& accept, int root = 0) const {
     int best = start;
     double bestD2 = start >= 0 ? (points_[start] - from).squaredNorm()
                                : std::numeric_limits<double>::infinity();
-    if (nodes_.empty()) {
+    if (nodes_.empty() || root < 0) {
       return best;
     }
     auto lowerBound = [&](int id) {  // of the squared distance from `from` to node id's ball
@@ -96,7 +107,7 @@ public:
     };
     std::array<std::pair<int, double>, 64> stack;  // (node, lower bound); depth as forEachCluster
     int top = 0;
-    stack[top++] = {0, lowerBound(0)};
+    stack[top++] = {root, lowerBound(root)};
     while (top > 0) {
       const auto [id, lb] = stack[--top];
       const Node& node = nodes_[static_cast<size_t>(id)];
@@ -137,13 +148,15 @@ private:
   static int subtreeNodes(int n);
   /// Builds the subtree over order_[begin, end) into nodes_[id ...] in depth-first order and
   /// returns the id after it; the two halves of the top `parallelDepth` levels are built on two
-  /// threads (the right half's first id from subtreeNodes).
-  int build(int id, int begin, int end, int parallelDepth);
+  /// threads (the right half's first id from subtreeNodes). split > begin: this node's halves
+  /// are [begin, split) and [split, end), not the median's.
+  int build(int id, int begin, int end, int parallelDepth, int split = -1);
 
   const std::vector<Eigen::Vector3d>& points_;
   const std::vector<int>& time_;
   std::vector<int> order_;
   std::vector<Node> nodes_;
+  bool split_ = false;  ///< the root splits at the constructor's `split`
 };
 
 }  // namespace geolattice
