@@ -11,8 +11,9 @@
 ///
 /// For a sub-graph order, time = the sub-graph's position (all of its points share it, a
 /// sub-graph is not tested against itself); for a toolpath, time = the point's index on it.
-/// With an exemption and the build plate, a station's search past its first plate sample (for
-/// material an order could have kept out) runs on a second tree of the material alone.
+/// With the build plate the tree's root splits the material from the plate's samples: with an
+/// exemption, a station's search past its first plate sample (for material an order could have
+/// kept out) runs on the material's subtree, and the nearest plate sample on the plate's.
 #include "nozzle/BuildPlate.h"
 #include "nozzle/NozzleModel.h"
 

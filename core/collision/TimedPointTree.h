@@ -67,8 +67,8 @@ public:
       return;
     }
     // Depth first on a fixed stack (no allocation, no thread-local lookup per query): the tree
-    // splits at medians, so it is at most log2(N / kLeafSize) + 2 < 34 deep, and the stack
-    // holds at most one entry more than the depth.
+    // splits at medians (below a split root), so it is at most log2(N / kLeafSize) + 3 < 35
+    // deep, and the stack holds at most one entry more than the depth.
     std::array<int, 64> stack;
     int top = 0;
     stack[top++] = root;
