@@ -444,17 +444,12 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   // edges (its refinement does not end near a knife edge or a needle tip of the surface,
   // whatever the edge: a 2 mm thin ellipsoid timed out at all five): the surface is meshed
   // without the quality and volume bounds instead (qualityBoundDropped), which takes seconds.
-  TetMeshCheckReport lastCheck;        // of the mesh the last run() returned
+  TetMeshCheckReport lastCheck;        // of the mesh TetGen last returned
   auto checked = [&](TetMesh& mesh) {  // true: valid after its flat slivers are dropped
     orientTetsPositively(mesh);
     result.removedFlatTets += removeFlatTets(mesh);
-    const TetMeshCheckReport check = checkTetMesh(mesh);
-    if (check.invertedTets == 0 && check.nonManifoldFaces == 0 && check.tetCount > 0) {
-      lastCheck = check;
-      return true;
-    }
-    lastCheck = check;
-    return false;
+    lastCheck = checkTetMesh(mesh);
+    return lastCheck.invertedTets == 0 && lastCheck.nonManifoldFaces == 0 && lastCheck.tetCount > 0;
   };
   auto invalid = [&](const std::string& what) {
     return "TetGen's mesh " + what + " has " + std::to_string(lastCheck.invertedTets) +
