@@ -15,7 +15,6 @@
 #include <vtkOutputStream.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLPolyDataWriter.h>
@@ -111,34 +110,16 @@ protected:
   ~GLBufferedXMLWriter() override = default;
 };
 
-/// The range VTK's XML writers put in an array's header (RangeMin, RangeMax): that of its one
-/// component, or of its tuples' L2 norm; NaN values (tuples) left out, as vtkDataArray does.
+/// The range VTK's XML writers put in a one-component array's header (RangeMin, RangeMax),
+/// NaN values left out as vtkDataArray leaves them out.
 template <class T>
-void valueRange(const T* values, vtkIdType tuples, int components, double range[2]) {
+void valueRange(const T* values, vtkIdType count, double range[2]) {
   double lo = VTK_DOUBLE_MAX, hi = VTK_DOUBLE_MIN;
-  if (components == 1) {
-    for (vtkIdType i = 0; i < tuples; ++i) {
-      const double x = static_cast<double>(values[i]);
-      if (!std::isnan(x)) {
-        lo = std::min(lo, x);
-        hi = std::max(hi, x);
-      }
-    }
-  } else {
-    for (vtkIdType i = 0; i < tuples; ++i) {
-      double squared = 0;
-      for (int c = 0; c < components; ++c) {
-        const double x = static_cast<double>(values[i * components + c]);
-        squared += x * x;
-      }
-      if (!std::isnan(squared)) {
-        lo = std::min(lo, squared);
-        hi = std::max(hi, squared);
-      }
-    }
-    if (hi >= lo) {
-      lo = std::sqrt(lo);
-      hi = std::sqrt(hi);
+  for (vtkIdType i = 0; i < count; ++i) {
+    const double x = static_cast<double>(values[i]);
+    if (!std::isnan(x)) {
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
     }
   }
   range[0] = lo;
@@ -146,10 +127,11 @@ void valueRange(const T* values, vtkIdType tuples, int components, double range[
 }
 
 /// VTK's XML writers compute each array's range for its header with vtkDataArray::GetRange, at
-/// 12-18 ns per value (measured: 5 % of topopt's whole run). The same numbers in one typed pass,
-/// stored where GetRange looks first (the array's information, newer than the array: the
-/// L2-norm key, and for one component also that component's key), so the writer takes them.
-/// Arrays that are not contiguous or empty are left to VTK; the file is the same either way.
+/// 12-18 ns per value (measured: 5 % of topopt's whole run). For a one-component array the same
+/// numbers in one typed pass, stored where GetRange looks first (the per-component range, newer
+/// than the array), so the writer takes them. A multi-component array's range (of its tuples'
+/// L2 norm) is left to VTK: its key is one the writer would copy into the file. So are arrays
+/// that are not contiguous or empty; the file is the same either way.
 void cacheRange(vtkDataArray* array) {
   if (!array || array->GetNumberOfComponents() != 1 || !array->HasStandardMemoryLayout() ||
       array->GetNumberOfTuples() == 0) {
@@ -158,7 +140,7 @@ void cacheRange(vtkDataArray* array) {
   double range[2];
   switch (array->GetDataType()) {
     vtkTemplateMacro(valueRange(static_cast<const VTK_TT*>(array->GetVoidPointer(0)),
-                                array->GetNumberOfTuples(), array->GetNumberOfComponents(), range));
+                                array->GetNumberOfTuples(), range));
     default:
       return;
   }
@@ -183,12 +165,9 @@ void cacheRanges(vtkFieldData* arrays) {
 
 void cacheRanges(vtkDataObject* data) {
   cacheRanges(data->GetFieldData());
-  if (auto* points = vtkPointSet::SafeDownCast(data)) {
-    if (points->GetPoints()) {
-      cacheRange(points->GetPoints()->GetData());
-    }
-    cacheRanges(points->GetPointData());
-    cacheRanges(points->GetCellData());
+  if (auto* set = vtkPointSet::SafeDownCast(data)) {  // (its points have three components)
+    cacheRanges(set->GetPointData());
+    cacheRanges(set->GetCellData());
   }
 }
 

@@ -21,7 +21,9 @@ namespace geolattice {
 
 /// Writes data (vtkUnstructuredGrid or vtkPolyData) to file. Returns false when VTK's writer
 /// reports a failure (e.g. the file cannot be opened); throws GeoLatticeError for another
-/// data type. bufferedBase64 false: VTK's own encoder (for comparison in tests).
+/// data type. Caches one-component arrays' ranges in their information (vtkDataArray::GetRange
+/// returns the same numbers). bufferedBase64 false: VTK's own encoder and ranges, the data
+/// untouched (for comparison in tests).
 GEOLATTICEFILTERS_EXPORT bool writeXmlDataFile(vtkDataObject* data, const std::string& file,
                                                bool bufferedBase64 = true);
 
