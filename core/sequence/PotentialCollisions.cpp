@@ -30,7 +30,8 @@ struct SampleTree {
     int begin = 0, end = 0;
     int left = -1, right = -1;
   };
-  std::vector<int> order;  ///< sample ids
+  std::vector<int> order;             ///< sample ids
+  std::vector<Vec3> points, normals;  ///< of the samples in `order`, contiguous for the leaf tests
   std::vector<Node> nodes;
 };
 
@@ -178,14 +179,15 @@ struct PairSearch {
       const bool leafA = a.left < 0, leafB = b.left < 0;
       if (leafA && leafB) {
         for (int i = a.begin; i < a.end; ++i) {
-          const int s = A.order[i];
-          station.setStation(m.points[s], m.normals[s]);  // this station against B's ball
+          const Vec3& p = A.points[i];
+          const Vec3& n = A.normals[i];
+          station.setStation(p, n);  // this station against B's ball
           if (!station.mayTouch(b.centre, b.radius)) {
             continue;
           }
           for (int j = b.begin; j < b.end; ++j) {
             ++leafTests;
-            if (nozzle.contains(m.points[s], m.normals[s], m.points[B.order[j]])) {
+            if (nozzle.contains(p, n, B.points[j])) {
               return true;
             }
           }
@@ -236,6 +238,12 @@ PotentialCollisions computePotentialCollisions(const MaterialSamples& m, const N
     std::iota(t.order.begin(), t.order.end(), m.offset[k]);
     if (!t.order.empty()) {
       buildNode(t, m, 0, static_cast<int>(t.order.size()));
+      t.points.reserve(t.order.size());
+      t.normals.reserve(t.order.size());
+      for (const int s : t.order) {
+        t.points.push_back(m.points[s]);
+        t.normals.push_back(m.normals[s]);
+      }
     }
   }
   const NozzleVolume nozzle(model);
