@@ -43,10 +43,16 @@ SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLe
   }
   counts.inserted = static_cast<int>(total - N);
 
-  Toolpath q;  // the subdivided arrays; report fields stay in p
-  q.points.reserve(total);
+  Toolpath q;              // the subdivided arrays; report fields stay in p
+  q.reservePoints(total);  // each array allocated once, at its size (no doubling)
   std::vector<Vec3> extraOut;
   std::vector<char> flagsOut;
+  if (extra) {
+    extraOut.reserve(total);
+  }
+  if (flags) {
+    flagsOut.reserve(total);
+  }
   auto pushCopy = [&](size_t i) {
     q.points.push_back(p.points[i]);
     q.normals.push_back(p.normals[i]);

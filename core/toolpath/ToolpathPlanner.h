@@ -107,6 +107,20 @@ struct Toolpath {
   double depositedVolume = 0;  ///< Σ μ w h̄ L over print moves (mm³)
   LayerThicknessResult thicknessStats;
   double seconds = 0;
+
+  /// Reserves room for n points in every per-point array but axisTilt.
+  void reservePoints(size_t n) {
+    points.reserve(n);
+    normals.reserve(n);
+    kind.reserve(n);
+    thickness.reserve(n);
+    width.reserve(n);
+    extrusion.reserve(n);
+    feedRate.reserve(n);
+    layer.reserve(n);
+    subgraph.reserve(n);
+    pathIndex.reserve(n);
+  }
 };
 
 /// Pieces of split sub-graphs in the printing order (sequence/SubgraphSplitting.h): a piece is
