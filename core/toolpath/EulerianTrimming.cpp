@@ -47,20 +47,35 @@ int componentsOfKept(const Subgraph& s, const LatticeGraph& g, const std::vector
 
 }  // namespace
 
-int contractShortEdges(LatticeGraph& g, double tolerance, std::vector<int>* edgeValues) {
-  const size_t V = g.points.size(), E = g.edges.size();
-  UnionFind uf(static_cast<int>(V));
-  int contracted = 0;
-  for (size_t e = 0; e < E; ++e) {
-    const auto [a, b] = g.edges[e];
+namespace {
+
+/// Calls f(a, b) for every edge (a, b) not longer than tolerance; returns how many.
+template <class F>
+int forEachShortEdge(const LatticeGraph& g, double tolerance, F&& f) {
+  const size_t V = g.points.size();
+  int count = 0;
+  for (const auto& [a, b] : g.edges) {
     if (a < 0 || b < 0 || a >= static_cast<int>(V) || b >= static_cast<int>(V)) {
       throw GeoLatticeError("edge contraction: an edge refers to a missing vertex");
     }
     if ((g.points[a] - g.points[b]).norm() <= tolerance) {
-      uf.unite(a, b);
-      ++contracted;
+      f(a, b);
+      ++count;
     }
   }
+  return count;
+}
+
+}  // namespace
+
+int countShortEdges(const LatticeGraph& g, double tolerance) {
+  return forEachShortEdge(g, tolerance, [](int, int) {});
+}
+
+int contractShortEdges(LatticeGraph& g, double tolerance, std::vector<int>* edgeValues) {
+  const size_t V = g.points.size(), E = g.edges.size();
+  UnionFind uf(static_cast<int>(V));
+  const int contracted = forEachShortEdge(g, tolerance, [&](int a, int b) { uf.unite(a, b); });
   if (contracted == 0) {
     return 0;
   }

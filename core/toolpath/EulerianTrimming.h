@@ -38,6 +38,9 @@ struct TrimResult {
 /// left without edges). `edgeValues` (optional, one per edge, e.g. the pieces of split
 /// sub-graphs) is compacted with the edges. Returns the number of contracted edges.
 int contractShortEdges(LatticeGraph& g, double tolerance, std::vector<int>* edgeValues = nullptr);
+/// The edges contractShortEdges would contract (none changed), so a caller copies the lattice
+/// only when there are some. Throws GeoLatticeError for an edge that refers to a missing vertex.
+int countShortEdges(const LatticeGraph& g, double tolerance);
 
 /// Trims every sub-graph of g. Needs edges, edgeKind, edgeSubgraph, vertexSubgraph, points and
 /// subgraphs. Throws GeoLatticeError for inconsistent arrays or a zero-length edge.

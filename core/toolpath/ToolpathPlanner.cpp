@@ -12,6 +12,7 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <optional>
 #include <sstream>
 
 namespace geolattice {
@@ -357,17 +358,24 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
   const ProgressReporter progress(o.progress, o.shouldAbort, "toolpath planning");
 
   Toolpath path;
-  LatticeGraph g = input;  // contraction edits the edge arrays
   Eigen::AlignedBox3d all;
-  for (const Vec3& x : g.points) {
+  for (const Vec3& x : input.points) {
     all.extend(x);
   }
   ToolpathPieces contractedPieces;  // the pieces on the contracted edges
   if (pieces) {
     contractedPieces = *pieces;
   }
-  path.contractedEdges = contractShortEdges(g, 1e-9 * std::max(1.0, all.diagonal().norm()),
-                                            pieces ? &contractedPieces.edgePiece : nullptr);
+  // Contraction edits the edge arrays: the lattice is copied only when it has edges to contract
+  // (rarely; the copy of a 75k-tet part's lattice is ~25 MB of fresh memory).
+  const double contractBelow = 1e-9 * std::max(1.0, all.diagonal().norm());
+  std::optional<LatticeGraph> contracted;
+  if (countShortEdges(input, contractBelow) > 0) {
+    contracted.emplace(input);
+    path.contractedEdges = contractShortEdges(*contracted, contractBelow,
+                                              pieces ? &contractedPieces.edgePiece : nullptr);
+  }
+  const LatticeGraph& g = contracted ? *contracted : input;
   const TrimResult trim = trimToEulerian(g);
   const EulerTours tours = nonCrossingEulerTours(g, trim.kept);
   path.crossings = countTourCrossovers(g, tours);

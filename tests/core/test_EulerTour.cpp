@@ -131,8 +131,12 @@ TEST(EulerTour, BoxLatticeOneTourPerSubgraph) {
   // points there (zero-length edges). Trimming refuses them; the documented repair contracts them.
   EXPECT_THROW(trimToEulerian(g), GeoLatticeError);
   const size_t before = g.edges.size();
+  const int counted = countShortEdges(g, 1e-9);  // what the planner asks before copying g
+  EXPECT_EQ(g.edges.size(), before);
   const int contracted = contractShortEdges(g, 1e-9);
   EXPECT_GT(contracted, 0);
+  EXPECT_EQ(counted, contracted);
+  EXPECT_EQ(countShortEdges(g, 1e-9), 0);
   EXPECT_EQ(g.edges.size(), before - contracted);
   for (size_t v = 0; v < g.points.size(); ++v) {
     EXPECT_TRUE(g.degree[v] == 0 || g.degree[v] == 2 || g.degree[v] == 3 || g.degree[v] == 4);
