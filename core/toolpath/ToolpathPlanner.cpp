@@ -203,6 +203,12 @@ std::vector<int> finishAxes(Toolpath& path, const ToolpathOptions& o,
         path.points, path.normals, reference, materialOf(), o.nozzle, clearance, fixed,
         &unresolvable, memos ? &(*memos)[static_cast<size_t>(round)] : nullptr, &known, trees);
     progress.report(static_cast<double>(round + 1) / kClearanceRounds);
+    // A memo holds 48 bytes per material point to the stage's end (topopt: 17 MB a round) and
+    // saves a later attempt this round's detection and searches: kept for round 0 (the whole
+    // path's detection) and for rounds that searched at least 1 % of the stations.
+    if (memos && round > 0 && static_cast<size_t>(r.collidingStations) * 100 < path.points.size()) {
+      (*memos)[static_cast<size_t>(round)] = AxisSearchMemo{};
+    }
     if (replannable) {
       std::vector<int> stuck;
       for (int i : r.colliding)
