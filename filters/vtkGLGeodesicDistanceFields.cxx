@@ -97,6 +97,10 @@ vtkGLGeodesicDistanceFields::vtkGLGeodesicDistanceFields() : Cache(new SolverCac
 
 vtkGLGeodesicDistanceFields::~vtkGLGeodesicDistanceFields() = default;
 
+void vtkGLGeodesicDistanceFields::ReleaseSolver() {
+  this->Cache->Solver.reset();
+}
+
 int vtkGLGeodesicDistanceFields::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
   return 1;

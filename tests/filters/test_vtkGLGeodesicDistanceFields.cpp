@@ -200,3 +200,22 @@ TEST(vtkGLGeodesicDistanceFields, ProgressAndAbortInTheSetUpAndInTheSolve) {
     ASSERT_EQ(again->GetTuple1(i), gamma->GetTuple1(i)) << i;
   }
 }
+
+TEST(vtkGLGeodesicDistanceFields, AReleasedSolverIsFactoredAgainWithTheSameFields) {
+  auto grid = boxGrid(8, 8, 12, 4, 4, 6);
+  vtkNew<vtkGLGeodesicDistanceFields> filter;
+  filter->SetInputData(grid);
+  filter->Update();
+  vtkNew<vtkDoubleArray> before;
+  before->DeepCopy(pointArray(filter->GetOutput(), arrays::Gamma));
+  filter->ReleaseSolver();
+  filter->Modified();  // the same set-up, updated after the release: factored again
+  filter->Update();
+  vtkDataArray* after = pointArray(filter->GetOutput(), arrays::Gamma);
+  ASSERT_EQ(after->GetNumberOfTuples(), before->GetNumberOfTuples());
+  for (vtkIdType i = 0; i < after->GetNumberOfTuples(); ++i) {
+    ASSERT_NEAR(after->GetTuple1(i), before->GetTuple1(i), 1e-12) << i;
+  }
+  filter->ReleaseSolver();
+  filter->ReleaseSolver();  // twice: nothing to drop
+}
