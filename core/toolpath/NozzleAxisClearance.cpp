@@ -440,8 +440,8 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
   size_t prefix = 0;
   if (memo) {
     ordinal.assign(N, -1);
-    // Exact sizes: the memos of every round stay alive (grown by doubling they took up to
-    // twice the memory, all of it fresh pages).
+    // Exact sizes: a memo that is kept holds them to the stage's end (grown by doubling they
+    // took up to twice the memory, all of it fresh pages).
     const size_t count = static_cast<size_t>(
         std::count_if(material.begin(), material.end(), [](char m) { return m != 0; }));
     materialPoints.reserve(count);
