@@ -190,17 +190,30 @@ private:
 
     vtkDataObject* graph = this->Update("lattice", P.LatticeInfill);
     reportLattice(P, graph, this->Section("lattice"));
-    this->Write(graph, "lattice.vtp");
     if (R.until == "lattice") {
+      this->Write(graph, "lattice.vtp");
       return kExitOk;
     }
 
-    vtkDataObject* tree = this->Update("skeleton", P.SkeletonTree);
+    // lattice.vtp is written once, after the sequence (with each sub-graph's PrintOrder), and the
+    // lattice alone only where the skeleton, the sequence or its check fails: topopt's 28 MB are
+    // not compressed twice.
+    auto latticeOnFailure = [&](auto&& stage) {
+      try {
+        return stage();
+      } catch (const StageError&) {
+        this->Write(graph, "lattice.vtp");
+        throw;
+      }
+    };
+    vtkDataObject* tree =
+        latticeOnFailure([&] { return this->Update("skeleton", P.SkeletonTree); });
     reportSkeleton(tree, this->Section("skeleton"));
-    this->Update("sequence", P.Sequencer);
+    latticeOnFailure([&] { return this->Update("sequence", P.Sequencer); });
     Json& sequence = this->Section("sequence");
     vtkDataObject* sequenced = P.Sequencer->GetOutputDataObject(0);
-    vtkDataObject* collisions = this->Update("verify", P.SequenceVerifier);
+    vtkDataObject* collisions =
+        latticeOnFailure([&] { return this->Update("verify", P.SequenceVerifier); });
     sequence["verify_seconds"] = this->LastSeconds;
     reportSequence(P, sequenced, sequence);
     sequence["subgraphs"] = vtkDataSet::SafeDownCast(tree)->GetNumberOfPoints();
