@@ -53,23 +53,7 @@ void vtkGLAutoOrient::SetCandidateRank(int rank) {
 
 vtkGLAutoOrient::vtkGLAutoOrient() {
   this->SetNumberOfOutputPorts(2);
-  const gl::OrientOptions d;  // the defaults live in core
   this->Orient = KEEP;
-  this->MinBaseArea = d.minBaseArea;
-  this->SphereCandidates = d.sphereCandidates;
-  this->HullCandidates = d.hullCandidates;
-  this->EvaluationTets = d.evaluationTets;
-  this->EvaluationLayerInterval = d.layerInterval;
-  this->EvaluationLatticeWidth = d.latticeWidth;
-  this->Pedestal = static_cast<int>(d.pedestal);
-  this->PedestalHeight = d.pedestalHeight;
-  this->PedestalContactHeight = d.pedestalContactHeight;
-  this->RefineCandidates = d.refineCandidates;
-  this->RefineLayerInterval = d.refineLayerInterval;
-  this->RefineLatticeWidth = d.refineLatticeWidth;
-  this->RefineStrategy = static_cast<int>(d.refineStrategy);
-  this->MaxAxisTilt = d.maxTiltDeg;
-  this->NumberOfThreads = d.threads;
 }
 
 namespace {
@@ -155,22 +139,7 @@ void buildCandidates(const gl::OrientResult& r, const double bounds[6], vtkPolyD
 
 /// The core options of the filter's parameters (checked by RequestInformation).
 gl::OrientOptions orientOptions(vtkGLAutoOrient* f) {
-  gl::OrientOptions o;
-  o.minBaseArea = f->GetMinBaseArea();
-  o.sphereCandidates = f->GetSphereCandidates();
-  o.hullCandidates = f->GetHullCandidates();
-  o.evaluationTets = f->GetEvaluationTets();
-  o.layerInterval = f->GetEvaluationLayerInterval();
-  o.latticeWidth = f->GetEvaluationLatticeWidth();
-  o.pedestal = static_cast<gl::PedestalChoice>(f->GetPedestal());
-  o.pedestalHeight = f->GetPedestalHeight();
-  o.pedestalContactHeight = f->GetPedestalContactHeight();
-  o.refineCandidates = f->GetRefineCandidates();
-  o.refineLayerInterval = f->GetRefineLayerInterval();
-  o.refineLatticeWidth = f->GetRefineLatticeWidth();
-  o.refineStrategy = static_cast<gl::SequenceStrategy>(f->GetRefineStrategy());
-  o.maxTiltDeg = f->GetMaxAxisTilt();
-  o.threads = f->GetNumberOfThreads();
+  gl::OrientOptions o = f->GetOptions();
   o.nozzle = gl::nozzleModel(f->GetNozzle());
   o.plate = gl::buildPlate(f->GetNozzle());
   return o;
@@ -279,20 +248,20 @@ void vtkGLAutoOrient::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "Orient: " << this->Orient << (this->Orient == AUTO ? " (auto)" : " (keep)")
      << "\n";
-  os << indent << "MinBaseArea: " << this->MinBaseArea << " mm2\n";
-  os << indent << "SphereCandidates: " << this->SphereCandidates << "\n";
-  os << indent << "HullCandidates: " << this->HullCandidates << "\n";
-  os << indent << "EvaluationTets: " << this->EvaluationTets << "\n";
-  os << indent << "EvaluationLayerInterval: " << this->EvaluationLayerInterval << " mm\n";
-  os << indent << "EvaluationLatticeWidth: " << this->EvaluationLatticeWidth << " mm\n";
-  os << indent << "Pedestal: " << this->Pedestal << "\n";
-  os << indent << "PedestalHeight: " << this->PedestalHeight << " mm\n";
-  os << indent << "PedestalContactHeight: " << this->PedestalContactHeight << " mm\n";
-  os << indent << "RefineCandidates: " << this->RefineCandidates << "\n";
-  os << indent << "RefineLayerInterval: " << this->RefineLayerInterval << " mm\n";
-  os << indent << "RefineLatticeWidth: " << this->RefineLatticeWidth << " mm\n";
-  os << indent << "RefineStrategy: " << this->RefineStrategy << "\n";
-  os << indent << "MaxAxisTilt: " << this->MaxAxisTilt << " deg\n";
+  os << indent << "MinBaseArea: " << this->Options.minBaseArea << " mm2\n";
+  os << indent << "SphereCandidates: " << this->Options.sphereCandidates << "\n";
+  os << indent << "HullCandidates: " << this->Options.hullCandidates << "\n";
+  os << indent << "EvaluationTets: " << this->Options.evaluationTets << "\n";
+  os << indent << "EvaluationLayerInterval: " << this->Options.layerInterval << " mm\n";
+  os << indent << "EvaluationLatticeWidth: " << this->Options.latticeWidth << " mm\n";
+  os << indent << "Pedestal: " << this->GetPedestal() << "\n";
+  os << indent << "PedestalHeight: " << this->Options.pedestalHeight << " mm\n";
+  os << indent << "PedestalContactHeight: " << this->Options.pedestalContactHeight << " mm\n";
+  os << indent << "RefineCandidates: " << this->Options.refineCandidates << "\n";
+  os << indent << "RefineLayerInterval: " << this->Options.refineLayerInterval << " mm\n";
+  os << indent << "RefineLatticeWidth: " << this->Options.refineLatticeWidth << " mm\n";
+  os << indent << "RefineStrategy: " << this->GetRefineStrategy() << "\n";
+  os << indent << "MaxAxisTilt: " << this->Options.maxTiltDeg << " deg\n";
   os << indent << "CandidateRank: " << this->CandidateRank << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "NumberOfThreads: " << this->Options.threads << "\n";
 }

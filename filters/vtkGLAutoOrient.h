@@ -53,7 +53,10 @@
 #define vtkGLAutoOrient_h
 
 #include "GeoLatticeFiltersModule.h"
+#include "vtkGLOptionMacros.h"
 #include "vtkGLNozzleAlgorithm.h"
+
+#include "orient/AutoOrient.h"  // OrientOptions: the parameters and their defaults
 
 #include <memory>
 
@@ -74,38 +77,32 @@ public:
 
   ///@{
   /// Contact area with the plate an orientation needs (mm², default 10, >= 0).
-  vtkSetMacro(MinBaseArea, double);
-  vtkGetMacro(MinBaseArea, double);
+  vtkGLOptionMacro(MinBaseArea, double, minBaseArea);
   ///@}
 
   ///@{
   /// Candidate directions from a uniform sphere sample (default 100, >= 0).
-  vtkSetMacro(SphereCandidates, int);
-  vtkGetMacro(SphereCandidates, int);
+  vtkGLOptionMacro(SphereCandidates, int, sphereCandidates);
   ///@}
 
   ///@{
   /// Candidate directions from the largest convex-hull facets (default 24, >= 0).
-  vtkSetMacro(HullCandidates, int);
-  vtkGetMacro(HullCandidates, int);
+  vtkGLOptionMacro(HullCandidates, int, hullCandidates);
   ///@}
 
   ///@{
   /// Tets of the coarse evaluation mesh (default 15000, >= 100).
-  vtkSetMacro(EvaluationTets, int);
-  vtkGetMacro(EvaluationTets, int);
+  vtkGLOptionMacro(EvaluationTets, int, evaluationTets);
   ///@}
 
   ///@{
   /// Layer interval of the evaluation (mm, default 1.5, > 0).
-  vtkSetMacro(EvaluationLayerInterval, double);
-  vtkGetMacro(EvaluationLayerInterval, double);
+  vtkGLOptionMacro(EvaluationLayerInterval, double, layerInterval);
   ///@}
 
   ///@{
   /// Lattice width of the evaluation (mm, default 8, > 0).
-  vtkSetMacro(EvaluationLatticeWidth, double);
-  vtkGetMacro(EvaluationLatticeWidth, double);
+  vtkGLOptionMacro(EvaluationLatticeWidth, double, latticeWidth);
   ///@}
 
   /// Values of Pedestal (core PedestalChoice).
@@ -113,44 +110,37 @@ public:
 
   ///@{
   /// Whether a candidate may stand on a pedestal (default 1 = when it helps).
-  vtkSetClampMacro(Pedestal, int, PEDESTAL_NEVER, PEDESTAL_ALWAYS);
-  vtkGetMacro(Pedestal, int);
+  vtkGLOptionEnumMacro(Pedestal, pedestal, PEDESTAL_NEVER, PEDESTAL_ALWAYS);
   ///@}
 
   ///@{
   /// Height of such a pedestal (mm, default 10, in (0, 500]).
-  vtkSetMacro(PedestalHeight, double);
-  vtkGetMacro(PedestalHeight, double);
+  vtkGLOptionMacro(PedestalHeight, double, pedestalHeight);
   ///@}
 
   ///@{
   /// How far the pedestal's column reaches up into the part (mm, default 1, in (0, 50]).
-  vtkSetMacro(PedestalContactHeight, double);
-  vtkGetMacro(PedestalContactHeight, double);
+  vtkGLOptionMacro(PedestalContactHeight, double, pedestalContactHeight);
   ///@}
 
   ///@{
   /// Best coarse candidates scored again at the printing resolution (default 4, 0 = none).
-  vtkSetMacro(RefineCandidates, int);
-  vtkGetMacro(RefineCandidates, int);
+  vtkGLOptionMacro(RefineCandidates, int, refineCandidates);
   ///@}
 
   ///@{
   /// Layer interval of that refinement (mm, default 0.6 = the slicer's default, > 0).
-  vtkSetMacro(RefineLayerInterval, double);
-  vtkGetMacro(RefineLayerInterval, double);
+  vtkGLOptionMacro(RefineLayerInterval, double, refineLayerInterval);
   ///@}
 
   ///@{
   /// Lattice width of that refinement (mm, default 4 = the lattice's default, > 0).
-  vtkSetMacro(RefineLatticeWidth, double);
-  vtkGetMacro(RefineLatticeWidth, double);
+  vtkGLOptionMacro(RefineLatticeWidth, double, refineLatticeWidth);
   ///@}
 
   ///@{
   /// Printing order of that refinement (0 LPT, 1 DPT, 2 A4, 3 Best = the sequencer's default).
-  vtkSetClampMacro(RefineStrategy, int, 0, 3);
-  vtkGetMacro(RefineStrategy, int);
+  vtkGLOptionEnumMacro(RefineStrategy, refineStrategy, 0, 3);
   ///@}
 
   ///@{
@@ -158,8 +148,7 @@ public:
   /// MaxAxisTilt, in [0, 60]): a plate station of the part as placed whose nozzle a tilt this
   /// large towards +z lifts wholly off the plate is not counted (GL Print Part sets the
   /// planner's).
-  vtkSetClampMacro(MaxAxisTilt, double, 0.0, 60.0);
-  vtkGetMacro(MaxAxisTilt, double);
+  vtkGLOptionClampMacro(MaxAxisTilt, double, maxTiltDeg, 0.0, 60.0);
   ///@}
 
   ///@{
@@ -173,9 +162,11 @@ public:
 
   ///@{
   /// Candidates evaluated in parallel (default 0 = all cores).
-  vtkSetClampMacro(NumberOfThreads, int, 0, 256);
-  vtkGetMacro(NumberOfThreads, int);
+  vtkGLOptionClampMacro(NumberOfThreads, int, threads, 0, 256);
   ///@}
+
+  /// The stage's core options as the parameters set them (C++ only: a core type).
+  VTK_WRAPEXCLUDE const geolattice::OrientOptions& GetOptions() const { return this->Options; }
 
 protected:
   vtkGLAutoOrient();
@@ -184,23 +175,9 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  geolattice::OrientOptions Options;  ///< the parameters, defaults from core
   int Orient;
-  double MinBaseArea;
-  int SphereCandidates;
-  int HullCandidates;
-  int EvaluationTets;
-  double EvaluationLayerInterval;
-  double EvaluationLatticeWidth;
-  int Pedestal;
-  double PedestalHeight;
-  double PedestalContactHeight;
-  int RefineCandidates;
-  double RefineLayerInterval;
-  double RefineLatticeWidth;
-  int RefineStrategy;
-  double MaxAxisTilt;
   int CandidateRank = 0;
-  int NumberOfThreads;
 
 private:
   struct SearchCache;

@@ -111,27 +111,10 @@ void buildPolyData(const gl::CurvedLayers& layers, const std::vector<int>& trian
   out->GetCellData()->AddArray(component);
 }
 
-/// The core options of the filter's parameters (checked by RequestInformation).
-gl::SlicerOptions slicerOptions(vtkGLCurvedLayerSlicer* f) {
-  gl::SlicerOptions o;
-  o.interval = f->GetLayerInterval();
-  o.firstLayerOffset = f->GetFirstLayerOffset();
-  o.firstLayer = f->GetFirstLayer();
-  o.lastLayer = f->GetLastLayer();
-  o.maxElements = f->GetMaximumElements();
-  return o;
-}
-
 }  // namespace
 
 vtkGLCurvedLayerSlicer::vtkGLCurvedLayerSlicer() {
   this->SetNumberOfOutputPorts(2);
-  const gl::SlicerOptions defaults;  // the defaults live in core
-  this->LayerInterval = defaults.interval;
-  this->FirstLayerOffset = defaults.firstLayerOffset;
-  this->FirstLayer = defaults.firstLayer;
-  this->LastLayer = defaults.lastLayer;
-  this->MaximumElements = defaults.maxElements;
 }
 
 int vtkGLCurvedLayerSlicer::FillInputPortInformation(int, vtkInformation* info) {
@@ -141,7 +124,7 @@ int vtkGLCurvedLayerSlicer::FillInputPortInformation(int, vtkInformation* info) 
 
 int vtkGLCurvedLayerSlicer::RequestInformation(vtkInformation*, vtkInformationVector**,
                                                vtkInformationVector*) {
-  return gl::checkParameters(this, [&] { slicerOptions(this).validate(); });
+  return gl::checkParameters(this, [&] { this->Options.validate(); });
 }
 
 int vtkGLCurvedLayerSlicer::RequestData(vtkInformation*, vtkInformationVector** inputVector,
@@ -158,7 +141,7 @@ int vtkGLCurvedLayerSlicer::RequestData(vtkInformation*, vtkInformationVector** 
     gl::checkAbort(this, 0.05);
     const std::vector<gl::Vec3> normals = gl::vertexGradientDirections(mesh, gamma);
     gl::checkAbort(this, 0.1);
-    gl::SlicerOptions options = slicerOptions(this);
+    gl::SlicerOptions options = this->Options;
     options.progress = gl::progressRange(this, 0.1, 0.6);
     options.shouldAbort = gl::abortFlag(this);
     const gl::CurvedLayers layers =
@@ -210,11 +193,11 @@ int vtkGLCurvedLayerSlicer::RequestData(vtkInformation*, vtkInformationVector** 
 
 void vtkGLCurvedLayerSlicer::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "LayerInterval: " << this->LayerInterval << " mm\n";
-  os << indent << "FirstLayerOffset: " << this->FirstLayerOffset << " mm\n";
-  os << indent << "FirstLayer: " << this->FirstLayer << "\n";
-  os << indent << "LastLayer: " << this->LastLayer << "\n";
-  os << indent << "MaximumElements: " << this->MaximumElements << "\n";
+  os << indent << "LayerInterval: " << this->Options.interval << " mm\n";
+  os << indent << "FirstLayerOffset: " << this->Options.firstLayerOffset << " mm\n";
+  os << indent << "FirstLayer: " << this->Options.firstLayer << "\n";
+  os << indent << "LastLayer: " << this->Options.lastLayer << "\n";
+  os << indent << "MaximumElements: " << this->Options.maxElements << "\n";
   os << indent << "SelectedLayer: " << this->SelectedLayer << "\n";
   os << indent << "ComputeStatistics: " << this->ComputeStatistics << "\n";
 }

@@ -30,7 +30,10 @@
 #define vtkGLCurvedLayerSlicer_h
 
 #include "GeoLatticeFiltersModule.h"
+#include "vtkGLOptionMacros.h"
 #include "vtkPolyDataAlgorithm.h"
+
+#include "slicer/CurvedLayerSlicer.h"  // SlicerOptions: the parameters and their defaults
 
 class GEOLATTICEFILTERS_EXPORT vtkGLCurvedLayerSlicer : public vtkPolyDataAlgorithm {
 public:
@@ -40,29 +43,24 @@ public:
 
   ///@{
   /// γ distance between consecutive layers (mm, default 0.6).
-  vtkSetMacro(LayerInterval, double);
-  vtkGetMacro(LayerInterval, double);
+  vtkGLOptionMacro(LayerInterval, double, interval);
   ///@}
 
   ///@{
   /// γ of the first layer (mm, default 0.6).
-  vtkSetMacro(FirstLayerOffset, double);
-  vtkGetMacro(FirstLayerOffset, double);
+  vtkGLOptionMacro(FirstLayerOffset, double, firstLayerOffset);
   ///@}
 
   ///@{
   /// Bound against runaway work (core/common/WorkLimit.h): an output estimated to have more
   /// elements than this is refused before it is built (default 40e6, about 8 GB).
-  vtkSetClampMacro(MaximumElements, double, 1.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumElements, double);
+  vtkGLOptionClampMacro(MaximumElements, double, maxElements, 1.0, VTK_DOUBLE_MAX);
   ///@}
 
   ///@{
   /// Range of layer indices to extract (default 0 .. -1 = all).
-  vtkSetMacro(FirstLayer, int);
-  vtkGetMacro(FirstLayer, int);
-  vtkSetMacro(LastLayer, int);
-  vtkGetMacro(LastLayer, int);
+  vtkGLOptionMacro(FirstLayer, int, firstLayer);
+  vtkGLOptionMacro(LastLayer, int, lastLayer);
   ///@}
 
   ///@{
@@ -86,11 +84,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double LayerInterval;
-  double FirstLayerOffset;
-  int FirstLayer;
-  int LastLayer;
-  double MaximumElements;
+  geolattice::SlicerOptions Options;  ///< the parameters, defaults from core
   int SelectedLayer = 0;
   vtkTypeBool ComputeStatistics = true;
 

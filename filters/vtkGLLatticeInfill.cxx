@@ -264,33 +264,9 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out) {
   gl::addFieldArray(fd, gl::arrays::SubgraphLength, subLength);
   gl::addFieldArray(fd, gl::arrays::SubgraphCentroid, subCentroid, 3);
 }
-/// The core options of the filter's parameters (checked by RequestInformation).
-gl::LatticeOptions latticeOptions(vtkGLLatticeInfill* f) {
-  gl::LatticeOptions o;
-  o.alphaWidth = f->GetAlphaWidth();
-  o.betaWidth = f->GetBetaWidth();
-  o.alphaPhase = f->GetAlphaPhase();
-  o.betaPhase = f->GetBetaPhase();
-  o.minimumSubgraphLength = f->GetMinimumSubgraphLength();
-  o.mergeQuadDiagonalPoints = f->GetMergeQuadDiagonalPoints();
-  o.threads = f->GetNumberOfThreads();
-  o.maxElements = f->GetMaximumElements();
-  return o;
-}
-
 }  // namespace
 
-vtkGLLatticeInfill::vtkGLLatticeInfill() {
-  const gl::LatticeOptions defaults;  // the defaults live in core
-  this->AlphaWidth = defaults.alphaWidth;
-  this->BetaWidth = defaults.betaWidth;
-  this->AlphaPhase = defaults.alphaPhase;
-  this->BetaPhase = defaults.betaPhase;
-  this->MinimumSubgraphLength = defaults.minimumSubgraphLength;
-  this->MergeQuadDiagonalPoints = defaults.mergeQuadDiagonalPoints;
-  this->NumberOfThreads = defaults.threads;
-  this->MaximumElements = defaults.maxElements;
-}
+vtkGLLatticeInfill::vtkGLLatticeInfill() = default;
 
 int vtkGLLatticeInfill::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
@@ -299,7 +275,7 @@ int vtkGLLatticeInfill::FillInputPortInformation(int, vtkInformation* info) {
 
 int vtkGLLatticeInfill::RequestInformation(vtkInformation*, vtkInformationVector**,
                                            vtkInformationVector*) {
-  return gl::checkParameters(this, [&] { latticeOptions(this).validate(); });
+  return gl::checkParameters(this, [&] { this->Options.validate(); });
 }
 
 int vtkGLLatticeInfill::RequestData(vtkInformation*, vtkInformationVector** inputVector,
@@ -312,7 +288,7 @@ int vtkGLLatticeInfill::RequestData(vtkInformation*, vtkInformationVector** inpu
     bool hasGamma = false;
     const gl::CurvedLayers layers = toCurvedLayers(input, inputPoint, hasGamma);
 
-    gl::LatticeOptions options = latticeOptions(this);
+    gl::LatticeOptions options = this->Options;
     // Graded lattice: the width scale array, if one is selected.
     std::string scaleName;
     vtkInformation* arrayInfo = this->GetInputArrayInformation(0);
@@ -341,8 +317,9 @@ int vtkGLLatticeInfill::RequestData(vtkInformation*, vtkInformationVector** inpu
       const auto [aLo, aHi] = std::minmax_element(layers.alpha.begin(), layers.alpha.end());
       const auto [bLo, bHi] = std::minmax_element(layers.beta.begin(), layers.beta.end());
       vtkWarningMacro(<< "empty lattice: no α- or β-isoline crosses the layers (α range [" << *aLo
-                      << ", " << *aHi << "] mm, AlphaWidth " << this->AlphaWidth << " mm; β range ["
-                      << *bLo << ", " << *bHi << "] mm, BetaWidth " << this->BetaWidth
+                      << ", " << *aHi << "] mm, AlphaWidth " << this->Options.alphaWidth
+                      << " mm; β range [" << *bLo << ", " << *bHi << "] mm, BetaWidth "
+                      << this->Options.betaWidth
                       << " mm); only the layer boundaries are output (LatticeIsolineEdges = 0)");
     }
     this->UpdateProgress(1.0);
@@ -351,12 +328,12 @@ int vtkGLLatticeInfill::RequestData(vtkInformation*, vtkInformationVector** inpu
 
 void vtkGLLatticeInfill::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "AlphaWidth: " << this->AlphaWidth << " mm\n";
-  os << indent << "BetaWidth: " << this->BetaWidth << " mm\n";
-  os << indent << "AlphaPhase: " << this->AlphaPhase << " mm\n";
-  os << indent << "BetaPhase: " << this->BetaPhase << " mm\n";
-  os << indent << "MinimumSubgraphLength: " << this->MinimumSubgraphLength << " mm\n";
-  os << indent << "MaximumElements: " << this->MaximumElements << "\n";
-  os << indent << "MergeQuadDiagonalPoints: " << this->MergeQuadDiagonalPoints << "\n";
-  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
+  os << indent << "AlphaWidth: " << this->Options.alphaWidth << " mm\n";
+  os << indent << "BetaWidth: " << this->Options.betaWidth << " mm\n";
+  os << indent << "AlphaPhase: " << this->Options.alphaPhase << " mm\n";
+  os << indent << "BetaPhase: " << this->Options.betaPhase << " mm\n";
+  os << indent << "MinimumSubgraphLength: " << this->Options.minimumSubgraphLength << " mm\n";
+  os << indent << "MaximumElements: " << this->Options.maxElements << "\n";
+  os << indent << "MergeQuadDiagonalPoints: " << this->Options.mergeQuadDiagonalPoints << "\n";
+  os << indent << "NumberOfThreads: " << this->Options.threads << "\n";
 }

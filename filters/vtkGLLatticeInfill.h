@@ -45,7 +45,10 @@
 #define vtkGLLatticeInfill_h
 
 #include "GeoLatticeFiltersModule.h"
+#include "vtkGLOptionMacros.h"
 #include "vtkPolyDataAlgorithm.h"
+
+#include "lattice/LatticeInfill.h"  // LatticeOptions: the parameters and their defaults
 
 class GEOLATTICEFILTERS_EXPORT vtkGLLatticeInfill : public vtkPolyDataAlgorithm {
 public:
@@ -56,45 +59,36 @@ public:
   ///@{
   /// Lattice widths a and b: distance between neighbouring α- (β-) isolines (mm, default 4,
   /// must be > 0; checked in RequestData so that a bad value is reported, not clamped).
-  vtkSetMacro(AlphaWidth, double);
-  vtkGetMacro(AlphaWidth, double);
-  vtkSetMacro(BetaWidth, double);
-  vtkGetMacro(BetaWidth, double);
+  vtkGLOptionMacro(AlphaWidth, double, alphaWidth);
+  vtkGLOptionMacro(BetaWidth, double, betaWidth);
   ///@}
 
   ///@{
   /// Offsets of the iso-values: α-levels are j·AlphaWidth + AlphaPhase (mm, default 0).
-  vtkSetMacro(AlphaPhase, double);
-  vtkGetMacro(AlphaPhase, double);
-  vtkSetMacro(BetaPhase, double);
-  vtkGetMacro(BetaPhase, double);
+  vtkGLOptionMacro(AlphaPhase, double, alphaPhase);
+  vtkGLOptionMacro(BetaPhase, double, betaPhase);
   ///@}
 
   ///@{
   /// Sub-graphs with a smaller total edge length are dropped (mm, default 0 = keep all).
-  vtkSetClampMacro(MinimumSubgraphLength, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MinimumSubgraphLength, double);
+  vtkGLOptionClampMacro(MinimumSubgraphLength, double, minimumSubgraphLength, 0.0, VTK_DOUBLE_MAX);
   ///@}
 
   ///@{
   /// Remove the isoline points on the slicer's quad diagonals (needs the SourceEdge array;
   /// default on). The removed points are straight-through points of one isoline.
-  vtkSetMacro(MergeQuadDiagonalPoints, vtkTypeBool);
-  vtkGetMacro(MergeQuadDiagonalPoints, vtkTypeBool);
-  vtkBooleanMacro(MergeQuadDiagonalPoints, vtkTypeBool);
+  vtkGLOptionBooleanMacro(MergeQuadDiagonalPoints, mergeQuadDiagonalPoints);
   ///@}
 
   ///@{
   /// Bound against runaway work (core/common/WorkLimit.h): more estimated vertices + edges than
   /// this is refused before the lattice is built (default 40e6, about 8 GB).
-  vtkSetClampMacro(MaximumElements, double, 1.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumElements, double);
+  vtkGLOptionClampMacro(MaximumElements, double, maxElements, 1.0, VTK_DOUBLE_MAX);
   ///@}
 
   ///@{
   /// Worker threads over the layers (default 0 = hardware concurrency).
-  vtkSetClampMacro(NumberOfThreads, int, 0, 256);
-  vtkGetMacro(NumberOfThreads, int);
+  vtkGLOptionClampMacro(NumberOfThreads, int, threads, 0, 256);
   ///@}
 
 protected:
@@ -105,14 +99,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double AlphaWidth;
-  double BetaWidth;
-  double AlphaPhase;
-  double BetaPhase;
-  double MinimumSubgraphLength;
-  double MaximumElements;
-  vtkTypeBool MergeQuadDiagonalPoints;
-  int NumberOfThreads;
+  geolattice::LatticeOptions Options;  ///< the parameters, defaults from core
 
 private:
   vtkGLLatticeInfill(const vtkGLLatticeInfill&) = delete;

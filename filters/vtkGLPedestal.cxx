@@ -39,16 +39,12 @@ gl::PedestalOptions pedestalOptions(vtkGLPedestal* f, vtkDataObject* input = nul
 }
 }  // namespace
 
-vtkGLPedestal::vtkGLPedestal() {
-  const gl::PedestalOptions defaults;
-  this->Height = defaults.height;
-  this->ContactHeight = defaults.contactHeight;
-}
+vtkGLPedestal::vtkGLPedestal() = default;
 
 void vtkGLPedestal::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Height: " << this->Height << " mm\n";
-  os << indent << "ContactHeight: " << this->ContactHeight << " mm\n";
+  os << indent << "Height: " << this->Options.height << " mm\n";
+  os << indent << "ContactHeight: " << this->Options.contactHeight << " mm\n";
   os << indent << "UseOrientation: " << (this->UseOrientation ? "on" : "off") << "\n";
   os << indent << "HeightOverride: " << this->HeightOverride << " mm\n";
 }

@@ -32,7 +32,10 @@
 #define vtkGLPedestal_h
 
 #include "GeoLatticeFiltersModule.h"
+#include "vtkGLOptionMacros.h"
 #include "vtkPolyDataAlgorithm.h"
+
+#include "pedestal/Pedestal.h"  // PedestalOptions: the parameters and their defaults
 
 class GEOLATTICEFILTERS_EXPORT vtkGLPedestal : public vtkPolyDataAlgorithm {
 public:
@@ -42,15 +45,13 @@ public:
 
   ///@{
   /// How far the part is raised on its pedestal (mm, default 0 = no pedestal, in [0, 500]).
-  vtkSetMacro(Height, double);
-  vtkGetMacro(Height, double);
+  vtkGLOptionMacro(Height, double, height);
   ///@}
 
   ///@{
   /// The footprint: faces within this height of the lowest point that face down (mm, default
   /// 0.3, > 0).
-  vtkSetMacro(ContactHeight, double);
-  vtkGetMacro(ContactHeight, double);
+  vtkGLOptionMacro(ContactHeight, double, contactHeight);
   ///@}
 
   ///@{
@@ -78,8 +79,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double Height;
-  double ContactHeight;
+  geolattice::PedestalOptions Options;
   bool UseOrientation = true;
   double HeightOverride = -1.0;
 

@@ -31,35 +31,17 @@ namespace gl = geolattice;
 
 void vtkGLPlaceOnPlatform::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Scale: " << this->Scale << "\n";
-  os << indent << "FitSize: " << this->FitSize << " mm\n";
-  os << indent << "CenterXY: " << (this->CenterXY ? "on" : "off") << "\n";
-  os << indent << "FillHoles: " << (this->FillHoles ? "on" : "off") << "\n";
+  os << indent << "Scale: " << this->Options.scale << "\n";
+  os << indent << "FitSize: " << this->Options.fitSize << " mm\n";
+  os << indent << "CenterXY: " << (this->Options.centerXY ? "on" : "off") << "\n";
+  os << indent << "FillHoles: " << (this->Options.fillHoles ? "on" : "off") << "\n";
 }
 
-vtkGLPlaceOnPlatform::vtkGLPlaceOnPlatform() {
-  const gl::PlacementOptions defaults;
-  this->Scale = defaults.scale;
-  this->FitSize = defaults.fitSize;
-  this->CenterXY = defaults.centerXY;
-  this->FillHoles = defaults.fillHoles;
-}
-
-namespace {
-/// The core options of the filter's parameters (checked by ExecuteInformation).
-gl::PlacementOptions placementOptions(vtkGLPlaceOnPlatform* f) {
-  gl::PlacementOptions o;
-  o.scale = f->GetScale();
-  o.fitSize = f->GetFitSize();
-  o.centerXY = f->GetCenterXY() != 0;
-  o.fillHoles = f->GetFillHoles() != 0;
-  return o;
-}
-}  // namespace
+vtkGLPlaceOnPlatform::vtkGLPlaceOnPlatform() = default;
 
 int vtkGLPlaceOnPlatform::ExecuteInformation(vtkInformation*, vtkInformationVector**,
                                              vtkInformationVector*) {
-  return gl::checkParameters(this, [&] { placementOptions(this).validate(); });
+  return gl::checkParameters(this, [&] { this->Options.validate(); });
 }
 
 int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** inputVector,
@@ -72,7 +54,7 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
     if (!input || !output) {
       throw gl::GeoLatticeError("input and output must be vtkPointSet");
     }
-    const gl::PlacementOptions options = placementOptions(this);
+    const gl::PlacementOptions options = this->Options;
     options.validate();
     // The holes closed first: their patches belong to the part that is placed.
     vtkNew<vtkPolyData> closed;

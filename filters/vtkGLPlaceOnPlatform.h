@@ -32,7 +32,10 @@
 #define vtkGLPlaceOnPlatform_h
 
 #include "GeoLatticeFiltersModule.h"
+#include "vtkGLOptionMacros.h"
 #include "vtkPointSetAlgorithm.h"
+
+#include "placement/PlaceOnPlatform.h"  // PlacementOptions: the parameters and their defaults
 
 class GEOLATTICEFILTERS_EXPORT vtkGLPlaceOnPlatform : public vtkPointSetAlgorithm {
 public:
@@ -42,30 +45,24 @@ public:
 
   ///@{
   /// Uniform scale factor (default 1, > 0). Ignored when FitSize > 0.
-  vtkSetMacro(Scale, double);
-  vtkGetMacro(Scale, double);
+  vtkGLOptionMacro(Scale, double, scale);
   ///@}
 
   ///@{
   /// Target largest bounding-box side after scaling (mm, default 0 = use Scale, >= 0).
-  vtkSetMacro(FitSize, double);
-  vtkGetMacro(FitSize, double);
+  vtkGLOptionMacro(FitSize, double, fitSize);
   ///@}
 
   ///@{
   /// Centre the bounding box in x and y on the origin (default on).
-  vtkSetMacro(CenterXY, vtkTypeBool);
-  vtkGetMacro(CenterXY, vtkTypeBool);
-  vtkBooleanMacro(CenterXY, vtkTypeBool);
+  vtkGLOptionBooleanMacro(CenterXY, centerXY);
   ///@}
 
   ///@{
   /// Close the holes of a surface before placing it (default off; core/mesh/HoleFilling.h:
   /// CGAL's triangulate, refine and fair). Ignored for a tet mesh. The output is then the closed
   /// surface (new points and triangles: the input's point and cell arrays are not passed).
-  vtkSetMacro(FillHoles, vtkTypeBool);
-  vtkGetMacro(FillHoles, vtkTypeBool);
-  vtkBooleanMacro(FillHoles, vtkTypeBool);
+  vtkGLOptionBooleanMacro(FillHoles, fillHoles);
   ///@}
 
 protected:
@@ -75,10 +72,7 @@ protected:
   int ExecuteInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double Scale;
-  double FitSize;
-  vtkTypeBool CenterXY;
-  vtkTypeBool FillHoles;
+  geolattice::PlacementOptions Options;  ///< the parameters, defaults from core
 
 private:
   vtkGLPlaceOnPlatform(const vtkGLPlaceOnPlatform&) = delete;

@@ -28,12 +28,6 @@ namespace gl = geolattice;
 
 namespace {
 
-gl::PrintSummaryOptions summaryOptions(vtkGLPrintSummary* f) {
-  gl::PrintSummaryOptions o;
-  o.filamentDensity = f->GetFilamentDensity();
-  return o;
-}
-
 /// A field value of `data` (0 when absent).
 double fieldOf(vtkDataObject* data, const char* name, int component = 0) {
   vtkDataArray* a = data ? data->GetFieldData()->GetArray(name) : nullptr;
@@ -71,13 +65,12 @@ gl::PrintSummaryInput summaryInput(vtkPolyData* toolpath) {
 }  // namespace
 
 vtkGLPrintSummary::vtkGLPrintSummary() {
-  this->FilamentDensity = gl::PrintSummaryOptions().filamentDensity;
   this->SetNumberOfInputPorts(2);
 }
 
 void vtkGLPrintSummary::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "FilamentDensity: " << this->FilamentDensity << " g/cm3\n";
+  os << indent << "FilamentDensity: " << this->Options.filamentDensity << " g/cm3\n";
 }
 
 int vtkGLPrintSummary::FillInputPortInformation(int port, vtkInformation* info) {
@@ -90,7 +83,7 @@ int vtkGLPrintSummary::FillInputPortInformation(int port, vtkInformation* info) 
 
 int vtkGLPrintSummary::RequestInformation(vtkInformation*, vtkInformationVector**,
                                           vtkInformationVector*) {
-  return gl::checkParameters(this, [&] { summaryOptions(this).validate(); });
+  return gl::checkParameters(this, [&] { this->Options.validate(); });
 }
 
 int vtkGLPrintSummary::RequestData(vtkInformation*, vtkInformationVector** inputVector,
@@ -104,7 +97,7 @@ int vtkGLPrintSummary::RequestData(vtkInformation*, vtkInformationVector** input
       throw gl::GeoLatticeError(
           "empty input: no toolpath to summarize (connect the output of GL Toolpath Planner)");
     }
-    const gl::PrintSummary s = gl::summarizePrint(summaryInput(toolpath), summaryOptions(this));
+    const gl::PrintSummary s = gl::summarizePrint(summaryInput(toolpath), this->Options);
 
     // The strict verdict: the independent verifier's when connected, else the planner's check.
     const bool strict = verifier && verifier->GetFieldData()->GetArray(gl::arrays::CollisionFree);

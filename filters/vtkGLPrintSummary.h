@@ -28,7 +28,10 @@
 #define vtkGLPrintSummary_h
 
 #include "GeoLatticeFiltersModule.h"
+#include "vtkGLOptionMacros.h"
 #include "vtkTableAlgorithm.h"
+
+#include "summary/PrintSummary.h"  // PrintSummaryOptions: the parameters and their defaults
 
 class GEOLATTICEFILTERS_EXPORT vtkGLPrintSummary : public vtkTableAlgorithm {
 public:
@@ -38,8 +41,7 @@ public:
 
   ///@{
   /// Density of the filament (g/cm³, default 1.24 = PLA, > 0).
-  vtkSetMacro(FilamentDensity, double);
-  vtkGetMacro(FilamentDensity, double);
+  vtkGLOptionMacro(FilamentDensity, double, filamentDensity);
   ///@}
 
 protected:
@@ -50,7 +52,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double FilamentDensity;
+  geolattice::PrintSummaryOptions Options;  ///< the parameters, defaults from core
 
 private:
   vtkGLPrintSummary(const vtkGLPrintSummary&) = delete;

@@ -33,23 +33,9 @@ vtkStandardNewMacro(vtkGLTetrahedralizeSurface);
 
 namespace gl = geolattice;
 
-vtkGLTetrahedralizeSurface::vtkGLTetrahedralizeSurface() {
-  const gl::TetrahedralizeOptions defaults;  // the defaults live in core
-  this->TargetEdgeLength = defaults.targetEdgeLength;
-  this->TargetTetCount = defaults.autoTargetTets;
-  this->RadiusEdgeRatio = defaults.radiusEdgeRatio;
-}
+vtkGLTetrahedralizeSurface::vtkGLTetrahedralizeSurface() = default;
 
 namespace {
-/// The core options of the filter's parameters (checked by RequestInformation).
-gl::TetrahedralizeOptions tetrahedralizeOptions(vtkGLTetrahedralizeSurface* f) {
-  gl::TetrahedralizeOptions o;
-  o.targetEdgeLength = f->GetTargetEdgeLength();
-  o.autoTargetTets = f->GetTargetTetCount();
-  o.radiusEdgeRatio = f->GetRadiusEdgeRatio();
-  return o;
-}
-
 // Circumradius / shortest edge of tet (a, b, c, d); infinity for a flat tet.
 double radiusEdgeRatio(const gl::Vec3& a, const gl::Vec3& b, const gl::Vec3& c, const gl::Vec3& d) {
   // Circumcentre x - a solves 2 (p - a) . (x - a) = |p - a|^2 for p = b, c, d.
@@ -79,9 +65,9 @@ void addValue(vtkFieldData* fd, const char* name, double value) {
 
 void vtkGLTetrahedralizeSurface::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "TargetEdgeLength: " << this->TargetEdgeLength << " mm (0 = automatic)\n";
-  os << indent << "TargetTetCount: " << this->TargetTetCount << "\n";
-  os << indent << "RadiusEdgeRatio: " << this->RadiusEdgeRatio << "\n";
+  os << indent << "TargetEdgeLength: " << this->Options.targetEdgeLength << " mm (0 = automatic)\n";
+  os << indent << "TargetTetCount: " << this->Options.autoTargetTets << "\n";
+  os << indent << "RadiusEdgeRatio: " << this->Options.radiusEdgeRatio << "\n";
 }
 
 int vtkGLTetrahedralizeSurface::FillInputPortInformation(int, vtkInformation* info) {
@@ -91,7 +77,7 @@ int vtkGLTetrahedralizeSurface::FillInputPortInformation(int, vtkInformation* in
 
 int vtkGLTetrahedralizeSurface::RequestInformation(vtkInformation*, vtkInformationVector**,
                                                    vtkInformationVector*) {
-  return gl::checkParameters(this, [&] { tetrahedralizeOptions(this).validate(); });
+  return gl::checkParameters(this, [&] { this->Options.validate(); });
 }
 
 int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVector** inputVector,
@@ -106,7 +92,7 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     const gl::TriangleSurface surface = gl::toTriangleSurface(input);
     gl::checkAbort(this, 0.05);
 
-    gl::TetrahedralizeOptions options = tetrahedralizeOptions(this);
+    gl::TetrahedralizeOptions options = this->Options;
     // After each TetGen run (the automatic edge length may need several) and at the end.
     double reported = 0.05;
     options.progress = [this, &reported](double f) {

@@ -57,7 +57,10 @@
 #define vtkGLTetrahedralizeSurface_h
 
 #include "GeoLatticeFiltersModule.h"
+#include "vtkGLOptionMacros.h"
 #include "vtkUnstructuredGridAlgorithm.h"
+
+#include "tetrahedralize/TetrahedralizeSurface.h"  // TetrahedralizeOptions: the parameters and their defaults
 
 class GEOLATTICEFILTERS_EXPORT vtkGLTetrahedralizeSurface : public vtkUnstructuredGridAlgorithm {
 public:
@@ -71,21 +74,18 @@ public:
   ///@{
   /// Target edge length (mm, default 0 = automatic from the enclosed volume and
   /// TargetTetCount; must be >= 0).
-  vtkSetMacro(TargetEdgeLength, double);
-  vtkGetMacro(TargetEdgeLength, double);
+  vtkGLOptionMacro(TargetEdgeLength, double, targetEdgeLength);
   ///@}
 
   ///@{
   /// Tet count aimed at when TargetEdgeLength is 0 (default 75000, must be in [1000, 5000000]).
-  vtkSetMacro(TargetTetCount, int);
-  vtkGetMacro(TargetTetCount, int);
+  vtkGLOptionMacro(TargetTetCount, int, autoTargetTets);
   ///@}
 
   ///@{
   /// Bound on circumradius / shortest edge of the tets, TetGen -q (default 1.414, must be in
   /// [1.1, 10]).
-  vtkSetMacro(RadiusEdgeRatio, double);
-  vtkGetMacro(RadiusEdgeRatio, double);
+  vtkGLOptionMacro(RadiusEdgeRatio, double, radiusEdgeRatio);
   ///@}
 
 protected:
@@ -96,9 +96,7 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double TargetEdgeLength;
-  int TargetTetCount;
-  double RadiusEdgeRatio;
+  geolattice::TetrahedralizeOptions Options;  ///< the parameters, defaults from core
 
 private:
   vtkGLTetrahedralizeSurface(const vtkGLTetrahedralizeSurface&) = delete;

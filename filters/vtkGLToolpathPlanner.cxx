@@ -223,25 +223,10 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
 
 /// The core options of the filter's parameters (checked by RequestInformation).
 gl::ToolpathOptions toolpathOptions(vtkGLToolpathPlanner* f) {
-  gl::ToolpathOptions o;
-  o.pathWidth = f->GetPathWidth();
+  gl::ToolpathOptions o = f->GetOptions();
   o.filamentRadius = 0.5 * f->GetFilamentDiameter();
-  o.flowCorrection = f->GetFlowCorrection();
-  o.printFeedRate = f->GetPrintFeedRate();
-  o.airFeedRate = f->GetAirFeedRate();
-  o.thicknessCap = f->GetThicknessCap();
-  o.maxTurnDeg = f->GetMaxTurnAngle();
-  o.safeMargin = f->GetSafeMargin();
-  o.lift = f->GetLift();
-  o.retraction = f->GetRetraction();
-  o.supportPerimeter = f->GetSupportPerimeter() != 0;
-  o.toothLength = f->GetToothLength();
-  o.maxSegmentLength = f->GetMaxSegmentLength();
-  o.maxElements = f->GetMaximumElements();
   o.nozzle = gl::nozzleModel(f->GetNozzle());
   o.plate = gl::buildPlate(f->GetNozzle());
-  o.clearance.maxTiltDeg = f->GetMaxAxisTilt();
-  o.clearance.blendLength = f->GetTiltBlendLength();
   return o;
 }
 
@@ -250,22 +235,7 @@ gl::ToolpathOptions toolpathOptions(vtkGLToolpathPlanner* f) {
 vtkGLToolpathPlanner::vtkGLToolpathPlanner() {
   this->SetNumberOfInputPorts(2);
   const gl::ToolpathOptions d;  // the defaults live in core
-  this->PathWidth = d.pathWidth;
   this->FilamentDiameter = 2.0 * d.filamentRadius;
-  this->FlowCorrection = d.flowCorrection;
-  this->PrintFeedRate = d.printFeedRate;
-  this->AirFeedRate = d.airFeedRate;
-  this->ThicknessCap = d.thicknessCap;
-  this->MaxTurnAngle = d.maxTurnDeg;
-  this->SafeMargin = d.safeMargin;
-  this->Lift = d.lift;
-  this->Retraction = d.retraction;
-  this->SupportPerimeter = d.supportPerimeter;
-  this->ToothLength = d.toothLength;
-  this->MaxSegmentLength = d.maxSegmentLength;
-  this->MaximumElements = d.maxElements;
-  this->MaxAxisTilt = d.clearance.maxTiltDeg;
-  this->TiltBlendLength = d.clearance.blendLength;
 }
 
 vtkGLToolpathPlanner::~vtkGLToolpathPlanner() = default;
@@ -330,20 +300,20 @@ int vtkGLToolpathPlanner::RequestData(vtkInformation*, vtkInformationVector** in
 
 void vtkGLToolpathPlanner::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "PathWidth: " << this->PathWidth << " mm\n";
+  os << indent << "PathWidth: " << this->Options.pathWidth << " mm\n";
   os << indent << "FilamentDiameter: " << this->FilamentDiameter << " mm\n";
-  os << indent << "FlowCorrection: " << this->FlowCorrection << "\n";
-  os << indent << "PrintFeedRate: " << this->PrintFeedRate << " mm/s\n";
-  os << indent << "AirFeedRate: " << this->AirFeedRate << " mm/s\n";
-  os << indent << "ThicknessCap: " << this->ThicknessCap << "\n";
-  os << indent << "MaxTurnAngle: " << this->MaxTurnAngle << " deg\n";
-  os << indent << "SafeMargin: " << this->SafeMargin << " mm\n";
-  os << indent << "Lift: " << this->Lift << " mm\n";
-  os << indent << "Retraction: " << this->Retraction << " mm\n";
-  os << indent << "SupportPerimeter: " << this->SupportPerimeter << "\n";
-  os << indent << "ToothLength: " << this->ToothLength << " mm\n";
-  os << indent << "MaxSegmentLength: " << this->MaxSegmentLength << " mm\n";
-  os << indent << "MaximumElements: " << this->MaximumElements << "\n";
-  os << indent << "MaxAxisTilt: " << this->MaxAxisTilt << " deg\n";
-  os << indent << "TiltBlendLength: " << this->TiltBlendLength << " mm\n";
+  os << indent << "FlowCorrection: " << this->Options.flowCorrection << "\n";
+  os << indent << "PrintFeedRate: " << this->Options.printFeedRate << " mm/s\n";
+  os << indent << "AirFeedRate: " << this->Options.airFeedRate << " mm/s\n";
+  os << indent << "ThicknessCap: " << this->Options.thicknessCap << "\n";
+  os << indent << "MaxTurnAngle: " << this->Options.maxTurnDeg << " deg\n";
+  os << indent << "SafeMargin: " << this->Options.safeMargin << " mm\n";
+  os << indent << "Lift: " << this->Options.lift << " mm\n";
+  os << indent << "Retraction: " << this->Options.retraction << " mm\n";
+  os << indent << "SupportPerimeter: " << this->Options.supportPerimeter << "\n";
+  os << indent << "ToothLength: " << this->Options.toothLength << " mm\n";
+  os << indent << "MaxSegmentLength: " << this->Options.maxSegmentLength << " mm\n";
+  os << indent << "MaximumElements: " << this->Options.maxElements << "\n";
+  os << indent << "MaxAxisTilt: " << this->Options.clearance.maxTiltDeg << " deg\n";
+  os << indent << "TiltBlendLength: " << this->Options.clearance.blendLength << " mm\n";
 }

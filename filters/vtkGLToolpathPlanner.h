@@ -81,8 +81,11 @@
 #define vtkGLToolpathPlanner_h
 
 #include "GeoLatticeFiltersModule.h"
+#include "vtkGLOptionMacros.h"
 #include "vtkGLNozzleAlgorithm.h"
-#include "vtkSmartPointer.h"  // for the cached toolpath
+
+#include "toolpath/ToolpathPlanner.h"  // ToolpathOptions: the parameters and their defaults
+#include "vtkSmartPointer.h"           // for the cached toolpath
 
 class GEOLATTICEFILTERS_EXPORT vtkGLToolpathPlanner : public vtkGLNozzleAlgorithm {
 public:
@@ -92,8 +95,7 @@ public:
 
   ///@{
   /// Path width w (mm, default 0.6, > 0).
-  vtkSetMacro(PathWidth, double);
-  vtkGetMacro(PathWidth, double);
+  vtkGLOptionMacro(PathWidth, double, pathWidth);
   ///@}
 
   ///@{
@@ -104,77 +106,64 @@ public:
 
   ///@{
   /// Flow correction μ of Eq. 14 (default 0.95, in (0, 1]).
-  vtkSetMacro(FlowCorrection, double);
-  vtkGetMacro(FlowCorrection, double);
+  vtkGLOptionMacro(FlowCorrection, double, flowCorrection);
   ///@}
 
   ///@{
   /// Nozzle feed rate f_p of print moves (mm/s, default 10, > 0).
-  vtkSetMacro(PrintFeedRate, double);
-  vtkGetMacro(PrintFeedRate, double);
+  vtkGLOptionMacro(PrintFeedRate, double, printFeedRate);
   ///@}
 
   ///@{
   /// Nozzle feed rate of air moves (mm/s, default 50, > 0).
-  vtkSetMacro(AirFeedRate, double);
-  vtkGetMacro(AirFeedRate, double);
+  vtkGLOptionMacro(AirFeedRate, double, airFeedRate);
   ///@}
 
   ///@{
   /// λ of Eq. 15: the layer thickness is capped at λ φ_i (default 1.5, > 0).
-  vtkSetMacro(ThicknessCap, double);
-  vtkGetMacro(ThicknessCap, double);
+  vtkGLOptionMacro(ThicknessCap, double, thicknessCap);
   ///@}
 
   ///@{
   /// Largest change of the nozzle axis between consecutive points (degrees, default 5, > 0).
-  vtkSetMacro(MaxTurnAngle, double);
-  vtkGetMacro(MaxTurnAngle, double);
+  vtkGLOptionMacro(MaxTurnAngle, double, maxTurnDeg);
   ///@}
 
   ///@{
   /// Margin of the safe box around the in-process part for air moves (mm, default 5, >= 0).
-  vtkSetMacro(SafeMargin, double);
-  vtkGetMacro(SafeMargin, double);
+  vtkGLOptionMacro(SafeMargin, double, safeMargin);
   ///@}
 
   ///@{
   /// Lift along the axis for a hop onto an upper node of the current sub-graph (mm, default 2, > 0).
-  vtkSetMacro(Lift, double);
-  vtkGetMacro(Lift, double);
+  vtkGLOptionMacro(Lift, double, lift);
   ///@}
 
   ///@{
   /// Filament retracted before each air move and primed after it (mm, default 1, >= 0).
-  vtkSetMacro(Retraction, double);
-  vtkGetMacro(Retraction, double);
+  vtkGLOptionMacro(Retraction, double, retraction);
   ///@}
 
   ///@{
   /// Add the jagged support perimeter where boundary edges were trimmed (default on).
-  vtkSetMacro(SupportPerimeter, vtkTypeBool);
-  vtkGetMacro(SupportPerimeter, vtkTypeBool);
-  vtkBooleanMacro(SupportPerimeter, vtkTypeBool);
+  vtkGLOptionBooleanMacro(SupportPerimeter, supportPerimeter);
   ///@}
 
   ///@{
   /// Tooth length l of the support perimeter along trimmed edges (mm, default 0 = 2 PathWidth, >= 0).
-  vtkSetMacro(ToothLength, double);
-  vtkGetMacro(ToothLength, double);
+  vtkGLOptionMacro(ToothLength, double, toothLength);
   ///@}
 
   ///@{
   /// Bound against runaway work (core/common/WorkLimit.h): an output estimated to have more
   /// elements than this is refused before it is built (default 40e6, about 8 GB).
-  vtkSetClampMacro(MaximumElements, double, 1.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(MaximumElements, double);
+  vtkGLOptionClampMacro(MaximumElements, double, maxElements, 1.0, VTK_DOUBLE_MAX);
   ///@}
 
   ///@{
   /// Longest segment of the path: longer ones are subdivided (mm, default 1, >= 0; 0 = never), so
   /// that a collision check of the path's points samples it this finely.
-  vtkSetMacro(MaxSegmentLength, double);
-  vtkGetMacro(MaxSegmentLength, double);
+  vtkGLOptionMacro(MaxSegmentLength, double, maxSegmentLength);
   ///@}
 
   ///@{
@@ -182,11 +171,12 @@ public:
   /// nozzle into earlier material of the path (degrees, default 30, in [0, 60]; 0 = the paper's
   /// axis ∇γ everywhere). The tilt fades out over TiltBlendLength mm of path on each side
   /// (default 5, >= 0).
-  vtkSetMacro(MaxAxisTilt, double);
-  vtkGetMacro(MaxAxisTilt, double);
-  vtkSetMacro(TiltBlendLength, double);
-  vtkGetMacro(TiltBlendLength, double);
+  vtkGLOptionMacro(MaxAxisTilt, double, clearance.maxTiltDeg);
+  vtkGLOptionMacro(TiltBlendLength, double, clearance.blendLength);
   ///@}
+
+  /// The stage's core options as the parameters set them (C++ only: a core type).
+  VTK_WRAPEXCLUDE const geolattice::ToolpathOptions& GetOptions() const { return this->Options; }
 
 protected:
   vtkGLToolpathPlanner();
@@ -196,22 +186,8 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  double PathWidth;
+  geolattice::ToolpathOptions Options;  ///< the parameters, defaults from core
   double FilamentDiameter;
-  double FlowCorrection;
-  double PrintFeedRate;
-  double AirFeedRate;
-  double ThicknessCap;
-  double MaxTurnAngle;
-  double SafeMargin;
-  double Lift;
-  double Retraction;
-  vtkTypeBool SupportPerimeter;
-  double ToothLength;
-  double MaxSegmentLength;
-  double MaximumElements;
-  double MaxAxisTilt;
-  double TiltBlendLength;
 
 private:
   vtkGLToolpathPlanner(const vtkGLToolpathPlanner&) = delete;
