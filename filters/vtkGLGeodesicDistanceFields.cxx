@@ -66,11 +66,9 @@ vtkNew<vtkDoubleArray> vectorArray(const char* name, const std::vector<geolattic
 
 /// The core options of the filter's parameters (checked by RequestInformation).
 geolattice::GeodesicFieldOptions fieldOptions(vtkGLGeodesicDistanceFields* f) {
-  geolattice::GeodesicFieldOptions o;
-  o.timeFactor = f->GetTimeFactor();
+  geolattice::GeodesicFieldOptions o = f->GetOptions();
   const double* r = f->GetReferenceVector();
   o.reference = geolattice::Vec3(r[0], r[1], r[2]);
-  o.referenceParallelDeg = f->GetReferenceParallelAngle();
   o.backend = f->GetUseCholmod() ? geolattice::CholeskyBackend::Cholmod
                                  : geolattice::CholeskyBackend::EigenLDLT;
   return o;
@@ -87,11 +85,9 @@ vtkGLGeodesicDistanceFields::vtkGLGeodesicDistanceFields() : Cache(new SolverCac
   this->SourceMode = LOWEST_Z;
   this->BaseTolerance = base.tolerance;
   this->BaseFaceAngle = base.maxFaceAngleDeg;
-  this->TimeFactor = fields.timeFactor;
   for (int k = 0; k < 3; ++k) {
     this->ReferenceVector[k] = fields.reference[k];
   }
-  this->ReferenceParallelAngle = fields.referenceParallelDeg;
   this->UseCholmod = fields.backend == geolattice::CholeskyBackend::Cholmod;
 }
 
@@ -222,9 +218,9 @@ void vtkGLGeodesicDistanceFields::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "SourceMode: " << this->SourceMode << "\n";
   os << indent << "BaseTolerance: " << this->BaseTolerance << " mm\n";
   os << indent << "BaseFaceAngle: " << this->BaseFaceAngle << " deg\n";
-  os << indent << "TimeFactor: " << this->TimeFactor << "\n";
+  os << indent << "TimeFactor: " << this->Options.timeFactor << "\n";
   os << indent << "ReferenceVector: " << this->ReferenceVector[0] << " " << this->ReferenceVector[1]
      << " " << this->ReferenceVector[2] << "\n";
-  os << indent << "ReferenceParallelAngle: " << this->ReferenceParallelAngle << " deg\n";
+  os << indent << "ReferenceParallelAngle: " << this->Options.referenceParallelDeg << " deg\n";
   os << indent << "UseCholmod: " << this->UseCholmod << "\n";
 }

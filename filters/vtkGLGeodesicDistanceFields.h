@@ -39,7 +39,10 @@
 #define vtkGLGeodesicDistanceFields_h
 
 #include "GeoLatticeFiltersModule.h"
+#include "vtkGLOptionMacros.h"
 #include "vtkUnstructuredGridAlgorithm.h"
+
+#include "gdf/GeodesicDistanceFields.h"  // GeodesicFieldOptions: the parameters and their defaults
 
 #include <memory>
 
@@ -71,8 +74,7 @@ public:
 
   ///@{
   /// Heat time t = TimeFactor * h^2 with h the mean edge length (default 4, > 0).
-  vtkSetMacro(TimeFactor, double);
-  vtkGetMacro(TimeFactor, double);
+  vtkGLOptionMacro(TimeFactor, double, timeFactor);
   ///@}
 
   ///@{
@@ -83,8 +85,7 @@ public:
 
   ///@{
   /// Angle below which r counts as parallel to g_γ (deg, default 1, in [0, 90)).
-  vtkSetMacro(ReferenceParallelAngle, double);
-  vtkGetMacro(ReferenceParallelAngle, double);
+  vtkGLOptionMacro(ReferenceParallelAngle, double, referenceParallelDeg);
   ///@}
 
   ///@{
@@ -99,6 +100,11 @@ public:
   /// factor on this mesh, e.g. the CLI once the fields are computed. Does not modify the filter.
   void ReleaseSolver();
 
+  /// The stage's core options as the parameters set them (C++ only: a core type).
+  VTK_WRAPEXCLUDE const geolattice::GeodesicFieldOptions& GetOptions() const {
+    return this->Options;
+  }
+
 protected:
   vtkGLGeodesicDistanceFields();
   ~vtkGLGeodesicDistanceFields() override;
@@ -107,12 +113,11 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
+  geolattice::GeodesicFieldOptions Options;  ///< the parameters, defaults from core
   int SourceMode;
   double BaseTolerance;
   double BaseFaceAngle;
-  double TimeFactor;
   double ReferenceVector[3];
-  double ReferenceParallelAngle;
   vtkTypeBool UseCholmod;
 
 private:

@@ -216,12 +216,10 @@ void printOrderPolyline(const gl::PieceSequence& pieces, vtkPolyData* out) {
 }
 /// The core options of the filter's parameters (checked by RequestInformation).
 gl::SequenceOptions sequenceOptions(vtkGLPrintSequencer* f) {
-  gl::SequenceOptions o;
+  gl::SequenceOptions o = f->GetOptions();
   // Both clamped by their setters.
   o.strategy = static_cast<gl::SequenceStrategy>(
       f->GetStrategyOverride() >= 0 ? f->GetStrategyOverride() : f->GetStrategy());
-  o.rolloutCandidates = f->GetRolloutCandidates();
-  o.retractionCost = f->GetRetractionCost();
   return o;
 }
 
@@ -230,10 +228,6 @@ gl::SequenceOptions sequenceOptions(vtkGLPrintSequencer* f) {
 vtkGLPrintSequencer::vtkGLPrintSequencer() {
   this->SetNumberOfInputPorts(2);
   this->SetNumberOfOutputPorts(3);
-  const gl::SequenceOptions defaults;
-  this->Strategy = static_cast<int>(defaults.strategy);
-  this->RolloutCandidates = defaults.rolloutCandidates;
-  this->RetractionCost = defaults.retractionCost;
   this->SampleSpacing = gl::MaterialSampling{}.spacing;
   this->NumberOfThreads = gl::PotentialCollisionOptions{}.threads;
   this->MaximumElements = gl::PotentialCollisionOptions{}.maxPairs;
@@ -322,12 +316,12 @@ int vtkGLPrintSequencer::RequestData(vtkInformation*, vtkInformationVector** inp
 
 void vtkGLPrintSequencer::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Strategy: " << this->Strategy << "\n";
+  os << indent << "Strategy: " << this->GetStrategy() << "\n";
   os << indent << "StrategyOverride: " << this->StrategyOverride << "\n";
   os << indent << "SampleSpacing: " << this->SampleSpacing << " mm\n";
   os << indent << "MaximumElements: " << this->MaximumElements << "\n";
-  os << indent << "RolloutCandidates: " << this->RolloutCandidates << "\n";
-  os << indent << "RetractionCost: " << this->RetractionCost << " mm\n";
+  os << indent << "RolloutCandidates: " << this->Options.rolloutCandidates << "\n";
+  os << indent << "RetractionCost: " << this->Options.retractionCost << " mm\n";
   os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
   os << indent << "SplitRounds: " << this->SplitRounds << "\n";
 }

@@ -60,7 +60,10 @@
 #define vtkGLPrintSequencer_h
 
 #include "GeoLatticeFiltersModule.h"
+#include "vtkGLOptionMacros.h"
 #include "vtkGLNozzleAlgorithm.h"
+
+#include "sequence/PrintSequencer.h"  // SequenceOptions: the parameters and their defaults
 
 class GEOLATTICEFILTERS_EXPORT vtkGLPrintSequencer : public vtkGLNozzleAlgorithm {
 public:
@@ -78,8 +81,7 @@ public:
 
   ///@{
   /// Ordering strategy (default 3 = Best).
-  vtkSetClampMacro(Strategy, int, LPT, BEST);
-  vtkGetMacro(Strategy, int);
+  vtkGLOptionEnumMacro(Strategy, strategy, LPT, BEST);
   ///@}
 
   ///@{
@@ -105,14 +107,12 @@ public:
 
   ///@{
   /// Best: nearest candidates tried at each retraction (default 6, >= 1).
-  vtkSetMacro(RolloutCandidates, int);
-  vtkGetMacro(RolloutCandidates, int);
+  vtkGLOptionMacro(RolloutCandidates, int, rolloutCandidates);
   ///@}
 
   ///@{
   /// Best: millimetres of air move one retraction is worth (default 20, >= 0).
-  vtkSetMacro(RetractionCost, double);
-  vtkGetMacro(RetractionCost, double);
+  vtkGLOptionMacro(RetractionCost, double, retractionCost);
   ///@}
 
   ///@{
@@ -128,6 +128,9 @@ public:
   vtkGetMacro(NumberOfThreads, int);
   ///@}
 
+  /// The stage's core options as the parameters set them (C++ only: a core type).
+  VTK_WRAPEXCLUDE const geolattice::SequenceOptions& GetOptions() const { return this->Options; }
+
 protected:
   vtkGLPrintSequencer();
   ~vtkGLPrintSequencer() override = default;
@@ -136,12 +139,10 @@ protected:
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
-  int Strategy;
+  geolattice::SequenceOptions Options;  ///< the parameters, defaults from core
   int StrategyOverride = -1;
   double SampleSpacing;
   double MaximumElements;
-  int RolloutCandidates;
-  double RetractionCost;
   int NumberOfThreads;
   int SplitRounds;
 
