@@ -61,68 +61,35 @@ inline int choice(const std::string& flag, const std::string& value,
 /// A number option bound to `set`/`get` of one filter (the getter gives the default).
 template <class F>
 CliOption number(const char* flag, const char* value, const char* section, const char* help,
-                 const std::string& property, F* (*filter)(P&), void (F::*set)(double),
+                 const std::string& property, vtkNew<F> P::*filter, void (F::*set)(double),
                  double (F::*get)()) {
-  return {flag,
-          value,
-          section,
-          help,
-          property,
-          [=](P& p, RunOptions&, const std::string& v) { (filter(p)->*set)(parseNumber(flag, v)); },
-          [=](P& p, const RunOptions&) {
-            return text((filter(p)->*get)());
-          }};
+  return {
+      flag,
+      value,
+      section,
+      help,
+      property,
+      [=](P& p, RunOptions&, const std::string& v) { ((p.*filter)->*set)(parseNumber(flag, v)); },
+      [=](P& p, const RunOptions&) {
+        return text(((p.*filter)->*get)());
+      }};
 }
 
 /// A flag without a value that sets one filter's boolean property to `to`; the option listing
 /// shows the filter's value as `onWord` or `offWord` (the getter gives the default).
 template <class F, class Set, class Get>
 CliOption toggle(const char* flag, const char* section, const char* help,
-                 const std::string& property, F* (*filter)(P&), Set set, Get get, bool to,
+                 const std::string& property, vtkNew<F> P::*filter, Set set, Get get, bool to,
                  const char* onWord = "on", const char* offWord = "off") {
   return {flag,
           "",
           section,
           help,
           property,
-          [=](P& p, RunOptions&, const std::string&) { (filter(p)->*set)(to); },
+          [=](P& p, RunOptions&, const std::string&) { ((p.*filter)->*set)(to); },
           [=](P& p, const RunOptions&) {
-            return std::string((filter(p)->*get)() ? onWord : offWord);
+            return std::string(((p.*filter)->*get)() ? onWord : offWord);
           }};
-}
-
-inline vtkGLNozzle* nozzle(P& p) {
-  return p.Nozzle;
-}
-inline vtkGLPedestal* pedestal(P& p) {
-  return p.Pedestal;
-}
-inline vtkGLPlaceOnPlatform* placement(P& p) {
-  return p.Placement;
-}
-inline vtkGLAutoOrient* orientation(P& p) {
-  return p.Orientation;
-}
-inline vtkGLTetrahedralizeSurface* tets(P& p) {
-  return p.Tetrahedralize;
-}
-inline vtkGLGeodesicDistanceFields* fields(P& p) {
-  return p.GeodesicFields;
-}
-inline vtkGLCurvedLayerSlicer* slicer(P& p) {
-  return p.Slicer;
-}
-inline vtkGLOverhangAnalysis* overhang(P& p) {
-  return p.OverhangAnalysis;
-}
-inline vtkGLLatticeInfill* lattice(P& p) {
-  return p.LatticeInfill;
-}
-inline vtkGLToolpathPlanner* planner(P& p) {
-  return p.Planner;
-}
-inline vtkGLURScriptWriter* script(P& p) {
-  return p.ScriptWriter;
 }
 
 inline const char* const kStageNames =

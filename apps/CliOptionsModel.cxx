@@ -1,4 +1,4 @@
-// The general options and those of the model placement, orientation, meshing, fields and layers.
+// The general options and those of the model placement, &P::Orientation, meshing, fields and layers.
 #include "CliOptionTable.h"
 
 namespace geolattice::cli {
@@ -34,22 +34,23 @@ void addModelOptions(std::vector<CliOption>& t) {
                }});
 
   t.push_back(number("--scale", "F", place, "uniform scale factor applied to the model",
-                     "GLPlaceOnPlatform.Scale", placement, &vtkGLPlaceOnPlatform::SetScale,
+                     "GLPlaceOnPlatform.Scale", &P::Placement, &vtkGLPlaceOnPlatform::SetScale,
                      &vtkGLPlaceOnPlatform::GetScale));
   t.push_back(number("--fit-size", "MM", place,
                      "scale so the largest bounding-box side is MM (0 = use --scale)",
-                     "GLPlaceOnPlatform.FitSize", placement, &vtkGLPlaceOnPlatform::SetFitSize,
+                     "GLPlaceOnPlatform.FitSize", &P::Placement, &vtkGLPlaceOnPlatform::SetFitSize,
                      &vtkGLPlaceOnPlatform::GetFitSize));
-  t.push_back(toggle("--no-center", place,
-                     "keep x and y as they are (default: bounding box centred on x = y = 0)",
-                     "GLPlaceOnPlatform.CenterXY", placement, &vtkGLPlaceOnPlatform::SetCenterXY,
-                     &vtkGLPlaceOnPlatform::GetCenterXY, false, "centred", "kept"));
+  t.push_back(toggle(
+      "--no-center", place, "keep x and y as they are (default: bounding box centred on x = y = 0)",
+      "GLPlaceOnPlatform.CenterXY", &P::Placement, &vtkGLPlaceOnPlatform::SetCenterXY,
+      &vtkGLPlaceOnPlatform::GetCenterXY, false, "centred", "kept"));
 
   t.push_back(toggle("--fill-holes", place,
                      "close the holes of an open surface (a scan) before placing it: each gets\n"
                      "a patch faired into the surface around it (look at it before printing)",
-                     "GLPlaceOnPlatform.FillHoles", placement, &vtkGLPlaceOnPlatform::SetFillHoles,
-                     &vtkGLPlaceOnPlatform::GetFillHoles, true));
+                     "GLPlaceOnPlatform.FillHoles", &P::Placement,
+                     &vtkGLPlaceOnPlatform::SetFillHoles, &vtkGLPlaceOnPlatform::GetFillHoles,
+                     true));
 
   const char* orient = "Orientation (which side of the part faces the plate)";
   t.push_back({"--orient", "MODE", orient,
@@ -65,7 +66,7 @@ void addModelOptions(std::vector<CliOption>& t) {
                }});
   t.push_back(number("--min-base-area", "MM2", orient,
                      "contact area with the plate an orientation needs (mm^2)",
-                     "GLAutoOrient.MinBaseArea", orientation, &vtkGLAutoOrient::SetMinBaseArea,
+                     "GLAutoOrient.MinBaseArea", &P::Orientation, &vtkGLAutoOrient::SetMinBaseArea,
                      &vtkGLAutoOrient::GetMinBaseArea));
   t.push_back({"--pedestal", "auto|MM", orient,
                "raise the part on a printed column of its footprint, MM tall, so\n"
@@ -114,7 +115,7 @@ void addModelOptions(std::vector<CliOption>& t) {
 
   t.push_back(number("--edge-length", "MM", mesh,
                      "target tet edge length; 0 = automatic (see --target-tets)",
-                     "GLTetrahedralizeSurface.TargetEdgeLength", tets,
+                     "GLTetrahedralizeSurface.TargetEdgeLength", &P::Tetrahedralize,
                      &vtkGLTetrahedralizeSurface::SetTargetEdgeLength,
                      &vtkGLTetrahedralizeSurface::GetTargetEdgeLength));
   t.push_back({"--target-tets", "N", mesh, "tet count the automatic edge length aims at",
@@ -128,7 +129,7 @@ void addModelOptions(std::vector<CliOption>& t) {
                }});
   t.push_back(number("--radius-edge", "R", mesh,
                      "TetGen radius-edge ratio bound (quality; 1.414 = sqrt 2)",
-                     "GLTetrahedralizeSurface.RadiusEdgeRatio", tets,
+                     "GLTetrahedralizeSurface.RadiusEdgeRatio", &P::Tetrahedralize,
                      &vtkGLTetrahedralizeSurface::SetRadiusEdgeRatio,
                      &vtkGLTetrahedralizeSurface::GetRadiusEdgeRatio));
 
@@ -150,16 +151,16 @@ void addModelOptions(std::vector<CliOption>& t) {
                }});
   t.push_back(number("--base-tolerance", "MM", gdf,
                      "height band above the lowest point that is the base",
-                     "GLGeodesicDistanceFields.BaseTolerance", fields,
+                     "GLGeodesicDistanceFields.BaseTolerance", &P::GeodesicFields,
                      &vtkGLGeodesicDistanceFields::SetBaseTolerance,
                      &vtkGLGeodesicDistanceFields::GetBaseTolerance));
   t.push_back(number("--base-angle", "DEG", gdf,
                      "max angle between a base face's outward normal and -z",
-                     "GLGeodesicDistanceFields.BaseFaceAngle", fields,
+                     "GLGeodesicDistanceFields.BaseFaceAngle", &P::GeodesicFields,
                      &vtkGLGeodesicDistanceFields::SetBaseFaceAngle,
                      &vtkGLGeodesicDistanceFields::GetBaseFaceAngle));
   t.push_back(number("--time-factor", "F", gdf, "heat time t = F * h^2 (h = mean edge length)",
-                     "GLGeodesicDistanceFields.TimeFactor", fields,
+                     "GLGeodesicDistanceFields.TimeFactor", &P::GeodesicFields,
                      &vtkGLGeodesicDistanceFields::SetTimeFactor,
                      &vtkGLGeodesicDistanceFields::GetTimeFactor));
   t.push_back({"--reference", "X,Y,Z", gdf, "reference vector r of Eq. 3 (the lattice directions)",
@@ -182,7 +183,7 @@ void addModelOptions(std::vector<CliOption>& t) {
 
   t.push_back(number(
       "--layer-interval", "MM", layers, "gamma distance between layers (nominal layer thickness)",
-      "GLCurvedLayerSlicer.LayerInterval", slicer, &vtkGLCurvedLayerSlicer::SetLayerInterval,
+      "GLCurvedLayerSlicer.LayerInterval", &P::Slicer, &vtkGLCurvedLayerSlicer::SetLayerInterval,
       &vtkGLCurvedLayerSlicer::GetLayerInterval));
   t.push_back({"--first-layer", "MM", layers, "gamma of the first layer (default: the interval)",
                "GLCurvedLayerSlicer.FirstLayerOffset",
@@ -195,8 +196,8 @@ void addModelOptions(std::vector<CliOption>& t) {
                }});
   t.push_back(number(
       "--overhang-threshold", "DEG", layers, "overhang angle above which a surface needs support",
-      "GLOverhangAnalysis.ThresholdAngle", overhang, &vtkGLOverhangAnalysis::SetThresholdAngle,
-      &vtkGLOverhangAnalysis::GetThresholdAngle));
+      "GLOverhangAnalysis.ThresholdAngle", &P::OverhangAnalysis,
+      &vtkGLOverhangAnalysis::SetThresholdAngle, &vtkGLOverhangAnalysis::GetThresholdAngle));
 }
 
 }  // namespace geolattice::cli

@@ -19,20 +19,20 @@ void addPrintOptions(std::vector<CliOption>& t) {
                  return text(p.LatticeInfill->GetAlphaWidth());
                }});
   t.push_back(number("--alpha-width", "MM", latt, "distance between alpha lines",
-                     "GLLatticeInfill.AlphaWidth", lattice, &vtkGLLatticeInfill::SetAlphaWidth,
-                     &vtkGLLatticeInfill::GetAlphaWidth));
+                     "GLLatticeInfill.AlphaWidth", &P::LatticeInfill,
+                     &vtkGLLatticeInfill::SetAlphaWidth, &vtkGLLatticeInfill::GetAlphaWidth));
   t.push_back(number("--beta-width", "MM", latt, "distance between beta lines",
-                     "GLLatticeInfill.BetaWidth", lattice, &vtkGLLatticeInfill::SetBetaWidth,
-                     &vtkGLLatticeInfill::GetBetaWidth));
+                     "GLLatticeInfill.BetaWidth", &P::LatticeInfill,
+                     &vtkGLLatticeInfill::SetBetaWidth, &vtkGLLatticeInfill::GetBetaWidth));
   t.push_back(number("--alpha-phase", "MM", latt, "offset of the alpha levels",
-                     "GLLatticeInfill.AlphaPhase", lattice, &vtkGLLatticeInfill::SetAlphaPhase,
-                     &vtkGLLatticeInfill::GetAlphaPhase));
+                     "GLLatticeInfill.AlphaPhase", &P::LatticeInfill,
+                     &vtkGLLatticeInfill::SetAlphaPhase, &vtkGLLatticeInfill::GetAlphaPhase));
   t.push_back(number("--beta-phase", "MM", latt, "offset of the beta levels",
-                     "GLLatticeInfill.BetaPhase", lattice, &vtkGLLatticeInfill::SetBetaPhase,
-                     &vtkGLLatticeInfill::GetBetaPhase));
+                     "GLLatticeInfill.BetaPhase", &P::LatticeInfill,
+                     &vtkGLLatticeInfill::SetBetaPhase, &vtkGLLatticeInfill::GetBetaPhase));
   t.push_back(number("--min-subgraph", "MM", latt,
                      "drop connected lattice pieces shorter than this",
-                     "GLLatticeInfill.MinimumSubgraphLength", lattice,
+                     "GLLatticeInfill.MinimumSubgraphLength", &P::LatticeInfill,
                      &vtkGLLatticeInfill::SetMinimumSubgraphLength,
                      &vtkGLLatticeInfill::GetMinimumSubgraphLength));
   t.push_back({"--max-elements", "N", latt,
@@ -75,44 +75,46 @@ void addPrintOptions(std::vector<CliOption>& t) {
                [](P& p, const RunOptions&) {
                  return text(p.Sequencer->GetSplitRounds());
                }});
-  t.push_back(number(
-      "--nozzle-angle", "DEG", seq, "half-angle NA of the nozzle's bounding cone, in (0, 90)",
-      "GLNozzle.NozzleAngle", nozzle, &vtkGLNozzle::SetNozzleAngle, &vtkGLNozzle::GetNozzleAngle));
+  t.push_back(number("--nozzle-angle", "DEG", seq,
+                     "half-angle NA of the nozzle's bounding cone, in (0, 90)",
+                     "GLNozzle.NozzleAngle", &P::Nozzle, &vtkGLNozzle::SetNozzleAngle,
+                     &vtkGLNozzle::GetNozzleAngle));
   t.push_back(number("--nozzle-length", "MM", seq,
                      "cone length; above it the holder (0 = cone only)", "GLNozzle.NozzleLength",
-                     nozzle, &vtkGLNozzle::SetNozzleLength, &vtkGLNozzle::GetNozzleLength));
+                     &P::Nozzle, &vtkGLNozzle::SetNozzleLength, &vtkGLNozzle::GetNozzleLength));
   t.push_back(number("--holder-radius", "MM", seq,
                      "radius of the holder cylinder above the nozzle length",
-                     "GLNozzle.HolderRadius", nozzle, &vtkGLNozzle::SetHolderRadius,
+                     "GLNozzle.HolderRadius", &P::Nozzle, &vtkGLNozzle::SetHolderRadius,
                      &vtkGLNozzle::GetHolderRadius));
   t.push_back(
       number("--holder-length", "MM", seq,
              "holder length above the nozzle length: the printhead ends there (0 = unbounded)",
-             "GLNozzle.HolderLength", nozzle, &vtkGLNozzle::SetHolderLength,
+             "GLNozzle.HolderLength", &P::Nozzle, &vtkGLNozzle::SetHolderLength,
              &vtkGLNozzle::GetHolderLength));
   t.push_back(number("--tip-clearance", "MM", seq,
                      "ignore material at most this high above the nozzle tip",
-                     "GLNozzle.TipClearance", nozzle, &vtkGLNozzle::SetTipClearance,
+                     "GLNozzle.TipClearance", &P::Nozzle, &vtkGLNozzle::SetTipClearance,
                      &vtkGLNozzle::GetTipClearance));
   t.push_back(number("--tip-face-radius", "MM", seq,
                      "ignore material this close to the tip (under the nozzle's\n"
                      "flat face, which presses the bead)",
-                     "GLNozzle.TipFaceRadius", nozzle, &vtkGLNozzle::SetTipFaceRadius,
+                     "GLNozzle.TipFaceRadius", &P::Nozzle, &vtkGLNozzle::SetTipFaceRadius,
                      &vtkGLNozzle::GetTipFaceRadius));
   t.push_back(number("--face-contact", "MM", seq,
                      "with --printhead: ignore neighbouring beads at most this high above\n"
                      "the tip under the face's rim (within its radius + MM of the axis)",
-                     "GLNozzle.FaceContact", nozzle, &vtkGLNozzle::SetFaceContact,
+                     "GLNozzle.FaceContact", &P::Nozzle, &vtkGLNozzle::SetFaceContact,
                      &vtkGLNozzle::GetFaceContact));
   t.push_back(toggle("--no-plate", seq,
                      "the build plate is no obstacle (default: it is, like printed material)",
-                     "GLNozzle.BuildPlate", nozzle, &vtkGLNozzle::SetBuildPlate,
+                     "GLNozzle.BuildPlate", &P::Nozzle, &vtkGLNozzle::SetBuildPlate,
                      &vtkGLNozzle::GetBuildPlate, false, "obstacle", "none"));
-  t.push_back(number(
-      "--plate-margin", "MM", seq, "the build plate extends this far beyond the part's footprint",
-      "GLNozzle.PlateMargin", nozzle, &vtkGLNozzle::SetPlateMargin, &vtkGLNozzle::GetPlateMargin));
+  t.push_back(number("--plate-margin", "MM", seq,
+                     "the build plate extends this far beyond the part's footprint",
+                     "GLNozzle.PlateMargin", &P::Nozzle, &vtkGLNozzle::SetPlateMargin,
+                     &vtkGLNozzle::GetPlateMargin));
   t.push_back(number("--plate-thickness", "MM", seq, "thickness of the build plate under z = 0",
-                     "GLNozzle.PlateThickness", nozzle, &vtkGLNozzle::SetPlateThickness,
+                     "GLNozzle.PlateThickness", &P::Nozzle, &vtkGLNozzle::SetPlateThickness,
                      &vtkGLNozzle::GetPlateThickness));
   t.push_back({"--printhead", "FILE", seq,
                "printhead mesh (.stl .obj .ply .vtp .off; tip at the origin, axis +z,\n"
@@ -141,61 +143,61 @@ void addPrintOptions(std::vector<CliOption>& t) {
                }});
 
   t.push_back(number("--path-width", "MM", path, "path (bead) width w",
-                     "GLToolpathPlanner.PathWidth", planner, &vtkGLToolpathPlanner::SetPathWidth,
-                     &vtkGLToolpathPlanner::GetPathWidth));
+                     "GLToolpathPlanner.PathWidth", &P::Planner,
+                     &vtkGLToolpathPlanner::SetPathWidth, &vtkGLToolpathPlanner::GetPathWidth));
   t.push_back(number(
       "--filament-diameter", "MM", path, "raw filament diameter; Eq. 14 uses the radius MM / 2",
-      "GLToolpathPlanner.FilamentDiameter", planner, &vtkGLToolpathPlanner::SetFilamentDiameter,
+      "GLToolpathPlanner.FilamentDiameter", &P::Planner, &vtkGLToolpathPlanner::SetFilamentDiameter,
       &vtkGLToolpathPlanner::GetFilamentDiameter));
   t.push_back(number("--flow", "MU", path, "flow correction mu of Eq. 14, in (0, 1]",
-                     "GLToolpathPlanner.FlowCorrection", planner,
+                     "GLToolpathPlanner.FlowCorrection", &P::Planner,
                      &vtkGLToolpathPlanner::SetFlowCorrection,
                      &vtkGLToolpathPlanner::GetFlowCorrection));
   t.push_back(number("--print-speed", "MM/S", path, "nozzle feed rate of print moves",
-                     "GLToolpathPlanner.PrintFeedRate", planner,
+                     "GLToolpathPlanner.PrintFeedRate", &P::Planner,
                      &vtkGLToolpathPlanner::SetPrintFeedRate,
                      &vtkGLToolpathPlanner::GetPrintFeedRate));
   t.push_back(number("--air-speed", "MM/S", path, "nozzle feed rate of air moves",
-                     "GLToolpathPlanner.AirFeedRate", planner,
+                     "GLToolpathPlanner.AirFeedRate", &P::Planner,
                      &vtkGLToolpathPlanner::SetAirFeedRate, &vtkGLToolpathPlanner::GetAirFeedRate));
   t.push_back(number(
       "--thickness-cap", "L", path, "layer thickness capped at L x the layer interval (Eq. 15)",
-      "GLToolpathPlanner.ThicknessCap", planner, &vtkGLToolpathPlanner::SetThicknessCap,
+      "GLToolpathPlanner.ThicknessCap", &P::Planner, &vtkGLToolpathPlanner::SetThicknessCap,
       &vtkGLToolpathPlanner::GetThicknessCap));
   t.push_back(number(
       "--max-turn", "DEG", path, "largest nozzle axis change between points (rotation steps)",
-      "GLToolpathPlanner.MaxTurnAngle", planner, &vtkGLToolpathPlanner::SetMaxTurnAngle,
+      "GLToolpathPlanner.MaxTurnAngle", &P::Planner, &vtkGLToolpathPlanner::SetMaxTurnAngle,
       &vtkGLToolpathPlanner::GetMaxTurnAngle));
   t.push_back(number("--max-segment", "MM", path, "subdivide longer path segments (0 = never)",
-                     "GLToolpathPlanner.MaxSegmentLength", planner,
+                     "GLToolpathPlanner.MaxSegmentLength", &P::Planner,
                      &vtkGLToolpathPlanner::SetMaxSegmentLength,
                      &vtkGLToolpathPlanner::GetMaxSegmentLength));
   t.push_back(number("--max-tilt", "DEG", path,
                      "largest tilt of the nozzle axis off the layer normal where\n"
                      "the normal would hit earlier material (0 = never tilt)",
-                     "GLToolpathPlanner.MaxAxisTilt", planner,
+                     "GLToolpathPlanner.MaxAxisTilt", &P::Planner,
                      &vtkGLToolpathPlanner::SetMaxAxisTilt, &vtkGLToolpathPlanner::GetMaxAxisTilt));
   t.push_back(number("--tilt-blend", "MM", path, "path length over which such a tilt fades out",
-                     "GLToolpathPlanner.TiltBlendLength", planner,
+                     "GLToolpathPlanner.TiltBlendLength", &P::Planner,
                      &vtkGLToolpathPlanner::SetTiltBlendLength,
                      &vtkGLToolpathPlanner::GetTiltBlendLength));
   t.push_back(number("--safe-margin", "MM", path, "margin of the safe box air moves travel on",
-                     "GLToolpathPlanner.SafeMargin", planner, &vtkGLToolpathPlanner::SetSafeMargin,
-                     &vtkGLToolpathPlanner::GetSafeMargin));
+                     "GLToolpathPlanner.SafeMargin", &P::Planner,
+                     &vtkGLToolpathPlanner::SetSafeMargin, &vtkGLToolpathPlanner::GetSafeMargin));
   t.push_back(number("--lift", "MM", path, "lift along the axis for a hop onto an upper sub-graph",
-                     "GLToolpathPlanner.Lift", planner, &vtkGLToolpathPlanner::SetLift,
+                     "GLToolpathPlanner.Lift", &P::Planner, &vtkGLToolpathPlanner::SetLift,
                      &vtkGLToolpathPlanner::GetLift));
   t.push_back(number("--retraction", "MM", path,
                      "filament retracted before each air move, primed after it",
-                     "GLToolpathPlanner.Retraction", planner, &vtkGLToolpathPlanner::SetRetraction,
-                     &vtkGLToolpathPlanner::GetRetraction));
+                     "GLToolpathPlanner.Retraction", &P::Planner,
+                     &vtkGLToolpathPlanner::SetRetraction, &vtkGLToolpathPlanner::GetRetraction));
   t.push_back(number("--tooth-length", "MM", path,
                      "support perimeter tooth length along trimmed edges, 0 = 2w",
-                     "GLToolpathPlanner.ToothLength", planner,
+                     "GLToolpathPlanner.ToothLength", &P::Planner,
                      &vtkGLToolpathPlanner::SetToothLength, &vtkGLToolpathPlanner::GetToothLength));
   t.push_back(toggle(
       "--no-perimeter", path, "no support perimeter where boundary edges were trimmed",
-      "GLToolpathPlanner.SupportPerimeter", planner, &vtkGLToolpathPlanner::SetSupportPerimeter,
+      "GLToolpathPlanner.SupportPerimeter", &P::Planner, &vtkGLToolpathPlanner::SetSupportPerimeter,
       &vtkGLToolpathPlanner::GetSupportPerimeter, false, "perimeter", "none"));
   t.push_back({"--replay-steps", "N", path,
                "steps of the print replay (toolpath.pvd: step k adds the piece\n"

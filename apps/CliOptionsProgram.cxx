@@ -77,35 +77,36 @@ void addProgramOptions(std::vector<CliOption>& t) {
                }});
   t.push_back(number("--speed-factor", "F", prog,
                      "fraction of the joint speed limits used, in (0, 1]",
-                     "GLURScriptWriter.SpeedFactor", script, &vtkGLURScriptWriter::SetSpeedFactor,
-                     &vtkGLURScriptWriter::GetSpeedFactor));
+                     "GLURScriptWriter.SpeedFactor", &P::ScriptWriter,
+                     &vtkGLURScriptWriter::SetSpeedFactor, &vtkGLURScriptWriter::GetSpeedFactor));
   t.push_back(
       number("--max-filament-rate", "MM/S", prog, "filament rate at analog output 0 level 1 (10 V)",
-             "GLURScriptWriter.MaxFilamentRate", script, &vtkGLURScriptWriter::SetMaxFilamentRate,
-             &vtkGLURScriptWriter::GetMaxFilamentRate));
+             "GLURScriptWriter.MaxFilamentRate", &P::ScriptWriter,
+             &vtkGLURScriptWriter::SetMaxFilamentRate, &vtkGLURScriptWriter::GetMaxFilamentRate));
   t.push_back(number("--max-blend", "MM", prog, "largest movel blend radius (mm)",
-                     "GLURScriptWriter.MaxBlend", script, &vtkGLURScriptWriter::SetMaxBlend,
-                     &vtkGLURScriptWriter::GetMaxBlend));
+                     "GLURScriptWriter.MaxBlend", &P::ScriptWriter,
+                     &vtkGLURScriptWriter::SetMaxBlend, &vtkGLURScriptWriter::GetMaxBlend));
   t.push_back(number("--max-joint-step", "DEG", prog,
                      "largest joint change between points; the joint path is\n"
                      "re-planned around larger ones",
-                     "GLURScriptWriter.MaxJointStep", script, &vtkGLURScriptWriter::SetMaxJointStep,
-                     &vtkGLURScriptWriter::GetMaxJointStep));
+                     "GLURScriptWriter.MaxJointStep", &P::ScriptWriter,
+                     &vtkGLURScriptWriter::SetMaxJointStep, &vtkGLURScriptWriter::GetMaxJointStep));
   t.push_back(toggle("--no-layout-search", prog,
                      "do not search another mounting of the part on the flange when\n"
                      "the robot cannot follow the path as laid out",
-                     "GLURScriptWriter.SearchCellLayout", script,
+                     "GLURScriptWriter.SearchCellLayout", &P::ScriptWriter,
                      &vtkGLURScriptWriter::SetSearchCellLayout,
                      &vtkGLURScriptWriter::GetSearchCellLayout, false, "search", "off"));
   t.push_back(toggle("--no-reconfiguration", prog,
                      "do not change the robot's configuration at air moves (away from\n"
                      "the part) when one IK branch cannot follow the whole path",
-                     "GLURScriptWriter.Reconfigure", script, &vtkGLURScriptWriter::SetReconfigure,
-                     &vtkGLURScriptWriter::GetReconfigure, false));
+                     "GLURScriptWriter.Reconfigure", &P::ScriptWriter,
+                     &vtkGLURScriptWriter::SetReconfigure, &vtkGLURScriptWriter::GetReconfigure,
+                     false));
   t.push_back(toggle("--allow-unreachable", prog,
                      "write the program even if points are unreachable (the robot\n"
                      "holds still there; for simulation). Default: no program",
-                     "GLURScriptWriter.AllowUnreachable", script,
+                     "GLURScriptWriter.AllowUnreachable", &P::ScriptWriter,
                      &vtkGLURScriptWriter::SetAllowUnreachable,
                      &vtkGLURScriptWriter::GetAllowUnreachable, true));
   t.push_back(
