@@ -305,11 +305,6 @@ vtkGLCollisionVerifier::~vtkGLCollisionVerifier() {
   this->SetTimeArrayName(nullptr);
 }
 
-int vtkGLCollisionVerifier::FillInputPortInformation(int, vtkInformation* info) {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
 int vtkGLCollisionVerifier::RequestInformation(vtkInformation* request,
                                                vtkInformationVector** inputs,
                                                vtkInformationVector* outputs) {

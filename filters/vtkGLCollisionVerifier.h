@@ -87,7 +87,6 @@ protected:
   vtkGLCollisionVerifier();
   ~vtkGLCollisionVerifier() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 

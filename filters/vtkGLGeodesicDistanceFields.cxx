@@ -97,11 +97,6 @@ void vtkGLGeodesicDistanceFields::ReleaseSolver() {
   this->Cache->Solver.reset();
 }
 
-int vtkGLGeodesicDistanceFields::FillInputPortInformation(int, vtkInformation* info) {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkUnstructuredGrid");
-  return 1;
-}
-
 int vtkGLGeodesicDistanceFields::RequestInformation(vtkInformation*, vtkInformationVector**,
                                                     vtkInformationVector*) {
   return geolattice::checkParameters(this, [&] {

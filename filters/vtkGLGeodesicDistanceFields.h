@@ -109,7 +109,6 @@ protected:
   vtkGLGeodesicDistanceFields();
   ~vtkGLGeodesicDistanceFields() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 

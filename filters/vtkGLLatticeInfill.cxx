@@ -268,11 +268,6 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out) {
 
 vtkGLLatticeInfill::vtkGLLatticeInfill() = default;
 
-int vtkGLLatticeInfill::FillInputPortInformation(int, vtkInformation* info) {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
 int vtkGLLatticeInfill::RequestInformation(vtkInformation*, vtkInformationVector**,
                                            vtkInformationVector*) {
   return gl::checkParameters(this, [&] { this->Options.validate(); });

@@ -95,7 +95,6 @@ protected:
   vtkGLLatticeInfill();
   ~vtkGLLatticeInfill() override = default;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 

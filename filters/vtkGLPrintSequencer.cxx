@@ -234,11 +234,6 @@ vtkGLPrintSequencer::vtkGLPrintSequencer() {
   this->SplitRounds = gl::SplitOptions{}.maxRounds;
 }
 
-int vtkGLPrintSequencer::FillInputPortInformation(int, vtkInformation* info) {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
 int vtkGLPrintSequencer::RequestInformation(vtkInformation* request, vtkInformationVector** inputs,
                                             vtkInformationVector* outputs) {
   return this->Superclass::RequestInformation(request, inputs, outputs) &&

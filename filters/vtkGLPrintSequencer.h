@@ -135,7 +135,6 @@ protected:
   vtkGLPrintSequencer();
   ~vtkGLPrintSequencer() override = default;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 

@@ -240,11 +240,6 @@ vtkGLToolpathPlanner::vtkGLToolpathPlanner() {
 
 vtkGLToolpathPlanner::~vtkGLToolpathPlanner() = default;
 
-int vtkGLToolpathPlanner::FillInputPortInformation(int, vtkInformation* info) {
-  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
-  return 1;
-}
-
 int vtkGLToolpathPlanner::RequestInformation(vtkInformation* request,
                                              vtkInformationVector** inputVector,
                                              vtkInformationVector* outputVector) {

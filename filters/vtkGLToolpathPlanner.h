@@ -182,7 +182,6 @@ protected:
   vtkGLToolpathPlanner();
   ~vtkGLToolpathPlanner() override;
 
-  int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
