@@ -199,14 +199,9 @@ void sampleCells(vtkPolyData* input, vtkDataArray* normals, vtkDataArray* cellTi
     out.time.push_back(t);
     out.group.push_back(group);
   };
-  const vtkIdType firstLine = input->GetNumberOfVerts();
-  auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    const int t = timeValue(cellTime, firstLine + it->GetCurrentCellId(), "cell");
-    group = idOf(cellGroup, firstLine + it->GetCurrentCellId());
+  gl::forEachLine(input, [&](vtkIdType cell, vtkIdType n, const vtkIdType* ids) {
+    const int t = timeValue(cellTime, cell, "cell");
+    group = idOf(cellGroup, cell);
     for (vtkIdType k = 0; k < n; ++k) {
       addPoint(ids[k], t);
     }
@@ -227,7 +222,7 @@ void sampleCells(vtkPolyData* input, vtkDataArray* normals, vtkDataArray* cellTi
         out.group.push_back(group);
       }
     }
-  }
+  });
 }
 
 void buildOutput(const gl::CollisionReport& report, double nozzleAngle, vtkPolyData* out) {

@@ -88,22 +88,18 @@ gl::CurvedLayers toCurvedLayers(vtkPolyData* input, std::vector<vtkIdType>& inpu
   };
   std::vector<Tri> tris;
   tris.reserve(input->GetNumberOfPolys());
-  auto it = vtk::TakeSmartPointer(input->GetPolys()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    const vtkIdType cell = firstPoly + it->GetCurrentCellId();
-    if (n != 3) {
-      throw gl::GeoLatticeError("cell " + std::to_string(cell) + " has " + std::to_string(n) +
-                                " points: the layers must be triangles (apply Triangulate)");
-    }
-    const double id = layerId->GetComponent(cell, 0);
-    if (!std::isfinite(id)) {
-      throw gl::GeoLatticeError("cell " + std::to_string(cell) + " has a non-finite LayerId");
-    }
-    tris.push_back({static_cast<int>(id), {ids[0], ids[1], ids[2]}});
-  }
+  gl::forEachCell(
+      input->GetPolys(), firstPoly, [&](vtkIdType cell, vtkIdType n, const vtkIdType* ids) {
+        if (n != 3) {
+          throw gl::GeoLatticeError("cell " + std::to_string(cell) + " has " + std::to_string(n) +
+                                    " points: the layers must be triangles (apply Triangulate)");
+        }
+        const double id = layerId->GetComponent(cell, 0);
+        if (!std::isfinite(id)) {
+          throw gl::GeoLatticeError("cell " + std::to_string(cell) + " has a non-finite LayerId");
+        }
+        tris.push_back({static_cast<int>(id), {ids[0], ids[1], ids[2]}});
+      });
   std::stable_sort(tris.begin(), tris.end(),
                    [](const Tri& a, const Tri& b) { return a.layer < b.layer; });
 

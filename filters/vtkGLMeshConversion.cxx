@@ -255,15 +255,9 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
     g.gamma[v] = gamma->GetComponent(v, 0);
   }
 
-  // Edges: line cells (cell ids of lines follow the vertex cells), polylines split.
-  const vtkIdType firstLine = lattice->GetNumberOfVerts();
+  // Edges: line cells, polylines split.
   std::vector<int> rawLayer;  // LayerId value per edge
-  auto it = vtk::TakeSmartPointer(lattice->GetLines()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    const vtkIdType cell = firstLine + it->GetCurrentCellId();
+  forEachLine(lattice, [&](vtkIdType cell, vtkIdType n, const vtkIdType* ids) {
     if (n < 2) {
       throw GeoLatticeError("lattice line cell " + std::to_string(cell) + " has " +
                             std::to_string(n) + " point(s); a line needs at least 2");
@@ -288,7 +282,7 @@ LatticeGraph toLatticeGraph(vtkPolyData* lattice) {
         g.edgeKind.push_back(static_cast<LatticeEdgeKind>(kind));
       }
     }
-  }
+  });
 
   // Layers: the distinct LayerId values, ascending.
   g.layerIndex = rawLayer;
@@ -469,20 +463,14 @@ SkeletonTree toSkeletonTree(vtkPolyData* skeleton) {
     n.indexInLayer = count[n.layer]++;
   }
 
-  const vtkIdType firstLine = skeleton->GetNumberOfVerts();
-  auto it = vtk::TakeSmartPointer(skeleton->GetLines()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
+  forEachLine(skeleton, [&](vtkIdType cell, vtkIdType n, const vtkIdType* ids) {
     if (n != 2) {
-      throw GeoLatticeError(
-          "skeleton line cell " + std::to_string(firstLine + it->GetCurrentCellId()) + " has " +
-          std::to_string(n) + " points; each edge must be a 2-point line (lower, upper)");
+      throw GeoLatticeError("skeleton line cell " + std::to_string(cell) + " has " +
+                            std::to_string(n) +
+                            " points; each edge must be a 2-point line (lower, upper)");
     }
     if (ids[0] < 0 || ids[0] >= N || ids[1] < 0 || ids[1] >= N) {
-      throw GeoLatticeError("skeleton line cell " +
-                            std::to_string(firstLine + it->GetCurrentCellId()) +
+      throw GeoLatticeError("skeleton line cell " + std::to_string(cell) +
                             " uses a point id out of range");
     }
     int a = node[ids[0]], b = node[ids[1]];
@@ -490,7 +478,7 @@ SkeletonTree toSkeletonTree(vtkPolyData* skeleton) {
       std::swap(a, b);
     }
     tree.edges.push_back({a, b});
-  }
+  });
   std::sort(tree.edges.begin(), tree.edges.end());
   tree.edges.erase(std::unique(tree.edges.begin(), tree.edges.end()), tree.edges.end());
   linkSkeletonEdges(tree);

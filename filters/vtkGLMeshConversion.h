@@ -12,6 +12,9 @@
 #include "nozzle/NozzleModel.h"
 #include "skeleton/SkeletonTree.h"
 
+#include <vtkCellArray.h>
+#include <vtkCellArrayIterator.h>
+#include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
 #include <vector>
@@ -28,6 +31,26 @@ class vtkUnstructuredGrid;
 class vtkPoints;
 
 namespace geolattice {
+
+/// Calls f(cell, n, ids) for every cell of `cells`, `cell` being its id in the data set: the
+/// cells before them (e.g. a polydata's vertex cells before its lines) number from 0, so
+/// `firstCell` is their count.
+template <class F>
+void forEachCell(vtkCellArray* cells, vtkIdType firstCell, F&& f) {
+  auto it = vtk::TakeSmartPointer(cells->NewIterator());
+  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
+    vtkIdType n;
+    const vtkIdType* ids;
+    it->GetCurrentCell(n, ids);
+    f(firstCell + it->GetCurrentCellId(), n, ids);
+  }
+}
+
+/// forEachCell over the line cells of `poly` (their ids follow its vertex cells).
+template <class F>
+void forEachLine(vtkPolyData* poly, F&& f) {
+  forEachCell(poly->GetLines(), poly->GetNumberOfVerts(), f);
+}
 
 /// Triangle surface from polydata: polygons must all be triangles (run vtkTriangleFilter first
 /// for quads); vertices/lines are ignored. Throws on an empty surface or non-triangles.

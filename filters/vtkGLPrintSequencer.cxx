@@ -124,15 +124,9 @@ void sequencedLattice(vtkPolyData* input, const gl::LatticeGraph& graph,
     pointOrder->SetValue(v, s >= 0 ? seq.printIndex[s] : -1);
   }
   // Line cells in the order toLatticeGraph read them: n - 1 edges per cell.
-  const vtkIdType firstLine = input->GetNumberOfVerts();
-  auto it = vtk::TakeSmartPointer(input->GetLines()->NewIterator());
   size_t edge = 0;
   std::vector<int> earliest(static_cast<size_t>(V), std::numeric_limits<int>::max());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
-    const vtkIdType cell = firstLine + it->GetCurrentCellId();
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
+  gl::forEachLine(input, [&](vtkIdType cell, vtkIdType n, const vtkIdType*) {
     const int piece = pieces.edgePiece[edge];
     cellPiece->SetValue(cell, piece);
     cellOrder->SetValue(cell, seq.printIndex[piece]);
@@ -141,7 +135,7 @@ void sequencedLattice(vtkPolyData* input, const gl::LatticeGraph& graph,
         earliest[v] = std::min(earliest[v], seq.printIndex[pieces.edgePiece[edge]]);
       }
     }
-  }
+  });
   for (vtkIdType v = 0; v < V; ++v) {
     if (earliest[v] != std::numeric_limits<int>::max()) {
       pointOrder->SetValue(v, earliest[v]);

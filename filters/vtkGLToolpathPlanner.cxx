@@ -85,17 +85,12 @@ bool piecesOf(vtkPolyData* lattice, size_t edges, gl::ToolpathPieces& pieces) {
   if (!piece || !order) {
     return false;
   }
-  const vtkIdType firstLine = lattice->GetNumberOfVerts();
-  auto it = vtk::TakeSmartPointer(lattice->GetLines()->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
-    vtkIdType n;
-    const vtkIdType* ids;
-    it->GetCurrentCell(n, ids);
-    const double p = piece->GetComponent(firstLine + it->GetCurrentCellId(), 0);
+  gl::forEachLine(lattice, [&](vtkIdType cell, vtkIdType n, const vtkIdType*) {
+    const double p = piece->GetComponent(cell, 0);
     for (vtkIdType k = 0; k + 1 < n; ++k) {
       pieces.edgePiece.push_back(std::isfinite(p) ? static_cast<int>(p) : -1);
     }
-  }
+  });
   for (vtkIdType k = 0; k < order->GetNumberOfTuples(); ++k) {
     pieces.pieceOrder.push_back(static_cast<int>(order->GetComponent(k, 0)));
   }
