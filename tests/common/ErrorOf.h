@@ -5,27 +5,32 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <string>
+
+/// Message of the GeoLatticeError thrown by f, or nothing if none was thrown.
+template <typename F>
+std::optional<std::string> thrownError(F&& f) {
+  try {
+    f();
+  } catch (const geolattice::GeoLatticeError& e) {
+    return std::string(e.what());
+  }
+  return std::nullopt;
+}
 
 /// Message of the GeoLatticeError thrown by f, or "" if none was thrown.
 template <typename F>
 std::string errorOf(F&& f) {
-  try {
-    f();
-  } catch (const geolattice::GeoLatticeError& e) {
-    return e.what();
-  }
-  return "";
+  return thrownError(f).value_or("");
 }
 
 /// The same, and a test failure when f does not throw.
 template <typename F>
 std::string expectedErrorOf(F&& f) {
-  try {
-    f();
-  } catch (const geolattice::GeoLatticeError& e) {
-    return e.what();
+  const std::optional<std::string> m = thrownError(f);
+  if (!m) {
+    ADD_FAILURE() << "expected a GeoLatticeError";
   }
-  ADD_FAILURE() << "expected a GeoLatticeError";
-  return {};
+  return m.value_or("");
 }

@@ -6,6 +6,7 @@
 #include "slicer/LayerStatistics.h"
 
 #include "LayerChecks.h"
+#include "../common/ErrorOf.h"
 
 #include <gtest/gtest.h>
 
@@ -146,12 +147,9 @@ TEST(CurvedLayerSlicer, BadOptionsAreReported) {
   o = SlicerOptions{};
   o.interval = 20;  // larger than γ_max = 10 with offset = interval: no layer
   o.firstLayerOffset = 20;
-  try {
-    sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o);
-    FAIL() << "expected an error";
-  } catch (const GeoLatticeError& e) {
-    EXPECT_NE(std::string(e.what()).find("no layer"), std::string::npos) << e.what();
-  }
+  const std::string m =
+      expectedErrorOf([&] { sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o); });
+  EXPECT_NE(m.find("no layer"), std::string::npos) << m;
   o = SlicerOptions{};
   o.firstLayer = 1000;
   EXPECT_THROW(sliceCurvedLayers(mesh, f.gamma, f.alpha, f.beta, f.normals, o), GeoLatticeError);

@@ -5,6 +5,7 @@
 #include "mesh/AnalyticShapes.h"
 #include "mesh/TetMeshTopology.h"
 #include "tetrahedralize/TetrahedralizeSurface.h"
+#include "../common/ErrorOf.h"
 
 #include <gtest/gtest.h>
 
@@ -73,12 +74,8 @@ TEST(TetLaplacian, DivergenceOfGradientIsStiffnessTimesField) {
 TEST(TetLaplacian, RejectsInvertedTet) {
   TetMesh mesh = boxTetMesh(Vec3(1, 1, 1), 1, 1, 1);
   std::swap(mesh.tets[2][0], mesh.tets[2][1]);
-  try {
-    buildTetOperators(mesh);
-    FAIL() << "expected an error";
-  } catch (const GeoLatticeError& e) {
-    EXPECT_NE(std::string(e.what()).find("inverted tet 2"), std::string::npos) << e.what();
-  }
+  const std::string m = expectedErrorOf([&] { buildTetOperators(mesh); });
+  EXPECT_NE(m.find("inverted tet 2"), std::string::npos) << m;
 }
 
 TEST(GeodesicDistanceFields, BoxGammaIsHeightAlphaBetaAreAffine) {
@@ -328,14 +325,9 @@ TEST(GeodesicDistanceFields, BadInputIsReported) {
   }
   GeodesicDistanceFields twoSolver(two);
   EXPECT_EQ(twoSolver.componentCount(), 2);
-  try {
-    twoSolver.solve({0});
-    FAIL() << "expected an error";
-  } catch (const GeoLatticeError& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("2 separate bodies and 1 of them does not touch the base"), std::string::npos)
-        << m;
-    EXPECT_NE(m.find("starts 2 mm above"), std::string::npos) << m;
-  }
+  const std::string m = expectedErrorOf([&] { twoSolver.solve({0}); });
+  EXPECT_NE(m.find("2 separate bodies and 1 of them does not touch the base"), std::string::npos)
+      << m;
+  EXPECT_NE(m.find("starts 2 mm above"), std::string::npos) << m;
   EXPECT_NO_THROW(twoSolver.solve({0, n}));
 }
