@@ -37,17 +37,11 @@ SurfaceCheckReport checkSurface(const TriangleSurface& surface) {
   r.pointCount = static_cast<int>(surface.points.size());
   r.triangleCount = static_cast<int>(surface.triangles.size());
 
-  Eigen::AlignedBox3d box;
-  for (int i = 0; i < r.pointCount; ++i) {
-    if (!surface.points[i].allFinite()) {
-      if (r.nonFinitePoints++ == 0) {
-        r.firstNonFinitePoint = i;
-      }
-    } else {
-      box.extend(surface.points[i]);
-    }
-  }
-  r.bboxDiagonal = box.isEmpty() ? 0.0 : box.diagonal().norm();
+  const FinitePointScan scan = scanPoints(surface.points);
+  r.nonFinitePoints = scan.nonFinite;
+  r.firstNonFinitePoint = scan.firstNonFinite;
+  r.bboxDiagonal = scan.diagonal();
+  const Eigen::AlignedBox3d& box = scan.box;
   const double areaTolerance = 1e-12 * r.bboxDiagonal * r.bboxDiagonal;
   // Volume relative to the box centre keeps the sum well conditioned far from the origin.
   const Vec3 origin = box.isEmpty() ? Vec3(Vec3::Zero()) : Vec3(box.center());

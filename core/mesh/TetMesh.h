@@ -31,6 +31,28 @@ inline Vec3 unitOr(const Vec3& v, const Vec3& fallback) {
   return n > 0 && n < std::numeric_limits<double>::infinity() ? Vec3(v / n) : fallback;
 }
 
+/// The points with a NaN or infinite coordinate (how many, the first one's index or -1) and the
+/// bounding box of the others: what the mesh checks report.
+struct FinitePointScan {
+  int nonFinite = 0;
+  int firstNonFinite = -1;
+  Eigen::AlignedBox3d box;  ///< empty when no point is finite
+  double diagonal() const { return box.isEmpty() ? 0.0 : box.diagonal().norm(); }
+};
+inline FinitePointScan scanPoints(const std::vector<Vec3>& points) {
+  FinitePointScan s;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (!points[i].allFinite()) {
+      if (s.nonFinite++ == 0) {
+        s.firstNonFinite = static_cast<int>(i);
+      }
+    } else {
+      s.box.extend(points[i]);
+    }
+  }
+  return s;
+}
+
 /// @brief Signed volume of tet (a, b, c, d): positive for positive orientation.
 inline double signedTetVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return (b - a).cross(c - a).dot(d - a) / 6.0;

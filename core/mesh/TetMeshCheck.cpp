@@ -38,17 +38,10 @@ TetMeshCheckReport checkTetMesh(const TetMesh& mesh) {
   r.pointCount = static_cast<int>(mesh.points.size());
   r.tetCount = static_cast<int>(mesh.tets.size());
 
-  Eigen::AlignedBox3d box;
-  for (int i = 0; i < r.pointCount; ++i) {
-    if (!mesh.points[i].allFinite()) {
-      if (r.nonFinitePoints++ == 0) {
-        r.firstNonFinitePoint = i;
-      }
-    } else {
-      box.extend(mesh.points[i]);
-    }
-  }
-  const double diag = box.isEmpty() ? 0.0 : box.diagonal().norm();
+  const FinitePointScan scan = scanPoints(mesh.points);
+  r.nonFinitePoints = scan.nonFinite;
+  r.firstNonFinitePoint = scan.firstNonFinite;
+  const double diag = scan.diagonal();
   r.zeroVolumeTolerance = 1e-12 * diag * diag * diag;
 
   std::vector<char> used(mesh.points.size(), 0);
