@@ -2,7 +2,6 @@
 
 #include "common/Error.h"
 
-#include <vtkBase64Utilities.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkErrorCode.h>
@@ -25,6 +24,33 @@
 #include <cstring>
 
 namespace {
+
+/// RFC 4648 base64 of `length` bytes into `out` ('=' padding for a last 1 or 2 bytes), the
+/// characters vtkBase64Utilities::Encode writes; returns their count. Here because Debian's
+/// vtkBase64Utilities runs unoptimized (a function call and an assert per character: half of the
+/// time of writing a toolpath file; bench_files BM_WriteToolpathFile).
+size_t encodeBase64(const unsigned char* in, size_t length, unsigned char* out) {
+  static constexpr char kAlphabet[] =
+      "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  unsigned char* o = out;
+  size_t i = 0;
+  for (; i + 3 <= length; i += 3) {
+    const unsigned v = (unsigned{in[i]} << 16) | (unsigned{in[i + 1]} << 8) | in[i + 2];
+    *o++ = kAlphabet[v >> 18];
+    *o++ = kAlphabet[(v >> 12) & 63];
+    *o++ = kAlphabet[(v >> 6) & 63];
+    *o++ = kAlphabet[v & 63];
+  }
+  if (i < length) {
+    const bool two = i + 1 < length;
+    const unsigned v = (unsigned{in[i]} << 16) | (two ? unsigned{in[i + 1]} << 8 : 0u);
+    *o++ = kAlphabet[v >> 18];
+    *o++ = kAlphabet[(v >> 12) & 63];
+    *o++ = two ? kAlphabet[(v >> 6) & 63] : '=';
+    *o++ = '=';
+  }
+  return static_cast<size_t>(o - out);
+}
 
 /// Base64 like vtkBase64OutputStream (one encoding from StartWriting to EndWriting, '=' padding
 /// at the end), written to the stream in blocks.
@@ -78,8 +104,7 @@ private:
 
   /// Encodes length bytes (a multiple of 3, or the last 1-2 bytes: padded) and writes them.
   bool Encode(const unsigned char* in, size_t length) {
-    const unsigned long n =
-        vtkBase64Utilities::Encode(in, static_cast<unsigned long>(length), this->Block.data(), 0);
+    const size_t n = encodeBase64(in, length, this->Block.data());
     return static_cast<bool>(this->Stream->write(reinterpret_cast<const char*>(this->Block.data()),
                                                  static_cast<std::streamsize>(n)));
   }
