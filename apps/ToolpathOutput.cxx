@@ -2,6 +2,7 @@
 
 #include "OutputFiles.h"
 #include "common/Error.h"
+#include "common/ParallelFor.h"
 #include "vtkGLArrayNames.h"
 
 #include <vtkCellArray.h>
@@ -57,7 +58,8 @@ void removeStaleSteps(const fs::path& dir, int keep) {
 
 /// The points first..last of the toolpath (renumbered from 0) with their point data, and the
 /// runs of at least two of them in each line cell with that cell's data; first > last gives no
-/// points and the same arrays. Field data are shared.
+/// points and the same arrays. The field data are copied: pieces are written on several threads,
+/// and a writer caches each array's range in the array.
 vtkSmartPointer<vtkPolyData> toolpathPiece(vtkPolyData* whole, vtkIdType first, vtkIdType last) {
   auto piece = vtkSmartPointer<vtkPolyData>::New();
   const vtkIdType n = std::max<vtkIdType>(0, last - first + 1);
@@ -97,7 +99,9 @@ vtkSmartPointer<vtkPolyData> toolpathPiece(vtkPolyData* whole, vtkIdType first, 
     flush(cell);
   }
   piece->SetLines(lines);
-  piece->SetFieldData(whole->GetFieldData());
+  vtkNew<vtkFieldData> fieldData;
+  fieldData->DeepCopy(whole->GetFieldData());
+  piece->SetFieldData(fieldData);
   return piece;
 }
 
@@ -128,11 +132,17 @@ void writeToolpathReplay(vtkPolyData* toolpath, const std::string& outDir, int s
   auto lastPrinted = [&](int k) {
     return static_cast<vtkIdType>(std::llround(static_cast<double>(k) / steps * last));
   };
-  for (int k = 1; k <= steps; ++k) {
-    writeVtkXml(toolpathPiece(toolpath, lastPrinted(k - 1), lastPrinted(k)),
-                (dir / stepName(k)).string());
-  }
-  writeVtkXml(toolpathPiece(toolpath, 1, 0), (dir / "empty.vtp").string());
+  // The steps on every core (the toolpath is only read; each piece is data of its own): the
+  // replay is the last file of a run, written while the other writer has finished.
+  parallelFor(static_cast<size_t>(steps) + 1, 0, [&](size_t item, int) {
+    const int k = static_cast<int>(item);
+    if (k == 0) {
+      writeVtkXml(toolpathPiece(toolpath, 1, 0), (dir / "empty.vtp").string());
+    } else {
+      writeVtkXml(toolpathPiece(toolpath, lastPrinted(k - 1), lastPrinted(k)),
+                  (dir / stepName(k)).string());
+    }
+  });
   writeAtomically(pvd.string(), [&](const std::string& tmp) {
     std::ofstream out(tmp);
     out << "<?xml version=\"1.0\"?>\n"
