@@ -13,60 +13,60 @@
 
 #include <vtkSetGet.h>
 
+#include <algorithm>  // std::clamp
+
+/// The setters' one body: assigns `value` to `field` of `self`'s Options and calls Modified()
+/// when it changes.
+template <class Object, class Field, class Value>
+void vtkGLAssignOption(Object* self, Field& field, const Value& value) {
+  if (field != value) {
+    field = value;
+    self->Modified();
+  }
+}
+
 /// Set##name / Get##name for this->Options.field (Modified() when the value changes).
-#define vtkGLOptionMacro(name, type, field) \
-  virtual void Set##name(type _arg) {       \
-    if (this->Options.field != _arg) {      \
-      this->Options.field = _arg;           \
-      this->Modified();                     \
-    }                                       \
-  }                                         \
-  virtual type Get##name() {                \
-    return this->Options.field;             \
+#define vtkGLOptionMacro(name, type, field)             \
+  virtual void Set##name(type _arg) {                   \
+    vtkGLAssignOption(this, this->Options.field, _arg); \
+  }                                                     \
+  virtual type Get##name() {                            \
+    return this->Options.field;                         \
   }
 
 /// The same, the value clamped to [min, max] as vtkSetClampMacro does.
-#define vtkGLOptionClampMacro(name, type, field, min, max)                       \
-  virtual void Set##name(type _arg) {                                            \
-    const type clamped = (_arg < (min) ? (min) : (_arg > (max) ? (max) : _arg)); \
-    if (this->Options.field != clamped) {                                        \
-      this->Options.field = clamped;                                             \
-      this->Modified();                                                          \
-    }                                                                            \
-  }                                                                              \
-  virtual type Get##name() {                                                     \
-    return this->Options.field;                                                  \
+#define vtkGLOptionClampMacro(name, type, field, min, max)                          \
+  virtual void Set##name(type _arg) {                                               \
+    vtkGLAssignOption(this, this->Options.field, std::clamp<type>(_arg, min, max)); \
+  }                                                                                 \
+  virtual type Get##name() {                                                        \
+    return this->Options.field;                                                     \
   }
 
 /// An enum option as an int property clamped to [min, max] (the enum's values in order).
-#define vtkGLOptionEnumMacro(name, field, min, max)                              \
-  virtual void Set##name(int _arg) {                                             \
-    const int clamped = (_arg < (min) ? (min) : (_arg > (max) ? (max) : _arg));  \
-    if (static_cast<int>(this->Options.field) != clamped) {                      \
-      this->Options.field = static_cast<decltype(this->Options.field)>(clamped); \
-      this->Modified();                                                          \
-    }                                                                            \
-  }                                                                              \
-  virtual int Get##name() {                                                      \
-    return static_cast<int>(this->Options.field);                                \
+#define vtkGLOptionEnumMacro(name, field, min, max)                                         \
+  virtual void Set##name(int _arg) {                                                        \
+    vtkGLAssignOption(this, this->Options.field,                                            \
+                      static_cast<decltype(this->Options.field)>(                           \
+                          std::clamp(_arg, static_cast<int>(min), static_cast<int>(max)))); \
+  }                                                                                         \
+  virtual int Get##name() {                                                                 \
+    return static_cast<int>(this->Options.field);                                           \
   }
 
 /// A bool option as a VTK boolean property: Set##name(vtkTypeBool), Get##name, name##On/Off.
-#define vtkGLOptionBooleanMacro(name, field)  \
-  virtual void Set##name(vtkTypeBool _arg) {  \
-    if (this->Options.field != (_arg != 0)) { \
-      this->Options.field = (_arg != 0);      \
-      this->Modified();                       \
-    }                                         \
-  }                                           \
-  virtual vtkTypeBool Get##name() {           \
-    return this->Options.field ? 1 : 0;       \
-  }                                           \
-  virtual void name##On() {                   \
-    this->Set##name(1);                       \
-  }                                           \
-  virtual void name##Off() {                  \
-    this->Set##name(0);                       \
+#define vtkGLOptionBooleanMacro(name, field)                 \
+  virtual void Set##name(vtkTypeBool _arg) {                 \
+    vtkGLAssignOption(this, this->Options.field, _arg != 0); \
+  }                                                          \
+  virtual vtkTypeBool Get##name() {                          \
+    return this->Options.field ? 1 : 0;                      \
+  }                                                          \
+  virtual void name##On() {                                  \
+    this->Set##name(1);                                      \
+  }                                                          \
+  virtual void name##Off() {                                 \
+    this->Set##name(0);                                      \
   }
 
 #endif
