@@ -21,9 +21,7 @@ namespace {
 /// The core options of the filter's parameters (checked by RequestInformation), or of the
 /// pedestal the orientation search chose for `input` when it carries one and UseOrientation is on.
 gl::PedestalOptions pedestalOptions(vtkGLPedestal* f, vtkDataObject* input = nullptr) {
-  gl::PedestalOptions o;
-  o.height = f->GetHeight();
-  o.contactHeight = f->GetContactHeight();
+  gl::PedestalOptions o = f->GetOptions();
   vtkFieldData* fd = input ? input->GetFieldData() : nullptr;
   vtkDataArray* height = fd ? fd->GetArray(gl::arrays::OrientPedestalHeight) : nullptr;
   vtkDataArray* reach = fd ? fd->GetArray(gl::arrays::OrientPedestalContactHeight) : nullptr;

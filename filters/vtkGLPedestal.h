@@ -72,6 +72,9 @@ public:
   /// The height of the pedestal this filter builds for `input` (mm; 0: it passes it through).
   double HeightFor(vtkDataObject* input);
 
+  /// The stage's core options as the parameters set them (C++ only: a core type).
+  VTK_WRAPEXCLUDE const geolattice::PedestalOptions& GetOptions() const { return this->Options; }
+
 protected:
   vtkGLPedestal();
   ~vtkGLPedestal() override = default;
