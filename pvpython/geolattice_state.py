@@ -27,6 +27,7 @@ from paraview import simple
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import geolattice_pipeline as pipeline  # noqa: E402
+from geolattice_view import front_camera  # noqa: E402
 
 DEFAULT_MODEL = os.path.join(HERE, "..", "testdata", "y_shape.obj")
 DEFAULT_OUTPUT = os.path.join(HERE, "..", "docs", "geolattice_y_shape.pvsm")
@@ -73,17 +74,6 @@ def _ghost(source, view, opacity=0.15):
     rep.AmbientColor = [0.7, 0.7, 0.7]
     rep.Opacity = opacity
     return rep
-
-
-def _camera(view):
-    view.ResetCamera()
-    camera = view.GetActiveCamera()
-    camera.SetViewUp(0, 0, 1)
-    focal, distance = camera.GetFocalPoint(), camera.GetDistance()
-    camera.SetPosition(focal[0], focal[1] - distance, focal[2])
-    camera.Azimuth(30)
-    camera.Elevation(15)
-    view.ResetCamera()
 
 
 def build_state(model=DEFAULT_MODEL, fit_size=0.0, edge_length=0.0, layer_interval=0.6, lattice_width=4.0):
@@ -167,7 +157,7 @@ def build_state(model=DEFAULT_MODEL, fit_size=0.0, edge_length=0.0, layer_interv
     simple.Show(p["summary"], sheet)
 
     for view in views:
-        _camera(view)
+        front_camera(view)
     for i, view in enumerate(views[1:]):
         simple.AddCameraLink(views[0], view, CAMERA_LINK % (i + 1))
     if "replay" in p:  # its time steps are the print progress 0..1: start the GUI at the whole path

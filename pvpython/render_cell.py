@@ -34,6 +34,8 @@ from vtkmodules.vtkFiltersSources import (vtkArrowSource, vtkConeSource, vtkCube
                                           vtkSphereSource)
 from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
 
+from geolattice_view import white_view
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 
 # Standard DH tables (metres, rad), as ur5Model() / ur5eModel() in core/robot/URKinematics.cpp.
@@ -269,14 +271,7 @@ def label(view, text, size=16, bold=False, color=(0, 0, 0), corner="Upper Left C
 
 
 def view_for(size):
-    view = simple.CreateRenderView()
-    view.ViewSize = list(size)
-    view.Background = [1, 1, 1]
-    view.OrientationAxesVisibility = 0
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
+    view = white_view(size, axes=False)
     view.EnableRenderOnInteraction = 0
     return view
 

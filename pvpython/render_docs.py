@@ -14,33 +14,9 @@ from paraview import simple
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import geolattice_pipeline as pipeline  # noqa: E402
+from geolattice_view import front_camera, white_view  # noqa: E402
 
 MODELS = {"bunny": ("bunny.obj", 80.0), "y_shape": ("y_shape.obj", 0.0)}
-
-
-def view_for(size=(1000, 800)):
-    view = simple.CreateRenderView()
-    view.ViewSize = list(size)
-    view.Background = [1, 1, 1]
-    view.OrientationAxesVisibility = 1
-    try:
-        view.UseColorPaletteForBackground = 0
-    except AttributeError:
-        pass
-    return view
-
-
-def camera(view, azimuth=30, elevation=15):
-    view.ResetCamera()
-    cam = view.GetActiveCamera()
-    cam.SetFocalPoint(*cam.GetFocalPoint())
-    cam.SetViewUp(0, 0, 1)
-    pos = cam.GetFocalPoint()
-    dist = cam.GetDistance()
-    cam.SetPosition(pos[0], pos[1] - dist, pos[2])
-    cam.Azimuth(azimuth)
-    cam.Elevation(elevation)
-    view.ResetCamera()
 
 
 def show_colored(proxy, view, array, association, preset, bar_title):
@@ -62,13 +38,13 @@ def render_model(name, model, fit, outdir):
     p = pipeline.build_pipeline(os.path.join(HERE, "..", "testdata", model), fit_size=fit, base_tolerance=0.5)
     surface = simple.ExtractSurface(Input=p["fields"])
 
-    view = view_for()
+    view = white_view((1000, 800))
     show_colored(surface, view, "Gamma", "POINTS", "Viridis (matplotlib)", "Gamma (mm)")
-    camera(view)
+    front_camera(view)
     simple.SaveScreenshot(os.path.join(outdir, "gdf_%s.png" % name), view, ImageResolution=[1000, 800])
     simple.Delete(view)
 
-    view = view_for()
+    view = white_view((1000, 800))
     part = simple.Show(surface, view)
     part.Opacity = 0.15
     simple.ColorBy(part, None)
@@ -82,12 +58,12 @@ def render_model(name, model, fit, outdir):
     except AttributeError:
         every_fourth.ThresholdRange = [0, 0]
     show_colored(every_fourth, view, "LayerId", "CELLS", "Turbo", "LayerId")
-    camera(view)
+    front_camera(view)
     simple.SaveScreenshot(os.path.join(outdir, "layers_%s.png" % name), view, ImageResolution=[1000, 800])
     simple.Delete(view)
 
     # Lattice of one mid-height layer over the translucent part, coloured by sub-graph.
-    view = view_for()
+    view = white_view((1000, 800))
     part = simple.Show(surface, view)
     part.Opacity = 0.12
     simple.ColorBy(part, None)
@@ -103,16 +79,16 @@ def render_model(name, model, fit, outdir):
         one_layer.ThresholdRange = [middle, middle]
     rep = show_colored(one_layer, view, "EdgeKind", "CELLS", "Rainbow Uniform", "EdgeKind (0 α, 1 β, 2 boundary)")
     rep.LineWidth = 3.0
-    camera(view, azimuth=20, elevation=35)
+    front_camera(view, azimuth=20, elevation=35)
     simple.SaveScreenshot(os.path.join(outdir, "lattice_layer_%s.png" % name), view, ImageResolution=[1000, 800])
     simple.Delete(view)
 
     for mode in ("OverhangPlanar", "OverhangCurved"):
-        view = view_for((800, 800))
+        view = white_view((800, 800))
         rep = show_colored(p["overhang"], view, mode, "CELLS", "Cool to Warm", "Overhang angle, " + mode[8:].lower() + " (deg)")
         lut = simple.GetColorTransferFunction(mode)
         lut.RescaleTransferFunction(0.0, 180.0)
-        camera(view, azimuth=30, elevation=-20)
+        front_camera(view, azimuth=30, elevation=-20)
         simple.SaveScreenshot(os.path.join(outdir, "overhang_%s_%s.png" % (mode[8:].lower(), name)), view,
                               ImageResolution=[800, 800])
         simple.Delete(view)

@@ -9,6 +9,7 @@ the part by Gamma and the sequenced lattice by PrintOrder, saves the screenshot 
 Writes {"failures": [...], "outputs": {...}} to plan["check_result"]."""
 import json
 import os
+import sys
 import time
 import traceback
 
@@ -153,14 +154,9 @@ def _geolattice_gui_check():
         rep.RescaleTransferFunctionToDataRange(True, False)
         simple.GetColorTransferFunction("PrintOrder").ApplyPreset("Turbo", True)
         rep.SetScalarBarVisibility(view, True)
-        view.ResetCamera()
-        camera = view.GetActiveCamera()
-        camera.SetViewUp(0, 0, 1)
-        focal, distance = camera.GetFocalPoint(), camera.GetDistance()
-        camera.SetPosition(focal[0], focal[1] - distance, focal[2])
-        camera.Azimuth(30)
-        camera.Elevation(20)
-        view.ResetCamera()
+        sys.path.insert(0, plan["pvpython_dir"])
+        from geolattice_view import front_camera
+        front_camera(view, elevation=20)
         simple.Render(view)
         simple.SaveScreenshot(plan["screenshot"], view, ImageResolution=[1200, 900])
 
