@@ -43,27 +43,6 @@ bool sameSetUp(const geolattice::GeodesicFieldOptions& a,
          a.referenceParallelDeg == b.referenceParallelDeg && a.backend == b.backend;
 }
 
-vtkNew<vtkDoubleArray> pointArray(const char* name, const Eigen::VectorXd& values) {
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->SetNumberOfTuples(values.size());
-  for (Eigen::Index i = 0; i < values.size(); ++i) {
-    a->SetValue(i, values[i]);
-  }
-  return a;
-}
-
-vtkNew<vtkDoubleArray> vectorArray(const char* name, const std::vector<geolattice::Vec3>& values) {
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->SetNumberOfComponents(3);
-  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  for (size_t i = 0; i < values.size(); ++i) {
-    a->SetTypedTuple(static_cast<vtkIdType>(i), values[i].data());
-  }
-  return a;
-}
-
 /// The core options of the filter's parameters (checked by RequestInformation).
 geolattice::GeodesicFieldOptions fieldOptions(vtkGLGeodesicDistanceFields* f) {
   geolattice::GeodesicFieldOptions o = f->GetOptions();
@@ -169,9 +148,9 @@ int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVect
 
     output->ShallowCopy(input);
     vtkPointData* pd = output->GetPointData();
-    pd->AddArray(pointArray(gl::arrays::Gamma, fields.gamma));
-    pd->AddArray(pointArray(gl::arrays::Alpha, fields.alpha));
-    pd->AddArray(pointArray(gl::arrays::Beta, fields.beta));
+    pd->AddArray(gl::doubleArray(gl::arrays::Gamma, fields.gamma));
+    pd->AddArray(gl::doubleArray(gl::arrays::Alpha, fields.alpha));
+    pd->AddArray(gl::doubleArray(gl::arrays::Beta, fields.beta));
     pd->SetActiveScalars(gl::arrays::Gamma);
     vtkNew<vtkUnsignedCharArray> isSource;
     isSource->SetName(gl::arrays::HeatSource);
@@ -182,9 +161,9 @@ int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVect
     }
     pd->AddArray(isSource);
     vtkCellData* cd = output->GetCellData();
-    cd->AddArray(vectorArray(gl::arrays::GammaGradient, fields.gammaDirection));
-    cd->AddArray(vectorArray(gl::arrays::AlphaDirection, fields.alphaDirection));
-    cd->AddArray(vectorArray(gl::arrays::BetaDirection, fields.betaDirection));
+    cd->AddArray(gl::vectorArray(gl::arrays::GammaGradient, fields.gammaDirection));
+    cd->AddArray(gl::vectorArray(gl::arrays::AlphaDirection, fields.alphaDirection));
+    cd->AddArray(gl::vectorArray(gl::arrays::BetaDirection, fields.betaDirection));
 
     vtkNew<vtkFieldData> fd;
     fd->DeepCopy(input->GetFieldData());

@@ -174,33 +174,15 @@ void addCount(vtkFieldData* fd, const char* name, double value) {
 void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out) {
   const vtkIdType V = static_cast<vtkIdType>(g.points.size());
   const vtkIdType E = static_cast<vtkIdType>(g.edges.size());
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(V);
-  vtkNew<vtkDoubleArray> normals, gamma, alpha, beta;
-  normals->SetName(gl::arrays::NozzleAxis);
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(V);
-  gamma->SetName(gl::arrays::Gamma);
-  gamma->SetNumberOfTuples(V);
-  alpha->SetName(gl::arrays::Alpha);
-  alpha->SetNumberOfTuples(V);
-  beta->SetName(gl::arrays::Beta);
-  beta->SetNumberOfTuples(V);
   auto kind = gl::intArray(gl::arrays::VertexKind, V);
   auto degree = gl::intArray(gl::arrays::Degree, V);
   auto vertexSubgraph = gl::intArray(gl::arrays::SubgraphId, V);
   for (vtkIdType v = 0; v < V; ++v) {
-    points->SetPoint(v, g.points[v].data());
-    normals->SetTypedTuple(v, g.normals[v].data());
-    gamma->SetValue(v, g.gamma[v]);
-    alpha->SetValue(v, g.alpha[v]);
-    beta->SetValue(v, g.beta[v]);
     kind->SetValue(v, static_cast<int>(g.vertexKind[v]));
     degree->SetValue(v, g.degree[v]);
     vertexSubgraph->SetValue(v, g.vertexSubgraph[v]);
   }
-  out->SetPoints(points);
+  out->SetPoints(gl::pointsOf(g.points));
   vtkNew<vtkCellArray> lines;
   lines->AllocateExact(E, 2 * E);
   auto edgeKind = gl::intArray(gl::arrays::EdgeKind, E);
@@ -224,12 +206,12 @@ void buildOutput(const gl::LatticeGraph& g, bool hasGamma, vtkPolyData* out) {
   vtkPointData* pd = out->GetPointData();
   pd->AddArray(kind);
   pd->AddArray(degree);
-  pd->AddArray(normals);
+  pd->AddArray(gl::vectorArray(gl::arrays::NozzleAxis, g.normals));
   if (hasGamma) {
-    pd->AddArray(gamma);
+    pd->AddArray(gl::doubleArray(gl::arrays::Gamma, g.gamma));
   }
-  pd->AddArray(alpha);
-  pd->AddArray(beta);
+  pd->AddArray(gl::doubleArray(gl::arrays::Alpha, g.alpha));
+  pd->AddArray(gl::doubleArray(gl::arrays::Beta, g.beta));
   pd->AddArray(vertexSubgraph);
   pd->SetActiveScalars(gl::arrays::VertexKind);
   vtkCellData* cd = out->GetCellData();

@@ -47,15 +47,6 @@ std::vector<Vec3> readPoints(vtkPoints* points) {
   return out;
 }
 
-vtkNew<vtkPoints> writePoints(const std::vector<Vec3>& points) {
-  vtkNew<vtkPoints> out;
-  out->SetDataTypeToDouble();
-  out->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
-  for (size_t i = 0; i < points.size(); ++i) {
-    out->SetPoint(static_cast<vtkIdType>(i), points[i].data());
-  }
-  return out;
-}
 /// Removes point normals and texture coordinates: per-corner data that point merging would
 /// make wrong, and that made readers (OBJ) split vertices in the first place.
 void dropCornerAttributes(vtkPolyData* poly) {
@@ -140,7 +131,7 @@ TetMesh toTetMesh(vtkUnstructuredGrid* grid) {
 
 void fromTetMesh(const TetMesh& mesh, vtkUnstructuredGrid* grid) {
   grid->Initialize();
-  grid->SetPoints(writePoints(mesh.points));
+  grid->SetPoints(pointsOf(mesh.points));
   vtkNew<vtkCellArray> cells;
   cells->AllocateExact(static_cast<vtkIdType>(mesh.tets.size()),
                        4 * static_cast<vtkIdType>(mesh.tets.size()));
@@ -153,7 +144,7 @@ void fromTetMesh(const TetMesh& mesh, vtkUnstructuredGrid* grid) {
 
 void fromTriangleSurface(const TriangleSurface& surface, vtkPolyData* poly) {
   poly->Initialize();
-  poly->SetPoints(writePoints(surface.points));
+  poly->SetPoints(pointsOf(surface.points));
   vtkNew<vtkCellArray> cells;
   cells->AllocateExact(static_cast<vtkIdType>(surface.triangles.size()),
                        3 * static_cast<vtkIdType>(surface.triangles.size()));
@@ -618,6 +609,35 @@ vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<
   a->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / components));
   std::copy(values.begin(), values.end(), a->GetPointer(0));
   return a;
+}
+
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const Eigen::VectorXd& values) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
+  std::copy(values.data(), values.data() + values.size(), a->GetPointer(0));
+  return a;
+}
+
+vtkSmartPointer<vtkDoubleArray> vectorArray(const char* name, const std::vector<Vec3>& vectors) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(3);
+  a->SetNumberOfTuples(static_cast<vtkIdType>(vectors.size()));
+  for (size_t i = 0; i < vectors.size(); ++i) {
+    a->SetTypedTuple(static_cast<vtkIdType>(i), vectors[i].data());
+  }
+  return a;
+}
+
+vtkSmartPointer<vtkPoints> pointsOf(const std::vector<Vec3>& positions) {
+  auto out = vtkSmartPointer<vtkPoints>::New();
+  out->SetDataTypeToDouble();
+  out->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
+  for (size_t i = 0; i < positions.size(); ++i) {
+    out->SetPoint(static_cast<vtkIdType>(i), positions[i].data());
+  }
+  return out;
 }
 
 void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values,

@@ -129,9 +129,15 @@ NozzleModel nozzleModel(vtkGLNozzle* nozzle);
 /// The build plate of the filters' nozzle block; validated (throws naming a bad parameter).
 BuildPlate buildPlate(vtkGLNozzle* nozzle);
 
+/// Double-precision points at the given positions (mm).
+vtkSmartPointer<vtkPoints> pointsOf(const std::vector<Vec3>& positions);
 /// A named double array of values.size() / components tuples holding values.
 vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const std::vector<double>& values,
                                             int components = 1);
+/// A named double array holding values (one component).
+vtkSmartPointer<vtkDoubleArray> doubleArray(const char* name, const Eigen::VectorXd& values);
+/// A named 3-component double array holding the vectors.
+vtkSmartPointer<vtkDoubleArray> vectorArray(const char* name, const std::vector<Vec3>& vectors);
 /// A named int array of n tuples (their values to be set).
 vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n);
 /// Adds doubleArray(name, values, components) to the field data (replacing one of that name).

@@ -49,16 +49,6 @@ vtkDataArray* requireArray(vtkDataSetAttributes* data, const char* name, const c
   return a;
 }
 
-vtkNew<vtkDoubleArray> cellArray(const char* name, const std::vector<double>& values) {
-  vtkNew<vtkDoubleArray> a;
-  a->SetName(name);
-  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  for (size_t i = 0; i < values.size(); ++i) {
-    a->SetValue(static_cast<vtkIdType>(i), values[i]);
-  }
-  return a;
-}
-
 }  // namespace
 
 vtkGLOverhangAnalysis::vtkGLOverhangAnalysis() {
@@ -153,8 +143,8 @@ int vtkGLOverhangAnalysis::RequestData(vtkInformation*, vtkInformationVector** i
         throw gl::RequestAborted{};
       }
     }
-    outCD->AddArray(cellArray(gl::arrays::OverhangPlanar, result.planarDeg));
-    outCD->AddArray(cellArray(gl::arrays::OverhangCurved, result.curvedDeg));
+    outCD->AddArray(gl::doubleArray(gl::arrays::OverhangPlanar, result.planarDeg));
+    outCD->AddArray(gl::doubleArray(gl::arrays::OverhangCurved, result.curvedDeg));
     vtkNew<vtkUnsignedCharArray> onBase;
     onBase->SetName(gl::arrays::OnBase);
     onBase->SetNumberOfTuples(numFaces);

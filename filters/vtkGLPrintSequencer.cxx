@@ -173,19 +173,15 @@ void printOrderPolyline(const gl::PieceSequence& pieces, vtkPolyData* out) {
   const gl::SkeletonTree& tree = pieces.tree;
   const gl::PrintSequence& seq = pieces.sequence;
   const vtkIdType K = static_cast<vtkIdType>(seq.order.size());
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(K);
   auto position = gl::intArray(gl::arrays::PrintOrder, K);
   auto subgraph = gl::intArray(gl::arrays::SubgraphId, K);
   auto piece = gl::intArray(gl::arrays::PieceId, K);
   for (vtkIdType k = 0; k < K; ++k) {
-    points->SetPoint(k, seq.start[k].data());
     position->SetValue(k, static_cast<int>(k));
     subgraph->SetValue(k, pieces.pieceSubgraph[seq.order[k]]);
     piece->SetValue(k, seq.order[k]);
   }
-  out->SetPoints(points);
+  out->SetPoints(gl::pointsOf(seq.start));
   const vtkIdType T = std::max<vtkIdType>(K - 1, 0);
   vtkNew<vtkCellArray> lines;
   lines->AllocateExact(T, 2 * T);

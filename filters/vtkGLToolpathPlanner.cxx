@@ -45,14 +45,6 @@ static_assert(static_cast<int>(gl::MoveKind::Print) == gl::movekind::Print &&
                   static_cast<int>(gl::MoveKind::Air) == gl::movekind::Air,
               "geolattice::movekind must match core/toolpath/ToolpathPlanner.h");
 
-vtkSmartPointer<vtkDoubleArray> pointDoubles(const char* name, const std::vector<double>& values) {
-  auto a = vtkSmartPointer<vtkDoubleArray>::New();
-  a->SetName(name);
-  a->SetNumberOfTuples(static_cast<vtkIdType>(values.size()));
-  std::copy(values.begin(), values.end(), a->GetPointer(0));
-  return a;
-}
-
 /// The printing order: the field array SequenceOrder of the sequencer's outputs.
 std::vector<int> printOrderOf(vtkPolyData* lattice) {
   vtkDataArray* order = lattice->GetFieldData()->GetArray(gl::arrays::SequenceOrder);
@@ -103,13 +95,6 @@ bool piecesOf(vtkPolyData* lattice, size_t edges, gl::ToolpathPieces& pieces) {
 /// The whole toolpath as polydata (see the class documentation).
 void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkPolyData* out) {
   const vtkIdType N = static_cast<vtkIdType>(path.points.size());
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(N);
-  vtkNew<vtkDoubleArray> normals;
-  normals->SetName(gl::arrays::NozzleAxis);
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(N);
   auto kind = gl::intArray(gl::arrays::MoveKind, N);
   auto layer = gl::intArray(gl::arrays::LayerId, N);
   auto subgraph = gl::intArray(gl::arrays::SubgraphId, N);
@@ -119,22 +104,20 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
     return l >= 0 && l < static_cast<int>(graph.layerIndex.size()) ? graph.layerIndex[l] : l;
   };
   for (vtkIdType i = 0; i < N; ++i) {
-    points->SetPoint(i, path.points[i].data());
-    normals->SetTuple(i, path.normals[i].data());
     kind->SetValue(i, static_cast<int>(path.kind[i]));
     layer->SetValue(i, latticeLayerId(path.layer[i]));
     subgraph->SetValue(i, path.subgraph[i]);
     pathIndex->SetValue(i, path.pathIndex[i]);
     pointIndex->SetValue(i, static_cast<int>(i));
   }
-  out->SetPoints(points);
+  out->SetPoints(gl::pointsOf(path.points));
   vtkPointData* pd = out->GetPointData();
-  pd->AddArray(normals);
-  pd->AddArray(pointDoubles(gl::arrays::Thickness, path.thickness));
-  pd->AddArray(pointDoubles(gl::arrays::Width, path.width));
-  pd->AddArray(pointDoubles(gl::arrays::Extrusion, path.extrusion));
-  pd->AddArray(pointDoubles(gl::arrays::FeedRate, path.feedRate));
-  pd->AddArray(pointDoubles(gl::arrays::AxisTilt, path.axisTilt));
+  pd->AddArray(gl::vectorArray(gl::arrays::NozzleAxis, path.normals));
+  pd->AddArray(gl::doubleArray(gl::arrays::Thickness, path.thickness));
+  pd->AddArray(gl::doubleArray(gl::arrays::Width, path.width));
+  pd->AddArray(gl::doubleArray(gl::arrays::Extrusion, path.extrusion));
+  pd->AddArray(gl::doubleArray(gl::arrays::FeedRate, path.feedRate));
+  pd->AddArray(gl::doubleArray(gl::arrays::AxisTilt, path.axisTilt));
   pd->AddArray(kind);
   pd->AddArray(layer);
   pd->AddArray(subgraph);

@@ -104,6 +104,14 @@ public:
                           " (counts in the header do not match the data)");
   }
 
+  /// Reads the line of element i of n (e.g. "vertex", "face") into tok; throws failEof naming it
+  /// when the file ends first.
+  void nextElement(std::vector<std::string_view>& tok, const char* element, int i, int n) {
+    if (!next(tok)) {
+      failEof(std::string(element) + " " + std::to_string(i) + " of " + std::to_string(n));
+    }
+  }
+
   double number(std::string_view token, const char* what) const {
     if (!token.empty() && token.front() == '+') {
       token.remove_prefix(1);  // from_chars does not take a leading '+'
@@ -210,9 +218,7 @@ std::vector<Vec3> readVertexLines(LineTokenizer& lines, int n) {
   std::vector<Vec3> points(n);
   std::vector<std::string_view> tok;
   for (int i = 0; i < n; ++i) {
-    if (!lines.next(tok)) {
-      lines.failEof("vertex " + std::to_string(i) + " of " + std::to_string(n));
-    }
+    lines.nextElement(tok, "vertex", i, n);
     if (tok.size() < 3) {
       lines.fail("vertex " + std::to_string(i) + ": expected 'x y z', got " +
                  std::to_string(tok.size()) + " values");
@@ -276,9 +282,7 @@ TriangleSurface readOff(const std::string& path) {
   surface.points = readVertexLines(lines, numPoints);
   surface.triangles.reserve(numFaces);
   for (int f = 0; f < numFaces; ++f) {
-    if (!lines.next(tok)) {
-      lines.failEof("face " + std::to_string(f) + " of " + std::to_string(numFaces));
-    }
+    lines.nextElement(tok, "face", f, numFaces);
     const long long n = lines.integer(tok[0], "the face's vertex count");
     if (n < 3) {
       lines.fail("face " + std::to_string(f) + " has " + std::to_string(n) +
@@ -433,9 +437,7 @@ TetMesh readTetFile(const std::string& path) {
   mesh.points = readVertexLines(lines, numPoints);
   mesh.tets.resize(numTets);
   for (int t = 0; t < numTets; ++t) {
-    if (!lines.next(tok)) {
-      lines.failEof("tet " + std::to_string(t) + " of " + std::to_string(numTets));
-    }
+    lines.nextElement(tok, "tet", t, numTets);
     if (tok.size() < 5 || tok[0] != "4") {
       lines.fail("tet " + std::to_string(t) + ": expected '4 a b c d'");
     }
@@ -486,9 +488,7 @@ TetMesh readTetGenMesh(const std::string& path) {
     const size_t minTokens =
         4 + static_cast<size_t>(numAttributes) + static_cast<size_t>(numMarkers);
     for (int i = 0; i < numPoints; ++i) {
-      if (!lines.next(tok)) {
-        lines.failEof("point " + std::to_string(i) + " of " + std::to_string(numPoints));
-      }
+      lines.nextElement(tok, "point", i, numPoints);
       if (tok.size() < minTokens) {
         lines.fail("point line: expected " + std::to_string(minTokens) +
                    " values ('<point #> x y z' + " + std::to_string(numAttributes) +
@@ -528,9 +528,7 @@ TetMesh readTetGenMesh(const std::string& path) {
         1 + static_cast<size_t>(nodesPerTet) + static_cast<size_t>(numAttributes);
     mesh.tets.resize(numTets);
     for (int t = 0; t < numTets; ++t) {
-      if (!lines.next(tok)) {
-        lines.failEof("tetrahedron " + std::to_string(t) + " of " + std::to_string(numTets));
-      }
+      lines.nextElement(tok, "tetrahedron", t, numTets);
       if (tok.size() < minTokens) {
         lines.fail("tetrahedron line: expected " + std::to_string(minTokens) + " values, got " +
                    std::to_string(tok.size()));
