@@ -252,6 +252,17 @@ void checkWritable(const std::string& path, const std::vector<Vec3>& points, con
   }
 }
 
+/// Writes "x y z\n", each the shortest representation that parses back to the same double
+/// (std::to_chars), so a written mesh reads back exactly.
+void writeCoordinates(std::ostream& out, const Vec3& p) {
+  char buf[64];
+  for (int k = 0; k < 3; ++k) {
+    const auto [end, ec] = std::to_chars(buf, buf + sizeof(buf), p[k]);
+    out.write(buf, end - buf);
+    out.put(k < 2 ? ' ' : '\n');
+  }
+}
+
 }  // namespace
 
 TriangleSurface readOff(const std::string& path) {
@@ -392,19 +403,9 @@ void writeObj(const std::string& path, const TriangleSurface& surface, const std
     for (std::string line; std::getline(lines, line);) {
       out << "# " << line << '\n';
     }
-    char buf[64];
-    auto put = [&](double v) {
-      const auto [ptr, ec] = std::to_chars(buf, buf + sizeof(buf), v);
-      out.write(buf, ptr - buf);
-    };
     for (const Vec3& p : surface.points) {
       out << "v ";
-      put(p.x());
-      out.put(' ');
-      put(p.y());
-      out.put(' ');
-      put(p.z());
-      out.put('\n');
+      writeCoordinates(out, p);
     }
     for (const auto& t : surface.triangles) {
       out << "f " << t[0] + 1 << ' ' << t[1] + 1 << ' ' << t[2] + 1 << '\n';
@@ -549,20 +550,9 @@ void writeTetFile(const std::string& path, const TetMesh& mesh) {
   AtomicFileSet files;
   {
     std::ostream& out = files.open(path);
-    // Shortest representation that parses back to the same double (std::to_chars).
-    char buf[64];
-    auto put = [&](double v) {
-      const auto [ptr, ec] = std::to_chars(buf, buf + sizeof(buf), v);
-      out.write(buf, ptr - buf);
-    };
     out << mesh.points.size() << " vertices\n" << mesh.tets.size() << " tets\n";
     for (const Vec3& p : mesh.points) {
-      put(p.x());
-      out.put(' ');
-      put(p.y());
-      out.put(' ');
-      put(p.z());
-      out.put('\n');
+      writeCoordinates(out, p);
     }
     for (const auto& t : mesh.tets) {
       out << "4 " << t[0] << ' ' << t[1] << ' ' << t[2] << ' ' << t[3] << '\n';
