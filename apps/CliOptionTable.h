@@ -75,6 +75,25 @@ CliOption number(const char* flag, const char* value, const char* section, const
       }};
 }
 
+/// A whole-number option in [lo, hi] bound to `set`/`get` of one filter (the getter gives the
+/// default).
+template <class F, class T>
+CliOption integer(const char* flag, const char* value, const char* section, const char* help,
+                  const std::string& property, vtkNew<F> P::*filter, void (F::*set)(T),
+                  T (F::*get)(), double lo, double hi) {
+  return {flag,
+          value,
+          section,
+          help,
+          property,
+          [=](P& p, RunOptions&, const std::string& v) {
+            ((p.*filter)->*set)(static_cast<T>(wholeNumber(flag, v, lo, hi)));
+          },
+          [=](P& p, const RunOptions&) {
+            return std::to_string(static_cast<long long>(((p.*filter)->*get)()));
+          }};
+}
+
 /// A flag without a value that sets one filter's boolean property to `to`; the option listing
 /// shows the filter's value as `onWord` or `offWord` (the getter gives the default).
 template <class F, class Set, class Get>

@@ -101,32 +101,22 @@ void addModelOptions(std::vector<CliOption>& t) {
                [](P& p, const RunOptions&) {
                  return text(p.OrientationTries);
                }});
-  t.push_back({"--orient-candidates", "N", orient,
-               "candidate directions from a uniform sphere sample (plus the\n"
-               "convex-hull facets and the placement as it is)",
-               "GLAutoOrient.SphereCandidates",
-               [](P& p, RunOptions&, const std::string& v) {
-                 p.Orientation->SetSphereCandidates(
-                     static_cast<int>(wholeNumber("--orient-candidates", v, 0, 2000)));
-               },
-               [](P& p, const RunOptions&) {
-                 return text(p.Orientation->GetSphereCandidates());
-               }});
+  t.push_back(integer("--orient-candidates", "N", orient,
+                      "candidate directions from a uniform sphere sample (plus the\n"
+                      "convex-hull facets and the placement as it is)",
+                      "GLAutoOrient.SphereCandidates", &P::Orientation,
+                      &vtkGLAutoOrient::SetSphereCandidates, &vtkGLAutoOrient::GetSphereCandidates,
+                      0, 2000));
 
   t.push_back(number("--edge-length", "MM", mesh,
                      "target tet edge length; 0 = automatic (see --target-tets)",
                      "GLTetrahedralizeSurface.TargetEdgeLength", &P::Tetrahedralize,
                      &vtkGLTetrahedralizeSurface::SetTargetEdgeLength,
                      &vtkGLTetrahedralizeSurface::GetTargetEdgeLength));
-  t.push_back({"--target-tets", "N", mesh, "tet count the automatic edge length aims at",
-               "GLTetrahedralizeSurface.TargetTetCount",
-               [](P& p, RunOptions&, const std::string& v) {
-                 p.Tetrahedralize->SetTargetTetCount(
-                     static_cast<int>(wholeNumber("--target-tets", v, 1, 2e9)));
-               },
-               [](P& p, const RunOptions&) {
-                 return text(p.Tetrahedralize->GetTargetTetCount());
-               }});
+  t.push_back(integer("--target-tets", "N", mesh, "tet count the automatic edge length aims at",
+                      "GLTetrahedralizeSurface.TargetTetCount", &P::Tetrahedralize,
+                      &vtkGLTetrahedralizeSurface::SetTargetTetCount,
+                      &vtkGLTetrahedralizeSurface::GetTargetTetCount, 1, 2e9));
   t.push_back(number("--radius-edge", "R", mesh,
                      "TetGen radius-edge ratio bound (quality; 1.414 = sqrt 2)",
                      "GLTetrahedralizeSurface.RadiusEdgeRatio", &P::Tetrahedralize,

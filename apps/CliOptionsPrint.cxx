@@ -64,17 +64,12 @@ void addPrintOptions(std::vector<CliOption>& t) {
                [](P& p, const RunOptions&) {
                  return kStrategies.at(p.Sequencer->GetStrategy());
                }});
-  t.push_back({"--split-rounds", "N", seq,
-               "rounds of splitting sub-graphs that block each other into pieces\n"
-               "(a4, best; 0 = never split)",
-               "GLPrintSequencer.SplitRounds",
-               [](P& p, RunOptions&, const std::string& v) {
-                 p.Sequencer->SetSplitRounds(
-                     static_cast<int>(wholeNumber("--split-rounds", v, 0, 100)));
-               },
-               [](P& p, const RunOptions&) {
-                 return text(p.Sequencer->GetSplitRounds());
-               }});
+  t.push_back(integer("--split-rounds", "N", seq,
+                      "rounds of splitting sub-graphs that block each other into pieces\n"
+                      "(a4, best; 0 = never split)",
+                      "GLPrintSequencer.SplitRounds", &P::Sequencer,
+                      &vtkGLPrintSequencer::SetSplitRounds, &vtkGLPrintSequencer::GetSplitRounds, 0,
+                      100));
   t.push_back(number("--nozzle-angle", "DEG", seq,
                      "half-angle NA of the nozzle's bounding cone, in (0, 90)",
                      "GLNozzle.NozzleAngle", &P::Nozzle, &vtkGLNozzle::SetNozzleAngle,

@@ -64,17 +64,12 @@ void addProgramOptions(std::vector<CliOption>& t) {
                  return text(p.ScriptWriter->GetPartOnFlangePosition(), 3) + "," +
                         text(p.ScriptWriter->GetPartOnFlangeRotation(), 3);
                }});
-  t.push_back({"--max-script-bytes", "N", prog,
-               "split the program into files below N bytes, at air moves\n"
-               "(UR controllers reject very large scripts)",
-               "GLURScriptWriter.MaxFileBytes",
-               [](P& p, RunOptions&, const std::string& v) {
-                 p.ScriptWriter->SetMaxFileBytes(
-                     static_cast<vtkIdType>(wholeNumber("--max-script-bytes", v, 10000, 1e12)));
-               },
-               [](P& p, const RunOptions&) {
-                 return std::to_string(static_cast<long long>(p.ScriptWriter->GetMaxFileBytes()));
-               }});
+  t.push_back(integer("--max-script-bytes", "N", prog,
+                      "split the program into files below N bytes, at air moves\n"
+                      "(UR controllers reject very large scripts)",
+                      "GLURScriptWriter.MaxFileBytes", &P::ScriptWriter,
+                      &vtkGLURScriptWriter::SetMaxFileBytes, &vtkGLURScriptWriter::GetMaxFileBytes,
+                      10000, 1e12));
   t.push_back(number("--speed-factor", "F", prog,
                      "fraction of the joint speed limits used, in (0, 1]",
                      "GLURScriptWriter.SpeedFactor", &P::ScriptWriter,
