@@ -316,39 +316,38 @@ TEST_F(MeshReaderTest, TetGenMissingPartner) {
 TEST_F(MeshReaderTest, TetGenBadInput) {
   EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("mesh.tet")); }),
                   "expected a .node or .ele file");
-  // 1-based .node, but the .ele uses point number 0.
-  write("a.node", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n");
-  write("a.ele", "1 4 0\n1 0 1 2 3\n");
-  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("a.node")); }),
-                  "a.ele:2: tetrahedron 0: vertex index 0 out of range [1, 4]");
-  write("b.node", "4 3 0 0\n0 0 0 0\n1 1 0 0\n3 0 1 0\n4 0 0 1\n");
-  write("b.ele", "1 4 0\n0 0 1 2 3\n");
-  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("b.ele")); }),
-                  "b.node:4: point numbers must be consecutive: expected 2, got 3");
-  write("c.node", "4 2 0 0\n");
-  write("c.ele", "1 4 0\n0 0 1 2 3\n");
-  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("c.node")); }),
-                  "c.node:1: dimension 2 is not supported");
-  write("d.node", "4 3 0 0\n2 0 0 0\n3 1 0 0\n4 0 1 0\n5 0 0 1\n");
-  write("d.ele", "1 4 0\n1 2 3 4 5\n");
-  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("d.node")); }),
-                  "d.node:2: first point number must be 0 or 1");
-  // Attribute announced in the header but missing on a point line.
-  write("e.node", "2 3 1 0\n0 0 0 0 7\n1 1 0 0\n");
-  write("e.ele", "1 4 0\n0 0 1 0 1\n");
-  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("e.node")); }),
-                  "e.node:3: point line: expected 5 values");
-  write("f.node", "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
-  write("f.ele", "2 4 0\n0 0 1 2 3\n");
-  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("f.node")); }),
-                  "expected tetrahedron 1 of 2");
-  write("g.ele", "1 6 0\n0 0 1 2 3 4 5\n");
-  write("g.node", "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n");
-  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("g.node")); }),
-                  "nodes per tetrahedron must be 4 or 10, got 6");
-  write("h.node", "0 3 0 0\n");
-  write("h.ele", "0 4 0\n");
-  EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path("h.node")); }), "empty mesh");
+  struct BadPair {
+    const char* name;  // files name.node and name.ele
+    const char* node;  // their contents
+    const char* ele;
+    const char* given;  // the extension passed to readTetGenMesh
+    const char* error;  // a part of the message
+  };
+  const BadPair cases[] = {
+      // 1-based .node, but the .ele uses point number 0.
+      {"a", "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n", "1 4 0\n1 0 1 2 3\n", ".node",
+       "a.ele:2: tetrahedron 0: vertex index 0 out of range [1, 4]"},
+      {"b", "4 3 0 0\n0 0 0 0\n1 1 0 0\n3 0 1 0\n4 0 0 1\n", "1 4 0\n0 0 1 2 3\n", ".ele",
+       "b.node:4: point numbers must be consecutive: expected 2, got 3"},
+      {"c", "4 2 0 0\n", "1 4 0\n0 0 1 2 3\n", ".node", "c.node:1: dimension 2 is not supported"},
+      {"d", "4 3 0 0\n2 0 0 0\n3 1 0 0\n4 0 1 0\n5 0 0 1\n", "1 4 0\n1 2 3 4 5\n", ".node",
+       "d.node:2: first point number must be 0 or 1"},
+      // Attribute announced in the header but missing on a point line.
+      {"e", "2 3 1 0\n0 0 0 0 7\n1 1 0 0\n", "1 4 0\n0 0 1 0 1\n", ".node",
+       "e.node:3: point line: expected 5 values"},
+      {"f", "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n", "2 4 0\n0 0 1 2 3\n", ".node",
+       "expected tetrahedron 1 of 2"},
+      {"g", "4 3 0 0\n0 0 0 0\n1 1 0 0\n2 0 1 0\n3 0 0 1\n", "1 6 0\n0 0 1 2 3 4 5\n", ".node",
+       "nodes per tetrahedron must be 4 or 10, got 6"},
+      {"h", "0 3 0 0\n", "0 4 0\n", ".node", "empty mesh"},
+  };
+  for (const BadPair& c : cases) {
+    SCOPED_TRACE(c.name);
+    write(std::string(c.name) + ".node", c.node);
+    write(std::string(c.name) + ".ele", c.ele);
+    EXPECT_CONTAINS(expectedErrorOf([&] { readTetGenMesh(path(std::string(c.name) + c.given)); }),
+                    c.error);
+  }
 }
 
 // ---------------------------------------------------------------- writer
