@@ -17,7 +17,6 @@
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
 #include <vtkNew.h>
-#include <vtkOBJReader.h>
 #include <vtkObjectFactory.h>
 #include <vtkPLYReader.h>
 #include <vtkPointData.h>
@@ -242,36 +241,6 @@ void checkBinaryStl(const std::string& path) {
                                     " bytes (truncated, or not an STL file)");
 }
 
-/// VTK's OBJ reader does not report a coordinate it cannot parse ("nan", "inf", "1,5"): it keeps
-/// the previous vertex's value and reads on. The vertex lines are scanned first, naming the first
-/// vertex (0-based) whose coordinates are not three finite numbers.
-void checkObjVertices(const std::string& path) {
-  std::ifstream in(path);
-  std::string line;
-  long long vertex = 0;
-  for (long long lineNumber = 1; std::getline(in, line); ++lineNumber) {
-    const std::size_t start = line.find_first_not_of(" \t");
-    if (start == std::string::npos || line.compare(start, 2, "v ") != 0) {
-      continue;
-    }
-    const char* cursor = line.c_str() + start + 2;
-    double p[3];
-    bool ok = true;
-    for (double& c : p) {
-      char* end = nullptr;
-      c = std::strtod(cursor, &end);
-      ok = ok && end != cursor && std::isfinite(c);
-      cursor = end;
-    }
-    if (!ok) {
-      throw geolattice::GeoLatticeError(
-          "non-finite coordinates in " + path + ": vertex " + std::to_string(vertex) + " (line " +
-          std::to_string(lineNumber) + ") is '" + line.substr(start) + "'");
-    }
-    ++vertex;
-  }
-}
-
 /// Refuses NaN or infinite coordinates, naming the first such vertex (they would end as
 /// zero-volume tets or "intersecting facets", pointing at the wrong problem).
 void checkFinitePoints(vtkPointSet* data, const std::string& path) {
@@ -291,8 +260,12 @@ void checkFinitePoints(vtkPointSet* data, const std::string& path) {
 void readSurface(const std::string& path, const std::string& ext, vtkPolyData* output,
                  vtkAlgorithm* reporter) {
   vtkNew<vtkPolyData> raw;
-  if (ext == ".off") {
-    geolattice::fromTriangleSurface(geolattice::readOff(path), raw);
+  if (ext == ".off" || ext == ".obj") {
+    // Core's readers: errors name the line; VTK's OBJ reader keeps the previous vertex for a
+    // coordinate it cannot parse and reads past its arrays on a face's out-of-range texture
+    // coordinate or normal index (heap corruption), where core ignores those references.
+    geolattice::fromTriangleSurface(
+        ext == ".off" ? geolattice::readOff(path) : geolattice::readObj(path), raw);
     checkFinitePoints(raw, path);
   } else {
     vtkSmartPointer<vtkAlgorithm> reader;
@@ -303,11 +276,6 @@ void readSurface(const std::string& path, const std::string& ext, vtkPolyData* o
       stl->MergingOn();
       stl->ScalarTagsOff();
       reader = stl;
-    } else if (ext == ".obj") {
-      checkObjVertices(path);
-      auto obj = vtkSmartPointer<vtkOBJReader>::New();
-      obj->SetFileName(path.c_str());
-      reader = obj;
     } else if (ext == ".ply") {
       auto ply = vtkSmartPointer<vtkPLYReader>::New();
       ply->SetFileName(path.c_str());

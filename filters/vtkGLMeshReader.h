@@ -7,10 +7,11 @@
  *
  * Inputs:  none (0 input ports).
  * Output:  port 0, its type decided in RequestDataObject from the extension (case-insensitive):
- *   - `.stl` (vtkSTLReader, points merged), `.obj` (vtkOBJReader), `.ply` (vtkPLYReader),
- *     `.vtp` (vtkXMLPolyDataReader), `.off` (core readOff) -> vtkPolyData of triangles only.
+ *   - `.stl` (vtkSTLReader, points merged), `.ply` (vtkPLYReader), `.vtp`
+ *     (vtkXMLPolyDataReader), `.obj` (core readObj: `v` and `f` statements, texture and normal
+ *     references ignored) and `.off` (core readOff) -> vtkPolyData of triangles only.
  *     Polygons are triangulated, vertices/lines dropped, coincident points merged
- *     (vtkCleanPolyData, exact), so a triangle soup (STL) or an OBJ whose vertices were split
+ *     (vtkCleanPolyData, exact), so a triangle soup (STL) or a PLY whose vertices were split
  *     by texture coordinates becomes one connected surface. Point normals and texture
  *     coordinates are dropped (they are per-corner data that merging would make wrong); other
  *     point and cell arrays of a `.vtp`/`.ply` are kept.
@@ -21,8 +22,8 @@
  *
  * Parameters: FileName (path, no default).
  *
- * Errors (vtkErrorMacro, empty output, RequestData still returns 1 so that the pipeline
- * does not abort): no file name, missing file ("file not found: <path>"), unknown extension
+ * Errors (vtkErrorMacro, empty output, RequestData returns 0 so that Update() reports the
+ * failure): no file name, missing file ("file not found: <path>"), unknown extension
  * (the message lists the supported ones), an empty mesh, a non-tetrahedral cell in a `.vtu`,
  * a parse error of the core readers (file and line), a VTK reader reporting an error.
  */

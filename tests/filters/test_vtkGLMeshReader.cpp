@@ -352,11 +352,27 @@ TEST_F(MeshReaderTest, ObjIndexOutOfRangeIsRefused) {
   const std::string path =
       this->Write("bad.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 3 9\n");
   ReadResult r = read(path);
-  EXPECT_NE(r.Errors->Errors().find("index out of range: polygon 1 of " + path +
-                                    " uses point 8 (0-based), but there are 3 points"),
+  EXPECT_NE(r.Errors->Errors().find(path + ":5: vertex index 9 out of range [1, 3]"),
             std::string::npos)
       << r.Errors->Errors();
   EXPECT_EQ(vtkDataSet::SafeDownCast(r.Output)->GetNumberOfCells(), 0);
+}
+
+TEST_F(MeshReaderTest, ObjTextureAndNormalReferencesAreIgnored) {
+  // A tetrahedron whose faces refer to texture coordinates and normals beyond the ones listed
+  // (as vtkOBJWriter can write them): vtkOBJReader wrote past its arrays and the process
+  // aborted in realloc(). Only the vertex references matter for the surface.
+  const std::string path = this->Write(
+      "tcoords.obj",
+      "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvn 0 0 1\nvt 0 0\nvt 1 0\n"
+      "f 1/1/1 3/3/3 2/2/2\nf 1/1/1 2/2/2 4/4/4\nf 1/1/1 4/4/4 3/3/3\nf 2/2/2 3/3/3 4/4/4\n");
+  ReadResult r = read(path);
+  EXPECT_FALSE(r.Errors->HasError()) << r.Errors->Errors();
+  vtkPolyData* surface = vtkPolyData::SafeDownCast(r.Output);
+  ASSERT_NE(surface, nullptr);
+  EXPECT_EQ(surface->GetNumberOfPoints(), 4);
+  EXPECT_EQ(surface->GetNumberOfPolys(), 4);
+  EXPECT_EQ(surface->GetPointData()->GetTCoords(), nullptr);
 }
 
 TEST_F(MeshReaderTest, CorruptVtkFileReportsReaderError) {
