@@ -66,6 +66,14 @@ Placement placeOnPlatform(const Vec3& lo, const Vec3& hi, const PlacementOptions
 
 std::vector<int> baseContactFaces(const TriangleSurface& surface, const Eigen::Matrix3d& R,
                                   double contactHeight) {
+  // A closed surface whose triangles all face inward (a common export error; meshing turns it
+  // outward later) has a negative enclosed volume: its outward normals are the opposite of the
+  // triangles' (R is a rotation, so the sign does not depend on it).
+  double sixVolume = 0;
+  for (const auto& t : surface.triangles) {
+    sixVolume += surface.points[t[0]].dot(surface.points[t[1]].cross(surface.points[t[2]]));
+  }
+  const double outward = sixVolume < 0 ? -1.0 : 1.0;
   double zmin = std::numeric_limits<double>::infinity();
   std::vector<double> z(surface.points.size());
   for (size_t i = 0; i < z.size(); ++i) {
@@ -83,7 +91,7 @@ std::vector<int> baseContactFaces(const TriangleSurface& surface, const Eigen::M
     const Vec3 cross = (R * (surface.points[t[1]] - surface.points[t[0]]))
                            .cross(R * (surface.points[t[2]] - surface.points[t[0]]));
     const double twice = cross.norm();
-    if (twice > 0 && -cross.z() / twice >= cosMax) {
+    if (twice > 0 && -outward * cross.z() / twice >= cosMax) {
       faces.push_back(static_cast<int>(f));
     }
   }

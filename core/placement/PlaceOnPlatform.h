@@ -44,8 +44,9 @@ Placement placeOnPlatform(const Vec3& lo, const Vec3& hi, const PlacementOptions
 
 /// The faces of `surface` (rotated by R) that touch the plate: all three corners within
 /// contactHeight of the lowest point and the outward normal within 30° of -z (a first layer is
-/// squeezed onto the plate over them). Used by the orientation search (base area) and the
-/// pedestal (its footprint). Indices ascending.
+/// squeezed onto the plate over them). Outward: the triangles' own normals, or their opposites
+/// when the surface encloses a negative volume (every triangle turned inward). Used by the
+/// orientation search (base area) and the pedestal (its footprint). Indices ascending.
 std::vector<int> baseContactFaces(const TriangleSurface& surface, const Eigen::Matrix3d& R,
                                   double contactHeight);
 

@@ -210,6 +210,15 @@ TEST(AutoOrient, BaseContactArea) {
   EXPECT_NEAR(baseContactArea(s, rotationTakingDownToMinusZ(Vec3::UnitZ()), 0.3), M_PI * 625,
               0.05 * M_PI * 625);
   EXPECT_LT(baseContactArea(s, rotationTakingDownToMinusZ(Vec3::UnitX()), 0.3), 0.05 * M_PI * 625);
+  // Every triangle turned inward (a common export error): the same contact, not 0.
+  TriangleSurface inward = s;
+  for (auto& t : inward.triangles) {
+    std::swap(t[1], t[2]);
+  }
+  EXPECT_DOUBLE_EQ(baseContactArea(inward, Eigen::Matrix3d::Identity(), 0.3),
+                   baseContactArea(s, Eigen::Matrix3d::Identity(), 0.3));
+  EXPECT_DOUBLE_EQ(baseContactArea(inward, rotationTakingDownToMinusZ(Vec3::UnitZ()), 0.3),
+                   baseContactArea(s, rotationTakingDownToMinusZ(Vec3::UnitZ()), 0.3));
 }
 
 TEST(ParallelFor, EveryItemOnceErrorsAndProgressOnTheCallingThread) {
