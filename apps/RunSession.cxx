@@ -256,8 +256,19 @@ void RunSession::Finish(int status) {
       std::cout << "; " << retired.size() << " files of an earlier run moved to " << R.outDir
                 << "/previous";
     }
-    std::cout << "\ngeolattice: open them in ParaView (paraview " << R.outDir
-              << "/toolpath.vtp) or load the plugin for the filters.\n";
+    // The toolpath, or the furthest stage's file a failed run wrote (none: report.json only).
+    std::string view;
+    for (const auto& [name, seconds] : this->Files.files()) {
+      const std::string ext = fs::path(name).extension().string();
+      if ((ext == ".vtp" || ext == ".vtu") && view != "toolpath.vtp") {
+        view = fs::path(name).filename().string();
+      }
+    }
+    std::cout << "\n";
+    if (!view.empty()) {
+      std::cout << "geolattice: open them in ParaView (paraview " << R.outDir << "/" << view
+                << ") or load the plugin for the filters.\n";
+    }
   }
 }
 

@@ -594,6 +594,15 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
         result.candidates.begin(), result.candidates.end(),
         [](const OrientCandidate& a, const OrientCandidate& b) { return a.baseArea < b.baseArea; });
     std::ostringstream m;
+    if (widest->baseArea >= o.minBaseArea && !widest->error.empty()) {
+      // Enough contact exists: a stage failed on the candidates that have it (e.g. a body that
+      // touches no base in any orientation). Its message is the reason, not the area.
+      m << "orientation: every orientation with a base contact area of at least " << o.minBaseArea
+        << " mm^2 failed a stage; with the part's side (" << widest->down.x() << ", "
+        << widest->down.y() << ", " << widest->down.z() << ") down (" << widest->baseArea
+        << " mm^2): " << widest->error;
+      throw GeoLatticeError(m.str());
+    }
     m << "orientation: no orientation has a base contact area of " << o.minBaseArea
       << " mm^2 (the largest is " << widest->baseArea << " mm^2, with the part's side ("
       << widest->down.x() << ", " << widest->down.y() << ", " << widest->down.z() << ") down"

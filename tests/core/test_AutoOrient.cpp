@@ -95,6 +95,36 @@ TEST(AutoOrient, NoOrientationWithTheBaseAreaIsAClearError) {
   EXPECT_THROW(searchOrientation(flatMushroom(), bad), GeoLatticeError);
 }
 
+TEST(AutoOrient, WhenEveryOrientationFailsAStageTheMessageSaysWhichNotTheArea) {
+  // A ball floating in the closed cavity of a box: no side puts it on the base, whatever the
+  // contact area (900 mm^2 here). The message gives the stage's reason.
+  TriangleSurface part = boxSurface(Vec3(30, 30, 30), 5.0);
+  auto append = [&part](TriangleSurface s, const Vec3& shift, bool inward) {
+    const int offset = static_cast<int>(part.points.size());
+    for (const Vec3& p : s.points) {
+      part.points.push_back(p + shift);
+    }
+    for (auto t : s.triangles) {
+      if (inward) {
+        std::swap(t[1], t[2]);
+      }
+      part.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+    }
+  };
+  append(boxSurface(Vec3(20, 20, 20), 5.0), Vec3(5, 5, 5), true);
+  append(sphereSurface(Vec3::Zero(), 4.0, 2), Vec3(15, 15, 15), false);
+  OrientOptions o;
+  o.sphereCandidates = 12;
+  o.hullCandidates = 4;
+  const std::string m = expectedErrorOf([&] { searchOrientation(part, o); });
+  EXPECT_NE(m.find("every orientation with a base contact area of at least 10 mm^2 failed a "
+                   "stage"),
+            std::string::npos)
+      << m;
+  EXPECT_NE(m.find("does not touch the base"), std::string::npos) << m;
+  EXPECT_EQ(m.find("no orientation has a base contact area"), std::string::npos) << m;
+}
+
 TEST(AutoOrient, APartWithNoFlatSideStandsOnAPedestal) {
   // A ball touches the plate on a small cap: 0.3 mm deep it is 2 pi R 0.3 = 28 mm^2, below the
   // 50 asked for; a pedestal reaching 1 mm into it stands it on 2 pi R 1 = 94 mm^2.
