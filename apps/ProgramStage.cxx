@@ -21,6 +21,7 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
   GLPrintPipeline& P = run.P;
   const RunOptions& R = run.R;
   Json& s = run.Section("program");
+  s["seconds"] = 0.0;  // (Section gives the last stage's) until the writers run
   Json& gates = run.Report["gates"];
   const long long stations =
       static_cast<long long>(fieldValue(pathCollisions, arrays::CollisionStations));
@@ -94,6 +95,7 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
   const std::string scriptError = run.RunWriter(script, !R.quiet);
   reportScript(P, s);
   const double scriptSeconds = secondsSince(start);
+  s["seconds"] = scriptSeconds;  // what a gate below stops after
   if (!scriptError.empty()) {
     if (!R.quiet) {
       std::cout << " stopped\n";

@@ -326,8 +326,9 @@ private:
     };
     const GLPrintPipeline::SetUpTries tries = P.FindAPrintableSetUp(runAgain, listener);
 
+    // The sections as they are (Section() would overwrite their seconds with the last stage's).
     reportSetUpTries(tries, P.Orientation->GetCandidateRank(),
-                     [this](const char* name) -> Json& { return this->Section(name); });
+                     [this](const char* name) -> Json& { return this->Report[name]; });
   }
   bool BaseConsidered = false;
 

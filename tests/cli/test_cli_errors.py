@@ -795,6 +795,8 @@ class CliGateTest(unittest.TestCase):
         result, report, programs, out = self.run_cli("cube.obj", *args)
         self.expect_gate(result, report, programs, out, 5, "reachability", ["unreachable for the ur5"])
         self.assertGreater(report["program"]["unreachable"], 0)
+        # The program stage's own seconds (the writer ran before the gate), not the summary's.
+        self.assertNotEqual(report["program"]["seconds"], report["summary"]["seconds"])
         result, report, programs, out = self.run_cli("cube.obj", *args, "--allow-unreachable")
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertIn("unreachable", result.stderr)
