@@ -16,9 +16,11 @@ std::vector<std::string> reportSurfaceRepairs(vtkDataObject* oriented, vtkDataOb
   const int merged = count(arrays::MergedBodies);
   const int duplicates = count(arrays::DuplicateTriangles);
   const int reoriented = count(arrays::ReorientedTriangles);
+  const int degenerate = count(arrays::DegenerateTrianglesRemoved);
   mesh["merged_bodies"] = merged;
   mesh["duplicate_triangles"] = duplicates;
   mesh["reoriented_triangles"] = reoriented;
+  mesh["degenerate_triangles"] = degenerate;
   std::vector<std::string> notes;
   if (merged > 0) {
     std::ostringstream note;
@@ -45,6 +47,13 @@ std::vector<std::string> reportSurfaceRepairs(vtkDataObject* oriented, vtkDataOb
                  : " triangles of the surface ran against their neighbours; turned to "
                    "agree with them")
          << " (report.json mesh.reoriented_triangles)";
+    notes.push_back(note.str());
+  }
+  if (degenerate > 0) {
+    std::ostringstream note;
+    note << degenerate << (degenerate == 1 ? " degenerate triangle" : " degenerate triangles")
+         << " of the surface (area ~0, e.g. marching-cubes slivers) mended by collapsing or "
+            "flipping an edge (report.json mesh.degenerate_triangles)";
     notes.push_back(note.str());
   }
   return notes;

@@ -29,8 +29,9 @@
  *   `OrientChosenRank` (the candidate shown: CandidateRank, clamped), and `MergedBodies` where
  *   bodies of the input that touch along a face (welded by the reader) were merged into their
  *   union before the search (core mergeTouchingBodies: the output is that union), and
- *   `DuplicateTriangles` / `ReorientedTriangles` where triangles repeating another one were
- *   dropped or triangles flipped against their neighbours turned (core/mesh/SurfaceRepair.h).
+ *   `DuplicateTriangles` / `ReorientedTriangles` / `DegenerateTrianglesRemoved` where triangles
+ *   repeating another one were dropped, triangles flipped against their neighbours turned or
+ *   degenerate ones removed (core/mesh/SurfaceRepair.h).
  * Output port 1 (Candidates): with Auto, one vertex per candidate at centre + radius × its up
  *   direction (a sphere around the part), point data `OrientRank` (0 = chosen),
  *   `CollidingStations`, `PlateStations`, `ForcedSteps`, `BaseArea` (mm²), `OverhangFraction`,

@@ -646,10 +646,11 @@ void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>
 }
 
 void addSurfaceRepairArrays(vtkFieldData* fd, int mergedBodies, int duplicateTriangles,
-                            int reorientedTriangles) {
+                            int reorientedTriangles, int degenerateTriangles) {
   addFieldArray(fd, arrays::MergedBodies, {static_cast<double>(mergedBodies)});
   addFieldArray(fd, arrays::DuplicateTriangles, {static_cast<double>(duplicateTriangles)});
   addFieldArray(fd, arrays::ReorientedTriangles, {static_cast<double>(reorientedTriangles)});
+  addFieldArray(fd, arrays::DegenerateTrianglesRemoved, {static_cast<double>(degenerateTriangles)});
 }
 
 }  // namespace geolattice

@@ -144,9 +144,10 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n);
 void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values,
                    int components = 1);
 /// The repairs a surface got before meshing (core/mesh/SurfaceRepair.h; mergedBodies also counts
-/// crossing bodies united): field data MergedBodies, DuplicateTriangles, ReorientedTriangles.
+/// crossing bodies united): field data MergedBodies, DuplicateTriangles, ReorientedTriangles,
+/// DegenerateTrianglesRemoved.
 void addSurfaceRepairArrays(vtkFieldData* fd, int mergedBodies, int duplicateTriangles,
-                            int reorientedTriangles);
+                            int reorientedTriangles, int degenerateTriangles);
 
 }  // namespace geolattice
 #endif

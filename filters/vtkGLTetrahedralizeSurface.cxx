@@ -167,7 +167,7 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
     addValue(fd, gl::arrays::TetGenQualityBoundDropped, result.qualityBoundDropped ? 1.0 : 0.0);
     gl::addSurfaceRepairArrays(fd, result.mergedBodies, result.duplicateTriangles,
-                               result.reorientedTriangles);
+                               result.reorientedTriangles, result.degenerateTriangles);
     addValue(fd, gl::arrays::CavityRegions, static_cast<double>(result.removedCavityRegions));
     if (result.mergedBodies > 0) {
       vtkWarningMacro(<< "bodies of the surface touch or cross each other; meshed as their union ("
@@ -182,6 +182,11 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
       vtkWarningMacro(<< result.reorientedTriangles
                       << " triangles of the surface ran against their neighbours; turned to agree "
                          "with them");
+    }
+    if (result.degenerateTriangles > 0) {
+      vtkWarningMacro(<< result.degenerateTriangles
+                      << " degenerate triangles of the surface (area ~0) mended by collapsing or "
+                         "flipping an edge");
     }
     if (result.qualityBoundDropped) {
       vtkWarningMacro(<< gl::qualityBoundDroppedNote(result.tetCount));

@@ -14,8 +14,10 @@
  *         welded into non-manifold edges by the reader), are meshed as their union
  *         (core/mesh/OverlappingBodies.h; field data `MergedBodies`, and a warning). A triangle
  *         that repeats another (the same vertices, the same way round) is dropped, triangles
- *         flipped against their neighbours are turned (core/mesh/SurfaceRepair.h; field data
- *         `DuplicateTriangles`, `ReorientedTriangles`, and a warning). Closed
+ *         flipped against their neighbours are turned, degenerate triangles (area ~0: slivers
+ *         of marching cubes or of the union's cuts) are removed by collapsing or flipping an
+ *         edge (core/mesh/SurfaceRepair.h; field data `DuplicateTriangles`,
+ *         `ReorientedTriangles`, `DegenerateTrianglesRemoved`, and a warning). Closed
  *         cavities are counted in field data `CavityRegions`. An
  *         inward-oriented surface is flipped. Input arrays are not passed (the vertices change).
  * Output: vtkUnstructuredGrid of linear, positively oriented VTK_TETRA cells;

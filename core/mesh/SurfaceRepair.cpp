@@ -1,13 +1,17 @@
 #include "mesh/SurfaceRepair.h"
 
 #include "common/UnionFind.h"
+#include "mesh/CgalSurfaceMesh.h"
 #include "mesh/OverlappingBodies.h"
 #include "mesh/SurfaceCheck.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/repair_degeneracies.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <functional>
 #include <unordered_set>
@@ -99,21 +103,85 @@ int orientConsistently(TriangleSurface& surface) {
   return turned;
 }
 
+int removeDegenerateTriangles(TriangleSurface& surface) {
+  const SurfaceCheckReport check = checkSurface(surface);
+  if (check.degenerateTriangles == 0) {
+    return 0;
+  }
+  // SurfaceCheck's tolerance, relative to the same origin (the box centre).
+  const double tolerance = 1e-12 * check.bboxDiagonal * check.bboxDiagonal;
+  cgal::SurfaceMesh mesh;
+  try {
+    mesh = cgal::toSurfaceMesh(surface, "degenerate triangles");
+  } catch (const GeoLatticeError&) {
+    return 0;  // not a 2-manifold or a repeated vertex: the caller's check names it
+  }
+  std::vector<cgal::SurfaceMesh::Face_index> degenerate;
+  for (size_t t = 0; t < surface.triangles.size(); ++t) {
+    const auto& tri = surface.triangles[t];
+    const Vec3 a = surface.points[tri[0]], b = surface.points[tri[1]], c = surface.points[tri[2]];
+    if (!(0.5 * (b - a).cross(c - a).norm() > tolerance)) {
+      degenerate.push_back(cgal::SurfaceMesh::Face_index(static_cast<uint32_t>(t)));
+    }
+  }
+  const double capCosine = std::cos(160.0 * M_PI / 180.0);  // CGAL's example thresholds
+  const double needleRatio = 4.0;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  PMP::experimental::remove_almost_degenerate_faces(degenerate, mesh, capCosine, needleRatio,
+                                                    0.0 /* any edge length */);
+  // Left: tiny triangles of a good shape (marching cubes near a grid vertex: edges of 1e-5 mm),
+  // neither needle nor cap; their shortest edge is collapsed to its midpoint where that keeps
+  // the surface a 2-manifold (the link condition).
+  for (cgal::SurfaceMesh::Face_index f : degenerate) {
+    if (mesh.is_removed(f)) {
+      continue;
+    }
+    auto h = mesh.halfedge(f);
+    const auto length2 = [&mesh](cgal::SurfaceMesh::Halfedge_index e) {
+      return CGAL::squared_distance(mesh.point(mesh.source(e)), mesh.point(mesh.target(e)));
+    };
+    const auto& p0 = mesh.point(mesh.source(h));
+    const auto& p1 = mesh.point(mesh.target(h));
+    const auto& p2 = mesh.point(mesh.target(mesh.next(h)));
+    if (std::sqrt(CGAL::squared_area(p0, p1, p2)) > tolerance) {
+      continue;  // CGAL's pass mended it
+    }
+    for (auto e : {mesh.next(mesh.halfedge(f)), mesh.prev(mesh.halfedge(f))}) {
+      if (length2(e) < length2(h)) {
+        h = e;
+      }
+    }
+    const cgal::SurfaceMesh::Edge_index e = mesh.edge(h);
+    if (CGAL::Euler::does_satisfy_link_condition(e, mesh)) {
+      const auto mid = CGAL::midpoint(mesh.point(mesh.source(h)), mesh.point(mesh.target(h)));
+      mesh.point(CGAL::Euler::collapse_edge(e, mesh)) = mid;
+    }
+  }
+  mesh.collect_garbage();
+  surface = cgal::toTriangleSurface(mesh);
+  return check.degenerateTriangles - checkSurface(surface).degenerateTriangles;
+}
+
 SurfaceRepairCounts repairSurface(TriangleSurface& surface) {
   SurfaceRepairCounts counts;
   SurfaceCheckReport check = checkSurface(surface);
-  if (check.nonManifoldEdges == 0 && check.inconsistentEdges == 0) {
-    return counts;  // holes and the rest are not repaired here
+  if (check.nonManifoldEdges > 0 || check.inconsistentEdges > 0) {
+    counts.duplicateTriangles = dropDuplicateTriangles(surface);
+    if (counts.duplicateTriangles > 0) {
+      check = checkSurface(surface);
+    }
+    if (check.inconsistentEdges > 0 && check.nonManifoldEdges == 0) {
+      counts.reorientedTriangles = orientConsistently(surface);
+    }
+    if (check.nonManifoldEdges > 0) {
+      counts.mergedBodies = mergeTouchingBodies(surface);
+    }
+    if (counts.any()) {
+      check = checkSurface(surface);
+    }
   }
-  counts.duplicateTriangles = dropDuplicateTriangles(surface);
-  if (counts.duplicateTriangles > 0) {
-    check = checkSurface(surface);
-  }
-  if (check.inconsistentEdges > 0 && check.nonManifoldEdges == 0) {
-    counts.reorientedTriangles = orientConsistently(surface);
-  }
-  if (check.nonManifoldEdges > 0) {
-    counts.mergedBodies = mergeTouchingBodies(surface);
+  if (check.degenerateTriangles > 0) {  // holes and the rest are not repaired here
+    counts.degenerateTriangles = removeDegenerateTriangles(surface);
   }
   return counts;
 }

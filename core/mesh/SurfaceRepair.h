@@ -7,7 +7,10 @@
 ///     turned to agree with them (CGAL's orient_polygon_soup; whole bodies still point either
 ///     way: orientOutward in mesh/SurfaceCheck.h turns them outward);
 ///  3. bodies welded where they touch along a face become their union (mergeTouchingBodies,
-///     mesh/OverlappingBodies.h).
+///     mesh/OverlappingBodies.h);
+///  4. degenerate triangles (SurfaceCheck's: area <= 1e-12 diagonal^2), the slivers marching
+///     cubes and a union's cuts leave, are removed by collapsing a needle's shortest edge or
+///     flipping a cap's longest one (removeDegenerateTriangles).
 /// Holes, self-intersections and non-manifold edges of another origin are not repaired: the
 /// caller's check (requireClosedManifold) names them.
 ///
@@ -26,10 +29,13 @@ struct SurfaceRepairCounts {
   int duplicateTriangles = 0;   ///< copies dropped
   int reorientedTriangles = 0;  ///< triangles turned to agree with their neighbours
   int mergedBodies = 0;         ///< bodies merged into another (mergeTouchingBodies' count)
-  bool any() const { return duplicateTriangles + reorientedTriangles + mergedBodies > 0; }
+  int degenerateTriangles = 0;  ///< degenerate triangles mended (removeDegenerateTriangles)
+  bool any() const {
+    return duplicateTriangles + reorientedTriangles + mergedBodies + degenerateTriangles > 0;
+  }
 };
 
-/// The repairs 1-3 above, in that order; the surface is changed only by the repairs done.
+/// The repairs 1-4 above, in that order; the surface is changed only by the repairs done.
 SurfaceRepairCounts repairSurface(TriangleSurface& surface);
 
 /// Repair 1: drops every triangle on the same three vertices, the same way round, as an earlier
@@ -44,6 +50,16 @@ int dropDuplicateTriangles(TriangleSurface& surface);
 /// (a surface whose edges are manifold and whose bodies are orientable); otherwise the surface
 /// is left as it is. Returns the triangles turned.
 int orientConsistently(TriangleSurface& surface);
+
+/// Repair 4: removes the degenerate triangles of a closed, oriented 2-manifold surface with
+/// CGAL::Polygon_mesh_processing::experimental::remove_almost_degenerate_faces restricted to
+/// them (a needle: its shortest edge collapsed; a cap, an angle near 180 degrees: its longest
+/// edge flipped); the neighbours move by at most the collapsed edge's length. A surface CGAL
+/// cannot take (not a 2-manifold, a triangle with a repeated vertex) is left as it is. Points
+/// are renumbered. Returns how many degenerate triangles fewer the surface has (a collapse also
+/// removes the neighbour across the edge; the caller's check says whether any is left).
+/// O(F log F) (the checks) + O(D log D).
+int removeDegenerateTriangles(TriangleSurface& surface);
 
 /// The cyclic order of a triangle's vertices: true when, from its smallest vertex id, the next
 /// id is the smaller of the other two. Two triangles on the same vertices run the same way

@@ -288,6 +288,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     result.duplicateTriangles = repaired.duplicateTriangles;
     result.reorientedTriangles = repaired.reorientedTriangles;
     result.mergedBodies = repaired.mergedBodies;
+    result.degenerateTriangles = repaired.degenerateTriangles;
     if (!repaired.any()) {
       throw;
     }
@@ -298,7 +299,11 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   result.flippedSurfaceTriangles = orientOutward(surface);
   // Closed bodies that cross each other (an assembly exported as it is) are one solid: their
   // union, which TetGen accepts (it refuses the crossing facets).
-  result.mergedBodies += mergeOverlappingBodies(surface).merged;
+  if (const int merged = mergeOverlappingBodies(surface).merged; merged > 0) {
+    result.mergedBodies += merged;
+    // The union's cuts can leave slivers (two mirror-image spheres: 4 of area ~0).
+    result.degenerateTriangles += removeDegenerateTriangles(surface);
+  }
   const double inputVolume = result.mergedBodies > 0
                                  ? std::abs(requireClosedManifold(surface).signedVolume)
                                  : std::abs(report.signedVolume);

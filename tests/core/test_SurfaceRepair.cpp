@@ -1,5 +1,6 @@
 // The repairs a surface as read gets before it is meshed (core/mesh/SurfaceRepair.h): a face
 // written twice, triangles flipped against their neighbours; boxes whose volumes are known.
+#include "common/Error.h"
 #include "mesh/AnalyticShapes.h"
 #include "mesh/SurfaceCheck.h"
 #include "mesh/SurfaceRepair.h"
@@ -8,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <utility>
 
 using namespace geolattice;
@@ -108,4 +110,29 @@ TEST(SurfaceRepair, AValidSurfaceAndAnOpenOneAreLeftAsTheyAre) {
   const TriangleSurface before = open;
   EXPECT_FALSE(repairSurface(open).any());
   EXPECT_EQ(open.triangles, before.triangles);
+}
+
+TEST(SurfaceRepair, NeedleTrianglesAreCollapsedAndTheSolidIsMeshed) {
+  // An icosphere with one vertex moved to within 1e-9 mm of a neighbour: the two triangles on
+  // that edge are needles of area ~0 (as marching cubes leaves them), which TetGen would get.
+  TriangleSurface s = sphereSurface(Vec3(0, 0, 10), 10.0, 3);
+  const auto& t0 = s.triangles[0];
+  s.points[t0[1]] = s.points[t0[0]] + 1e-9 * (s.points[t0[1]] - s.points[t0[0]]).normalized();
+  const SurfaceCheckReport before = checkSurface(s);
+  ASSERT_EQ(before.degenerateTriangles, 2);
+  EXPECT_THROW(requireClosedManifold(s), GeoLatticeError);
+
+  TriangleSurface repaired = s;
+  const SurfaceRepairCounts counts = repairSurface(repaired);
+  EXPECT_EQ(counts.degenerateTriangles, 2);
+  EXPECT_EQ(repaired.triangles.size(), s.triangles.size() - 2);
+  const SurfaceCheckReport after = requireClosedManifold(repaired);
+  EXPECT_EQ(after.degenerateTriangles, 0);
+  EXPECT_NEAR(after.signedVolume, before.signedVolume, 1e-9 * std::abs(before.signedVolume));
+
+  TetrahedralizeOptions o;
+  o.targetEdgeLength = 2.0;
+  const TetrahedralizeResult r = tetrahedralizeSurface(s, o);
+  EXPECT_EQ(r.degenerateTriangles, 2);
+  EXPECT_GT(r.tetCount, 100);
 }
