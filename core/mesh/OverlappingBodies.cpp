@@ -139,7 +139,22 @@ OverlappingBodiesResult mergeOverlappingBodies(TriangleSurface& surface) {
         }
         united.collect_garbage();
         // The union's new vertices are rounded to doubles: a fold there would be a new crossing.
-        if (!ok || !CGAL::is_closed(united) || PMP::does_self_intersect(united)) {
+        // Where that left slivers of area ~0 (mirror-image bodies, turned by the orientation
+        // search), they are mended first: CGAL counts a degenerate face as self-intersecting.
+        const auto clean = [](const Mesh& m) {
+          return CGAL::is_closed(m) && !PMP::does_self_intersect(m);
+        };
+        if (ok && !clean(united)) {
+          TriangleSurface s = cgal::toTriangleSurface(united);
+          if (removeDegenerateTriangles(s) > 0) {
+            try {
+              united = cgal::toSurfaceMesh(s, "overlapping bodies");
+            } catch (const GeoLatticeError&) {
+              ok = false;  // the mended union is no 2-manifold: refused below
+            }
+          }
+        }
+        if (!ok || !clean(united)) {
           throw GeoLatticeError("overlapping bodies near " + where(bodies[i].box) +
                                 ": their union is not a clean closed surface; merge them into "
                                 "one solid in the CAD tool (a Boolean union)");

@@ -99,3 +99,53 @@ TEST(OverlappingBodies, ABodyThatCrossesItselfIsNotMerged) {
   const std::string m = expectedErrorOf([&] { mergeOverlappingBodies(s); });
   EXPECT_NE(m.find("crosses itself"), std::string::npos) << m;
 }
+
+TEST(OverlappingBodies, MirrorImageBodiesInAnyTurnAreMeshed) {
+  // Two coarse UV spheres (6 segments, 5 bands, r 12), mirror images across x = 0 and crossing
+  // there: the union's cut runs through both meshes' vertices at once and, rounded to doubles,
+  // leaves slivers of area ~0 (CGAL counts them as self-intersections, meshing as degenerate
+  // triangles). Turned as the orientation search turns a part, each turn is one solid.
+  auto uvSphere = [](const Vec3& centre) {
+    TriangleSurface s;
+    const int segments = 6, bands = 5;
+    s.points.push_back(centre + Vec3(0, 0, 12));
+    for (int j = 1; j < bands; ++j) {
+      const double phi = M_PI * j / bands;
+      for (int k = 0; k < segments; ++k) {
+        const double theta = 2 * M_PI * k / segments;
+        s.points.push_back(centre + 12 * Vec3(std::sin(phi) * std::cos(theta),
+                                              std::sin(phi) * std::sin(theta), std::cos(phi)));
+      }
+    }
+    s.points.push_back(centre + Vec3(0, 0, -12));
+    const int south = static_cast<int>(s.points.size()) - 1;
+    auto ring = [&](int j, int k) {
+      return 1 + (j - 1) * segments + (k % segments);
+    };
+    for (int k = 0; k < segments; ++k) {
+      s.triangles.push_back({0, ring(1, k), ring(1, k + 1)});
+      for (int j = 1; j + 1 < bands; ++j) {
+        s.triangles.push_back({ring(j, k), ring(j + 1, k), ring(j + 1, k + 1)});
+        s.triangles.push_back({ring(j, k), ring(j + 1, k + 1), ring(j, k + 1)});
+      }
+      s.triangles.push_back({south, ring(bands - 1, k + 1), ring(bands - 1, k)});
+    }
+    return s;
+  };
+  const TriangleSurface pair = together({uvSphere(Vec3(-6, 0, 12)), uvSphere(Vec3(6, 0, 12))});
+  ASSERT_GT(requireClosedManifold(uvSphere(Vec3::Zero())).signedVolume, 0);
+  for (int turn = 0; turn < 12; ++turn) {
+    SCOPED_TRACE(turn);
+    const Eigen::Matrix3d R =
+        Eigen::AngleAxisd(0.37 * turn, Vec3(1, 2, 3).normalized()).toRotationMatrix();
+    TriangleSurface s = pair;
+    for (Vec3& p : s.points) {
+      p = R * p;
+    }
+    TetrahedralizeOptions o;
+    o.targetEdgeLength = 3.0;
+    const TetrahedralizeResult meshed = tetrahedralizeSurface(s, o);
+    EXPECT_EQ(meshed.mergedBodies, 1);
+    EXPECT_GT(meshed.tetCount, 100);
+  }
+}
