@@ -120,6 +120,15 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
     zmax = std::max(zmax, p.z());
   }
   c.height = zmax + c.pedestal;
+  if (zmax < o.refineLayerInterval) {
+    // Not even the print's first layer (a thin plate lying flat; γ >= the height, and the coarse
+    // mesh's heat method would overstate a sub-millimetre γ): this side cannot be printed,
+    // however well it would score with nothing to collide.
+    std::ostringstream m;
+    m << "no layer: the part is " << zmax << " mm tall on this side, less than the print's "
+      << "layer interval (" << o.refineLayerInterval << " mm)";
+    throw GeoLatticeError(m.str());
+  }
   // On a pedestal the layers grow from the column's top, the part's lowest vertices up to the
   // column's reach into it.
   const std::vector<int> sources =

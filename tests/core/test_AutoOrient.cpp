@@ -125,6 +125,28 @@ TEST(AutoOrient, WhenEveryOrientationFailsAStageTheMessageSaysWhichNotTheArea) {
   EXPECT_EQ(m.find("no orientation has a base contact area"), std::string::npos) << m;
 }
 
+TEST(AutoOrient, ASideWithoutAPrintLayerIsNotChosen) {
+  // A 0.4 mm plate: lying flat it has nothing to collide but no layer either (the first one is
+  // at 0.6 mm); it is printed standing on an edge.
+  const TriangleSurface plate = boxSurface(Vec3(30, 30, 0.4), 2.0);
+  OrientOptions o;
+  o.sphereCandidates = 12;
+  o.hullCandidates = 6;
+  const OrientResult r = searchOrientation(plate, o);
+  const OrientCandidate& best = r.candidates[r.best];
+  EXPECT_TRUE(best.feasible);
+  EXPECT_LT(std::abs(best.down.z()), 0.5) << best.down.transpose();
+  int flat = 0;
+  for (const OrientCandidate& c : r.candidates) {
+    if (std::abs(c.down.z()) > 0.99 && c.pedestal == 0) {
+      ++flat;
+      EXPECT_FALSE(c.feasible);
+      EXPECT_NE(c.error.find("no layer"), std::string::npos) << c.error;
+    }
+  }
+  EXPECT_GT(flat, 0);
+}
+
 TEST(AutoOrient, APartWithNoFlatSideStandsOnAPedestal) {
   // A ball touches the plate on a small cap: 0.3 mm deep it is 2 pi R 0.3 = 28 mm^2, below the
   // 50 asked for; a pedestal reaching 1 mm into it stands it on 2 pi R 1 = 94 mm^2.
