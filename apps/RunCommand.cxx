@@ -8,6 +8,7 @@
 #include "OutputFiles.h"
 #include "OrientationCsv.h"
 #include "SequenceCsv.h"
+#include "ReferenceFallbackNote.h"
 #include "SetUpTriesReport.h"
 #include "SurfaceRepairReport.h"
 #include "StageReports.h"
@@ -172,6 +173,7 @@ private:
     // would stay resident to the end (~30 MB at 75k tets, fresh pages for later stages).
     P.GeodesicFields->ReleaseSolver();
     reportFields(fields, this->Section("gdf"));
+    this->Note(referenceFallbackNote(this->Report["gdf"], P.GeodesicFields->GetReferenceVector()));
     this->Write(fields, "fields.vtu");
     if (R.until == "gdf") {
       return kExitOk;

@@ -377,6 +377,21 @@ class CliErrorTest(unittest.TestCase):
         huge = CUBE_OBJ.replace("v 1", "v 1e12")
         self.expect_error([write(os.path.join(self.tmp, "huge.obj"), huge)], "across", "--fit-size")
 
+    def test_a_reference_along_the_build_direction_is_noted(self):
+        # r of Eq. 3 along +z lies along the layers' normal in much of a cube: the lattice
+        # directions there fall back to the neighbours', which the run says; the default does not.
+        cube = write(os.path.join(self.tmp, "cube.obj"), CUBE_OBJ)
+        notes = []
+        for extra in (["--reference", "0,0,1"], []):
+            out = os.path.join(self.tmp, "out%d" % len(notes))
+            result = self.run_cli(cube, "-o", out, "-q", "--scale", "4", "--until", "gdf", *extra)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            notes.append([line for line in result.stderr.splitlines() if "reference vector" in line])
+        self.assertEqual(len(notes[0]), 1, notes)
+        self.assertIn("--reference 0,0,1", notes[0][0])
+        self.assertIn("gdf.reference_fallback_tets", notes[0][0])
+        self.assertEqual(notes[1], [])
+
     def test_non_finite_coordinates_named_at_read_time(self):
         for bad in ("nan", "inf", "-inf"):
             obj = CUBE_OBJ.replace("v 1 1 0", "v 1 %s 0" % bad)
