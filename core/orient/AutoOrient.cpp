@@ -114,19 +114,17 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
     p = c.rotation * p;
     zmin = std::min(zmin, p.z());
   }
-  double zmax = -std::numeric_limits<double>::infinity();
   for (Vec3& p : mesh.points) {
     p.z() -= zmin;
-    zmax = std::max(zmax, p.z());
   }
-  c.height = zmax + c.pedestal;
-  if (zmax < o.refineLayerInterval) {
-    // Not even the print's first layer (a thin plate lying flat; γ >= the height, and the coarse
-    // mesh's heat method would overstate a sub-millimetre γ): this side cannot be printed,
-    // however well it would score with nothing to collide.
+  if (c.height - c.pedestal < o.refineLayerInterval) {
+    // Not even the print's first layer (a thin plate lying flat): this side cannot be printed,
+    // however well it would score with nothing to collide. The surface's height, not the coarse
+    // mesh's (its remeshing can thicken a sub-millimetre plate) nor γ (the coarse heat method
+    // overstates a sub-millimetre distance).
     std::ostringstream m;
-    m << "no layer: the part is " << zmax << " mm tall on this side, less than the print's "
-      << "layer interval (" << o.refineLayerInterval << " mm)";
+    m << "no layer: the part is " << c.height - c.pedestal << " mm tall on this side, less than "
+      << "the print's layer interval (" << o.refineLayerInterval << " mm)";
     throw GeoLatticeError(m.str());
   }
   // On a pedestal the layers grow from the column's top, the part's lowest vertices up to the
@@ -441,6 +439,14 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
   const size_t directions = result.candidates.size();
   auto setBase = [&](OrientCandidate& c, double pedestal) {
     c.pedestal = pedestal;
+    double lowest = std::numeric_limits<double>::infinity();
+    double highest = -lowest;
+    for (const Vec3& p : surface.points) {
+      const double z = c.rotation.row(2).dot(p);
+      lowest = std::min(lowest, z);
+      highest = std::max(highest, z);
+    }
+    c.height = highest - lowest + pedestal;
     c.baseArea = baseContactArea(surface, c.rotation,
                                  pedestal > 0 ? o.pedestalContactHeight : o.contactHeight);
   };

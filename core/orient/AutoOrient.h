@@ -117,7 +117,7 @@ struct OrientCandidate {
   int forcedSteps = 0;
   double overhangFraction = 0;  ///< curved-layer overhang area fraction
   int layers = 0;
-  double height = 0;  ///< part height in this orientation (mm)
+  double height = 0;  ///< part height in this orientation (mm, the surface's, with the pedestal)
   double seconds = 0;
   bool refined = false;  ///< scored again at the printing resolution (the scores above are those)
   long long coarseCollidingStations = 0;  ///< collidingStations of the coarse pass
