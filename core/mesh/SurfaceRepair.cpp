@@ -103,10 +103,14 @@ int orientConsistently(TriangleSurface& surface) {
   return turned;
 }
 
-int removeDegenerateTriangles(TriangleSurface& surface) {
+namespace {
+
+/// One pass of removeDegenerateTriangles; false when it could not run (nothing degenerate, or
+/// a surface CGAL cannot take).
+bool mendDegenerateTriangles(TriangleSurface& surface) {
   const SurfaceCheckReport check = checkSurface(surface);
   if (check.degenerateTriangles == 0) {
-    return 0;
+    return false;
   }
   // SurfaceCheck's tolerance, relative to the same origin (the box centre).
   const double tolerance = 1e-12 * check.bboxDiagonal * check.bboxDiagonal;
@@ -114,7 +118,7 @@ int removeDegenerateTriangles(TriangleSurface& surface) {
   try {
     mesh = cgal::toSurfaceMesh(surface, "degenerate triangles");
   } catch (const GeoLatticeError&) {
-    return 0;  // not a 2-manifold or a repeated vertex: the caller's check names it
+    return false;  // not a 2-manifold or a repeated vertex: the caller's check names it
   }
   std::vector<cgal::SurfaceMesh::Face_index> degenerate;
   for (size_t t = 0; t < surface.triangles.size(); ++t) {
@@ -159,7 +163,23 @@ int removeDegenerateTriangles(TriangleSurface& surface) {
   }
   mesh.collect_garbage();
   surface = cgal::toTriangleSurface(mesh);
-  return check.degenerateTriangles - checkSurface(surface).degenerateTriangles;
+  return true;
+}
+
+}  // namespace
+
+int removeDegenerateTriangles(TriangleSurface& surface) {
+  // A collapse can line a neighbour up into a new sliver (a cap, flipped by the next pass).
+  const int before = checkSurface(surface).degenerateTriangles;
+  int left = before;
+  for (int pass = 0; pass < 3 && left > 0 && mendDegenerateTriangles(surface); ++pass) {
+    const int now = checkSurface(surface).degenerateTriangles;
+    if (now >= left) {
+      break;
+    }
+    left = now;
+  }
+  return before - left;
 }
 
 SurfaceRepairCounts repairSurface(TriangleSurface& surface) {

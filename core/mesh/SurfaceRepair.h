@@ -56,8 +56,10 @@ int orientConsistently(TriangleSurface& surface);
 /// them (a needle: its shortest edge collapsed; a cap, an angle near 180 degrees: its longest
 /// edge flipped); the neighbours move by at most the collapsed edge's length. A surface CGAL
 /// cannot take (not a 2-manifold, a triangle with a repeated vertex) is left as it is. Points
-/// are renumbered. Returns how many degenerate triangles fewer the surface has (a collapse also
-/// removes the neighbour across the edge; the caller's check says whether any is left).
+/// are renumbered. Up to three passes while each leaves fewer (a collapse can line a neighbour
+/// up into a new sliver). Returns how many degenerate triangles fewer the surface has (a
+/// collapse also removes the neighbour across the edge; the caller's check says whether any is
+/// left).
 /// O(F log F) (the checks) + O(D log D).
 int removeDegenerateTriangles(TriangleSurface& surface);
 

@@ -9,8 +9,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 using namespace geolattice;
 
@@ -135,4 +137,42 @@ TEST(SurfaceRepair, NeedleTrianglesAreCollapsedAndTheSolidIsMeshed) {
   const TetrahedralizeResult r = tetrahedralizeSurface(s, o);
   EXPECT_EQ(r.degenerateTriangles, 2);
   EXPECT_GT(r.tetCount, 100);
+}
+
+TEST(SurfaceRepair, ATinyWellShapedTriangleIsCollapsed) {
+  // One triangle (a, b, c) of a box replaced by a copy shrunk a million times about its centroid
+  // (p, q, r) and the ring of six triangles between them: the copy has area ~1e-11 mm^2 but the
+  // shape of the original (as marching cubes leaves them near a grid vertex), neither needle nor
+  // cap; its shortest edge is collapsed. The copy is turned by 40 degrees in the face's plane:
+  // not turned, the collapsed edge's midpoint lies on the line through a corner and the copy's
+  // third point, a new sliver that is not mended (the surface is then refused, as before).
+  for (const double degrees : {40.0, 25.0}) {
+    SCOPED_TRACE(degrees);
+    TriangleSurface s = boxSurface(Vec3(30, 30, 30), 10.0);
+    const std::array<int, 3> t = s.triangles.front();
+    s.triangles.erase(s.triangles.begin());
+    const Vec3 g = (s.points[t[0]] + s.points[t[1]] + s.points[t[2]]) / 3.0;
+    const Vec3 n = (s.points[t[1]] - s.points[t[0]]).cross(s.points[t[2]] - s.points[t[0]]);
+    const Eigen::AngleAxisd turn(degrees * M_PI / 180.0, n.normalized());
+    std::array<int, 3> inner{};
+    for (int k = 0; k < 3; ++k) {
+      inner[k] = static_cast<int>(s.points.size());
+      s.points.push_back(g + 1e-6 * (turn * (s.points[t[k]] - g)));
+    }
+    const int a = t[0], b = t[1], c = t[2], p = inner[0], q = inner[1], r = inner[2];
+    for (const std::array<int, 3>& f : std::vector<std::array<int, 3>>{
+             {a, b, q}, {a, q, p}, {b, c, r}, {b, r, q}, {c, a, p}, {c, p, r}, {p, q, r}}) {
+      s.triangles.push_back(f);
+    }
+    const SurfaceCheckReport before = checkSurface(s);
+    ASSERT_EQ(before.degenerateTriangles, 1);
+    ASSERT_EQ(before.boundaryEdges + before.nonManifoldEdges + before.inconsistentEdges, 0);
+
+    TriangleSurface repaired = s;
+    EXPECT_EQ(removeDegenerateTriangles(repaired), 1);
+    const SurfaceCheckReport after = requireClosedManifold(repaired);
+    EXPECT_EQ(after.degenerateTriangles, 0);
+    EXPECT_EQ(repaired.triangles.size(), s.triangles.size() - 2);  // the copy and a neighbour
+    EXPECT_NEAR(after.signedVolume, 27000.0, 1e-6);
+  }
 }
