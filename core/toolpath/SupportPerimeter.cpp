@@ -4,8 +4,83 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 
 namespace geolattice {
+namespace {
+
+/// The boundary edges of the lattice in a uniform grid of cells as large as the farthest a ray
+/// is cast (a hash of the cells an edge's box overlaps), to find the far side of a layer region.
+class BoundaryGrid {
+public:
+  BoundaryGrid(const LatticeGraph& g, const std::vector<char>& isBoundary, double cell)
+      : g_(g), cell_(cell) {
+    for (size_t e = 0; e < g.edges.size(); ++e) {
+      if (isBoundary[e]) {
+        const Vec3 &a = g.points[g.edges[e][0]], &b = g.points[g.edges[e][1]];
+        forCells(a.cwiseMin(b), a.cwiseMax(b),
+                 [&](int64_t key) { cells_[key].push_back(static_cast<int>(e)); });
+      }
+    }
+  }
+
+  /// How far the ray from boundary vertex v along `inward` (unit, in the layer's tangent plane at
+  /// v, normal n) runs inside the region of `subgraph` before it crosses another boundary edge
+  /// of that sub-graph: the crossing is found in the tangent plane, for edges within `reach` of v
+  /// and within half of it off that plane. `reach` when nothing is crossed.
+  double clearance(int v, int subgraph, const Vec3& inward, const Vec3& n, double reach) const {
+    const Vec3& b = g_.points[v];
+    const Vec3 across = n.cross(inward);  // the third axis of the frame (inward, across, n)
+    double nearest = reach;
+    const Vec3 end = b + reach * inward;
+    forCells(b.cwiseMin(end), b.cwiseMax(end), [&](int64_t key) {
+      const auto cell = cells_.find(key);
+      if (cell == cells_.end()) {
+        return;
+      }
+      for (const int e : cell->second) {
+        const int p = g_.edges[e][0], q = g_.edges[e][1];
+        if (p == v || q == v || g_.edgeSubgraph[e] != subgraph) {
+          continue;
+        }
+        const Vec3 dp = g_.points[p] - b, dq = g_.points[q] - b;
+        const double vp = dp.dot(across), vq = dq.dot(across);
+        if ((vp > 0) == (vq > 0) || vp == vq) {
+          continue;  // the edge does not cross the ray's line
+        }
+        const double t = vp / (vp - vq);
+        const Vec3 x = dp + t * (dq - dp);
+        const double along = x.dot(inward);
+        if (along > 0 && along < nearest && std::abs(x.dot(n)) < 0.5 * reach) {
+          nearest = along;
+        }
+      }
+    });
+    return nearest;
+  }
+
+private:
+  template <class F>
+  void forCells(const Vec3& lo, const Vec3& hi, F&& f) const {
+    const Eigen::Vector3i a = (lo / cell_).array().floor().cast<int>();
+    const Eigen::Vector3i z = (hi / cell_).array().floor().cast<int>();
+    for (int i = a.x(); i <= z.x(); ++i) {
+      for (int j = a.y(); j <= z.y(); ++j) {
+        for (int k = a.z(); k <= z.z(); ++k) {
+          f((static_cast<int64_t>(i) * 73856093) ^ (static_cast<int64_t>(j) * 19349663) ^
+            (static_cast<int64_t>(k) * 83492791));
+        }
+      }
+    }
+  }
+
+  const LatticeGraph& g_;
+  double cell_;
+  std::unordered_map<int64_t, std::vector<int>> cells_;
+};
+
+}  // namespace
 
 PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>& kept,
                                   double offset, double toothLength) {
@@ -14,7 +89,8 @@ PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>
     throw GeoLatticeError("support perimeter: offset and tooth length must be > 0 mm");
   }
   const size_t V = g.points.size(), E = g.edges.size();
-  if (kept.size() != E || g.edgeKind.size() != E || g.normals.size() != V) {
+  if (kept.size() != E || g.edgeKind.size() != E || g.edgeSubgraph.size() != E ||
+      g.normals.size() != V) {
     throw GeoLatticeError("support perimeter: lattice arrays do not match its edges and vertices");
   }
   // Incidence.
@@ -36,6 +112,15 @@ PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>
   auto isBoundary = [&](int e) {
     return g.edgeKind[e] == LatticeEdgeKind::Boundary;
   };
+
+  std::vector<char> boundary(E, 0);
+  for (size_t e = 0; e < E; ++e) {
+    boundary[e] = isBoundary(static_cast<int>(e));
+  }
+  // A region narrower than two offsets (a sliver of a layer where it meets the surface almost
+  // tangentially) gets its perimeter on its middle: offset by w, the point would lie beyond the
+  // far side, outside the part (the knight: 30 perimeter points 0.3-0.59 mm outside).
+  const BoundaryGrid grid(g, boundary, 2 * offset);
 
   PerimeterResult out;
   std::vector<char> used(E, 0);
@@ -91,6 +176,16 @@ PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>
       continue;
     }
     const double side = vote > 0 ? 1.0 : -1.0;
+    const int subgraph = g.edgeSubgraph[loopE[0]];
+    std::vector<double> reach(m);  // the offset at each vertex: w, or half the region's width
+    for (size_t i = 0; i < m; ++i) {
+      d[i] *= side;
+      const Vec3 n = unitOr(g.normals[loopV[i]], Vec3::UnitZ());
+      reach[i] =
+          d[i].squaredNorm() > 0
+              ? std::min(offset, 0.5 * grid.clearance(loopV[i], subgraph, d[i], n, 2 * offset))
+              : offset;
+    }
     // Start at a vertex that begins a kept edge (the tour passes it).
     size_t first = m;
     for (size_t i = 0; i < m; ++i) {
@@ -106,7 +201,7 @@ PerimeterResult supportPerimeters(const LatticeGraph& g, const std::vector<char>
     loop.subgraph = g.edgeSubgraph[loopE[first]];
     loop.anchorVertex = loopV[first];
     auto inner = [&](size_t i) {
-      return Vec3(g.points[loopV[i]] + side * offset * d[i]);
+      return Vec3(g.points[loopV[i]] + reach[i] * d[i]);
     };
     auto add = [&](const Vec3& x, size_t i) {
       loop.points.push_back(x);
