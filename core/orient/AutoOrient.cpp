@@ -476,13 +476,21 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
   // the target (a generated 2 mm curved wall: 573,778 tets for 15k), and every evaluation costs
   // in proportion: mesh again at a fixed edge, twice as long, while that helps.
   // (Not when the surface was meshed without TetGen's bounds: no edge length changes that mesh.)
+  // The mesh in hand is kept when the longer edge fails (a 20-tooth gear at 33 mm: TetGen past
+  // its time limit) or leaves too few tets to score anything (a 1M-triangle blob: 93 tets).
   for (int again = 0; again < 2 && !tets.qualityBoundDropped &&
                       tets.mesh.tets.size() > kCoarseOvershoot * o.evaluationTets;
        ++again) {
     TetrahedralizeOptions longer = tetOptions;
     longer.targetEdgeLength = 2.0 * tets.targetEdgeLength;
-    TetrahedralizeResult coarser = tetrahedralizeSurface(surface, longer);
-    if (coarser.mesh.tets.size() >= tets.mesh.tets.size()) {
+    TetrahedralizeResult coarser;
+    try {
+      coarser = tetrahedralizeSurface(surface, longer);
+    } catch (const GeoLatticeError&) {
+      break;
+    }
+    if (coarser.mesh.tets.size() >= tets.mesh.tets.size() ||
+        coarser.mesh.tets.size() * kCoarseOvershoot < static_cast<size_t>(o.evaluationTets)) {
       break;
     }
     tets = std::move(coarser);

@@ -205,12 +205,18 @@ PedestalResult addPedestal(const TriangleSurface& input, const PedestalOptions& 
     compact.triangles.push_back({newId[t[0]], newId[t[1]], newId[t[2]]});
   }
   out = std::move(compact);
-  const SurfaceCheckReport check = checkSurface(out);
+  SurfaceCheckReport check = checkSurface(out);
+  if (check.degenerateTriangles > 0) {
+    // A triangle's "zero area" is relative to the bounding box, which the column makes larger:
+    // slivers of the part (a marching-cubes spring: 4.6e-9 mm²) fall under it on the pedestal.
+    removeDegenerateTriangles(out);
+    check = checkSurface(out);
+  }
   if (!check.isClosedManifold() || !(check.signedVolume > 0)) {
     std::ostringstream s;
     s << "pedestal: the part on its pedestal is not a closed, outward surface ("
-      << check.boundaryEdges << " open edges, " << check.nonManifoldEdges
-      << " non-manifold edges, volume " << check.signedVolume
+      << check.boundaryEdges << " open edges, " << check.nonManifoldEdges << " non-manifold edges, "
+      << check.degenerateTriangles << " degenerate triangles, volume " << check.signedVolume
       << " mm^3); the part's contact region with the plate is not a simple footprint";
     throw GeoLatticeError(s.str());
   }

@@ -62,6 +62,39 @@ TEST(Pedestal, ABoxGrowsByItsFootprintTimesTheHeight) {
   EXPECT_GE(r.wallRings, 3);  // rings about as tall as the 2 mm edges
 }
 
+// "Zero area" is relative to the bounding box's diagonal, which the column lengthens: a sliver of
+// the part just above the part's own threshold falls under the threshold of the part on its
+// pedestal (a marching-cubes spring on 10 mm was refused as "not a closed, outward surface");
+// it is mended there.
+TEST(Pedestal, ASliverThatBecomesDegenerateOnTheColumnIsMended) {
+  TriangleSurface box = boxSurface(Vec3(20, 20, 20), 20.0);
+  // Split a top triangle by a point just inside its edge a-b: the sliver (a, b, m) has 1.45e-9
+  // mm², above 1e-12 diagonal² of the box (1.2e-9), below that of the box on 10 mm (1.7e-9).
+  size_t top = 0;
+  while (box.points[box.triangles[top][0]].z() < 20 || box.points[box.triangles[top][1]].z() < 20 ||
+         box.points[box.triangles[top][2]].z() < 20) {
+    ++top;
+  }
+  const auto [a, b, c] = box.triangles[top];
+  const Vec3 &pa = box.points[a], &pb = box.points[b], &pc = box.points[c];
+  const double length = (pb - pa).norm();
+  const Vec3 inward =
+      ((pc - pa) - (pc - pa).dot(pb - pa) / (length * length) * (pb - pa)).normalized();
+  const int m = static_cast<int>(box.points.size());
+  box.points.push_back(0.5 * (pa + pb) + 2 * 1.45e-9 / length * inward);
+  box.triangles[top] = {a, b, m};
+  box.triangles.push_back({b, c, m});
+  box.triangles.push_back({c, a, m});
+  ASSERT_TRUE(checkSurface(box).isClosedManifold());
+  PedestalOptions o;
+  o.height = 10;
+  const PedestalResult r = addPedestal(box, o);
+  const SurfaceCheckReport check = checkSurface(r.surface);
+  EXPECT_TRUE(check.isClosedManifold());
+  EXPECT_EQ(check.degenerateTriangles, 0);
+  EXPECT_NEAR(check.signedVolume, 8000 + 400 * 10, 1e-6);
+}
+
 TEST(Pedestal, ASphereStandsOnAColumnOfItsContactDisk) {
   const TriangleSurface sphere = flattenedSphere(15, 1.0);
   const double disk = M_PI * (2 * 15 * 1.0 - 1.0);
