@@ -17,11 +17,21 @@ std::vector<std::string> reportSurfaceRepairs(vtkDataObject* oriented, vtkDataOb
   const int duplicates = count(arrays::DuplicateTriangles);
   const int reoriented = count(arrays::ReorientedTriangles);
   const int degenerate = count(arrays::DegenerateTrianglesRemoved);
+  const int welded = count(arrays::WeldedVertices);
   mesh["merged_bodies"] = merged;
   mesh["duplicate_triangles"] = duplicates;
   mesh["reoriented_triangles"] = reoriented;
   mesh["degenerate_triangles"] = degenerate;
+  mesh["welded_vertices"] = welded;
   std::vector<std::string> notes;
+  if (welded > 0) {
+    std::ostringstream note;
+    note << welded << (welded == 1 ? " vertex" : " vertices")
+         << " of the surface welded across seams as wide as rounding (open edges whose two sides "
+            "differ in the last digits, as float32 STL corners do; report.json "
+            "mesh.welded_vertices)";
+    notes.push_back(note.str());
+  }
   if (merged > 0) {
     std::ostringstream note;
     note << "bodies of the surface touch or cross each other; meshed as their "

@@ -87,6 +87,7 @@ constexpr const char* MergedBodies = "MergedBodies";
 /// Triangles dropped as copies of another one (core/mesh/SurfaceRepair.h), 1 value.
 constexpr const char* DuplicateTriangles = "DuplicateTriangles";
 constexpr const char* DegenerateTrianglesRemoved = "DegenerateTrianglesRemoved";
+constexpr const char* WeldedVertices = "WeldedVertices";
 /// Triangles turned to agree with their neighbours (core/mesh/SurfaceRepair.h), 1 value.
 constexpr const char* ReorientedTriangles = "ReorientedTriangles";
 /// Closed inner cavities of the solid (TetGen regions outside the surface, removed), 1 value.

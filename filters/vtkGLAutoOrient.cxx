@@ -232,7 +232,8 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::addFieldArray(fd, gl::arrays::OrientPedestalHeight, {chosen.pedestal});
     if (repaired.any()) {  // as GL Tetrahedralize Surface says it
       gl::addSurfaceRepairArrays(fd, repaired.mergedBodies, repaired.duplicateTriangles,
-                                 repaired.reorientedTriangles, repaired.degenerateTriangles);
+                                 repaired.reorientedTriangles, repaired.degenerateTriangles,
+                                 repaired.weldedVertices);
     }
     gl::addFieldArray(fd, gl::arrays::OrientPedestalContactHeight, {options.pedestalContactHeight});
     output->SetFieldData(fd);

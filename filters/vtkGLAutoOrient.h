@@ -29,9 +29,10 @@
  *   `OrientChosenRank` (the candidate shown: CandidateRank, clamped), and `MergedBodies` where
  *   bodies of the input that touch along a face (welded by the reader) were merged into their
  *   union before the search (core mergeTouchingBodies: the output is that union), and
- *   `DuplicateTriangles` / `ReorientedTriangles` / `DegenerateTrianglesRemoved` where triangles
- *   repeating another one were dropped, triangles flipped against their neighbours turned or
- *   degenerate ones removed (core/mesh/SurfaceRepair.h).
+ *   `DuplicateTriangles` / `ReorientedTriangles` / `DegenerateTrianglesRemoved` /
+ *   `WeldedVertices` where triangles repeating another one were dropped, triangles flipped
+ *   against their neighbours turned, degenerate ones removed or vertices welded across a seam
+ *   as wide as rounding (core/mesh/SurfaceRepair.h).
  * Output port 1 (Candidates): with Auto, one vertex per candidate at centre + radius × its up
  *   direction (a sphere around the part), point data `OrientRank` (0 = chosen),
  *   `CollidingStations`, `PlateStations`, `ForcedSteps`, `BaseArea` (mm²), `OverhangFraction`,

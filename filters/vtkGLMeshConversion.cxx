@@ -646,11 +646,12 @@ void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>
 }
 
 void addSurfaceRepairArrays(vtkFieldData* fd, int mergedBodies, int duplicateTriangles,
-                            int reorientedTriangles, int degenerateTriangles) {
+                            int reorientedTriangles, int degenerateTriangles, int weldedVertices) {
   addFieldArray(fd, arrays::MergedBodies, {static_cast<double>(mergedBodies)});
   addFieldArray(fd, arrays::DuplicateTriangles, {static_cast<double>(duplicateTriangles)});
   addFieldArray(fd, arrays::ReorientedTriangles, {static_cast<double>(reorientedTriangles)});
   addFieldArray(fd, arrays::DegenerateTrianglesRemoved, {static_cast<double>(degenerateTriangles)});
+  addFieldArray(fd, arrays::WeldedVertices, {static_cast<double>(weldedVertices)});
 }
 
 }  // namespace geolattice

@@ -145,9 +145,9 @@ void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>
                    int components = 1);
 /// The repairs a surface got before meshing (core/mesh/SurfaceRepair.h; mergedBodies also counts
 /// crossing bodies united): field data MergedBodies, DuplicateTriangles, ReorientedTriangles,
-/// DegenerateTrianglesRemoved.
+/// DegenerateTrianglesRemoved, WeldedVertices.
 void addSurfaceRepairArrays(vtkFieldData* fd, int mergedBodies, int duplicateTriangles,
-                            int reorientedTriangles, int degenerateTriangles);
+                            int reorientedTriangles, int degenerateTriangles, int weldedVertices);
 
 }  // namespace geolattice
 #endif

@@ -167,7 +167,8 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
     addValue(fd, gl::arrays::TetGenQualityBoundDropped, result.qualityBoundDropped ? 1.0 : 0.0);
     gl::addSurfaceRepairArrays(fd, result.mergedBodies, result.duplicateTriangles,
-                               result.reorientedTriangles, result.degenerateTriangles);
+                               result.reorientedTriangles, result.degenerateTriangles,
+                               result.weldedVertices);
     addValue(fd, gl::arrays::CavityRegions, static_cast<double>(result.removedCavityRegions));
     if (result.mergedBodies > 0) {
       vtkWarningMacro(<< "bodies of the surface touch or cross each other; meshed as their union ("
@@ -182,6 +183,11 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
       vtkWarningMacro(<< result.reorientedTriangles
                       << " triangles of the surface ran against their neighbours; turned to agree "
                          "with them");
+    }
+    if (result.weldedVertices > 0) {
+      vtkWarningMacro(<< result.weldedVertices
+                      << " vertices of the surface welded across seams as wide as rounding "
+                         "(open edges whose sides differ in the last digits)");
     }
     if (result.degenerateTriangles > 0) {
       vtkWarningMacro(<< result.degenerateTriangles

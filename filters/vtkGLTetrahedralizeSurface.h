@@ -17,7 +17,8 @@
  *         flipped against their neighbours are turned, degenerate triangles (area ~0: slivers
  *         of marching cubes or of the union's cuts) are removed by collapsing or flipping an
  *         edge (core/mesh/SurfaceRepair.h; field data `DuplicateTriangles`,
- *         `ReorientedTriangles`, `DegenerateTrianglesRemoved`, and a warning). Closed
+ *         `ReorientedTriangles`, `DegenerateTrianglesRemoved`, and a warning; open seams as wide
+ *         as rounding, float32 STL corners, are welded: `WeldedVertices`). Closed
  *         cavities are counted in field data `CavityRegions`. An
  *         inward-oriented surface is flipped. Input arrays are not passed (the vertices change).
  * Output: vtkUnstructuredGrid of linear, positively oriented VTK_TETRA cells;

@@ -13,7 +13,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
+#include <unordered_map>
 #include <unordered_set>
 #include <vector>
 
@@ -22,6 +24,101 @@ namespace geolattice {
 bool cyclicParity(const std::array<int, 3>& t) {
   const int first = static_cast<int>(std::min_element(t.begin(), t.end()) - t.begin());
   return t[(first + 1) % 3] < t[(first + 2) % 3];
+}
+
+int weldOpenSeams(TriangleSurface& surface) {
+  const SurfaceCheckReport before = checkSurface(surface);
+  const double tolerance = 1e-6 * before.bboxDiagonal;
+  if (before.boundaryEdges == 0 || !(tolerance > 0) || before.outOfRangeTriangles > 0) {
+    return 0;
+  }
+  // The vertices of edges used by one triangle.
+  std::unordered_map<uint64_t, int> uses;
+  auto key = [](int a, int b) {
+    return (static_cast<uint64_t>(std::min(a, b)) << 32) | static_cast<uint32_t>(std::max(a, b));
+  };
+  for (const auto& t : surface.triangles) {
+    for (int k = 0; k < 3; ++k) {
+      ++uses[key(t[k], t[(k + 1) % 3])];
+    }
+  }
+  std::vector<int> open;
+  {
+    std::vector<char> isOpen(surface.points.size(), 0);
+    for (const auto& [edge, count] : uses) {
+      if (count == 1) {
+        isOpen[edge >> 32] = isOpen[edge & 0xffffffffu] = 1;
+      }
+    }
+    for (size_t v = 0; v < isOpen.size(); ++v) {
+      if (isOpen[v]) {
+        open.push_back(static_cast<int>(v));
+      }
+    }
+  }
+  // Weld those within the tolerance: a grid of cells as large as it, each vertex against the
+  // 27 cells around its own.
+  auto cellOf = [&](const Vec3& p) {
+    return Eigen::Vector3i((p / tolerance).array().floor().cast<int>());
+  };
+  auto cellKey = [](const Eigen::Vector3i& c) {
+    return (static_cast<uint64_t>(static_cast<uint32_t>(c.x())) * 73856093u) ^
+           (static_cast<uint64_t>(static_cast<uint32_t>(c.y())) * 19349663u) ^
+           (static_cast<uint64_t>(static_cast<uint32_t>(c.z())) * 83492791u);
+  };
+  std::unordered_map<uint64_t, std::vector<int>> grid;
+  for (const int v : open) {
+    grid[cellKey(cellOf(surface.points[v]))].push_back(v);
+  }
+  UnionFind weld(static_cast<int>(surface.points.size()));
+  int welded = 0;
+  for (const int v : open) {
+    const Eigen::Vector3i c = cellOf(surface.points[v]);
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dz = -1; dz <= 1; ++dz) {
+          const auto cell = grid.find(cellKey(c + Eigen::Vector3i(dx, dy, dz)));
+          if (cell == grid.end()) {
+            continue;
+          }
+          for (const int w : cell->second) {
+            if (w != v && (surface.points[w] - surface.points[v]).norm() <= tolerance &&
+                weld.find(w) != weld.find(v)) {
+              weld.unite(w, v);
+              ++welded;
+            }
+          }
+        }
+      }
+    }
+  }
+  if (welded == 0) {
+    return 0;
+  }
+  TriangleSurface out;
+  std::vector<int> newId(surface.points.size(), -1);
+  for (const auto& t : surface.triangles) {
+    const std::array<int, 3> r{weld.find(t[0]), weld.find(t[1]), weld.find(t[2])};
+    if (r[0] == r[1] || r[1] == r[2] || r[0] == r[2]) {
+      continue;  // collapsed onto an edge of the seam
+    }
+    std::array<int, 3> u{};
+    for (int k = 0; k < 3; ++k) {
+      if (newId[r[k]] < 0) {
+        newId[r[k]] = static_cast<int>(out.points.size());
+        out.points.push_back(surface.points[r[k]]);
+      }
+      u[k] = newId[r[k]];
+    }
+    out.triangles.push_back(u);
+  }
+  const SurfaceCheckReport after = checkSurface(out);
+  if (after.boundaryEdges >= before.boundaryEdges ||
+      after.nonManifoldEdges > before.nonManifoldEdges) {
+    return 0;
+  }
+  surface = std::move(out);
+  return welded;
 }
 
 int dropDuplicateTriangles(TriangleSurface& surface) {
@@ -185,6 +282,12 @@ int removeDegenerateTriangles(TriangleSurface& surface) {
 SurfaceRepairCounts repairSurface(TriangleSurface& surface) {
   SurfaceRepairCounts counts;
   SurfaceCheckReport check = checkSurface(surface);
+  if (check.boundaryEdges > 0) {
+    counts.weldedVertices = weldOpenSeams(surface);
+    if (counts.weldedVertices > 0) {
+      check = checkSurface(surface);
+    }
+  }
   if (check.nonManifoldEdges > 0 || check.inconsistentEdges > 0) {
     counts.duplicateTriangles = dropDuplicateTriangles(surface);
     if (counts.duplicateTriangles > 0) {

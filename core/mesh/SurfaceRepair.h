@@ -2,6 +2,8 @@
 /// @file SurfaceRepair.h
 /// @brief The documented repairs a surface as read gets before it is one closed solid, each done
 /// only where its defect is there, so a valid surface passes through unchanged:
+///  0. open seams no wider than rounding (a binary STL's float32 corners that differ in their
+///     last bits on either side of an edge) are closed by welding their vertices (weldOpenSeams);
 ///  1. a triangle written twice (the same vertices, the same way round) loses its copies;
 ///  2. triangles traversed against their neighbours (an exporter that flipped some faces) are
 ///     turned to agree with them (CGAL's orient_polygon_soup; whole bodies still point either
@@ -26,17 +28,28 @@ namespace geolattice {
 
 /// What repairSurface did (0: that defect was not there).
 struct SurfaceRepairCounts {
+  int weldedVertices = 0;       ///< vertices welded onto another across a seam (weldOpenSeams)
   int duplicateTriangles = 0;   ///< copies dropped
   int reorientedTriangles = 0;  ///< triangles turned to agree with their neighbours
   int mergedBodies = 0;         ///< bodies merged into another (mergeTouchingBodies' count)
   int degenerateTriangles = 0;  ///< degenerate triangles mended (removeDegenerateTriangles)
   bool any() const {
-    return duplicateTriangles + reorientedTriangles + mergedBodies + degenerateTriangles > 0;
+    return weldedVertices + duplicateTriangles + reorientedTriangles + mergedBodies +
+               degenerateTriangles >
+           0;
   }
 };
 
-/// The repairs 1-4 above, in that order; the surface is changed only by the repairs done.
+/// The repairs 0-4 above, in that order; the surface is changed only by the repairs done.
 SurfaceRepairCounts repairSurface(TriangleSurface& surface);
+
+/// Repair 0: where the surface has open edges, welds each of their vertices with those within
+/// 1e-6 of the bounding-box diagonal (10 float32 steps of a coordinate as large as the part;
+/// 0.05 µm on a 50 mm part), drops the triangles that collapse and the points no longer used.
+/// Kept only when it leaves fewer open edges and no more non-manifold ones; otherwise the
+/// surface is left as it is (a real hole is named by the caller's check). Returns the vertices
+/// welded onto another. O(F) (a hash grid of the open edges' vertices).
+int weldOpenSeams(TriangleSurface& surface);
 
 /// Repair 1: drops every triangle on the same three vertices, the same way round, as an earlier
 /// one (its edges are used by more than two triangles); the first is kept. Pairs the opposite

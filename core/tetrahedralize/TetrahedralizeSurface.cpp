@@ -289,6 +289,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     result.reorientedTriangles = repaired.reorientedTriangles;
     result.mergedBodies = repaired.mergedBodies;
     result.degenerateTriangles = repaired.degenerateTriangles;
+    result.weldedVertices = repaired.weldedVertices;
     if (!repaired.any()) {
       throw;
     }

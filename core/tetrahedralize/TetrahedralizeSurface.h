@@ -77,7 +77,9 @@ struct TetrahedralizeResult {
   int tetCount = 0;
   int flippedSurfaceTriangles = 0;  ///< input triangles reversed because the surface faced inward
   int mergedBodies = 0;  ///< bodies merged into one they cross or touch (mesh/OverlappingBodies.h)
-  int duplicateTriangles = 0;   ///< triangles dropped as copies of another (mesh/SurfaceRepair.h)
+  int duplicateTriangles = 0;  ///< triangles dropped as copies of another (mesh/SurfaceRepair.h)
+  int weldedVertices =
+      0;  ///< vertices welded across seams as wide as rounding (mesh/SurfaceRepair.h, repair 0)
   int degenerateTriangles = 0;  ///< degenerate triangles mended (mesh/SurfaceRepair.h, repair 4)
   int reorientedTriangles = 0;  ///< triangles turned to agree with their neighbours (the same)
   int flippedTets = 0;  ///< output tets reoriented (0 in practice: TetGen 1.5 writes positive tets)

@@ -114,6 +114,35 @@ TEST(SurfaceRepair, AValidSurfaceAndAnOpenOneAreLeftAsTheyAre) {
   EXPECT_EQ(open.triangles, before.triangles);
 }
 
+// A binary STL stores float32 corners: an exporter that writes a face's corners from another
+// computation than its neighbours' leaves them a few float32 steps apart, an open seam no wider
+// than rounding (a generated bracket: 24 open edges, "--fill-holes" then made TetGen time out).
+TEST(SurfaceRepair, ASeamAsWideAsRoundingIsWelded) {
+  TriangleSurface seam = cube10();
+  // The face x = 10 gets its own copies of its corners, 4 µm off (2 float32 steps at 10 mm is
+  // ~2 µm).
+  std::vector<int> copyOf(seam.points.size(), -1);
+  for (auto& t : seam.triangles) {
+    if (seam.points[t[0]].x() == 10 && seam.points[t[1]].x() == 10 && seam.points[t[2]].x() == 10) {
+      for (int& v : t) {
+        if (copyOf[v] < 0) {
+          copyOf[v] = static_cast<int>(seam.points.size());
+          seam.points.push_back(seam.points[v] + Vec3(4e-6, -3e-6, 2e-6));
+        }
+        v = copyOf[v];
+      }
+    }
+  }
+  ASSERT_GT(checkSurface(seam).boundaryEdges, 0);
+  ASSERT_THROW(requireClosedManifold(seam), GeoLatticeError);
+  const SurfaceRepairCounts repaired = repairSurface(seam);
+  EXPECT_GT(repaired.weldedVertices, 0);
+  const SurfaceCheckReport check = checkSurface(seam);
+  EXPECT_TRUE(check.isClosedManifold());
+  EXPECT_EQ(check.unusedPoints, 0);
+  EXPECT_NEAR(check.signedVolume, 1000.0, 1e-3);
+}
+
 TEST(SurfaceRepair, NeedleTrianglesAreCollapsedAndTheSolidIsMeshed) {
   // An icosphere with one vertex moved to within 1e-9 mm of a neighbour: the two triangles on
   // that edge are needles of area ~0 (as marching cubes leaves them), which TetGen would get.
