@@ -313,6 +313,14 @@ void vtkGLURScriptWriter::WriteData() {
                << (layoutOptions.search ? ", also in the other mountings of the part tried"
                                         : " on this cell layout")
                << "); nothing written: move the nozzle tip or the part on the flange";
+          // A step of nearly a whole turn is a joint wound to its +-360 degree limit, not a
+          // flip: the path circles the part the same way round layer after layer (a generated
+          // mushroom's stem: 359.5 degrees); placed on another side it may wind less.
+          if (robotPath.maxJointStepDeg > 330.0) {
+            text << ". A step of nearly 360 degrees is a joint wound to its limit: the path "
+                    "circles the part the same way round; another orientation of the part (GL "
+                    "Auto Orient, geolattice run --orient auto) may wind less";
+          }
           throw gl::GeoLatticeError(text.str());
         }
 
