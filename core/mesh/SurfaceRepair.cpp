@@ -1,5 +1,6 @@
 #include "mesh/SurfaceRepair.h"
 
+#include "common/GridHash.h"
 #include "common/UnionFind.h"
 #include "mesh/CgalSurfaceMesh.h"
 #include "mesh/OverlappingBodies.h"
@@ -57,40 +58,28 @@ int weldOpenSeams(TriangleSurface& surface) {
     }
   }
   // Weld those within the tolerance: a grid of cells as large as it, each vertex against the
-  // 27 cells around its own.
-  auto cellOf = [&](const Vec3& p) {
-    return Eigen::Vector3i((p / tolerance).array().floor().cast<int>());
-  };
-  auto cellKey = [](const Eigen::Vector3i& c) {
-    return (static_cast<uint64_t>(static_cast<uint32_t>(c.x())) * 73856093u) ^
-           (static_cast<uint64_t>(static_cast<uint32_t>(c.y())) * 19349663u) ^
-           (static_cast<uint64_t>(static_cast<uint32_t>(c.z())) * 83492791u);
-  };
+  // cells its tolerance box overlaps.
   std::unordered_map<uint64_t, std::vector<int>> grid;
   for (const int v : open) {
-    grid[cellKey(cellOf(surface.points[v]))].push_back(v);
+    grid[gridCellKey(gridCell(surface.points[v], tolerance))].push_back(v);
   }
   UnionFind weld(static_cast<int>(surface.points.size()));
   int welded = 0;
   for (const int v : open) {
-    const Eigen::Vector3i c = cellOf(surface.points[v]);
-    for (int dx = -1; dx <= 1; ++dx) {
-      for (int dy = -1; dy <= 1; ++dy) {
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto cell = grid.find(cellKey(c + Eigen::Vector3i(dx, dy, dz)));
-          if (cell == grid.end()) {
-            continue;
-          }
-          for (const int w : cell->second) {
-            if (w != v && (surface.points[w] - surface.points[v]).norm() <= tolerance &&
-                weld.find(w) != weld.find(v)) {
-              weld.unite(w, v);
-              ++welded;
-            }
-          }
+    const Vec3& p = surface.points[v];
+    const Vec3 reach = Vec3::Constant(tolerance);
+    forEachGridCell(p - reach, p + reach, tolerance, [&](uint64_t key) {
+      const auto cell = grid.find(key);
+      if (cell == grid.end()) {
+        return;
+      }
+      for (const int w : cell->second) {
+        if (w != v && (surface.points[w] - p).norm() <= tolerance && weld.find(w) != weld.find(v)) {
+          weld.unite(w, v);
+          ++welded;
         }
       }
-    }
+    });
   }
   if (welded == 0) {
     return 0;

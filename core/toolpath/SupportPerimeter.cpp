@@ -1,6 +1,7 @@
 #include "toolpath/SupportPerimeter.h"
 
 #include "common/Error.h"
+#include "common/GridHash.h"
 
 #include <algorithm>
 #include <cmath>
@@ -19,8 +20,8 @@ public:
     for (size_t e = 0; e < g.edges.size(); ++e) {
       if (isBoundary[e]) {
         const Vec3 &a = g.points[g.edges[e][0]], &b = g.points[g.edges[e][1]];
-        forCells(a.cwiseMin(b), a.cwiseMax(b),
-                 [&](int64_t key) { cells_[key].push_back(static_cast<int>(e)); });
+        forEachGridCell(a.cwiseMin(b), a.cwiseMax(b), cell_,
+                        [&](uint64_t key) { cells_[key].push_back(static_cast<int>(e)); });
       }
     }
   }
@@ -34,7 +35,7 @@ public:
     const Vec3 across = n.cross(inward);  // the third axis of the frame (inward, across, n)
     double nearest = reach;
     const Vec3 end = b + reach * inward;
-    forCells(b.cwiseMin(end), b.cwiseMax(end), [&](int64_t key) {
+    forEachGridCell(b.cwiseMin(end), b.cwiseMax(end), cell_, [&](uint64_t key) {
       const auto cell = cells_.find(key);
       if (cell == cells_.end()) {
         return;
@@ -61,23 +62,9 @@ public:
   }
 
 private:
-  template <class F>
-  void forCells(const Vec3& lo, const Vec3& hi, F&& f) const {
-    const Eigen::Vector3i a = (lo / cell_).array().floor().cast<int>();
-    const Eigen::Vector3i z = (hi / cell_).array().floor().cast<int>();
-    for (int i = a.x(); i <= z.x(); ++i) {
-      for (int j = a.y(); j <= z.y(); ++j) {
-        for (int k = a.z(); k <= z.z(); ++k) {
-          f((static_cast<int64_t>(i) * 73856093) ^ (static_cast<int64_t>(j) * 19349663) ^
-            (static_cast<int64_t>(k) * 83492791));
-        }
-      }
-    }
-  }
-
   const LatticeGraph& g_;
   double cell_;
-  std::unordered_map<int64_t, std::vector<int>> cells_;
+  std::unordered_map<uint64_t, std::vector<int>> cells_;
 };
 
 }  // namespace
