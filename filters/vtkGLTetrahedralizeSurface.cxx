@@ -7,6 +7,7 @@
 #include "vtkGLRequest.h"
 
 #include "common/Error.h"
+#include "mesh/SurfaceRepair.h"
 #include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <vtkCellData.h>
@@ -170,29 +171,14 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
                                result.reorientedTriangles, result.degenerateTriangles,
                                result.weldedVertices);
     addValue(fd, gl::arrays::CavityRegions, static_cast<double>(result.removedCavityRegions));
-    if (result.mergedBodies > 0) {
-      vtkWarningMacro(<< "bodies of the surface touch or cross each other; meshed as their union ("
-                      << result.mergedBodies << " fewer bodies)");
-    }
-    if (result.duplicateTriangles > 0) {
-      vtkWarningMacro(<< result.duplicateTriangles
-                      << " triangles of the surface repeat another one (the same face twice); "
-                         "meshed without the copies");
-    }
-    if (result.reorientedTriangles > 0) {
-      vtkWarningMacro(<< result.reorientedTriangles
-                      << " triangles of the surface ran against their neighbours; turned to agree "
-                         "with them");
-    }
-    if (result.weldedVertices > 0) {
-      vtkWarningMacro(<< result.weldedVertices
-                      << " vertices of the surface welded across seams as wide as rounding "
-                         "(open edges whose sides differ in the last digits)");
-    }
-    if (result.degenerateTriangles > 0) {
-      vtkWarningMacro(<< result.degenerateTriangles
-                      << " degenerate triangles of the surface (area ~0) mended by collapsing or "
-                         "flipping an edge");
+    gl::SurfaceRepairCounts repairs;
+    repairs.weldedVertices = result.weldedVertices;
+    repairs.mergedBodies = result.mergedBodies;
+    repairs.duplicateTriangles = result.duplicateTriangles;
+    repairs.reorientedTriangles = result.reorientedTriangles;
+    repairs.degenerateTriangles = result.degenerateTriangles;
+    for (const gl::RepairNote& note : gl::describeRepairs(repairs)) {
+      vtkWarningMacro(<< note.text);
     }
     if (result.qualityBoundDropped) {
       vtkWarningMacro(<< gl::qualityBoundDroppedNote(result.tetCount));

@@ -298,4 +298,44 @@ SurfaceRepairCounts repairSurface(TriangleSurface& surface) {
   return counts;
 }
 
+std::vector<RepairNote> describeRepairs(const SurfaceRepairCounts& c) {
+  auto plural = [](int n, const char* one, const char* many) {
+    return std::to_string(n) + (n == 1 ? one : many);
+  };
+  std::vector<RepairNote> notes;
+  if (c.weldedVertices > 0) {
+    notes.push_back({plural(c.weldedVertices, " vertex", " vertices") +
+                         " of the surface welded across seams as wide as rounding (open edges "
+                         "whose two sides differ in the last digits, as float32 STL corners do)",
+                     "welded_vertices"});
+  }
+  if (c.mergedBodies > 0) {
+    notes.push_back({"bodies of the surface touch or cross each other; meshed as their union (" +
+                         std::to_string(c.mergedBodies) + " fewer bodies)",
+                     "merged_bodies"});
+  }
+  if (c.duplicateTriangles > 0) {
+    notes.push_back({plural(c.duplicateTriangles, " triangle of the surface repeats",
+                            " triangles of the surface repeat") +
+                         " another one (the same face twice); meshed without the copies",
+                     "duplicate_triangles"});
+  }
+  if (c.reorientedTriangles > 0) {
+    notes.push_back(
+        {plural(c.reorientedTriangles,
+                " triangle of the surface ran against its neighbours; turned to agree with them",
+                " triangles of the surface ran against their neighbours; turned to agree with "
+                "them"),
+         "reoriented_triangles"});
+  }
+  if (c.degenerateTriangles > 0) {
+    notes.push_back(
+        {plural(c.degenerateTriangles, " degenerate triangle", " degenerate triangles") +
+             " of the surface (area ~0, e.g. marching-cubes slivers) mended by "
+             "collapsing or flipping an edge",
+         "degenerate_triangles"});
+  }
+  return notes;
+}
+
 }  // namespace geolattice

@@ -23,6 +23,8 @@
 #include "mesh/TetMesh.h"
 
 #include <array>
+#include <string>
+#include <vector>
 
 namespace geolattice {
 
@@ -39,6 +41,14 @@ struct SurfaceRepairCounts {
            0;
   }
 };
+
+/// One sentence per repair done, for a warning (GL Tetrahedralize Surface) or a note (the CLI,
+/// which adds where report.json mesh.<reportKey> has the count), in the order of the repairs.
+struct RepairNote {
+  std::string text;
+  std::string reportKey;
+};
+std::vector<RepairNote> describeRepairs(const SurfaceRepairCounts& counts);
 
 /// The repairs 0-4 above, in that order; the surface is changed only by the repairs done.
 SurfaceRepairCounts repairSurface(TriangleSurface& surface);
