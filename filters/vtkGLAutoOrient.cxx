@@ -231,9 +231,7 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     gl::addFieldArray(fd, gl::arrays::OrientChosenRank, {static_cast<double>(rank)});
     gl::addFieldArray(fd, gl::arrays::OrientPedestalHeight, {chosen.pedestal});
     if (repaired.any()) {  // as GL Tetrahedralize Surface says it
-      gl::addSurfaceRepairArrays(fd, repaired.mergedBodies, repaired.duplicateTriangles,
-                                 repaired.reorientedTriangles, repaired.degenerateTriangles,
-                                 repaired.weldedVertices);
+      gl::addSurfaceRepairArrays(fd, repaired);
     }
     gl::addFieldArray(fd, gl::arrays::OrientPedestalContactHeight, {options.pedestalContactHeight});
     output->SetFieldData(fd);

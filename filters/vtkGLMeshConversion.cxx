@@ -645,13 +645,14 @@ void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>
   fd->AddArray(doubleArray(name, values, components));
 }
 
-void addSurfaceRepairArrays(vtkFieldData* fd, int mergedBodies, int duplicateTriangles,
-                            int reorientedTriangles, int degenerateTriangles, int weldedVertices) {
-  addFieldArray(fd, arrays::MergedBodies, {static_cast<double>(mergedBodies)});
-  addFieldArray(fd, arrays::DuplicateTriangles, {static_cast<double>(duplicateTriangles)});
-  addFieldArray(fd, arrays::ReorientedTriangles, {static_cast<double>(reorientedTriangles)});
-  addFieldArray(fd, arrays::DegenerateTrianglesRemoved, {static_cast<double>(degenerateTriangles)});
-  addFieldArray(fd, arrays::WeldedVertices, {static_cast<double>(weldedVertices)});
+void addSurfaceRepairArrays(vtkFieldData* fd, const SurfaceRepairCounts& repairs) {
+  addFieldArray(fd, arrays::MergedBodies, {static_cast<double>(repairs.mergedBodies)});
+  addFieldArray(fd, arrays::DuplicateTriangles, {static_cast<double>(repairs.duplicateTriangles)});
+  addFieldArray(fd, arrays::ReorientedTriangles,
+                {static_cast<double>(repairs.reorientedTriangles)});
+  addFieldArray(fd, arrays::DegenerateTrianglesRemoved,
+                {static_cast<double>(repairs.degenerateTriangles)});
+  addFieldArray(fd, arrays::WeldedVertices, {static_cast<double>(repairs.weldedVertices)});
 }
 
 }  // namespace geolattice

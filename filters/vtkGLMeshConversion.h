@@ -7,6 +7,7 @@
  * (e.g. a non-tetrahedral cell) so that filters can report it with vtkErrorMacro.
  */
 #include "lattice/LatticeInfill.h"
+#include "mesh/SurfaceRepair.h"
 #include "mesh/TetMesh.h"
 #include "nozzle/BuildPlate.h"
 #include "nozzle/NozzleModel.h"
@@ -146,8 +147,7 @@ void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>
 /// The repairs a surface got before meshing (core/mesh/SurfaceRepair.h; mergedBodies also counts
 /// crossing bodies united): field data MergedBodies, DuplicateTriangles, ReorientedTriangles,
 /// DegenerateTrianglesRemoved, WeldedVertices.
-void addSurfaceRepairArrays(vtkFieldData* fd, int mergedBodies, int duplicateTriangles,
-                            int reorientedTriangles, int degenerateTriangles, int weldedVertices);
+void addSurfaceRepairArrays(vtkFieldData* fd, const SurfaceRepairCounts& repairs);
 
 }  // namespace geolattice
 #endif

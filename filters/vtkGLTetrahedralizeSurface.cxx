@@ -7,7 +7,6 @@
 #include "vtkGLRequest.h"
 
 #include "common/Error.h"
-#include "mesh/SurfaceRepair.h"
 #include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include <vtkCellData.h>
@@ -167,17 +166,9 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     addValue(fd, gl::arrays::TetGenSurfaceBoundCount, result.surfaceBoundCount ? 1.0 : 0.0);
     addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
     addValue(fd, gl::arrays::TetGenQualityBoundDropped, result.qualityBoundDropped ? 1.0 : 0.0);
-    gl::addSurfaceRepairArrays(fd, result.mergedBodies, result.duplicateTriangles,
-                               result.reorientedTriangles, result.degenerateTriangles,
-                               result.weldedVertices);
+    gl::addSurfaceRepairArrays(fd, result.repairs);
     addValue(fd, gl::arrays::CavityRegions, static_cast<double>(result.removedCavityRegions));
-    gl::SurfaceRepairCounts repairs;
-    repairs.weldedVertices = result.weldedVertices;
-    repairs.mergedBodies = result.mergedBodies;
-    repairs.duplicateTriangles = result.duplicateTriangles;
-    repairs.reorientedTriangles = result.reorientedTriangles;
-    repairs.degenerateTriangles = result.degenerateTriangles;
-    for (const gl::RepairNote& note : gl::describeRepairs(repairs)) {
+    for (const gl::RepairNote& note : gl::describeRepairs(result.repairs)) {
       vtkWarningMacro(<< note.text);
     }
     if (result.qualityBoundDropped) {

@@ -33,22 +33,13 @@ int weldOpenSeams(TriangleSurface& surface) {
   if (before.boundaryEdges == 0 || !(tolerance > 0) || before.outOfRangeTriangles > 0) {
     return 0;
   }
-  // The vertices of edges used by one triangle.
-  std::unordered_map<uint64_t, int> uses;
-  auto key = [](int a, int b) {
-    return (static_cast<uint64_t>(std::min(a, b)) << 32) | static_cast<uint32_t>(std::max(a, b));
-  };
-  for (const auto& t : surface.triangles) {
-    for (int k = 0; k < 3; ++k) {
-      ++uses[key(t[k], t[(k + 1) % 3])];
-    }
-  }
+  // The vertices of the open edges (the check lists them).
   std::vector<int> open;
   {
     std::vector<char> isOpen(surface.points.size(), 0);
-    for (const auto& [edge, count] : uses) {
-      if (count == 1) {
-        isOpen[edge >> 32] = isOpen[edge & 0xffffffffu] = 1;
+    for (const SurfaceDefectEdge& e : before.defectEdges) {
+      if (e.kind == SurfaceDefectEdge::Boundary) {
+        isOpen[e.lo] = isOpen[e.hi] = 1;
       }
     }
     for (size_t v = 0; v < isOpen.size(); ++v) {

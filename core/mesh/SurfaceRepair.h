@@ -58,7 +58,7 @@ SurfaceRepairCounts repairSurface(TriangleSurface& surface);
 /// 0.05 µm on a 50 mm part), drops the triangles that collapse and the points no longer used.
 /// Kept only when it leaves fewer open edges and no more non-manifold ones; otherwise the
 /// surface is left as it is (a real hole is named by the caller's check). Returns the vertices
-/// welded onto another. O(F) (a hash grid of the open edges' vertices).
+/// welded onto another. O(F log F) (the checks) + a hash grid of the open edges' vertices.
 int weldOpenSeams(TriangleSurface& surface);
 
 /// Repair 1: drops every triangle on the same three vertices, the same way round, as an earlier

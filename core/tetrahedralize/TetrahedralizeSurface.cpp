@@ -284,13 +284,8 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   } catch (const GeoLatticeError&) {
     // A face written twice, faces flipped against their neighbours, bodies that touch along a
     // face (welded by the reader): mesh/SurfaceRepair.h. Any other defect is the input's own.
-    const SurfaceRepairCounts repaired = repairSurface(surface);
-    result.duplicateTriangles = repaired.duplicateTriangles;
-    result.reorientedTriangles = repaired.reorientedTriangles;
-    result.mergedBodies = repaired.mergedBodies;
-    result.degenerateTriangles = repaired.degenerateTriangles;
-    result.weldedVertices = repaired.weldedVertices;
-    if (!repaired.any()) {
+    result.repairs = repairSurface(surface);
+    if (!result.repairs.any()) {
       throw;
     }
     report = requireClosedManifold(surface);
@@ -301,11 +296,11 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   // Closed bodies that cross each other (an assembly exported as it is) are one solid: their
   // union, which TetGen accepts (it refuses the crossing facets).
   if (const int merged = mergeOverlappingBodies(surface).merged; merged > 0) {
-    result.mergedBodies += merged;
+    result.repairs.mergedBodies += merged;
     // The union's cuts can leave slivers (two mirror-image spheres: 4 of area ~0).
-    result.degenerateTriangles += removeDegenerateTriangles(surface);
+    result.repairs.degenerateTriangles += removeDegenerateTriangles(surface);
   }
-  const double inputVolume = result.mergedBodies > 0
+  const double inputVolume = result.repairs.mergedBodies > 0
                                  ? std::abs(requireClosedManifold(surface).signedVolume)
                                  : std::abs(report.signedVolume);
   result.enclosedVolume = inputVolume;

@@ -9,6 +9,7 @@
 /// boundary may be refined: no "Y"; "pAQ" when no such run finishes in time) -> regions
 /// outside the solid (cavities of hollow parts, winding number 0) removed -> tets reoriented
 /// to positive volume -> requireValidTetMesh -> TetMesh for the GDF stages.
+#include "mesh/SurfaceRepair.h"
 #include "mesh/SurfaceSimplification.h"
 #include "mesh/TetMesh.h"
 
@@ -76,12 +77,9 @@ struct TetrahedralizeResult {
   double meshVolume = 0.0;        ///< sum of tet volumes (mm^3)
   int tetCount = 0;
   int flippedSurfaceTriangles = 0;  ///< input triangles reversed because the surface faced inward
-  int mergedBodies = 0;  ///< bodies merged into one they cross or touch (mesh/OverlappingBodies.h)
-  int duplicateTriangles = 0;  ///< triangles dropped as copies of another (mesh/SurfaceRepair.h)
-  int weldedVertices =
-      0;  ///< vertices welded across seams as wide as rounding (mesh/SurfaceRepair.h, repair 0)
-  int degenerateTriangles = 0;  ///< degenerate triangles mended (mesh/SurfaceRepair.h, repair 4)
-  int reorientedTriangles = 0;  ///< triangles turned to agree with their neighbours (the same)
+  /// The surface repairs done before meshing (mesh/SurfaceRepair.h); mergedBodies also counts
+  /// bodies that cross another (mesh/OverlappingBodies.h), degenerateTriangles the union's slivers.
+  SurfaceRepairCounts repairs;
   int flippedTets = 0;  ///< output tets reoriented (0 in practice: TetGen 1.5 writes positive tets)
   int removedCavityRegions =
       0;                  ///< regions TetGen filled with winding number 0 (cavities), removed

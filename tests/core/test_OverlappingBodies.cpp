@@ -58,7 +58,7 @@ TEST(OverlappingBodies, TwoCrossingBoxesBecomeTheirUnion) {
   o.targetEdgeLength = 2.0;
   const TetrahedralizeResult meshed = tetrahedralizeSurface(
       together({box({10, 10, 10}, {0, 0, 0}), box({10, 10, 10}, {5, 5, 5})}), o);
-  EXPECT_EQ(meshed.mergedBodies, 1);
+  EXPECT_EQ(meshed.repairs.mergedBodies, 1);
   EXPECT_NEAR(meshed.meshVolume, 1875.0, 1e-6 * 1875.0);
 }
 
@@ -145,7 +145,7 @@ TEST(OverlappingBodies, MirrorImageBodiesInAnyTurnAreMeshed) {
     TetrahedralizeOptions o;
     o.targetEdgeLength = 3.0;
     const TetrahedralizeResult meshed = tetrahedralizeSurface(s, o);
-    EXPECT_EQ(meshed.mergedBodies, 1);
+    EXPECT_EQ(meshed.repairs.mergedBodies, 1);
     EXPECT_GT(meshed.tetCount, 100);
   }
 }

@@ -44,9 +44,9 @@ TEST(SurfaceRepair, AFaceWrittenTwiceIsMeshedOnce) {
   TetrahedralizeOptions o;
   o.targetEdgeLength = 2.0;
   const TetrahedralizeResult meshed = tetrahedralizeSurface(doubled, o);
-  EXPECT_EQ(meshed.duplicateTriangles, 5);
-  EXPECT_EQ(meshed.reorientedTriangles, 0);
-  EXPECT_EQ(meshed.mergedBodies, 0);
+  EXPECT_EQ(meshed.repairs.duplicateTriangles, 5);
+  EXPECT_EQ(meshed.repairs.reorientedTriangles, 0);
+  EXPECT_EQ(meshed.repairs.mergedBodies, 0);
   EXPECT_NEAR(meshed.meshVolume, 1000.0, 1e-6 * 1000.0);
 
   // The other way round a pair is a wall, not a copy: both stay.
@@ -99,7 +99,7 @@ TEST(SurfaceRepair, TrianglesFlippedAgainstTheirNeighboursAreTurnedBack) {
   TetrahedralizeOptions o;
   o.targetEdgeLength = 2.0;
   const TetrahedralizeResult meshed = tetrahedralizeSurface(broken, o);
-  EXPECT_EQ(meshed.reorientedTriangles, 3);
+  EXPECT_EQ(meshed.repairs.reorientedTriangles, 3);
   EXPECT_NEAR(meshed.meshVolume, 1000.0, 1e-6 * 1000.0);
 }
 
@@ -164,7 +164,7 @@ TEST(SurfaceRepair, NeedleTrianglesAreCollapsedAndTheSolidIsMeshed) {
   TetrahedralizeOptions o;
   o.targetEdgeLength = 2.0;
   const TetrahedralizeResult r = tetrahedralizeSurface(s, o);
-  EXPECT_EQ(r.degenerateTriangles, 2);
+  EXPECT_EQ(r.repairs.degenerateTriangles, 2);
   EXPECT_GT(r.tetCount, 100);
 }
 

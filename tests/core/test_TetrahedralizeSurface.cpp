@@ -311,7 +311,7 @@ TEST(TetrahedralizeSurface, OverlappingBoxesAreMeshedAsTheirUnion) {
   const TriangleSurface both = append(box, box, rotation, Vec3(3.3, 4.1, 2.7), false);
   ASSERT_TRUE(checkSurface(both).isClosedManifold());
   const TetrahedralizeResult rotated = tetrahedralizeSurface(both, edge(1.0));
-  EXPECT_EQ(rotated.mergedBodies, 1);
+  EXPECT_EQ(rotated.repairs.mergedBodies, 1);
   EXPECT_GT(rotated.meshVolume, 1000.0);
   EXPECT_LT(rotated.meshVolume, 2000.0);
   // The same with a plain shift (facets crossing at right angles): 2000 - 4.7 x 4.9 x 5.1 mm^3,
@@ -346,7 +346,7 @@ TEST(TetrahedralizeSurface, GridAlignedOverlapMeshesTheUnion) {
   const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 2.0);
   const TriangleSurface both = append(box, box, Eigen::Matrix3d::Identity(), Vec3(5, 5, 5), false);
   const TetrahedralizeResult r = tetrahedralizeSurface(both, edge(1.0));
-  EXPECT_EQ(r.mergedBodies, 1);
+  EXPECT_EQ(r.repairs.mergedBodies, 1);
   EXPECT_NEAR(r.meshVolume, 1875.0, 1e-6 * 1875.0);
   EXPECT_NEAR(r.enclosedVolume, 1875.0, 1e-9 * 1875.0);
   EXPECT_TRUE(checkTetMesh(r.mesh).isValid());
@@ -663,7 +663,7 @@ TEST(TetrahedralizeSurface, BodiesTouchingAlongAFaceAreMeshedAsTheirUnion) {
     SCOPED_TRACE(c.contact);
     ASSERT_GT(checkSurface(c.surface).nonManifoldEdges, 0);
     const TetrahedralizeResult r = tetrahedralizeSurface(c.surface, edge(2.0));
-    EXPECT_EQ(r.mergedBodies, 1);
+    EXPECT_EQ(r.repairs.mergedBodies, 1);
     EXPECT_NEAR(r.meshVolume, c.volume, 1e-6);
   }
 }
