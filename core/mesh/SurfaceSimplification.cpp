@@ -3,6 +3,8 @@
 #include "common/Error.h"
 #include "common/Progress.h"
 #include "mesh/CgalSurfaceMesh.h"
+#include "mesh/SurfaceCheck.h"
+#include "mesh/SurfaceRepair.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -254,6 +256,18 @@ SimplificationResult simplifySurface(const TriangleSurface& surface,
       return false;
     }
     TriangleSurface result = cgal::toTriangleSurface(mesh);
+    // A remeshing or a collapse can leave slivers of area ~0 (a gear turned upside down on its
+    // pedestal: 3 of 50k triangles), which the mesh stage would refuse, naming triangles the
+    // user never made: mended here, and where that fails the result is refused.
+    removeDegenerateTriangles(result);
+    if (const SurfaceCheckReport check = checkSurface(result);
+        check.degenerateTriangles > 0 || check.boundaryEdges > 0 || check.nonManifoldEdges > 0) {
+      r.refused = std::string("the ") + what + " surface " +
+                  (check.degenerateTriangles > 0
+                       ? "has " + std::to_string(check.degenerateTriangles) + " zero-area triangles"
+                       : std::string("is not closed and manifold"));
+      return false;
+    }
     // The collapse keeps the distance by sliding vertices along flat directions: on a cone or
     // a cylinder it leaves needles from end to end, which TetGen refines far below the target
     // edge (a generated 100 mm spire at 2 mm: 1,702 triangles, two thirds of them needles, gave

@@ -4,6 +4,7 @@
 #include "common/Error.h"
 #include "common/ParallelFor.h"
 #include "common/Progress.h"
+#include "common/Rotation.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
 #include "lattice/LatticeInfill.h"
@@ -368,7 +369,7 @@ double evaluationScale(double volume) {
 }
 
 Eigen::Matrix3d rotationTakingDownToMinusZ(const Vec3& down) {
-  return Eigen::Quaterniond::FromTwoVectors(down.normalized(), -Vec3::UnitZ()).toRotationMatrix();
+  return rotationBetween(down, -Vec3::UnitZ());
 }
 
 double baseContactArea(const TriangleSurface& surface, const Eigen::Matrix3d& R,

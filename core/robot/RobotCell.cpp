@@ -1,6 +1,7 @@
 #include "robot/RobotCell.h"
 
 #include "common/Error.h"
+#include "common/Rotation.h"
 
 #include <cmath>
 
@@ -20,8 +21,7 @@ void RobotCell::validate() const {
 
 Isometry RobotCell::flangePose(const Eigen::Vector3d& p, const Eigen::Vector3d& n,
                                double psi) const {
-  const Eigen::Matrix3d align =
-      Eigen::Quaterniond::FromTwoVectors(n.normalized(), nozzleAxis).toRotationMatrix();
+  const Eigen::Matrix3d align = rotationBetween(n, nozzleAxis);
   const Eigen::Matrix3d r = Eigen::AngleAxisd(psi, nozzleAxis).toRotationMatrix() * align;
   Isometry part = Isometry::Identity();
   part.linear() = r;

@@ -273,6 +273,18 @@ TEST(AutoOrient, BaseContactArea) {
                    baseContactArea(s, rotationTakingDownToMinusZ(Vec3::UnitZ()), 0.3));
 }
 
+TEST(AutoOrient, TurningUpsideDownIsARotationWithoutScale) {
+  // The gear's chosen down direction: within 5e-12 of +z, just above Eigen's own threshold for
+  // opposite vectors; its quaternion came out 1e-5 off unit length and the part 2e-5 taller.
+  for (const Vec3& down : {Vec3(-3.06469036272112e-06, -2.9548685596932395e-07, 1.0),
+                           Vec3(1e-7, 0, 1), Vec3(0, 0, 1), Vec3(0.3, -0.2, 0.9), Vec3(1, 0, 0)}) {
+    const Eigen::Matrix3d R = rotationTakingDownToMinusZ(down);
+    EXPECT_LT((R.transpose() * R - Eigen::Matrix3d::Identity()).norm(), 1e-14) << down.transpose();
+    EXPECT_NEAR(R.determinant(), 1.0, 1e-14);
+    EXPECT_LT((R * down.normalized() + Vec3::UnitZ()).norm(), 1e-8) << down.transpose();
+  }
+}
+
 TEST(ParallelFor, EveryItemOnceErrorsAndProgressOnTheCallingThread) {
   std::vector<std::atomic<int>> seen(1000);
   const std::thread::id caller = std::this_thread::get_id();
