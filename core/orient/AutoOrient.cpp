@@ -473,21 +473,32 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
   // 0.2 s after remeshing. Nothing finer than the coarse mesh needs is kept.
   tetOptions.simplifyFinerThan = 1.0;
   TetrahedralizeResult tets = tetrahedralizeSurface(surface, tetOptions);
-  // A coarse surface on a thin wall can make TetGen's quality bound refine the wall far beyond
-  // the target (a generated 2 mm curved wall: 573,778 tets for 15k), and every evaluation costs
-  // in proportion: mesh again at a fixed edge, twice as long, while that helps.
+  // A thin wall or fine teeth make the count follow the surface's triangles (a generated 2 mm
+  // curved wall: 573,778 tets for 15k; a 2.5 mm bowl 146k, a gear 122k), and every evaluation
+  // costs in proportion: mesh again, while that helps, with the simplified surface made coarser
+  // by the square root of the overshoot (a surface-bound count goes as 1/edge^2; 1.5x to 3x).
+  // The surface simplified for the first mesh is the input of the next one: simplifying the
+  // part's own surface again took 10-44 s each on 250k-550k triangles, this one 0.3-0.6 s.
   // (Not when the surface was meshed without TetGen's bounds: no edge length changes that mesh.)
   // The mesh in hand is kept when the longer edge fails (a 20-tooth gear at 33 mm: TetGen past
   // its time limit) or leaves too few tets to score anything (a 1M-triangle blob: 93 tets).
+  TriangleSurface simplified;  // the surface the mesh in hand was made from, when simplified
   for (int again = 0; again < 2 && !tets.qualityBoundDropped &&
                       tets.mesh.tets.size() > kCoarseOvershoot * o.evaluationTets;
        ++again) {
+    if (tets.simplified) {
+      simplified = std::move(tets.simplifiedSurface);
+    }
+    const double overshoot =
+        static_cast<double>(tets.mesh.tets.size()) / static_cast<double>(o.evaluationTets);
     TetrahedralizeOptions longer = tetOptions;
-    longer.targetEdgeLength = 2.0 * tets.targetEdgeLength;
+    longer.targetEdgeLength =
+        tets.simplified ? std::clamp(std::sqrt(overshoot), 1.5, 3.0) * tets.simplificationEdgeLength
+                        : 2.0 * tets.targetEdgeLength;
     TetrahedralizeResult coarser;
     try {
-      coarser = tetrahedralizeSurface(surface, longer);
-    } catch (const GeoLatticeError&) {
+      coarser = tetrahedralizeSurface(simplified.triangles.empty() ? surface : simplified, longer);
+    } catch (const GeoLatticeError& e) {
       break;
     }
     if (coarser.mesh.tets.size() >= tets.mesh.tets.size() ||

@@ -638,6 +638,9 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     }
   }
 
+  if (result.simplified) {
+    result.simplifiedSurface = std::move(surface);
+  }
   result.targetEdgeLength = bestEdge;
   result.maxTetVolume = regularTetVolume(bestEdge);
   result.switches = result.qualityBoundDropped ? "pAQ" : switchesFor(bestEdge);

@@ -106,6 +106,9 @@ struct TetrahedralizeResult {
   double simplificationEdgeLength = 0;
   double simplificationDistance = 0;  ///< largest input-vertex distance to them (mm)
   double simplificationSeconds = 0;
+  /// The simplified surface TetGen meshed (about the mesh's size); empty when TetGen got the
+  /// input as it is. A caller meshing again for a longer edge simplifies this one, not the input.
+  TriangleSurface simplifiedSurface;
   /// Why the surface remeshed for the target edge was refused (mesh/SurfaceSimplification.h;
   /// then a shorter edge or the collapse was tried), or why TetGen failed on the prepared
   /// surface and meshed the input instead. Empty: nothing was refused.
