@@ -17,6 +17,33 @@ namespace geolattice {
 
 namespace fs = std::filesystem;
 
+namespace {
+
+/// " (the best candidate on a H mm pedestal: N colliding stations)" when the orientation tries
+/// (report.json orient.tries) printed candidates on a pedestal (so suggesting one is no help);
+/// else "".
+std::string leastCollidingOnAPedestal(const Json& report) {
+  const Json* best = nullptr;
+  if (report.contains("orient") && report["orient"].contains("tries")) {
+    for (const Json& t : report["orient"]["tries"]) {
+      if (t.value("ok", false) && t.value("pedestal_mm", 0.0) > 0 &&
+          (!best ||
+           t.value("colliding_stations", 0LL) < (*best).value("colliding_stations", 0LL))) {
+        best = &t;
+      }
+    }
+  }
+  if (!best) {
+    return "";
+  }
+  std::ostringstream m;
+  m << " (the best candidate on a " << (*best).value("pedestal_mm", 0.0)
+    << " mm pedestal: " << (*best).value("colliding_stations", 0LL) << " colliding stations)";
+  return m.str();
+}
+
+}  // namespace
+
 int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
   GLPrintPipeline& P = run.P;
   const RunOptions& R = run.R;
@@ -63,13 +90,18 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
     if (!head || !*head) {
       hint += std::string(hint.empty() ? "" : " or ") + "--printhead FILE";
     }
+    std::string pedestalTried;  // when --orient auto printed candidates on a pedestal already
     if (plate > 0 && !P.GetTetMeshInput() &&
         P.Pedestal->HeightFor(P.Orientation->GetOutputDataObject(0)) == 0) {
-      hint += std::string(hint.empty() ? "" : " or ") + "--pedestal 10";
+      pedestalTried = leastCollidingOnAPedestal(run.Report);
+      if (pedestalTried.empty()) {
+        hint += std::string(hint.empty() ? "" : " or ") + "--pedestal 10";
+      }
     }
     if (!hint.empty()) {
       line << "; try " << hint;
     }
+    line << pedestalTried;
     gates["collision"] = {{"passed", false},
                           {"colliding_stations", colliding},
                           {"stations", stations},
