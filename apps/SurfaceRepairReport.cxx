@@ -21,11 +21,13 @@ std::vector<std::string> reportSurfaceRepairs(vtkDataObject* oriented, vtkDataOb
   repairs.duplicateTriangles = count(arrays::DuplicateTriangles);
   repairs.reorientedTriangles = count(arrays::ReorientedTriangles);
   repairs.degenerateTriangles = count(arrays::DegenerateTrianglesRemoved);
+  repairs.invertedBodies = count(arrays::InvertedBodies);
   mesh["merged_bodies"] = repairs.mergedBodies;
   mesh["duplicate_triangles"] = repairs.duplicateTriangles;
   mesh["reoriented_triangles"] = repairs.reorientedTriangles;
   mesh["degenerate_triangles"] = repairs.degenerateTriangles;
   mesh["welded_vertices"] = repairs.weldedVertices;
+  mesh["inverted_bodies"] = repairs.invertedBodies;
   std::vector<std::string> notes;
   for (const RepairNote& note : describeRepairs(repairs)) {
     const std::string where = "report.json mesh." + note.reportKey;

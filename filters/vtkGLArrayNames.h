@@ -88,6 +88,8 @@ constexpr const char* MergedBodies = "MergedBodies";
 constexpr const char* DuplicateTriangles = "DuplicateTriangles";
 constexpr const char* DegenerateTrianglesRemoved = "DegenerateTrianglesRemoved";
 constexpr const char* WeldedVertices = "WeldedVertices";
+/// Bodies written inside out turned outward (core/mesh/SurfaceRepair.h), 1 value.
+constexpr const char* InvertedBodies = "InvertedBodies";
 /// Triangles turned to agree with their neighbours (core/mesh/SurfaceRepair.h), 1 value.
 constexpr const char* ReorientedTriangles = "ReorientedTriangles";
 /// Closed inner cavities of the solid (TetGen regions outside the surface, removed), 1 value.

@@ -653,6 +653,7 @@ void addSurfaceRepairArrays(vtkFieldData* fd, const SurfaceRepairCounts& repairs
   addFieldArray(fd, arrays::DegenerateTrianglesRemoved,
                 {static_cast<double>(repairs.degenerateTriangles)});
   addFieldArray(fd, arrays::WeldedVertices, {static_cast<double>(repairs.weldedVertices)});
+  addFieldArray(fd, arrays::InvertedBodies, {static_cast<double>(repairs.invertedBodies)});
 }
 
 }  // namespace geolattice

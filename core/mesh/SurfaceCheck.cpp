@@ -182,4 +182,27 @@ int orientOutward(TriangleSurface& surface) {
   return static_cast<int>(surface.triangles.size());
 }
 
+double windingNumber(const TriangleSurface& surface, const Vec3& q,
+                     const std::vector<int>* triangles) {
+  double total = 0.0;
+  auto add = [&](const std::array<int, 3>& t) {
+    const Vec3 a = surface.points[t[0]] - q, b = surface.points[t[1]] - q,
+               c = surface.points[t[2]] - q;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    const double numerator = a.dot(b.cross(c));
+    const double denominator = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
+    total += 2.0 * std::atan2(numerator, denominator);
+  };
+  if (triangles) {
+    for (int f : *triangles) {
+      add(surface.triangles[f]);
+    }
+  } else {
+    for (const auto& t : surface.triangles) {
+      add(t);
+    }
+  }
+  return total / (4.0 * M_PI);
+}
+
 }  // namespace geolattice

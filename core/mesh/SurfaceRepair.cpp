@@ -285,8 +285,96 @@ SurfaceRepairCounts repairSurface(TriangleSurface& surface) {
   }
   if (check.degenerateTriangles > 0) {  // holes and the rest are not repaired here
     counts.degenerateTriangles = removeDegenerateTriangles(surface);
+    check = checkSurface(surface);
+  }
+  if (check.boundaryEdges == 0 && check.nonManifoldEdges == 0 && check.inconsistentEdges == 0 &&
+      check.outOfRangeTriangles == 0 && check.nonFinitePoints == 0) {
+    counts.invertedBodies = orientInvertedBodies(surface);
   }
   return counts;
+}
+
+int orientInvertedBodies(TriangleSurface& surface) {
+  const int n = static_cast<int>(surface.triangles.size());
+  // Shells: triangles joined across their edges.
+  UnionFind joined(n);
+  std::unordered_map<std::uint64_t, int> firstAcross;
+  firstAcross.reserve(3 * static_cast<size_t>(n) / 2);
+  for (int f = 0; f < n; ++f) {
+    const auto& t = surface.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      const auto a = static_cast<std::uint64_t>(std::min(t[k], t[(k + 1) % 3]));
+      const auto b = static_cast<std::uint64_t>(std::max(t[k], t[(k + 1) % 3]));
+      const auto [it, fresh] = firstAcross.emplace((a << 32) | b, f);
+      if (!fresh) {
+        joined.unite(f, it->second);
+      }
+    }
+  }
+  std::vector<int> shellOf;
+  const int shells = joined.labels(shellOf);
+  if (shells < 2) {
+    return 0;
+  }
+  std::vector<std::vector<int>> triangles(shells);
+  std::vector<double> volume6(shells, 0.0), largest(shells, -1.0);
+  std::vector<Vec3> probe(shells);
+  std::vector<Eigen::AlignedBox3d> box(shells);
+  for (int f = 0; f < n; ++f) {
+    const int s = shellOf[f];
+    const auto& t = surface.triangles[f];
+    const Vec3 &p0 = surface.points[t[0]], &p1 = surface.points[t[1]], &p2 = surface.points[t[2]];
+    triangles[s].push_back(f);
+    volume6[s] += p0.dot(p1.cross(p2));
+    const double area2 = (p1 - p0).cross(p2 - p0).norm();
+    if (area2 > largest[s]) {
+      largest[s] = area2;
+      probe[s] = (p0 + p1 + p2) / 3.0;
+    }
+    box[s].extend(p0);
+    box[s].extend(p1);
+    box[s].extend(p2);
+  }
+  // inside[s]: the shells s lies in (|winding| 1 whichever way they face).
+  std::vector<std::vector<int>> inside(shells);
+  for (int s = 0; s < shells; ++s) {
+    for (int o = 0; o < shells; ++o) {
+      if (o != s && box[o].contains(box[s]) &&
+          std::abs(windingNumber(surface, probe[s], &triangles[o])) > 0.5) {
+        inside[s].push_back(o);
+      }
+    }
+  }
+  std::vector<int> invertedBodies;
+  bool anOutwardBody = false;
+  for (int s = 0; s < shells; ++s) {
+    if (!inside[s].empty()) {
+      continue;
+    }
+    if (volume6[s] < 0) {
+      invertedBodies.push_back(s);
+    } else {
+      anOutwardBody = true;
+    }
+  }
+  if (invertedBodies.empty() || !anOutwardBody) {
+    return 0;
+  }
+  std::vector<char> turn(shells, 0);
+  for (int body : invertedBodies) {
+    turn[body] = 1;
+  }
+  for (int s = 0; s < shells; ++s) {
+    for (int o : inside[s]) {
+      turn[s] |= inside[o].empty() && volume6[o] < 0 ? 1 : 0;
+    }
+  }
+  for (int f = 0; f < n; ++f) {
+    if (turn[shellOf[f]]) {
+      std::swap(surface.triangles[f][1], surface.triangles[f][2]);
+    }
+  }
+  return static_cast<int>(invertedBodies.size());
 }
 
 std::vector<RepairNote> describeRepairs(const SurfaceRepairCounts& c) {
@@ -318,6 +406,13 @@ std::vector<RepairNote> describeRepairs(const SurfaceRepairCounts& c) {
                 " triangles of the surface ran against their neighbours; turned to agree with "
                 "them"),
          "reoriented_triangles"});
+  }
+  if (c.invertedBodies > 0) {
+    notes.push_back(
+        {plural(c.invertedBodies, " body of the surface was", " bodies of the surface were") +
+             " written inside out (its triangles facing inward) beside bodies facing "
+             "outward; turned outward",
+         "inverted_bodies"});
   }
   if (c.degenerateTriangles > 0) {
     notes.push_back(

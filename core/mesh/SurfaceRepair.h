@@ -12,7 +12,9 @@
 ///     mesh/OverlappingBodies.h);
 ///  4. degenerate triangles (SurfaceCheck's: area <= 1e-12 diagonal^2), the slivers marching
 ///     cubes and a union's cuts leave, are removed by collapsing a needle's shortest edge or
-///     flipping a cap's longest one (removeDegenerateTriangles).
+///     flipping a cap's longest one (removeDegenerateTriangles);
+///  5. a body written inside out beside bodies written outward (a mirrored body of an assembly)
+///     is turned outward, with the shells inside it (orientInvertedBodies).
 /// Holes, self-intersections and non-manifold edges of another origin are not repaired: the
 /// caller's check (requireClosedManifold) names them.
 ///
@@ -35,9 +37,10 @@ struct SurfaceRepairCounts {
   int reorientedTriangles = 0;  ///< triangles turned to agree with their neighbours
   int mergedBodies = 0;         ///< bodies merged into another (mergeTouchingBodies' count)
   int degenerateTriangles = 0;  ///< degenerate triangles mended (removeDegenerateTriangles)
+  int invertedBodies = 0;       ///< bodies turned outward (orientInvertedBodies)
   bool any() const {
     return weldedVertices + duplicateTriangles + reorientedTriangles + mergedBodies +
-               degenerateTriangles >
+               degenerateTriangles + invertedBodies >
            0;
   }
 };
@@ -50,7 +53,7 @@ struct RepairNote {
 };
 std::vector<RepairNote> describeRepairs(const SurfaceRepairCounts& counts);
 
-/// The repairs 0-4 above, in that order; the surface is changed only by the repairs done.
+/// The repairs 0-5 above, in that order; the surface is changed only by the repairs done.
 SurfaceRepairCounts repairSurface(TriangleSurface& surface);
 
 /// Repair 0: where the surface has open edges, welds each of their vertices with those within
@@ -85,6 +88,18 @@ int orientConsistently(TriangleSurface& surface);
 /// left).
 /// O(F log F) (the checks) + O(D log D).
 int removeDegenerateTriangles(TriangleSurface& surface);
+
+/// Repair 5: a closed, consistently oriented surface whose shells (edge-connected pieces) do
+/// not all face the same way: each shell inside no other one (a body) that faces inward, while
+/// another body faces outward, is turned, with every shell inside it (its cavities and what
+/// they hold). Such a body cancels the others' volume (two equal spheres, one inside out:
+/// "encloses no volume") or makes TetGen's regions winding number -1. Shells inside others are
+/// left as they are (an outward one there is an embedded body, solid; an inward one a cavity),
+/// and a surface whose bodies all face inward is left to orientOutward (SurfaceCheck.h), which
+/// turns it whole. Nesting by the winding number of one point of the shell (its largest
+/// triangle's centroid) within the shells whose bounding box holds it. Returns the bodies
+/// turned. O(F) for one shell; O(F + sum over nested pairs of their triangles) otherwise.
+int orientInvertedBodies(TriangleSurface& surface);
 
 /// The cyclic order of a triangle's vertices: true when, from its smallest vertex id, the next
 /// id is the smaller of the other two. Two triangles on the same vertices run the same way

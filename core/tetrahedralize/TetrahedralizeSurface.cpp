@@ -116,21 +116,6 @@ double meanUniqueEdgeLength(const TetMesh& mesh) {
   return sum / static_cast<double>(edges.size());
 }
 
-// Generalized winding number of a closed outward surface at q: 1 inside the solid, 0 outside
-// (and in cavities). Solid angle of each triangle by Van Oosterom & Strackee (1983).
-double windingNumber(const TriangleSurface& surface, const Vec3& q) {
-  double total = 0.0;
-  for (const auto& t : surface.triangles) {
-    const Vec3 a = surface.points[t[0]] - q, b = surface.points[t[1]] - q,
-               c = surface.points[t[2]] - q;
-    const double la = a.norm(), lb = b.norm(), lc = c.norm();
-    const double numerator = a.dot(b.cross(c));
-    const double denominator = la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb;
-    total += 2.0 * std::atan2(numerator, denominator);
-  }
-  return total / (4.0 * M_PI);
-}
-
 struct RegionSummary {
   int removedRegions = 0;      // regions with winding number 0 (cavities), dropped
   double windingVolume = 0.0;  // sum over all tets of winding number * volume (mm^3)
@@ -291,7 +276,9 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     report = requireClosedManifold(surface);
   }
   // TetGen ignores facet orientation, but the cavity test (winding number) needs an outward
-  // surface.
+  // surface: a body inside out beside outward ones (which pass the check when they outweigh it),
+  // then a surface inward as a whole.
+  result.repairs.invertedBodies += orientInvertedBodies(surface);
   result.flippedSurfaceTriangles = orientOutward(surface);
   // Closed bodies that cross each other (an assembly exported as it is) are one solid: their
   // union, which TetGen accepts (it refuses the crossing facets).
@@ -300,7 +287,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     // The union's cuts can leave slivers (two mirror-image spheres: 4 of area ~0).
     result.repairs.degenerateTriangles += removeDegenerateTriangles(surface);
   }
-  const double inputVolume = result.repairs.mergedBodies > 0
+  const double inputVolume = result.repairs.mergedBodies > 0 || result.repairs.invertedBodies > 0
                                  ? std::abs(requireClosedManifold(surface).signedVolume)
                                  : std::abs(report.signedVolume);
   result.enclosedVolume = inputVolume;

@@ -205,3 +205,57 @@ TEST(SurfaceRepair, ATinyWellShapedTriangleIsCollapsed) {
     EXPECT_NEAR(after.signedVolume, 27000.0, 1e-6);
   }
 }
+
+namespace {
+
+/// `body` appended to `to`, turned inside out when `inward`.
+void append(TriangleSurface& to, const TriangleSurface& body, bool inward) {
+  const int offset = static_cast<int>(to.points.size());
+  to.points.insert(to.points.end(), body.points.begin(), body.points.end());
+  for (auto t : body.triangles) {
+    to.triangles.push_back({t[0] + offset, inward ? t[2] + offset : t[1] + offset,
+                            inward ? t[1] + offset : t[2] + offset});
+  }
+}
+
+}  // namespace
+
+TEST(SurfaceRepair, ABodyWrittenInsideOutIsTurnedOutward) {
+  // Two equal balls, the second inside out: their volumes cancel ("encloses no volume").
+  const TriangleSurface ball = sphereSurface(Vec3(0, 0, 10), 10, 3);
+  const double v = checkSurface(ball).signedVolume;
+  TriangleSurface s;
+  append(s, ball, false);
+  append(s, sphereSurface(Vec3(30, 0, 10), 10, 3), true);
+  EXPECT_THROW(requireClosedManifold(s), GeoLatticeError);
+  const SurfaceRepairCounts counts = repairSurface(s);
+  EXPECT_EQ(counts.invertedBodies, 1);
+  EXPECT_NEAR(requireClosedManifold(s).signedVolume, 2 * v, 1e-9 * v);
+  // A hollow ball written outward (its cavity's wall inward) beside the same written inside out
+  // as a whole: the second is turned with its cavity, the first left as it is.
+  const TriangleSurface cavity = sphereSurface(Vec3(0, 0, 10), 6, 3);
+  const double shell = v - checkSurface(cavity).signedVolume;
+  TriangleSurface hollow;
+  append(hollow, ball, false);
+  append(hollow, cavity, true);
+  TriangleSurface pair;
+  append(pair, hollow, false);
+  TriangleSurface moved = hollow;
+  for (Vec3& p : moved.points) {
+    p.x() += 30;
+  }
+  append(pair, moved, true);
+  EXPECT_EQ(orientInvertedBodies(pair), 1);
+  EXPECT_NEAR(checkSurface(pair).signedVolume, 2 * shell, 1e-9 * v);
+  EXPECT_EQ(orientInvertedBodies(pair), 0);
+  // A body inside another written outward (an embedded body, solid) and a surface inward as a
+  // whole (orientOutward's case) are left as they are.
+  TriangleSurface embedded;
+  append(embedded, ball, false);
+  append(embedded, cavity, false);
+  EXPECT_EQ(orientInvertedBodies(embedded), 0);
+  TriangleSurface inward;
+  append(inward, hollow, true);
+  EXPECT_EQ(orientInvertedBodies(inward), 0);
+  EXPECT_LT(checkSurface(inward).signedVolume, 0);
+}
