@@ -31,7 +31,8 @@ std::vector<std::string> reportSurfaceRepairs(vtkDataObject* oriented, vtkDataOb
   std::vector<std::string> notes;
   for (const RepairNote& note : describeRepairs(repairs)) {
     const std::string where = "report.json mesh." + note.reportKey;
-    notes.push_back(note.text.back() == ')'  // "(... fewer bodies)" -> "(...; report.json ...)"
+    notes.push_back(note.text.back() ==
+                            ')'  // "(2 fewer bodies)" -> "(2 fewer bodies; report.json ...)"
                         ? note.text.substr(0, note.text.size() - 1) + "; " + where + ")"
                         : note.text + " (" + where + ")");
   }

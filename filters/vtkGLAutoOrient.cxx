@@ -58,13 +58,6 @@ vtkGLAutoOrient::vtkGLAutoOrient() {
 
 namespace {
 
-void addMode(vtkFieldData* fd, const char* mode) {
-  vtkNew<vtkStringArray> a;
-  a->SetName(gl::arrays::OrientMode);
-  a->InsertNextValue(mode);
-  fd->AddArray(a);
-}
-
 /// Output 1: the candidates as points on a sphere around the part, coloured by their scores.
 void buildCandidates(const gl::OrientResult& r, const double bounds[6], vtkPolyData* out) {
   const gl::Vec3 centre(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
@@ -166,7 +159,7 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     }
     if (this->Orient == KEEP) {
       output->ShallowCopy(input);
-      addMode(output->GetFieldData(), "keep");
+      gl::addFieldText(output->GetFieldData(), gl::arrays::OrientMode, "keep");
       return;
     }
     gl::OrientOptions options = orientOptions(this);
@@ -209,7 +202,7 @@ int vtkGLAutoOrient::RequestData(vtkInformation*, vtkInformationVector** inputVe
     }
     vtkNew<vtkFieldData> fd;
     fd->ShallowCopy(input->GetFieldData());
-    addMode(fd, "auto");
+    gl::addFieldText(fd, gl::arrays::OrientMode, "auto");
     const gl::Vec3 up = -chosen.down;
     std::vector<double> rotation(9);
     for (int i = 0; i < 3; ++i) {

@@ -21,6 +21,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkStringArray.h>
 #include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
@@ -643,6 +644,13 @@ vtkSmartPointer<vtkPoints> pointsOf(const std::vector<Vec3>& positions) {
 void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values,
                    int components) {
   fd->AddArray(doubleArray(name, values, components));
+}
+
+void addFieldText(vtkFieldData* fd, const char* name, const std::string& text) {
+  vtkNew<vtkStringArray> array;
+  array->SetName(name);
+  array->InsertNextValue(text);
+  fd->AddArray(array);
 }
 
 void addSurfaceRepairArrays(vtkFieldData* fd, const SurfaceRepairCounts& repairs) {

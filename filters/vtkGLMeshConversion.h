@@ -144,9 +144,11 @@ vtkSmartPointer<vtkIntArray> intArray(const char* name, vtkIdType n);
 /// Adds doubleArray(name, values, components) to the field data (replacing one of that name).
 void addFieldArray(vtkFieldData* fd, const char* name, const std::vector<double>& values,
                    int components = 1);
+/// Adds a one-value string array to the field data (a verdict, a mode, a reason).
+void addFieldText(vtkFieldData* fd, const char* name, const std::string& text);
 /// The repairs a surface got before meshing (core/mesh/SurfaceRepair.h; mergedBodies also counts
 /// crossing bodies united): field data MergedBodies, DuplicateTriangles, ReorientedTriangles,
-/// DegenerateTrianglesRemoved, WeldedVertices.
+/// DegenerateTrianglesRemoved, WeldedVertices, InvertedBodies.
 void addSurfaceRepairArrays(vtkFieldData* fd, const SurfaceRepairCounts& repairs);
 
 }  // namespace geolattice

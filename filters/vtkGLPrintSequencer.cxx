@@ -29,7 +29,6 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
-#include <vtkStringArray.h>
 
 #include <algorithm>
 #include <cmath>
@@ -61,10 +60,7 @@ void addSequenceFieldData(const gl::SkeletonTree& tree, const gl::PieceSequence&
                           double nozzleAngle, vtkFieldData* fd) {
   const gl::PrintSequence& seq = pieces.sequence;
   const gl::PotentialCollisions& pcg = pieces.pcg;
-  vtkNew<vtkStringArray> strategy;
-  strategy->SetName(gl::arrays::SequenceStrategy);
-  strategy->InsertNextValue(gl::sequenceStrategyName(seq.strategy));
-  fd->AddArray(strategy);
+  gl::addFieldText(fd, gl::arrays::SequenceStrategy, gl::sequenceStrategyName(seq.strategy));
   gl::addFieldArray(fd, gl::arrays::SequenceRetractions, {static_cast<double>(seq.retractions)});
   gl::addFieldArray(fd, gl::arrays::SequenceAirLength, {seq.airLength});
   gl::addFieldArray(fd, gl::arrays::SequenceForcedSteps, {static_cast<double>(seq.forcedSteps)});

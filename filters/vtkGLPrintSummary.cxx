@@ -156,10 +156,7 @@ int vtkGLPrintSummary::RequestData(vtkInformation*, vtkInformationVector** input
                     "machine program unless collisions are allowed",
                     colliding, stations, stations > 0 ? 100.0 * colliding / stations : 0.0, plate);
     }
-    vtkNew<vtkStringArray> text;
-    text->SetName(gl::arrays::SummaryVerdict);
-    text->InsertNextValue(verdict);
-    output->GetFieldData()->AddArray(text);
+    gl::addFieldText(output->GetFieldData(), gl::arrays::SummaryVerdict, verdict);
     this->UpdateProgress(1.0);
   });
 }

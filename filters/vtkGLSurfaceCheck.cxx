@@ -14,7 +14,6 @@
 #include <vtkIntArray.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
-#include <vtkStringArray.h>
 
 #include <string>
 
@@ -63,10 +62,7 @@ int vtkGLSurfaceCheck::RequestData(vtkInformation*, vtkInformationVector** input
     gl::addFieldArray(fd, gl::arrays::DegenerateTriangles,
                       {static_cast<double>(r.degenerateTriangles)});
     gl::addFieldArray(fd, gl::arrays::SignedVolume, {r.signedVolume});
-    vtkNew<vtkStringArray> text;
-    text->SetName(gl::arrays::SurfaceVerdict);
-    text->InsertNextValue(verdict);
-    fd->AddArray(text);
+    gl::addFieldText(fd, gl::arrays::SurfaceVerdict, verdict);
     this->UpdateProgress(1.0);
   });
 }

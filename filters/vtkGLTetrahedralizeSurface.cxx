@@ -16,7 +16,6 @@
 #include <vtkInformationVector.h>
 #include <vtkIntArray.h>
 #include <vtkNew.h>
-#include <vtkStringArray.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkUnstructuredGrid.h>
@@ -55,12 +54,6 @@ double radiusEdgeRatio(const gl::Vec3& a, const gl::Vec3& b, const gl::Vec3& c, 
   return radius / shortest;
 }
 
-void addValue(vtkFieldData* fd, const char* name, double value) {
-  vtkNew<vtkDoubleArray> array;
-  array->SetName(name);
-  array->InsertNextValue(value);
-  fd->AddArray(array);
-}
 }  // namespace
 
 void vtkGLTetrahedralizeSurface::PrintSelf(ostream& os, vtkIndent indent) {
@@ -144,30 +137,32 @@ int vtkGLTetrahedralizeSurface::RequestData(vtkInformation*, vtkInformationVecto
     output->GetCellData()->AddArray(quality);
 
     vtkFieldData* fd = output->GetFieldData();
-    addValue(fd, gl::arrays::TargetEdgeLength, result.targetEdgeLength);
-    addValue(fd, gl::arrays::MeanEdgeLength, result.meanEdgeLength);
+    gl::addFieldArray(fd, gl::arrays::TargetEdgeLength, {result.targetEdgeLength});
+    gl::addFieldArray(fd, gl::arrays::MeanEdgeLength, {result.meanEdgeLength});
     vtkNew<vtkIntArray> count;
     count->SetName(gl::arrays::TetCount);
     count->InsertNextValue(result.tetCount);
     fd->AddArray(count);
-    addValue(fd, gl::arrays::TetrahedralizeSeconds, result.seconds);
-    addValue(fd, gl::arrays::InputTriangles, static_cast<double>(result.inputTriangles));
-    addValue(fd, gl::arrays::MeshedTriangles, static_cast<double>(result.meshedTriangles));
-    addValue(fd, gl::arrays::SimplificationDistance, result.simplificationDistance);
-    addValue(fd, gl::arrays::SimplificationSeconds, result.simplificationSeconds);
-    addValue(fd, gl::arrays::SimplificationEdgeLength, result.simplificationEdgeLength);
-    vtkNew<vtkStringArray> refused;
-    refused->SetName(gl::arrays::SimplificationRefused);
-    refused->InsertNextValue(result.simplificationRefused);
-    fd->AddArray(refused);
-    addValue(fd, gl::arrays::TetGenRuns,
-             static_cast<double>(result.attempts + result.tetgenRetries));
-    addValue(fd, gl::arrays::TetGenSpeculativeRun, result.speculativeRun ? 1.0 : 0.0);
-    addValue(fd, gl::arrays::TetGenSurfaceBoundCount, result.surfaceBoundCount ? 1.0 : 0.0);
-    addValue(fd, gl::arrays::RemovedFlatTets, static_cast<double>(result.removedFlatTets));
-    addValue(fd, gl::arrays::TetGenQualityBoundDropped, result.qualityBoundDropped ? 1.0 : 0.0);
+    gl::addFieldArray(fd, gl::arrays::TetrahedralizeSeconds, {result.seconds});
+    gl::addFieldArray(fd, gl::arrays::InputTriangles, {static_cast<double>(result.inputTriangles)});
+    gl::addFieldArray(fd, gl::arrays::MeshedTriangles,
+                      {static_cast<double>(result.meshedTriangles)});
+    gl::addFieldArray(fd, gl::arrays::SimplificationDistance, {result.simplificationDistance});
+    gl::addFieldArray(fd, gl::arrays::SimplificationSeconds, {result.simplificationSeconds});
+    gl::addFieldArray(fd, gl::arrays::SimplificationEdgeLength, {result.simplificationEdgeLength});
+    gl::addFieldText(fd, gl::arrays::SimplificationRefused, result.simplificationRefused);
+    gl::addFieldArray(fd, gl::arrays::TetGenRuns,
+                      {static_cast<double>(result.attempts + result.tetgenRetries)});
+    gl::addFieldArray(fd, gl::arrays::TetGenSpeculativeRun, {result.speculativeRun ? 1.0 : 0.0});
+    gl::addFieldArray(fd, gl::arrays::TetGenSurfaceBoundCount,
+                      {result.surfaceBoundCount ? 1.0 : 0.0});
+    gl::addFieldArray(fd, gl::arrays::RemovedFlatTets,
+                      {static_cast<double>(result.removedFlatTets)});
+    gl::addFieldArray(fd, gl::arrays::TetGenQualityBoundDropped,
+                      {result.qualityBoundDropped ? 1.0 : 0.0});
     gl::addSurfaceRepairArrays(fd, result.repairs);
-    addValue(fd, gl::arrays::CavityRegions, static_cast<double>(result.removedCavityRegions));
+    gl::addFieldArray(fd, gl::arrays::CavityRegions,
+                      {static_cast<double>(result.removedCavityRegions)});
     for (const gl::RepairNote& note : gl::describeRepairs(result.repairs)) {
       vtkWarningMacro(<< note.text);
     }

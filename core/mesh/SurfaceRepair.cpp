@@ -378,48 +378,40 @@ int orientInvertedBodies(TriangleSurface& surface) {
 }
 
 std::vector<RepairNote> describeRepairs(const SurfaceRepairCounts& c) {
-  auto plural = [](int n, const char* one, const char* many) {
-    return std::to_string(n) + (n == 1 ? one : many);
+  // Each repair's sentence: the words before its count, after it for one and for many, the rest.
+  struct Phrase {
+    int count;
+    const char *before, *one, *many, *rest, *reportKey;
+  };
+  const Phrase phrases[] = {
+      {c.weldedVertices, "", " vertex", " vertices",
+       " of the surface welded across seams as wide as rounding (open edges whose two sides "
+       "differ in the last digits, as float32 STL corners do)",
+       "welded_vertices"},
+      {c.mergedBodies, "bodies of the surface touch or cross each other; meshed as their union (",
+       " fewer body)", " fewer bodies)", "", "merged_bodies"},
+      {c.duplicateTriangles, "", " triangle of the surface repeats",
+       " triangles of the surface repeat",
+       " another one (the same face twice); meshed without the copies", "duplicate_triangles"},
+      {c.reorientedTriangles, "", " triangle of the surface ran against its neighbours",
+       " triangles of the surface ran against their neighbours", "; turned to agree with them",
+       "reoriented_triangles"},
+      {c.invertedBodies, "", " body of the surface was", " bodies of the surface were",
+       " written inside out (its triangles facing inward) beside bodies facing outward; turned "
+       "outward",
+       "inverted_bodies"},
+      {c.degenerateTriangles, "", " degenerate triangle", " degenerate triangles",
+       " of the surface (area ~0, e.g. marching-cubes slivers) mended by collapsing or flipping "
+       "an edge",
+       "degenerate_triangles"},
   };
   std::vector<RepairNote> notes;
-  if (c.weldedVertices > 0) {
-    notes.push_back({plural(c.weldedVertices, " vertex", " vertices") +
-                         " of the surface welded across seams as wide as rounding (open edges "
-                         "whose two sides differ in the last digits, as float32 STL corners do)",
-                     "welded_vertices"});
-  }
-  if (c.mergedBodies > 0) {
-    notes.push_back({"bodies of the surface touch or cross each other; meshed as their union (" +
-                         std::to_string(c.mergedBodies) + " fewer bodies)",
-                     "merged_bodies"});
-  }
-  if (c.duplicateTriangles > 0) {
-    notes.push_back({plural(c.duplicateTriangles, " triangle of the surface repeats",
-                            " triangles of the surface repeat") +
-                         " another one (the same face twice); meshed without the copies",
-                     "duplicate_triangles"});
-  }
-  if (c.reorientedTriangles > 0) {
-    notes.push_back(
-        {plural(c.reorientedTriangles,
-                " triangle of the surface ran against its neighbours; turned to agree with them",
-                " triangles of the surface ran against their neighbours; turned to agree with "
-                "them"),
-         "reoriented_triangles"});
-  }
-  if (c.invertedBodies > 0) {
-    notes.push_back(
-        {plural(c.invertedBodies, " body of the surface was", " bodies of the surface were") +
-             " written inside out (its triangles facing inward) beside bodies facing "
-             "outward; turned outward",
-         "inverted_bodies"});
-  }
-  if (c.degenerateTriangles > 0) {
-    notes.push_back(
-        {plural(c.degenerateTriangles, " degenerate triangle", " degenerate triangles") +
-             " of the surface (area ~0, e.g. marching-cubes slivers) mended by "
-             "collapsing or flipping an edge",
-         "degenerate_triangles"});
+  for (const Phrase& p : phrases) {
+    if (p.count > 0) {
+      notes.push_back(
+          {p.before + std::to_string(p.count) + (p.count == 1 ? p.one : p.many) + p.rest,
+           p.reportKey});
+    }
   }
   return notes;
 }
