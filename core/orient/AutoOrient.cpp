@@ -498,7 +498,7 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
     TetrahedralizeResult coarser;
     try {
       coarser = tetrahedralizeSurface(simplified.triangles.empty() ? surface : simplified, longer);
-    } catch (const GeoLatticeError& e) {
+    } catch (const GeoLatticeError&) {
       break;
     }
     if (coarser.mesh.tets.size() >= tets.mesh.tets.size() ||
