@@ -211,6 +211,22 @@ LatticeOptions phases(double a, double b) {
   return o;
 }
 
+/// The lattice at phases (a, b) of the 20 x 20 x 30 mm box sliced at mid-cell heights (2 mm
+/// cells, layers at t = 0.5: 30 of them), checked as a rectangular 4 mm grid and printed under
+/// `label`.
+struct BoxGrid {
+  LatticeGraph graph;
+  GridReport report;
+};
+BoxGrid midCellBoxGrid(double a, double b, const char* label) {
+  const CurvedLayers layers = sliceBox(boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox), 2.0, 1.0);
+  EXPECT_EQ(layers.layerValues.size(), 30u);
+  BoxGrid grid{buildLatticeGraph(layers, phases(a, b)), {}};
+  grid.report = expectRectangularGrid(grid.graph, 4.0, a, b);
+  printGrid(label, grid.report, grid.graph);
+  return grid;
+}
+
 }  // namespace
 
 // Layers through the tet vertices (z = 4k with 4 mm cells): every layer mesh is the 10 x 10 grid
@@ -231,23 +247,14 @@ TEST(LatticeInfill, BoxGridWithIsolinesAlongLayerMeshEdges) {
 
 // Layers at mid-cell heights (t = 0.5 exactly, 2 mm cells): levels y = 4k hit layer points.
 TEST(LatticeInfill, BoxGridWithLevelsThroughLayerPoints) {
-  const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
-  const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
-  ASSERT_EQ(layers.layerValues.size(), 30u);
-  const LatticeGraph g = buildLatticeGraph(layers);
-  const GridReport r = expectRectangularGrid(g, 4.0, 0.0, 0.0);
-  printGrid("box, mid-cell layers, levels through layer points", r, g);
+  const auto [g, r] = midCellBoxGrid(0.0, 0.0, "box, mid-cell layers, levels through layer points");
   EXPECT_EQ(r.crossingsPerLayer, 81);
   EXPECT_GT(g.stats.pointCrossings, 0);
 }
 
 // With phases the levels miss every layer point and edge: 10 x 10 lines.
 TEST(LatticeInfill, BoxGridWithPhaseAvoidingExactHits) {
-  const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
-  const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
-  const LatticeGraph g = buildLatticeGraph(layers, phases(1.3, 2.1));
-  const GridReport r = expectRectangularGrid(g, 4.0, 1.3, 2.1);
-  printGrid("box, phase (1.3, 2.1)", r, g);
+  const auto [g, r] = midCellBoxGrid(1.3, 2.1, "box, phase (1.3, 2.1)");
   EXPECT_EQ(r.crossingsPerLayer, 100);
   EXPECT_EQ(g.stats.pointCrossings, 0);
   EXPECT_EQ(g.stats.edgeCrossings, 0);
@@ -258,12 +265,9 @@ TEST(LatticeInfill, BoxGridWithPhaseAvoidingExactHits) {
 // α-lines along layer-mesh edges (phase 0), β-lines through edge interiors (phase 1.3): each
 // crossing is the β-point on the edge the α-segment runs along.
 TEST(LatticeInfill, BoxGridWithOneFieldAlongEdgesAndTheOtherGeneric) {
-  const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
-  const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
   for (const auto& [pa, pb] : {std::pair{0.0, 1.3}, std::pair{1.3, 0.0}}) {
-    const LatticeGraph g = buildLatticeGraph(layers, phases(pa, pb));
-    const GridReport r = expectRectangularGrid(g, 4.0, pa, pb);
-    printGrid(pa == 0 ? "box, phase (0, 1.3)" : "box, phase (1.3, 0)", r, g);
+    const auto [g, r] =
+        midCellBoxGrid(pa, pb, pa == 0 ? "box, phase (0, 1.3)" : "box, phase (1.3, 0)");
     EXPECT_EQ(r.crossingsPerLayer, 90);
     EXPECT_EQ(g.stats.pointCrossings, 0);
   }
@@ -272,11 +276,7 @@ TEST(LatticeInfill, BoxGridWithOneFieldAlongEdgesAndTheOtherGeneric) {
 // Phase 1: the crossings (odd x, odd y) are the centres of the 2 mm cells, which are layer points
 // (midpoints of the Kuhn cells' main diagonals).
 TEST(LatticeInfill, BoxGridWithCrossingsOnInteriorLayerPoints) {
-  const BoxFields b = boxFields(20, 20, 30, kAlphaOfBox, kBetaOfBox);
-  const CurvedLayers layers = sliceBox(b, 2.0, 1.0);
-  const LatticeGraph g = buildLatticeGraph(layers, phases(1.0, 1.0));
-  const GridReport r = expectRectangularGrid(g, 4.0, 1.0, 1.0);
-  printGrid("box, phase (1, 1)", r, g);
+  const auto [g, r] = midCellBoxGrid(1.0, 1.0, "box, phase (1, 1)");
   EXPECT_EQ(r.crossingsPerLayer, 100);
   EXPECT_EQ(g.stats.pointCrossings, 100 * 30);
 }
