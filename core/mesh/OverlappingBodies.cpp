@@ -243,26 +243,15 @@ int dropInnerWalls(TriangleSurface& surface) {
   }
   std::vector<int> label;
   const int count = patches.labels(label);
-  std::vector<std::array<int, 3>> kept;
+  TriangleSurface kept;
+  kept.points = std::move(surface.points);
   for (size_t t = 0; t < surface.triangles.size(); ++t) {
     if (!dropped[t]) {
-      kept.push_back(surface.triangles[t]);
+      kept.triangles.push_back(surface.triangles[t]);
     }
   }
   // The walls' inner vertices go too: only the triangles' vertices are kept.
-  std::vector<int> newId(surface.points.size(), -1);
-  TriangleSurface compact;
-  for (auto t : kept) {
-    for (int& v : t) {
-      if (newId[v] < 0) {
-        newId[v] = static_cast<int>(compact.points.size());
-        compact.points.push_back(surface.points[v]);
-      }
-      v = newId[v];
-    }
-    compact.triangles.push_back(t);
-  }
-  surface = std::move(compact);
+  surface = withoutUnusedPoints(kept);
   return count;
 }
 

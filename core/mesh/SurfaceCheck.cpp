@@ -205,4 +205,23 @@ double windingNumber(const TriangleSurface& surface, const Vec3& q,
   return total / (4.0 * M_PI);
 }
 
+TriangleSurface withoutUnusedPoints(const TriangleSurface& surface) {
+  TriangleSurface out;
+  std::vector<int> newId(surface.points.size(), -1);
+  out.triangles.reserve(surface.triangles.size());
+  for (const auto& t : surface.triangles) {
+    std::array<int, 3> tri;
+    for (int k = 0; k < 3; ++k) {
+      int& id = newId[t[k]];
+      if (id < 0) {
+        id = static_cast<int>(out.points.size());
+        out.points.push_back(surface.points[t[k]]);
+      }
+      tri[k] = id;
+    }
+    out.triangles.push_back(tri);
+  }
+  return out;
+}
+
 }  // namespace geolattice

@@ -64,6 +64,10 @@ SurfaceCheckReport requireClosedManifold(const TriangleSurface& surface);
 /// triangles flipped (0 when already outward). Call after requireClosedManifold().
 int orientOutward(TriangleSurface& surface);
 
+/// @brief The surface with only the points its triangles use, renumbered in order of first use
+/// (the triangles as they are, on the new numbers). O(F).
+TriangleSurface withoutUnusedPoints(const TriangleSurface& surface);
+
 /// @brief Generalized winding number at q of the surface's triangles (of `triangles` only, when
 /// given): 1 inside a closed outward shell, 0 outside it, -1 inside an inward one; sums over
 /// nested shells. Solid angles by Van Oosterom & Strackee (1983). O(triangles).

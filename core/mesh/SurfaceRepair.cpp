@@ -75,23 +75,15 @@ int weldOpenSeams(TriangleSurface& surface) {
   if (welded == 0) {
     return 0;
   }
-  TriangleSurface out;
-  std::vector<int> newId(surface.points.size(), -1);
+  TriangleSurface welds;
+  welds.points = surface.points;
   for (const auto& t : surface.triangles) {
     const std::array<int, 3> r{weld.find(t[0]), weld.find(t[1]), weld.find(t[2])};
-    if (r[0] == r[1] || r[1] == r[2] || r[0] == r[2]) {
-      continue;  // collapsed onto an edge of the seam
+    if (r[0] != r[1] && r[1] != r[2] && r[0] != r[2]) {  // else collapsed onto an edge of the seam
+      welds.triangles.push_back(r);
     }
-    std::array<int, 3> u{};
-    for (int k = 0; k < 3; ++k) {
-      if (newId[r[k]] < 0) {
-        newId[r[k]] = static_cast<int>(out.points.size());
-        out.points.push_back(surface.points[r[k]]);
-      }
-      u[k] = newId[r[k]];
-    }
-    out.triangles.push_back(u);
   }
+  TriangleSurface out = withoutUnusedPoints(welds);
   const SurfaceCheckReport after = checkSurface(out);
   if (after.boundaryEdges >= before.boundaryEdges ||
       after.nonManifoldEdges > before.nonManifoldEdges) {

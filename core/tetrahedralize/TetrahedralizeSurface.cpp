@@ -181,25 +181,6 @@ RegionSummary classifyRegions(const TriangleSurface& surface, TetGenOutput& out)
   return summary;
 }
 
-TriangleSurface withoutUnusedPoints(const TriangleSurface& input) {
-  TriangleSurface out;
-  std::vector<int> newId(input.points.size(), -1);
-  out.triangles.reserve(input.triangles.size());
-  for (const auto& t : input.triangles) {
-    std::array<int, 3> tri;
-    for (int k = 0; k < 3; ++k) {
-      int& id = newId[t[k]];
-      if (id < 0) {
-        id = static_cast<int>(out.points.size());
-        out.points.push_back(input.points[t[k]]);
-      }
-      tri[k] = id;
-    }
-    out.triangles.push_back(tri);
-  }
-  return out;
-}
-
 }  // namespace
 
 double automaticEdgeLength(double enclosedVolume, int targetTets) {
