@@ -20,8 +20,8 @@
 ///
 /// Used before meshing (TetrahedralizeSurface), before the orientation search (GL Auto Orient)
 /// and before a pedestal is added (Pedestal), so each sees the same solid.
-/// Cost: one checkSurface (O(F log F)) when nothing is wrong; each repair O(F) (the union:
-/// OverlappingBodies.h).
+/// Cost: one checkSurface (O(F log F)) and one labelling of the shells (O(F): 0.5 s on 1M
+/// triangles) when nothing is wrong; each repair O(F) (the union: OverlappingBodies.h).
 #include "mesh/TetMesh.h"
 
 #include <array>
