@@ -257,9 +257,14 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     report = requireClosedManifold(surface);
   }
   // TetGen ignores facet orientation, but the cavity test (winding number) needs an outward
-  // surface: a body inside out beside outward ones (which pass the check when they outweigh it),
-  // then a surface inward as a whole.
-  result.repairs.invertedBodies += orientInvertedBodies(surface);
+  // surface: a body inside out beside outward ones (they pass the check when they outweigh it;
+  // repairSurface above has turned it when the check failed), then a surface inward as a whole.
+  if (!result.repairs.any()) {
+    result.repairs.invertedBodies = orientInvertedBodies(surface);
+    if (result.repairs.invertedBodies > 0) {
+      report = requireClosedManifold(surface);
+    }
+  }
   result.flippedSurfaceTriangles = orientOutward(surface);
   // Closed bodies that cross each other (an assembly exported as it is) are one solid: their
   // union, which TetGen accepts (it refuses the crossing facets).
@@ -268,7 +273,7 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
     // The union's cuts can leave slivers (two mirror-image spheres: 4 of area ~0).
     result.repairs.degenerateTriangles += removeDegenerateTriangles(surface);
   }
-  const double inputVolume = result.repairs.mergedBodies > 0 || result.repairs.invertedBodies > 0
+  const double inputVolume = result.repairs.mergedBodies > 0
                                  ? std::abs(requireClosedManifold(surface).signedVolume)
                                  : std::abs(report.signedVolume);
   result.enclosedVolume = inputVolume;
