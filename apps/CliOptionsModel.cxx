@@ -92,8 +92,9 @@ void addModelOptions(std::vector<CliOption>& t) {
                }});
   t.push_back({"--orient-tries", "N", orient,
                "with --orient auto, when the best candidate's toolpath collides, run up\n"
-               "to N candidates of the search and the placement through the toolpath\n"
-               "and print the one that collides least (1 = the search's best only)",
+               "to N candidates of the search (it scores at least N at the print's\n"
+               "resolution) and the placement through the toolpath and print the one\n"
+               "that collides least (1 = the search's best only)",
                "GLPrintPart.OrientTries",
                [](P& p, RunOptions&, const std::string& v) {
                  p.OrientationTries = static_cast<int>(wholeNumber("--orient-tries", v, 1, 20));

@@ -110,6 +110,9 @@ void GLPrintPipeline::MatchOrientationToPrint() {
       std::min(this->LatticeInfill->GetAlphaWidth(), this->LatticeInfill->GetBetaWidth()));
   this->Orientation->SetRefineStrategy(this->Sequencer->GetStrategy());
   this->Orientation->SetMaxAxisTilt(this->Planner->GetMaxAxisTilt());
+  // ChooseOrientationByToolpath runs refined candidates only: refine as many as it may try.
+  this->Orientation->SetRefineCandidates(
+      std::max(geolattice::OrientOptions{}.refineCandidates, this->OrientationTries));
 }
 
 std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationByToolpath(

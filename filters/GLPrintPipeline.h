@@ -89,7 +89,8 @@ public:
 
   /// Gives the orientation search's refinement the print's resolution and order: the slicer's
   /// layer interval, the lattice's (smaller) width, the sequencer's strategy and the planner's
-  /// largest axis tilt. Call after
+  /// largest axis tilt, and refines at least as many candidates as OrientationTries (only
+  /// refined ones are tried). Call after
   /// setting parameters, before updating; it modifies nothing when they already match or the
   /// orientation is Keep (then a print setting re-runs no orientation).
   void MatchOrientationToPrint();

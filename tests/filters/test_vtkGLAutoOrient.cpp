@@ -69,6 +69,20 @@ TEST(vtkGLAutoOrient, ACandidateRankRePlacesThePartFromTheCachedSearch) {
             seconds);
 }
 
+TEST(vtkGLAutoOrient, AsManyCandidatesAreRefinedAsTheToolpathMayTry) {
+  // Only refined candidates are tried, so --orient-tries 12 must refine 12 (it refined the
+  // default 4 and tried 5 on topopt); fewer tries keep the default.
+  GLPrintPipeline p;
+  p.Orientation->SetOrient(vtkGLAutoOrient::AUTO);
+  const int byDefault = geolattice::OrientOptions{}.refineCandidates;
+  p.OrientationTries = byDefault + 8;
+  p.MatchOrientationToPrint();
+  EXPECT_EQ(p.Orientation->GetRefineCandidates(), byDefault + 8);
+  p.OrientationTries = 2;
+  p.MatchOrientationToPrint();
+  EXPECT_EQ(p.Orientation->GetRefineCandidates(), byDefault);
+}
+
 TEST(vtkGLAutoOrient, TheToolpathChoosesAmongTheSearchsBestCandidates) {
   GLPrintPipeline p;
   fewCandidates(p);
