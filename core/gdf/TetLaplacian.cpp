@@ -15,13 +15,6 @@ TetOperators buildTetOperators(const TetMesh& mesh) {
   if (nv == 0 || nt == 0) {
     throw GeoLatticeError("empty mesh: no tetrahedra to build the Laplacian on");
   }
-  Eigen::AlignedBox3d box;
-  for (const Vec3& p : mesh.points) {
-    box.extend(p);
-  }
-  const double diag = box.diagonal().norm();
-  const double minVolume = 1e-12 * diag * diag * diag;
-
   TetOperators ops;
   ops.basisGradients.resize(nt);
   ops.tetVolumes.resize(nt);
@@ -41,8 +34,10 @@ TetOperators buildTetOperators(const TetMesh& mesh) {
     edges.col(1) = mesh.points[tet[2]] - p0;
     edges.col(2) = mesh.points[tet[3]] - p0;
     const double volume = edges.determinant() / 6.0;
-    if (!(volume > minVolume)) {
-      throw GeoLatticeError(std::string(volume < 0 ? "inverted" : "zero-volume") + " tet " +
+    const bool flat =
+        isFlatTet(p0, mesh.points[tet[1]], mesh.points[tet[2]], mesh.points[tet[3]], volume);
+    if (flat || !(volume > 0)) {
+      throw GeoLatticeError(std::string(flat ? "zero-volume" : "inverted") + " tet " +
                             std::to_string(t) + " (signed volume " + std::to_string(volume) +
                             " mm^3)");
     }

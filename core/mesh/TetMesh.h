@@ -3,7 +3,9 @@
 /// @brief Plain mesh containers shared by every core stage (no VTK).
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <vector>
 
@@ -56,6 +58,22 @@ inline FinitePointScan scanPoints(const std::vector<Vec3>& points) {
 /// @brief Signed volume of tet (a, b, c, d): positive for positive orientation.
 inline double signedTetVolume(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   return (b - a).cross(c - a).dot(d - a) / 6.0;
+}
+
+/// A tet is flat (holds no volume: its corners in one plane, or a corner repeated) when
+/// |volume| < kFlatTetRatio * (its longest edge)^3, about 1e-5 of a regular tet's volume. The
+/// bound is relative to the tet's own size, not the part's: TetGen's 0.02 mm tets where a
+/// pedestal meets a tilted part are well shaped (|volume| ~ 0.04 edge^3), and the rounding of a
+/// volume computed from coordinates of magnitude D is ~1e-16 D edge^2, far below the bound.
+constexpr double kFlatTetRatio = 1e-6;
+
+/// Whether a tet with these corners and signed volume is flat (a NaN volume, or all corners in
+/// one point, count as flat).
+inline bool isFlatTet(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d, double volume) {
+  const double longest2 =
+      std::max({(b - a).squaredNorm(), (c - a).squaredNorm(), (d - a).squaredNorm(),
+                (c - b).squaredNorm(), (d - b).squaredNorm(), (d - c).squaredNorm()});
+  return !(std::abs(volume) > kFlatTetRatio * longest2 * std::sqrt(longest2));
 }
 
 }  // namespace geolattice

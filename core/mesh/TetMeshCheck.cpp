@@ -41,8 +41,6 @@ TetMeshCheckReport checkTetMesh(const TetMesh& mesh) {
   const FinitePointScan scan = scanPoints(mesh.points);
   r.nonFinitePoints = scan.nonFinite;
   r.firstNonFinitePoint = scan.firstNonFinite;
-  const double diag = scan.diagonal();
-  r.zeroVolumeTolerance = 1e-12 * diag * diag * diag;
 
   std::vector<char> used(mesh.points.size(), 0);
   bool allInRange = true;
@@ -58,12 +56,13 @@ TetMeshCheckReport checkTetMesh(const TetMesh& mesh) {
     for (int v : tet) {
       used[v] = 1;
     }
-    const double vol = signedTetVolume(mesh.points[tet[0]], mesh.points[tet[1]],
-                                       mesh.points[tet[2]], mesh.points[tet[3]]);
+    const Vec3 &a = mesh.points[tet[0]], &b = mesh.points[tet[1]], &c = mesh.points[tet[2]],
+               &d = mesh.points[tet[3]];
+    const double vol = signedTetVolume(a, b, c, d);
     if (std::isfinite(vol)) {
       r.totalVolume += vol;
     }
-    if (!(std::abs(vol) >= r.zeroVolumeTolerance)) {  // NaN counts as zero volume
+    if (isFlatTet(a, b, c, d, vol)) {
       if (r.zeroVolumeTets++ == 0) {
         r.firstZeroVolumeTet = t;
       }
@@ -157,16 +156,14 @@ int orientTetsPositively(TetMesh& mesh) {
 }
 
 size_t removeFlatTets(TetMesh& mesh) {
-  const double tolerance = checkTetMesh(mesh).zeroVolumeTolerance;
   const size_t before = mesh.tets.size();
-  mesh.tets.erase(
-      std::remove_if(mesh.tets.begin(), mesh.tets.end(),
-                     [&](const std::array<int, 4>& t) {
-                       return !(std::abs(signedTetVolume(mesh.points[t[0]], mesh.points[t[1]],
-                                                         mesh.points[t[2]], mesh.points[t[3]])) >=
-                                tolerance);
-                     }),
-      mesh.tets.end());
+  mesh.tets.erase(std::remove_if(mesh.tets.begin(), mesh.tets.end(),
+                                 [&](const std::array<int, 4>& t) {
+                                   const Vec3 &a = mesh.points[t[0]], &b = mesh.points[t[1]],
+                                              &c = mesh.points[t[2]], &d = mesh.points[t[3]];
+                                   return isFlatTet(a, b, c, d, signedTetVolume(a, b, c, d));
+                                 }),
+                  mesh.tets.end());
   const size_t removed = before - mesh.tets.size();
   if (removed > 0) {  // a point only flat tets used goes too
     std::vector<int> id(mesh.points.size(), -1);

@@ -18,15 +18,14 @@ struct TetMeshCheckReport {
   int firstOutOfRangeTet = -1;
   int nonFinitePoints = 0;  ///< points with a NaN or infinite coordinate
   int firstNonFinitePoint = -1;
-  int invertedTets = 0;  ///< signed volume <= -zeroVolumeTolerance
+  int invertedTets = 0;  ///< negative signed volume, not flat
   int firstInvertedTet = -1;
-  int zeroVolumeTets = 0;  ///< |signed volume| < zeroVolumeTolerance (repeated vertices included)
+  int zeroVolumeTets = 0;  ///< flat tets (isFlatTet in TetMesh.h; repeated vertices included)
   int firstZeroVolumeTet = -1;
   int nonManifoldFaces = 0;  ///< triangles shared by more than two tets
   int unusedPoints = 0;  ///< vertices referenced by no tet (they make the FEM Laplacian singular)
   int firstUnusedPoint = -1;
-  double totalVolume = 0.0;          ///< sum of signed tet volumes (mm^3)
-  double zeroVolumeTolerance = 0.0;  ///< 1e-12 * (bounding-box diagonal)^3 (mm^3)
+  double totalVolume = 0.0;  ///< sum of signed tet volumes (mm^3)
 
   /// True when every count above is zero and the mesh is non-empty.
   bool isValid() const;
@@ -55,7 +54,7 @@ void requireTetVertexIndicesInRange(const TetMesh& mesh);
 int orientTetsPositively(TetMesh& mesh);
 
 /// @brief Documented repair of TetGen output: drops the tets whose four corners lie in one plane
-/// (|volume| below checkTetMesh's zero-volume tolerance; they hold no volume) and the points no
+/// (isFlatTet in TetMesh.h: they hold no volume) and the points no
 /// other tet uses. Returns the number of tets dropped.
 size_t removeFlatTets(TetMesh& mesh);
 

@@ -1,4 +1,5 @@
 #include "common/Error.h"
+#include "gdf/TetLaplacian.h"
 #include "mesh/AnalyticShapes.h"
 #include "mesh/TetMeshCheck.h"
 
@@ -117,6 +118,33 @@ TEST(TetMeshCheck, EmptyMeshIsRejected) {
   EXPECT_FALSE(checkTetMesh(pointsOnly).isValid());
   EXPECT_NE(errorOf([&] { requireValidTetMesh(pointsOnly); }).find("empty tet mesh"),
             std::string::npos);
+}
+
+TEST(TetMeshCheck, FlatnessIsRelativeToTheTetsOwnSize) {
+  // A 100 mm box and, beside it, a 0.02 mm one: the tiny tets are well shaped (TetGen makes
+  // such where a pedestal meets a tilted part). A bound relative to the part's size (1e-12 of
+  // its diagonal cubed, 5e-6 mm^3 here) called all of them flat, and dropping them cut the mesh
+  // into islands ("the part has 3 separate bodies").
+  TetMesh mesh = boxTetMesh(Vec3(100, 100, 100), 2, 2, 2);
+  const TetMesh tiny = boxTetMesh(Vec3(0.02, 0.02, 0.02), 1, 1, 1);
+  const int offset = static_cast<int>(mesh.points.size());
+  for (const Vec3& p : tiny.points) {
+    mesh.points.push_back(p + Vec3(120, 0, 0));
+  }
+  for (auto t : tiny.tets) {
+    for (int& v : t) {
+      v += offset;
+    }
+    mesh.tets.push_back(t);
+  }
+  EXPECT_TRUE(checkTetMesh(mesh).isValid());
+  EXPECT_EQ(removeFlatTets(mesh), 0u);
+  EXPECT_NO_THROW(buildTetOperators(mesh));
+  // Four coplanar corners of the tiny box are still a flat tet.
+  mesh.tets.push_back({offset + 0, offset + 1, offset + 3, offset + 2});
+  EXPECT_EQ(checkTetMesh(mesh).zeroVolumeTets, 1);
+  EXPECT_NE(errorOf([&] { buildTetOperators(mesh); }).find("zero-volume tet"), std::string::npos);
+  EXPECT_EQ(removeFlatTets(mesh), 1u);
 }
 
 TEST(TetMeshCheck, FlatTetsAndTheirOwnPointsAreRemoved) {
