@@ -2,6 +2,7 @@
 // 3 mm apart (NozzleAxis +z). Printing tower A completely before tower B collides at NA 60;
 // alternating layer by layer does not. Cell and point time arrays, the output arrays, and bad input.
 #include "GLTestArrays.h"
+#include "GLTestDefaults.h"
 #include "GLTestErrorObserver.h"
 #include "GLTestProgress.h"
 
@@ -330,17 +331,10 @@ TEST(vtkGLCollisionVerifier, SkeletonEdgesMakeAncestorObstaclesUnavoidable) {
 TEST(vtkGLCollisionVerifier, DefaultsAndPrintSelf) {
   vtkNew<vtkGLCollisionVerifier> f;
   EXPECT_STREQ(f->GetTimeArrayName(), arrays::PrintOrder);
-  EXPECT_EQ(f->GetNozzle()->GetNozzleAngle(), 45.0);
-  EXPECT_EQ(f->GetNozzle()->GetNozzleLength(), 0.0);
-  EXPECT_EQ(f->GetNozzle()->GetHolderRadius(), 0.0);
-  EXPECT_EQ(f->GetNozzle()->GetTipClearance(), 0.1);
+  expectCoreNozzleDefaults(f->GetNozzle());
   EXPECT_EQ(f->GetSampleSpacing(), 1.0);
   EXPECT_EQ(f->GetMaxReported(), 20);
-  std::ostringstream os;
-  f->Print(os);
-  for (const char* text : {"TimeArrayName: PrintOrder", "NozzleAngle: 45", "MaxReported: 20"}) {
-    EXPECT_NE(os.str().find(text), std::string::npos) << text;
-  }
+  expectPrintMentions(f, {"TimeArrayName: PrintOrder", "NozzleAngle: 45", "MaxReported: 20"});
 }
 
 TEST(vtkGLCollisionVerifier, BadInputIsReported) {

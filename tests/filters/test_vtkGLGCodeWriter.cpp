@@ -1,6 +1,7 @@
 // vtkGLGCodeWriter: every move line turns the toolpath's nozzle axis onto +Z and puts the point
 // at Pivot + R (p + PartOffset) (A-C and B-C), header and footer, the results, and errors (tilt
 // limits, NaN normals, empty toolpath, unwritable path) with nothing written.
+#include "GLTestDefaults.h"
 #include "GLTestErrorObserver.h"
 #include "GLTestProgress.h"
 #include "GLTestFiles.h"
@@ -97,11 +98,7 @@ TEST(vtkGLGCodeWriter, DefaultsAndPrintSelf) {
   EXPECT_EQ(w->GetPartOffset()[2], 0.0);
   w->SetKinematicsToBC();
   EXPECT_EQ(w->GetKinematics(), vtkGLGCodeWriter::BC);
-  std::ostringstream os;
-  w->Print(os);
-  for (const char* text : {"Kinematics: 1 (B-C)", "TiltLimits: -120 120"}) {
-    EXPECT_NE(os.str().find(text), std::string::npos) << text;
-  }
+  expectPrintMentions(w, {"Kinematics: 1 (B-C)", "TiltLimits: -120 120"});
 }
 
 TEST(vtkGLGCodeWriter, MovesTurnTheAxisUpAC_BC) {

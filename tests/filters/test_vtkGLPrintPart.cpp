@@ -1,4 +1,5 @@
 // GL Print Part: the whole pipeline in one filter (issue 20, "one Apply"), on the bundled Y.
+#include "GLTestDefaults.h"
 #include "GLTestErrorObserver.h"
 
 #include "GLPrintPipeline.h"
@@ -51,12 +52,8 @@ TEST(vtkGLPrintPart, DefaultsAreThoseOfTheStageFilters) {
   EXPECT_EQ(part->GetOrient(), reference.Orientation->GetOrient());
   EXPECT_EQ(part->GetPedestalHeight(), -1.0);  // automatic: the orientation search decides
   EXPECT_EQ(reference.GetPedestalRequest(), -1.0);
-  std::ostringstream os;
-  part->Print(os);
-  for (const char* text :
-       {"LayerInterval: 0.6", "LatticeWidth: 4", "Strategy: 3", "NozzleAngle: 45"}) {
-    EXPECT_NE(os.str().find(text), std::string::npos) << text;
-  }
+  expectPrintMentions(part,
+                      {"LayerInterval: 0.6", "LatticeWidth: 4", "Strategy: 3", "NozzleAngle: 45"});
 }
 
 TEST(vtkGLPrintPart, OneUpdatePrintsTheYAndATuningRerunsOnlyTheLaterStages) {

@@ -1,6 +1,7 @@
 // vtkGLPrintSequencer: the three outputs and their arrays on a hand-built two-tower lattice (DPT
 // collides, A4 does not, as the collision verifier confirms), the end-to-end pipeline on the
 // branching Y (reader -> ... -> lattice -> skeleton -> sequencer -> verifier), and bad input.
+#include "GLTestDefaults.h"
 #include "GLTestErrorObserver.h"
 #include "GLTestTowers.h"
 #include "GLTestProgress.h"
@@ -325,22 +326,15 @@ TEST(vtkGLPrintSequencer, DefaultsAndPrintSelf) {
   EXPECT_EQ(s->GetNumberOfInputPorts(), 2);
   EXPECT_EQ(s->GetNumberOfOutputPorts(), 3);
   EXPECT_EQ(s->GetStrategy(), vtkGLPrintSequencer::BEST);
-  EXPECT_EQ(s->GetNozzle()->GetNozzleAngle(), 45.0);
-  EXPECT_EQ(s->GetNozzle()->GetNozzleLength(), 0.0);
-  EXPECT_EQ(s->GetNozzle()->GetHolderRadius(), 0.0);
-  EXPECT_EQ(s->GetNozzle()->GetTipClearance(), 0.1);
+  expectCoreNozzleDefaults(s->GetNozzle());
   EXPECT_EQ(s->GetSampleSpacing(), 1.0);
   EXPECT_EQ(s->GetRolloutCandidates(), 6);
   EXPECT_EQ(s->GetRetractionCost(), 20.0);
   EXPECT_EQ(s->GetNumberOfThreads(), 0);
   s->SetStrategy(7);
   EXPECT_EQ(s->GetStrategy(), vtkGLPrintSequencer::BEST);
-  std::ostringstream os;
-  s->Print(os);
-  for (const char* text :
-       {"Strategy: 3", "NozzleAngle: 45", "SampleSpacing: 1", "RetractionCost: 20"}) {
-    EXPECT_NE(os.str().find(text), std::string::npos) << text;
-  }
+  expectPrintMentions(s,
+                      {"Strategy: 3", "NozzleAngle: 45", "SampleSpacing: 1", "RetractionCost: 20"});
 }
 
 TEST(vtkGLPrintSequencer, BadInputIsReported) {

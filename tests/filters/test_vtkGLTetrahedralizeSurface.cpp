@@ -1,5 +1,6 @@
 #include "vtkGLTetrahedralizeSurface.h"
 
+#include "GLTestDefaults.h"
 #include "GLTestErrorObserver.h"
 #include "GLTestProgress.h"
 #include "vtkGLArrayNames.h"
@@ -285,12 +286,8 @@ TEST(vtkGLTetrahedralizeSurface, DefaultsAndPrintSelf) {
   filter->SetTargetEdgeLength(2.5);
   filter->SetTargetTetCount(20000);
   filter->SetRadiusEdgeRatio(2.0);
-  std::ostringstream os;
-  filter->Print(os);
-  for (const char* text :
-       {"TargetEdgeLength: 2.5", "TargetTetCount: 20000", "RadiusEdgeRatio: 2"}) {
-    EXPECT_NE(os.str().find(text), std::string::npos) << text;
-  }
+  expectPrintMentions(filter,
+                      {"TargetEdgeLength: 2.5", "TargetTetCount: 20000", "RadiusEdgeRatio: 2"});
 }
 
 TEST(vtkGLTetrahedralizeSurface, TargetTetCountDrivesTheAutomaticEdgeLength) {

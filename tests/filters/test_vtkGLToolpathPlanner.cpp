@@ -1,6 +1,7 @@
 // vtkGLToolpathPlanner: the documented arrays and field data on hand-built towers of unit squares
 // (exact lengths) and on the branching Y (reader -> ... -> sequencer -> planner -> verifier),
 // the print replay over time (a prefix per requested time, planned once), and bad input.
+#include "GLTestDefaults.h"
 #include "GLTestErrorObserver.h"
 #include "GLTestTowers.h"
 #include "GLTestProgress.h"
@@ -285,19 +286,11 @@ TEST(vtkGLToolpathPlanner, DefaultsAndPrintSelf) {
   EXPECT_EQ(f->GetSupportPerimeter(), 1);
   EXPECT_EQ(f->GetToothLength(), 0.0);
   EXPECT_EQ(f->GetMaxSegmentLength(), 1.0);
-  EXPECT_EQ(f->GetNozzle()->GetNozzleAngle(), 45.0);
-  EXPECT_EQ(f->GetNozzle()->GetNozzleLength(), 0.0);
-  EXPECT_EQ(f->GetNozzle()->GetHolderRadius(), 0.0);
-  EXPECT_EQ(f->GetNozzle()->GetTipClearance(), 0.1);
-  EXPECT_EQ(f->GetNozzle()->GetTipFaceRadius(), 0.5);
+  expectCoreNozzleDefaults(f->GetNozzle());
   EXPECT_EQ(f->GetMaxAxisTilt(), 30.0);
   EXPECT_EQ(f->GetTiltBlendLength(), 5.0);
-  std::ostringstream os;
-  f->Print(os);
-  for (const char* text : {"PathWidth: 0.6", "FilamentDiameter: 1.75", "SupportPerimeter: 1",
-                           "MaxAxisTilt: 30", "TipFaceRadius: 0.5", "MaxSegmentLength: 1"}) {
-    EXPECT_NE(os.str().find(text), std::string::npos) << text;
-  }
+  expectPrintMentions(f, {"PathWidth: 0.6", "FilamentDiameter: 1.75", "SupportPerimeter: 1",
+                          "MaxAxisTilt: 30", "TipFaceRadius: 0.5", "MaxSegmentLength: 1"});
 }
 
 // GL Toolpath Replay, on the planner's output (the tower fixtures above).
@@ -306,12 +299,8 @@ TEST(vtkGLToolpathReplay, DefaultsAndPrintSelf) {
   EXPECT_EQ(f->GetStepBy(), vtkGLToolpathReplay::Points);
   EXPECT_EQ(f->GetNumberOfTimeSteps(), 200);
   EXPECT_EQ(f->GetKeepUnprintedPoints(), 1);
-  std::ostringstream os;
-  f->Print(os);
-  for (const char* text :
-       {"StepBy: 0 (Points)", "NumberOfTimeSteps: 200", "KeepUnprintedPoints: 1"}) {
-    EXPECT_NE(os.str().find(text), std::string::npos) << text;
-  }
+  expectPrintMentions(f,
+                      {"StepBy: 0 (Points)", "NumberOfTimeSteps: 200", "KeepUnprintedPoints: 1"});
 }
 
 TEST(vtkGLToolpathReplay, TimeStepsReplayThePrint) {
