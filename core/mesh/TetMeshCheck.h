@@ -53,9 +53,9 @@ void requireTetVertexIndicesInRange(const TetMesh& mesh);
 /// orientations is a tangled mesh, not a convention, and requireValidTetMesh reports it).
 int orientTetsPositively(TetMesh& mesh);
 
-/// @brief Documented repair of TetGen output: drops the tets whose four corners lie in one plane
-/// (isFlatTet in TetMesh.h: they hold no volume) and the points no
-/// other tet uses. Returns the number of tets dropped.
+/// @brief Documented repair of TetGen output: drops the flat tets (isFlatTet in TetMesh.h: their
+/// corners in one plane, they hold no volume) and the points no other tet uses. Returns the
+/// number of tets dropped.
 size_t removeFlatTets(TetMesh& mesh);
 
 }  // namespace geolattice
