@@ -44,7 +44,8 @@
  *     The search stops early when a 1.3x longer edge leaves the count above 90 % of the last
  *     one: the surface sets the count (field data `TetGenSurfaceBoundCount`).
  *     A TetGen run that does not finish within its time limit (10 s + 40 us per expected
- *     tet; its refinement does not end near a knife edge or needle tip of the surface) is not
+ *     tet of the TetGen process's own CPU time, so the machine's load does not matter; its
+ *     refinement does not end near a knife edge or needle tip of the surface) is not
  *     retried at other edges: the surface is meshed without the quality and volume bounds
  *     (TetGen "pAQ", seconds), with a warning and field data `TetGenQualityBoundDropped` 1.
  *   - RadiusEdgeRatio: TetGen's quality bound -q (default 1.414, must be in [1.1, 10]; TetGen

@@ -5,10 +5,14 @@
 #include <tetgen.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstdint>
 #include <cstring>
 #include <exception>
+#include <fstream>
+#include <iterator>
 #include <new>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -238,7 +242,22 @@ struct Child {
   pid_t pid = -1;
   int fd = -1;
   int stderrFd = -1;
+  double startedAt = 0;  // steadySeconds() at the fork
 };
+
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+/// Has the child used more than `limit` CPU seconds (0 = no limit)? Its wall time stands in
+/// where /proc cannot be read.
+bool pastTimeLimit(const Child& child, double limit) {
+  if (!(limit > 0)) {
+    return false;
+  }
+  const double cpu = processCpuSeconds(child.pid);
+  return (cpu >= 0 ? cpu : steadySeconds() - child.startedAt) > limit;
+}
 
 /// Forks a child that meshes `surface` with `switches` (nullptr: tests it for intersecting
 /// facets only).
@@ -264,7 +283,7 @@ Child startChild(const TriangleSurface& surface, const char* switches) {
     runChild(job);
   }
   ::close(fds[1]);
-  return {pid, fds[0], stderrFd};
+  return {pid, fds[0], stderrFd, steadySeconds()};
 }
 
 /// Kills a child that is no longer needed and reaps it.
@@ -281,9 +300,10 @@ void killChild(Child& child) {
 
 /// Reads everything the child sends, polling the abort callback, reaps it and returns its
 /// message after the header's checks (throws the child's error as a GeoLatticeError).
-std::vector<char> finishChild(Child& child, const std::function<bool()>& shouldAbort, Header& h) {
+std::vector<char> finishChild(Child& child, const std::function<bool()>& shouldAbort, Header& h,
+                              double cpuSecondsLimit) {
   std::vector<char> data;
-  bool aborted = false;
+  bool aborted = false, timedOut = false;
   std::string readError;
   char buffer[1 << 16];
   while (true) {
@@ -295,6 +315,10 @@ std::vector<char> finishChild(Child& child, const std::function<bool()>& shouldA
     }
     if (shouldAbort && shouldAbort()) {
       aborted = true;
+      break;
+    }
+    if (pastTimeLimit(child, cpuSecondsLimit)) {
+      timedOut = true;
       break;
     }
     if (ready <= 0) {
@@ -314,7 +338,7 @@ std::vector<char> finishChild(Child& child, const std::function<bool()>& shouldA
     data.insert(data.end(), buffer, buffer + n);
   }
   ::close(child.fd);
-  if (aborted || !readError.empty()) {
+  if (aborted || timedOut || !readError.empty()) {
     ::kill(child.pid, SIGKILL);
   }
   int status = 0;
@@ -326,6 +350,10 @@ std::vector<char> finishChild(Child& child, const std::function<bool()>& shouldA
   }
   if (aborted) {
     throw GeoLatticeError("tetrahedralization aborted");
+  }
+  if (timedOut) {
+    throw TetGenTimeLimitExceeded("TetGen did not finish within its time limit (" +
+                                  std::to_string(cpuSecondsLimit) + " s of CPU time)");
   }
   if (!readError.empty()) {
     throw GeoLatticeError("lost contact with the TetGen process: " + readError);
@@ -359,6 +387,27 @@ std::vector<char> finishChild(Child& child, const std::function<bool()>& shouldA
 
 }  // namespace
 
+double processCpuSeconds(int pid) {
+  std::ifstream in("/proc/" + std::to_string(pid) + "/stat");
+  const std::string stat((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // Fields after the command name, which is in parentheses and may hold spaces: state (3rd
+  // field) ... utime (14th) stime (15th), in clock ticks.
+  const size_t close = stat.rfind(')');
+  if (close == std::string::npos) {
+    return -1.0;
+  }
+  std::istringstream fields(stat.substr(close + 1));
+  std::string field;
+  for (int i = 3; i < 14 && fields >> field; ++i) {
+  }
+  long long utime = -1, stime = -1;
+  if (!(fields >> utime >> stime) || utime < 0 || stime < 0) {
+    return -1.0;
+  }
+  const long ticks = ::sysconf(_SC_CLK_TCK);
+  return ticks > 0 ? static_cast<double>(utime + stime) / static_cast<double>(ticks) : -1.0;
+}
+
 TetGenRun::TetGenRun(const TriangleSurface& surface, const std::string& switches) {
   if (switches.find('p') == std::string::npos) {
     throw GeoLatticeError("runTetGen: switches \"" + switches + "\" lack 'p' (mesh a surface)");
@@ -367,23 +416,24 @@ TetGenRun::TetGenRun(const TriangleSurface& surface, const std::string& switches
   pid_ = child.pid;
   fd_ = child.fd;
   stderrFd_ = child.stderrFd;
+  startedAt_ = child.startedAt;
 }
 
 TetGenRun::~TetGenRun() {
   if (pid_ >= 0) {
-    Child child{pid_, fd_, stderrFd_};
+    Child child{pid_, fd_, stderrFd_, startedAt_};
     killChild(child);
   }
 }
 
-TetGenOutput TetGenRun::finish(const std::function<bool()>& shouldAbort) {
+TetGenOutput TetGenRun::finish(const std::function<bool()>& shouldAbort, double cpuSecondsLimit) {
   if (pid_ < 0) {
     throw GeoLatticeError("TetGen run read twice");
   }
-  Child child{pid_, fd_, stderrFd_};
+  Child child{pid_, fd_, stderrFd_, startedAt_};
   pid_ = -1;  // finishChild reaps it and closes its descriptors, also when it throws
   Header h{};
-  const std::vector<char> data = finishChild(child, shouldAbort, h);
+  const std::vector<char> data = finishChild(child, shouldAbort, h, cpuSecondsLimit);
   if (h.corners != 4 || h.pointCount < 0 || h.tetCount < 0) {
     throw GeoLatticeError("TetGen produced an unexpected mesh (" + std::to_string(h.corners) +
                           " corners per tet)");
@@ -417,22 +467,23 @@ TetGenOutput TetGenRun::finish(const std::function<bool()>& shouldAbort) {
 }
 
 void testForIntersectingFacets(const TriangleSurface& surface,
-                               const std::function<bool()>& shouldAbort) {
+                               const std::function<bool()>& shouldAbort, double cpuSecondsLimit) {
   Child tester = startChild(surface, nullptr);
   Header verdict{};
-  finishChild(tester, shouldAbort, verdict);
+  finishChild(tester, shouldAbort, verdict, cpuSecondsLimit);
 }
 
 TetGenOutput runTetGen(const TriangleSurface& surface, const std::string& switches,
-                       const std::function<bool()>& shouldAbort, IntersectionTest test) {
+                       const std::function<bool()>& shouldAbort, IntersectionTest test,
+                       double cpuSecondsLimit) {
   TetGenRun mesher(surface, switches);
   if (test == IntersectionTest::Run) {
     // The test in a second child beside the meshing one (on another core): its verdict comes
     // first, as if it had run before the meshing, but costs no time of its own. A failure
     // kills the mesher (its destructor).
-    testForIntersectingFacets(surface, shouldAbort);
+    testForIntersectingFacets(surface, shouldAbort, cpuSecondsLimit);
   }
-  return mesher.finish(shouldAbort);
+  return mesher.finish(shouldAbort, cpuSecondsLimit);
 }
 
 }  // namespace geolattice

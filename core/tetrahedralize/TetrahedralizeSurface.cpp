@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -346,15 +347,16 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
             : kTetGenBaseSeconds + kTetGenSecondsPerTet * result.enclosedVolume /
                                        (kGuessMeanTetVolumeOverBound * regularTetVolume(edge));
     const std::string switches = unbounded ? "pAQ" : switchesFor(edge);
-    auto started = std::chrono::steady_clock::now();
     timedOut = false;
-    const std::function<bool()> abortOrTimeout = [&] {
-      if (options.shouldAbort && options.shouldAbort()) {
-        return true;
+    // Each TetGen child gets `limit` s of its own CPU time (TetGenRunner.h: load on the machine
+    // does not change which runs finish).
+    auto mesh = [&](const std::function<TetGenOutput()>& call) {
+      try {
+        return call();
+      } catch (const TetGenTimeLimitExceeded&) {
+        timedOut = true;
+        throw;
       }
-      timedOut =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count() > limit;
-      return timedOut;
     };
     TetGenOutput out;
     try {
@@ -362,9 +364,11 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       if (ahead != startedRuns.end()) {
         const std::unique_ptr<TetGenRun> run = std::move(ahead->second);
         startedRuns.erase(ahead);
-        out = run->finish(abortOrTimeout);
+        out = mesh([&] { return run->finish(options.shouldAbort, limit); });
       } else {
-        out = runTetGen(surface, switches, abortOrTimeout, intersectionTest);
+        out = mesh([&] {
+          return runTetGen(surface, switches, options.shouldAbort, intersectionTest, limit);
+        });
       }
     } catch (const GeoLatticeError& e) {
       if (!result.simplified || (options.shouldAbort && options.shouldAbort())) {
@@ -376,7 +380,6 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       // is meshes in 3 s): mesh the input as it is, with a new time limit.
       result.simplificationRefused =
           timedOut ? "TetGen did not finish on it within its time limit" : e.what();
-      started = std::chrono::steady_clock::now();
       timedOut = false;
       surface = original;
       result.simplified = false;
@@ -384,7 +387,9 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       result.enclosedVolume = inputVolume;
       result.meshedTriangles = surface.triangles.size();
       intersectionTest = IntersectionTest::Run;
-      out = runTetGen(surface, switches, abortOrTimeout, intersectionTest);
+      out = mesh([&] {
+        return runTetGen(surface, switches, options.shouldAbort, intersectionTest, limit);
+      });
     }
     intersectionTest = IntersectionTest::Skip;  // this surface passed: not again at other edges
     if (out.mesh.tets.empty()) {

@@ -48,8 +48,10 @@ struct TetrahedralizeOptions {
   /// checked against a quarter of the edge, else the edge collapse (the default), or the edge
   /// collapse alone. simplifyFinerThan 0 turns both off.
   SimplificationMethod simplification = SimplificationMethod::IsotropicRemeshing;
-  /// Time limit of one TetGen run (s); 0 = automatic: 10 s plus 40 us per expected tet (5x the
-  /// time such a mesh takes; the unbounded run 125 us per surface triangle). A bounded run
+  /// Time limit of one TetGen run (s of the TetGen process's own CPU time, so that load on the
+  /// machine does not change which runs finish: TetGenRunner.h); 0 = automatic: 10 s plus 40 us
+  /// per expected tet (5x the time such a mesh takes; the unbounded run 125 us per surface
+  /// triangle). A bounded run
   /// past it does not finish: TetGen's refinement does not end near a knife edge or a needle
   /// tip of the surface (a 2 mm thin ellipsoid: no -q or -a run finished within 40 s), and the
   /// surface is then meshed without the bounds (TetrahedralizeResult::qualityBoundDropped).

@@ -19,10 +19,12 @@
 #include <filesystem>
 #include <cstdlib>
 #include <string>
+#include <thread>
 #include <utility>
 #include <vector>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 using namespace geolattice;
 
@@ -494,6 +496,49 @@ TEST(TetGenRunner, ReturnsRegionsWithSwitchA) {
   EXPECT_GE(out.mesh.tets.size(), 5u);
   EXPECT_EQ(out.regions.size(), out.mesh.tets.size());
   EXPECT_TRUE(runTetGen(boxSurface(Vec3(1, 1, 1), 10.0), "pQ").regions.empty());
+}
+
+TEST(TetGenRunner, TheTimeLimitCountsTheChildsCpuTimeNotItsWait) {
+  // The measure: this process's CPU time grows while it computes, not while it sleeps.
+  const double before = processCpuSeconds(::getpid());
+  ASSERT_GE(before, 0.0);
+  volatile double sink = 0;
+  const auto spinUntil = std::chrono::steady_clock::now() + std::chrono::milliseconds(300);
+  while (std::chrono::steady_clock::now() < spinUntil) {
+    sink = sink + 1;
+  }
+  const double spun = processCpuSeconds(::getpid());
+  EXPECT_GT(spun - before, 0.2);
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  EXPECT_LT(processCpuSeconds(::getpid()) - spun, 0.1);
+  // A run whose refinement takes many CPU seconds (a box for ~10M tets) is stopped at 0.3.
+  const TriangleSurface box = boxSurface(Vec3(10, 10, 10), 1.5);
+  const auto started = std::chrono::steady_clock::now();
+  const std::string message = errorOf([&] {
+    try {
+      runTetGen(box, "pq1.414a0.0001AQ", {}, IntersectionTest::Skip, 0.3);
+    } catch (const TetGenTimeLimitExceeded& e) {
+      throw GeoLatticeError(std::string("limit: ") + e.what());
+    }
+  });
+  EXPECT_TRUE(contains(message, "limit: TetGen did not finish within its time limit")) << message;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(),
+            10.0);
+  // A run that waits longer than its limit without computing (here: its parent does not read
+  // for 1 s, as on a busy machine) finishes: a wall-clock limit would have stopped it.
+  bool waited = false;
+  const TetGenOutput out = runTetGen(
+      box, "pq1.414a2AQ",
+      [&] {
+        if (!waited) {
+          waited = true;
+          std::this_thread::sleep_for(std::chrono::seconds(1));
+        }
+        return false;
+      },
+      IntersectionTest::Run, 0.5);
+  EXPECT_TRUE(waited);
+  EXPECT_GT(out.mesh.tets.size(), 100u);
 }
 
 TEST(TetGenRunner, TheIntersectionTestRunsBesideTheMeshingAndCanBeSkipped) {
