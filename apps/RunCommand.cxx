@@ -63,6 +63,7 @@ public:
       this->Finish(status);
       return status;
     } catch (const StageError& e) {
+      this->HoldNotes(false);  // the notes of the set-up that failed, before its error
       if (InterruptHandler::Interrupted()) {
         this->Report["failed"] = {{"stage", e.Stage}, {"message", "interrupted (Ctrl-C)"}};
         this->Finish(kExitInterrupted);
@@ -73,6 +74,9 @@ public:
       this->Report["failed"] = {{"stage", e.Stage}, {"message", withFlagNames(e.Message)}};
       this->Finish(kExitError);
       throw GeoLatticeError(e.Stage + ": " + withFlagNames(e.Message));
+    } catch (...) {
+      this->HoldNotes(false);
+      throw;
     }
   }
 
@@ -80,10 +84,15 @@ private:
   /// The stages, the search for a printable set-up where the toolpath collides (--orient auto),
   /// then the robot program.
   int Stages() {
+    // The notes are said once the set-up is final: those of a set-up that another one replaces
+    // (FindAPrintableSetUp) would describe a mesh that is not printed.
+    this->HoldNotes(true);
     if (const std::optional<int> done = this->StagesThroughToolpath()) {
+      this->HoldNotes(false);
       return *done;  // --until stopped earlier
     }
     this->FindAPrintableSetUp();
+    this->HoldNotes(false);
     if (R.until == "toolpath") {
       return kExitOk;
     }
@@ -324,6 +333,7 @@ private:
                                 "skeleton", "sequence", "toolpath", "summary"}) {
         this->Report.erase(stale);
       }
+      this->DropHeldNotes();  // the stages note anew for this set-up
       this->StagesThroughToolpath();
     };
     const GLPrintPipeline::SetUpTries tries = P.FindAPrintableSetUp(runAgain, listener);

@@ -144,12 +144,29 @@ void RunSession::RemoveFiles(const std::vector<std::string>& files) {
 }
 
 void RunSession::Note(const std::string& line) {
-  if (line.empty() ||
-      std::find(this->Noted.begin(), this->Noted.end(), line) != this->Noted.end()) {
+  auto in = [&line](const std::vector<std::string>& lines) {
+    return std::find(lines.begin(), lines.end(), line) != lines.end();
+  };
+  if (line.empty() || in(this->Noted) || in(this->Held)) {
+    return;
+  }
+  if (this->Holding) {
+    this->Held.push_back(line);
     return;
   }
   this->Noted.push_back(line);
   std::cerr << "geolattice: note: " << line << "\n";
+}
+
+void RunSession::HoldNotes(bool hold) {
+  this->Holding = hold;
+  if (!hold) {
+    const std::vector<std::string> held = std::move(this->Held);
+    this->Held.clear();
+    for (const std::string& line : held) {
+      this->Note(line);
+    }
+  }
 }
 
 void RunSession::GateLine(const std::string& line, bool warning) {

@@ -64,8 +64,14 @@ public:
   /// One stderr line of a gate: "stopped: ..." or "warning: ...".
   void GateLine(const std::string& line, bool warning = false);
   /// "geolattice: note: `line`" on stderr (even with -q: about the part), once per run (the
-  /// stages run again for other set-ups). Empty: nothing.
+  /// stages run again for other set-ups), or later while notes are held. Empty: nothing.
   void Note(const std::string& line);
+  /// While held, notes wait: the set-up they describe may still be replaced (--orient auto's
+  /// tries run the stages again for another orientation, whose mesh and fields note anew).
+  /// false says the held ones.
+  void HoldNotes(bool hold);
+  /// Forgets the held notes: the stages run again for another set-up.
+  void DropHeldNotes() { this->Held.clear(); }
   /// Writes a deep copy of `data` as OUTDIR/name (VTK XML) on the writer thread and records it.
   void Write(vtkDataObject* data, const char* name);
   /// Posts `write` to the writer thread (`replay`: to ReplayWriter) as the job of `path` (its
@@ -99,6 +105,8 @@ private:
   std::vector<PendingJob> Pending;   ///< posted since the last WaitForFiles, in order
   std::vector<std::string> Written;  ///< files the writer thread has written in this run
   std::vector<std::string> Noted;    ///< notes said (Note)
+  std::vector<std::string> Held;     ///< notes waiting while HoldNotes(true)
+  bool Holding = false;
 };
 
 /// The program stage behind its gates: a colliding toolpath (unless --allow-collisions),
