@@ -12,15 +12,21 @@
 /// printed with the part (planar layers, a vertical nozzle inside the column) and cut off after.
 ///
 /// Construction (no Boolean operation): the contact faces (placement/PlaceOnPlatform.h,
-/// baseContactFaces: within contactHeight of the lowest point, facing down) are moved down to the
-/// plane `height` below the lowest point (flat), and every boundary edge of that region gets a
-/// vertical wall from its place on the part down to the moved copy, in rings about as tall as
-/// the boundary edges are long. The result is closed, edge-manifold and outward when the part
-/// is; then it is moved up so the pedestal's bottom is at z = 0 (x and y unchanged). Each
-/// connected piece of the contact region (e.g. two feet) gets its own column.
+/// baseContactFaces: within contactHeight of the lowest point, facing down; without the faces at
+/// a vertex the region's outline passes twice or turns sharper than kMinFootprintAngleDeg) are
+/// moved down to the plane `height` below the lowest point (flat), and every boundary edge of
+/// that region gets a vertical wall from its place on the part down to the moved copy, in rings
+/// about as tall as the boundary edges are long. The result is closed, edge-manifold and outward
+/// when the part is; then it is moved up so the pedestal's bottom is at z = 0 (x and y
+/// unchanged). Each connected piece of the contact region (e.g. two feet) gets its own column.
 #include "mesh/TetMesh.h"
 
 namespace geolattice {
+
+/// The footprint's outline has no corner sharper than this (degrees, seen from above): the faces
+/// at a sharper one are left out of the footprint (a column with a thin vertical edge cannot be
+/// meshed with TetGen's quality bound).
+constexpr double kMinFootprintAngleDeg = 60.0;
 
 struct PedestalOptions {
   double height = 0.0;         ///< how far the part is raised (mm, in [0, 500]); 0 = no pedestal

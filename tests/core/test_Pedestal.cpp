@@ -6,13 +6,21 @@
 #include "mesh/SurfaceCheck.h"
 #include "pedestal/Pedestal.h"
 #include "placement/PlaceOnPlatform.h"
+#include "tetrahedralize/TetrahedralizeSurface.h"
 
 #include "../common/ErrorOf.h"
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <map>
+#include <random>
+#include <utility>
+#include <vector>
 
 using namespace geolattice;
 
@@ -41,6 +49,29 @@ TriangleSurface flattenedSphere(double r, double cut) {
   for (Vec3& p : s.points)
     p.z() -= cut;
   return s;
+}
+
+/// The sharpest corner (degrees, seen from above) of the outline of `faces`: at each vertex on
+/// the region's boundary, the faces' corner angles there summed.
+double sharpestOutlineCorner(const TriangleSurface& s, const std::vector<int>& faces) {
+  std::map<std::pair<int, int>, int> directed;
+  std::map<int, double> span;
+  for (int f : faces) {
+    const auto& t = s.triangles[f];
+    for (int k = 0; k < 3; ++k) {
+      directed[{t[k], t[(k + 1) % 3]}] = f;
+      const Eigen::Vector2d u = (s.points[t[(k + 1) % 3]] - s.points[t[k]]).head<2>();
+      const Eigen::Vector2d v = (s.points[t[(k + 2) % 3]] - s.points[t[k]]).head<2>();
+      span[t[k]] += std::acos(std::clamp(u.dot(v) / (u.norm() * v.norm()), -1.0, 1.0));
+    }
+  }
+  double sharpest = 360;
+  for (const auto& [edge, face] : directed) {
+    if (!directed.count({edge.second, edge.first})) {
+      sharpest = std::min(sharpest, span[edge.first] * 180 / M_PI);
+    }
+  }
+  return sharpest;
 }
 
 }  // namespace
@@ -142,4 +173,47 @@ TEST(Pedestal, HeightZeroKeepsThePartAndBadInputIsRefused) {
     return t;
   }();
   EXPECT_NE(errorOf([&] { addPedestal(tilted, o); }).find("--orient auto"), std::string::npos);
+}
+
+TEST(Pedestal, TheFootprintHasNoSpikeThatWouldMakeAKnifeEdgedColumn) {
+  // A ball turned so that its triangles meet the plate unevenly, on a column reaching 1 mm into
+  // it (the orientation search's reach): the faces facing down that close to its lowest point
+  // make an outline with a sharp spike, which the column's walls would turn into a vertical knife
+  // edge TetGen cannot refine (a dumbbell standing on a ball: 18°, no run finished in time).
+  // Its vertices moved along the sphere by up to a third of an edge (seeded), as a scan's or a
+  // marching-cubes surface's are: an icosphere's even triangles leave no spike.
+  TriangleSurface ball = sphereSurface(Vec3::Zero(), 8, 4);
+  std::mt19937 random(1);
+  std::uniform_real_distribution<double> shift(-0.2, 0.2);
+  const Eigen::Matrix3d turn =
+      Eigen::AngleAxisd(0.7, Vec3(0.3, -0.8, 0.5).normalized()).toRotationMatrix();
+  for (Vec3& p : ball.points) {
+    p = 8 * (turn * p + Vec3(shift(random), shift(random), shift(random))).normalized();
+  }
+  const double bottom = lowest(ball);
+  for (Vec3& p : ball.points) {
+    p.z() -= bottom;
+  }
+  const std::vector<int> raw = baseContactFaces(ball, Eigen::Matrix3d::Identity(), 1.0);
+  const double rawSharpest = sharpestOutlineCorner(ball, raw);
+  PedestalOptions o;
+  o.height = 10;
+  o.contactHeight = 1.0;
+  const PedestalResult r = addPedestal(ball, o);
+  ASSERT_TRUE(checkSurface(r.surface).isClosedManifold());
+  const std::vector<int> columnBottom =
+      baseContactFaces(r.surface, Eigen::Matrix3d::Identity(), 1e-6);
+  const double sharpest = sharpestOutlineCorner(r.surface, columnBottom);
+  std::printf(
+      "[ ball on a 1 mm-reach column ] sharpest corner %.1f deg of the contact faces, "
+      "%.1f deg of the column; footprint %.1f mm^2\n",
+      rawSharpest, sharpest, r.footprintArea);
+  ASSERT_LT(rawSharpest, kMinFootprintAngleDeg);  // the case this test is about
+  EXPECT_GE(sharpest, kMinFootprintAngleDeg);
+  EXPECT_GT(r.footprintArea, 0.5 * M_PI * (2 * 8 * 1.0 - 1.0));  // most of the contact disk stays
+  // TetGen meshes the column with its quality bound.
+  TetrahedralizeOptions t;
+  t.autoTargetTets = 8000;
+  t.tetgenSecondsLimit = 20;
+  EXPECT_FALSE(tetrahedralizeSurface(r.surface, t).qualityBoundDropped);
 }
