@@ -154,14 +154,26 @@ void addModelOptions(std::vector<CliOption>& t) {
                      "GLGeodesicDistanceFields.TimeFactor", &P::GeodesicFields,
                      &vtkGLGeodesicDistanceFields::SetTimeFactor,
                      &vtkGLGeodesicDistanceFields::GetTimeFactor));
-  t.push_back({"--reference", "X,Y,Z", gdf, "reference vector r of Eq. 3 (the lattice directions)",
-               "GLGeodesicDistanceFields.ReferenceVector",
+  t.push_back({"--reference", "auto|X,Y,Z", gdf,
+               "reference vector r of Eq. 3 (the lattice directions), used as given;\n"
+               "auto: 1,0,0, turned across the build direction where it lies along the\n"
+               "layers' normal in more than 1 % of the tets",
+               "GLGeodesicDistanceFields.TurnReference",
                [](P& p, RunOptions&, const std::string& v) {
-                 const auto r = parseNumbers("--reference", v, 3, "X,Y,Z");
+                 if (v == "auto") {
+                   const GeodesicFieldOptions defaults;
+                   p.GeodesicFields->SetReferenceVector(defaults.reference.data());
+                   p.GeodesicFields->SetTurnReference(defaults.turnReference);
+                   return;
+                 }
+                 const auto r = parseNumbers("--reference", v, 3, "auto or X,Y,Z");
                  p.GeodesicFields->SetReferenceVector(r[0], r[1], r[2]);
+                 p.GeodesicFields->SetTurnReference(false);
                },
                [](P& p, const RunOptions&) {
-                 return text(p.GeodesicFields->GetReferenceVector(), 3);
+                 return p.GeodesicFields->GetTurnReference()
+                            ? std::string("auto")
+                            : text(p.GeodesicFields->GetReferenceVector(), 3);
                }});
   t.push_back({"--solver", "NAME", gdf, "cholmod | eigen (sparse Cholesky back end)",
                "GLGeodesicDistanceFields.UseCholmod",

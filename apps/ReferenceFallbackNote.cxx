@@ -1,26 +1,56 @@
 #include "ReferenceFallbackNote.h"
 
+#include <cmath>
 #include <sstream>
+#include <vector>
 
 namespace geolattice {
 
-std::string referenceFallbackNote(const Json& gdf, const double* reference) {
-  const double fallback = gdf.value("reference_fallback_tets", 0.0);
-  const double tets = gdf.value("tets", 0.0);
-  if (!(tets > 0) || !(fallback > kReferenceFallbackNoteShare * tets)) {
-    return "";
-  }
+namespace {
+
+std::string percent(double part, double whole) {
   std::ostringstream share;
   share.precision(1);
-  share << std::fixed << 100.0 * fallback / tets;
-  std::ostringstream note;
-  note << share.str()
-       << " % of the tets have the layers' normal along the reference vector (--reference "
-       << reference[0] << "," << reference[1] << "," << reference[2]
-       << "): the lattice directions there are taken from neighbouring tets; a reference across "
-          "the build direction (the default 1,0,0) gives the lattice its own directions "
-          "(report.json gdf.reference_fallback_tets)";
-  return note.str();
+  share << std::fixed << 100.0 * part / whole;
+  return share.str();
+}
+
+std::string vector(const double* v) {  // to 0.01, as one would type it
+  auto round = [](double x) {
+    return std::round(100 * x) / 100 + 0.0;
+  };  // + 0.0: no "-0"
+  std::ostringstream s;
+  s << round(v[0]) << "," << round(v[1]) << "," << round(v[2]);
+  return s.str();
+}
+
+}  // namespace
+
+std::string referenceFallbackNote(const Json& gdf, const double* reference, bool turnReference) {
+  const double tets = gdf.value("tets", 0.0);
+  if (!(tets > 0)) {
+    return "";
+  }
+  if (gdf.contains("given_reference_fallback_tets") && gdf.contains("reference")) {
+    std::vector<double> used = gdf["reference"].get<std::vector<double>>();
+    used.resize(3, 0.0);
+    return "the reference vector of Eq. 3 was turned to " + vector(used.data()) + ": " +
+           vector(reference) + " lies along the layers' normal in " +
+           percent(gdf["given_reference_fallback_tets"].get<double>(), tets) +
+           " % of the tets, which would take their lattice directions from neighbouring tets "
+           "(report.json gdf.reference; --reference X,Y,Z is used as given)";
+  }
+  const double fallback = gdf.value("reference_fallback_tets", 0.0);
+  if (!(fallback > kReferenceFallbackNoteShare * tets)) {
+    return "";
+  }
+  return percent(fallback, tets) +
+         " % of the tets have the layers' normal along the reference vector (" +
+         (turnReference
+              ? "no direction across the build direction does better"
+              : "--reference " + vector(reference) + "; --reference auto turns it where it does") +
+         "): the lattice directions there are taken from neighbouring tets "
+         "(report.json gdf.reference_fallback_tets)";
 }
 
 }  // namespace geolattice

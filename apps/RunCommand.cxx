@@ -182,7 +182,8 @@ private:
     // would stay resident to the end (~30 MB at 75k tets, fresh pages for later stages).
     P.GeodesicFields->ReleaseSolver();
     reportFields(fields, this->Section("gdf"));
-    this->Note(referenceFallbackNote(this->Report["gdf"], P.GeodesicFields->GetReferenceVector()));
+    this->Note(referenceFallbackNote(this->Report["gdf"], P.GeodesicFields->GetReferenceVector(),
+                                     P.GeodesicFields->GetTurnReference()));
     this->Write(fields, "fields.vtu");
     if (R.until == "gdf") {
       return kExitOk;

@@ -162,6 +162,12 @@ void reportFields(vtkDataObject* fields, Json& s) {
   s["factorization_seconds"] = fieldValue(fields, arrays::GdfTimings, 1);
   s["solve_seconds"] = fieldValue(fields, arrays::GdfTimings, 2);
   s["reference_fallback_tets"] = count(fields, arrays::ReferenceFallbackTets);
+  s["reference"] = {fieldValue(fields, arrays::ReferenceUsed, 0),
+                    fieldValue(fields, arrays::ReferenceUsed, 1),
+                    fieldValue(fields, arrays::ReferenceUsed, 2)};
+  if (vtkDataArray* given = fields->GetFieldData()->GetArray(arrays::GivenReferenceFallbackTets)) {
+    s["given_reference_fallback_tets"] = static_cast<long long>(given->GetTuple1(0));
+  }
   s["orthogonality_deviation_deg"] = {
       {"alpha_gamma_median", fieldValue(fields, arrays::OrthogonalityDeg, 0)},
       {"alpha_gamma_p95", fieldValue(fields, arrays::OrthogonalityDeg, 1)},

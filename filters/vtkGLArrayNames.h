@@ -27,6 +27,10 @@ constexpr const char* GdfTimingNames = "GdfTimingNames";
 constexpr const char* OrthogonalityDeg =
     "OrthogonalityDeviationDeg";  ///< median/p95 of |90°-angle|, αγ and βγ
 constexpr const char* ReferenceFallbackTets = "ReferenceFallbackTets";
+/// The unit r Eq. 3 used (x, y, z): ReferenceVector's, or turned (TurnReference).
+constexpr const char* ReferenceUsed = "ReferenceUsed";
+/// With TurnReference: the tets ReferenceVector lay along g_γ in, when it was turned.
+constexpr const char* GivenReferenceFallbackTets = "GivenReferenceFallbackTets";
 constexpr const char* SourceCount = "SourceCount";
 // Tetrahedralization output.
 constexpr const char* TetQuality = "RadiusEdgeRatio";

@@ -40,7 +40,8 @@ namespace {
 bool sameSetUp(const geolattice::GeodesicFieldOptions& a,
                const geolattice::GeodesicFieldOptions& b) {
   return a.timeFactor == b.timeFactor && a.reference == b.reference &&
-         a.referenceParallelDeg == b.referenceParallelDeg && a.backend == b.backend;
+         a.referenceParallelDeg == b.referenceParallelDeg && a.turnReference == b.turnReference &&
+         a.backend == b.backend;
 }
 
 /// The core options of the filter's parameters (checked by RequestInformation).
@@ -181,6 +182,12 @@ int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVect
     gl::addFieldArray(fd, gl::arrays::OrthogonalityDeg, {dev[0], dev[1], dev[2], dev[3]});
     gl::addFieldArray(fd, gl::arrays::ReferenceFallbackTets,
                       {static_cast<double>(fields.referenceFallbackTets)});
+    gl::addFieldArray(fd, gl::arrays::ReferenceUsed,
+                      {fields.reference.x(), fields.reference.y(), fields.reference.z()});
+    if (fields.referenceTurned) {
+      gl::addFieldArray(fd, gl::arrays::GivenReferenceFallbackTets,
+                        {static_cast<double>(fields.givenReferenceFallbackTets)});
+    }
     gl::addFieldArray(fd, gl::arrays::SourceCount, {static_cast<double>(sources.size())});
     output->SetFieldData(fd);
     this->UpdateProgress(1.0);
@@ -196,5 +203,6 @@ void vtkGLGeodesicDistanceFields::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "ReferenceVector: " << this->ReferenceVector[0] << " " << this->ReferenceVector[1]
      << " " << this->ReferenceVector[2] << "\n";
   os << indent << "ReferenceParallelAngle: " << this->Options.referenceParallelDeg << " deg\n";
+  os << indent << "TurnReference: " << (this->Options.turnReference ? "on" : "off") << "\n";
   os << indent << "UseCholmod: " << this->UseCholmod << "\n";
 }

@@ -16,7 +16,8 @@
  *   - field data `GammaRange`, `AlphaRange`, `BetaRange` (min, max), `GdfTimings` (seconds:
  *     assembly, factorization, solve, total), `OrthogonalityDeviationDeg` (median and 95th
  *     percentile of |90° - angle| between the solved ∇α and ∇γ, then ∇β and ∇γ),
- *     `ReferenceFallbackTets`, `SourceCount`.
+ *     `ReferenceFallbackTets`, `ReferenceUsed` (the unit r used), `GivenReferenceFallbackTets`
+ *     (when TurnReference turned it: the tets ReferenceVector lay along g_γ in), `SourceCount`.
  *
  * Parameters:
  *   - SourceMode: LOWEST_Z (default; vertices within BaseTolerance mm of the lowest z),
@@ -27,7 +28,9 @@
  *   - TimeFactor: heat time t = TimeFactor * h^2, h = mean edge length (default 4).
  *   - ReferenceVector: r of Eq. 3 (default 1 0 0). ReferenceParallelAngle (degrees, default 1):
  *     where g_γ is within this angle of ±r, g_α comes from neighbouring tets (counted in
- *     `ReferenceFallbackTets`).
+ *     `ReferenceFallbackTets`). TurnReference (default on): where r lies along g_γ in more
+ *     than 1 % of the tets (a figure's arms along x), the direction across z least along the
+ *     layer normals is used instead (when it lies along g_γ in fewer); off: r as given.
  *   - UseCholmod: CHOLMOD supernodal Cholesky (default) or Eigen's SimplicialLDLT.
  *
  * The matrices are factored once and kept: changing only the source selection re-solves without
@@ -86,6 +89,12 @@ public:
   ///@{
   /// Angle below which r counts as parallel to g_γ (deg, default 1, in [0, 90)).
   vtkGLOptionMacro(ReferenceParallelAngle, double, referenceParallelDeg);
+  ///@}
+
+  ///@{
+  /// Turn r across the build direction where it lies along g_γ in more than 1 % of the tets
+  /// (default on; core/gdf/GeodesicDistanceFields.h kReferenceTurnShare).
+  vtkGLOptionBooleanMacro(TurnReference, turnReference);
   ///@}
 
   ///@{

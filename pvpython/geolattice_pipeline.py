@@ -74,6 +74,7 @@ PARAMETERS = {
     "base_tolerance": (("fields",), "BaseTolerance"),
     "time_factor": (("fields",), "TimeFactor"),
     "reference": (("fields",), "ReferenceVector"),
+    "turn_reference": (("fields",), "TurnReference"),
     "layer_interval": (("layers",), "LayerInterval"),
     "first_layer": (("layers",), "FirstLayerOffset"),
     "alpha_width": (("lattice",), "AlphaWidth"),
@@ -123,7 +124,11 @@ def build_pipeline(model, lattice_width=None, **parameters):
         parameters["strategy"] = {"lpt": "LPT", "dpt": "DPT", "a4": "A4", "best": "Best"}[parameters["strategy"].lower()]
     if isinstance(parameters.get("orient"), str):
         parameters["orient"] = {"keep": "Keep", "auto": "Auto"}[parameters["orient"].lower()]
-    for key in ("center", "fill_holes", "support_perimeter"):
+    if isinstance(parameters.get("reference"), str) and parameters["reference"].lower() == "auto":
+        del parameters["reference"]  # the default vector, turned where it lies along the normal
+    elif "reference" in parameters:
+        parameters.setdefault("turn_reference", 0)  # a given reference is used as given (CLI too)
+    for key in ("center", "fill_holes", "support_perimeter", "turn_reference"):
         if key in parameters:
             parameters[key] = int(parameters[key])
     pedestal = parameters.pop("pedestal", None)

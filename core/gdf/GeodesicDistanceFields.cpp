@@ -5,6 +5,8 @@
 #include "common/UnionFind.h"
 #include "mesh/TetMeshTopology.h"
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <sstream>
 #include <chrono>
@@ -465,8 +467,36 @@ GeodesicFields GeodesicDistanceFields::solve(const std::vector<int>& sourcesIn) 
   }
 
   // Eq. 3: g_α = r × g_γ / |r × g_γ|, g_β = g_α × g_γ.
-  const Vec3 r = options_.reference.normalized();
+  Vec3 r = options_.reference.normalized();
   const double minSin = std::sin(options_.referenceParallelDeg * M_PI / 180.0);
+  auto alongGamma = [&](const Vec3& c) {  // tets where c × g_γ is too short for Eq. 3
+    int n = 0;
+    for (int t = 0; t < nt; ++t) {
+      const double len = c.cross(out.gammaDirection[t]).norm();
+      n += !(len > minSin && len > 0);
+    }
+    return n;
+  };
+  if (options_.turnReference) {
+    const int given = alongGamma(r);
+    if (given > kReferenceTurnShare * nt) {
+      // The horizontal unit c least along the layer normals, Σ (c·g_γ)² smallest over the tets:
+      // the eigenvector of the smallest eigenvalue of Σ g_xy g_xyᵀ.
+      Eigen::Matrix2d m = Eigen::Matrix2d::Zero();
+      for (int t = 0; t < nt; ++t) {
+        const Eigen::Vector2d g = out.gammaDirection[t].head<2>();
+        m += g * g.transpose();
+      }
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eigen(m);
+      const Vec3 c(eigen.eigenvectors()(0, 0), eigen.eigenvectors()(1, 0), 0.0);
+      if (alongGamma(c) < given) {
+        r = c.normalized();
+        out.referenceTurned = true;
+        out.givenReferenceFallbackTets = given;
+      }
+    }
+  }
+  out.reference = r;
   out.alphaDirection.resize(nt);
   std::fill(valid.begin(), valid.end(), 1);
   for (int t = 0; t < nt; ++t) {

@@ -25,6 +25,10 @@ namespace geolattice {
 
 class TetMeshTopology;
 
+/// With GeodesicFieldOptions::turnReference, r is turned when more than this share of the tets
+/// would take g_α from their neighbours (r within referenceParallelDeg of g_γ there).
+constexpr double kReferenceTurnShare = 0.01;
+
 /// @brief Parameters of the GDF computation.
 struct GeodesicFieldOptions {
   double timeFactor = 4.0;         ///< heat time t = timeFactor * h^2, h = mean edge length (> 0)
@@ -32,6 +36,12 @@ struct GeodesicFieldOptions {
   double referenceParallelDeg =
       1.0;  ///< where angle(r, g_γ) < this (or > 180 - this), g_α is taken
             ///< from neighbouring tets instead of Eq. 3 (degrees, [0, 90))
+  /// true (default): where r lies along g_γ in more than kReferenceTurnShare of the tets (a
+  /// part whose limbs grow along r, e.g. a figure's arms along x), Eq. 3 uses instead the
+  /// direction across the build direction z least along the layer normals (smallest Σ (r·g_γ)²
+  /// over the tets; GeodesicFields::reference) when it lies along g_γ in fewer tets: those
+  /// would take their lattice directions from their neighbours. false: r as given.
+  bool turnReference = true;
   CholeskyBackend backend = CholeskyBackend::Cholmod;
   /// true (default): g_γ, and so g_α and g_β (Eq. 3), are the normalised gradient of the
   /// solved γ, so the lattice lines are orthogonal to the actual layer normals. false: the
@@ -74,7 +84,12 @@ struct GeodesicFields {
   std::vector<Vec3> alphaDirection;  ///< #T unit g_α (Eq. 3)
   std::vector<Vec3> betaDirection;   ///< #T unit g_β (Eq. 3)
   int referenceFallbackTets = 0;     ///< tets where r was nearly parallel to g_γ (see options)
-  int zeroHeatGradientTets = 0;      ///< tets where ∇u vanished (g_γ taken from neighbours)
+  Vec3 reference = Vec3::Zero();     ///< the unit r Eq. 3 used (the option's, or turned)
+  /// r was turned (GeodesicFieldOptions::turnReference); then the tets the given one had along
+  /// g_γ.
+  bool referenceTurned = false;
+  int givenReferenceFallbackTets = 0;
+  int zeroHeatGradientTets = 0;  ///< tets where ∇u vanished (g_γ taken from neighbours)
   /// How the Dirichlet γ was solved: true, with the pinned Laplacian's factor and a small dense
   /// correction for the other sources; false, with a factorization of its own (or not Dirichlet).
   bool dirichletFromPinned = false;

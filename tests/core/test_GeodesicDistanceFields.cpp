@@ -167,6 +167,7 @@ TEST(GeodesicDistanceFields, ReferenceParallelToGammaFallsBackAndIsReported) {
   GeodesicFieldOptions options;
   options.reference = Vec3(0, 0, 1);  // (nearly) parallel to g_γ everywhere
   options.referenceParallelDeg = 45;
+  options.turnReference = false;  // as given (the test below turns it)
   const GeodesicFields f =
       computeGeodesicDistanceFields(mesh, sourcesNearLowestZ(mesh, 1e-6), options);
   EXPECT_GT(f.referenceFallbackTets, static_cast<int>(mesh.tets.size()) * 9 / 10);
@@ -177,6 +178,37 @@ TEST(GeodesicDistanceFields, ReferenceParallelToGammaFallsBackAndIsReported) {
   }
   EXPECT_TRUE(f.alpha.allFinite());
   EXPECT_GT(f.alpha.maxCoeff(), 9.0);  // a real field across the box, not zero
+}
+
+TEST(GeodesicDistanceFields, AReferenceAlongTheLayersNormalIsTurnedAcrossTheBuildDirection) {
+  // A bar lying along x that grows from its x = 0 end (a figure's arm): g_γ is +x everywhere, so
+  // the default r = x would leave every tet without lattice directions of its own. It is turned
+  // to the horizontal direction across it; a bar growing up keeps r.
+  const TetMesh bar = boxTetMesh(Vec3(30, 6, 6), 10, 2, 2);
+  std::vector<int> end;
+  for (size_t v = 0; v < bar.points.size(); ++v) {
+    if (bar.points[v].x() < 1e-9) {
+      end.push_back(static_cast<int>(v));
+    }
+  }
+  const GeodesicFields turned = computeGeodesicDistanceFields(bar, end);
+  EXPECT_TRUE(turned.referenceTurned);
+  EXPECT_GT(turned.givenReferenceFallbackTets, static_cast<int>(bar.tets.size()) / 3);
+  EXPECT_EQ(turned.referenceFallbackTets, 0);
+  EXPECT_NEAR(turned.reference.norm(), 1.0, 1e-12);
+  EXPECT_NEAR(turned.reference.z(), 0.0, 1e-12);   // across the build direction
+  EXPECT_LT(std::abs(turned.reference.x()), 0.1);  // and across the bar
+  GeodesicFieldOptions asGiven;
+  asGiven.turnReference = false;
+  const GeodesicFields kept = computeGeodesicDistanceFields(bar, end, asGiven);
+  EXPECT_FALSE(kept.referenceTurned);
+  EXPECT_EQ(kept.reference, Vec3(1, 0, 0));
+  EXPECT_EQ(kept.referenceFallbackTets, turned.givenReferenceFallbackTets);
+  const TetMesh column = boxTetMesh(Vec3(6, 6, 30), 2, 2, 10);
+  const GeodesicFields upright =
+      computeGeodesicDistanceFields(column, sourcesNearLowestZ(column, 1e-6));
+  EXPECT_FALSE(upright.referenceTurned);
+  EXPECT_EQ(upright.reference, Vec3(1, 0, 0));
 }
 
 TEST(GeodesicDistanceFields, SourceSelectionsAgreeOnTheBox) {

@@ -33,6 +33,7 @@ CLI_CHOICES = {
     "GLNozzle.BuildPlate": {"obstacle": 1, "none": 0},
     "GLAutoOrient.Orient": {"keep": 0, "auto": 1},
     "GLPrintPart.PedestalHeight": {"auto": -1},
+    "GLGeodesicDistanceFields.TurnReference": {"auto": 1},
     "GLGCodeWriter.Flavor": {"linuxcnc": 0, "reprap": 1},
     "GLURScriptWriter.SearchCellLayout": {"search": 1, "off": 0},
     "GLURScriptWriter.Reconfigure": {"on": 1, "off": 0},
