@@ -392,6 +392,39 @@ class CliErrorTest(unittest.TestCase):
         self.assertIn("gdf.reference_fallback_tets", notes[0][0])
         self.assertEqual(notes[1], [])
 
+    def test_a_reference_along_a_horizontal_arm_is_turned(self):
+        # An L: a 6 mm post 30 mm tall and an arm 34 mm long along x at its top (a figure's arm).
+        # The layers' normal in the arm is +x, the default reference: it is turned across the
+        # build direction (to y) and the run says so; given as --reference 1,0,0 it is kept.
+        outline = [(0, 0), (6, 0), (6, 24), (40, 24), (40, 30), (0, 30)]  # x, z; counter-clockwise
+        v = ["v %g %g %g" % (x, y, z) for y in (0, 6) for x, z in outline]
+        n = len(outline)
+        caps = [(0, 1, 2), (0, 2, 5), (2, 3, 4), (2, 4, 5)]  # the L as four triangles
+        f = ["f %d %d %d" % (a + 1, c + 1, b + 1) for a, b, c in caps]  # y = 0 faces -y
+        f += ["f %d %d %d" % (a + n + 1, b + n + 1, c + n + 1) for a, b, c in caps]
+        for i in range(n):
+            j = (i + 1) % n
+            f += ["f %d %d %d" % (i + 1, j + 1, j + n + 1), "f %d %d %d" % (i + 1, j + n + 1, i + n + 1)]
+        model = write(os.path.join(self.tmp, "arm.obj"), "\n".join(v + f) + "\n")
+        reports, notes = [], []
+        for extra in ([], ["--reference", "1,0,0"]):
+            out = os.path.join(self.tmp, "arm%d" % len(notes))
+            result = self.run_cli(model, "-o", out, "-q", "--until", "gdf", *extra)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            notes.append([line for line in result.stderr.splitlines() if "reference vector" in line])
+            with open(os.path.join(out, "report.json")) as fh:
+                reports.append(json.load(fh)["gdf"])
+        turned, kept = reports
+        self.assertGreater(turned["given_reference_fallback_tets"], 0.05 * turned["tets"])
+        self.assertEqual(turned["reference_fallback_tets"], 0)
+        self.assertAlmostEqual(abs(turned["reference"][1]), 1.0, places=2)
+        self.assertEqual(len(notes[0]), 1, notes)
+        self.assertIn("was turned to", notes[0][0])
+        self.assertNotIn("given_reference_fallback_tets", kept)
+        self.assertEqual(kept["reference"], [1.0, 0.0, 0.0])
+        self.assertEqual(kept["reference_fallback_tets"], turned["given_reference_fallback_tets"])
+        self.assertIn("--reference auto turns it", notes[1][0])
+
     def test_non_finite_coordinates_named_at_read_time(self):
         for bad in ("nan", "inf", "-inf"):
             obj = CUBE_OBJ.replace("v 1 1 0", "v 1 %s 0" % bad)
