@@ -29,6 +29,17 @@ void PedestalOptions::validate() const {
 
 namespace {
 
+/// Removes from `faces` those with a corner at a flagged vertex.
+void removeFacesAt(const TriangleSurface& part, const std::vector<char>& flagged,
+                   std::vector<int>& faces) {
+  faces.erase(std::remove_if(faces.begin(), faces.end(),
+                             [&](int f) {
+                               const auto& t = part.triangles[f];
+                               return flagged[t[0]] || flagged[t[1]] || flagged[t[2]];
+                             }),
+              faces.end());
+}
+
 /// The contact faces without pinch vertices: a vertex the region's boundary passes more than
 /// once (two faces touching at a corner only, a deeper band reaching round a bump) would get one
 /// column shared by four walls, a non-manifold edge. The faces at such a vertex leave the
@@ -59,12 +70,7 @@ std::vector<int> withoutPinches(const TriangleSurface& part, std::vector<int> fa
     if (!any) {
       return faces;
     }
-    faces.erase(std::remove_if(faces.begin(), faces.end(),
-                               [&](int f) {
-                                 const auto& t = part.triangles[f];
-                                 return pinch[t[0]] || pinch[t[1]] || pinch[t[2]];
-                               }),
-                faces.end());
+    removeFacesAt(part, pinch, faces);
   }
 }
 
@@ -101,12 +107,7 @@ std::vector<int> withoutSpikes(const TriangleSurface& part, const std::vector<in
     if (!any) {
       return faces;
     }
-    faces.erase(std::remove_if(faces.begin(), faces.end(),
-                               [&](int f) {
-                                 const auto& t = part.triangles[f];
-                                 return spike[t[0]] || spike[t[1]] || spike[t[2]];
-                               }),
-                faces.end());
+    removeFacesAt(part, spike, faces);
     if (faces.empty()) {
       return withoutPinches(part, contact);
     }

@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <map>
 #include <random>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -51,25 +52,31 @@ TriangleSurface flattenedSphere(double r, double cut) {
   return s;
 }
 
-/// The sharpest corner (degrees, seen from above) of the outline of `faces`: at each vertex on
-/// the region's boundary, the faces' corner angles there summed.
+/// The sharpest corner (degrees, seen from above) of the outline of `faces`, which face down:
+/// walking along the outline in the faces' winding, the region lies on the right, so the inner
+/// angle at a vertex is the clockwise turn from the edge leaving it to the edge arriving.
 double sharpestOutlineCorner(const TriangleSurface& s, const std::vector<int>& faces) {
-  std::map<std::pair<int, int>, int> directed;
-  std::map<int, double> span;
+  std::set<std::pair<int, int>> directed;
   for (int f : faces) {
     const auto& t = s.triangles[f];
     for (int k = 0; k < 3; ++k) {
-      directed[{t[k], t[(k + 1) % 3]}] = f;
-      const Eigen::Vector2d u = (s.points[t[(k + 1) % 3]] - s.points[t[k]]).head<2>();
-      const Eigen::Vector2d v = (s.points[t[(k + 2) % 3]] - s.points[t[k]]).head<2>();
-      span[t[k]] += std::acos(std::clamp(u.dot(v) / (u.norm() * v.norm()), -1.0, 1.0));
+      directed.insert({t[k], t[(k + 1) % 3]});
+    }
+  }
+  std::map<int, int> arriving, leaving;  // outline vertex -> its neighbour along the outline
+  for (const auto& [a, b] : directed) {
+    if (!directed.count({b, a})) {
+      leaving[a] = b;
+      arriving[b] = a;
     }
   }
   double sharpest = 360;
-  for (const auto& [edge, face] : directed) {
-    if (!directed.count({edge.second, edge.first})) {
-      sharpest = std::min(sharpest, span[edge.first] * 180 / M_PI);
-    }
+  for (const auto& [v, next] : leaving) {
+    const Vec3 back = s.points[arriving.at(v)] - s.points[v];
+    const Vec3 ahead = s.points[next] - s.points[v];
+    double inner = std::atan2(ahead.y(), ahead.x()) - std::atan2(back.y(), back.x());
+    inner = std::fmod(inner + 4 * M_PI, 2 * M_PI);
+    sharpest = std::min(sharpest, inner * 180 / M_PI);
   }
   return sharpest;
 }
