@@ -15,12 +15,15 @@ std::string percent(double part, double whole) {
   return share.str();
 }
 
-std::string vector(const double* v) {  // to 0.01, as one would type it
-  auto round = [](double x) {
-    return std::round(100 * x) / 100 + 0.0;
-  };  // + 0.0: no "-0"
+/// x to 0.01 (+ 0.0: no "-0").
+double hundredths(double x) {
+  return std::round(100 * x) / 100 + 0.0;
+}
+
+/// `v` as one would type it on the command line.
+std::string vector(const double* v) {
   std::ostringstream s;
-  s << round(v[0]) << "," << round(v[1]) << "," << round(v[2]);
+  s << hundredths(v[0]) << "," << hundredths(v[1]) << "," << hundredths(v[2]);
   return s.str();
 }
 
