@@ -14,7 +14,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -329,9 +328,9 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
   int removedRegions = 0;  // of the last run
   int runs = 0;
   // TetGen's refinement can loop without end on some inputs (seen on a generated genus-3 block
-  // simplified for one edge length): each run gets a time limit far above its expected time,
-  // and a run past it counts as failed.
-  bool timedOut = false;
+  // simplified for one edge length): each run gets a time limit far above its expected time, of
+  // its own CPU time (TetGenRunner.h: load on the machine does not change which runs finish),
+  // and a run past it fails with TetGenTimeLimitExceeded.
   IntersectionTest intersectionTest = IntersectionTest::Run;
   // Runs started ahead (the first and the speculative run, kSpeculativeEdgeFactor), by edge
   // length: runOnce reads one when the search asks for its edge length; the others are killed.
@@ -347,28 +346,15 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
             : kTetGenBaseSeconds + kTetGenSecondsPerTet * result.enclosedVolume /
                                        (kGuessMeanTetVolumeOverBound * regularTetVolume(edge));
     const std::string switches = unbounded ? "pAQ" : switchesFor(edge);
-    timedOut = false;
-    // Each TetGen child gets `limit` s of its own CPU time (TetGenRunner.h: load on the machine
-    // does not change which runs finish).
-    auto mesh = [&](const std::function<TetGenOutput()>& call) {
-      try {
-        return call();
-      } catch (const TetGenTimeLimitExceeded&) {
-        timedOut = true;
-        throw;
-      }
-    };
     TetGenOutput out;
     try {
       const auto ahead = unbounded ? startedRuns.end() : startedRuns.find(edge);
       if (ahead != startedRuns.end()) {
         const std::unique_ptr<TetGenRun> run = std::move(ahead->second);
         startedRuns.erase(ahead);
-        out = mesh([&] { return run->finish(options.shouldAbort, limit); });
+        out = run->finish(options.shouldAbort, limit);
       } else {
-        out = mesh([&] {
-          return runTetGen(surface, switches, options.shouldAbort, intersectionTest, limit);
-        });
+        out = runTetGen(surface, switches, options.shouldAbort, intersectionTest, limit);
       }
     } catch (const GeoLatticeError& e) {
       if (!result.simplified || (options.shouldAbort && options.shouldAbort())) {
@@ -378,18 +364,16 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       // TetGen failed on the simplified surface (e.g. nearly coincident vertices it made, or a
       // refinement that does not end: seen on a generated genus-3 block, where the input as it
       // is meshes in 3 s): mesh the input as it is, with a new time limit.
-      result.simplificationRefused =
-          timedOut ? "TetGen did not finish on it within its time limit" : e.what();
-      timedOut = false;
+      result.simplificationRefused = dynamic_cast<const TetGenTimeLimitExceeded*>(&e)
+                                         ? "TetGen did not finish on it within its time limit"
+                                         : e.what();
       surface = original;
       result.simplified = false;
       result.simplificationEdgeLength = 0;
       result.enclosedVolume = inputVolume;
       result.meshedTriangles = surface.triangles.size();
       intersectionTest = IntersectionTest::Run;
-      out = mesh([&] {
-        return runTetGen(surface, switches, options.shouldAbort, intersectionTest, limit);
-      });
+      out = runTetGen(surface, switches, options.shouldAbort, intersectionTest, limit);
     }
     intersectionTest = IntersectionTest::Skip;  // this surface passed: not again at other edges
     if (out.mesh.tets.empty()) {
@@ -446,17 +430,11 @@ TetrahedralizeResult tetrahedralizeSurface(const TriangleSurface& input,
       TetMesh mesh;
       try {
         mesh = runOnce(edge * factor);
-      } catch (const GeoLatticeError&) {
-        if (!timedOut) {
-          throw;
-        }
+      } catch (const TetGenTimeLimitExceeded&) {
         ++result.tetgenRetries;
         try {
           mesh = runOnce(edge, /*unbounded=*/true);
-        } catch (const GeoLatticeError&) {
-          if (!timedOut) {
-            throw;
-          }
+        } catch (const TetGenTimeLimitExceeded&) {
           throw GeoLatticeError("TetGen did not finish within its time limit at edge length " +
                                 formatSwitchNumber(edge * factor) +
                                 " mm, nor without its quality bound; give another edge length "
