@@ -378,6 +378,8 @@ void reportScript(GLPrintPipeline& p, Json& s) {
   s["reconfigurations"] = reconfigurations;
   s["max_joint_step_deg"] = w->GetMaxJointStepDeg();
   s["large_joint_steps"] = static_cast<long long>(w->GetLargeJointSteps());
+  s["via_segments"] = static_cast<long long>(w->GetViaSegments());
+  s["via_waypoints"] = static_cast<long long>(w->GetViaWaypoints());
   s["max_tip_error_m"] = w->GetMaxTipError();
   s["max_axis_error_deg"] = w->GetMaxAxisErrorDeg();
   s["min_singularity"] = {{"shoulder_m", w->GetMinShoulderSingularity()},

@@ -121,6 +121,8 @@ void vtkGLURScriptWriter::ResetResults() {
   this->NumberOfMoves = 0;
   this->MaxJointStepDeg = 0;
   this->LargeJointSteps = 0;
+  this->ViaSegments = 0;
+  this->ViaWaypoints = 0;
   this->LayoutChanged = false;
   this->LayoutRotationDeg = 0;
   this->LayoutOffsetAdded = 0;
@@ -291,6 +293,10 @@ void vtkGLURScriptWriter::WriteData() {
         this->MinSingularity[2] = robotPath.minSingularity.wrist;
         this->SolveSeconds = robotPath.seconds;
         this->LargeJointSteps = static_cast<vtkIdType>(robotPath.largeSteps.size());
+        this->ViaSegments = static_cast<vtkIdType>(robotPath.via.size());
+        for (const gl::WaypointsBetween& v : robotPath.via) {
+          this->ViaWaypoints += static_cast<vtkIdType>(v.via.joints.size());
+        }
         if (!this->Unreachable.empty()) {
           const std::string text =
               describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name);

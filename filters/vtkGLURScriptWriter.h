@@ -183,6 +183,11 @@ public:
   /// Joint steps above MaxJointStep that the path solver could not avoid (then nothing is
   /// written: a wrist flip or a joint limit on this cell layout).
   vtkIdType GetLargeJointSteps() const { return this->LargeJointSteps; }
+  /// Segments written with waypoints between their two points (the wrist near its singularity
+  /// turns joints 4 and 6 by more than MaxJointStep where the part turns less; the controller's
+  /// move is continuous, core/robot/StraightMove.h), and those waypoints.
+  vtkIdType GetViaSegments() const { return this->ViaSegments; }
+  vtkIdType GetViaWaypoints() const { return this->ViaWaypoints; }
   /// The cell layout of the last Write(): whether the path solver changed the mounting of the
   /// part (SearchCellLayout), the rotation it added about the flange z axis (degrees), the
   /// distance it added in front of the flange (mm), the layouts it tried, and the mounting used
@@ -258,6 +263,8 @@ private:
   vtkIdType NumberOfMoves = 0;
   double MaxJointStepDeg = 0;
   vtkIdType LargeJointSteps = 0;
+  vtkIdType ViaSegments = 0;
+  vtkIdType ViaWaypoints = 0;
   bool LayoutChanged = false;
   double LayoutRotationDeg = 0;
   double LayoutOffsetAdded = 0;

@@ -84,21 +84,74 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
       tcp[i] = forwardKinematics(robot, rp.joints[i]) * cell.partOnFlange;
   });
   ProgramStats stats;
-  std::vector<double> time(N, 0.0);
+  // Waypoints between points (RobotPath::via): where they are, their TCP poses.
+  std::vector<int> viaAt(N, -1);
+  std::vector<std::vector<Isometry>> viaTcp(rp.via.size());
+  for (size_t k = 0; k < rp.via.size(); ++k) {
+    const size_t i = static_cast<size_t>(rp.via[k].point);
+    if (i == 0 || i >= N || rp.via[k].via.t.size() != rp.via[k].via.joints.size()) {
+      throw GeoLatticeError("URScript: waypoints between points outside the toolpath");
+    }
+    viaAt[i] = static_cast<int>(k);
+    for (const JointVector& q : rp.via[k].via.joints)
+      viaTcp[k].push_back(forwardKinematics(robot, q) * cell.partOnFlange);
+  }
+  // Segment times: each straight move (to a waypoint between points or to the point) takes the
+  // longer of its share of the segment at the feed rate and its largest joint change at the
+  // joint speed limit; time[i] is their sum.
+  std::vector<double> time(N, 0.0), lastMove(N, 0.0);  // lastMove: the move onto point i
+  std::vector<std::vector<double>> viaTime(rp.via.size());
   for (size_t i = 1; i < N; ++i) {
     const double len = (pts[i] - pts[i - 1]).norm();
-    double t = (*in.feedRate)[i] > 0 ? len / (*in.feedRate)[i] : 0.0;
-    const JointVector& before = jointsBefore(rp, i);
-    for (int j = 0; j < 6; ++j) {
-      t = std::max(t, std::abs(rp.joints[i][j] - before[j]) / (o.speedFactor * robot.maxSpeed[j]));
+    const double feed = (*in.feedRate)[i];
+    auto moveTime = [&](const JointVector& a, const JointVector& b, double share) {
+      double t = feed > 0 ? share * len / feed : 0.0;
+      for (int j = 0; j < 6; ++j)
+        t = std::max(t, std::abs(b[j] - a[j]) / (o.speedFactor * robot.maxSpeed[j]));
+      t = std::max(t, 0.002);  // one controller cycle at least
+      for (int j = 0; j < 6; ++j)
+        stats.maxJointSpeedDegS =
+            std::max(stats.maxJointSpeedDegS, std::abs(b[j] - a[j]) / t * 180 / M_PI);
+      return t;
+    };
+    const JointVector* from = &jointsBefore(rp, i);
+    double t0 = 0;
+    if (viaAt[i] >= 0) {
+      const StraightMoveVia& v = rp.via[static_cast<size_t>(viaAt[i])].via;
+      for (size_t k = 0; k < v.joints.size(); ++k) {
+        const double t = moveTime(*from, v.joints[k], v.t[k] - t0);
+        viaTime[static_cast<size_t>(viaAt[i])].push_back(t);
+        time[i] += t;
+        from = &v.joints[k];
+        t0 = v.t[k];
+      }
     }
-    time[i] = std::max(t, 0.002);  // one controller cycle at least
-    for (int j = 0; j < 6; ++j) {
-      stats.maxJointSpeedDegS = std::max(
-          stats.maxJointSpeedDegS, std::abs(rp.joints[i][j] - before[j]) / time[i] * 180 / M_PI);
-    }
+    lastMove[i] = moveTime(*from, rp.joints[i], 1 - t0);
+    time[i] += lastMove[i];
     stats.duration += time[i];
   }
+  // TCP positions of the straight moves next to point i (a waypoint between points, if any).
+  auto tcpBefore = [&](size_t i) -> const Isometry& {
+    return viaAt[i] >= 0 ? viaTcp[static_cast<size_t>(viaAt[i])].back() : tcp[i - 1];
+  };
+  auto tcpAfter = [&](size_t i) -> const Isometry& {
+    return viaAt[i + 1] >= 0 ? viaTcp[static_cast<size_t>(viaAt[i + 1])].front() : tcp[i + 1];
+  };
+  auto blendAt = [&](const Eigen::Vector3d& before, const Eigen::Vector3d& here,
+                     const Eigen::Vector3d& after) {
+    return std::min(o.maxBlend,
+                    o.blendFraction * std::min((here - before).norm(), (after - here).norm()));
+  };
+  auto appendMovel = [&](std::string& out, const Isometry& pose, double t, double blend) {
+    out += "  movel(";
+    appendPose(out, pose);
+    out += ", t=";
+    appendFixed(out, t, 6);
+    out += ", r=";
+    appendFixed(out, blend, 6);
+    out += ")\n";
+    ++stats.moves;
+  };
   // A reconfiguration (RobotPathSolver.h, step 4): away from the part in a straight line, a
   // joint move, the approach to the next point along its nozzle axis; no extrusion.
   double slowest = robot.maxSpeed[0];
@@ -181,21 +234,25 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
       chunk += ")\n";
       previousRate = volts;
     }
+    if (viaAt[i] >= 0) {  // waypoints between points: blended, at the segment's extrusion level
+      const size_t k = static_cast<size_t>(viaAt[i]);
+      const std::vector<Isometry>& poses = viaTcp[k];
+      chunk += "  # " + std::to_string(poses.size()) + " waypoint(s) between toolpath points " +
+               std::to_string(i - 1) + " and " + std::to_string(i) +
+               " (the wrist near its singularity)\n";
+      for (size_t j = 0; j < poses.size(); ++j) {
+        const Isometry& before = j > 0 ? poses[j - 1] : tcp[i - 1];
+        const Isometry& after = j + 1 < poses.size() ? poses[j + 1] : tcp[i];
+        appendMovel(chunk, poses[j], viaTime[k][j],
+                    blendAt(before.translation(), poses[j].translation(), after.translation()));
+      }
+    }
     // Blend: 0 where the kind changes or at the path's ends.
     double blend = 0;
     if (i + 1 < N && kind[i + 1] == kind[i] && kind[i - 1] == kind[i]) {
-      const double la = (tcp[i].translation() - tcp[i - 1].translation()).norm();
-      const double lb = (tcp[i + 1].translation() - tcp[i].translation()).norm();
-      blend = std::min(o.maxBlend, o.blendFraction * std::min(la, lb));
+      blend = blendAt(tcpBefore(i).translation(), tcp[i].translation(), tcpAfter(i).translation());
     }
-    chunk += "  movel(";
-    appendPose(chunk, tcp[i]);
-    chunk += ", t=";
-    appendFixed(chunk, time[i], 6);
-    chunk += ", r=";
-    appendFixed(chunk, blend, 6);
-    chunk += ")\n";
-    ++stats.moves;
+    appendMovel(chunk, tcp[i], lastMove[i], blend);
   }
   chunks.push_back(std::move(chunk));
 

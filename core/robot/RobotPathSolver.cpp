@@ -319,6 +319,15 @@ std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
   return plans;
 }
 
+/// Whether the part turns by at most maxDeg from joints a to joints b (the TCP's rotation).
+bool turnsByAtMost(const RobotCell& cell, const JointVector& a, const JointVector& b,
+                   double maxDeg) {
+  const Eigen::Matrix3d ra = (forwardKinematics(cell.robot, a) * cell.partOnFlange).linear();
+  const Eigen::Matrix3d rb = (forwardKinematics(cell.robot, b) * cell.partOnFlange).linear();
+  const double c = std::clamp(0.5 * ((ra.transpose() * rb).trace() - 1), -1.0, 1.0);
+  return std::acos(c) * 180.0 / M_PI <= maxDeg;
+}
+
 /// Joints at every point: ψ interpolated between the coarse samples, IK of the plan's branch,
 /// unwrapped next to the previous joints (checked by checkEmittedJoints). At a change of
 /// configuration (step 4) the path continues in the new branch and the change is recorded (its
@@ -416,12 +425,21 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
       double step = 0;
       for (int j = 0; j < 6; ++j)
         step = std::max(step, std::abs(qi[j] - previous[j]));
+      if (step * 180.0 / M_PI > o.maxJointStepDeg) {
+        WaypointsBetween v;
+        v.point = static_cast<int>(i);
+        if (found && turnsByAtMost(cell, previous, qi, o.maxJointStepDeg) &&
+            followStraightMove(robot, cell.partOnFlange, previous, qi,
+                               o.maxJointStepDeg * M_PI / 180.0, v.via)) {
+          step = v.via.maxStep;
+          path.via.push_back(std::move(v));
+        } else {
+          path.largeSteps.push_back(static_cast<int>(i));
+        }
+      }
       if (step * 180.0 / M_PI > path.maxJointStepDeg) {
         path.maxJointStepDeg = step * 180.0 / M_PI;
         path.maxJointStepAt = static_cast<int>(i);
-      }
-      if (step * 180.0 / M_PI > o.maxJointStepDeg) {
-        path.largeSteps.push_back(static_cast<int>(i));
       }
     }
     if (changeAt[i]) {
@@ -826,9 +844,21 @@ double jointSpeedRatio(const RobotCell& cell, const RobotPath& path,
     if (!(feedRate[i] > 0) || len == 0)
       continue;
     const double dt = len / feedRate[i];
-    const JointVector& before = jointsBefore(path, i);
+    // The joints' travel over the segment (through its waypoints between points, if any).
+    JointVector travel{};
+    const JointVector* from = &jointsBefore(path, i);
+    const auto via =
+        std::lower_bound(path.via.begin(), path.via.end(), static_cast<int>(i),
+                         [](const WaypointsBetween& v, int point) { return v.point < point; });
+    if (via != path.via.end() && via->point == static_cast<int>(i)) {
+      for (const JointVector& q : via->via.joints) {
+        for (int j = 0; j < 6; ++j)
+          travel[j] += std::abs(q[j] - (*from)[j]);
+        from = &q;
+      }
+    }
     for (int j = 0; j < 6; ++j) {
-      const double speed = std::abs(path.joints[i][j] - before[j]) / dt;
+      const double speed = (travel[j] + std::abs(path.joints[i][j] - (*from)[j])) / dt;
       maxSpeedDegS = std::max(maxSpeedDegS, speed * 180.0 / M_PI);
       ratio = std::max(ratio, speed / cell.robot.maxSpeed[j]);
     }

@@ -17,7 +17,10 @@
 ///    skipped silently) and keeps the previous joints. When this path steps too far or misses
 ///    points, the plans of the other branches are followed in the order of their cost, and the
 ///    first without either is taken (a flip between two samples often stays when they are
-///    made denser, below; another branch may have none).
+///    made denser, below; another branch may have none). A step above maxJointStepDeg where
+///    the part itself turns by at most that much is the wrist near its singularity, not a flip,
+///    when the controller's straight move between the two points is continuous
+///    (StraightMove.h): it is kept, with waypoints between (`via`), not counted as large.
 /// 3. Refinement: where a joint still steps by more than maxJointStepDeg between consecutive
 ///    points (ψ was only interpolated between two coarse samples, and the wrist flipped near a
 ///    singularity or a joint ran into its limit), the coarse interval around the step is sampled
@@ -50,6 +53,7 @@
 /// does not depend on them); 1M points ≈ 1 s; step 4 adds one IK per state at every air
 /// move's coarse samples.
 #include "robot/RobotCell.h"
+#include "robot/StraightMove.h"
 
 #include <vector>
 
@@ -84,6 +88,15 @@ struct Reconfiguration {
   double clearance = 0;  ///< m: least distance of the part's sphere to the nozzle or floor
 };
 
+/// Waypoints the program adds on the straight move from point - 1 to point: the part turns by
+/// at most the bound there, but joints 4 and 6 turn more because the wrist is near its
+/// singularity (StraightMove.h); the move is continuous, and with them no joint changes by more
+/// than maxJointStepDeg from one waypoint to the next.
+struct WaypointsBetween {
+  int point = -1;
+  StraightMoveVia via;
+};
+
 struct RobotPath {
   std::vector<JointVector> joints;  ///< per point, continuous (unwrapped)
   std::vector<double> psi;          ///< per point (rad)
@@ -92,12 +105,13 @@ struct RobotPath {
   /// Changes of configuration at air moves, in path order: from joints[point] to
   /// joints[point + 1] (= leave) by a reconfiguration move, not a straight joint step.
   std::vector<Reconfiguration> reconfigurations;
-  double maxJointStepDeg = 0;  ///< largest change of any joint between consecutive points
+  double maxJointStepDeg = 0;  ///< largest change of any joint between consecutive waypoints
   int maxJointStepAt = -1;     ///< the point where it happens (the step from the point before)
   std::vector<int>
-      largeSteps;         ///< points reached by a step above RobotPathOptions::maxJointStepDeg
-  int coarseSamples = 0;  ///< coarse samples after refinement
-  int refinements = 0;    ///< refinement passes used
+      largeSteps;  ///< points reached by a step above RobotPathOptions::maxJointStepDeg
+  std::vector<WaypointsBetween> via;   ///< in path order: moves written with waypoints between
+  int coarseSamples = 0;               ///< coarse samples after refinement
+  int refinements = 0;                 ///< refinement passes used
   SingularityDistance minSingularity;  ///< smallest distances along the path
   double maxTipError = 0;      ///< m: |FK(q)·partOnFlange·p − nozzle tip| over reachable points
   double maxAxisErrorDeg = 0;  ///< angle between the placed axis n and the nozzle axis

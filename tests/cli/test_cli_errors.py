@@ -852,9 +852,9 @@ class CliGateTest(unittest.TestCase):
         self.assertIn("waypoints.csv", programs)
 
     def test_joint_gate_and_the_cell_layout_search(self):
-        # The nozzle pointing along the robot's x axis: the path as laid out makes the wrist flip
-        # when the whole path keeps one IK branch (steps 1-3 of the path solver).
-        cell = ["--nozzle-tip", "0,-400,300", "--nozzle-axis", "1,0,0", "--allow-collisions"]
+        # The nozzle pointing along the robot's -x axis: the path as laid out winds a joint to its
+        # limit when the whole path keeps one IK branch (steps 1-3 of the path solver).
+        cell = ["--nozzle-tip", "0,-400,300", "--nozzle-axis", "-1,0,0", "--allow-collisions"]
         result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-layout-search",
                                                      "--no-reconfiguration")
         self.assertEqual(result.returncode, 6, result.stderr)
@@ -884,8 +884,9 @@ class CliGateTest(unittest.TestCase):
             head = f.read(2000)
         self.assertIn("# cell layout: the platform turned by", head)
         self.assertIn("set_tcp(p[0, 0, %s" % ("%g" % (layout["part_on_flange_used"][2] / 1000)), head)
-        # With the defaults the path solver's step 4 (one IK branch per stretch, flips barred,
-        # reconfigurations at air moves where needed) follows the path in the cell as given.
+        # With the defaults (step 4: one IK branch per stretch, flips barred, reconfigurations at
+        # air moves where needed) the path is followed in the cell as given; where the wrist
+        # passes near its singularity the program has waypoints between points.
         result, report, programs, out = self.run_cli("y_shape.obj", *cell)
         self.assertEqual(result.returncode, 0, result.stderr)
         program = report["program"]
@@ -898,6 +899,15 @@ class CliGateTest(unittest.TestCase):
         with open(os.path.join(out, "print_part.script")) as f:
             text = f.read()
         self.assertEqual(text.count("# reconfiguration between"), len(program["reconfigurations"]))
+        self.assertGreater(program["via_segments"], 0)
+        scripts = ""  # every program file of the split program
+        for name in programs:
+            if name.endswith(".script"):
+                with open(os.path.join(out, name)) as f:
+                    scripts += f.read()
+        self.assertEqual(scripts.count(" waypoint(s) between toolpath points "), program["via_segments"])
+        self.assertEqual(scripts.count("\n  movel(p["),
+                         program["waypoints"] - 1 + program["via_waypoints"] + len(program["reconfigurations"]))
         for r in program["reconfigurations"]:
             self.assertGreaterEqual(r["clearance_mm"], 20.0 - 1e-6)
             self.assertGreater(r["retreat_mm"], 0)
@@ -1006,7 +1016,7 @@ class CliVerifyTest(unittest.TestCase):
             report = json.load(f)
         program = report["program"]
         for key in ("waypoints", "unreachable", "unreachable_first", "files", "max_joint_step_deg",
-                    "min_singularity", "max_joint_speed_deg_s", "duration_s", "seconds", "robot", "nozzle_tip_mm",
+                    "via_segments", "via_waypoints", "min_singularity", "max_joint_speed_deg_s", "duration_s", "seconds", "robot", "nozzle_tip_mm",
                     "part_on_flange", "gcode", "csv"):
             self.assertIn(key, program)
         self.assertEqual(program["waypoints"], report["toolpath"]["points"])

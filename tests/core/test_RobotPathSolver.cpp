@@ -248,10 +248,11 @@ TEST(RobotPathSolver, TheResultDoesNotDependOnTheThreads) {
 }
 
 TEST(RobotPathSolver, ABoundThePathCannotKeepDoesNotGrowThePlan) {
-  // A joint step bound of 0.01 degrees: nearly every step of a 20,000-point raster is above it.
-  // Those are not flips that denser samples remove; the refinement adds at most
-  // 4 · coarseSamples samples per pass (it used to sample the whole path), and the steps stay
-  // reported for the caller to refuse.
+  // A joint step bound of 0.001 degrees: nearly every step of a 20,000-point raster is above
+  // it, and the part turns by more than that at every point (about 0.01 degrees), so no
+  // waypoints between points can keep it either (StraightMove.h). Those are not flips that
+  // denser samples remove; the refinement adds at most 4 · coarseSamples samples per pass (it
+  // used to sample the whole path), and the steps stay reported for the caller to refuse.
   ConstructedPath raster;
   for (int i = 0; i < 20000; ++i) {
     const double z = 0.6 + 10.0 * i / 20000;
@@ -260,10 +261,130 @@ TEST(RobotPathSolver, ABoundThePathCannotKeepDoesNotGrowThePlan) {
     raster.kind.push_back(i % 2000 == 0 ? 2 : 0);
   }
   RobotPathOptions o;
-  o.maxJointStepDeg = 0.01;
+  o.maxJointStepDeg = 0.001;
   const RobotPath p = solveRobotPath(RobotCell{}, raster.points, raster.normals, o, raster.kind);
   EXPECT_GT(p.largeSteps.size(), 10000u);
   EXPECT_TRUE(p.reconfigurations.empty());
   EXPECT_LE(p.coarseSamples, 1 + o.coarseSamples + o.refinements * 5 * o.coarseSamples)
       << "refined " << p.refinements << " times";
+}
+
+namespace {
+
+/// Laps of a circle (radius 10 mm, 90 points each, 0.5 mm higher every lap) whose nozzle axes
+/// lean `tiltDeg` from +z towards the outside, joined by air moves up and down: the rim of a
+/// bowl printed sideways. At 85° the part's z axis turns round through the horizontal once per
+/// lap and the wrist passes near its singularity.
+ConstructedPath sidewaysLaps(int laps, double tiltDeg) {
+  ConstructedPath p;
+  const double tilt = tiltDeg * M_PI / 180;
+  auto add = [&](const Eigen::Vector3d& x, const Eigen::Vector3d& n, int kind) {
+    const double e = p.extrusion.empty() ? 0.0 : p.extrusion.back();
+    const double len = p.points.empty() ? 0.0 : (x - p.points.back()).norm();
+    p.points.push_back(x);
+    p.normals.push_back(n);
+    p.kind.push_back(kind);
+    p.extrusion.push_back(kind == 2 ? e : e + 0.03 * len);
+    p.feedRate.push_back(kind == 2 ? 50.0 : 20.0);
+  };
+  for (int lap = 0; lap < laps; ++lap) {
+    for (int j = 0; j <= 90; ++j) {
+      const double phi = 2 * M_PI * j / 90;
+      add(Eigen::Vector3d(10 * std::cos(phi), 10 * std::sin(phi), 5 + 0.5 * lap),
+          Eigen::Vector3d(std::sin(tilt) * std::cos(phi), std::sin(tilt) * std::sin(phi),
+                          std::cos(tilt)),
+          0);
+    }
+    const Eigen::Vector3d n = p.normals.back();
+    for (int j = 1; j <= 10; ++j)
+      add(p.points.back() + Eigen::Vector3d(0, 0, j <= 5 ? 3.0 : -2.5), n, 2);
+  }
+  return p;
+}
+
+/// The movel targets of a program (TCP poses) and their times, in order.
+std::vector<std::pair<Isometry, double>> movelTargets(const std::string& text) {
+  std::vector<std::pair<Isometry, double>> targets;
+  for (size_t at = text.find("movel(p["); at != std::string::npos;
+       at = text.find("movel(p[", at + 1)) {
+    UrPose pose{};
+    double t = 0;
+    const int read = std::sscanf(text.c_str() + at, "movel(p[%lf, %lf, %lf, %lf, %lf, %lf], t=%lf",
+                                 &pose[0], &pose[1], &pose[2], &pose[3], &pose[4], &pose[5], &t);
+    EXPECT_EQ(read, 7);
+    targets.emplace_back(toIsometry(pose), t);
+  }
+  return targets;
+}
+
+}  // namespace
+
+TEST(RobotPathSolver, SidewaysLapsPassTheWristSingularityWithWaypointsBetween) {
+  const ConstructedPath p = sidewaysLaps(3, 85);
+  const RobotCell cell;
+  const RobotPathOptions o;
+  const RobotPath rp = solveRobotPath(cell, p.points, p.normals, o, p.kind);
+  size_t waypoints = 0;
+  for (const WaypointsBetween& v : rp.via)
+    waypoints += v.via.joints.size();
+  std::printf(
+      "[robot] 3 sideways laps: %zu large steps, %zu segments with %zu waypoints between, "
+      "max step %.1f deg, |sin q5| >= %.3f, %zu reconfigurations\n",
+      rp.largeSteps.size(), rp.via.size(), waypoints, rp.maxJointStepDeg, rp.minSingularity.wrist,
+      rp.reconfigurations.size());
+  ASSERT_TRUE(rp.works());
+  EXPECT_LE(rp.maxJointStepDeg, o.maxJointStepDeg);
+  // The laps do need them: without the waypoints these steps are above the bound.
+  ASSERT_FALSE(rp.via.empty());
+  for (const WaypointsBetween& v : rp.via) {
+    const size_t i = static_cast<size_t>(v.point);
+    double direct = 0;
+    for (int j = 0; j < 6; ++j)
+      direct = std::max(direct, std::abs(rp.joints[i][j] - jointsBefore(rp, i)[j]));
+    EXPECT_GT(direct * 180 / M_PI, o.maxJointStepDeg) << "at point " << i;
+    EXPECT_FALSE(v.via.joints.empty());
+  }
+
+  // The program as a controller runs it: follow its movel targets by the IK solution nearest
+  // the joints before (the controller's tracking). Every step stays within the bound, every
+  // joint within its speed limit at the written time, and the arm ends where the path ends.
+  const ProgramInput in{&p.points, &p.extrusion, &p.feedRate, &p.kind};
+  std::ostringstream file;
+  const URScriptOptions uo;
+  const ProgramStats stats =
+      writeURScript(cell, rp, in, uo, [&](size_t) -> std::ostream& { return file; });
+  const std::string text = file.str();
+  checkURScriptSyntax(text, "", 1000);
+  const auto targets = movelTargets(text);
+  ASSERT_EQ(targets.size(), p.points.size() - 1 + waypoints);
+  EXPECT_EQ(occurrences(text, " waypoint(s) between toolpath points "), rp.via.size());
+  EXPECT_EQ(stats.moves, targets.size());
+  JointVector q = rp.joints[0];
+  double largest = 0, fastest = 0;
+  for (const auto& [tcp, t] : targets) {
+    const Isometry flange = tcp * cell.partOnFlange.inverse();
+    double best = INFINITY;
+    JointVector next{};
+    for (const JointVector& s : inverseKinematics(cell.robot, flange, q[5])) {
+      JointVector u;
+      double d = 0;
+      for (int j = 0; j < 6; ++j) {
+        u[j] = q[j] + std::remainder(s[j] - q[j], 2 * M_PI);
+        d = std::max(d, std::abs(u[j] - q[j]));
+      }
+      if (d < best) {
+        best = d;
+        next = u;
+      }
+    }
+    ASSERT_TRUE(std::isfinite(best));
+    largest = std::max(largest, best);
+    for (int j = 0; j < 6; ++j)
+      fastest = std::max(fastest, std::abs(next[j] - q[j]) / t / cell.robot.maxSpeed[j]);
+    q = next;
+  }
+  EXPECT_LE(largest * 180 / M_PI, o.maxJointStepDeg + 0.01);
+  EXPECT_LE(fastest, uo.speedFactor * 1.01);
+  for (int j = 0; j < 6; ++j)
+    EXPECT_NEAR(q[j], rp.joints.back()[j], 1e-4);
 }

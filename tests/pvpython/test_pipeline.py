@@ -289,6 +289,8 @@ class PipelineTest(unittest.TestCase):
             self.assertTrue(text.startswith("def %s():\n" % name[:-len(".script")]), text[:40])
             self.assertTrue(text.endswith("\nend\n"))
             movels += text.count("\n  movel(p[")
+            # Waypoints between points where the wrist passes near its singularity.
+            movels -= sum(int(k) for k in re.findall(r"\n  # (\d+) waypoint\(s\) between toolpath points", text))
         self.assertEqual(movels, n - 1)
         # .gcode -> GL GCode Writer; the waypoint CSV writer by name (ParaView's CSV writer owns .csv).
         simple.SaveData(os.path.join(out, "bunny.gcode"), toolpath, Kinematics=1, AllowCollisions=1)
