@@ -73,6 +73,66 @@ void BM_IkAndURScript(benchmark::State& state) {
 }
 BENCHMARK(BM_IkAndURScript)->Unit(benchmark::kMillisecond)->Iterations(1);
 
+/// 400 laps of 90 points (radius 10 mm, 4° of axis turn per point, 0.05 mm higher each lap) whose nozzle axes lean 85°
+/// outwards, air moves between laps: the wrist passes near its singularity twice a lap, and
+/// the moves there get waypoints between points (core/robot/StraightMove.h).
+const Path& sidewaysLaps() {
+  static const Path p = [] {
+    Path r;
+    const double tilt = 85 * M_PI / 180;
+    double e = 0;
+    for (int lap = 0; lap < 400; ++lap) {
+      for (int j = 0; j <= 90; ++j) {
+        const double phi = 2 * M_PI * j / 90;
+        r.points.emplace_back(10 * std::cos(phi), 10 * std::sin(phi), 5 + 0.05 * lap);
+        r.normals.emplace_back(std::sin(tilt) * std::cos(phi), std::sin(tilt) * std::sin(phi),
+                               std::cos(tilt));
+        e += j > 0 ? 0.02 : 0;
+        r.extrusion.push_back(e);
+        r.feed.push_back(10);
+        r.kind.push_back(0);
+        r.layer.push_back(lap);
+      }
+      for (int j = 1; j <= 10; ++j) {
+        r.points.push_back(r.points.back() + Eigen::Vector3d(0, 0, j <= 5 ? 3.0 : -2.9));
+        r.normals.push_back(r.normals.back());
+        r.extrusion.push_back(e);
+        r.feed.push_back(50);
+        r.kind.push_back(2);
+        r.layer.push_back(-1);
+      }
+    }
+    return r;
+  }();
+  return p;
+}
+
+void BM_SidewaysLapsAndURScript(benchmark::State& state) {
+  const Path& p = sidewaysLaps();
+  RobotCell cell;
+  NullBuffer nb;
+  std::ostream sink(&nb);
+  RobotPath rp;
+  for (auto _ : state) {
+    rp = solveRobotPath(cell, p.points, p.normals, RobotPathOptions{}, p.kind);
+    ProgramInput in{&p.points, &p.extrusion, &p.feed, &p.kind};
+    benchmark::DoNotOptimize(
+        writeURScript(cell, rp, in, URScriptOptions{}, [&](size_t) -> std::ostream& {
+          return sink;
+        }).moves);
+  }
+  size_t waypoints = 0;
+  for (const WaypointsBetween& v : rp.via)
+    waypoints += v.via.joints.size();
+  state.counters["points"] = static_cast<double>(p.points.size());
+  state.counters["large_steps"] = static_cast<double>(rp.largeSteps.size());
+  state.counters["via_segments"] = static_cast<double>(rp.via.size());
+  state.counters["via_waypoints"] = static_cast<double>(waypoints);
+  state.counters["reconfigurations"] = static_cast<double>(rp.reconfigurations.size());
+  state.counters["max_joint_step_deg"] = rp.maxJointStepDeg;
+}
+BENCHMARK(BM_SidewaysLapsAndURScript)->Unit(benchmark::kMillisecond)->Iterations(1);
+
 void BM_GCodeWriter(benchmark::State& state) {
   const Path& p = spiral();
   NullBuffer nb;
