@@ -53,18 +53,25 @@ protected:
   std::streamsize xsputn(const char*, std::streamsize n) override { return n; }
 };
 
-void BM_IkAndURScript(benchmark::State& state) {
-  const Path& p = spiral();
-  RobotCell cell;
+/// The path solver and the URScript writer (to a null stream) on p; withKinds: the solver gets
+/// the move kinds (reconfigurations at air moves where one branch cannot follow).
+ProgramStats solveAndWrite(const Path& p, bool withKinds, RobotPath& rp) {
+  const RobotCell cell;
   NullBuffer nb;
   std::ostream sink(&nb);
+  rp = withKinds ? solveRobotPath(cell, p.points, p.normals, RobotPathOptions{}, p.kind)
+                 : solveRobotPath(cell, p.points, p.normals);
+  const ProgramInput in{&p.points, &p.extrusion, &p.feed, &p.kind};
+  return writeURScript(cell, rp, in, URScriptOptions{},
+                       [&](size_t) -> std::ostream& { return sink; });
+}
+
+void BM_IkAndURScript(benchmark::State& state) {
+  const Path& p = spiral();
   ProgramStats stats;
   RobotPath rp;
   for (auto _ : state) {
-    rp = solveRobotPath(cell, p.points, p.normals);
-    ProgramInput in{&p.points, &p.extrusion, &p.feed, &p.kind};
-    stats = writeURScript(cell, rp, in, URScriptOptions{},
-                          [&](size_t) -> std::ostream& { return sink; });
+    stats = solveAndWrite(p, false, rp);
   }
   state.counters["waypoints"] = static_cast<double>(p.points.size());
   state.counters["unreachable"] = static_cast<double>(rp.unreachable.size());
@@ -109,17 +116,9 @@ const Path& sidewaysLaps() {
 
 void BM_SidewaysLapsAndURScript(benchmark::State& state) {
   const Path& p = sidewaysLaps();
-  RobotCell cell;
-  NullBuffer nb;
-  std::ostream sink(&nb);
   RobotPath rp;
   for (auto _ : state) {
-    rp = solveRobotPath(cell, p.points, p.normals, RobotPathOptions{}, p.kind);
-    ProgramInput in{&p.points, &p.extrusion, &p.feed, &p.kind};
-    benchmark::DoNotOptimize(
-        writeURScript(cell, rp, in, URScriptOptions{}, [&](size_t) -> std::ostream& {
-          return sink;
-        }).moves);
+    benchmark::DoNotOptimize(solveAndWrite(p, true, rp).moves);
   }
   size_t waypoints = 0;
   for (const WaypointsBetween& v : rp.via)
