@@ -13,8 +13,8 @@
 /// position get their time from the joints). Where the robot path adds waypoints between two
 /// points (RobotPath::via: the wrist near its singularity), the segment is one movel per
 /// waypoint, each timed so, its share of L by the move parameter, after a comment line
-/// "# K waypoint(s) between toolpath points i-1 and i". Blend radius = min(maxBlend, 0.4 × the shorter
-/// neighbouring TCP segment), 0 at the ends of print runs and air moves.
+/// "# K waypoint(s) between toolpath points i-1 and i". Blend radius = min(maxBlend, 0.4 ×
+/// the shorter neighbouring TCP segment), 0 at the ends of print runs and air moves.
 /// Extrusion (wiring assumption, documented in the user guide): the extruder driver follows
 /// standard analog output 0 (relative level 0..1, i.e. 0-10 V) = 0..maxFilamentRate mm/s of filament; before each movel
 /// the program sets it to ΔE / t of that segment (0 on air moves; retraction and prime are

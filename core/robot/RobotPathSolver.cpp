@@ -30,14 +30,6 @@ inline double remainderTwoPi(double x) {
   return std::abs(x) <= M_PI ? x : std::remainder(x, 2 * M_PI);
 }
 
-bool withinLimits(const RobotModel& r, const JointVector& q) {
-  for (int i = 0; i < 6; ++i) {
-    if (q[i] < r.lowerLimit[i] || q[i] > r.upperLimit[i])
-      return false;
-  }
-  return true;
-}
-
 /// q (each joint in (-π, π]) shifted by multiples of 2π to be nearest to `near`, inside limits.
 JointVector unwrapNear(const RobotModel& r, JointVector q, const JointVector& near) {
   for (int i = 0; i < 6; ++i) {
@@ -428,7 +420,7 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
       if (step * 180.0 / M_PI > o.maxJointStepDeg) {
         WaypointsBetween v;
         v.point = static_cast<int>(i);
-        if (found && turnsByAtMost(cell, previous, qi, o.maxJointStepDeg) &&
+        if (turnsByAtMost(cell, previous, qi, o.maxJointStepDeg) &&
             followStraightMove(robot, cell.partOnFlange, previous, qi,
                                o.maxJointStepDeg * M_PI / 180.0, v.via)) {
           step = v.via.maxStep;

@@ -38,13 +38,6 @@ bool nearestSolution(const RobotModel& robot, const Isometry& flange, const Join
   return std::isfinite(best);
 }
 
-bool withinLimits(const RobotModel& robot, const JointVector& q) {
-  for (int j = 0; j < 6; ++j)
-    if (q[j] < robot.lowerLimit[j] || q[j] > robot.upperLimit[j])
-      return false;
-  return true;
-}
-
 }  // namespace
 
 bool followStraightMove(const RobotModel& robot, const Isometry& partOnFlange,

@@ -60,6 +60,14 @@ RobotModel robotModelByName(const std::string& name) {
   throw GeoLatticeError("unknown robot '" + name + "' (expected ur5 or ur5e)");
 }
 
+bool withinLimits(const RobotModel& robot, const JointVector& q) {
+  for (int j = 0; j < 6; ++j) {
+    if (q[j] < robot.lowerLimit[j] || q[j] > robot.upperLimit[j])
+      return false;
+  }
+  return true;
+}
+
 Isometry forwardKinematics(const RobotModel& r, const JointVector& q) {
   Isometry t = Isometry::Identity();
   for (int i = 0; i < 6; ++i) {

@@ -39,6 +39,9 @@ ur5eModel();  ///< UR5e: d1 0.1625, a2 -0.425, a3 -0.3922, d4 0.1333, d5 0.0997,
 /// "ur5" or "ur5e"; throws GeoLatticeError otherwise.
 RobotModel robotModelByName(const std::string& name);
 
+/// Whether every joint of q lies inside the robot's limits.
+bool withinLimits(const RobotModel& robot, const JointVector& q);
+
 /// Base -> flange transform.
 Isometry forwardKinematics(const RobotModel& robot, const JointVector& q);
 
