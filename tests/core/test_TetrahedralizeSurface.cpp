@@ -502,13 +502,18 @@ TEST(TetGenRunner, TheTimeLimitCountsTheChildsCpuTimeNotItsWait) {
   // The measure: this process's CPU time grows while it computes, not while it sleeps.
   const double before = processCpuSeconds(::getpid());
   ASSERT_GE(before, 0.0);
+  // Spin until it has grown by 0.25 s (on a loaded machine that takes longer than 0.25 s of
+  // wall time, so the loop is bounded by CPU time, with 10 s of wall time as the way out).
   volatile double sink = 0;
-  const auto spinUntil = std::chrono::steady_clock::now() + std::chrono::milliseconds(300);
-  while (std::chrono::steady_clock::now() < spinUntil) {
-    sink = sink + 1;
+  const auto giveUp = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+  double spun = before;
+  while (spun - before < 0.25 && std::chrono::steady_clock::now() < giveUp) {
+    for (int k = 0; k < 100000; ++k) {
+      sink = sink + 1;
+    }
+    spun = processCpuSeconds(::getpid());
   }
-  const double spun = processCpuSeconds(::getpid());
-  EXPECT_GT(spun - before, 0.2);
+  EXPECT_GE(spun - before, 0.25);
   std::this_thread::sleep_for(std::chrono::milliseconds(300));
   EXPECT_LT(processCpuSeconds(::getpid()) - spun, 0.1);
   // A run whose refinement takes many CPU seconds (a box for ~10M tets) is stopped at 0.3.
