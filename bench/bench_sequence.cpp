@@ -4,13 +4,15 @@
 //  - `bench_sequence --table` prints the Table-3-style sweep (strategy x nozzle angle: retractions,
 //    air-move length, collision-free by the independent verifier, seconds) as Markdown.
 //  - Without --table: Google Benchmark timings of PCG (Algorithm 3) + A4 (Algorithm 4), of the
-//    rollout order, and of the verifier, per nozzle angle.
+//    rollout order, and of the verifier, per nozzle angle; and of the verifier on long bars printed
+//    layer by layer over the build plate.
 #include "../tests/common/CoreStages.h"
 #include "collision/CollisionVerifier.h"
 #include "gdf/GeodesicDistanceFields.h"
 #include "gdf/HeatSources.h"
 #include "io/MeshReader.h"
 #include "lattice/LatticeInfill.h"
+#include "nozzle/BuildPlate.h"
 #include "nozzle/Printhead.h"
 #include "sequence/PotentialCollisions.h"
 #include "sequence/PrintMaterial.h"
@@ -199,6 +201,46 @@ void BM_Verifier(benchmark::State& state) {
   state.counters["stations"] = static_cast<double>(p.material.points.size());
 }
 BENCHMARK(BM_Verifier)->ArgName("NA")->Arg(75)->Arg(45)->Unit(benchmark::kMillisecond);
+
+/// A long bar printed layer by layer over the build plate, as the generated 240 mm bar of
+/// docs/performance.md: `length` x 16 mm, 60 layers 0.6 mm apart, a point per mm, one sub-graph
+/// per layer whose ancestors are the layers below. Every nozzle axis leans 50° along the bar, so
+/// each 45° cone reaches the plate and holds thousands of points of the layers below: exempt
+/// material the verifier must look past for anything an order could have kept out.
+void BM_VerifierLongBarOverThePlate(benchmark::State& state) {
+  const int length = static_cast<int>(state.range(0));
+  std::vector<Eigen::Vector3d> points, normals;
+  std::vector<int> time;
+  const double tilt = 50 * M_PI / 180;
+  for (int layer = 0; layer < 60; ++layer) {
+    for (int x = 0; x <= length; ++x) {
+      for (int y = 0; y <= 16; ++y) {
+        points.emplace_back(x, y, 0.3 + 0.6 * layer);
+        normals.emplace_back(std::sin(tilt), 0, std::cos(tilt));
+        time.push_back(layer);
+      }
+    }
+  }
+  CollisionExemption exemption;
+  exemption.group = time;
+  exemption.unavoidable = [](int station, int obstacle) {
+    return obstacle < station;
+  };
+  const BuildPlate plate;
+  long long plateStations = 0;
+  for (auto _ : state) {
+    plateStations =
+        verifyNozzleClearance(points, normals, time, cone(45), 20, &exemption, nullptr, &plate)
+            .plateStations;
+  }
+  state.counters["stations"] = static_cast<double>(points.size());
+  state.counters["plate_stations"] = static_cast<double>(plateStations);
+}
+BENCHMARK(BM_VerifierLongBarOverThePlate)
+    ->ArgName("mm")
+    ->Arg(240)
+    ->Arg(720)
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

@@ -11,9 +11,12 @@
 ///
 /// For a sub-graph order, time = the sub-graph's position (all of its points share it, a
 /// sub-graph is not tested against itself); for a toolpath, time = the point's index on it.
-/// With the build plate the tree's root splits the material from the plate's samples: with an
-/// exemption, a station's search past its first plate sample (for material an order could have
-/// kept out) runs on the material's subtree, and the nearest plate sample on the plate's.
+/// With the build plate the tree's root splits the material from the plate's samples, so each
+/// kind can be searched alone. With an exemption, a station whose first obstacle found is the
+/// plate or exempt material is searched on for material an order could have kept out, in a
+/// second tree whose material is grouped as the exemption groups it (TimedPointTree's groups):
+/// exempt groups, e.g. the skeleton ancestors that fill a nozzle low over a long part, are
+/// skipped whole, so the cost does not grow with the material they hold.
 #include "nozzle/BuildPlate.h"
 #include "nozzle/NozzleModel.h"
 

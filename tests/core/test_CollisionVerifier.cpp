@@ -421,3 +421,90 @@ TEST(CollisionVerifier, ThePlateOrTheMaterialNearestTheTipIsReported) {
   EXPECT_THROW(verifyNozzleClearance(p, n, time, nozzle, 0, nullptr, nullptr, &plate, &checked),
                GeoLatticeError);
 }
+
+// With an order to judge and the plate, each station's verdict is the first kind present of:
+// material an order could have kept out (avoidable), the plate, material no order keeps out
+// (exempt), and its reported obstacle is the nearest of that kind: against an all-pairs check, on
+// stations low over the plate whose nozzles hold all three kinds (the past-the-plate search runs
+// on a tree that skips exempt groups whole).
+TEST(CollisionVerifier, AnOrderIsJudgedOverThePlateAsAnAllPairsCheckJudgesIt) {
+  std::srand(13);
+  auto rnd = [] {
+    return std::rand() / double(RAND_MAX);
+  };
+  std::vector<V> p, n;
+  std::vector<int> time;
+  CollisionExemption exemption;
+  for (int i = 0; i < 1200; ++i) {
+    p.push_back(V(20 * rnd(), 20 * rnd(), 0.2 + 4 * rnd()));
+    const double tilt = 75 * M_PI / 180 * rnd(), turn = 2 * M_PI * rnd();
+    n.push_back(
+        V(std::sin(tilt) * std::cos(turn), std::sin(tilt) * std::sin(turn), std::cos(tilt)));
+    time.push_back(static_cast<int>(40 * rnd()));
+    exemption.group.push_back(time.back() / 4);  // groups of print times, as sub-graphs
+  }
+  exemption.unavoidable = [](int station, int obstacle) {
+    return obstacle < station && obstacle % 3 != 1;  // some earlier groups are not ancestors
+  };
+  const NozzleModel nozzle = cone(45);
+  const BuildPlate plate;
+  const std::vector<V> samples = buildPlateSamples(plate, p);
+  const CollisionReport r =
+      verifyNozzleClearance(p, n, time, nozzle, 100000, &exemption, nullptr, &plate);
+  auto inside = [&](size_t k, const V& x) {
+    const V d = x - p[k];
+    const double h = d.dot(n[k]);
+    return h > nozzle.tipClearance && d.norm() > nozzle.tipFaceRadius &&
+           h * h > d.squaredNorm() * 0.5;  // cos² 45°
+  };
+  enum Kind { None, Avoidable, Plate, Exempt };
+  std::vector<Kind> kind(p.size(), None);
+  std::vector<double> nearestD2(p.size(), std::numeric_limits<double>::infinity());
+  std::vector<int> nearest(p.size(), -1);
+  long long count[4] = {0, 0, 0, 0};
+  for (size_t k = 0; k < p.size(); ++k) {
+    double d2[4] = {0, std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity(),
+                    std::numeric_limits<double>::infinity()};
+    int best[4] = {-1, -1, -1, -1};
+    for (size_t q = 0; q < p.size(); ++q) {
+      if (time[q] < time[k] && inside(k, p[q])) {
+        const Kind c =
+            exemption.unavoidable(exemption.group[k], exemption.group[q]) ? Exempt : Avoidable;
+        const double d = (p[q] - p[k]).squaredNorm();
+        if (d < d2[c]) {
+          d2[c] = d;
+          best[c] = static_cast<int>(q);
+        }
+      }
+    }
+    for (const V& s : samples) {
+      if (inside(k, s)) {
+        d2[Plate] = std::min(d2[Plate], (s - p[k]).squaredNorm());
+      }
+    }
+    for (const Kind c : {Avoidable, Plate, Exempt}) {
+      if (std::isfinite(d2[c])) {
+        kind[k] = c;
+        nearestD2[k] = d2[c];
+        nearest[k] = c == Plate ? -1 : best[c];
+        break;
+      }
+    }
+    ++count[kind[k]];
+  }
+  EXPECT_GT(count[Avoidable], 0);
+  EXPECT_GT(count[Plate], 0);
+  EXPECT_GT(count[Exempt], 0);
+  EXPECT_EQ(r.violatingStations, count[Avoidable] + count[Plate] + count[Exempt]);
+  EXPECT_EQ(r.plateStations, count[Plate]);
+  EXPECT_EQ(r.unavoidableStations, count[Plate] + count[Exempt]);
+  EXPECT_FALSE(r.orderCollisionFree);
+  ASSERT_EQ(static_cast<long long>(r.violations.size()), r.violatingStations);
+  for (const CollisionViolation& v : r.violations) {
+    const int k = v.station;
+    EXPECT_EQ(v.unavoidable, kind[k] != Avoidable) << k;
+    EXPECT_EQ(v.obstacle, nearest[k]) << k;
+    EXPECT_NEAR((v.obstaclePoint - v.stationPoint).squaredNorm(), nearestD2[k], 1e-9) << k;
+  }
+}
