@@ -648,6 +648,13 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
             return d.dot(r) / length > cosHopeless &&
                    d.dot(r) * std::cos(maxTilt) > nozzle.tipClearance + length * std::sin(maxTilt);
           };
+          // A ball none of whose points can be hopeless: all of it at least the hopeless
+          // angle from the reference (a far cluster holds thousands of points, few or none of
+          // them in that cone: its sub-balls outside it are passed over).
+          auto outsideHopeless = [&](const Obstacles::Cluster& c) {
+            return !c.around &&
+                   c.direction.dot(r) <= cosOfSum(cosHopeless, sinHopeless, c.sinSpread);
+          };
           bool cannot = false;
           for (int t = 0; t < PathObstacleTrees::kTrees && !cannot; ++t) {
             trees.tree(t).forEachCluster(
@@ -658,10 +665,8 @@ AxisClearanceResult clearNozzleAxes(const std::vector<Vec3>& points, std::vector
                 [&](const TimedPointTree::Node& node) {
                   obstacles.add(node, t);
                   const Obstacles::Cluster& cl = obstacles.clusters.back();
-                  if (coneOnly && cosHopeless < 2 &&
-                      (cl.around ||
-                       cl.direction.dot(r) > cosOfSum(cosHopeless, sinHopeless, cl.sinSpread))) {
-                    cannot = obstacles.anyPoint(cl, hopelessPoint);
+                  if (coneOnly && cosHopeless < 2 && !outsideHopeless(cl)) {
+                    cannot = obstacles.anyPoint(cl, outsideHopeless, hopelessPoint);
                   }
                   return cannot;
                 });
