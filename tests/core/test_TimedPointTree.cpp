@@ -24,6 +24,24 @@ struct BallBound {
   }
 };
 
+/// The points the tree reports at time `now` in its subtree `root` that lie in the ball.
+template <class Prune = TimedPointTree::KeepEveryGroup>
+std::set<int> pointsInBall(const TimedPointTree& tree, const std::vector<Eigen::Vector3d>& points,
+                           const BallBound& ball, int now, int root = 0,
+                           const Prune& prune = Prune{}) {
+  std::set<int> found;
+  tree.forEachCandidate(
+      ball, now,
+      [&](int i) {
+        if ((points[static_cast<size_t>(i)] - ball.centre).norm() <= ball.radius) {
+          found.insert(i);
+        }
+        return false;
+      },
+      root, prune);
+  return found;
+}
+
 }  // namespace
 
 TEST(TimedPointTree, ReportsEveryEarlierPointInTheBoundOnSmallAndLargeTrees) {
@@ -41,13 +59,8 @@ TEST(TimedPointTree, ReportsEveryEarlierPointInTheBoundOnSmallAndLargeTrees) {
     for (int q = 0; q < 20; ++q) {
       const BallBound ball{{coordinate(rng), coordinate(rng), coordinate(rng)}, 6.0};
       const int now = n / 2 + q;
-      std::set<int> reported, expected;
-      tree.forEachCandidate(ball, now, [&](int i) {
-        if ((points[static_cast<size_t>(i)] - ball.centre).norm() <= ball.radius) {
-          reported.insert(i);
-        }
-        return false;
-      });
+      const std::set<int> reported = pointsInBall(tree, points, ball, now);
+      std::set<int> expected;
       for (int i = 0; i < n; ++i) {
         if (time[static_cast<size_t>(i)] < now &&
             (points[static_cast<size_t>(i)] - ball.centre).norm() <= ball.radius) {
@@ -85,17 +98,7 @@ TEST(TimedPointTree, ASplitRootSearchesEachKindAloneAndBothTogether) {
       const BallBound ball{{coordinate(rng), coordinate(rng), 0.1 * coordinate(rng) - 2}, 8.0};
       const int now = material / 2 + q;
       auto search = [&](const TimedPointTree& tree, int root) {
-        std::set<int> found;
-        tree.forEachCandidate(
-            ball, now,
-            [&](int i) {
-              if ((points[static_cast<size_t>(i)] - ball.centre).norm() <= ball.radius) {
-                found.insert(i);
-              }
-              return false;
-            },
-            root);
-        return found;
+        return pointsInBall(tree, points, ball, now, root);
       };
       const std::set<int> all = search(plain, 0);
       EXPECT_EQ(search(split, 0), all);
@@ -186,21 +189,10 @@ TEST(TimedPointTree, GroupedPointsArePrunedByGroupAndEveryOtherPointIsReported) 
         }
       }
       auto search = [&](const TimedPointTree& tree, int root) {
-        std::set<int> found;
-        tree.forEachCandidate(
-            ball, now,
-            [&](int i) {
-              if ((points[static_cast<size_t>(i)] - ball.centre).norm() <= ball.radius) {
-                found.insert(i);
-              }
-              return false;
-            },
-            root,
-            [&](int g) {
-              ++asked;
-              return prune(g);
-            });
-        return found;
+        return pointsInBall(tree, points, ball, now, root, [&](int g) {
+          ++asked;
+          return prune(g);
+        });
       };
       EXPECT_EQ(search(grouped, 0), expected) << "query " << q;
       EXPECT_EQ(search(split, 0), expected);
