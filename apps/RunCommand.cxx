@@ -137,6 +137,15 @@ private:
               std::cout << "geolattice: trying the search's candidate of rank " << rank
                         << " first: the best one's direction without its pedestal\n";
             }
+          } else if (const int kept = P.PreferThePlacementToATallerPrint(); kept >= 0) {
+            P.Orientation->Update();
+            placed = P.Orientation->GetOutputDataObject(0);
+            this->Section("orient")["placement_first_rank"] = kept;
+            if (!R.quiet) {
+              std::cout << "geolattice: trying the part as placed first (the search's rank " << kept
+                        << "): it prints in at most half the layers, and the search "
+                        << "counted only the plate against it\n";
+            }
           }
         }
         reportOrientation(placed, this->Section("orient"));

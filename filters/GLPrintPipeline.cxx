@@ -236,6 +236,56 @@ int GLPrintPipeline::PreferTheBaseToAPedestal() {
   return -1;
 }
 
+int GLPrintPipeline::PreferThePlacementToATallerPrint() {
+  if (this->Orientation->GetOrient() != vtkGLAutoOrient::AUTO || this->TetMeshInput ||
+      this->OrientationTries < 2 || !this->Orientation->GetExecutive()->Update()) {
+    return -1;
+  }
+  vtkPolyData* candidates = vtkPolyData::SafeDownCast(this->Orientation->GetOutputDataObject(1));
+  vtkPointData* pd = candidates ? candidates->GetPointData() : nullptr;
+  auto array = [pd](const char* name) {
+    return pd ? vtkDataArray::SafeDownCast(pd->GetAbstractArray(name)) : nullptr;
+  };
+  namespace arrays = geolattice::arrays;
+  vtkDataArray *rank = array(arrays::OrientRank), *pedestal = array(arrays::Pedestal),
+               *feasible = array(arrays::Feasible), *refined = array(arrays::Refined),
+               *colliding = array(arrays::CollidingStations), *plate = array(arrays::PlateStations),
+               *layers = array(arrays::LayerCount), *stations = array(arrays::CollisionStations);
+  auto* source =
+      pd ? vtkStringArray::SafeDownCast(pd->GetAbstractArray(arrays::OrientSource)) : nullptr;
+  if (!rank || !pedestal || !feasible || !refined || !colliding || !plate || !layers || !stations ||
+      !source) {
+    return -1;
+  }
+  const vtkIdType n = candidates->GetNumberOfPoints();
+  vtkIdType best = -1, placement = -1;
+  for (vtkIdType i = 0; i < n; ++i) {
+    if (rank->GetTuple1(i) == 0) {
+      best = i;
+    }
+    if (source->GetValue(i) == "keep" && pedestal->GetTuple1(i) == 0) {
+      placement = i;
+    }
+  }
+  if (best < 0 || placement < 0 || best == placement || !(feasible->GetTuple1(placement) > 0) ||
+      !(refined->GetTuple1(placement) > 0)) {
+    return -1;
+  }
+  // Where the search's count against it is the kind the print does not have: within 1 % of
+  // its stations (the toolpath's tilts clear such stations, as PreferTheBaseToAPedestal), or at
+  // least 99 % of them at the plate (a thin part's coarse layers lean at the rim).
+  const double collisions = colliding->GetTuple1(placement);
+  const bool few = collisions <= 0.01 * stations->GetTuple1(placement);
+  const bool atThePlate = plate->GetTuple1(placement) >= 0.99 * collisions;
+  if (!(collisions > 0) || !(few || atThePlate) ||
+      2 * layers->GetTuple1(placement) > layers->GetTuple1(best)) {
+    return -1;
+  }
+  const int r = static_cast<int>(rank->GetTuple1(placement));
+  this->Orientation->SetCandidateRank(r);
+  return r;
+}
+
 GLPrintPipeline::ToolpathVerdict GLPrintPipeline::UpdateToolpathVerdict() {
   ToolpathVerdict v;
   const auto start = std::chrono::steady_clock::now();

@@ -260,8 +260,12 @@ int vtkGLPrintPart::RequestData(vtkInformation*, vtkInformationVector** inputVec
     p.Pedestal->SetHeightOverride(-1);     // and the search's pedestal
     GLPrintPipeline::ClearStopRequest();
     I.error.clear();
-    p.PreferTheBaseToAPedestal();  // Orient Auto: the part on its own base first, where as good
-    I.error.clear();               // (a failing search is reported by its stage below)
+    // Orient Auto: the part on its own base first, where as good; else the placement first,
+    // where the search may have misjudged it (GLPrintPipeline.h)
+    if (p.PreferTheBaseToAPedestal() < 0) {
+      p.PreferThePlacementToATallerPrint();
+    }
+    I.error.clear();  // (a failing search is reported by its stage below)
     // Each stage in order, so a failure names its stage.
     auto stages = [&] {
       for (GLPrintPipeline::Stage s :

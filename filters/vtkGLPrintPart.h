@@ -33,7 +33,9 @@
  * toolpath too and the one that collides least is printed: GLPrintPipeline::
  * ChooseOrderByToolpath), NozzleAngle (degrees), PrintheadFile (empty = the parametric cone).
  * Those tries (orientations, then taller pedestals, then orders) are
- * GLPrintPipeline::FindAPrintableSetUp, the sequence the command line runs too.
+ * GLPrintPipeline::FindAPrintableSetUp, the sequence the command line runs too; before them the
+ * part on its own base or as placed is put first where the search may have misjudged it
+ * (GLPrintPipeline::PreferTheBaseToAPedestal, PreferThePlacementToATallerPrint).
  *
  * Errors (vtkErrorMacro naming the stage and its message, empty outputs, RequestData returns 0):
  * whatever a stage rejects.

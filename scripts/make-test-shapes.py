@@ -28,6 +28,9 @@ nozzle is a cone of half-angle 45 deg printing curved layers that grow from the 
                          post on a disc (r 18, 3.5 mm thick): its first turn passes 4 mm over the
                          disc, a gap a 45 deg nozzle fits only if the disc under it is printed
                          first (print order test)
+  thin_plate.obj         flat plate 60 x 60 x 2 mm, edges rounded 0.5 mm, lying flat: thinner
+                         than the orientation search's coarse elements, so the search misjudges
+                         it as placed; it prints flat in 4 layers (orientation search test)
 
 Method (deterministic, no random numbers):
   1. Each part is a signed distance function (SDF, < 0 inside) built from exact primitive SDFs
@@ -354,6 +357,16 @@ def coil_sdf(p):
     return on_platform(union([tube, disc, post], c["blend"]), p)
 
 
+THIN_PLATE = dict(size=60.0, thickness=2.0, edge_radius=0.5)
+
+
+def thin_plate_sdf(p):
+    T = THIN_PLATE
+    half = T["size"] / 2
+    return sd_round_box(p, (0, 0, T["thickness"] / 2), (half, half, T["thickness"] / 2),
+                        T["edge_radius"])
+
+
 def _fmt(params):
     return ", ".join(f"{k} {v}" for k, v in params.items())
 
@@ -383,6 +396,9 @@ PARTS = {
     "coil": dict(sdf=coil_sdf, bounds=(-19, 19, -19, 19, -1, 45), feature=3.0, genus=0,
                  what="coil: three turns rising from a post on a disc, the first turn 4 mm over the disc",
                  params=COIL),
+    "thin_plate": dict(sdf=thin_plate_sdf, bounds=(-31, 31, -31, 31, -1, 3), feature=2.0, genus=0,
+                       what="flat plate 60 x 60 x 2 mm lying flat, edges rounded 0.5 mm",
+                       params=THIN_PLATE),
 }
 
 # --------------------------------------------------------------------------------------------

@@ -2,7 +2,8 @@
 mesh, as placed and in the orientation search's coarse evaluation. These parts found three ways
 TetGen's output or run can fail (a volume check too strict for finely curved facets, flat slivers,
 a refinement that does not end on a simplified surface) that the bundled models never showed; the
-coil, that the print order must be chosen by the real toolpath."""
+coil, that the print order must be chosen by the real toolpath; the thin plate, that the placement
+must be tried where the orientation search's coarse mesh misjudges it."""
 import json
 import os
 import shutil
@@ -13,7 +14,7 @@ import unittest
 
 CLI = os.environ["GEOLATTICE_CLI"]
 SOURCE_DIR = os.environ["GEOLATTICE_SOURCE_DIR"]
-SHAPES = ["genus3_block", "handle_mug", "mushroom", "wrench", "arch", "coil"]
+SHAPES = ["genus3_block", "handle_mug", "mushroom", "wrench", "arch", "coil", "thin_plate"]
 
 
 class ShapesMeshTest(unittest.TestCase):
@@ -99,6 +100,37 @@ class ShapesMeshTest(unittest.TestCase):
         self.assertEqual(orient["pedestal_mm"], 0)
         self.assertNotIn("pedestal", report)  # no pedestal stage ran
         self.assertEqual(report["toolpath"]["violating_stations"], 0)
+
+    def test_a_thin_plate_prints_as_placed(self):
+        # A 60 x 60 x 2 mm plate lying flat: the search's coarse elements are thicker than the
+        # plate, and it counts stations against the placement that the full run does not have.
+        # Its best stands the plate on an edge (~100 layers). The placement would print in at
+        # most half the layers and lost by few stations, so it is tried first: it prints, flat.
+        out = os.path.join(self.tmp, "plate-auto")
+        result = subprocess.run([CLI, "run", os.path.join(self.tmp, "thin_plate.obj"), "-o", out,
+                                 "-q", "--orient", "auto", "--until", "toolpath"],
+                                capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(out, "report.json")) as f:
+            report = json.load(f)
+        orient = report["orient"]
+        self.assertIn("placement_first_rank", orient)
+        self.assertNotEqual(orient["placement_first_rank"], 0)
+        self.assertEqual(orient["chosen_rank"], orient["placement_first_rank"])
+        self.assertEqual(orient["up"], [0, 0, 1])
+        self.assertEqual(orient["pedestal_mm"], 0)
+        self.assertLessEqual(report["layers"]["count"], 5)
+        self.assertEqual(report["toolpath"]["violating_stations"], 0)
+        # With one try the search's best is printed as it is: the plate on an edge or a pedestal.
+        out = os.path.join(self.tmp, "plate-auto-one-try")
+        result = subprocess.run([CLI, "run", os.path.join(self.tmp, "thin_plate.obj"), "-o", out,
+                                 "-q", "--orient", "auto", "--orient-tries", "1", "--until",
+                                 "layers"], capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(out, "report.json")) as f:
+            report = json.load(f)
+        self.assertNotIn("placement_first_rank", report["orient"])
+        self.assertGreater(report["layers"]["count"], 20)
 
 
 if __name__ == "__main__":
