@@ -116,11 +116,43 @@ private:
 
 vtkStandardNewMacro(BufferedBase64OutputStream);
 
+/// A VTK XML writer that frees its appended-mode position arrays only when it allocated them.
+/// VTK 9.2's writers free them when a write fails for lack of disk space (WriteAPiece), also in
+/// binary inline mode, which never allocates them: the process aborted ("munmap_chunk(): invalid
+/// pointer", "double free or corruption") instead of reporting the failure.
+template <class Writer>
+class GLXMLWriter : public Writer {
+public:
+  vtkTypeMacro(GLXMLWriter, Writer);
+  static GLXMLWriter* New() {
+    auto* writer = new GLXMLWriter;
+    writer->InitializeObjectBase();
+    return writer;
+  }
+
+protected:
+  GLXMLWriter() = default;
+  ~GLXMLWriter() override = default;
+  void AllocatePositionArrays() override {
+    this->Writer::AllocatePositionArrays();
+    this->PositionArraysAllocated = true;
+  }
+  void DeletePositionArrays() override {
+    if (this->PositionArraysAllocated) {
+      this->Writer::DeletePositionArrays();
+      this->PositionArraysAllocated = false;
+    }
+  }
+
+private:
+  bool PositionArraysAllocated = false;
+};
+
 /// A VTK XML writer whose binary data goes through BufferedBase64OutputStream.
 template <class Writer>
-class GLBufferedXMLWriter : public Writer {
+class GLBufferedXMLWriter : public GLXMLWriter<Writer> {
 public:
-  vtkTypeMacro(GLBufferedXMLWriter, Writer);
+  vtkTypeMacro(GLBufferedXMLWriter, GLXMLWriter<Writer>);
   static GLBufferedXMLWriter* New() {
     auto* writer = new GLBufferedXMLWriter;
     writer->InitializeObjectBase();
@@ -218,11 +250,11 @@ bool writeXmlDataFile(vtkDataObject* data, const std::string& file, bool buffere
   }
   if (vtkUnstructuredGrid::SafeDownCast(data)) {
     return bufferedBase64 ? writeWith<GLBufferedXMLWriter<vtkXMLUnstructuredGridWriter>>(data, file)
-                          : writeWith<vtkXMLUnstructuredGridWriter>(data, file);
+                          : writeWith<GLXMLWriter<vtkXMLUnstructuredGridWriter>>(data, file);
   }
   if (vtkPolyData::SafeDownCast(data)) {
     return bufferedBase64 ? writeWith<GLBufferedXMLWriter<vtkXMLPolyDataWriter>>(data, file)
-                          : writeWith<vtkXMLPolyDataWriter>(data, file);
+                          : writeWith<GLXMLWriter<vtkXMLPolyDataWriter>>(data, file);
   }
   throw GeoLatticeError("cannot write a " + std::string(data ? data->GetClassName() : "null") +
                         " to " + file);

@@ -96,8 +96,18 @@ void writeAtomically(const std::string& path,
     fs::rename(tmp, path, ec);
   }
   if (!ok || ec) {
+    std::string why = ec ? ": " + ec.message() : "";
+    // A writer that only says it failed: name a full device, the common cause (measured before
+    // the partial file is removed).
+    std::error_code spaceError;
+    const fs::space_info space =
+        fs::space(fs::absolute(path, spaceError).parent_path(), spaceError);
+    if (!ok && !spaceError && space.available < (1u << 20)) {
+      why =
+          ": no space left on the device (" + std::to_string(space.available / 1024) + " KiB free)";
+    }
     fs::remove(tmp, ec);
-    throw FileWriteError("could not write " + path + (ec ? ": " + ec.message() : ""));
+    throw FileWriteError("could not write " + path + why);
   }
 }
 

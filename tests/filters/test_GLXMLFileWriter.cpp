@@ -21,7 +21,14 @@
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include <csignal>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <sys/resource.h>
+#include <unistd.h>
 
 using geolattice::writeXmlDataFile;
 
@@ -135,4 +142,38 @@ TEST(GLXMLFileWriter, Failures) {
   vtkNew<vtkImageData> image;
   EXPECT_THROW(writeXmlDataFile(image, "/tmp/image.vti"), geolattice::GeoLatticeError);
   EXPECT_THROW(writeXmlDataFile(nullptr, "/tmp/none.vtp"), geolattice::GeoLatticeError);
+}
+
+// A write that runs out of space (here: past the process's file size limit, RLIMIT_FSIZE, so the
+// stream fails as on a full disk) is a failure (false), not a crash: VTK 9.2's writers free
+// position arrays on that path that binary inline mode never allocated, and the process aborted
+// ("munmap_chunk(): invalid pointer"). Each write runs in a child process with the limit.
+TEST(GLXMLFileWriterDeathTest, RunningOutOfSpaceIsAFailureNotACrash) {
+  testing::FLAGS_gtest_death_test_style = "threadsafe";
+  const std::string file = (std::filesystem::temp_directory_path() /
+                            ("geolattice-full-" + std::to_string(::getpid()) + ".vtp"))
+                               .string();
+  auto fullWrite = [&file](vtkDataObject* data, bool buffered) {
+    rlimit limit{};
+    limit.rlim_cur = limit.rlim_max = 65536;  // bytes: far less than the data
+    setrlimit(RLIMIT_FSIZE, &limit);
+    std::signal(SIGXFSZ, SIG_IGN);  // the write fails instead of ending the process
+    std::exit(writeXmlDataFile(data, file, buffered) ? 1 : 0);
+  };
+  vtkNew<vtkPolyData> poly = polyline(200001);
+  vtkNew<vtkUnstructuredGrid> grid;  // 20,000 tets over 80,000 points
+  vtkNew<vtkPoints> points;
+  for (vtkIdType i = 0; i < 80000; ++i) {
+    points->InsertNextPoint(std::sin(0.1 * i), std::cos(0.37 * i), 1e-3 * i);
+  }
+  grid->SetPoints(points);
+  for (vtkIdType t = 0; t < 20000; ++t) {
+    const vtkIdType tet[4] = {4 * t, 4 * t + 1, 4 * t + 2, 4 * t + 3};
+    grid->InsertNextCell(VTK_TETRA, 4, tet);
+  }
+  for (const bool buffered : {true, false}) {
+    EXPECT_EXIT(fullWrite(poly, buffered), testing::ExitedWithCode(0), "") << buffered;
+    EXPECT_EXIT(fullWrite(grid, buffered), testing::ExitedWithCode(0), "") << buffered;
+  }
+  std::filesystem::remove(file);
 }
