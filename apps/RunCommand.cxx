@@ -143,8 +143,7 @@ private:
             this->Section("orient")["placement_first_rank"] = kept;
             if (!R.quiet) {
               std::cout << "geolattice: trying the part as placed first (the search's rank " << kept
-                        << "): it prints in at most half the layers, and the search "
-                        << "counted only the plate against it\n";
+                        << "): the best one needs a pedestal or twice its layers\n";
             }
           }
         }

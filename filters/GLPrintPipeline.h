@@ -105,17 +105,18 @@ public:
   /// Returns the rank put first, or -1 (nothing changed). Updates the orientation search.
   int PreferTheBaseToAPedestal();
 
-  /// With Orient Auto and OrientTries >= 2: when the search's best candidate is not the part as
-  /// placed, and the placement stands on the plate (feasible, refined, no pedestal), lost on
-  /// colliding stations of the kind the print does not have (within 1 % of its stations, which
-  /// the toolpath's tilts clear, or at least 99 % of them at the plate), and would print in at
-  /// most half the layers of the best, the placement is put first (CandidateRank) and printed if
-  /// its toolpath is collision-free (ChooseOrientationByToolpath tries the search's best next if
-  /// it collides). Why: on a thin part the coarse mesh's elements are thicker than the part, its
-  /// layers lean at the rim and the nozzle along their normals meets the plate; the full run's
-  /// layers and axis tilts do not (a 120 x 120 x 2 mm plate: 1,118 plate stations in the search,
-  /// 0 in the full run; the search stood it on its edge, 204 layers instead of 5). Returns the
-  /// rank put first, or -1 (nothing changed). Updates the orientation search.
+  /// With Orient Auto and OrientTries >= 2: when the search's best candidate is a much longer
+  /// print than the part as placed (twice its layers, or a pedestal where the placement collided
+  /// mostly with material, not the plate), and the placement stands on the plate (feasible,
+  /// refined, no pedestal) but lost on colliding stations, the placement is put first
+  /// (CandidateRank) and printed if its toolpath is collision-free (ChooseOrientationByToolpath
+  /// tries the search's best next if it collides). Why: the search scores on a coarse mesh, and
+  /// its count against the placement is often one the print does not have (three touching
+  /// rings: 850 of 18,042 stations, 78 forced steps; a 120 x 120 x 2 mm plate, thinner than the
+  /// coarse elements: 1,118 at the plate; 0 in each full run), while a pedestal or twice the
+  /// layers make a much longer print (the plate stood on its edge on a pedestal: 204 layers
+  /// instead of 5). Trying costs at most one run of the placement. Returns the rank put first,
+  /// or -1 (nothing changed). Updates the orientation search.
   int PreferThePlacementToATallerPrint();
 
   /// One orientation run through the toolpath verifier by ChooseOrientationByToolpath.

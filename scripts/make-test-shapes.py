@@ -28,6 +28,9 @@ nozzle is a cone of half-angle 45 deg printing curved layers that grow from the 
                          post on a disc (r 18, 3.5 mm thick): its first turn passes 4 mm over the
                          disc, a gap a 45 deg nozzle fits only if the disc under it is printed
                          first (print order test)
+  two_rings.obj          two rings (tori R 10, r 3) lying flat side by side, touching: as written
+                         they print, which the orientation search's coarse mesh does not see
+                         (orientation search test)
   thin_plate.obj         flat plate 60 x 60 x 2 mm, edges rounded 0.5 mm, lying flat: thinner
                          than the orientation search's coarse elements, so the search misjudges
                          it as placed; it prints flat in 4 layers (orientation search test)
@@ -357,6 +360,17 @@ def coil_sdf(p):
     return on_platform(union([tube, disc, post], c["blend"]), p)
 
 
+TWO_RINGS = dict(major_radius=10.0, tube_radius=3.0, blend=2.0)
+
+
+def two_rings_sdf(p):
+    R = TWO_RINGS
+    half = R["major_radius"] + R["tube_radius"]  # the rings touch at x = 0
+    rings = [sd_torus(p, (s * half, 0, R["tube_radius"]), (0, 0, 1), R["major_radius"],
+                      R["tube_radius"]) for s in (-1, 1)]
+    return union(rings, R["blend"])
+
+
 THIN_PLATE = dict(size=60.0, thickness=2.0, edge_radius=0.5)
 
 
@@ -396,6 +410,9 @@ PARTS = {
     "coil": dict(sdf=coil_sdf, bounds=(-19, 19, -19, 19, -1, 45), feature=3.0, genus=0,
                  what="coil: three turns rising from a post on a disc, the first turn 4 mm over the disc",
                  params=COIL),
+    "two_rings": dict(sdf=two_rings_sdf, bounds=(-27, 27, -14, 14, -1, 7), feature=3.0, genus=2,
+                      what="two rings (tori) lying flat side by side, touching, blended 2 mm",
+                      params=TWO_RINGS),
     "thin_plate": dict(sdf=thin_plate_sdf, bounds=(-31, 31, -31, 31, -1, 3), feature=2.0, genus=0,
                        what="flat plate 60 x 60 x 2 mm lying flat, edges rounded 0.5 mm",
                        params=THIN_PLATE),

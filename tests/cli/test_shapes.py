@@ -14,7 +14,8 @@ import unittest
 
 CLI = os.environ["GEOLATTICE_CLI"]
 SOURCE_DIR = os.environ["GEOLATTICE_SOURCE_DIR"]
-SHAPES = ["genus3_block", "handle_mug", "mushroom", "wrench", "arch", "coil", "thin_plate"]
+SHAPES = ["genus3_block", "handle_mug", "mushroom", "wrench", "arch", "coil", "thin_plate",
+          "two_rings"]
 
 
 class ShapesMeshTest(unittest.TestCase):
@@ -101,18 +102,38 @@ class ShapesMeshTest(unittest.TestCase):
         self.assertNotIn("pedestal", report)  # no pedestal stage ran
         self.assertEqual(report["toolpath"]["violating_stations"], 0)
 
+    def orient_auto(self, name, out, *args):
+        result = subprocess.run([CLI, "run", os.path.join(self.tmp, name + ".obj"), "-o",
+                                 os.path.join(self.tmp, out), "-q", "--orient", "auto", *args],
+                                capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(self.tmp, out, "report.json")) as f:
+            return json.load(f)
+
+    def test_touching_rings_print_as_placed_without_a_pedestal(self):
+        # Two rings lying flat, touching: the search's coarse mesh counts collisions against the
+        # placement (forced steps where the rings meet) that the print does not have, and its
+        # best stands the part on a 10 mm pedestal. The placement is tried first: it prints.
+        report = self.orient_auto("two_rings", "rings-auto", "--until", "toolpath")
+        orient = report["orient"]
+        self.assertIn("placement_first_rank", orient)
+        self.assertEqual(orient["chosen_rank"], orient["placement_first_rank"])
+        self.assertEqual(orient["up"], [0, 0, 1])
+        self.assertEqual(orient["pedestal_mm"], 0)
+        self.assertNotIn("pedestal", report)  # no pedestal stage ran
+        self.assertEqual(report["toolpath"]["violating_stations"], 0)
+        # With one try the search's best is printed as it is: on a pedestal.
+        report = self.orient_auto("two_rings", "rings-auto-one-try", "--orient-tries", "1",
+                                  "--until", "mesh")
+        self.assertNotIn("placement_first_rank", report["orient"])
+        self.assertGreater(report["orient"]["pedestal_mm"], 0)
+
     def test_a_thin_plate_prints_as_placed(self):
         # A 60 x 60 x 2 mm plate lying flat: the search's coarse elements are thicker than the
         # plate, and it counts stations against the placement that the full run does not have.
-        # Its best stands the plate on an edge (~100 layers). The placement would print in at
-        # most half the layers and lost by few stations, so it is tried first: it prints, flat.
-        out = os.path.join(self.tmp, "plate-auto")
-        result = subprocess.run([CLI, "run", os.path.join(self.tmp, "thin_plate.obj"), "-o", out,
-                                 "-q", "--orient", "auto", "--until", "toolpath"],
-                                capture_output=True, text=True, timeout=600)
-        self.assertEqual(result.returncode, 0, result.stderr)
-        with open(os.path.join(out, "report.json")) as f:
-            report = json.load(f)
+        # Its best stands the plate on an edge (~100 layers), more than twice the placement's,
+        # so the placement is tried first through the toolpath: it prints, flat.
+        report = self.orient_auto("thin_plate", "plate-auto", "--until", "toolpath")
         orient = report["orient"]
         self.assertIn("placement_first_rank", orient)
         self.assertNotEqual(orient["placement_first_rank"], 0)
@@ -122,13 +143,8 @@ class ShapesMeshTest(unittest.TestCase):
         self.assertLessEqual(report["layers"]["count"], 5)
         self.assertEqual(report["toolpath"]["violating_stations"], 0)
         # With one try the search's best is printed as it is: the plate on an edge or a pedestal.
-        out = os.path.join(self.tmp, "plate-auto-one-try")
-        result = subprocess.run([CLI, "run", os.path.join(self.tmp, "thin_plate.obj"), "-o", out,
-                                 "-q", "--orient", "auto", "--orient-tries", "1", "--until",
-                                 "layers"], capture_output=True, text=True, timeout=600)
-        self.assertEqual(result.returncode, 0, result.stderr)
-        with open(os.path.join(out, "report.json")) as f:
-            report = json.load(f)
+        report = self.orient_auto("thin_plate", "plate-auto-one-try", "--orient-tries", "1",
+                                  "--until", "layers")
         self.assertNotIn("placement_first_rank", report["orient"])
         self.assertGreater(report["layers"]["count"], 20)
 
