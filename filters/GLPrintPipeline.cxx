@@ -195,13 +195,17 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
   return done;
 }
 
-int GLPrintPipeline::PreferTheBaseToAPedestal() {
+vtkPointData* GLPrintPipeline::OrientationCandidates() {
   if (this->Orientation->GetOrient() != vtkGLAutoOrient::AUTO || this->TetMeshInput ||
       !this->Orientation->GetExecutive()->Update()) {
-    return -1;
+    return nullptr;
   }
   vtkPolyData* candidates = vtkPolyData::SafeDownCast(this->Orientation->GetOutputDataObject(1));
-  vtkPointData* pd = candidates ? candidates->GetPointData() : nullptr;
+  return candidates ? candidates->GetPointData() : nullptr;
+}
+
+int GLPrintPipeline::PreferTheBaseToAPedestal() {
+  vtkPointData* pd = this->OrientationCandidates();
   auto array = [pd](const char* name) {
     return pd ? vtkDataArray::SafeDownCast(pd->GetAbstractArray(name)) : nullptr;
   };
@@ -213,7 +217,7 @@ int GLPrintPipeline::PreferTheBaseToAPedestal() {
   if (!rank || !up || !pedestal || !feasible || !refined || !colliding || !stations) {
     return -1;
   }
-  const vtkIdType n = candidates->GetNumberOfPoints();
+  const vtkIdType n = rank->GetNumberOfTuples();
   vtkIdType best = -1;
   for (vtkIdType i = 0; i < n && best < 0; ++i) {
     best = rank->GetTuple1(i) == 0 ? i : -1;
@@ -237,12 +241,7 @@ int GLPrintPipeline::PreferTheBaseToAPedestal() {
 }
 
 int GLPrintPipeline::PreferThePlacementToATallerPrint() {
-  if (this->Orientation->GetOrient() != vtkGLAutoOrient::AUTO || this->TetMeshInput ||
-      this->OrientationTries < 2 || !this->Orientation->GetExecutive()->Update()) {
-    return -1;
-  }
-  vtkPolyData* candidates = vtkPolyData::SafeDownCast(this->Orientation->GetOutputDataObject(1));
-  vtkPointData* pd = candidates ? candidates->GetPointData() : nullptr;
+  vtkPointData* pd = this->OrientationTries < 2 ? nullptr : this->OrientationCandidates();
   auto array = [pd](const char* name) {
     return pd ? vtkDataArray::SafeDownCast(pd->GetAbstractArray(name)) : nullptr;
   };
@@ -256,7 +255,7 @@ int GLPrintPipeline::PreferThePlacementToATallerPrint() {
   if (!rank || !pedestal || !feasible || !refined || !colliding || !plate || !layers || !source) {
     return -1;
   }
-  const vtkIdType n = candidates->GetNumberOfPoints();
+  const vtkIdType n = rank->GetNumberOfTuples();
   vtkIdType best = -1, placement = -1;
   for (vtkIdType i = 0; i < n; ++i) {
     if (rank->GetTuple1(i) == 0) {

@@ -45,6 +45,7 @@
 #include <vector>
 
 class vtkAlgorithm;
+class vtkPointData;
 
 class GEOLATTICEFILTERS_EXPORT GLPrintPipeline {
 public:
@@ -266,6 +267,10 @@ private:
     double seconds = 0;
   };
   ToolpathVerdict UpdateToolpathVerdict();
+
+  /// With Orient Auto: the orientation search brought up to date and its candidates' point data
+  /// (one point per candidate: rank, scores, source), or null (Keep, a tet mesh, a failure).
+  vtkPointData* OrientationCandidates();
 
   bool TetMeshInput = false;
 };
