@@ -217,15 +217,29 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
       auto inside = [&](int q) {
         return volume.contains(points[k], axis[k], all[q]);
       };
+      // The first obstacle inside the nozzle that `take` takes, in the subtree `root` of `t`
+      // with the groups `prune` says skipped, or -1.
+      auto firstInside = [&](const TimedPointTree& t, auto&& take, int root, auto&& prune) {
+        int found = -1;
+        t.forEachCandidate(
+            station, time[k],
+            [&](int q) {
+              if (!inside(q) || !take(q)) {
+                return false;
+              }
+              found = q;
+              return true;
+            },
+            root, prune);
+        return found;
+      };
+      auto any = [](int) {
+        return true;
+      };
+      const TimedPointTree::KeepEveryGroup everyGroup;
       Verdict v{k, -1, 0.0, 0.0, false, false, Kind::Any};
       if (!exemption) {  // one kind: material or plate, the nearest to the tip decides
-        tree.forEachCandidate(station, time[k], [&](int q) {
-          if (!inside(q)) {
-            return false;
-          }
-          v.hit = q;
-          return true;
-        });
+        v.hit = firstInside(tree, any, 0, everyGroup);
         if (v.hit >= 0 && nearerOfTheKinds(station, k, v.hit, v.height, v.radial)) {
           v.kind = Kind::Located;
         }
@@ -246,28 +260,12 @@ CollisionReport verifyNozzleClearance(const std::vector<Vec>& points,
         });
         if (plateHit >= 0 || exemptHit >= 0) {
           const TimedPointTree& material = groupedMaterial();
-          material.forEachCandidate(
-              station, time[k],
-              [&](int q) {
-                if (!inside(q) || exempt(k, exemption->group[q])) {
-                  return false;
-                }
-                v.hit = q;
-                return true;
-              },
+          v.hit = firstInside(
+              material, [&](int q) { return !exempt(k, exemption->group[q]); },
               withPlate ? material.firstChild() : 0, [&](int g) { return exempt(k, g); });
         }
         if (v.hit < 0 && exemptHit >= 0 && withPlate) {
-          tree.forEachCandidate(
-              station, time[k],
-              [&](int q) {
-                if (!inside(q)) {
-                  return false;
-                }
-                plateHit = q;
-                return true;
-              },
-              plateRoot);
+          plateHit = firstInside(tree, any, plateRoot, everyGroup);
         }
         if (v.hit >= 0) {
           v.kind = Kind::Avoidable;
