@@ -369,6 +369,7 @@ void reportScript(GLPrintPipeline& p, Json& s) {
   Json reconfigurations = Json::array();
   for (int k = 0; k < w->GetNumberOfReconfigurations(); ++k) {
     reconfigurations.push_back({{"point", static_cast<long long>(w->GetReconfigurationPoint(k))},
+                                {"at_seam", w->GetReconfigurationAtSeam(k)},
                                 {"from_branch", w->GetReconfigurationFromBranch(k)},
                                 {"to_branch", w->GetReconfigurationToBranch(k)},
                                 {"retreat_mm", w->GetReconfigurationRetreat(k)},

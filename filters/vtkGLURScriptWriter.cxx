@@ -269,16 +269,21 @@ void vtkGLURScriptWriter::WriteData() {
           options.headerComments.push_back(line.str());
         }
         for (const gl::Reconfiguration& r : robotPath.reconfigurations) {
-          this->Reconfigurations.push_back({r.point, r.fromBranch, r.toBranch,
+          this->Reconfigurations.push_back({r.point, r.atSeam, r.fromBranch, r.toBranch,
                                             kMillimetresPerMetre * r.retreat,
                                             kMillimetresPerMetre * r.clearance});
         }
         if (!robotPath.reconfigurations.empty()) {
+          const auto seams =
+              std::count_if(robotPath.reconfigurations.begin(), robotPath.reconfigurations.end(),
+                            [](const gl::Reconfiguration& r) { return r.atSeam; });
           std::ostringstream line;
-          line << robotPath.reconfigurations.size()
-               << " reconfiguration(s) at air moves (one IK branch cannot follow the whole "
-                  "path): the part moves away from the nozzle, the arm turns in joint space, the "
-                  "part comes back; each is commented where it happens";
+          line << robotPath.reconfigurations.size() << " reconfiguration(s), "
+               << robotPath.reconfigurations.size() - static_cast<size_t>(seams)
+               << " at air moves and " << seams
+               << " at seams inside print runs (one IK branch cannot follow the whole path): "
+                  "the part moves away from the nozzle, the arm turns in joint space, the part "
+                  "comes back; each is commented where it happens";
           options.headerComments.push_back(line.str());
         }
         gl::checkAbort(this, 0.5);

@@ -158,7 +158,8 @@ public:
 
   ///@{
   /// When one IK branch cannot follow the whole path, change the robot's configuration at air
-  /// moves: the part moves straight away from the nozzle, the arm turns in joint space, the part
+  /// moves, or at a seam inside a print run where the wrist swings round or a joint reaches its
+  /// limit: the part moves straight away from the nozzle, the arm turns in joint space, the part
   /// comes back (core/robot/RobotPathSolver.h, step 4; tried in each layout before the next;
   /// default on).
   vtkSetMacro(Reconfigure, vtkTypeBool);
@@ -209,12 +210,14 @@ public:
   vtkIdType GetMaxLineLength() const { return this->MaxLineLength; }
   int GetIKBranch() const { return this->IKBranch; }
   /// The reconfigurations of the last Write() (Reconfigure), in path order: the toolpath point
-  /// (an air move) where each is made, the IK branches before and after, how far the part moves
-  /// away from the nozzle (mm) and the clearance of its bounding sphere during the joint move (mm).
+  /// (an air move, or a seam inside a print stretch) where each is made, whether it is a seam,
+  /// the IK branches before and after, how far the part moves away from the nozzle (mm) and the
+  /// clearance of its bounding sphere during the joint move (mm).
   int GetNumberOfReconfigurations() const {
     return static_cast<int>(this->Reconfigurations.size());
   }
   vtkIdType GetReconfigurationPoint(int k) const { return this->ReconfigurationAt(k).Point; }
+  bool GetReconfigurationAtSeam(int k) const { return this->ReconfigurationAt(k).AtSeam; }
   int GetReconfigurationFromBranch(int k) const { return this->ReconfigurationAt(k).FromBranch; }
   int GetReconfigurationToBranch(int k) const { return this->ReconfigurationAt(k).ToBranch; }
   double GetReconfigurationRetreat(int k) const { return this->ReconfigurationAt(k).Retreat; }
@@ -251,6 +254,7 @@ private:
 
   struct ReconfigurationResult {
     vtkIdType Point = -1;
+    bool AtSeam = false;
     int FromBranch = -1, ToBranch = -1;
     double Retreat = 0, Clearance = 0;  // mm
   };

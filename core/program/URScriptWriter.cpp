@@ -164,32 +164,62 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
       t = std::max(t, std::abs(b[j] - a[j]) / (o.speedFactor * robot.maxSpeed[j]));
     return std::max(t, 0.002);
   };
+  // A seam (a reconfiguration inside a print stretch) retracts and primes as the toolpath's
+  // air moves do: by the largest retraction found at them.
+  double seamRetraction = 0;
+  for (size_t i = 1; i < N; ++i)
+    if (kind[i] == 2)
+      seamRetraction = std::max(seamRetraction, (*in.extrusion)[i - 1] - (*in.extrusion)[i]);
   auto reconfiguration = [&](const Reconfiguration& r, std::string& out) {
     const double feed = (*in.feedRate)[static_cast<size_t>(r.point)];
     const double away = lineTime(r.arrive, r.retreatFrom, r.retreat, feed);
     const double back = lineTime(r.retreatTo, r.leave, r.retreat, feed);
-    double largest = 0;
-    for (int j = 0; j < 6; ++j)
-      largest = std::max(largest, std::abs(r.retreatTo[j] - r.retreatFrom[j]));
-    out += "  # reconfiguration between toolpath points " + std::to_string(r.point) + " and " +
-           std::to_string(r.point + 1) + ": IK branch " + std::to_string(r.fromBranch) + " -> " +
-           std::to_string(r.toBranch) + ", " + urNumber(1000 * r.retreat) +
+    out += "  # reconfiguration " + std::string(r.atSeam ? "at a seam at" : "between") +
+           " toolpath points " + std::to_string(r.point) + " and " + std::to_string(r.point + 1) +
+           ": IK branch " + std::to_string(r.fromBranch) + " -> " + std::to_string(r.toBranch) +
+           ", " + urNumber(1000 * r.retreat) +
            " mm away from the nozzle, joint move clear of it by " + urNumber(1000 * r.clearance) +
-           " mm\n";
+           " mm" + (r.atSeam ? "; the print goes on from point " + std::to_string(r.point) : "") +
+           "\n";
     out += "  set_standard_analog_out(0, 0)\n";
+    if (r.atSeam && seamRetraction > 0) {
+      out += "  # retract ";
+      appendFixed(out, seamRetraction, 6);
+      out += " mm of filament\n  sleep(";
+      appendFixed(out, seamRetraction / o.retractionRate, 6);
+      out += ")\n";
+      stats.duration += 2 * seamRetraction / o.retractionRate;
+    }
     out += "  movel(";
     appendPose(out, forwardKinematics(robot, r.retreatFrom) * cell.partOnFlange);
     out += ", t=" + urNumber(away) + ", r=0)\n";
-    appendMovej(
-        out, r.retreatTo,
-        (", a=" + urNumber(kReconfigurationAcceleration) + ", v=" + urNumber(jointSpeed) + ")\n")
-            .c_str());
+    const std::string movejTail =
+        ", a=" + urNumber(kReconfigurationAcceleration) + ", v=" + urNumber(jointSpeed) + ")\n";
+    const JointVector* from = &r.retreatFrom;
+    auto jointMove = [&](const JointVector& to) {
+      appendMovej(out, to, movejTail.c_str());
+      double largest = 0;
+      for (int j = 0; j < 6; ++j)
+        largest = std::max(largest, std::abs(to[j] - (*from)[j]));
+      stats.duration += largest / jointSpeed + jointSpeed / kReconfigurationAcceleration;
+      ++stats.moves;
+      from = &to;
+    };
+    for (const JointVector& q : r.through)
+      jointMove(q);
+    jointMove(r.retreatTo);
     out += "  movel(";
     appendPose(out, forwardKinematics(robot, r.leave) * cell.partOnFlange);
     out += ", t=" + urNumber(back) + ", r=0)\n";
-    stats.moves += 3;
-    stats.duration +=
-        away + back + largest / jointSpeed + jointSpeed / kReconfigurationAcceleration;
+    if (r.atSeam && seamRetraction > 0) {
+      out += "  # prime ";
+      appendFixed(out, seamRetraction, 6);
+      out += " mm of filament\n  sleep(";
+      appendFixed(out, seamRetraction / o.retractionRate, 6);
+      out += ")\n";
+    }
+    stats.moves += 2;
+    stats.duration += away + back;
   };
   auto nextReconfiguration = rp.reconfigurations.begin();
 
@@ -212,9 +242,10 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
       ++nextReconfiguration;
     if (nextReconfiguration != rp.reconfigurations.end() &&
         nextReconfiguration->point == static_cast<int>(i) - 1) {
-      reconfiguration(*nextReconfiguration, chunk);  // it ends at point i
+      reconfiguration(*nextReconfiguration, chunk);  // it ends at point i, or i - 1 at a seam
       previousRate = 0;
-      continue;
+      if (!nextReconfiguration->atSeam)
+        continue;
     }
     const double de = (*in.extrusion)[i] - (*in.extrusion)[i - 1];
     const double rate = air ? 0.0 : de / time[i];

@@ -18,6 +18,17 @@ namespace {
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr int kReconfigurationRounds = 12;  ///< step 4: plans made before giving up
 constexpr double kOverBoundCost = 1000;     ///< step 4: cost per rad of a step over the bound
+/// Step 4: where a change may be made (per point i, for i -> i + 1): at an air move, or at a
+/// seam inside a print stretch where the wrist flips or a joint reaches its limit (module
+/// comment), which costs kSeamCostFactor times a change at an air move.
+constexpr char kChangeAtAir = 1, kChangeAtSeam = 2;
+constexpr double kSeamCostFactor = 4;
+/// Step 4: seams are offered only where a plan has at most this many large steps (thousands
+/// are a bound the path cannot keep, and a seam each would only make the plans slower).
+constexpr size_t kMostStepsForSeams = 100;
+/// Step 4: |sin θ5| below which the plan is penalised where the wrist swung round (module
+/// comment); singularityMargin elsewhere.
+constexpr double kWideWristMargin = 0.25;
 
 /// x − 2πk nearest to 0 (the value of std::remainder(x, 2π) away from the ties at ±π, several
 /// times faster; the dynamic programming calls it for every joint of every transition).
@@ -147,6 +158,16 @@ bool reachFrom(const RobotModel& robot, const JointVector& from, const JointVect
   return true;
 }
 
+/// What the joint move of a change costs the plan besides reconfigurationCost (rad): the turns
+/// of joints 1-5, which swing the part through the cell (a long move may find no clear path),
+/// and a tenth of joint 6's, which spins it in place about the flange axis.
+double changeMoveCost(const JointVector& from, const JointVector& to) {
+  double c = 0;
+  for (int j = 0; j < 5; ++j)
+    c += std::abs(to[j] - from[j]);
+  return c + 0.1 * std::abs(to[5] - from[5]);
+}
+
 /// Dynamic programming over the (branch, ψ) states of the coarse samples (module comment).
 /// Without `mayChange` (steps 1–3) the branches that reach a subsample of the path are planned
 /// each on its own, and the plan of every branch that reaches the end is returned, cheapest
@@ -162,7 +183,8 @@ std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
                                    const std::vector<Eigen::Vector3d>& normals,
                                    const std::vector<size_t>& coarse, const RobotPathOptions& o,
                                    StateCache& cache, const std::vector<char>& mayChange = {},
-                                   const std::vector<unsigned>& blocked = {}) {
+                                   const std::vector<unsigned>& blocked = {},
+                                   const std::vector<char>& nearWrist = {}) {
   const RobotModel& robot = cell.robot;
   const bool step4 = !mayChange.empty();
   const int P = o.psiSamples;
@@ -201,6 +223,14 @@ std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
   std::vector<double> cost(W);  // at the last sample
   std::vector<int> from(S * W, -1);
   std::vector<char> changed(step4 ? S * W : 0, 0);
+  // Where the fine pass swung the wrist round near its singularity (step 4): a wider margin
+  // keeps the plan's ψ away from it there.
+  auto nearWristPenalty = [&](size_t s, const JointVector& q) {
+    if (nearWrist.empty() || !nearWrist[coarse[s]])
+      return 0.0;
+    const double d = std::abs(std::sin(q[4]));
+    return d < kWideWristMargin ? (kWideWristMargin - d) / kWideWristMargin * 10.0 : 0.0;
+  };
   // The plan of the states [lo, hi) (whole branches) over all samples: step 4 runs it once on
   // every state, steps 1–3 once per branch, in parallel (the branches do not interact).
   auto plan = [&](size_t lo, size_t hi) {
@@ -211,7 +241,7 @@ std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
       return cache.at(coarse[s], branches[id / P]);
     };
     for (size_t id = lo; id < hi; ++id) {
-      here[id - lo] = states(0, id).penalty[id % P];
+      here[id - lo] = states(0, id).penalty[id % P] + nearWristPenalty(0, states(0, id).q[id % P]);
       wound[id - lo] = states(0, id).q[id % P];
     }
     for (size_t s = 1; s < S; ++s) {
@@ -243,6 +273,7 @@ std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
           c = kInf;
           if (!st.ok[k])
             continue;
+          const double penalty = st.penalty[k] + nearWristPenalty(s, st.q[k]);
           for (int dk = -o.maxPsiStep; dk <= o.maxPsiStep && stay; ++dk) {
             const size_t pid = first + ((k + dk) % P + P) % P;
             if (!std::isfinite(before[pid - lo]))
@@ -254,7 +285,7 @@ std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
             double step = 0;
             if (!reachFrom(robot, woundBefore[pid - lo], st.q[k], reached, step))
               continue;
-            const double cc = before[pid - lo] + stepCost(step) + st.penalty[k];
+            const double cc = before[pid - lo] + stepCost(step) + penalty;
             if (cc < c) {
               c = cc;
               from[s * W + id] = static_cast<int>(pid);
@@ -262,11 +293,14 @@ std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
             }
           }
           if (cheapest < hi && withinLimits(robot, st.q[k])) {
-            const double cc = before[cheapest - lo] + o.reconfigurationCost + st.penalty[k];
+            const double cc =
+                before[cheapest - lo] +
+                o.reconfigurationCost * (mayChange[s] == kChangeAtSeam ? kSeamCostFactor : 1.0) +
+                changeMoveCost(woundBefore[cheapest - lo], st.q[k]) + penalty;
             if (cc < c) {
               c = cc;
               from[s * W + id] = static_cast<int>(cheapest);
-              changed[s * W + id] = 1;
+              changed[s * W + id] = mayChange[s];
               wound[id - lo] = st.q[k];
             }
           }
@@ -323,9 +357,11 @@ bool turnsByAtMost(const RobotCell& cell, const JointVector& a, const JointVecto
 /// Joints at every point: ψ interpolated between the coarse samples, IK of the plan's branch,
 /// unwrapped next to the previous joints (checked by checkEmittedJoints). At a change of
 /// configuration (step 4) the path continues in the new branch and the change is recorded (its
-/// move is planned by the caller). The IK at the planned ψ runs in parallel; a point where it
-/// fails (retried at nearby ψ) or where the wrist is singular (θ6 is then taken from the point
-/// before) is solved in the serial pass that unwraps, so the result does not depend on threads.
+/// move is planned by the caller); a change at a seam comes back to the point it left, in the
+/// new configuration at the ψ of the next point, and the segment to the next point follows.
+/// The IK at the planned ψ runs in parallel; a point where it fails (retried at nearby ψ) or
+/// where the wrist is singular (θ6 is then taken from the point before) is solved in the
+/// serial pass that unwraps, so the result does not depend on threads.
 /// With stopAtLargeStep the pass ends early (incomplete) once a large step or an unreachable
 /// point is found: the path is then only known not to work.
 RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
@@ -355,7 +391,7 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
         ++nextChange;
       if (nextChange < S && coarse[nextChange] == i && plan.reconfigure[nextChange] && i > 0) {
         branch = plan.branch[nextChange];
-        changeAt[i] = 1;
+        changeAt[i] = plan.reconfigure[nextChange];
       }
       branchAt[i] = branch;
     }
@@ -387,8 +423,19 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
     }
     const int branch = branchAt[i];
     double psi = psiAt[i];
-    if (changeAt[i])
-      havePrevious = false;
+    // A change at a seam: the joints at point i - 1 in the new configuration (`leave`); the
+    // step from there to point i is judged as any other.
+    JointVector leave{};
+    bool leaveFound = false;
+    if (changeAt[i] == kChangeAtSeam) {
+      leaveFound = inverseKinematicsBranch(
+                       robot, cell.flangePose(points[i - 1], normals[i - 1], psi), branch, leave) &&
+                   withinLimits(robot, leave);
+    }
+    if (changeAt[i]) {
+      havePrevious = leaveFound;
+      previous = leave;
+    }
     JointVector qi = direct[i];
     bool found = directOk[i];
     if (!found) {
@@ -441,7 +488,10 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
           path.reconfigurations.empty() ? path.branch : path.reconfigurations.back().toBranch;
       r.toBranch = branch;
       r.arrive = path.joints[i - 1];
-      r.leave = qi;
+      r.atSeam = changeAt[i] == kChangeAtSeam;
+      r.leave = r.atSeam ? leave : qi;
+      if (r.atSeam && !leaveFound)
+        path.largeSteps.push_back(static_cast<int>(i));  // point i - 1 not reached again
       path.reconfigurations.push_back(r);
       havePrevious = true;
     }
@@ -489,7 +539,8 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
                         const std::vector<Eigen::Vector3d>& normals, std::vector<size_t>& coarse,
                         const RobotPathOptions& o, StateCache& cache,
                         const std::vector<char>& changePoint = {},
-                        const std::vector<std::pair<int, int>>& flips = {}) {
+                        const std::vector<std::pair<int, int>>& flips = {},
+                        const std::vector<char>& nearWrist = {}) {
   const size_t N = points.size();
   const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
   RobotPath path;
@@ -499,7 +550,7 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
     if (!changePoint.empty()) {
       mayChange.assign(coarse.size(), 0);
       for (size_t s = 1; s < coarse.size(); ++s)
-        mayChange[s] = coarse[s] == coarse[s - 1] + 1 && changePoint[coarse[s - 1]];
+        mayChange[s] = coarse[s] == coarse[s - 1] + 1 ? changePoint[coarse[s - 1]] : 0;
       blocked.assign(coarse.size(), 0);
       for (const auto& [point, branch] : flips) {
         const auto s = std::lower_bound(coarse.begin(), coarse.end(), static_cast<size_t>(point));
@@ -508,7 +559,7 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
       }
     }
     const std::vector<CoarsePlan> plans =
-        planCoarse(cell, points, normals, coarse, o, cache, mayChange, blocked);
+        planCoarse(cell, points, normals, coarse, o, cache, mayChange, blocked, nearWrist);
     if (plans.empty()) {
       throw GeoLatticeError(
           "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously "
@@ -602,10 +653,62 @@ bool retreatLine(const RobotCell& cell, const JointVector& q0, int branch, doubl
   return true;
 }
 
+/// The least clearance (m) of the part's bounding sphere from the nozzle and the floor during
+/// the joint-space move from a to b (checked every degree of the largest joint's turn), stopping
+/// early once it is below `enough`.
+double jointMoveClearance(const RobotCell& cell, const Eigen::Vector3d& centre, double radius,
+                          const RobotPathOptions& o, const JointVector& a, const JointVector& b,
+                          double enough) {
+  double largest = 0;
+  for (int j = 0; j < 6; ++j)
+    largest = std::max(largest, std::abs(b[j] - a[j]));
+  const int samples = std::max(2, static_cast<int>(std::ceil(largest * 180.0 / M_PI)));
+  double clearance = kInf;
+  for (int k = 0; k <= samples && clearance >= enough; ++k) {
+    const double t = static_cast<double>(k) / samples;
+    JointVector q;
+    for (int j = 0; j < 6; ++j)
+      q[j] = (1 - t) * a[j] + t * b[j];
+    clearance = std::min(
+        clearance, sphereClearance(cell, sphereCentre(cell, centre, q), radius, o.nozzleLength));
+  }
+  return clearance;
+}
+
+/// Waypoints tried when the straight joint move between two configurations sweeps the part
+/// into the floor or the nozzle (a change of shoulder or elbow swings the wrist low): the
+/// move's middle with the base turned (swinging the part sideways, at its height) and the
+/// shoulder and elbow turned (lifting or lowering it), smallest changes first.
+std::vector<JointVector> detourCandidates(const RobotModel& robot, const JointVector& a,
+                                          const JointVector& b) {
+  std::vector<std::array<double, 3>> offsets;
+  for (double d1 : {0.0, 0.5, -0.5, 1.0, -1.0})
+    for (double d2 : {0.0, -0.3, 0.3, -0.6, 0.6})
+      for (double d3 : {0.0, 0.5, -0.5})
+        if (d1 != 0 || d2 != 0 || d3 != 0)
+          offsets.push_back({d1, d2, d3});
+  std::stable_sort(offsets.begin(), offsets.end(), [](const auto& x, const auto& y) {
+    return std::abs(x[0]) + std::abs(x[1]) + std::abs(x[2]) <
+           std::abs(y[0]) + std::abs(y[1]) + std::abs(y[2]);
+  });
+  std::vector<JointVector> candidates;
+  for (const auto& d : offsets) {
+    JointVector q;
+    for (int j = 0; j < 6; ++j)
+      q[j] = 0.5 * (a[j] + b[j]);
+    for (int j = 0; j < 3; ++j)
+      q[j] += d[j];
+    if (withinLimits(robot, q))
+      candidates.push_back(q);
+  }
+  return candidates;
+}
+
 /// The move of a reconfiguration (module comment, step 4): retreat, joint move, approach.
 /// Fills r's retreat joints, distance and clearance; false when no retreat up to maxRetreat
-/// gives a joint move that keeps the part's bounding sphere (centre in part units, radius in
-/// m) reconfigurationMargin clear of the nozzle and the floor.
+/// gives a joint move (straight in joint space, or through one detour waypoint) that keeps the
+/// part's bounding sphere (centre in part units, radius in m) reconfigurationMargin clear of
+/// the nozzle and the floor.
 bool planReconfigurationMove(const RobotCell& cell, const Eigen::Vector3d& centre, double radius,
                              const RobotPathOptions& o, Reconfiguration& r) {
   const double margin = o.reconfigurationMargin;
@@ -619,18 +722,20 @@ bool planReconfigurationMove(const RobotCell& cell, const Eigen::Vector3d& centr
     if (!retreatLine(cell, r.arrive, r.fromBranch, dA + extra, o, r.retreatFrom) ||
         !retreatLine(cell, r.leave, r.toBranch, dB + extra, o, r.retreatTo))
       return false;  // farther away is out of reach too
-    double largest = 0;
-    for (int a = 0; a < 6; ++a)
-      largest = std::max(largest, std::abs(r.retreatTo[a] - r.retreatFrom[a]));
-    const int samples = std::max(2, static_cast<int>(std::ceil(largest * 180.0 / M_PI)));
-    double clearance = kInf;
-    for (int j = 0; j <= samples && clearance >= margin; ++j) {
-      const double t = static_cast<double>(j) / samples;
-      JointVector q;
-      for (int a = 0; a < 6; ++a)
-        q[a] = (1 - t) * r.retreatFrom[a] + t * r.retreatTo[a];
-      clearance = std::min(
-          clearance, sphereClearance(cell, sphereCentre(cell, centre, q), radius, o.nozzleLength));
+    r.through.clear();
+    double clearance =
+        jointMoveClearance(cell, centre, radius, o, r.retreatFrom, r.retreatTo, margin);
+    if (clearance < margin) {
+      for (const JointVector& via : detourCandidates(cell.robot, r.retreatFrom, r.retreatTo)) {
+        const double c =
+            std::min(jointMoveClearance(cell, centre, radius, o, r.retreatFrom, via, margin),
+                     jointMoveClearance(cell, centre, radius, o, via, r.retreatTo, margin));
+        if (c >= margin) {
+          clearance = c;
+          r.through = {via};
+          break;
+        }
+      }
     }
     if (clearance >= margin) {
       r.retreat = std::max(dA, dB) + extra;
@@ -664,7 +769,7 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
       for (size_t i = a; i < b; ++i)
         if (points[i].z() > points[top].z())
           top = i;
-      changePoint[top] = 1;
+      changePoint[top] = kChangeAtAir;
     }
     a = b + 1;
   }
@@ -676,7 +781,9 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
   const double radius = cell.partScale * 0.5 * box.diagonal().norm();
   StateCache cache(cell, points, normals, o, o.threads);  // all rounds
   std::vector<std::pair<int, int>> flips;
-  std::vector<char> excluded(N, 0);  // a change there could not be made
+  std::vector<char> excluded(N, 0);   // a change there could not be made
+  std::vector<char> nearWrist(N, 0);  // a large step near the wrist singularity was found here
+  const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
   // The coarse samples with both points of every change; kept (densified) across the rounds.
   std::vector<size_t> withChanges = coarse;
   for (size_t i = 0; i + 1 < N; ++i) {
@@ -697,7 +804,8 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
   for (int round = 0; round < kReconfigurationRounds; ++round) {
     RobotPath path;
     try {
-      path = planAndRefine(cell, points, normals, withChanges, perRound, cache, changePoint, flips);
+      path = planAndRefine(cell, points, normals, withChanges, perRound, cache, changePoint, flips,
+                           nearWrist);
     } catch (const GeoLatticeError&) {
       return false;
     }
@@ -722,17 +830,27 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
       return false;
     }
     // A step too large inside an air move becomes a place for a change; inside a stretch,
-    // the branch may not be kept there. Plan again.
+    // the branch may not be kept there, and a change at a seam may be made there instead (the
+    // wrist crossing its singularity where the part's axis sweeps round, a joint at its
+    // limit). Plan again.
     bool newChange = false;
     for (int i : path.largeSteps) {
       const size_t at = static_cast<size_t>(i - 1);
-      if (kind[at] == 2 && kind[at + 1] == 2 && !excluded[at]) {
+      if (std::min(std::abs(std::sin(path.joints[at][4])), std::abs(std::sin(path.joints[i][4]))) <
+          kWideWristMargin) {
+        std::fill(nearWrist.begin() + static_cast<long>(at - std::min(at, stride)),
+                  nearWrist.begin() + static_cast<long>(std::min(N, at + 2 * stride)), 1);
+      }
+      const bool air = kind[at] == 2 && kind[at + 1] == 2;
+      if (!excluded[at] && changePoint[at] != kChangeAtAir &&
+          (air || path.largeSteps.size() <= kMostStepsForSeams)) {
         newChange = newChange || !changePoint[at];
-        changePoint[at] = 1;
+        changePoint[at] = air ? kChangeAtAir : kChangeAtSeam;
         withChanges.push_back(at);
         withChanges.push_back(at + 1);
-        continue;
       }
+      if (air && !excluded[at])
+        continue;
       int branch = path.branch;
       for (const Reconfiguration& r : path.reconfigurations)
         if (r.point < i)

@@ -34,20 +34,30 @@
 ///    for the whole path. The plan of step 1 runs over all (branch, ψ) states at once; a step
 ///    no fine path can make within maxJointStepDeg costs more than a reconfiguration; between
 ///    two consecutive air points — the highest of every air move (where the nozzle is above the
-///    in-process part) and any air step found too large — the state may change at a fixed cost
-///    (reconfigurationCost), and a branch found flipping inside a stretch is barred there. Each
-///    change becomes a reconfiguration move (Reconfiguration): the part is moved straight away
-///    from the nozzle along the nozzle axis until the bounding sphere of the toolpath is
+///    in-process part) and any air step found too large — the state may change at a cost of
+///    reconfigurationCost plus the joints' turns (joints 1–5, a tenth of joint 6's), and a
+///    branch found flipping inside a stretch is barred there. Where a plan steps too far inside
+///    a print stretch (the wrist swung round near its singularity where the part's axis sweeps
+///    round, a joint wound to its limit), the next plans may change right there, at a seam (if
+///    the plan has at most 100 large steps), for 4 × reconfigurationCost: the robot leaves point i in the old configuration and comes back
+///    to point i in the new one (the extruder stops, retracts and primes meanwhile), then prints
+///    on to i + 1; and near such a wrist step (|sin θ5| < 0.25) the plans keep ψ away from the
+///    singularity (its penalty then starts at |sin θ5| = 0.25 instead of singularityMargin).
+///    Each change becomes a reconfiguration move (Reconfiguration): the part is moved straight
+///    away from the nozzle along the nozzle axis until the bounding sphere of the toolpath is
 ///    reconfigurationMargin (which covers the build plate) clear of the nozzle body (a segment
 ///    of nozzleLength from the tip) and of the floor the robot stands on (base z = 0) during
-///    the whole joint move (extended in 50 mm steps up to maxRetreat), the arm moves in joint space to the new configuration, and the part approaches the
-///    next point along that point's nozzle axis (the nozzle then moves inside its own volume at
-///    that station, which the collision verifier checked). The retreat lines are solved every
-///    5 mm (no step above maxJointStepDeg) and the joint move is checked every degree; a change
-///    whose move cannot be made so is excluded and the plan made again (at most 12 plans, and
-///    no more once two plans in a row leave neither fewer large steps nor all at new places). The
-///    path as solved by 1–3 is kept when this does not remove every unreachable point and large
-///    step. Robot self-collision and other obstacles of the cell are not modelled.
+///    the whole joint move (extended in 50 mm steps up to maxRetreat), the arm moves in joint
+///    space to the new configuration — straight, or where that sweeps the part into the floor
+///    or the nozzle through one detour waypoint (the base, shoulder and elbow turned from the
+///    move's middle) —, and the part approaches the next point (a seam's own point) along that
+///    point's nozzle axis (the nozzle then moves inside its own volume at that station, which
+///    the collision verifier checked). The retreat lines are solved every 5 mm (no step above
+///    maxJointStepDeg) and the joint move is checked every degree; a change whose move cannot
+///    be made so is excluded and the plan made again (at most 12 plans, and no more once two
+///    plans in a row leave neither fewer large steps nor all at new places). The path as solved
+///    by 1–3 is kept when this does not remove every unreachable point and large step. Robot
+///    self-collision and other obstacles of the cell are not modelled.
 /// Cost O(samples · ψ · 8) IK solutions for the plan and O(N) for each fine pass (the other
 /// branches' passes stop at their first large step), in parallel over `threads` (the result
 /// does not depend on them); 1M points ≈ 1 s; step 4 adds one IK per state at every air
@@ -76,14 +86,20 @@ struct RobotPathOptions {
   int threads = 0;  ///< workers for the IK (0: every core); results do not depend on it
 };
 
-/// A change of IK branch (or of ψ) at an air move, made away from the part (module comment,
-/// step 4): at the toolpath point `point` the robot arrives in the old configuration (arrive),
-/// moves the part straight away from the nozzle (a linear move to retreatFrom), moves in joint
-/// space to retreatTo, and approaches point + 1 in the new configuration (leave = its joints).
+/// A change of IK branch (or of ψ) at an air move or a seam, made away from the part (module
+/// comment, step 4): at the toolpath point `point` the robot arrives in the old configuration
+/// (arrive), moves the part straight away from the nozzle (a linear move to retreatFrom), moves
+/// in joint space to retreatTo, and approaches point + 1 in the new configuration (leave = its
+/// joints); at a seam it approaches `point` again (leave = its joints in the new
+/// configuration), and the segment to point + 1 is printed from there.
 struct Reconfiguration {
-  int point = -1;                      ///< toolpath point (an air move)
+  int point = -1;                      ///< toolpath point (an air move, or the seam's)
+  bool atSeam = false;                 ///< inside a print stretch (module comment, step 4)
   int fromBranch = -1, toBranch = -1;  ///< IK branches before and after
   JointVector arrive{}, retreatFrom{}, retreatTo{}, leave{};
+  /// Joint-space waypoints of the joint move from retreatFrom to retreatTo (empty: straight),
+  /// where the straight one would sweep the part into the floor or the nozzle.
+  std::vector<JointVector> through;
   double retreat = 0;    ///< m the part moves away from the nozzle (the larger of both ends)
   double clearance = 0;  ///< m: least distance of the part's sphere to the nozzle or floor
 };
@@ -102,8 +118,9 @@ struct RobotPath {
   std::vector<double> psi;          ///< per point (rad)
   std::vector<int> unreachable;     ///< point indices without a valid IK solution
   int branch = -1;                  ///< IK branch at the first point (inverseKinematicsBranch)
-  /// Changes of configuration at air moves, in path order: from joints[point] to
-  /// joints[point + 1] (= leave) by a reconfiguration move, not a straight joint step.
+  /// Changes of configuration at air moves and seams, in path order: from joints[point] to
+  /// leave by a reconfiguration move (leave = joints[point + 1] at an air move; at a seam the
+  /// straight move from leave to joints[point + 1] follows).
   std::vector<Reconfiguration> reconfigurations;
   double maxJointStepDeg = 0;  ///< largest change of any joint between consecutive waypoints
   int maxJointStepAt = -1;     ///< the point where it happens (the step from the point before)
@@ -130,7 +147,8 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
                          const RobotPathOptions& options = {}, const std::vector<int>& kind = {});
 
 /// The joints the robot is at when its straight move to point i starts: joints[i - 1], or
-/// joints[i] (`leave`) when a reconfiguration at i - 1 brings it there. i >= 1.
+/// `leave` when a reconfiguration at i - 1 brings it there (joints[i] at an air move: no move
+/// is left; at a seam, point i - 1 in the new configuration). i >= 1.
 const JointVector& jointsBefore(const RobotPath& path, size_t i);
 
 /// Largest per-joint speed ratio |Δq| / (Δt · maxSpeed) over consecutive points, with Δt from

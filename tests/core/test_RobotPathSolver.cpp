@@ -142,18 +142,24 @@ TEST(RobotPathSolver, ReconfiguresAtAirMovesWhereOneBranchCannotFollow) {
       EXPECT_LE(move.norm(), r.retreat + 1e-9);
       EXPECT_LT((move + move.norm() * cell.nozzleAxis).norm(), 1e-6);
     }
-    // The joint move (linear in joint space, as movej) keeps the sphere clear by the margin.
+    // The joint move (linear in joint space between its waypoints, as movej) keeps the sphere
+    // clear by the margin.
+    std::vector<JointVector> waypoints{r.retreatFrom};
+    waypoints.insert(waypoints.end(), r.through.begin(), r.through.end());
+    waypoints.push_back(r.retreatTo);
     double clearance = std::numeric_limits<double>::infinity();
-    for (int j = 0; j <= 400; ++j) {
-      JointVector q;
-      for (int a = 0; a < 6; ++a)
-        q[a] = r.retreatFrom[a] + j / 400.0 * (r.retreatTo[a] - r.retreatFrom[a]);
-      const Eigen::Vector3d c = centreAt(q);
-      clearance =
-          std::min({clearance, segmentDistance(cell, c, o.nozzleLength) - radius, c.z() - radius});
-      for (int a = 0; a < 6; ++a) {
-        EXPECT_GE(q[a], cell.robot.lowerLimit[a]);
-        EXPECT_LE(q[a], cell.robot.upperLimit[a]);
+    for (size_t w = 0; w + 1 < waypoints.size(); ++w) {
+      for (int j = 0; j <= 400; ++j) {
+        JointVector q;
+        for (int a = 0; a < 6; ++a)
+          q[a] = waypoints[w][a] + j / 400.0 * (waypoints[w + 1][a] - waypoints[w][a]);
+        const Eigen::Vector3d c = centreAt(q);
+        clearance = std::min(
+            {clearance, segmentDistance(cell, c, o.nozzleLength) - radius, c.z() - radius});
+        for (int a = 0; a < 6; ++a) {
+          EXPECT_GE(q[a], cell.robot.lowerLimit[a]);
+          EXPECT_LE(q[a], cell.robot.upperLimit[a]);
+        }
       }
     }
     EXPECT_GE(clearance, o.reconfigurationMargin - 1e-3);
@@ -172,13 +178,16 @@ TEST(RobotPathSolver, ReconfiguresAtAirMovesWhereOneBranchCannotFollow) {
   const size_t comments = occurrences(text, "# reconfiguration between");
   const size_t movejs = occurrences(text, "movej("), movels = occurrences(text, "movel(");
   const size_t R = rp.reconfigurations.size();
+  size_t detours = 0;  // joint-space waypoints of the joint moves
+  for (const Reconfiguration& r : rp.reconfigurations)
+    detours += r.through.size();
   EXPECT_EQ(comments, R);
   size_t airMoves = 0;  // each may start a program file: its joints are restated by a movej
   for (size_t i = 1; i < p.kind.size(); ++i)
     airMoves += p.kind[i] == 2 && p.kind[i - 1] != 2;
-  EXPECT_EQ(movejs, R + 1 + airMoves);         // and the start
-  EXPECT_EQ(movels, p.points.size() - 1 + R);  // each replaces one movel by two
-  EXPECT_EQ(stats.moves, p.points.size() - 1 + 2 * R);
+  EXPECT_EQ(movejs, R + detours + 1 + airMoves);  // and the start
+  EXPECT_EQ(movels, p.points.size() - 1 + R);     // each replaces one movel by two
+  EXPECT_EQ(stats.moves, p.points.size() - 1 + 2 * R + detours);
   // Its joint move goes to the retreat of the new configuration.
   std::ostringstream first;
   first << "movej([" << urNumber(rp.reconfigurations[0].retreatTo[0]) << ", ";
@@ -271,11 +280,12 @@ TEST(RobotPathSolver, ABoundThePathCannotKeepDoesNotGrowThePlan) {
 
 namespace {
 
-/// Laps of a circle (radius 10 mm, 90 points each, 0.5 mm higher every lap) whose nozzle axes
-/// lean `tiltDeg` from +z towards the outside, joined by air moves up and down: the rim of a
-/// bowl printed sideways. At 85° the part's z axis turns round through the horizontal once per
-/// lap and the wrist passes near its singularity.
-ConstructedPath sidewaysLaps(int laps, double tiltDeg) {
+/// Laps of a circle (radius 10 mm, `perLap` points each, 0.5 mm higher every lap) whose nozzle
+/// axes lean `tiltDeg` from +z towards the outside, joined by air moves up and down (or printed
+/// in one run, `airBetween` false, with one air move at the end): the rim of a bowl printed
+/// sideways. At 85° the part's z axis turns round through the horizontal once per lap and the
+/// wrist passes near its singularity.
+ConstructedPath sidewaysLaps(int laps, double tiltDeg, int perLap = 90, bool airBetween = true) {
   ConstructedPath p;
   const double tilt = tiltDeg * M_PI / 180;
   auto add = [&](const Eigen::Vector3d& x, const Eigen::Vector3d& n, int kind) {
@@ -288,16 +298,19 @@ ConstructedPath sidewaysLaps(int laps, double tiltDeg) {
     p.feedRate.push_back(kind == 2 ? 50.0 : 20.0);
   };
   for (int lap = 0; lap < laps; ++lap) {
-    for (int j = 0; j <= 90; ++j) {
-      const double phi = 2 * M_PI * j / 90;
+    for (int j = 0; j <= perLap; ++j) {
+      const double phi = 2 * M_PI * j / perLap;
       add(Eigen::Vector3d(10 * std::cos(phi), 10 * std::sin(phi), 5 + 0.5 * lap),
           Eigen::Vector3d(std::sin(tilt) * std::cos(phi), std::sin(tilt) * std::sin(phi),
                           std::cos(tilt)),
           0);
     }
     const Eigen::Vector3d n = p.normals.back();
-    for (int j = 1; j <= 10; ++j)
+    for (int j = 1; j <= 10 && (airBetween || lap + 1 == laps); ++j) {
       add(p.points.back() + Eigen::Vector3d(0, 0, j <= 5 ? 3.0 : -2.5), n, 2);
+      if (!airBetween && j == 1)
+        p.extrusion.back() -= 1.0;  // the final air move retracts 1 mm of filament
+    }
   }
   return p;
 }
@@ -387,4 +400,72 @@ TEST(RobotPathSolver, SidewaysLapsPassTheWristSingularityWithWaypointsBetween) {
   EXPECT_LE(fastest, uo.speedFactor * 1.01);
   for (int j = 0; j < 6; ++j)
     EXPECT_NEAR(q[j], rp.joints.back()[j], 1e-4);
+}
+
+TEST(RobotPathSolver, LapsPrintedInOneRunChangeConfigurationAtSeams) {
+  // Sideways laps (axes horizontal) without air moves between them: where the wrist swings
+  // round near its singularity no air move is at hand, and one branch flips (two steps of about
+  // 176 degrees before seams were allowed). Changes at seams: leave the point, change, come
+  // back to the same point in the new configuration, print on.
+  const ConstructedPath p = sidewaysLaps(3, 90, 100, false);
+  const RobotCell cell;
+  const RobotPathOptions o;
+  const RobotPath rp = solveRobotPath(cell, p.points, p.normals, o, p.kind);
+  std::vector<const Reconfiguration*> seams;
+  for (const Reconfiguration& r : rp.reconfigurations)
+    if (r.atSeam)
+      seams.push_back(&r);
+  std::printf(
+      "[robot] 3 sideways laps in one run: %zu large steps, %zu reconfigurations, %zu at "
+      "seams, max step %.1f deg\n",
+      rp.largeSteps.size(), rp.reconfigurations.size(), seams.size(), rp.maxJointStepDeg);
+  ASSERT_TRUE(rp.works());
+  ASSERT_FALSE(seams.empty());
+  for (const Reconfiguration* r : seams) {
+    const size_t at = static_cast<size_t>(r->point);
+    EXPECT_NE(p.kind[at + 1], 2) << "inside the print run";
+    // The robot comes back to the point it left: the same part pose at the tip, other joints.
+    const Isometry left = forwardKinematics(cell.robot, r->arrive) * cell.partOnFlange;
+    const Isometry back = forwardKinematics(cell.robot, r->leave) * cell.partOnFlange;
+    EXPECT_LT((left * (cell.partScale * p.points[at]) - cell.nozzleTip).norm(), 1e-6);
+    EXPECT_LT((back * (cell.partScale * p.points[at]) - cell.nozzleTip).norm(), 1e-6);
+    EXPECT_GT((back.linear().transpose() * (left.linear() * p.normals[at])).dot(p.normals[at]),
+              1 - 1e-9);
+    double step = 0;  // and prints on from there to the next point within the bound
+    for (int j = 0; j < 6; ++j)
+      step = std::max(step, std::abs(rp.joints[at + 1][j] - jointsBefore(rp, at + 1)[j]));
+    EXPECT_LE(step * 180 / M_PI, o.maxJointStepDeg);
+    EXPECT_EQ(&jointsBefore(rp, at + 1), &r->leave);
+  }
+
+  // The program: at a seam the extruder stops and retracts as at the air moves (1 mm here),
+  // the part moves away and back, primes, and the segment to the next point is printed.
+  const ProgramInput in{&p.points, &p.extrusion, &p.feedRate, &p.kind};
+  std::ostringstream file;
+  writeURScript(cell, rp, in, URScriptOptions{}, [&](size_t) -> std::ostream& { return file; });
+  const std::string text = file.str();
+  checkURScriptSyntax(text, "", 1000);
+  for (const Reconfiguration* r : seams) {
+    const std::string head = "# reconfiguration at a seam at toolpath points " +
+                             std::to_string(r->point) + " and " + std::to_string(r->point + 1);
+    const size_t at = text.find(head);
+    ASSERT_NE(at, std::string::npos) << head;
+    const size_t retract = text.find("# retract 1 mm of filament", at);
+    const size_t movej = text.find("movej(", at);
+    const size_t prime = text.find("# prime 1 mm of filament", at);
+    const size_t extrude = text.find("set_standard_analog_out(0, 0.", at);
+    ASSERT_NE(extrude, std::string::npos);
+    EXPECT_LT(retract, movej);
+    EXPECT_LT(movej, prime);
+    EXPECT_LT(prime, extrude);
+    // After the extruder is on again, the next move is the print move to point + 1.
+    UrPose pose{};
+    ASSERT_EQ(std::sscanf(text.c_str() + text.find("movel(p[", extrude),
+                          "movel(p[%lf, %lf, %lf, %lf, %lf, %lf]", &pose[0], &pose[1], &pose[2],
+                          &pose[3], &pose[4], &pose[5]),
+              6);
+    const Isometry next =
+        forwardKinematics(cell.robot, rp.joints[r->point + 1]) * cell.partOnFlange;
+    EXPECT_LT((toIsometry(pose).translation() - next.translation()).norm(), 1e-5);
+  }
 }
