@@ -386,6 +386,7 @@ void reportScript(GLPrintPipeline& p, Json& s) {
   s["min_singularity"] = {{"shoulder_m", w->GetMinShoulderSingularity()},
                           {"elbow", w->GetMinElbowSingularity()},
                           {"wrist", w->GetMinWristSingularity()}};
+  s["lowest_joint_height_mm"] = w->GetLowestJointHeight();
   s["max_joint_speed_deg_s"] = w->GetMaxJointSpeedDegS();
   s["duration_s"] = w->GetDuration();
   s["max_line_length"] = static_cast<long long>(w->GetMaxLineLength());

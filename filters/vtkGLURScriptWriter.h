@@ -206,6 +206,9 @@ public:
   double GetMinShoulderSingularity() const { return this->MinSingularity[0]; }
   double GetMinElbowSingularity() const { return this->MinSingularity[1]; }
   double GetMinWristSingularity() const { return this->MinSingularity[2]; }
+  /// Height of the arm's lowest joint over the written path above the floor the robot stands
+  /// on (mm; kept at 50 mm or more: a point reached only lower is unreachable).
+  double GetLowestJointHeight() const { return this->LowestJointHeight; }
   double GetDuration() const { return this->Duration; }
   vtkIdType GetMaxLineLength() const { return this->MaxLineLength; }
   int GetIKBranch() const { return this->IKBranch; }
@@ -278,6 +281,7 @@ private:
   double MaxAxisErrorDeg = 0;
   double MaxJointSpeedDegS = 0;
   double MinSingularity[3] = {0, 0, 0};
+  double LowestJointHeight = 0;
   double Duration = 0;
   vtkIdType MaxLineLength = 0;
   int IKBranch = -1;

@@ -164,6 +164,14 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
       t = std::max(t, std::abs(b[j] - a[j]) / (o.speedFactor * robot.maxSpeed[j]));
     return std::max(t, 0.002);
   };
+  // An extruder move while the robot waits: a retraction (de < 0) or a prime.
+  auto appendFilamentMove = [&](std::string& out, double de) {
+    out += de < 0 ? "  # retract " : "  # prime ";
+    appendFixed(out, std::abs(de), 6);
+    out += " mm of filament\n  sleep(";
+    appendFixed(out, std::abs(de) / o.retractionRate, 6);
+    out += ")\n";
+  };
   // A seam (a reconfiguration inside a print stretch) retracts and primes as the toolpath's
   // air moves do: by the largest retraction found at them.
   double seamRetraction = 0;
@@ -183,11 +191,7 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
            "\n";
     out += "  set_standard_analog_out(0, 0)\n";
     if (r.atSeam && seamRetraction > 0) {
-      out += "  # retract ";
-      appendFixed(out, seamRetraction, 6);
-      out += " mm of filament\n  sleep(";
-      appendFixed(out, seamRetraction / o.retractionRate, 6);
-      out += ")\n";
+      appendFilamentMove(out, -seamRetraction);
       stats.duration += 2 * seamRetraction / o.retractionRate;
     }
     out += "  movel(";
@@ -211,13 +215,8 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
     out += "  movel(";
     appendPose(out, forwardKinematics(robot, r.leave) * cell.partOnFlange);
     out += ", t=" + urNumber(back) + ", r=0)\n";
-    if (r.atSeam && seamRetraction > 0) {
-      out += "  # prime ";
-      appendFixed(out, seamRetraction, 6);
-      out += " mm of filament\n  sleep(";
-      appendFixed(out, seamRetraction / o.retractionRate, 6);
-      out += ")\n";
-    }
+    if (r.atSeam && seamRetraction > 0)
+      appendFilamentMove(out, seamRetraction);
     stats.moves += 2;
     stats.duration += away + back;
   };
@@ -249,13 +248,9 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
     }
     const double de = (*in.extrusion)[i] - (*in.extrusion)[i - 1];
     const double rate = air ? 0.0 : de / time[i];
-    if (air && de != 0) {  // retraction / prime: an extruder move while the robot waits
+    if (air && de != 0) {  // retraction / prime
       chunk += "  set_standard_analog_out(0, 0)\n";
-      chunk += de < 0 ? "  # retract " : "  # prime ";
-      appendFixed(chunk, std::abs(de), 6);
-      chunk += " mm of filament\n  sleep(";
-      appendFixed(chunk, std::abs(de) / o.retractionRate, 6);
-      chunk += ")\n";
+      appendFilamentMove(chunk, de);
       previousRate = 0;
     }
     const double volts = std::clamp(rate / o.maxFilamentRate, 0.0, 1.0);

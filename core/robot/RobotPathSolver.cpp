@@ -54,6 +54,11 @@ JointVector unwrapNear(const RobotModel& r, JointVector q, const JointVector& ne
   return q;
 }
 
+/// Whether every joint of the arm at q is armFloorClearance above the floor (base z = 0).
+bool aboveFloor(const RobotModel& r, const JointVector& q, const RobotPathOptions& o) {
+  return lowestJointHeight(r, q) >= o.armFloorClearance;
+}
+
 double singularityPenalty(const RobotModel& r, const JointVector& q, const Isometry& flange,
                           double margin) {
   const SingularityDistance s = singularityDistance(r, q, flange);
@@ -114,7 +119,8 @@ public:
         st.ok.resize(P);
         st.penalty.resize(P);
         for (int k = 0; k < P; ++k) {
-          st.ok[k] = inverseKinematicsBranch(cell_.robot, flange[k], branch, st.q[k]);
+          st.ok[k] = inverseKinematicsBranch(cell_.robot, flange[k], branch, st.q[k]) &&
+                     aboveFloor(cell_.robot, st.q[k], o_);
           st.penalty[k] =
               st.ok[k] ? singularityPenalty(cell_.robot, st.q[k], flange[k], o_.singularityMargin)
                        : kInf;
@@ -207,7 +213,8 @@ std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
         bool any = false;
         for (int k = 0; k < P && !any && reaches[branch]; k += 3) {
           JointVector qq;
-          any = inverseKinematicsBranch(robot, flange[k], branch, qq) && withinLimits(robot, qq);
+          any = inverseKinematicsBranch(robot, flange[k], branch, qq) && withinLimits(robot, qq) &&
+                aboveFloor(robot, qq, o);
         }
         reaches[branch] = reaches[branch] && any;
       }
@@ -405,7 +412,7 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
       for (size_t i = first + c * kChunk; i < std::min(last, first + (c + 1) * kChunk); ++i) {
         const Isometry f = cell.flangePose(points[i], normals[i], psiAt[i]);
         directOk[i] = inverseKinematicsBranch(robot, f, branchAt[i], direct[i]) &&
-                      std::abs(std::sin(direct[i][4])) > 1e-9;
+                      std::abs(std::sin(direct[i][4])) > 1e-9 && aboveFloor(robot, direct[i], o);
       }
     });
   };
@@ -430,7 +437,7 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
     if (changeAt[i] == kChangeAtSeam) {
       leaveFound = inverseKinematicsBranch(
                        robot, cell.flangePose(points[i - 1], normals[i - 1], psi), branch, leave) &&
-                   withinLimits(robot, leave);
+                   withinLimits(robot, leave) && aboveFloor(robot, leave, o);
     }
     if (changeAt[i]) {
       havePrevious = leaveFound;
@@ -440,12 +447,14 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
     bool found = directOk[i];
     if (!found) {
       Isometry f = cell.flangePose(points[i], normals[i], psi);
-      found = inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0);
+      found = inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0) &&
+              aboveFloor(robot, qi, o);
       for (int retry = 1; !found && retry <= 3; ++retry) {
         for (double sign : {1.0, -1.0}) {
           const double p2 = psi + sign * retry * dpsi;
           f = cell.flangePose(points[i], normals[i], p2);
-          if (inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0)) {
+          if (inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0) &&
+              aboveFloor(robot, qi, o)) {
             found = true;
             psi = p2;
             break;
@@ -512,6 +521,7 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
   path.maxTipError = 0;
   path.maxAxisErrorDeg = 0;
   path.minSingularity = {kInf, kInf, kInf};
+  path.lowestJoint = kInf;
   size_t next = 0;  // the next unreachable point (sorted)
   for (size_t i = 0; i < points.size(); ++i) {
     if (next < path.unreachable.size() && static_cast<size_t>(path.unreachable[next]) == i) {
@@ -529,6 +539,7 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
     path.minSingularity.shoulder = std::min(path.minSingularity.shoulder, sd.shoulder);
     path.minSingularity.elbow = std::min(path.minSingularity.elbow, sd.elbow);
     path.minSingularity.wrist = std::min(path.minSingularity.wrist, sd.wrist);
+    path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(robot, path.joints[i]));
   }
 }
 
@@ -645,7 +656,8 @@ bool retreatLine(const RobotCell& cell, const JointVector& q0, int branch, doubl
     double step = 0;
     for (int a = 0; a < 6; ++a)
       step = std::max(step, std::abs(q[a] - previous[a]));
-    if (!withinLimits(robot, q) || step * 180.0 / M_PI > o.maxJointStepDeg)
+    if (!withinLimits(robot, q) || !aboveFloor(robot, q, o) ||
+        step * 180.0 / M_PI > o.maxJointStepDeg)
       return false;
     previous = q;
   }
@@ -655,7 +667,8 @@ bool retreatLine(const RobotCell& cell, const JointVector& q0, int branch, doubl
 
 /// The least clearance (m) of the part's bounding sphere from the nozzle and the floor during
 /// the joint-space move from a to b (checked every degree of the largest joint's turn), stopping
-/// early once it is below `enough`.
+/// early once it is below `enough`; -∞ where a joint of the arm comes nearer the floor than
+/// armFloorClearance.
 double jointMoveClearance(const RobotCell& cell, const Eigen::Vector3d& centre, double radius,
                           const RobotPathOptions& o, const JointVector& a, const JointVector& b,
                           double enough) {
@@ -669,6 +682,8 @@ double jointMoveClearance(const RobotCell& cell, const Eigen::Vector3d& centre, 
     JointVector q;
     for (int j = 0; j < 6; ++j)
       q[j] = (1 - t) * a[j] + t * b[j];
+    if (!aboveFloor(cell.robot, q, o))
+      return -kInf;
     clearance = std::min(
         clearance, sphereClearance(cell, sphereCentre(cell, centre, q), radius, o.nozzleLength));
   }
@@ -901,11 +916,12 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
   }
   if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2 || !(o.maxJointStepDeg > 0) ||
       o.refinements < 0 || !(o.reconfigurationCost >= 0) || !(o.nozzleLength >= 0) ||
-      !(o.reconfigurationMargin >= 0) || !(o.maxRetreat >= 0) || o.threads < 0) {
+      !(o.reconfigurationMargin >= 0) || !(o.maxRetreat >= 0) ||
+      !std::isfinite(o.armFloorClearance) || o.threads < 0) {
     throw GeoLatticeError(
         "robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2, "
         "max joint step > 0, refinements >= 0, reconfiguration cost, nozzle length, margin and "
-        "retreat >= 0, threads >= 0)");
+        "retreat >= 0, a finite arm floor clearance, threads >= 0)");
   }
   const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
   std::vector<size_t> coarse;

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace geolattice {
 
@@ -142,6 +143,16 @@ std::vector<JointVector> inverseKinematics(const RobotModel& r, const Isometry& 
     }
   }
   return out;
+}
+
+double lowestJointHeight(const RobotModel& r, const JointVector& q) {
+  Isometry t = dhTransform(q[0], r.d[0], r.a[0], r.alpha[0]);
+  double lowest = std::numeric_limits<double>::infinity();
+  for (int i = 1; i < 6; ++i) {
+    t = t * dhTransform(q[i], r.d[i], r.a[i], r.alpha[i]);
+    lowest = std::min(lowest, t.translation().z());
+  }
+  return lowest;
 }
 
 SingularityDistance singularityDistance(const RobotModel& r, const JointVector& q) {

@@ -56,6 +56,12 @@ bool inverseKinematicsBranch(const RobotModel& robot, const Isometry& flange, in
 std::vector<JointVector> inverseKinematics(const RobotModel& robot, const Isometry& flange,
                                            double wristFreeAngle = 0.0);
 
+/// Height (m, base frame z) of the arm's lowest joint at q: the lowest origin of the DH frames
+/// 2–6 (elbow, the three wrist joints, the flange). With the links straight between them, no
+/// part of the arm's chain from the shoulder (d1 above the base) to the flange is lower; the
+/// robot stands on z = 0, so a negative height drives the arm into its own mounting surface.
+double lowestJointHeight(const RobotModel& robot, const JointVector& q);
+
 /// Distances to the singularities at q (0 = singular): shoulder = distance of the wrist centre
 /// from the cylinder of radius d4 about the base axis (m), elbow = |sin θ3|, wrist = |sin θ5|.
 struct SingularityDistance {

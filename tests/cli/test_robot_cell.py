@@ -1,0 +1,62 @@
+#!/usr/bin/env python3
+"""The robot program keeps the arm above the floor it stands on. The bundled 30 mm cube's path was
+followed in an IK branch with the elbow 225 mm below the robot's base plane (reachable for the
+kinematics, not for a robot on a table). Every movej of the written program is checked with
+forward kinematics written here from the UR5's published DH parameters, not the solver's."""
+import glob
+import json
+import math
+import os
+import re
+import subprocess
+import tempfile
+import unittest
+
+SOURCE = os.environ["GEOLATTICE_SOURCE_DIR"]
+CLI = os.environ["GEOLATTICE_CLI"]
+
+# UR5 (CB3), standard DH: d, a, alpha per joint (m, rad).
+UR5_D = [0.089159, 0, 0, 0.10915, 0.09465, 0.0823]
+UR5_A = [0, -0.425, -0.39225, 0, 0, 0]
+UR5_ALPHA = [math.pi / 2, 0, 0, math.pi / 2, -math.pi / 2, 0]
+
+
+def matmul(a, b):
+    return [[sum(a[i][k] * b[k][j] for k in range(4)) for j in range(4)] for i in range(4)]
+
+
+def joint_heights(q):
+    """Base-frame z of the origins of the DH frames 1..6."""
+    t = [[1.0 if i == j else 0.0 for j in range(4)] for i in range(4)]
+    heights = []
+    for theta, d, a, alpha in zip(q, UR5_D, UR5_A, UR5_ALPHA):
+        ct, st, ca, sa = math.cos(theta), math.sin(theta), math.cos(alpha), math.sin(alpha)
+        t = matmul(t, [[ct, -st * ca, st * sa, a * ct], [st, ct * ca, -ct * sa, a * st],
+                       [0, sa, ca, d], [0, 0, 0, 1]])
+        heights.append(t[2][3])
+    return heights
+
+
+class RobotCellTest(unittest.TestCase):
+    def test_the_arm_stays_above_the_floor(self):
+        with tempfile.TemporaryDirectory() as out:
+            result = subprocess.run([CLI, "run", os.path.join(SOURCE, "testdata", "cube.obj"),
+                                     "--fit-size", "30", "-o", out, "-q"],
+                                    capture_output=True, text=True, timeout=600)
+            self.assertEqual(result.returncode, 0, result.stderr)
+            with open(os.path.join(out, "report.json")) as f:
+                program = json.load(f)["program"]
+            self.assertGreaterEqual(program["lowest_joint_height_mm"], 50.0)
+            movejs = []
+            for name in sorted(glob.glob(os.path.join(out, "print_part*.script"))):
+                with open(name) as f:
+                    for m in re.finditer(r"movej\(\[([^\]]*)\]", f.read()):
+                        movejs.append([float(v) for v in m.group(1).split(",")])
+            self.assertGreater(len(movejs), 10)
+            lowest = min(min(joint_heights(q)[1:]) for q in movejs)
+            self.assertGreaterEqual(lowest, 0.05 - 1e-6)
+            self.assertGreaterEqual(lowest * 1000, program["lowest_joint_height_mm"] - 1e-3)
+
+
+if __name__ == "__main__":
+    unittest.main()
