@@ -839,7 +839,10 @@ class CliGateTest(unittest.TestCase):
         self.assertTrue(report["gates"]["collision"]["overridden"])
 
     def test_unreachable_gate_and_its_override(self):
-        args = ["--fit-size", "30", "--nozzle-tip", "880,0,100", "--no-layout-search"]
+        # The nozzle at the edge of the UR5's reach, 400 mm up: 14 points out of reach. (At
+        # 100 mm, below the shoulder, only branches with the elbow under the robot's base reached
+        # it: since they are barred, the whole cell is unreachable.)
+        args = ["--fit-size", "30", "--nozzle-tip", "880,0,400", "--no-layout-search"]
         result, report, programs, out = self.run_cli("cube.obj", *args)
         self.expect_gate(result, report, programs, out, 5, "reachability", ["unreachable for the ur5"])
         self.assertGreater(report["program"]["unreachable"], 0)
@@ -852,9 +855,10 @@ class CliGateTest(unittest.TestCase):
         self.assertIn("waypoints.csv", programs)
 
     def test_joint_gate_and_the_cell_layout_search(self):
-        # The nozzle pointing along the robot's -x axis: the path as laid out winds a joint to its
-        # limit when the whole path keeps one IK branch (steps 1-3 of the path solver).
-        cell = ["--nozzle-tip", "0,-400,300", "--nozzle-axis", "-1,0,0", "--allow-collisions"]
+        # The nozzle pointing along the robot's +x axis: the path as laid out winds a joint to its
+        # limit when the whole path keeps one IK branch (steps 1-3 of the path solver). (Along -x
+        # only a branch with the elbow under the robot's base wound it; those are barred now.)
+        cell = ["--nozzle-tip", "0,-400,300", "--nozzle-axis", "1,0,0", "--allow-collisions"]
         result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-layout-search",
                                                      "--no-reconfiguration")
         self.assertEqual(result.returncode, 6, result.stderr)
@@ -898,7 +902,8 @@ class CliGateTest(unittest.TestCase):
         self.assertIn("print_part.script", programs)
         with open(os.path.join(out, "print_part.script")) as f:
             text = f.read()
-        self.assertEqual(text.count("# reconfiguration between"), len(program["reconfigurations"]))
+        seams = sum(1 for r in program["reconfigurations"] if r["at_seam"])
+        self.assertEqual(text.count("# reconfiguration "), len(program["reconfigurations"]))
         self.assertGreater(program["via_segments"], 0)
         scripts = ""  # every program file of the split program
         for name in programs:
@@ -906,8 +911,10 @@ class CliGateTest(unittest.TestCase):
                 with open(os.path.join(out, name)) as f:
                     scripts += f.read()
         self.assertEqual(scripts.count(" waypoint(s) between toolpath points "), program["via_segments"])
+        # A change at an air move replaces one move by two; a seam adds two.
         self.assertEqual(scripts.count("\n  movel(p["),
-                         program["waypoints"] - 1 + program["via_waypoints"] + len(program["reconfigurations"]))
+                         program["waypoints"] - 1 + program["via_waypoints"] +
+                         len(program["reconfigurations"]) + seams)
         for r in program["reconfigurations"]:
             self.assertGreaterEqual(r["clearance_mm"], 20.0 - 1e-6)
             self.assertGreater(r["retreat_mm"], 0)

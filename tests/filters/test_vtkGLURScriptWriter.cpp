@@ -214,7 +214,7 @@ TEST_F(BranchingYProgram, Ur5eAndAnotherCell) {
   w->SetInputConnection(p->planner->GetOutputPort());
   w->SetFileName((dir / "ur5e.script").string().c_str());
   w->SetRobot("ur5e");
-  w->SetNozzleTip(100, -450, 250);
+  w->SetNozzleTip(100, -450, 350);
   w->SetPartOnFlangePosition(0, 0, 50);
   w->SetPartOnFlangeRotation(0, 0, 0.3 * 180.0 / M_PI);  // 0.3 rad in the program
   w->SetSpeedFactor(0.3);
@@ -369,7 +369,9 @@ TEST(vtkGLURScriptWriter, UnreachablePointsAreReportedNotSkipped) {
   {
     ErrorCase c("unreachable", path);
     c.expectError(
-        "2 of 2000 toolpath points are unreachable for the ur5 in this cell (first: 6, 1001)");
+        "2 of 2000 toolpath points are unreachable for the ur5 in this cell (out of "
+        "reach, past a joint limit, or reached only with a joint of the arm lower than "
+        "50 mm above the floor it stands on; first: 6, 1001)");
     EXPECT_EQ(c.writer->GetUnreachableCount(), 2);
     EXPECT_EQ(c.writer->GetUnreachablePoint(0), 6);
     EXPECT_EQ(c.writer->GetUnreachablePoint(1), 1001);
