@@ -30,6 +30,11 @@ constexpr size_t kMostStepsForSeams = 100;
 /// comment); singularityMargin elsewhere.
 constexpr double kWideWristMargin = 0.25;
 
+/// Points between the coarse samples of an N-point path (module comment, step 1).
+size_t coarseStride(size_t N, const RobotPathOptions& o) {
+  return std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
+}
+
 /// x − 2πk nearest to 0 (the value of std::remainder(x, 2π) away from the ties at ±π, several
 /// times faster; the dynamic programming calls it for every joint of every transition).
 inline double wrapToPi(double x) {
@@ -553,7 +558,7 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
                         const std::vector<std::pair<int, int>>& flips = {},
                         const std::vector<char>& nearWrist = {}) {
   const size_t N = points.size();
-  const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
+  const size_t stride = coarseStride(N, o);
   RobotPath path;
   for (int pass = 0;; ++pass) {
     std::vector<char> mayChange;
@@ -798,7 +803,7 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
   std::vector<std::pair<int, int>> flips;
   std::vector<char> excluded(N, 0);   // a change there could not be made
   std::vector<char> nearWrist(N, 0);  // a large step near the wrist singularity was found here
-  const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
+  const size_t stride = coarseStride(N, o);
   // The coarse samples with both points of every change; kept (densified) across the rounds.
   std::vector<size_t> withChanges = coarse;
   for (size_t i = 0; i + 1 < N; ++i) {
@@ -923,7 +928,7 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
         "max joint step > 0, refinements >= 0, reconfiguration cost, nozzle length, margin and "
         "retreat >= 0, a finite arm floor clearance, threads >= 0)");
   }
-  const size_t stride = std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
+  const size_t stride = coarseStride(N, o);
   std::vector<size_t> coarse;
   for (size_t i = 0; i < N; i += stride)
     coarse.push_back(i);
