@@ -1,5 +1,6 @@
 // The program stage of `geolattice run`: the safety gates, then the URScript program, the
 // G-code and the waypoint CSV (all or none of them).
+#include "CrashReport.h"
 #include "RunCommand.h"
 #include "RunSession.h"
 
@@ -45,6 +46,7 @@ std::string leastCollidingOnAPedestal(const Json& report) {
 }  // namespace
 
 int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
+  setCrashStage("program");
   GLPrintPipeline& P = run.P;
   const RunOptions& R = run.R;
   Json& s = run.Section("program");

@@ -3,6 +3,7 @@
 
 #include "BaseContactReport.h"
 #include "CliOptions.h"
+#include "CrashReport.h"
 #include "ErrorCapture.h"
 #include "Interrupt.h"
 #include "OutputFiles.h"
@@ -39,6 +40,7 @@
 #include <optional>
 #include <iostream>
 #include <sstream>
+#include <utility>
 
 namespace geolattice {
 
@@ -284,7 +286,8 @@ private:
     }
     this->Post(
         steps > 0 ? pvd : "", replayFiles,
-        [replayed = vtkSmartPointer<vtkPolyData>(replayed), dir = R.outDir, steps] {
+        // Moved: the job holds the copy's only reference (BackgroundWriter.h).
+        [replayed = vtkSmartPointer<vtkPolyData>(std::move(replayed)), dir = R.outDir, steps] {
           writeToolpathReplay(replayed, dir, steps);  // steps 0: removes an earlier replay
         },
         true);
@@ -297,6 +300,7 @@ private:
   /// orient.pedestal_tries and sequence.order_tries; the stages run again, with their files and
   /// report sections, for each set-up chosen.
   void FindAPrintableSetUp() {
+    setCrashStage("set-up (other orientations, pedestals, print orders)");
     auto say = [this](const std::string& text) {
       if (!R.quiet) {
         std::cout << "geolattice: " << text << "\n";

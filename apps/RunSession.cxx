@@ -1,5 +1,6 @@
 #include "RunSession.h"
 
+#include "CrashReport.h"
 #include "ErrorCapture.h"
 #include "Interrupt.h"
 
@@ -18,6 +19,7 @@
 #include <fstream>
 #include <iostream>
 #include <system_error>
+#include <utility>
 
 namespace geolattice {
 
@@ -76,6 +78,7 @@ Json& RunSession::Section(const char* name) {
 vtkDataObject* RunSession::Update(const char* stage, vtkAlgorithm* last,
                                   std::initializer_list<vtkAlgorithm*> watched) {
   this->CheckWriters();  // a file of an earlier stage could not be written: stop here
+  setCrashStage(stage);
   if (!R.quiet) {
     std::cout << "geolattice: " << stage << " ..." << std::flush;
   }
@@ -180,7 +183,8 @@ void RunSession::Write(vtkDataObject* data, const char* name) {
   }
   vtkSmartPointer<vtkDataObject> copy = vtk::TakeSmartPointer(data->NewInstance());
   copy->DeepCopy(data);  // the pipeline goes on (and may run the stage again) meanwhile
-  this->Post(path, {path}, [copy, path] { writeVtkXml(copy, path); });
+  // Moved: the job holds the copy's only reference (BackgroundWriter.h).
+  this->Post(path, {path}, [copy = std::move(copy), path] { writeVtkXml(copy, path); });
 }
 
 void RunSession::CheckWriters() {

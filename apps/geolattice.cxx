@@ -2,6 +2,7 @@
 // plugin (filters/GLPrintPipeline.h) and writes every stage's output plus report.json into the
 // output directory; `verify` re-checks a saved result for nozzle collisions.
 #include "CliOptions.h"
+#include "CrashReport.h"
 #include "GLPrintPipeline.h"
 #include "RunCommand.h"
 #include "VerifyCommand.h"
@@ -187,6 +188,7 @@ int main(int argc, char** argv) {
   }
   // Errors reach the user as one line through ErrorCapture; VTK's own console output (the output
   // window, and the logger that prints the executive's "returned failure" dump) stays quiet.
+  geolattice::installCrashReport();
   vtkNew<SilentOutputWindow> silent;
   vtkOutputWindow::SetInstance(silent);
   vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);

@@ -18,7 +18,10 @@ namespace geolattice {
 /// the encoding of the files (LZ4 + base64, most of their time) overlaps the stages instead of
 /// adding to them. A job must own what it writes (e.g. a deep copy of a VTK output: VTK caches
 /// array ranges and bounds inside the arrays, so an array read by a writer and a filter at once
-/// is a data race). Once a job has failed the later ones are skipped, and check() and wait()
+/// is a data race), and own it alone: a VTK object released on two threads at once is a data
+/// race in VTK's reference counting (the last two releases both decide whether to delete it or
+/// run the garbage collector on it; a `geolattice run` crashed so once in about 50 runs, found
+/// with ThreadSanitizer). Move the only reference into the job. Once a job has failed the later ones are skipped, and check() and wait()
 /// rethrow its error: the files are written as far as they would have been in line, no further.
 class BackgroundWriter {
 public:

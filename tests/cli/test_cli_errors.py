@@ -231,6 +231,25 @@ class CliErrorTest(unittest.TestCase):
             self.assertEqual(json.load(f)["failed"]["stage"], "toolpath")
         self.assertEqual(self.program_files(), [])
 
+    def test_a_crash_names_its_signal_stage_and_call_stack(self):
+        # A crash (here sent, as a fault would raise it) says on stderr which signal and stage,
+        # with the call stack, and still ends the process by that signal.
+        cmd = [CLI, "run", os.path.join(TESTDATA, "bunny.obj"), "--max-segment", "0.0005", "-o", self.out]
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        seen = ""
+        while "toolpath ..." not in seen:
+            c = p.stdout.read(1)
+            self.assertTrue(c, "the run ended before the toolpath stage: " + seen)
+            seen += c
+        p.send_signal(signal.SIGSEGV)
+        _, err = p.communicate(timeout=60)
+        self.assertEqual(p.returncode, -signal.SIGSEGV, err)
+        self.assertIn("geolattice: crashed with SIGSEGV (invalid memory access) in stage toolpath; "
+                      "call stack:\n", err)
+        # Frames with their library and address (the signal went to one of the threads).
+        self.assertRegex(err, r"call stack:\n(.*\(.*\)\[0x[0-9a-f]+\]\n)+")
+        self.assertEqual(self.program_files(), [])
+
     def test_nozzle_angle_outside_range(self):
         for angle in ("0", "90", "-10"):
             self.expect_error([os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "--nozzle-angle", angle],
