@@ -43,7 +43,8 @@ std::string describeUnreachable(const std::vector<vtkIdType>& unreachable, size_
   std::ostringstream s;
   s << unreachable.size() << " of " << points << " toolpath points are unreachable for the "
     << robot << " in this cell (out of reach, past a joint limit, or reached only with a joint "
-    << "of the arm lower than " << kMillimetresPerMetre * gl::RobotPathOptions{}.armFloorClearance
+    << "of the arm or the part lower than "
+    << kMillimetresPerMetre * gl::RobotPathOptions{}.floorClearance
     << " mm above the floor it stands on; first: ";
   const size_t shown = std::min<size_t>(unreachable.size(), 10);
   for (size_t i = 0; i < shown; ++i) {
@@ -136,6 +137,7 @@ void vtkGLURScriptWriter::ResetResults() {
   this->MaxJointSpeedDegS = 0;
   std::fill(this->MinSingularity, this->MinSingularity + 3, 0.0);
   this->LowestJointHeight = 0;
+  this->LowestPartHeight = 0;
   this->Duration = 0;
   this->MaxLineLength = 0;
   this->IKBranch = -1;
@@ -300,6 +302,7 @@ void vtkGLURScriptWriter::WriteData() {
         this->MinSingularity[1] = robotPath.minSingularity.elbow;
         this->MinSingularity[2] = robotPath.minSingularity.wrist;
         this->LowestJointHeight = kMillimetresPerMetre * robotPath.lowestJoint;
+        this->LowestPartHeight = kMillimetresPerMetre * robotPath.lowestPart;
         this->SolveSeconds = robotPath.seconds;
         this->LargeJointSteps = static_cast<vtkIdType>(robotPath.largeSteps.size());
         this->ViaSegments = static_cast<vtkIdType>(robotPath.via.size());

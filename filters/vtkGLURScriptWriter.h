@@ -209,6 +209,9 @@ public:
   /// Height of the arm's lowest joint over the written path above the floor the robot stands
   /// on (mm; kept at 50 mm or more: a point reached only lower is unreachable).
   double GetLowestJointHeight() const { return this->LowestJointHeight; }
+  /// Height of the part's lowest point (as printed so far, with the plate's footprint: core
+  /// robot/PartFloor.h) over the written path above the same floor (mm; kept at 50 mm or more).
+  double GetLowestPartHeight() const { return this->LowestPartHeight; }
   double GetDuration() const { return this->Duration; }
   vtkIdType GetMaxLineLength() const { return this->MaxLineLength; }
   int GetIKBranch() const { return this->IKBranch; }
@@ -282,6 +285,7 @@ private:
   double MaxJointSpeedDegS = 0;
   double MinSingularity[3] = {0, 0, 0};
   double LowestJointHeight = 0;
+  double LowestPartHeight = 0;
   double Duration = 0;
   vtkIdType MaxLineLength = 0;
   int IKBranch = -1;

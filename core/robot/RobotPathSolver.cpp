@@ -2,6 +2,7 @@
 
 #include "common/Error.h"
 #include "common/ParallelFor.h"
+#include "robot/PartFloor.h"
 
 #include <Eigen/Geometry>
 #include <algorithm>
@@ -9,6 +10,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string>
 #include <unordered_map>
 
 namespace geolattice {
@@ -59,9 +61,16 @@ JointVector unwrapNear(const RobotModel& r, JointVector q, const JointVector& ne
   return q;
 }
 
-/// Whether every joint of the arm at q is armFloorClearance above the floor (base z = 0).
+/// Whether every joint of the arm at q is floorClearance above the floor (base z = 0).
 bool aboveFloor(const RobotModel& r, const JointVector& q, const RobotPathOptions& o) {
-  return lowestJointHeight(r, q) >= o.armFloorClearance;
+  return lowestJointHeight(r, q) >= o.floorClearance;
+}
+
+/// Whether the part printed up to point i is floorClearance above the floor with the flange
+/// at `flange` (PartFloor.h).
+bool partAboveFloor(const PartFloor& part, const Isometry& flange, size_t i,
+                    const RobotPathOptions& o) {
+  return part.lowest(flange, i) >= o.floorClearance;
 }
 
 double singularityPenalty(const RobotModel& r, const JointVector& q, const Isometry& flange,
@@ -89,7 +98,15 @@ class StateCache {
 public:
   StateCache(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
              const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o, int threads)
-      : cell_(cell), points_(points), normals_(normals), o_(o), threads_(threads) {}
+      : cell_(cell),
+        points_(points),
+        normals_(normals),
+        o_(o),
+        threads_(threads),
+        part_(cell, points) {}
+
+  /// The part against the floor, for every step of the solver that uses this cache.
+  const PartFloor& part() const { return part_; }
 
   /// Solves every (coarse point, branch) not solved yet; the ψ grid's flange poses once per
   /// point for all its branches.
@@ -117,6 +134,9 @@ public:
       std::vector<Isometry> flange(P);
       for (int k = 0; k < P; ++k)
         flange[k] = cell_.flangePose(points_[point], normals_[point], k * dpsi);
+      std::vector<char> partClear(P);  // the same in every branch
+      for (int k = 0; k < P; ++k)
+        partClear[k] = partAboveFloor(part_, flange[k], point, o_);
       for (size_t i = firstOfPoint[g]; i < firstOfPoint[g + 1]; ++i) {
         const int branch = keys[i].second;
         BranchStates& st = *missing[i];
@@ -124,7 +144,8 @@ public:
         st.ok.resize(P);
         st.penalty.resize(P);
         for (int k = 0; k < P; ++k) {
-          st.ok[k] = inverseKinematicsBranch(cell_.robot, flange[k], branch, st.q[k]) &&
+          st.ok[k] = partClear[k] &&
+                     inverseKinematicsBranch(cell_.robot, flange[k], branch, st.q[k]) &&
                      aboveFloor(cell_.robot, st.q[k], o_);
           st.penalty[k] =
               st.ok[k] ? singularityPenalty(cell_.robot, st.q[k], flange[k], o_.singularityMargin)
@@ -143,6 +164,7 @@ private:
   const std::vector<Eigen::Vector3d>& normals_;
   const RobotPathOptions& o_;
   int threads_;
+  PartFloor part_;
   std::unordered_map<size_t, BranchStates> states_;
 };
 
@@ -218,7 +240,8 @@ std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
         bool any = false;
         for (int k = 0; k < P && !any && reaches[branch]; k += 3) {
           JointVector qq;
-          any = inverseKinematicsBranch(robot, flange[k], branch, qq) && withinLimits(robot, qq) &&
+          any = partAboveFloor(cache.part(), flange[k], coarse[s], o) &&
+                inverseKinematicsBranch(robot, flange[k], branch, qq) && withinLimits(robot, qq) &&
                 aboveFloor(robot, qq, o);
         }
         reaches[branch] = reaches[branch] && any;
@@ -378,7 +401,7 @@ bool turnsByAtMost(const RobotCell& cell, const JointVector& a, const JointVecto
 /// point is found: the path is then only known not to work.
 RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                     const std::vector<Eigen::Vector3d>& normals, const std::vector<size_t>& coarse,
-                    const CoarsePlan& plan, const RobotPathOptions& o,
+                    const CoarsePlan& plan, const PartFloor& part, const RobotPathOptions& o,
                     bool stopAtLargeStep = false) {
   const RobotModel& robot = cell.robot;
   const size_t N = points.size(), S = coarse.size();
@@ -416,7 +439,8 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
     parallelFor(chunks, o.threads, [&](size_t c, int) {
       for (size_t i = first + c * kChunk; i < std::min(last, first + (c + 1) * kChunk); ++i) {
         const Isometry f = cell.flangePose(points[i], normals[i], psiAt[i]);
-        directOk[i] = inverseKinematicsBranch(robot, f, branchAt[i], direct[i]) &&
+        directOk[i] = partAboveFloor(part, f, i, o) &&
+                      inverseKinematicsBranch(robot, f, branchAt[i], direct[i]) &&
                       std::abs(std::sin(direct[i][4])) > 1e-9 && aboveFloor(robot, direct[i], o);
       }
     });
@@ -440,9 +464,10 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
     JointVector leave{};
     bool leaveFound = false;
     if (changeAt[i] == kChangeAtSeam) {
-      leaveFound = inverseKinematicsBranch(
-                       robot, cell.flangePose(points[i - 1], normals[i - 1], psi), branch, leave) &&
-                   withinLimits(robot, leave) && aboveFloor(robot, leave, o);
+      const Isometry f = cell.flangePose(points[i - 1], normals[i - 1], psi);
+      leaveFound = partAboveFloor(part, f, i - 1, o) &&
+                   inverseKinematicsBranch(robot, f, branch, leave) && withinLimits(robot, leave) &&
+                   aboveFloor(robot, leave, o);
     }
     if (changeAt[i]) {
       havePrevious = leaveFound;
@@ -452,13 +477,15 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
     bool found = directOk[i];
     if (!found) {
       Isometry f = cell.flangePose(points[i], normals[i], psi);
-      found = inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0) &&
+      found = partAboveFloor(part, f, i, o) &&
+              inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0) &&
               aboveFloor(robot, qi, o);
       for (int retry = 1; !found && retry <= 3; ++retry) {
         for (double sign : {1.0, -1.0}) {
           const double p2 = psi + sign * retry * dpsi;
           f = cell.flangePose(points[i], normals[i], p2);
-          if (inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0) &&
+          if (partAboveFloor(part, f, i, o) &&
+              inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0) &&
               aboveFloor(robot, qi, o)) {
             found = true;
             psi = p2;
@@ -483,7 +510,11 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
         v.point = static_cast<int>(i);
         if (turnsByAtMost(cell, previous, qi, o.maxJointStepDeg) &&
             followStraightMove(robot, cell.partOnFlange, previous, qi,
-                               o.maxJointStepDeg * M_PI / 180.0, v.via)) {
+                               o.maxJointStepDeg * M_PI / 180.0, v.via) &&
+            std::all_of(v.via.joints.begin(), v.via.joints.end(), [&](const JointVector& q) {
+              return aboveFloor(robot, q, o) &&
+                     partAboveFloor(part, forwardKinematics(robot, q), i, o);
+            })) {
           step = v.via.maxStep;
           path.via.push_back(std::move(v));
         } else {
@@ -527,6 +558,8 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
   path.maxAxisErrorDeg = 0;
   path.minSingularity = {kInf, kInf, kInf};
   path.lowestJoint = kInf;
+  path.lowestPart = kInf;
+  const PartFloor partFloor(cell, points);
   size_t next = 0;  // the next unreachable point (sorted)
   for (size_t i = 0; i < points.size(); ++i) {
     if (next < path.unreachable.size() && static_cast<size_t>(path.unreachable[next]) == i) {
@@ -545,7 +578,46 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
     path.minSingularity.elbow = std::min(path.minSingularity.elbow, sd.elbow);
     path.minSingularity.wrist = std::min(path.minSingularity.wrist, sd.wrist);
     path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(robot, path.joints[i]));
+    path.lowestPart = std::min(path.lowestPart, partFloor.lowest(flange, i));
   }
+  for (const WaypointsBetween& v : path.via) {  // the program moves through these too
+    for (const JointVector& q : v.via.joints) {
+      path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(robot, q));
+      path.lowestPart = std::min(path.lowestPart, partFloor.lowest(forwardKinematics(robot, q),
+                                                                   static_cast<size_t>(v.point)));
+    }
+  }
+}
+
+/// Why a cell may be unreachable, from the part alone: "; the part itself ..." naming the first
+/// coarse sample where no turn ψ about the nozzle axis holds the part printed so far
+/// floorClearance above the floor (whatever the arm does), or "" when there is none.
+std::string partUnderTheFloor(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+                              const std::vector<Eigen::Vector3d>& normals,
+                              const std::vector<size_t>& coarse, const PartFloor& part,
+                              const RobotPathOptions& o) {
+  const double dpsi = 2 * M_PI / o.psiSamples;
+  size_t count = 0, first = 0;
+  double highest = -kInf;  // at the first such sample: the best any ψ does
+  for (size_t point : coarse) {
+    double best = -kInf;
+    for (int k = 0; k < o.psiSamples; ++k)
+      best = std::max(best,
+                      part.lowest(cell.flangePose(points[point], normals[point], k * dpsi), point));
+    if (best < o.floorClearance) {
+      if (count++ == 0) {
+        first = point;
+        highest = best;
+      }
+    }
+  }
+  if (count == 0)
+    return "";
+  std::ostringstream s;
+  s << "; the part itself (printed so far, on its plate) comes lower than that at " << count
+    << " of " << coarse.size() << " sampled toolpath points, first point " << first << " ("
+    << std::lround(1000 * highest) << " mm above the floor at best): raise the nozzle";
+  return s.str();
 }
 
 /// Steps 1–3 (step 4 with changePoint, the points where a change may be made, and flips, the
@@ -579,16 +651,19 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
     if (plans.empty()) {
       throw GeoLatticeError(
           "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously "
-          "(check the nozzle "
-          "position, the part-on-flange transform and the part size)");
+          "with the arm and the part " +
+          std::to_string(static_cast<int>(std::lround(1000 * o.floorClearance))) +
+          " mm above the floor (check the nozzle position, the part-on-flange transform and the "
+          "part size)" +
+          partUnderTheFloor(cell, points, normals, coarse, cache.part(), o));
     }
-    path = solveFine(cell, points, normals, coarse, plans[0], o);
+    path = solveFine(cell, points, normals, coarse, plans[0], cache.part(), o);
     // The cheapest plan flips between its samples or misses points: the plan of the next
     // branch that the fine pass follows, if any, before refining the cheapest one (a flip
     // between samples often stays under denser samples; another branch may have none).
     // A probe that works ran to the end: it is that branch's whole fine pass.
     for (size_t k = 1; k < plans.size() && !path.works(); ++k) {
-      RobotPath probe = solveFine(cell, points, normals, coarse, plans[k], o, true);
+      RobotPath probe = solveFine(cell, points, normals, coarse, plans[k], cache.part(), o, true);
       if (probe.works())
         path = std::move(probe);
     }
@@ -673,7 +748,7 @@ bool retreatLine(const RobotCell& cell, const JointVector& q0, int branch, doubl
 /// The least clearance (m) of the part's bounding sphere from the nozzle and the floor during
 /// the joint-space move from a to b (checked every degree of the largest joint's turn), stopping
 /// early once it is below `enough`; -∞ where a joint of the arm comes nearer the floor than
-/// armFloorClearance.
+/// floorClearance.
 double jointMoveClearance(const RobotCell& cell, const Eigen::Vector3d& centre, double radius,
                           const RobotPathOptions& o, const JointVector& a, const JointVector& b,
                           double enough) {
@@ -921,12 +996,12 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
   }
   if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2 || !(o.maxJointStepDeg > 0) ||
       o.refinements < 0 || !(o.reconfigurationCost >= 0) || !(o.nozzleLength >= 0) ||
-      !(o.reconfigurationMargin >= 0) || !(o.maxRetreat >= 0) ||
-      !std::isfinite(o.armFloorClearance) || o.threads < 0) {
+      !(o.reconfigurationMargin >= 0) || !(o.maxRetreat >= 0) || !std::isfinite(o.floorClearance) ||
+      o.threads < 0) {
     throw GeoLatticeError(
         "robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2, "
         "max joint step > 0, refinements >= 0, reconfiguration cost, nozzle length, margin and "
-        "retreat >= 0, a finite arm floor clearance, threads >= 0)");
+        "retreat >= 0, a finite floor clearance, threads >= 0)");
   }
   const size_t stride = coarseStride(N, o);
   std::vector<size_t> coarse;

@@ -57,10 +57,13 @@
 ///    be made so is excluded and the plan made again (at most 12 plans, and no more once two
 ///    plans in a row leave neither fewer large steps nor all at new places). The path as solved
 ///    by 1–3 is kept when this does not remove every unreachable point and large step.
-/// The floor the robot stands on (base z = 0): in every step, a state, a point, a retreat or a
-/// joint move with a joint of the arm (lowestJointHeight: elbow, wrists, flange) lower than
-/// armFloorClearance is not reachable (IK branches that put the elbow under the base plane reach
-/// the same poses: the bundled 30 mm cube's path was followed with it 225 mm below). Robot
+/// The floor the robot stands on (base z = 0): in every step, a state, a point, a waypoint
+/// between points (the step with it is then a large step), a retreat or a joint move with a
+/// joint of the arm (lowestJointHeight: elbow, wrists, flange) lower than floorClearance is
+/// not reachable (IK branches that put the elbow under the base plane reach the same poses: the
+/// bundled 30 mm cube's path was followed with it 225 mm below), nor a state, point or waypoint
+/// with the part as printed so far (PartFloor.h: its box with the plate's footprint) lower than
+/// that (during joint moves and retreats the part's bounding sphere is kept clear). Robot
 /// self-collision, the links' thickness beyond that clearance and other obstacles of the cell
 /// are not modelled.
 /// Cost O(samples · ψ · 8) IK solutions for the plan and O(N) for each fine pass (the other
@@ -88,10 +91,10 @@ struct RobotPathOptions {
   double nozzleLength = 0.25;       ///< m: nozzle and holder length kept clear during a joint move
   double reconfigurationMargin = 0.02;  ///< m added to the part's bounding sphere (the plate)
   double maxRetreat = 0.4;              ///< m: the farthest the part is moved away from the nozzle
-  /// m: every joint of the arm (lowestJointHeight) stays this far above the floor the robot
-  /// stands on (base z = 0), at every point, retreat and joint move; a point reached only lower
-  /// is unreachable.
-  double armFloorClearance = 0.05;
+  /// m: every joint of the arm (lowestJointHeight) and the part held (PartFloor) stay this far
+  /// above the floor the robot stands on (base z = 0), at every point, retreat and joint move; a
+  /// point reached only lower is unreachable.
+  double floorClearance = 0.05;
   int threads = 0;  ///< workers for the IK (0: every core); results do not depend on it
 };
 
@@ -141,7 +144,10 @@ struct RobotPath {
   SingularityDistance minSingularity;  ///< smallest distances along the path
   double maxTipError = 0;      ///< m: |FK(q)·partOnFlange·p − nozzle tip| over reachable points
   double maxAxisErrorDeg = 0;  ///< angle between the placed axis n and the nozzle axis
-  double lowestJoint = 0;      ///< m above the floor: the lowest joint over the reachable points
+  /// m above the floor: the lowest joint over the reachable points and the waypoints between them
+  double lowestJoint = 0;
+  /// m above the floor: the lowest point of the part as printed so far (PartFloor.h), the same
+  double lowestPart = 0;
   double seconds = 0;
 
   /// Every point reachable and no step above the bound: the path can be written.

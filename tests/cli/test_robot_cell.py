@@ -1,8 +1,10 @@
 #!/usr/bin/env python3
-"""The robot program keeps the arm above the floor it stands on. The bundled 30 mm cube's path was
-followed in an IK branch with the elbow 225 mm below the robot's base plane (reachable for the
-kinematics, not for a robot on a table). Every movej of the written program is checked with
-forward kinematics written here from the UR5's published DH parameters, not the solver's."""
+"""The robot program keeps the arm and the part above the floor it stands on. The bundled 30 mm
+cube's path was followed in an IK branch with the elbow 225 mm below the robot's base plane
+(reachable for the kinematics, not for a robot on a table). Every movej of the written program is
+checked with forward kinematics written here from the UR5's published DH parameters, not the
+solver's; every movel target (the TCP is the part's plate frame) with the whole part's bounding
+box."""
 import glob
 import json
 import math
@@ -37,25 +39,54 @@ def joint_heights(q):
     return heights
 
 
+def rotation(rx, ry, rz):
+    """The rotation matrix of a UR rotation vector (axis times angle, rad)."""
+    angle = math.sqrt(rx * rx + ry * ry + rz * rz)
+    if angle < 1e-12:
+        return [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
+    x, y, z = rx / angle, ry / angle, rz / angle
+    c, s, v = math.cos(angle), math.sin(angle), 1 - math.cos(angle)
+    return [[c + x * x * v, x * y * v - z * s, x * z * v + y * s],
+            [y * x * v + z * s, c + y * y * v, y * z * v - x * s],
+            [z * x * v - y * s, z * y * v + x * s, c + z * z * v]]
+
+
 class RobotCellTest(unittest.TestCase):
-    def test_the_arm_stays_above_the_floor(self):
+    def test_the_arm_and_the_part_stay_above_the_floor(self):
         with tempfile.TemporaryDirectory() as out:
             result = subprocess.run([CLI, "run", os.path.join(SOURCE, "testdata", "cube.obj"),
                                      "--fit-size", "30", "-o", out, "-q"],
                                     capture_output=True, text=True, timeout=600)
             self.assertEqual(result.returncode, 0, result.stderr)
             with open(os.path.join(out, "report.json")) as f:
-                program = json.load(f)["program"]
+                report = json.load(f)
+            program = report["program"]
             self.assertGreaterEqual(program["lowest_joint_height_mm"], 50.0)
-            movejs = []
+            scripts = []
             for name in sorted(glob.glob(os.path.join(out, "print_part*.script"))):
                 with open(name) as f:
-                    for m in re.finditer(r"movej\(\[([^\]]*)\]", f.read()):
-                        movejs.append([float(v) for v in m.group(1).split(",")])
+                    scripts.append(f.read())
+            movejs = [[float(v) for v in m.group(1).split(",")]
+                      for text in scripts for m in re.finditer(r"movej\(\[([^\]]*)\]", text)]
             self.assertGreater(len(movejs), 10)
             lowest = min(min(joint_heights(q)[1:]) for q in movejs)
             self.assertGreaterEqual(lowest, 0.05 - 1e-6)
             self.assertGreaterEqual(lowest * 1000, program["lowest_joint_height_mm"] - 1e-3)
+            # The part: the corners of its whole bounding box (mm, plate frame) at every movel
+            # target. The solver holds the part printed so far, so this bound is the stricter.
+            self.assertGreaterEqual(program["lowest_part_height_mm"], 50.0)
+            x0, x1, y0, y1, z0, z1 = report["input"]["bounds_mm"]
+            corners = [(x, y, z) for x in (x0, x1) for y in (y0, y1) for z in (z0, z1)]
+            lowest_part = math.inf
+            for text in scripts:
+                for m in re.finditer(r"movel\(p\[([^\]]*)\]", text):
+                    x, y, z, rx, ry, rz = (float(v) for v in m.group(1).split(","))
+                    r = rotation(rx, ry, rz)
+                    for c in corners:
+                        height = z + sum(r[2][k] * c[k] / 1000 for k in range(3))
+                        lowest_part = min(lowest_part, height)
+            self.assertLess(lowest_part, math.inf)
+            self.assertGreaterEqual(lowest_part, 0.05 - 1e-6)
 
 
 if __name__ == "__main__":

@@ -370,7 +370,7 @@ TEST(vtkGLURScriptWriter, UnreachablePointsAreReportedNotSkipped) {
     ErrorCase c("unreachable", path);
     c.expectError(
         "2 of 2000 toolpath points are unreachable for the ur5 in this cell (out of "
-        "reach, past a joint limit, or reached only with a joint of the arm lower than "
+        "reach, past a joint limit, or reached only with a joint of the arm or the part lower than "
         "50 mm above the floor it stands on; first: 6, 1001)");
     EXPECT_EQ(c.writer->GetUnreachableCount(), 2);
     EXPECT_EQ(c.writer->GetUnreachablePoint(0), 6);
