@@ -4,6 +4,7 @@ import json
 import math
 import os
 import re
+import resource
 import shutil
 import signal
 import subprocess
@@ -235,7 +236,9 @@ class CliErrorTest(unittest.TestCase):
         # A crash (here sent, as a fault would raise it) says on stderr which signal and stage,
         # with the call stack, and still ends the process by that signal.
         cmd = [CLI, "run", os.path.join(TESTDATA, "bunny.obj"), "--max-segment", "0.0005", "-o", self.out]
-        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+        no_core_dump = lambda: resource.setrlimit(resource.RLIMIT_CORE, (0, 0))  # ~700 MB each
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                             preexec_fn=no_core_dump)
         seen = ""
         while "toolpath ..." not in seen:
             c = p.stdout.read(1)
