@@ -388,6 +388,7 @@ void reportScript(GLPrintPipeline& p, Json& s) {
                           {"wrist", w->GetMinWristSingularity()}};
   s["lowest_joint_height_mm"] = w->GetLowestJointHeight();
   s["lowest_part_height_mm"] = w->GetLowestPartHeight();
+  s["min_link_nozzle_distance_mm"] = w->GetMinLinkNozzleDistance();
   s["max_joint_speed_deg_s"] = w->GetMaxJointSpeedDegS();
   s["duration_s"] = w->GetDuration();
   s["max_line_length"] = static_cast<long long>(w->GetMaxLineLength());

@@ -45,7 +45,9 @@ std::string describeUnreachable(const std::vector<vtkIdType>& unreachable, size_
     << robot << " in this cell (out of reach, past a joint limit, or reached only with a joint "
     << "of the arm or the part lower than "
     << kMillimetresPerMetre * gl::RobotPathOptions{}.floorClearance
-    << " mm above the floor it stands on; first: ";
+    << " mm above the floor it stands on, or with the arm nearer than "
+    << kMillimetresPerMetre * gl::RobotPathOptions{}.linkNozzleClearance
+    << " mm to the nozzle's axis; first: ";
   const size_t shown = std::min<size_t>(unreachable.size(), 10);
   for (size_t i = 0; i < shown; ++i) {
     s << (i ? ", " : "") << unreachable[i];
@@ -138,6 +140,7 @@ void vtkGLURScriptWriter::ResetResults() {
   std::fill(this->MinSingularity, this->MinSingularity + 3, 0.0);
   this->LowestJointHeight = 0;
   this->LowestPartHeight = 0;
+  this->MinLinkNozzleDistance = 0;
   this->Duration = 0;
   this->MaxLineLength = 0;
   this->IKBranch = -1;
@@ -155,7 +158,7 @@ void vtkGLURScriptWriter::CheckParameters() {
   if (tip.norm() < 50.0) {
     std::ostringstream s;
     s << "URScript writer: the nozzle tip (" << tip.x() << ", " << tip.y() << ", " << tip.z()
-      << ") mm is inside the robot's base; the cell is in millimetres (e.g. 0, -400, 300, not "
+      << ") mm is inside the robot's base; the cell is in millimetres (e.g. 0, -400, 350, not "
          "0, -0.4, 0.3)";
     throw gl::GeoLatticeError(s.str());
   }
@@ -303,6 +306,7 @@ void vtkGLURScriptWriter::WriteData() {
         this->MinSingularity[2] = robotPath.minSingularity.wrist;
         this->LowestJointHeight = kMillimetresPerMetre * robotPath.lowestJoint;
         this->LowestPartHeight = kMillimetresPerMetre * robotPath.lowestPart;
+        this->MinLinkNozzleDistance = kMillimetresPerMetre * robotPath.minLinkNozzleDistance;
         this->SolveSeconds = robotPath.seconds;
         this->LargeJointSteps = static_cast<vtkIdType>(robotPath.largeSteps.size());
         this->ViaSegments = static_cast<vtkIdType>(robotPath.via.size());

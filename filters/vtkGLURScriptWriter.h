@@ -48,7 +48,7 @@
  *   segment times), GetMaxLineLength (characters), GetIKBranch, GetSolveSeconds.
  * Parameters (in mm and degrees like every GeoLattice filter; the writer converts to URScript's
  *   metres and radians): Robot ("ur5" default, or "ur5e"), NozzleTip (mm, robot base frame,
- *   default (0, -400, 300)), NozzleAxis (from the tip into the nozzle, base frame, default
+ *   default (0, -400, 350)), NozzleAxis (from the tip into the nozzle, base frame, default
  *   (0, 0, 1), normalized), PartOnFlangePosition (mm) and PartOnFlangeRotation (rotation vector,
  *   degrees, as the UR teach pendant shows it): the part (platform) frame in the flange frame =
  *   the TCP, default (0, 0, 40) and (0, 0, 0): the platform plate 40 mm in front of the flange;
@@ -88,7 +88,7 @@ public:
   ///@}
 
   ///@{
-  /// Nozzle tip in the robot base frame (mm, default (0, -400, 300)).
+  /// Nozzle tip in the robot base frame (mm, default (0, -400, 350)).
   vtkSetVector3Macro(NozzleTip, double);
   vtkGetVector3Macro(NozzleTip, double);
   ///@}
@@ -212,6 +212,10 @@ public:
   /// Height of the part's lowest point (as printed so far, with the plate's footprint: core
   /// robot/PartFloor.h) over the written path above the same floor (mm; kept at 50 mm or more).
   double GetLowestPartHeight() const { return this->LowestPartHeight; }
+  /// Least distance of the upper arm, the forearm and wrist 1 (the lines between their joints)
+  /// from the nozzle's axis over the written path (mm; kept at 60 mm or more, core's
+  /// kLinkNozzleSafeDistance: a point reached only nearer is unreachable).
+  double GetMinLinkNozzleDistance() const { return this->MinLinkNozzleDistance; }
   double GetDuration() const { return this->Duration; }
   vtkIdType GetMaxLineLength() const { return this->MaxLineLength; }
   int GetIKBranch() const { return this->IKBranch; }
@@ -286,6 +290,7 @@ private:
   double MinSingularity[3] = {0, 0, 0};
   double LowestJointHeight = 0;
   double LowestPartHeight = 0;
+  double MinLinkNozzleDistance = 0;
   double Duration = 0;
   vtkIdType MaxLineLength = 0;
   int IKBranch = -1;

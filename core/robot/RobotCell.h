@@ -18,7 +18,9 @@ namespace geolattice {
 
 struct RobotCell {
   RobotModel robot = ur5Model();
-  Eigen::Vector3d nozzleTip = Eigen::Vector3d(0.0, -0.40, 0.30);  ///< m, base frame
+  /// m, base frame: 350 mm up leaves the forearm room under the nozzle (at 300 mm it passed
+  /// through the nozzle's axis on three of five bundled models: RobotPathOptions)
+  Eigen::Vector3d nozzleTip = Eigen::Vector3d(0.0, -0.40, 0.35);
   Eigen::Vector3d nozzleAxis = Eigen::Vector3d(0, 0, 1);  ///< from the tip into the nozzle (unit)
   /// Part (platform) frame in the flange frame: the platform plate 40 mm in front of the
   /// flange, part z along the flange z.

@@ -61,9 +61,56 @@ JointVector unwrapNear(const RobotModel& r, JointVector q, const JointVector& ne
   return q;
 }
 
-/// Whether every joint of the arm at q is floorClearance above the floor (base z = 0).
-bool aboveFloor(const RobotModel& r, const JointVector& q, const RobotPathOptions& o) {
-  return lowestJointHeight(r, q) >= o.floorClearance;
+/// Distance (m) between the segments [p0, p1] and [q0, q1] (closest points, clamped).
+double segmentDistance(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
+                       const Eigen::Vector3d& q0, const Eigen::Vector3d& q1) {
+  const Eigen::Vector3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  double s = 0, t = 0;
+  if (a <= 1e-18 && e <= 1e-18)
+    return r.norm();
+  if (a <= 1e-18) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = d1.dot(r);
+    if (e <= 1e-18) {
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = d1.dot(d2), denom = a * e - b * b;
+      s = denom > 1e-18 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0) {
+        t = 0;
+        s = std::clamp(-c / a, 0.0, 1.0);
+      } else if (t > 1) {
+        t = 1;
+        s = std::clamp((b - c) / a, 0.0, 1.0);
+      }
+    }
+  }
+  return (p0 + s * d1 - (q0 + t * d2)).norm();
+}
+
+/// Least distance (m) of the upper arm, the forearm and wrist 1 (the DH lines between the joint
+/// origins 1–4) from the nozzle's axis segment (tip to nozzleLength along the axis) at q.
+double linkNozzleDistance(const RobotCell& cell, const std::array<Eigen::Vector3d, 6>& origins,
+                          const RobotPathOptions& o) {
+  const Eigen::Vector3d q0 = cell.nozzleTip, q1 = cell.nozzleTip + o.nozzleLength * cell.nozzleAxis;
+  double d = kInf;
+  for (int l = 0; l < 3; ++l)
+    d = std::min(d, segmentDistance(origins[l], origins[l + 1], q0, q1));
+  return d;
+}
+
+/// Whether the arm at q is clear of the cell: every joint floorClearance above the floor (base
+/// z = 0), the upper arm, forearm and wrist 1 linkNozzleClearance from the nozzle (when > 0).
+bool armClear(const RobotCell& cell, const JointVector& q, const RobotPathOptions& o) {
+  const std::array<Eigen::Vector3d, 6> origins = jointOrigins(cell.robot, q);
+  for (int i = 1; i < 6; ++i)
+    if (origins[i].z() < o.floorClearance)
+      return false;
+  return !(o.linkNozzleClearance > 0) ||
+         linkNozzleDistance(cell, origins, o) >= o.linkNozzleClearance;
 }
 
 /// Whether the part printed up to point i is floorClearance above the floor with the flange
@@ -146,7 +193,7 @@ public:
         for (int k = 0; k < P; ++k) {
           st.ok[k] = partClear[k] &&
                      inverseKinematicsBranch(cell_.robot, flange[k], branch, st.q[k]) &&
-                     aboveFloor(cell_.robot, st.q[k], o_);
+                     armClear(cell_, st.q[k], o_);
           st.penalty[k] =
               st.ok[k] ? singularityPenalty(cell_.robot, st.q[k], flange[k], o_.singularityMargin)
                        : kInf;
@@ -242,7 +289,7 @@ std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
           JointVector qq;
           any = partAboveFloor(cache.part(), flange[k], coarse[s], o) &&
                 inverseKinematicsBranch(robot, flange[k], branch, qq) && withinLimits(robot, qq) &&
-                aboveFloor(robot, qq, o);
+                armClear(cell, qq, o);
         }
         reaches[branch] = reaches[branch] && any;
       }
@@ -441,7 +488,7 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
         const Isometry f = cell.flangePose(points[i], normals[i], psiAt[i]);
         directOk[i] = partAboveFloor(part, f, i, o) &&
                       inverseKinematicsBranch(robot, f, branchAt[i], direct[i]) &&
-                      std::abs(std::sin(direct[i][4])) > 1e-9 && aboveFloor(robot, direct[i], o);
+                      std::abs(std::sin(direct[i][4])) > 1e-9 && armClear(cell, direct[i], o);
       }
     });
   };
@@ -467,7 +514,7 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
       const Isometry f = cell.flangePose(points[i - 1], normals[i - 1], psi);
       leaveFound = partAboveFloor(part, f, i - 1, o) &&
                    inverseKinematicsBranch(robot, f, branch, leave) && withinLimits(robot, leave) &&
-                   aboveFloor(robot, leave, o);
+                   armClear(cell, leave, o);
     }
     if (changeAt[i]) {
       havePrevious = leaveFound;
@@ -479,14 +526,14 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
       Isometry f = cell.flangePose(points[i], normals[i], psi);
       found = partAboveFloor(part, f, i, o) &&
               inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0) &&
-              aboveFloor(robot, qi, o);
+              armClear(cell, qi, o);
       for (int retry = 1; !found && retry <= 3; ++retry) {
         for (double sign : {1.0, -1.0}) {
           const double p2 = psi + sign * retry * dpsi;
           f = cell.flangePose(points[i], normals[i], p2);
           if (partAboveFloor(part, f, i, o) &&
               inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0) &&
-              aboveFloor(robot, qi, o)) {
+              armClear(cell, qi, o)) {
             found = true;
             psi = p2;
             break;
@@ -512,7 +559,7 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
             followStraightMove(robot, cell.partOnFlange, previous, qi,
                                o.maxJointStepDeg * M_PI / 180.0, v.via) &&
             std::all_of(v.via.joints.begin(), v.via.joints.end(), [&](const JointVector& q) {
-              return aboveFloor(robot, q, o) &&
+              return armClear(cell, q, o) &&
                      partAboveFloor(part, forwardKinematics(robot, q), i, o);
             })) {
           step = v.via.maxStep;
@@ -552,13 +599,15 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
 /// kinematics puts every reachable point at the tip with its axis along the nozzle (largest
 /// errors), and the smallest singularity distances along the path.
 void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
-                        const std::vector<Eigen::Vector3d>& normals, RobotPath& path) {
+                        const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o,
+                        RobotPath& path) {
   const RobotModel& robot = cell.robot;
   path.maxTipError = 0;
   path.maxAxisErrorDeg = 0;
   path.minSingularity = {kInf, kInf, kInf};
   path.lowestJoint = kInf;
   path.lowestPart = kInf;
+  path.minLinkNozzleDistance = kInf;
   const PartFloor partFloor(cell, points);
   size_t next = 0;  // the next unreachable point (sorted)
   for (size_t i = 0; i < points.size(); ++i) {
@@ -579,10 +628,15 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
     path.minSingularity.wrist = std::min(path.minSingularity.wrist, sd.wrist);
     path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(robot, path.joints[i]));
     path.lowestPart = std::min(path.lowestPart, partFloor.lowest(flange, i));
+    path.minLinkNozzleDistance =
+        std::min(path.minLinkNozzleDistance,
+                 linkNozzleDistance(cell, jointOrigins(robot, path.joints[i]), o));
   }
   for (const WaypointsBetween& v : path.via) {  // the program moves through these too
     for (const JointVector& q : v.via.joints) {
       path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(robot, q));
+      path.minLinkNozzleDistance =
+          std::min(path.minLinkNozzleDistance, linkNozzleDistance(cell, jointOrigins(robot, q), o));
       path.lowestPart = std::min(path.lowestPart, partFloor.lowest(forwardKinematics(robot, q),
                                                                    static_cast<size_t>(v.point)));
     }
@@ -653,7 +707,9 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
           "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously "
           "with the arm and the part " +
           std::to_string(static_cast<int>(std::lround(1000 * o.floorClearance))) +
-          " mm above the floor (check the nozzle position, the part-on-flange transform and the "
+          " mm above the floor and the arm " +
+          std::to_string(static_cast<int>(std::lround(1000 * o.linkNozzleClearance))) +
+          " mm off the nozzle (check the nozzle position, the part-on-flange transform and the "
           "part size)" +
           partUnderTheFloor(cell, points, normals, coarse, cache.part(), o));
     }
@@ -669,7 +725,30 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
     }
     path.refinements = pass;
     path.coarseSamples = static_cast<int>(coarse.size());
-    if (path.largeSteps.empty() || pass == o.refinements) {
+    // Points missed between samples where some state reaches them (ψ interpolated into a pose
+    // the arm cannot take, e.g. the forearm at the nozzle): refined like large steps.
+    std::vector<int> refineAt = path.largeSteps;
+    if (!path.unreachable.empty() && pass < o.refinements) {
+      std::vector<size_t> missed;
+      for (int i : path.unreachable)
+        if (!std::binary_search(coarse.begin(), coarse.end(), static_cast<size_t>(i)))
+          missed.push_back(static_cast<size_t>(i));
+      if (missed.size() <= 4 * static_cast<size_t>(o.coarseSamples)) {
+        const std::vector<int> all{0, 1, 2, 3, 4, 5, 6, 7};
+        cache.prepare(missed, all);
+        for (size_t i : missed) {
+          bool reachable = false;
+          for (int b = 0; b < 8 && !reachable; ++b) {
+            const BranchStates& st = cache.at(i, b);
+            reachable = std::any_of(st.ok.begin(), st.ok.end(), [](char ok) { return ok != 0; });
+          }
+          if (reachable)
+            refineAt.push_back(static_cast<int>(i));
+        }
+        std::sort(refineAt.begin(), refineAt.end());
+      }
+    }
+    if (refineAt.empty() || pass == o.refinements) {
       break;
     }
     // Between two coarse samples ψ was only interpolated, and the joints jumped (a wrist flip
@@ -681,7 +760,7 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
     const size_t budget = 4 * static_cast<size_t>(o.coarseSamples);
     std::vector<size_t> added;
     size_t lastFrom = N, count = 0;
-    for (int i : path.largeSteps) {
+    for (int i : refineAt) {
       const auto hi = std::upper_bound(coarse.begin(), coarse.end(), static_cast<size_t>(i));
       const size_t from = hi == coarse.begin() ? 0 : *(hi - 1);
       const size_t to = hi == coarse.end() ? N - 1 : *hi;
@@ -736,8 +815,7 @@ bool retreatLine(const RobotCell& cell, const JointVector& q0, int branch, doubl
     double step = 0;
     for (int a = 0; a < 6; ++a)
       step = std::max(step, std::abs(q[a] - previous[a]));
-    if (!withinLimits(robot, q) || !aboveFloor(robot, q, o) ||
-        step * 180.0 / M_PI > o.maxJointStepDeg)
+    if (!withinLimits(robot, q) || !armClear(cell, q, o) || step * 180.0 / M_PI > o.maxJointStepDeg)
       return false;
     previous = q;
   }
@@ -762,7 +840,7 @@ double jointMoveClearance(const RobotCell& cell, const Eigen::Vector3d& centre, 
     JointVector q;
     for (int j = 0; j < 6; ++j)
       q[j] = (1 - t) * a[j] + t * b[j];
-    if (!aboveFloor(cell.robot, q, o))
+    if (!armClear(cell, q, o))
       return -kInf;
     clearance = std::min(
         clearance, sphereClearance(cell, sphereCentre(cell, centre, q), radius, o.nozzleLength));
@@ -997,11 +1075,11 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
   if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2 || !(o.maxJointStepDeg > 0) ||
       o.refinements < 0 || !(o.reconfigurationCost >= 0) || !(o.nozzleLength >= 0) ||
       !(o.reconfigurationMargin >= 0) || !(o.maxRetreat >= 0) || !std::isfinite(o.floorClearance) ||
-      o.threads < 0) {
+      !std::isfinite(o.linkNozzleClearance) || o.threads < 0) {
     throw GeoLatticeError(
         "robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2, "
         "max joint step > 0, refinements >= 0, reconfiguration cost, nozzle length, margin and "
-        "retreat >= 0, a finite floor clearance, threads >= 0)");
+        "retreat >= 0, finite floor and nozzle clearances, threads >= 0)");
   }
   const size_t stride = coarseStride(N, o);
   std::vector<size_t> coarse;
@@ -1026,7 +1104,7 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
     if (solveReconfigured(cell, points, normals, kind, coarse, o, reconfigured))
       path = std::move(reconfigured);
   }
-  checkEmittedJoints(cell, points, normals, path);
+  checkEmittedJoints(cell, points, normals, o, path);
   path.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return path;
 }

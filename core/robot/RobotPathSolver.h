@@ -26,7 +26,8 @@
 ///    singularity or a joint ran into its limit), the coarse interval around the step is sampled
 ///    64 times more densely and the plan is made again (up to `refinements` passes; at most
 ///    4 · coarseSamples new samples per pass, so a bound the path cannot keep anywhere does not
-///    make every later plan slower). Steps left
+///    make every later plan slower); so are points the fine pass missed between samples
+///    (the interpolated ψ puts the arm where it may not be) that some state reaches. Steps left
 ///    are listed in `largeSteps` for the caller to refuse. Each pass plans every branch again
 ///    and follows the others as in 2.
 /// 4. Reconfiguration (only when 1–3 leave unreachable points or large steps, and the point kinds
@@ -63,9 +64,11 @@
 /// not reachable (IK branches that put the elbow under the base plane reach the same poses: the
 /// bundled 30 mm cube's path was followed with it 225 mm below), nor a state, point or waypoint
 /// with the part as printed so far (PartFloor.h: its box with the plate's footprint) lower than
-/// that (during joint moves and retreats the part's bounding sphere is kept clear). Robot
-/// self-collision, the links' thickness beyond that clearance and other obstacles of the cell
-/// are not modelled.
+/// that (during joint moves and retreats the part's bounding sphere is kept clear). The nozzle:
+/// nor is a state, point, waypoint, retreat or joint move with the upper arm, the forearm or
+/// wrist 1 nearer than linkNozzleClearance to the nozzle's axis (tip to nozzleLength). Robot
+/// self-collision, the links' true shapes (they are taken as their DH lines with a clearance)
+/// and other obstacles of the cell are not modelled.
 /// Cost O(samples · ψ · 8) IK solutions for the plan and O(N) for each fine pass (the other
 /// branches' passes stop at their first large step), in parallel over `threads` (the result
 /// does not depend on them); 1M points ≈ 1 s; step 4 adds one IK per state at every air
@@ -76,6 +79,12 @@
 #include <vector>
 
 namespace geolattice {
+
+/// m: the distance of the upper arm, the forearm or wrist 1 (the DH lines between their joints)
+/// from the nozzle's axis below which the arm may hit the nozzle: the UR5's link radius (~45
+/// mm) and a slim hot end's (~15 mm). The wrist 2 and 3 links behind the plate are the
+/// collision verifier's (the plate is an obstacle there).
+constexpr double kLinkNozzleSafeDistance = 0.06;
 
 struct RobotPathOptions {
   int psiSamples = 72;      ///< grid of ψ over 2π (5° steps)
@@ -95,6 +104,13 @@ struct RobotPathOptions {
   /// above the floor the robot stands on (base z = 0), at every point, retreat and joint move; a
   /// point reached only lower is unreachable.
   double floorClearance = 0.05;
+  /// m: the upper arm, the forearm and wrist 1 (the DH lines between their joints) stay this
+  /// far from the nozzle's axis (tip to nozzleLength along it) at every point, waypoint,
+  /// retreat and joint move; a point reached only nearer is unreachable (0: not kept, only
+  /// measured in RobotPath::minLinkNozzleDistance). Before the tenth session nothing kept it:
+  /// the programs of the demo bunny, the Y and the three-branch tree drove the forearm through
+  /// the nozzle 10 mm above the tip (docs/performance.md).
+  double linkNozzleClearance = kLinkNozzleSafeDistance;
   int threads = 0;  ///< workers for the IK (0: every core); results do not depend on it
 };
 
@@ -148,6 +164,9 @@ struct RobotPath {
   double lowestJoint = 0;
   /// m above the floor: the lowest point of the part as printed so far (PartFloor.h), the same
   double lowestPart = 0;
+  /// m: the least distance of the upper arm, the forearm and wrist 1 from the nozzle's axis
+  /// (tip to nozzleLength along it) over the reachable points and the waypoints between them
+  double minLinkNozzleDistance = 0;
   double seconds = 0;
 
   /// Every point reachable and no step above the bound: the path can be written.

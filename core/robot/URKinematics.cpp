@@ -145,12 +145,21 @@ std::vector<JointVector> inverseKinematics(const RobotModel& r, const Isometry& 
   return out;
 }
 
+std::array<Eigen::Vector3d, 6> jointOrigins(const RobotModel& r, const JointVector& q) {
+  std::array<Eigen::Vector3d, 6> origins;
+  Isometry t = Isometry::Identity();
+  for (int i = 0; i < 6; ++i) {
+    t = t * dhTransform(q[i], r.d[i], r.a[i], r.alpha[i]);
+    origins[i] = t.translation();
+  }
+  return origins;
+}
+
 double lowestJointHeight(const RobotModel& r, const JointVector& q) {
-  Isometry t = dhTransform(q[0], r.d[0], r.a[0], r.alpha[0]);
+  const std::array<Eigen::Vector3d, 6> o = jointOrigins(r, q);
   double lowest = std::numeric_limits<double>::infinity();
   for (int i = 1; i < 6; ++i) {
-    t = t * dhTransform(q[i], r.d[i], r.a[i], r.alpha[i]);
-    lowest = std::min(lowest, t.translation().z());
+    lowest = std::min(lowest, o[i].z());
   }
   return lowest;
 }

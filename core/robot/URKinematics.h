@@ -56,6 +56,11 @@ bool inverseKinematicsBranch(const RobotModel& robot, const Isometry& flange, in
 std::vector<JointVector> inverseKinematics(const RobotModel& robot, const Isometry& flange,
                                            double wristFreeAngle = 0.0);
 
+/// The origins of the DH frames 1–6 at q (m, base frame): the shoulder (d1 above the base), the
+/// elbow, the three wrist joints and the flange. The links run straight between them: the upper
+/// arm from 1 to 2, the forearm from 2 to 3, wrist 1 from 3 to 4.
+std::array<Eigen::Vector3d, 6> jointOrigins(const RobotModel& robot, const JointVector& q);
+
 /// Height (m, base frame z) of the arm's lowest joint at q: the lowest origin of the DH frames
 /// 2–6 (elbow, the three wrist joints, the flange). With the links straight between them, no
 /// part of the arm's chain from the shoulder (d1 above the base) to the flange is lower; the
