@@ -1,8 +1,6 @@
 // The part the robot holds against the floor it stands on (robot/PartFloor.h): the box bound
 // against analytic heights, and the path solver refusing the points where the part as printed
 // so far (with the plate's footprint) would be under the floor, though the arm reaches them.
-// And the arm against the nozzle (RobotPathOptions::linkNozzleClearance): measured by default,
-// kept when asked.
 #include "common/Error.h"
 #include "robot/PartFloor.h"
 #include "robot/RobotPathSolver.h"
@@ -11,7 +9,6 @@
 
 #include <Eigen/Geometry>
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <string>
 
@@ -158,52 +155,4 @@ TEST(PartFloor, ThePathSolverTurnsThePartAboveTheFloor) {
   noFloor.floorClearance = -1.0;
   const RobotPath free = solveRobotPath(cell, points, normals, noFloor);
   EXPECT_LT(free.lowestPart, o.floorClearance);
-}
-
-/// The least distance of the segments between the joint origins 1-4 (upper arm, forearm,
-/// wrist 1) from the nozzle's axis segment over the path, by sampling each link every mm.
-double sampledLinkNozzleDistance(const RobotCell& cell, const RobotPath& path, double length) {
-  double least = 1e9;
-  const Eigen::Vector3d a = cell.nozzleTip, b = cell.nozzleTip + length * cell.nozzleAxis;
-  for (const JointVector& q : path.joints) {
-    const std::array<Eigen::Vector3d, 6> o = jointOrigins(cell.robot, q);
-    for (int l = 0; l < 3; ++l) {
-      const int n = 1 + static_cast<int>((o[l + 1] - o[l]).norm() / 0.001);
-      for (int k = 0; k <= n; ++k) {
-        const Eigen::Vector3d x = o[l] + (o[l + 1] - o[l]) * (static_cast<double>(k) / n);
-        const double t = std::clamp((x - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
-        least = std::min(least, (x - (a + t * (b - a))).norm());
-      }
-    }
-  }
-  return least;
-}
-
-TEST(LinkNozzle, TheArmIsKeptOffTheNozzleWhenAsked) {
-  // A ring printed with the nozzle axis leaning 70 degrees outwards, the nozzle 300 mm up (the
-  // default cell before the tenth session): the forearm of the plan chosen without the
-  // constraint passes through the nozzle's axis above the tip; with it (the default), the
-  // solver keeps the arm 60 mm off.
-  RobotCell cell;
-  cell.nozzleTip.z() = 0.30;
-  std::vector<Eigen::Vector3d> points, normals;
-  for (int k = 0; k < 720; ++k) {
-    const double a = k * M_PI / 360, tilt = 70 * M_PI / 180;
-    points.emplace_back(20 * std::cos(a), 20 * std::sin(a), 10);
-    normals.emplace_back(std::sin(tilt) * std::cos(a), std::sin(tilt) * std::sin(a),
-                         std::cos(tilt));
-  }
-  RobotPathOptions o;
-  EXPECT_EQ(o.linkNozzleClearance, kLinkNozzleSafeDistance);
-  o.linkNozzleClearance = 0;  // measured only
-  const RobotPath free = solveRobotPath(cell, points, normals, o);
-  ASSERT_TRUE(free.works());
-  EXPECT_LT(free.minLinkNozzleDistance, 0.01);
-  EXPECT_NEAR(free.minLinkNozzleDistance, sampledLinkNozzleDistance(cell, free, o.nozzleLength),
-              1e-3);
-  o.linkNozzleClearance = kLinkNozzleSafeDistance;
-  const RobotPath kept = solveRobotPath(cell, points, normals, o);
-  ASSERT_TRUE(kept.works());
-  EXPECT_GE(kept.minLinkNozzleDistance, kLinkNozzleSafeDistance);
-  EXPECT_GE(sampledLinkNozzleDistance(cell, kept, o.nozzleLength), kLinkNozzleSafeDistance - 1e-3);
 }
