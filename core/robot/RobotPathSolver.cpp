@@ -2,6 +2,7 @@
 
 #include "common/Error.h"
 #include "common/ParallelFor.h"
+#include "common/SegmentDistance.h"
 #include "robot/PartFloor.h"
 
 #include <Eigen/Geometry>
@@ -59,36 +60,6 @@ JointVector unwrapNear(const RobotModel& r, JointVector q, const JointVector& ne
     q[i] = v;
   }
   return q;
-}
-
-/// Distance (m) between the segments [p0, p1] and [q0, q1] (closest points, clamped).
-double segmentDistance(const Eigen::Vector3d& p0, const Eigen::Vector3d& p1,
-                       const Eigen::Vector3d& q0, const Eigen::Vector3d& q1) {
-  const Eigen::Vector3d d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  double s = 0, t = 0;
-  if (a <= 1e-18 && e <= 1e-18)
-    return r.norm();
-  if (a <= 1e-18) {
-    t = std::clamp(f / e, 0.0, 1.0);
-  } else {
-    const double c = d1.dot(r);
-    if (e <= 1e-18) {
-      s = std::clamp(-c / a, 0.0, 1.0);
-    } else {
-      const double b = d1.dot(d2), denom = a * e - b * b;
-      s = denom > 1e-18 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-      t = (b * s + f) / e;
-      if (t < 0) {
-        t = 0;
-        s = std::clamp(-c / a, 0.0, 1.0);
-      } else if (t > 1) {
-        t = 1;
-        s = std::clamp((b - c) / a, 0.0, 1.0);
-      }
-    }
-  }
-  return (p0 + s * d1 - (q0 + t * d2)).norm();
 }
 
 /// Least distance (m) of the upper arm, the forearm and wrist 1 (the DH lines between the joint

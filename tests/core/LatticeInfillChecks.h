@@ -3,6 +3,7 @@
 // loops, duplicate vertices) and geometry (vertices on the layer surface, isolines at their
 // level, no two edges of a layer meeting except at a shared vertex). Each check recomputes what
 // it verifies from the graph's edges or from the input layers, independently of the builder.
+#include "common/SegmentDistance.h"
 #include "lattice/LatticeInfill.h"
 
 #include <gtest/gtest.h>
@@ -152,36 +153,6 @@ inline StructureReport checkStructure(const LatticeGraph& g, double tolerance) {
     }
   }
   return r;
-}
-
-/// Closest distance between segments p0p1 and q0q1 (3D).
-inline double segmentDistance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
-  const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-  double s = 0, t = 0;
-  if (a <= 0 && e <= 0) {
-    return r.norm();
-  }
-  if (a <= 0) {
-    t = std::clamp(f / e, 0.0, 1.0);
-  } else {
-    const double c = d1.dot(r);
-    if (e <= 0) {
-      s = std::clamp(-c / a, 0.0, 1.0);
-    } else {
-      const double b = d1.dot(d2), denom = a * e - b * b;
-      s = denom > 0 ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
-      t = (b * s + f) / e;
-      if (t < 0) {
-        t = 0;
-        s = std::clamp(-c / a, 0.0, 1.0);
-      } else if (t > 1) {
-        t = 1;
-        s = std::clamp((b - c) / a, 0.0, 1.0);
-      }
-    }
-  }
-  return (p0 + s * d1 - (q0 + t * d2)).norm();
 }
 
 /// Closest point of triangle abc to p, as barycentric weights (Ericson, Real-Time Collision Detection 5.1.5).
