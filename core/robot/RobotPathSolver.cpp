@@ -697,7 +697,8 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
     path.refinements = pass;
     path.coarseSamples = static_cast<int>(coarse.size());
     // Points missed between samples where some state reaches them (ψ interpolated into a pose
-    // the arm cannot take, e.g. the forearm at the nozzle): refined like large steps.
+    // the arm cannot take, e.g. the forearm at the nozzle): refined like large steps, when they
+    // are no more than a pass's budget of new samples (below).
     std::vector<int> refineAt = path.largeSteps;
     if (!path.unreachable.empty() && pass < o.refinements) {
       std::vector<size_t> missed;
@@ -796,8 +797,8 @@ bool retreatLine(const RobotCell& cell, const JointVector& q0, int branch, doubl
 
 /// The least clearance (m) of the part's bounding sphere from the nozzle and the floor during
 /// the joint-space move from a to b (checked every degree of the largest joint's turn), stopping
-/// early once it is below `enough`; -∞ where a joint of the arm comes nearer the floor than
-/// floorClearance.
+/// early once it is below `enough`; -∞ where the arm is not clear (armClear: a joint nearer the
+/// floor than floorClearance, or a link nearer the nozzle than linkNozzleClearance).
 double jointMoveClearance(const RobotCell& cell, const Eigen::Vector3d& centre, double radius,
                           const RobotPathOptions& o, const JointVector& a, const JointVector& b,
                           double enough) {
