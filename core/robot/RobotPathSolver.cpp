@@ -77,9 +77,8 @@ double linkNozzleDistance(const RobotCell& cell, const std::array<Eigen::Vector3
 /// z = 0), the upper arm, forearm and wrist 1 linkNozzleClearance from the nozzle (when > 0).
 bool armClear(const RobotCell& cell, const JointVector& q, const RobotPathOptions& o) {
   const std::array<Eigen::Vector3d, 6> origins = jointOrigins(cell.robot, q);
-  for (int i = 1; i < 6; ++i)
-    if (origins[i].z() < o.floorClearance)
-      return false;
+  if (lowestJointHeight(origins) < o.floorClearance)
+    return false;
   return !(o.linkNozzleClearance > 0) ||
          linkNozzleDistance(cell, origins, o) >= o.linkNozzleClearance;
 }
@@ -597,17 +596,18 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
     path.minSingularity.shoulder = std::min(path.minSingularity.shoulder, sd.shoulder);
     path.minSingularity.elbow = std::min(path.minSingularity.elbow, sd.elbow);
     path.minSingularity.wrist = std::min(path.minSingularity.wrist, sd.wrist);
-    path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(robot, path.joints[i]));
+    const std::array<Eigen::Vector3d, 6> origins = jointOrigins(robot, path.joints[i]);
+    path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(origins));
     path.lowestPart = std::min(path.lowestPart, partFloor.lowest(flange, i));
     path.minLinkNozzleDistance =
-        std::min(path.minLinkNozzleDistance,
-                 linkNozzleDistance(cell, jointOrigins(robot, path.joints[i]), o));
+        std::min(path.minLinkNozzleDistance, linkNozzleDistance(cell, origins, o));
   }
   for (const WaypointsBetween& v : path.via) {  // the program moves through these too
     for (const JointVector& q : v.via.joints) {
-      path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(robot, q));
+      const std::array<Eigen::Vector3d, 6> origins = jointOrigins(robot, q);
+      path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(origins));
       path.minLinkNozzleDistance =
-          std::min(path.minLinkNozzleDistance, linkNozzleDistance(cell, jointOrigins(robot, q), o));
+          std::min(path.minLinkNozzleDistance, linkNozzleDistance(cell, origins, o));
       path.lowestPart = std::min(path.lowestPart, partFloor.lowest(forwardKinematics(robot, q),
                                                                    static_cast<size_t>(v.point)));
     }

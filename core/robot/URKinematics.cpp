@@ -156,7 +156,10 @@ std::array<Eigen::Vector3d, 6> jointOrigins(const RobotModel& r, const JointVect
 }
 
 double lowestJointHeight(const RobotModel& r, const JointVector& q) {
-  const std::array<Eigen::Vector3d, 6> o = jointOrigins(r, q);
+  return lowestJointHeight(jointOrigins(r, q));
+}
+
+double lowestJointHeight(const std::array<Eigen::Vector3d, 6>& o) {
   double lowest = std::numeric_limits<double>::infinity();
   for (int i = 1; i < 6; ++i) {
     lowest = std::min(lowest, o[i].z());

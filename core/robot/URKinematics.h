@@ -66,6 +66,8 @@ std::array<Eigen::Vector3d, 6> jointOrigins(const RobotModel& robot, const Joint
 /// part of the arm's chain from the shoulder (d1 above the base) to the flange is lower; the
 /// robot stands on z = 0, so a negative height drives the arm into its own mounting surface.
 double lowestJointHeight(const RobotModel& robot, const JointVector& q);
+/// The same from the joint origins (jointOrigins), when they are at hand.
+double lowestJointHeight(const std::array<Eigen::Vector3d, 6>& origins);
 
 /// Distances to the singularities at q (0 = singular): shoulder = distance of the wrist centre
 /// from the cylinder of radius d4 about the base axis (m), elbow = |sin θ3|, wrist = |sin θ5|.
