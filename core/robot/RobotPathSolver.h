@@ -24,12 +24,15 @@
 /// 3. Refinement: where a joint still steps by more than maxJointStepDeg between consecutive
 ///    points (ψ was only interpolated between two coarse samples, and the wrist flipped near a
 ///    singularity or a joint ran into its limit), the coarse interval around the step is sampled
-///    64 times more densely and the plan is made again (up to `refinements` passes; at most
-///    4 · coarseSamples new samples per pass, so a bound the path cannot keep anywhere does not
-///    make every later plan slower); so are points the fine pass missed between samples
-///    (the interpolated ψ puts the arm where it may not be) that some state reaches. Steps left
-///    are listed in `largeSteps` for the caller to refuse. Each pass plans every branch again
-///    and follows the others as in 2.
+///    64 times more densely and the plan is made again (at most 4 · coarseSamples new samples
+///    per pass, so a bound the path cannot keep anywhere does not make every later plan
+///    slower); so are points the fine pass missed between samples (the interpolated ψ puts the
+///    arm where it may not be) that some state reaches. Passes go on while they make progress:
+///    up to `refinements` of them, and until three in a row leave no tenth fewer unreachable
+///    points and large steps than the best pass before (one pass may fix a stretch and expose
+///    the next: the auto-oriented knight needed 4, a tilted-cap mushroom 7; a fixed 3 refused
+///    both). Steps left are listed in `largeSteps` for the caller to refuse. Each pass plans
+///    every branch again and follows the others as in 2.
 /// 4. Reconfiguration (only when 1–3 leave unreachable points or large steps, and the point kinds
 ///    are given): one IK branch and a continuous ψ per stretch between changes instead of one
 ///    for the whole path. The plan of step 1 runs over all (branch, ψ) states at once; a step
@@ -94,7 +97,7 @@ struct RobotPathOptions {
       0.05;  ///< below this (|sin θ5|, |sin θ3|, shoulder distance in m) a penalty applies
   double maxJointStepDeg =
       20.0;  ///< a larger step of any joint between consecutive points triggers refinement
-  int refinements = 3;      ///< passes that densify the coarse samples around such steps
+  int refinements = 12;     ///< at most this many passes densify the samples around such steps
   bool reconfigure = true;  ///< step 4: allow reconfiguration moves at air moves (needs kinds)
   double reconfigurationCost = 50;  ///< rad-equivalents a change of configuration costs the plan
   double nozzleLength = 0.25;       ///< m: nozzle and holder length kept clear during a joint move

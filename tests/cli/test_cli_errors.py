@@ -787,13 +787,17 @@ class CliGateTest(unittest.TestCase):
         self.assertEqual(t["violating_stations"], chosen["colliding_stations"])
         self.assertEqual(t["stations"], chosen["stations"])
         # Measured: 82 stations (79 at the plate) on 10 mm, none on 20 mm: the collision gate
-        # passes. The UR5 in the default cell reaches some of its points only with the forearm
-        # at the nozzle (tenth session): the reachability gate stops it, saying so.
+        # passes. The UR5 in the default cell follows it with the arm 60 mm off the nozzle (the
+        # tenth session's fixed 3 refinement passes left 97 points unreachable; the eleventh's
+        # go on while they make progress: 4).
         self.assertEqual(t["violating_stations"], 0)
         self.assertTrue(report["gates"]["collision"]["passed"])
-        self.assertEqual(result.returncode, 5, result.stderr)
-        self.assertIn("nearer than 60 mm to the nozzle's axis", result.stderr)
-        self.assertNotIn("print_part.script", programs)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("print_part.script", programs)
+        program = report["program"]
+        self.assertEqual(program["unreachable"], 0)
+        self.assertGreaterEqual(program["min_link_nozzle_distance_mm"], 60.0 - 1e-6)
+        self.assertGreaterEqual(program["lowest_part_height_mm"], 50.0 - 1e-6)
         with open(os.path.join(out, "orientation.csv")) as f:
             self.assertGreater(len(f.readlines()), 100)
 
@@ -802,13 +806,12 @@ class CliGateTest(unittest.TestCase):
         # the default unbounded 45° cone its overhang stations (axes below the horizon under the
         # head) reach the plate slab and the gate stops it (test above); the real printhead ends,
         # and the auto-oriented knight's toolpath has every station (air moves included) clear of
-        # the plate and the part: the collision gate passes (the reachability gate then stops it:
-        # the forearm would pass the nozzle at some points, as in the test above).
+        # the plate and the part: the collision gate passes, and the program is written.
         result, report, programs, out = self.run_cli(
             "decimated-knight.off", "--fit-size", "80", "--orient", "auto", "--printhead",
             os.path.join(TESTDATA, "printhead_slim.obj"))
-        self.assertEqual(result.returncode, 5, result.stderr)  # not 4: the collision gate passes
-        self.assertIn("nearer than 60 mm to the nozzle's axis", result.stderr)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        self.assertIn("print_part.script", programs)
         t = report["toolpath"]
         self.assertGreater(t["stations"], 100000)
         self.assertEqual(t["stations"], t["points"])  # every point a station, air moves included
@@ -884,8 +887,10 @@ class CliGateTest(unittest.TestCase):
     def test_joint_gate_and_the_cell_layout_search(self):
         # The nozzle pointing along the robot's +x axis: the path as laid out winds a joint to its
         # limit when the whole path keeps one IK branch (steps 1-3 of the path solver). (Along -x
-        # only a branch with the elbow under the robot's base wound it; those are barred now.)
-        cell = ["--nozzle-tip", "0,-400,300", "--nozzle-axis", "1,0,0", "--allow-collisions"]
+        # only a branch with the elbow under the robot's base wound it; those are barred now. With
+        # the tip 300 mm up the refinement passes that go on while they make progress find a
+        # plan that does not wind it: eleventh session.)
+        cell = ["--nozzle-tip", "0,-400,350", "--nozzle-axis", "1,0,0", "--allow-collisions"]
         result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-layout-search",
                                                      "--no-reconfiguration")
         self.assertEqual(result.returncode, 6, result.stderr)
@@ -893,6 +898,7 @@ class CliGateTest(unittest.TestCase):
         # One warning (the collisions, overridden) and the gate's line.
         self.assertEqual(len([l for l in lines if l.startswith("geolattice: stopped: ")]), 1, result.stderr)
         self.assertIn("jumps by", result.stderr)
+        self.assertIn("wound to its limit", result.stderr)
         self.assertNotIn("raise", result.stderr)  # no advice to raise the bound
         self.assertEqual(programs, [])
         self.assertFalse(report["gates"]["joints"]["passed"])
