@@ -134,12 +134,22 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
     if (!R.quiet) {
       std::cout << " stopped\n";
     }
-    if (script->GetUnreachableCount() > 0 && !script->GetAllowUnreachable()) {
+    // A part kept as placed: another side facing the plate turns it less far over, which often
+    // suits the arm (a cap tilted 25 deg: refused as placed, printed with --orient auto).
+    const std::string orientHint =
+        P.Orientation->GetOrient() == vtkGLAutoOrient::KEEP && !P.GetTetMeshInput()
+            ? "; or try --orient auto (another side of the part facing the plate)"
+            : "";
+    // Unreachable points stop the program unless allowed; a cell that reaches none of them
+    // (an unreachable cell set-up: every point counted) even then.
+    if (script->GetUnreachableCount() > 0 &&
+        (!script->GetAllowUnreachable() ||
+         script->GetUnreachableCount() == script->GetNumberOfWaypoints())) {
       gates["reachability"] = {
           {"passed", false},
           {"unreachable", static_cast<long long>(script->GetUnreachableCount())},
           {"stopped", {"program"}}};
-      run.GateLine("program: " + withFlagNames(scriptError));
+      run.GateLine("program: " + withFlagNames(scriptError) + orientHint);
       return kExitUnreachableGate;
     }
     if (script->GetLargeJointSteps() > 0) {
@@ -147,7 +157,7 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
                          {"large_steps", static_cast<long long>(script->GetLargeJointSteps())},
                          {"max_step_deg", script->GetMaxJointStepDeg()},
                          {"stopped", {"program"}}};
-      run.GateLine("program: " + withFlagNames(scriptError));
+      run.GateLine("program: " + withFlagNames(scriptError) + orientHint);
       return kExitJointGate;
     }
     throw StageError("program", scriptError);

@@ -389,6 +389,7 @@ void reportScript(GLPrintPipeline& p, Json& s) {
   s["lowest_joint_height_mm"] = w->GetLowestJointHeight();
   s["lowest_part_height_mm"] = w->GetLowestPartHeight();
   s["min_link_nozzle_distance_mm"] = w->GetMinLinkNozzleDistance();
+  s["min_link_part_distance_mm"] = w->GetMinLinkPartDistance();
   s["max_joint_speed_deg_s"] = w->GetMaxJointSpeedDegS();
   s["duration_s"] = w->GetDuration();
   s["max_line_length"] = static_cast<long long>(w->GetMaxLineLength());

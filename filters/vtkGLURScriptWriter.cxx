@@ -47,7 +47,9 @@ std::string describeUnreachable(const std::vector<vtkIdType>& unreachable, size_
     << kMillimetresPerMetre * gl::RobotPathOptions{}.floorClearance
     << " mm above the floor it stands on, or with the arm nearer than "
     << kMillimetresPerMetre * gl::RobotPathOptions{}.linkNozzleClearance
-    << " mm to the nozzle's axis; first: ";
+    << " mm to the nozzle's axis or nearer than "
+    << kMillimetresPerMetre * gl::RobotPathOptions{}.linkPartClearance
+    << " mm to the part it holds; first: ";
   const size_t shown = std::min<size_t>(unreachable.size(), 10);
   for (size_t i = 0; i < shown; ++i) {
     s << (i ? ", " : "") << unreachable[i];
@@ -141,6 +143,7 @@ void vtkGLURScriptWriter::ResetResults() {
   this->LowestJointHeight = 0;
   this->LowestPartHeight = 0;
   this->MinLinkNozzleDistance = 0;
+  this->MinLinkPartDistance = 0;
   this->Duration = 0;
   this->MaxLineLength = 0;
   this->IKBranch = -1;
@@ -307,6 +310,7 @@ void vtkGLURScriptWriter::WriteData() {
         this->LowestJointHeight = kMillimetresPerMetre * robotPath.lowestJoint;
         this->LowestPartHeight = kMillimetresPerMetre * robotPath.lowestPart;
         this->MinLinkNozzleDistance = kMillimetresPerMetre * robotPath.minLinkNozzleDistance;
+        this->MinLinkPartDistance = kMillimetresPerMetre * robotPath.minLinkPartDistance;
         this->SolveSeconds = robotPath.seconds;
         this->LargeJointSteps = static_cast<vtkIdType>(robotPath.largeSteps.size());
         this->ViaSegments = static_cast<vtkIdType>(robotPath.via.size());

@@ -216,6 +216,11 @@ public:
   /// from the nozzle's axis over the written path (mm; kept at 60 mm or more, core's
   /// kLinkNozzleSafeDistance: a point reached only nearer is unreachable).
   double GetMinLinkNozzleDistance() const { return this->MinLinkNozzleDistance; }
+  /// Least distance of the upper arm, the forearm, wrist 1 and wrist 2 (the lines between their
+  /// joints) from the part the robot holds, as printed so far, and its plate, over the written
+  /// path (mm, measured up to 1000; kept at 60 mm or more, core's kLinkPartSafeDistance:
+  /// core/robot/PartArmClearance.h).
+  double GetMinLinkPartDistance() const { return this->MinLinkPartDistance; }
   double GetDuration() const { return this->Duration; }
   vtkIdType GetMaxLineLength() const { return this->MaxLineLength; }
   int GetIKBranch() const { return this->IKBranch; }
@@ -291,6 +296,7 @@ private:
   double LowestJointHeight = 0;
   double LowestPartHeight = 0;
   double MinLinkNozzleDistance = 0;
+  double MinLinkPartDistance = 0;
   double Duration = 0;
   vtkIdType MaxLineLength = 0;
   int IKBranch = -1;

@@ -74,6 +74,7 @@ CellLayoutResult solveWithCellLayout(const RobotCell& cell,
   ranking.coarseSamples = std::min(o.coarseSamples, 150);
   ranking.psiSamples = std::max(12, o.psiSamples / 2);
   ranking.refinements = 1;
+  ranking.denserPlanFactor = 1;
   ranking.threads = 1;  // the layouts are ranked in parallel
   parallelFor(candidates.size(), 0, [&](size_t i, int) {
     Candidate& c = candidates[i];

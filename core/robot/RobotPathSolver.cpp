@@ -3,6 +3,7 @@
 #include "common/Error.h"
 #include "common/ParallelFor.h"
 #include "common/SegmentDistance.h"
+#include "robot/PartArmClearance.h"
 #include "robot/PartFloor.h"
 
 #include <Eigen/Geometry>
@@ -23,6 +24,8 @@ constexpr int kReconfigurationRounds = 12;  ///< step 4: plans made before givin
 /// Steps 1–3: refinement passes in a row that leave no fewer problems before the refinement
 /// ends (planAndRefine).
 constexpr int kPassesWithoutProgress = 3;
+/// m: RobotPath::minLinkPartDistance is measured up to this (farther: reported as this).
+constexpr double kLinkPartReportLimit = 1.0;
 constexpr double kOverBoundCost = 1000;  ///< step 4: cost per rad of a step over the bound
 /// Step 4: where a change may be made (per point i, for i -> i + 1): at an air move, or at a
 /// seam inside a print stretch where the wrist flips or a joint reaches its limit (module
@@ -39,6 +42,22 @@ constexpr double kWideWristMargin = 0.25;
 /// Points between the coarse samples of an N-point path (module comment, step 1).
 size_t coarseStride(size_t N, const RobotPathOptions& o) {
   return std::max<size_t>(1, N / static_cast<size_t>(o.coarseSamples));
+}
+
+/// Every stride-th point of the path (coarseStride) and its last: the coarse samples.
+std::vector<size_t> coarseSamplesOf(size_t N, const RobotPathOptions& o) {
+  const size_t stride = coarseStride(N, o);
+  std::vector<size_t> coarse;
+  for (size_t i = 0; i < N; i += stride)
+    coarse.push_back(i);
+  if (coarse.back() != N - 1)
+    coarse.push_back(N - 1);
+  return coarse;
+}
+
+/// Unreachable points and large steps: what keeps a path from being written.
+size_t problemCount(const RobotPath& p) {
+  return p.unreachable.size() + p.largeSteps.size();
 }
 
 /// x − 2πk nearest to 0 (the value of std::remainder(x, 2π) away from the ties at ±π, several
@@ -76,21 +95,37 @@ double linkNozzleDistance(const RobotCell& cell, const std::array<Eigen::Vector3
   return d;
 }
 
-/// Whether the arm at q is clear of the cell: every joint floorClearance above the floor (base
-/// z = 0), the upper arm, forearm and wrist 1 linkNozzleClearance from the nozzle (when > 0).
-bool armClear(const RobotCell& cell, const JointVector& q, const RobotPathOptions& o) {
-  const std::array<Eigen::Vector3d, 6> origins = jointOrigins(cell.robot, q);
-  if (lowestJointHeight(origins) < o.floorClearance)
-    return false;
-  return !(o.linkNozzleClearance > 0) ||
-         linkNozzleDistance(cell, origins, o) >= o.linkNozzleClearance;
-}
+/// The part the robot holds, as printed up to a toolpath point: against the floor the robot
+/// stands on (PartFloor.h) and against the arm's own links (PartArmClearance.h). Built once per
+/// solve.
+struct HeldPart {
+  HeldPart(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+           const std::vector<int>& kind)
+      : floor(cell, points), arm(cell, points, kind) {}
+  PartFloor floor;
+  PartArmClearance arm;
+};
 
 /// Whether the part printed up to point i is floorClearance above the floor with the flange
 /// at `flange` (PartFloor.h).
-bool partAboveFloor(const PartFloor& part, const Isometry& flange, size_t i,
+bool partAboveFloor(const HeldPart& part, const Isometry& flange, size_t i,
                     const RobotPathOptions& o) {
-  return part.lowest(flange, i) >= o.floorClearance;
+  return part.floor.lowest(flange, i) >= o.floorClearance;
+}
+
+/// Whether the arm at q, holding the part printed up to point i with the flange at `flange`
+/// (= forwardKinematics(q)), is clear of the cell and of that part: every joint floorClearance
+/// above the floor (base z = 0), the upper arm, forearm and wrist 1 linkNozzleClearance from
+/// the nozzle, and the upper arm, forearm, wrist 1 and wrist 2 linkPartClearance from the part
+/// (each when > 0).
+bool armClearHolding(const RobotCell& cell, const JointVector& q, const Isometry& flange,
+                     const HeldPart& part, size_t i, const RobotPathOptions& o) {
+  const std::array<Eigen::Vector3d, 6> origins = jointOrigins(cell.robot, q);
+  if (lowestJointHeight(origins) < o.floorClearance)
+    return false;
+  if (o.linkNozzleClearance > 0 && linkNozzleDistance(cell, origins, o) < o.linkNozzleClearance)
+    return false;
+  return part.arm.clear(flange, origins, i, o.linkPartClearance);
 }
 
 double singularityPenalty(const RobotModel& r, const JointVector& q, const Isometry& flange,
@@ -117,16 +152,12 @@ struct BranchStates {
 class StateCache {
 public:
   StateCache(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
-             const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o, int threads)
-      : cell_(cell),
-        points_(points),
-        normals_(normals),
-        o_(o),
-        threads_(threads),
-        part_(cell, points) {}
+             const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o, int threads,
+             const HeldPart& part)
+      : cell_(cell), points_(points), normals_(normals), o_(o), threads_(threads), part_(part) {}
 
-  /// The part against the floor, for every step of the solver that uses this cache.
-  const PartFloor& part() const { return part_; }
+  /// The part held, for every step of the solver that uses this cache.
+  const HeldPart& part() const { return part_; }
 
   /// Solves every (coarse point, branch) not solved yet; the ψ grid's flange poses once per
   /// point for all its branches.
@@ -166,7 +197,7 @@ public:
         for (int k = 0; k < P; ++k) {
           st.ok[k] = partClear[k] &&
                      inverseKinematicsBranch(cell_.robot, flange[k], branch, st.q[k]) &&
-                     armClear(cell_, st.q[k], o_);
+                     armClearHolding(cell_, st.q[k], flange[k], part_, point, o_);
           st.penalty[k] =
               st.ok[k] ? singularityPenalty(cell_.robot, st.q[k], flange[k], o_.singularityMargin)
                        : kInf;
@@ -184,7 +215,7 @@ private:
   const std::vector<Eigen::Vector3d>& normals_;
   const RobotPathOptions& o_;
   int threads_;
-  PartFloor part_;
+  const HeldPart& part_;
   std::unordered_map<size_t, BranchStates> states_;
 };
 
@@ -262,7 +293,7 @@ std::vector<CoarsePlan> planCoarse(const RobotCell& cell,
           JointVector qq;
           any = partAboveFloor(cache.part(), flange[k], coarse[s], o) &&
                 inverseKinematicsBranch(robot, flange[k], branch, qq) && withinLimits(robot, qq) &&
-                armClear(cell, qq, o);
+                armClearHolding(cell, qq, flange[k], cache.part(), coarse[s], o);
         }
         reaches[branch] = reaches[branch] && any;
       }
@@ -421,7 +452,7 @@ bool turnsByAtMost(const RobotCell& cell, const JointVector& a, const JointVecto
 /// point is found: the path is then only known not to work.
 RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                     const std::vector<Eigen::Vector3d>& normals, const std::vector<size_t>& coarse,
-                    const CoarsePlan& plan, const PartFloor& part, const RobotPathOptions& o,
+                    const CoarsePlan& plan, const HeldPart& part, const RobotPathOptions& o,
                     bool stopAtLargeStep = false) {
   const RobotModel& robot = cell.robot;
   const size_t N = points.size(), S = coarse.size();
@@ -461,7 +492,8 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
         const Isometry f = cell.flangePose(points[i], normals[i], psiAt[i]);
         directOk[i] = partAboveFloor(part, f, i, o) &&
                       inverseKinematicsBranch(robot, f, branchAt[i], direct[i]) &&
-                      std::abs(std::sin(direct[i][4])) > 1e-9 && armClear(cell, direct[i], o);
+                      std::abs(std::sin(direct[i][4])) > 1e-9 &&
+                      armClearHolding(cell, direct[i], f, part, i, o);
       }
     });
   };
@@ -487,7 +519,7 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
       const Isometry f = cell.flangePose(points[i - 1], normals[i - 1], psi);
       leaveFound = partAboveFloor(part, f, i - 1, o) &&
                    inverseKinematicsBranch(robot, f, branch, leave) && withinLimits(robot, leave) &&
-                   armClear(cell, leave, o);
+                   armClearHolding(cell, leave, f, part, i - 1, o);
     }
     if (changeAt[i]) {
       havePrevious = leaveFound;
@@ -499,14 +531,14 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
       Isometry f = cell.flangePose(points[i], normals[i], psi);
       found = partAboveFloor(part, f, i, o) &&
               inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0) &&
-              armClear(cell, qi, o);
+              armClearHolding(cell, qi, f, part, i, o);
       for (int retry = 1; !found && retry <= 3; ++retry) {
         for (double sign : {1.0, -1.0}) {
           const double p2 = psi + sign * retry * dpsi;
           f = cell.flangePose(points[i], normals[i], p2);
           if (partAboveFloor(part, f, i, o) &&
               inverseKinematicsBranch(robot, f, branch, qi, havePrevious ? previous[5] : 0.0) &&
-              armClear(cell, qi, o)) {
+              armClearHolding(cell, qi, f, part, i, o)) {
             found = true;
             psi = p2;
             break;
@@ -532,8 +564,8 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
             followStraightMove(robot, cell.partOnFlange, previous, qi,
                                o.maxJointStepDeg * M_PI / 180.0, v.via) &&
             std::all_of(v.via.joints.begin(), v.via.joints.end(), [&](const JointVector& q) {
-              return armClear(cell, q, o) &&
-                     partAboveFloor(part, forwardKinematics(robot, q), i, o);
+              const Isometry f = forwardKinematics(robot, q);
+              return partAboveFloor(part, f, i, o) && armClearHolding(cell, q, f, part, i, o);
             })) {
           step = v.via.maxStep;
           path.via.push_back(std::move(v));
@@ -572,8 +604,8 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
 /// kinematics puts every reachable point at the tip with its axis along the nozzle (largest
 /// errors), and the smallest singularity distances along the path.
 void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
-                        const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o,
-                        RobotPath& path) {
+                        const std::vector<Eigen::Vector3d>& normals, const HeldPart& held,
+                        const RobotPathOptions& o, RobotPath& path) {
   const RobotModel& robot = cell.robot;
   path.maxTipError = 0;
   path.maxAxisErrorDeg = 0;
@@ -581,7 +613,7 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
   path.lowestJoint = kInf;
   path.lowestPart = kInf;
   path.minLinkNozzleDistance = kInf;
-  const PartFloor partFloor(cell, points);
+  path.minLinkPartDistance = kLinkPartReportLimit;
   size_t next = 0;  // the next unreachable point (sorted)
   for (size_t i = 0; i < points.size(); ++i) {
     if (next < path.unreachable.size() && static_cast<size_t>(path.unreachable[next]) == i) {
@@ -601,18 +633,38 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
     path.minSingularity.wrist = std::min(path.minSingularity.wrist, sd.wrist);
     const std::array<Eigen::Vector3d, 6> origins = jointOrigins(robot, path.joints[i]);
     path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(origins));
-    path.lowestPart = std::min(path.lowestPart, partFloor.lowest(flange, i));
+    path.lowestPart = std::min(path.lowestPart, held.floor.lowest(flange, i));
     path.minLinkNozzleDistance =
         std::min(path.minLinkNozzleDistance, linkNozzleDistance(cell, origins, o));
   }
+  // The arm to the part held (the one costly measure: a search of the material near each
+  // link; PartArmClearance::Sweep skips most), in chunks on every core.
+  constexpr size_t kChunk = 16384;
+  std::vector<double> chunkLeast((points.size() + kChunk - 1) / kChunk, kLinkPartReportLimit);
+  parallelFor(chunkLeast.size(), o.threads, [&](size_t c, int) {
+    PartArmClearance::Sweep sweep(held.arm, kLinkPartReportLimit);
+    for (size_t i = c * kChunk; i < std::min(points.size(), (c + 1) * kChunk); ++i) {
+      if (std::binary_search(path.unreachable.begin(), path.unreachable.end(), static_cast<int>(i)))
+        continue;
+      const JointVector& q = path.joints[i];
+      sweep.add(forwardKinematics(robot, q), jointOrigins(robot, q), i);
+    }
+    chunkLeast[c] = sweep.least();
+  });
+  for (double least : chunkLeast)
+    path.minLinkPartDistance = std::min(path.minLinkPartDistance, least);
   for (const WaypointsBetween& v : path.via) {  // the program moves through these too
     for (const JointVector& q : v.via.joints) {
       const std::array<Eigen::Vector3d, 6> origins = jointOrigins(robot, q);
       path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(origins));
       path.minLinkNozzleDistance =
           std::min(path.minLinkNozzleDistance, linkNozzleDistance(cell, origins, o));
-      path.lowestPart = std::min(path.lowestPart, partFloor.lowest(forwardKinematics(robot, q),
-                                                                   static_cast<size_t>(v.point)));
+      const Isometry flange = forwardKinematics(robot, q);
+      path.lowestPart =
+          std::min(path.lowestPart, held.floor.lowest(flange, static_cast<size_t>(v.point)));
+      path.minLinkPartDistance = std::min(
+          path.minLinkPartDistance, held.arm.distance(flange, origins, static_cast<size_t>(v.point),
+                                                      path.minLinkPartDistance));
     }
   }
 }
@@ -622,7 +674,7 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
 /// floorClearance above the floor (whatever the arm does), or "" when there is none.
 std::string partUnderTheFloor(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                               const std::vector<Eigen::Vector3d>& normals,
-                              const std::vector<size_t>& coarse, const PartFloor& part,
+                              const std::vector<size_t>& coarse, const HeldPart& part,
                               const RobotPathOptions& o) {
   const double dpsi = 2 * M_PI / o.psiSamples;
   size_t count = 0, first = 0;
@@ -630,8 +682,8 @@ std::string partUnderTheFloor(const RobotCell& cell, const std::vector<Eigen::Ve
   for (size_t point : coarse) {
     double best = -kInf;
     for (int k = 0; k < o.psiSamples; ++k)
-      best = std::max(best,
-                      part.lowest(cell.flangePose(points[point], normals[point], k * dpsi), point));
+      best = std::max(
+          best, part.floor.lowest(cell.flangePose(points[point], normals[point], k * dpsi), point));
     if (best < o.floorClearance) {
       if (count++ == 0) {
         first = point;
@@ -685,8 +737,10 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
           std::to_string(static_cast<int>(std::lround(1000 * o.floorClearance))) +
           " mm above the floor and the arm " +
           std::to_string(static_cast<int>(std::lround(1000 * o.linkNozzleClearance))) +
-          " mm off the nozzle (check the nozzle position, the part-on-flange transform and the "
-          "part size)" +
+          " mm off the nozzle and " +
+          std::to_string(static_cast<int>(std::lround(1000 * o.linkPartClearance))) +
+          " mm off the part it holds (check the nozzle position, the part-on-flange transform "
+          "and the part size)" +
           partUnderTheFloor(cell, points, normals, coarse, cache.part(), o));
     }
     path = solveFine(cell, points, normals, coarse, plans[0], cache.part(), o);
@@ -705,7 +759,7 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
     // pass may fix one stretch and expose another (the tilted-cap mushroom: 1,271 → 855 → 991
     // → 521 → 15 → 38 → 30 → 0), so only kPassesWithoutProgress passes in a row without it
     // end the refinement before `refinements` passes.
-    const size_t problems = path.unreachable.size() + path.largeSteps.size();
+    const size_t problems = problemCount(path);
     if (pass == 0 || 10 * problems < 9 * fewestProblems) {
       passesWithoutProgress = 0;
     } else {
@@ -790,7 +844,7 @@ double sphereClearance(const RobotCell& cell, const Eigen::Vector3d& c, double r
 /// by point every 5 mm in `branch`; false when a point is out of reach, out of the limits or
 /// a joint steps by more than the bound.
 bool retreatLine(const RobotCell& cell, const JointVector& q0, int branch, double d,
-                 const RobotPathOptions& o, JointVector& qEnd) {
+                 const HeldPart& part, size_t point, const RobotPathOptions& o, JointVector& qEnd) {
   const RobotModel& robot = cell.robot;
   const Isometry f0 = forwardKinematics(robot, q0);
   const int steps = std::max(1, static_cast<int>(std::ceil(d / 0.005)));
@@ -804,7 +858,8 @@ bool retreatLine(const RobotCell& cell, const JointVector& q0, int branch, doubl
     double step = 0;
     for (int a = 0; a < 6; ++a)
       step = std::max(step, std::abs(q[a] - previous[a]));
-    if (!withinLimits(robot, q) || !armClear(cell, q, o) || step * 180.0 / M_PI > o.maxJointStepDeg)
+    if (!withinLimits(robot, q) || !armClearHolding(cell, q, f, part, point, o) ||
+        step * 180.0 / M_PI > o.maxJointStepDeg)
       return false;
     previous = q;
   }
@@ -814,11 +869,12 @@ bool retreatLine(const RobotCell& cell, const JointVector& q0, int branch, doubl
 
 /// The least clearance (m) of the part's bounding sphere from the nozzle and the floor during
 /// the joint-space move from a to b (checked every degree of the largest joint's turn), stopping
-/// early once it is below `enough`; -∞ where the arm is not clear (armClear: a joint nearer the
-/// floor than floorClearance, or a link nearer the nozzle than linkNozzleClearance).
+/// early once it is below `enough`; -∞ where the arm is not clear (armClearHolding: a joint
+/// nearer the floor than floorClearance, or a link nearer the nozzle than linkNozzleClearance
+/// or nearer the part printed up to `point` than linkPartClearance).
 double jointMoveClearance(const RobotCell& cell, const Eigen::Vector3d& centre, double radius,
-                          const RobotPathOptions& o, const JointVector& a, const JointVector& b,
-                          double enough) {
+                          const HeldPart& part, size_t point, const RobotPathOptions& o,
+                          const JointVector& a, const JointVector& b, double enough) {
   double largest = 0;
   for (int j = 0; j < 6; ++j)
     largest = std::max(largest, std::abs(b[j] - a[j]));
@@ -829,7 +885,7 @@ double jointMoveClearance(const RobotCell& cell, const Eigen::Vector3d& centre, 
     JointVector q;
     for (int j = 0; j < 6; ++j)
       q[j] = (1 - t) * a[j] + t * b[j];
-    if (!armClear(cell, q, o))
+    if (!armClearHolding(cell, q, forwardKinematics(cell.robot, q), part, point, o))
       return -kInf;
     clearance = std::min(
         clearance, sphereClearance(cell, sphereCentre(cell, centre, q), radius, o.nozzleLength));
@@ -872,7 +928,8 @@ std::vector<JointVector> detourCandidates(const RobotModel& robot, const JointVe
 /// part's bounding sphere (centre in part units, radius in m) reconfigurationMargin clear of
 /// the nozzle and the floor.
 bool planReconfigurationMove(const RobotCell& cell, const Eigen::Vector3d& centre, double radius,
-                             const RobotPathOptions& o, Reconfiguration& r) {
+                             const HeldPart& part, const RobotPathOptions& o, Reconfiguration& r) {
+  const size_t point = static_cast<size_t>(r.point);
   const double margin = o.reconfigurationMargin;
   auto depth = [&](const JointVector& q) {
     // How far the sphere must move along -axis to be the margin (and 1 mm) behind the tip plane.
@@ -881,17 +938,17 @@ bool planReconfigurationMove(const RobotCell& cell, const Eigen::Vector3d& centr
   };
   const double dA = depth(r.arrive), dB = depth(r.leave);
   for (double extra = 0.0; std::max(dA, dB) + extra <= o.maxRetreat; extra += 0.05) {
-    if (!retreatLine(cell, r.arrive, r.fromBranch, dA + extra, o, r.retreatFrom) ||
-        !retreatLine(cell, r.leave, r.toBranch, dB + extra, o, r.retreatTo))
+    if (!retreatLine(cell, r.arrive, r.fromBranch, dA + extra, part, point, o, r.retreatFrom) ||
+        !retreatLine(cell, r.leave, r.toBranch, dB + extra, part, point, o, r.retreatTo))
       return false;  // farther away is out of reach too
     r.through.clear();
-    double clearance =
-        jointMoveClearance(cell, centre, radius, o, r.retreatFrom, r.retreatTo, margin);
+    double clearance = jointMoveClearance(cell, centre, radius, part, point, o, r.retreatFrom,
+                                          r.retreatTo, margin);
     if (clearance < margin) {
       for (const JointVector& via : detourCandidates(cell.robot, r.retreatFrom, r.retreatTo)) {
-        const double c =
-            std::min(jointMoveClearance(cell, centre, radius, o, r.retreatFrom, via, margin),
-                     jointMoveClearance(cell, centre, radius, o, via, r.retreatTo, margin));
+        const double c = std::min(
+            jointMoveClearance(cell, centre, radius, part, point, o, r.retreatFrom, via, margin),
+            jointMoveClearance(cell, centre, radius, part, point, o, via, r.retreatTo, margin));
         if (c >= margin) {
           clearance = c;
           r.through = {via};
@@ -912,8 +969,8 @@ bool planReconfigurationMove(const RobotCell& cell, const Eigen::Vector3d& centr
 /// `result`, or false when no path without unreachable points and large steps is found so.
 bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                        const std::vector<Eigen::Vector3d>& normals, const std::vector<int>& kind,
-                       const std::vector<size_t>& coarse, const RobotPathOptions& o,
-                       RobotPath& result) {
+                       const std::vector<size_t>& coarse, const HeldPart& part,
+                       const RobotPathOptions& o, RobotPath& result) {
   const size_t N = points.size();
   // Where a change may be made: the highest point of every air move (with a next air point),
   // and any air point where a plan steps too far (added below).
@@ -941,7 +998,7 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
     box.extend(p);
   const Eigen::Vector3d centre = box.center();
   const double radius = cell.partScale * 0.5 * box.diagonal().norm();
-  StateCache cache(cell, points, normals, o, o.threads);  // all rounds
+  StateCache cache(cell, points, normals, o, o.threads, part);  // all rounds
   std::vector<std::pair<int, int>> flips;
   std::vector<char> excluded(N, 0);   // a change there could not be made
   std::vector<char> nearWrist(N, 0);  // a large step near the wrist singularity was found here
@@ -1025,7 +1082,7 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
     }
     bool allMade = path.largeSteps.empty();
     for (Reconfiguration& r : path.reconfigurations) {
-      if (!planReconfigurationMove(cell, centre, radius, o, r)) {
+      if (!planReconfigurationMove(cell, centre, radius, part, o, r)) {
         changePoint[static_cast<size_t>(r.point)] = 0;  // excluded; plan again
         excluded[static_cast<size_t>(r.point)] = 1;
         allMade = false;
@@ -1061,39 +1118,60 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
       throw GeoLatticeError(s.str());
     }
   }
-  if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2 || !(o.maxJointStepDeg > 0) ||
-      o.refinements < 0 || !(o.reconfigurationCost >= 0) || !(o.nozzleLength >= 0) ||
-      !(o.reconfigurationMargin >= 0) || !(o.maxRetreat >= 0) || !std::isfinite(o.floorClearance) ||
-      !std::isfinite(o.linkNozzleClearance) || o.threads < 0) {
+  if (o.psiSamples < 4 || o.maxPsiStep < 1 || o.coarseSamples < 2 || o.denserPlanFactor < 1 ||
+      !(o.maxJointStepDeg > 0) || o.refinements < 0 || !(o.reconfigurationCost >= 0) ||
+      !(o.nozzleLength >= 0) || !(o.reconfigurationMargin >= 0) || !(o.maxRetreat >= 0) ||
+      !std::isfinite(o.floorClearance) || !std::isfinite(o.linkNozzleClearance) ||
+      !std::isfinite(o.linkPartClearance) || o.threads < 0) {
     throw GeoLatticeError(
         "robot path: bad options (psi samples >= 4, max psi step >= 1, coarse samples >= 2, "
+        "denser plan factor >= 1, "
         "max joint step > 0, refinements >= 0, reconfiguration cost, nozzle length, margin and "
-        "retreat >= 0, finite floor and nozzle clearances, threads >= 0)");
+        "retreat >= 0, finite floor, nozzle and part clearances, threads >= 0)");
   }
-  const size_t stride = coarseStride(N, o);
-  std::vector<size_t> coarse;
-  for (size_t i = 0; i < N; i += stride)
-    coarse.push_back(i);
-  if (coarse.back() != N - 1)
-    coarse.push_back(N - 1);
+  const std::vector<size_t> coarse = coarseSamplesOf(N, o);
 
-  // Steps 1–3; step 4 only where they fail (a path they can follow keeps its plan).
+  // Steps 1–3, then on denser samples; step 4 only where they fail (a path they can follow
+  // keeps its plan).
   const bool step4 = o.reconfigure && !kind.empty();
+  const HeldPart part(cell, points, kind);
   RobotPath path;
-  try {
-    StateCache cache(cell, points, normals, o, o.threads);
-    std::vector<size_t> refined = coarse;
-    path = planAndRefine(cell, points, normals, refined, o, cache);
-  } catch (const GeoLatticeError&) {
-    if (!step4 || !solveReconfigured(cell, points, normals, kind, coarse, o, path))
-      throw;
+  std::string noPlan;  // steps 1–3 found no plan: why
+  {
+    StateCache cache(cell, points, normals, o, o.threads, part);
+    try {
+      std::vector<size_t> refined = coarse;
+      path = planAndRefine(cell, points, normals, refined, o, cache);
+    } catch (const GeoLatticeError& e) {
+      noPlan = e.what();
+    }
+    // ψ turns by at most maxPsiStep grid cells from one coarse sample to the next: on denser
+    // samples it may turn faster where the path needs it (the demo bunny with the arm off the
+    // part it holds: 5,070 points unreachable on 500 samples, none on 2,000).
+    if ((!noPlan.empty() || !path.works()) && o.denserPlanFactor > 1) {
+      RobotPathOptions dense = o;
+      dense.coarseSamples = o.coarseSamples * o.denserPlanFactor;
+      try {
+        std::vector<size_t> refined = coarseSamplesOf(N, dense);
+        RobotPath denser = planAndRefine(cell, points, normals, refined, dense, cache);
+        if (!noPlan.empty() || problemCount(denser) < problemCount(path)) {
+          path = std::move(denser);
+          noPlan.clear();
+        }
+      } catch (const GeoLatticeError&) {
+        // no plan on denser samples either: the first attempt's outcome stands
+      }
+    }
   }
-  if (step4 && !path.works()) {
+  if (!noPlan.empty() &&
+      (!step4 || !solveReconfigured(cell, points, normals, kind, coarse, part, o, path)))
+    throw GeoLatticeError(noPlan);
+  if (noPlan.empty() && step4 && !path.works()) {
     RobotPath reconfigured;
-    if (solveReconfigured(cell, points, normals, kind, coarse, o, reconfigured))
+    if (solveReconfigured(cell, points, normals, kind, coarse, part, o, reconfigured))
       path = std::move(reconfigured);
   }
-  checkEmittedJoints(cell, points, normals, o, path);
+  checkEmittedJoints(cell, points, normals, part, o, path);
   path.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return path;
 }

@@ -31,8 +31,11 @@
 ///    up to `refinements` of them, and until three in a row leave no tenth fewer unreachable
 ///    points and large steps than the best pass before (one pass may fix a stretch and expose
 ///    the next: the auto-oriented knight needed 4, a tilted-cap mushroom 7; a fixed 3 refused
-///    both). Steps left are listed in `largeSteps` for the caller to refuse. Each pass plans
-///    every branch again and follows the others as in 2.
+///    both). Each pass plans every branch again and follows the others as in 2. Where steps
+///    1–3 leave unreachable points or large steps (or find no plan), they are made again on
+///    denserPlanFactor times the coarse samples (ψ moves at most maxPsiStep grid cells from one
+///    sample to the next: denser, it may turn faster where the path needs it), and the path
+///    with fewer of them kept. Steps left are listed in `largeSteps` for the caller to refuse.
 /// 4. Reconfiguration (only when 1–3 leave unreachable points or large steps, and the point kinds
 ///    are given): one IK branch and a continuous ψ per stretch between changes instead of one
 ///    for the whole path. The plan of step 1 runs over all (branch, ψ) states at once; a step
@@ -69,13 +72,17 @@
 /// with the part as printed so far (PartFloor.h: its box with the plate's footprint) lower than
 /// that (during joint moves and retreats the part's bounding sphere is kept clear). The nozzle:
 /// nor is a state, point, waypoint, retreat or joint move with the upper arm, the forearm or
-/// wrist 1 nearer than linkNozzleClearance to the nozzle's axis (tip to nozzleLength). Robot
+/// wrist 1 nearer than linkNozzleClearance to the nozzle's axis (tip to nozzleLength). The part
+/// it holds: nor is one with the upper arm, the forearm, wrist 1 or wrist 2 nearer than
+/// linkPartClearance to the part as printed so far or its plate (PartArmClearance.h). Robot
 /// self-collision, the links' true shapes (they are taken as their DH lines with a clearance)
 /// and other obstacles of the cell are not modelled.
 /// Cost O(samples · ψ · 8) IK solutions for the plan and O(N) for each fine pass (the other
 /// branches' passes stop at their first large step), in parallel over `threads` (the result
 /// does not depend on them); 1M points ≈ 1 s; step 4 adds one IK per state at every air
-/// move's coarse samples.
+/// move's coarse samples. Each state's links are searched for material within
+/// linkPartClearance in a kd-tree of the part (O(log N) where the arm is far from it); the
+/// demo bunny (255k points) solves in 6 s with it, 1 s without (docs/performance.md).
 #include "robot/RobotCell.h"
 #include "robot/StraightMove.h"
 
@@ -89,6 +96,11 @@ namespace geolattice {
 /// collision verifier's (the plate is an obstacle there).
 constexpr double kLinkNozzleSafeDistance = 0.06;
 
+/// m: the distance of the upper arm, the forearm, wrist 1 or wrist 2 (the DH lines between their
+/// joints) from the part the robot holds (PartArmClearance.h) below which the arm may hit it:
+/// the UR5's link radius (~45 mm) and the forearm tube's offset from its DH line (16 mm).
+constexpr double kLinkPartSafeDistance = 0.06;
+
 struct RobotPathOptions {
   int psiSamples = 72;      ///< grid of ψ over 2π (5° steps)
   int maxPsiStep = 2;       ///< grid cells ψ may move between coarse samples
@@ -97,7 +109,10 @@ struct RobotPathOptions {
       0.05;  ///< below this (|sin θ5|, |sin θ3|, shoulder distance in m) a penalty applies
   double maxJointStepDeg =
       20.0;  ///< a larger step of any joint between consecutive points triggers refinement
-  int refinements = 12;     ///< at most this many passes densify the samples around such steps
+  int refinements = 12;  ///< at most this many passes densify the samples around such steps
+  /// Steps 1–3 that leave unreachable points or large steps (or find no plan) are made again on
+  /// this many times the coarse samples before step 4 (1: not).
+  int denserPlanFactor = 4;
   bool reconfigure = true;  ///< step 4: allow reconfiguration moves at air moves (needs kinds)
   double reconfigurationCost = 50;  ///< rad-equivalents a change of configuration costs the plan
   double nozzleLength = 0.25;       ///< m: nozzle and holder length kept clear during a joint move
@@ -114,6 +129,12 @@ struct RobotPathOptions {
   /// the programs of the demo bunny, the Y and the three-branch tree drove the forearm through
   /// the nozzle 10 mm above the tip (docs/performance.md).
   double linkNozzleClearance = kLinkNozzleSafeDistance;
+  /// m: the upper arm, the forearm, wrist 1 and wrist 2 (the DH lines between their joints) stay
+  /// this far from the part as printed so far and its plate (PartArmClearance.h) at every point,
+  /// waypoint, retreat and joint move; a point reached only nearer is unreachable (0: not kept,
+  /// only measured in RobotPath::minLinkPartDistance). Before the eleventh session nothing kept
+  /// it: the demo bunny's program drove the forearm through the bunny it held.
+  double linkPartClearance = kLinkPartSafeDistance;
   int threads = 0;  ///< workers for the IK (0: every core); results do not depend on it
 };
 
@@ -170,6 +191,9 @@ struct RobotPath {
   /// m: the least distance of the upper arm, the forearm and wrist 1 from the nozzle's axis
   /// (tip to nozzleLength along it) over the reachable points and the waypoints between them
   double minLinkNozzleDistance = 0;
+  /// m: the least distance of the upper arm, the forearm, wrist 1 and wrist 2 from the part
+  /// printed so far and its plate, the same (measured up to 1 m)
+  double minLinkPartDistance = 0;
   double seconds = 0;
 
   /// Every point reachable and no step above the bound: the path can be written.

@@ -797,6 +797,7 @@ class CliGateTest(unittest.TestCase):
         program = report["program"]
         self.assertEqual(program["unreachable"], 0)
         self.assertGreaterEqual(program["min_link_nozzle_distance_mm"], 60.0 - 1e-6)
+        self.assertGreaterEqual(program["min_link_part_distance_mm"], 60.0 - 1e-6)
         self.assertGreaterEqual(program["lowest_part_height_mm"], 50.0 - 1e-6)
         with open(os.path.join(out, "orientation.csv")) as f:
             self.assertGreater(len(f.readlines()), 100)
@@ -869,36 +870,36 @@ class CliGateTest(unittest.TestCase):
         self.assertTrue(report["gates"]["collision"]["overridden"])
 
     def test_unreachable_gate_and_its_override(self):
-        # The nozzle at the edge of the UR5's reach, 400 mm up: 14 points out of reach. (At
-        # 100 mm, below the shoulder, only branches with the elbow under the robot's base reached
-        # it: since they are barred, the whole cell is unreachable.)
-        args = ["--fit-size", "30", "--nozzle-tip", "880,0,400", "--no-layout-search"]
+        # The nozzle beyond the edge of the UR5's reach, 900 mm out and 400 mm up: no IK branch
+        # reaches the path (until the eleventh session 880 mm left 14 points between coarse
+        # samples out of reach; the plan on 2,000 samples now reaches them all, so a partly
+        # reachable path is the filter test's: vtkGLURScriptWriter.UnreachablePointsAreReported
+        # NotSkipped). (At 100 mm, below the shoulder, only branches with the elbow under the
+        # robot's base reached it: since they are barred, the whole cell is unreachable.)
+        args = ["--fit-size", "30", "--nozzle-tip", "900,0,400", "--no-layout-search"]
         result, report, programs, out = self.run_cli("cube.obj", *args)
-        self.expect_gate(result, report, programs, out, 5, "reachability", ["unreachable for the ur5"])
-        self.assertGreater(report["program"]["unreachable"], 0)
+        self.expect_gate(result, report, programs, out, 5, "reachability",
+                         ["unreachable cell set-up", "60 mm off the part it holds"])
+        self.assertIn("or try --orient auto", result.stderr)  # the part kept as placed
+        self.assertEqual(report["program"]["unreachable"], report["toolpath"]["points"])
         # The program stage's own seconds (the writer ran before the gate), not the summary's.
         self.assertNotEqual(report["program"]["seconds"], report["summary"]["seconds"])
+        # A cell that reaches no part of the path is not overridden: nothing to simulate.
         result, report, programs, out = self.run_cli("cube.obj", *args, "--allow-unreachable")
-        self.assertEqual(result.returncode, 0, result.stderr)
-        self.assertIn("unreachable", result.stderr)
-        self.assertIn("print_part.script", programs)
-        self.assertIn("waypoints.csv", programs)
+        self.expect_gate(result, report, programs, out, 5, "reachability", ["unreachable cell set-up"])
 
     def test_joint_gate_and_the_cell_layout_search(self):
-        # The nozzle pointing along the robot's +x axis: the path as laid out winds a joint to its
-        # limit when the whole path keeps one IK branch (steps 1-3 of the path solver). (Along -x
-        # only a branch with the elbow under the robot's base wound it; those are barred now. With
-        # the tip 300 mm up the refinement passes that go on while they make progress find a
-        # plan that does not wind it: eleventh session.)
-        cell = ["--nozzle-tip", "0,-400,350", "--nozzle-axis", "1,0,0", "--allow-collisions"]
-        result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-layout-search",
-                                                     "--no-reconfiguration")
+        # The nozzle tip at the edge of the UR5's reach (860 mm out, 400 mm up): the Y's path as
+        # laid out winds a joint to its limit when the whole path keeps one IK branch (steps 1-3
+        # of the path solver, on 500 and on 2,000 samples).
+        result, report, programs, out = self.run_cli("y_shape.obj", "--nozzle-tip", "860,0,400",
+                                                     "--no-layout-search", "--no-reconfiguration")
         self.assertEqual(result.returncode, 6, result.stderr)
         lines = [l for l in result.stderr.splitlines() if l.strip()]
-        # One warning (the collisions, overridden) and the gate's line.
         self.assertEqual(len([l for l in lines if l.startswith("geolattice: stopped: ")]), 1, result.stderr)
         self.assertIn("jumps by", result.stderr)
         self.assertIn("wound to its limit", result.stderr)
+        self.assertIn("or try --orient auto", result.stderr)  # the part kept as placed
         self.assertNotIn("raise", result.stderr)  # no advice to raise the bound
         self.assertEqual(programs, [])
         self.assertFalse(report["gates"]["joints"]["passed"])
@@ -909,18 +910,18 @@ class CliGateTest(unittest.TestCase):
                            capture_output=True, text=True, timeout=300)
         self.assertEqual(r.returncode, 1)
         self.assertIn("--max-joint-step must be in (0, 30]", r.stderr)
-        # With the layout search alone the part is mounted otherwise and the program written.
-        result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-reconfiguration")
+        # The nozzle pointing along the robot's +x axis: until the eleventh session steps 1-3
+        # wound a joint to its limit there too, and only the layout search (a turned mounting)
+        # or step 4 wrote the program; now the plan on 2,000 samples follows it in the cell as
+        # given, with one IK branch.
+        cell = ["--nozzle-tip", "0,-400,350", "--nozzle-axis", "1,0,0", "--allow-collisions"]
+        result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-layout-search",
+                                                     "--no-reconfiguration")
         self.assertEqual(result.returncode, 0, result.stderr)
-        layout = report["program"]["layout"]
-        self.assertTrue(layout["changed"])
-        self.assertGreater(layout["layouts_tried"], 1)
+        self.assertFalse(report["program"]["layout"]["changed"])
         self.assertLessEqual(report["program"]["max_joint_step_deg"], 20.0)
         self.assertEqual(report["program"]["unreachable"], 0)
-        with open(os.path.join(out, "print_part.script")) as f:
-            head = f.read(2000)
-        self.assertIn("# cell layout: the platform turned by", head)
-        self.assertIn("set_tcp(p[0, 0, %s" % ("%g" % (layout["part_on_flange_used"][2] / 1000)), head)
+        self.assertEqual(report["program"]["reconfigurations"], [])
         # With the defaults (step 4: one IK branch per stretch, flips barred, reconfigurations at
         # air moves where needed) the path is followed in the cell as given; where the wrist
         # passes near its singularity the program has waypoints between points.

@@ -338,14 +338,16 @@ std::vector<std::pair<Isometry, double>> movelTargets(const std::string& text) {
 
 TEST(RobotPathSolver, SidewaysLapsPassTheWristSingularityWithWaypointsBetween) {
   const ConstructedPath p = sidewaysLaps(3, 85);
-  // The cell before the tenth session (nozzle 300 mm up, the arm's distance to the nozzle not
-  // kept), where one configuration follows the laps: this test is about the wrist, and the
-  // move count below assumes no change of configuration (keeping the forearm off the nozzle
-  // takes two here; LinkNozzle.* test that).
+  // The cell before the tenth session (nozzle 300 mm up, the arm's distance to the nozzle and
+  // to the part it holds not kept), where one configuration follows the laps: this test is
+  // about the wrist, and the move count below assumes no change of configuration (keeping the
+  // forearm off the nozzle takes two here, off the part none at all: TheArmIsKeptOff* test
+  // those).
   RobotCell cell;
   cell.nozzleTip.z() = 0.30;
   RobotPathOptions o;
   o.linkNozzleClearance = 0;
+  o.linkPartClearance = 0;
   const RobotPath rp = solveRobotPath(cell, p.points, p.normals, o, p.kind);
   size_t waypoints = 0;
   for (const WaypointsBetween& v : rp.via)
@@ -519,6 +521,7 @@ TEST(RobotPathSolver, TheArmIsKeptOffTheNozzle) {
   }
   RobotPathOptions o;
   EXPECT_EQ(o.linkNozzleClearance, kLinkNozzleSafeDistance);
+  o.linkPartClearance = 0;    // the nozzle alone (TheArmIsKeptOffThePartItHolds: the part)
   o.linkNozzleClearance = 0;  // measured only
   const RobotPath free = solveRobotPath(cell, points, normals, o);
   ASSERT_TRUE(free.works());

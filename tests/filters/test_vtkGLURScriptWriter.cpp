@@ -376,7 +376,7 @@ TEST(vtkGLURScriptWriter, UnreachablePointsAreReportedNotSkipped) {
         "2 of 2000 toolpath points are unreachable for the ur5 in this cell (out of "
         "reach, past a joint limit, or reached only with a joint of the arm or the part lower than "
         "50 mm above the floor it stands on, or with the arm nearer than 60 mm to the nozzle's "
-        "axis; first: 6, 1001)");
+        "axis or nearer than 60 mm to the part it holds; first: 6, 1001)");
     EXPECT_EQ(c.writer->GetUnreachableCount(), 2);
     EXPECT_EQ(c.writer->GetUnreachablePoint(0), 6);
     EXPECT_EQ(c.writer->GetUnreachablePoint(1), 1001);

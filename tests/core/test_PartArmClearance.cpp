@@ -1,0 +1,172 @@
+// The part the robot holds against the robot's own arm (robot/PartArmClearance.h): distances of
+// constructed links from constructed material and plate against analytic values, material
+// counted from its print index on, the sweep equal to a search at every state, and the path
+// solver keeping the forearm off a part it drove it through.
+#include "robot/PartArmClearance.h"
+#include "robot/RobotPathSolver.h"
+#include "robot/URKinematics.h"
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+#include <random>
+
+using namespace geolattice;
+
+namespace {
+
+/// Two air points at opposite corners of a 40 x 40 mm square at z = 0 (the toolpath's
+/// footprint: the plate), then a line of material along x (z = 10 mm, from x = -20 to 20 mm,
+/// 0.5 mm apart), in a cell whose flange is at the base origin: part point p (mm) is at
+/// (p / 1000 + (0, 0, 0.04)) m.
+struct LineOfMaterial {
+  RobotCell cell;
+  std::vector<Eigen::Vector3d> points{{-20, -20, 0}, {20, 20, 0}};
+  std::vector<int> kind{2, 2};
+  LineOfMaterial() {
+    for (int k = 0; k <= 80; ++k) {
+      points.emplace_back(-20.0 + 0.5 * k, 0.0, 10.0);
+      kind.push_back(0);
+    }
+  }
+};
+
+/// Joint origins whose links 0-4 all lie on the segment from a to b (m, base frame).
+std::array<Eigen::Vector3d, 6> linksAlong(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
+  std::array<Eigen::Vector3d, 6> o;
+  for (int k = 0; k < 6; ++k) {
+    o[k] = a + (b - a) * (std::min(k, 4) / 4.0);
+  }
+  return o;
+}
+
+/// The least distance (m) of the links 0-4 of q from the given part points (part units) with
+/// index <= i and from the plate's footprint rectangle, by sampling each link every mm.
+double sampledDistance(const RobotCell& cell, const JointVector& q,
+                       const std::vector<Eigen::Vector3d>& points, size_t i) {
+  const Isometry flange = forwardKinematics(cell.robot, q);
+  const Isometry toPart = (flange * cell.partOnFlange).inverse();
+  const std::array<Eigen::Vector3d, 6> o = jointOrigins(cell.robot, q);
+  Eigen::AlignedBox3d box;
+  for (const auto& p : points) {
+    box.extend(p);
+  }
+  double least = 1e9;
+  for (int l = 0; l < 4; ++l) {
+    const int n = 1 + static_cast<int>((o[l + 1] - o[l]).norm() / 0.001);
+    for (int k = 0; k <= n; ++k) {
+      const Eigen::Vector3d x =
+          (toPart * (o[l] + (o[l + 1] - o[l]) * (static_cast<double>(k) / n))) / cell.partScale;
+      for (size_t j = 0; j <= i && j < points.size(); ++j) {
+        least = std::min(least, (x - points[j]).norm());
+      }
+      // The plate: the nearest point of the footprint rectangle at the lowest z.
+      const Eigen::Vector3d onPlate(std::clamp(x.x(), box.min().x(), box.max().x()),
+                                    std::clamp(x.y(), box.min().y(), box.max().y()), box.min().z());
+      least = std::min(least, (x - onPlate).norm());
+    }
+  }
+  return least * cell.partScale;
+}
+
+}  // namespace
+
+TEST(PartArmClearance, DistancesOfLinesFromMaterialAndPlate) {
+  LineOfMaterial part;
+  part.cell.partOnFlange = Isometry(Eigen::Translation3d(0, 0, 0.04));
+  const PartArmClearance clearance(part.cell, part.points, part.kind);
+  const Isometry flange = Isometry::Identity();
+  // A link parallel to the material line, 80 mm above it (z = 0.04 + 0.01 + 0.08 m): the
+  // sampled material is within a voxel's diagonal (2√3 mm) of the material, and the result a
+  // lower bound.
+  const double top = 0.04 + 0.01 + 0.08;
+  const auto above = linksAlong({-0.1, 0, top}, {0.1, 0, top});
+  const double d = clearance.distance(flange, above, part.points.size() - 1, 1.0);
+  EXPECT_LE(d, 0.08 + 1e-12);
+  EXPECT_GE(d, 0.08 - 0.0035);
+  EXPECT_TRUE(clearance.clear(flange, above, part.points.size() - 1, 0.07));
+  EXPECT_FALSE(clearance.clear(flange, above, part.points.size() - 1, 0.085));
+  // Not searched beyond the limit.
+  EXPECT_EQ(clearance.distance(flange, above, part.points.size() - 1, 0.05), 0.05);
+  // A link beside the line's end at x = 40 mm (material up to x = 20 mm): only the points
+  // printed so far count. At index 10 the material reaches x = -16 mm; the plate, 10 mm under
+  // the material, spans x in [-20, 20] mm.
+  const auto beside = linksAlong({0.04, 0, 0.04 + 0.01}, {0.04, 0, 0.04 + 0.2});
+  const double late = clearance.distance(flange, beside, part.points.size() - 1, 1.0);
+  EXPECT_LE(late, 0.02 + 1e-12);
+  EXPECT_GE(late, 0.02 - 0.0035);
+  // The plate's edge at x = 20 mm (22.4 mm; the material's end would give at most 20 mm).
+  const double early = clearance.distance(flange, beside, 10, 1.0);
+  EXPECT_LE(early, std::hypot(0.02, 0.01) + 1e-12);
+  EXPECT_GE(early, std::hypot(0.02, 0.01) - 0.0035);
+  // The plate is there from the start: a link 5 mm under the plate's middle.
+  const auto under = linksAlong({-0.01, 0, 0.04 + 0.01 - 0.015}, {0.01, 0, 0.04 - 0.005});
+  EXPECT_LT(clearance.distance(flange, under, 0, 1.0), 0.006);
+  // Air moves are not material: the same line as air is only the plate (10 mm under it).
+  const PartArmClearance air(part.cell, part.points, std::vector<int>(part.points.size(), 2));
+  EXPECT_NEAR(air.distance(flange, above, part.points.size() - 1, 1.0), 0.09, 0.0035);
+}
+
+TEST(PartArmClearance, TheSweepFindsTheLeastOfEveryState) {
+  // A ring of material (radius 30 mm, 720 points) and random arm states along a path: the
+  // sweep's least equals the least distance() over the states.
+  RobotCell cell;
+  std::vector<Eigen::Vector3d> points;
+  for (int k = 0; k < 720; ++k) {
+    points.emplace_back(30 * std::cos(k * M_PI / 360), 30 * std::sin(k * M_PI / 360), 5 + k / 72.0);
+  }
+  const PartArmClearance clearance(cell, points);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> turn(-0.02, 0.02);
+  JointVector q{0.3, -1.2, 1.6, -1.9, -1.5, 0.2};
+  PartArmClearance::Sweep sweep(clearance, 1.0);
+  double least = 1.0;
+  for (size_t i = 0; i < points.size(); ++i) {
+    for (double& a : q) {
+      a += turn(random);
+    }
+    const Isometry flange = forwardKinematics(cell.robot, q);
+    const std::array<Eigen::Vector3d, 6> o = jointOrigins(cell.robot, q);
+    sweep.add(flange, o, i);
+    least = std::min(least, clearance.distance(flange, o, i, 1.0));
+  }
+  EXPECT_LT(least, 1.0);
+  EXPECT_DOUBLE_EQ(sweep.least(), least);
+}
+
+TEST(RobotPathSolver, TheArmIsKeptOffThePartItHolds) {
+  // A cylinder wall (radius 40 mm, 80 mm tall, ten laps) printed with the nozzle axis leaning
+  // 30 degrees outwards: without the constraint the chosen plan drives the forearm through
+  // the part it holds; with it (the default) the solver keeps the upper arm, forearm and
+  // wrists 60 mm off, checked by sampling each link every mm against every point printed so far
+  // and the plate.
+  RobotCell cell;
+  std::vector<Eigen::Vector3d> points, normals;
+  for (int lap = 0; lap < 10; ++lap) {
+    for (int k = 0; k < 360; ++k) {
+      const double a = k * M_PI / 180, tilt = 30 * M_PI / 180;
+      points.emplace_back(40 * std::cos(a), 40 * std::sin(a), 1 + 80.0 * lap / 9);
+      normals.emplace_back(std::sin(tilt) * std::cos(a), std::sin(tilt) * std::sin(a),
+                           std::cos(tilt));
+    }
+  }
+  RobotPathOptions o;
+  EXPECT_EQ(o.linkPartClearance, kLinkPartSafeDistance);
+  o.linkPartClearance = 0;  // measured only
+  const RobotPath free = solveRobotPath(cell, points, normals, o);
+  ASSERT_TRUE(free.works());
+  EXPECT_LT(free.minLinkPartDistance, 0.01);
+  o.linkPartClearance = kLinkPartSafeDistance;
+  const RobotPath kept = solveRobotPath(cell, points, normals, o);
+  ASSERT_TRUE(kept.works());
+  EXPECT_GE(kept.minLinkPartDistance, kLinkPartSafeDistance);
+  double sampled = 1e9;
+  for (size_t i = 0; i < points.size(); i += 9) {
+    sampled = std::min(sampled, sampledDistance(cell, kept.joints[i], points, i));
+  }
+  EXPECT_GE(sampled, kLinkPartSafeDistance - 1e-3);
+  // The solver's measure is a lower bound of the sampled one (within a voxel's diagonal).
+  EXPECT_LE(kept.minLinkPartDistance, sampled + 1e-3);
+}
