@@ -91,10 +91,11 @@ void addModelOptions(std::vector<CliOption>& t) {
                  return mm < 0 ? std::string("auto") : text(mm);
                }});
   t.push_back({"--orient-tries", "N", orient,
-               "with --orient auto, when the best candidate's toolpath collides, run up\n"
-               "to N candidates of the search (it scores at least N at the print's\n"
-               "resolution) and the placement through the toolpath and print the one\n"
-               "that collides least (1 = the search's best only)",
+               "with --orient auto, when the best candidate's toolpath collides (or the\n"
+               "robot cannot follow it), run up to N candidates of the search (it scores\n"
+               "at least N at the print's resolution) and the placement through the\n"
+               "toolpath (and the robot's path solver) and print the first that passes,\n"
+               "else the one that collides least (1 = the search's best only)",
                "GLPrintPart.OrientTries",
                [](P& p, RunOptions&, const std::string& v) {
                  p.OrientationTries = static_cast<int>(wholeNumber("--orient-tries", v, 1, 20));

@@ -93,6 +93,9 @@ private:
       this->HoldNotes(false);
       return *done;  // --until stopped earlier
     }
+    // The robot program is a gate of the set-up when it is written (--orient auto then tries
+    // other orientations where the robot cannot follow the toolpath).
+    P.RobotGate = R.until == "program";
     this->FindAPrintableSetUp();
     this->HoldNotes(false);
     if (R.until == "toolpath") {
@@ -311,8 +314,9 @@ private:
     };
     GLPrintPipeline::SetUpListener listener;
     listener.orientation = [&](const GLPrintPipeline::OrientationTry& t) {
-      say("the toolpath collides: trying the orientation search's candidate of rank " +
-          std::to_string(t.rank));
+      say(std::string(t.after == "robot" ? "the robot cannot follow the toolpath"
+                                         : "the toolpath collides") +
+          ": trying the orientation search's candidate of rank " + std::to_string(t.rank));
     };
     listener.pedestal = [&](const GLPrintPipeline::PedestalTry& t) {
       std::ostringstream m;
@@ -339,7 +343,9 @@ private:
           break;
         }
       }
-      say(m.str() + " (its toolpath collides least)");
+      say(m.str() + (step == GLPrintPipeline::SetUpStep::Orientation
+                         ? " (the first that prints, or whose toolpath collides least)"
+                         : " (its toolpath collides least)"));
       // The pipeline holds the last try; its stages run again for the chosen set-up (read from
       // the cache when that was the last), their report sections anew.
       for (const char* stale : {"pedestal", "mesh", "gdf", "layers", "overhang", "lattice",

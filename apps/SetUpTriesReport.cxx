@@ -11,12 +11,19 @@ void reportSetUpTries(const GLPrintPipeline::SetUpTries& tries, int chosenRank,
   if (!tries.orientations.empty()) {
     Json list = Json::array();
     for (const auto& t : tries.orientations) {
-      list.push_back({{"rank", t.rank},
-                      {"ok", t.ok},
-                      {"colliding_stations", t.colliding},
-                      {"stations", t.stations},
-                      {"pedestal_mm", t.pedestal},
-                      {"seconds", t.seconds}});
+      Json entry = {{"rank", t.rank},
+                    {"ok", t.ok},
+                    {"colliding_stations", t.colliding},
+                    {"stations", t.stations},
+                    {"pedestal_mm", t.pedestal},
+                    {"seconds", t.seconds}};
+      if (t.robot >= 0) {  // asked: the toolpath was collision-free
+        entry["robot_follows"] = t.robot == 1;
+        entry["unreachable"] = t.unreachable;
+        entry["large_joint_steps"] = t.largeSteps;
+        entry["robot_seconds"] = t.robotSeconds;
+      }
+      list.push_back(entry);
     }
     Json& orient = section("orient");
     orient["tries"] = list;

@@ -168,6 +168,7 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
   const int current = this->Orientation->GetCandidateRank();
   ranks.erase(std::remove(ranks.begin(), ranks.end(), current), ranks.end());
   ranks.insert(ranks.begin(), current);
+  std::string after;  // why the try before was not printed
   for (int rank : ranks) {
     if (geolattice::stopRequest().load() || (rank != current && !usable(rank, false))) {
       continue;
@@ -175,6 +176,7 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
     this->Orientation->SetCandidateRank(rank);
     OrientationTry t;
     t.rank = rank;
+    t.after = after;
     if (rank != current && starting) {
       starting(t);
     }
@@ -185,12 +187,21 @@ std::vector<GLPrintPipeline::OrientationTry> GLPrintPipeline::ChooseOrientationB
     t.seconds = verdict.seconds;
     t.pedestal =
         field(this->Orientation->GetOutputDataObject(0), geolattice::arrays::OrientPedestalHeight);
+    const bool printable = t.ok && t.colliding == 0 && this->RobotFollows(t);
     done.push_back(t);
-    if (t.ok && t.colliding == 0) {
+    if (printable) {
       break;
     }
+    after = t.ok && t.colliding == 0 ? "robot" : "collides";
   }
-  const OrientationTry* best = leastColliding(done);
+  // The least colliding; of those, one the robot follows; else the earliest.
+  const OrientationTry* best = nullptr;
+  for (const OrientationTry& t : done) {
+    if (t.ok && (!best || t.colliding < best->colliding ||
+                 (t.colliding == best->colliding && best->robot == 0 && t.robot == 1))) {
+      best = &t;
+    }
+  }
   this->Orientation->SetCandidateRank(best ? best->rank : 0);
   return done;
 }
@@ -383,6 +394,19 @@ std::vector<GLPrintPipeline::PedestalTry> GLPrintPipeline::RaisePedestalByToolpa
   return done;
 }
 
+bool GLPrintPipeline::RobotFollows(OrientationTry& t) {
+  if (!this->RobotGate) {
+    return true;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  const bool follows = this->ScriptWriter->SolveRobotPath() != 0;
+  t.robotSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  t.robot = follows ? 1 : 0;
+  t.unreachable = static_cast<long long>(this->ScriptWriter->GetUnreachableCount());
+  t.largeSteps = static_cast<long long>(this->ScriptWriter->GetLargeJointSteps());
+  return follows;
+}
+
 GLPrintPipeline::SetUpTries GLPrintPipeline::FindAPrintableSetUp(
     const std::function<void(SetUpStep)>& runStages, const SetUpListener& listener) {
   SetUpTries tries;
@@ -390,8 +414,18 @@ GLPrintPipeline::SetUpTries GLPrintPipeline::FindAPrintableSetUp(
     const ToolpathVerdict v = this->UpdateToolpathVerdict();  // the current outputs: cached
     return v.ok && v.colliding > 0;
   };
+  // A collision-free set-up the robot follows is printed as it is (the robot's solution kept
+  // for the program); one it does not follow is worth the other orientations.
+  bool robotRefuses = false;
   if (!collides()) {
-    return tries;
+    const ToolpathVerdict v = this->UpdateToolpathVerdict();
+    OrientationTry current;
+    robotRefuses = this->RobotGate && v.ok &&
+                   this->Orientation->GetOrient() == vtkGLAutoOrient::AUTO && !this->TetMeshInput &&
+                   !this->RobotFollows(current);
+    if (!robotRefuses) {
+      return tries;
+    }
   }
   tries.orientations =
       this->ChooseOrientationByToolpath(this->OrientationTries, listener.orientation);
@@ -399,7 +433,7 @@ GLPrintPipeline::SetUpTries GLPrintPipeline::FindAPrintableSetUp(
     runStages(SetUpStep::Orientation);
   }
   if (!collides()) {
-    return tries;
+    return tries;  // the pedestal and the order below are for collisions
   }
   // Then taller pedestals, where the plate is in the nozzle's way.
   tries.pedestals = this->RaisePedestalByToolpath(listener.pedestal);

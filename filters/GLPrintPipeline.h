@@ -128,14 +128,23 @@ public:
     long long stations = 0;   ///< stations checked
     double pedestal = 0;      ///< mm of pedestal under it
     double seconds = 0;
+    /// With RobotGate, for a collision-free toolpath: 1 the robot follows it, 0 it does not
+    /// (unreachable points or joint steps above the bound left), -1 not asked.
+    int robot = -1;
+    long long unreachable = 0, largeSteps = 0;  ///< when asked
+    double robotSeconds = 0;
+    /// Why the try before this one was not printed: "collides" or "robot" ("" for the first).
+    std::string after;
   };
 
   /// The orientation the real toolpath prints best: with Orient Auto, the current candidate (from
   /// the pipeline's outputs) and then the search's candidates are
   /// run through the toolpath verifier in rank order, up to `tries` of them (feasible ones scored
   /// at the print's resolution) besides the part as placed (on the plate, when it can stand
-  /// there), which is tried where it ranks or else last, until one is strictly collision-free; the one with the fewest
-  /// colliding stations is kept (Orientation's CandidateRank; the earlier rank on a tie). The
+  /// there), which is tried where it ranks or else last, until one is strictly collision-free
+  /// (and, with RobotGate, followed by the robot: RobotFollows); the one with the fewest
+  /// colliding stations is kept (Orientation's CandidateRank; of equals one the robot follows,
+  /// else the earlier rank). The
   /// search runs once: a rank change only re-places the part. Why: the search scores sub-graph
   /// orders, not toolpaths (no axis tilts, no collision inside a sub-graph), so two close
   /// candidates can print the other way round. `starting` (optional) is called before each try
@@ -211,7 +220,8 @@ public:
   };
 
   /// The set-up the real toolpath prints (Orient Auto; the one sequence of tries for the CLI and
-  /// GL Print Part): after the stages ran, while the toolpath collides,
+  /// GL Print Part): after the stages ran, while the toolpath collides (or, with RobotGate, is
+  /// collision-free but the robot cannot follow it: then the orientations only),
   /// ChooseOrientationByToolpath (OrientationTries), then RaisePedestalByToolpath, then
   /// ChooseOrderByToolpath. After a step that ran another set-up, `runStages(step)` is called to
   /// bring every stage (and whatever the caller keeps of them: files, a report) to the one it
@@ -224,6 +234,13 @@ public:
   /// Candidates ChooseOrientationByToolpath runs at most (CLI --orient-tries, GL Print Part
   /// OrientTries; 1 = the search's best only).
   int OrientationTries = 3;
+
+  /// Whether a set-up also needs the robot to follow its toolpath (the CLI sets it when it
+  /// writes the programs): FindAPrintableSetUp then asks ScriptWriter (SolveRobotPath, kept
+  /// for the program) about a collision-free toolpath, and ChooseOrientationByToolpath goes on
+  /// to the next candidate where the robot cannot follow it (a small mushroom as placed and
+  /// as the search's best: no configuration keeps the arm off the nozzle and off the part).
+  bool RobotGate = false;
 
   /// The filter of a stage (Mesh: the tetrahedralizer even when skipped).
   vtkAlgorithm* Filter(Stage stage);
@@ -267,6 +284,10 @@ private:
     double seconds = 0;
   };
   ToolpathVerdict UpdateToolpathVerdict();
+
+  /// With RobotGate, whether the robot follows the current toolpath (ScriptWriter's
+  /// SolveRobotPath; the solution is kept for the program). Fills t's robot fields.
+  bool RobotFollows(OrientationTry& t);
 
   /// With Orient Auto: the orientation search brought up to date and its candidates' point data
   /// (one point per candidate: rank, scores, source), or null (Keep, a tet mesh, a failure).

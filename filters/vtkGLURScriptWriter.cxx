@@ -20,6 +20,8 @@
 #include <vtkStreamingDemandDrivenPipeline.h>
 
 #include <algorithm>
+#include <array>
+#include <memory>
 #include <cctype>
 #include <cmath>
 #include <filesystem>
@@ -197,6 +199,106 @@ void vtkGLURScriptWriter::CheckParameters() {
   }
 }
 
+/// What the kept solution was solved for: the toolpath (its data object and modification time)
+/// and every parameter of the cell and the path solver.
+struct vtkGLURScriptWriter::Solution {
+  const void* input = nullptr;
+  vtkMTimeType inputTime = 0;
+  std::string robot;
+  std::array<double, 14> numbers{};  ///< tip, axis, mounting, max step, layout, reconfigure
+  gl::CellLayoutResult layout;
+  std::string unreachableCell;  ///< the error of an unreachable cell set-up, or ""
+
+  bool sameAs(const Solution& o) const {
+    return input == o.input && inputTime == o.inputTime && robot == o.robot && numbers == o.numbers;
+  }
+};
+
+gl::RobotCell vtkGLURScriptWriter::MakeCell() const {
+  gl::RobotCell cell;
+  cell.robot = gl::robotModelByName(this->Robot ? this->Robot : "");
+  // The panel's mm and degrees become URScript's m and rad here (and only here).
+  cell.nozzleTip = Eigen::Vector3d(this->NozzleTip[0], this->NozzleTip[1], this->NozzleTip[2]) /
+                   kMillimetresPerMetre;
+  const Eigen::Vector3d axis(this->NozzleAxis[0], this->NozzleAxis[1], this->NozzleAxis[2]);
+  cell.nozzleAxis = axis.normalized();
+  const double* p = this->PartOnFlangePosition;
+  const double* r = this->PartOnFlangeRotation;
+  const double toRad = M_PI / 180.0;
+  cell.partOnFlange =
+      gl::toIsometry({p[0] / kMillimetresPerMetre, p[1] / kMillimetresPerMetre,
+                      p[2] / kMillimetresPerMetre, r[0] * toRad, r[1] * toRad, r[2] * toRad});
+  cell.partScale = 0.001;  // toolpath mm -> m
+  return cell;
+}
+
+const gl::CellLayoutResult& vtkGLURScriptWriter::Solve(vtkPolyData* input,
+                                                       const gl::ToolpathArrays& path) {
+  auto key = std::make_unique<Solution>();
+  key->input = input;
+  key->inputTime = input->GetMTime();
+  key->robot = this->Robot ? this->Robot : "";
+  const double* p = this->PartOnFlangePosition;
+  const double* r = this->PartOnFlangeRotation;
+  key->numbers = {
+      this->NozzleTip[0],
+      this->NozzleTip[1],
+      this->NozzleTip[2],
+      this->NozzleAxis[0],
+      this->NozzleAxis[1],
+      this->NozzleAxis[2],
+      p[0],
+      p[1],
+      p[2],
+      r[0],
+      r[1],
+      r[2],
+      this->MaxJointStep,
+      static_cast<double>(2 * (this->SearchCellLayout != 0) + (this->Reconfigure != 0))};
+  if (!this->Solved || !this->Solved->sameAs(*key)) {
+    this->Solved.reset();
+    // Joints along the path (one core call: progress before and after it).
+    gl::RobotPathOptions pathOptions;
+    pathOptions.maxJointStepDeg = this->MaxJointStep;
+    pathOptions.reconfigure = this->Reconfigure != 0;
+    // The cell as given, else the best mounting of the part on the flange that the robot
+    // can follow (core/robot/CellLayout.h).
+    gl::CellLayoutOptions layoutOptions;
+    layoutOptions.search = this->SearchCellLayout != 0;
+    try {
+      key->layout = gl::solveWithCellLayout(this->MakeCell(), path.points, path.normals,
+                                            pathOptions, layoutOptions, path.kind);
+    } catch (const gl::GeoLatticeError& e) {
+      key->unreachableCell = e.what();  // no layout reaches the path continuously
+    }
+    this->Solved = std::move(key);
+  }
+  if (!this->Solved->unreachableCell.empty()) {
+    // Every point counts as unreachable.
+    this->Unreachable.resize(path.points.size());
+    for (size_t i = 0; i < path.points.size(); ++i) {
+      this->Unreachable[i] = static_cast<vtkIdType>(i);
+    }
+    throw gl::GeoLatticeError(std::string("URScript writer: ") + this->Solved->unreachableCell +
+                              ": nothing written; move the nozzle tip or the part on the flange");
+  }
+  return this->Solved->layout;
+}
+
+int vtkGLURScriptWriter::SolveRobotPath() {
+  this->SolveOnly = true;
+  const int written = this->Write();
+  this->SolveOnly = false;
+  if (!written) {
+    return 0;
+  }
+  return this->LargeJointSteps == 0 &&
+                 (this->Unreachable.empty() ||
+                  (this->AllowUnreachable && this->GetUnreachableCount() < this->NumberOfWaypoints))
+             ? 1
+             : 0;
+}
+
 void vtkGLURScriptWriter::WriteData() {
   this->ResetResults();
   // In an MPI run one process writes: the one with the toolpath (vtkGLParallel.h).
@@ -208,58 +310,43 @@ void vtkGLURScriptWriter::WriteData() {
       this,
       [&] {
         this->CheckParameters();
-        this->CheckFileName("URScript writer");
-        const gl::ToolpathArrays path = gl::toToolpathArrays(inputs.Get<vtkPolyData>(0));
-        this->CheckCollisionVerdict(inputs.Get<vtkPolyData>(0), "URScript writer");
+        vtkPolyData* input = inputs.Get<vtkPolyData>(0);
+        const gl::ToolpathArrays path = gl::toToolpathArrays(input);
         this->NumberOfWaypoints = static_cast<vtkIdType>(path.points.size());
+        if (!this->SolveOnly) {
+          this->CheckFileName("URScript writer");
+          this->CheckCollisionVerdict(input, "URScript writer");
+        }
         gl::checkAbort(this, 0.1);
-
-        // The cell.
-        gl::RobotCell cell;
-        cell.robot = gl::robotModelByName(this->Robot ? this->Robot : "");
-        // The panel's mm and degrees become URScript's m and rad here (and only here).
-        cell.nozzleTip =
-            Eigen::Vector3d(this->NozzleTip[0], this->NozzleTip[1], this->NozzleTip[2]) /
-            kMillimetresPerMetre;
-        const Eigen::Vector3d axis(this->NozzleAxis[0], this->NozzleAxis[1], this->NozzleAxis[2]);
-        cell.nozzleAxis = axis.normalized();
-        const double* p = this->PartOnFlangePosition;
-        const double* r = this->PartOnFlangeRotation;
-        const double toRad = M_PI / 180.0;
-        cell.partOnFlange =
-            gl::toIsometry({p[0] / kMillimetresPerMetre, p[1] / kMillimetresPerMetre,
-                            p[2] / kMillimetresPerMetre, r[0] * toRad, r[1] * toRad, r[2] * toRad});
-        cell.partScale = 0.001;  // toolpath mm -> m
+        const gl::CellLayoutResult& layout = [&]() -> const gl::CellLayoutResult& {
+          try {
+            return this->Solve(input, path);
+          } catch (const gl::GeoLatticeError&) {
+            if (this->SolveOnly) {
+              static const gl::CellLayoutResult none;
+              return none;  // the robot cannot follow it: said by the results, no error
+            }
+            throw;
+          }
+        }();
+        if (this->SolveOnly && !this->Solved->unreachableCell.empty()) {
+          return;
+        }
+        const gl::RobotCell& cell = layout.cell;
 
         gl::URScriptOptions options;
         options.maxFileBytes = static_cast<size_t>(this->MaxFileBytes);
         options.speedFactor = this->SpeedFactor;
         options.maxFilamentRate = this->MaxFilamentRate;
         options.maxBlend = this->MaxBlend / kMillimetresPerMetre;
-        options.programName = ProgramName(this->FileName);
-
-        // Joints along the path (one core call: progress before and after it).
-        gl::RobotPathOptions pathOptions;
-        pathOptions.maxJointStepDeg = this->MaxJointStep;
-        pathOptions.reconfigure = this->Reconfigure != 0;
-        // The cell as given, else the best mounting of the part on the flange that the robot
-        // can follow (core/robot/CellLayout.h).
-        gl::CellLayoutOptions layoutOptions;
-        layoutOptions.search = this->SearchCellLayout != 0;
-        gl::CellLayoutResult layout;
-        try {
-          layout = gl::solveWithCellLayout(cell, path.points, path.normals, pathOptions,
-                                           layoutOptions, path.kind);
-        } catch (const gl::GeoLatticeError& e) {
-          // No layout reaches the path continuously: every point counts as unreachable.
-          this->Unreachable.resize(path.points.size());
-          for (size_t i = 0; i < path.points.size(); ++i) {
-            this->Unreachable[i] = static_cast<vtkIdType>(i);
-          }
-          this->NumberOfWaypoints = static_cast<vtkIdType>(path.points.size());
-          throw gl::GeoLatticeError(std::string("URScript writer: ") + e.what() +
-                                    ": nothing written; move the nozzle tip or the part on the "
-                                    "flange");
+        options.programName = ProgramName(this->FileName ? this->FileName : "");
+        if (layout.changed) {
+          std::ostringstream line;
+          line << "cell layout: the platform turned by " << layout.rotationDeg
+               << " deg about the flange z axis and " << 1000 * layout.offsetAdded
+               << " mm further from the flange than asked (the path solver's choice: the cell as "
+                  "given flips a joint or does not reach); mount it as set_tcp says";
+          options.headerComments.push_back(line.str());
         }
         const gl::RobotPath& robotPath = layout.path;
         this->LayoutChanged = layout.changed;
@@ -270,14 +357,6 @@ void vtkGLURScriptWriter::WriteData() {
         for (int k = 0; k < 3; ++k) {
           this->UsedPartOnFlange[k] = kMillimetresPerMetre * mounted[k];
           this->UsedPartOnFlange[k + 3] = mounted[k + 3] * 180.0 / M_PI;
-        }
-        if (layout.changed) {
-          std::ostringstream line;
-          line << "cell layout: the platform turned by " << layout.rotationDeg
-               << " deg about the flange z axis and " << 1000 * layout.offsetAdded
-               << " mm further from the flange than asked (the path solver's choice: the cell as "
-                  "given flips a joint or does not reach); mount it as set_tcp says";
-          options.headerComments.push_back(line.str());
         }
         for (const gl::Reconfiguration& r : robotPath.reconfigurations) {
           this->Reconfigurations.push_back({r.point, r.atSeam, r.fromBranch, r.toBranch,
@@ -317,6 +396,9 @@ void vtkGLURScriptWriter::WriteData() {
         for (const gl::WaypointsBetween& v : robotPath.via) {
           this->ViaWaypoints += static_cast<vtkIdType>(v.via.joints.size());
         }
+        if (this->SolveOnly) {
+          return;  // the results say whether the robot can follow it
+        }
         if (!this->Unreachable.empty()) {
           const std::string text =
               describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name);
@@ -336,8 +418,8 @@ void vtkGLURScriptWriter::WriteData() {
                << robotPath.maxJointStepAt << " (" << robotPath.largeSteps.size()
                << " steps above MaxJointStep " << this->MaxJointStep
                << " degrees: a wrist flip or a joint limit"
-               << (layoutOptions.search ? ", also in the other mountings of the part tried"
-                                        : " on this cell layout")
+               << (this->SearchCellLayout ? ", also in the other mountings of the part tried"
+                                          : " on this cell layout")
                << "); nothing written: move the nozzle tip or the part on the flange";
           // A step of nearly a whole turn is a joint wound to its +-360 degree limit, not a
           // flip: the path circles the part the same way round layer after layer (a generated
@@ -353,9 +435,9 @@ void vtkGLURScriptWriter::WriteData() {
         // The program files, all-or-nothing.
         std::vector<std::string> names;
         gl::AtomicFileSet files;
-        const gl::ProgramInput input{&path.points, &path.extrusion, &path.feedRate, &path.kind};
+        const gl::ProgramInput program{&path.points, &path.extrusion, &path.feedRate, &path.kind};
         const gl::ProgramStats stats = gl::writeURScript(
-            layout.cell, robotPath, input, options, [&](size_t k) -> std::ostream& {
+            layout.cell, robotPath, program, options, [&](size_t k) -> std::ostream& {
               names.push_back(ProgramFileName(this->FileName, static_cast<int>(k)));
               return files.open(names.back());
             });

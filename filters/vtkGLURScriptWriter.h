@@ -70,10 +70,16 @@
 #include "GeoLatticeFiltersModule.h"
 #include "vtkGLToolpathWriter.h"
 
+#include <memory>  // for the kept solution
 #include <string>  // for the file names
 #include <vector>  // for the results
 
 class vtkPolyData;
+namespace geolattice {
+struct CellLayoutResult;
+struct RobotCell;
+struct ToolpathArrays;
+}  // namespace geolattice
 
 class GEOLATTICEFILTERS_EXPORT vtkGLURScriptWriter : public vtkGLToolpathWriter {
 public:
@@ -165,6 +171,18 @@ public:
   vtkSetMacro(Reconfigure, vtkTypeBool);
   vtkGetMacro(Reconfigure, vtkTypeBool);
   vtkBooleanMacro(Reconfigure, vtkTypeBool);
+  ///@}
+
+  ///@{
+  /// Solves the joint path of the current input in this cell as Write() does (the input brought
+  /// up to date; the cell layout search, the results below), without writing anything and
+  /// without a FileName, and keeps the solution: the next Write() of the same toolpath with the
+  /// same cell and path parameters writes it without solving again. Returns 1 when the robot
+  /// can follow the path (every point reached, or AllowUnreachable with some reached, and no
+  /// joint step above MaxJointStep), 0 when it cannot (nothing reported) or on an error (bad
+  /// input or parameters: reported as by Write()). Used by GLPrintPipeline to try other
+  /// orientations of a part before its program is refused.
+  int SolveRobotPath();
   ///@}
 
   /// File name of program file k: FileName for k = 0, else STEM_k.EXT next to it.
@@ -266,6 +284,16 @@ private:
   void operator=(const vtkGLURScriptWriter&) = delete;
 
   void ResetResults();
+  /// The cell of the parameters (m and rad).
+  geolattice::RobotCell MakeCell() const;
+  /// The solution of `path` (input `input`) with the current parameters: the one kept if it
+  /// is still valid, else solved now and kept; sets the results. Throws for an unreachable
+  /// cell set-up (after marking every point unreachable).
+  const geolattice::CellLayoutResult& Solve(vtkPolyData* input,
+                                            const geolattice::ToolpathArrays& path);
+  struct Solution;
+  std::unique_ptr<Solution> Solved;
+  bool SolveOnly = false;  ///< inside SolveRobotPath(): WriteData stops after the solve
 
   struct ReconfigurationResult {
     vtkIdType Point = -1;

@@ -3,7 +3,8 @@ mesh, as placed and in the orientation search's coarse evaluation. These parts f
 TetGen's output or run can fail (a volume check too strict for finely curved facets, flat slivers,
 a refinement that does not end on a simplified surface) that the bundled models never showed; the
 coil, that the print order must be chosen by the real toolpath; the thin plate, that the placement
-must be tried where the orientation search's coarse mesh misjudges it."""
+must be tried where the orientation search's coarse mesh misjudges it; the mushroom, that the
+orientation must be one the robot can follow."""
 import json
 import os
 import shutil
@@ -82,6 +83,40 @@ class ShapesMeshTest(unittest.TestCase):
         self.assertEqual(sequence["strategy"], tries[-1]["strategy"])
         self.assertEqual(sequence["requested_strategy"], "best")
         self.assertEqual(toolpath["violating_stations"], 0)
+
+    def test_the_robot_program_chooses_the_orientation(self):
+        # The mushroom (a cap of radius 15 mm on a 5 mm stem) as placed prints collision-free,
+        # but the UR5 in the default cell cannot follow it with its arm 60 mm off the nozzle and
+        # 60 mm off the part it holds (the forearm passes between the two): the reachability
+        # gate stops it and points to --orient auto ...
+        out = os.path.join(self.tmp, "mushroom-keep")
+        result = subprocess.run([CLI, "run", os.path.join(self.tmp, "mushroom.obj"), "-o", out, "-q"],
+                                capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 5, result.stderr)
+        self.assertIn("60 mm off the part it holds", result.stderr)
+        self.assertIn("or try --orient auto", result.stderr)
+        # ... whose best candidate is the same side up: the robot cannot follow that either, so
+        # the next candidates are run through the toolpath and the robot's path solver, and the
+        # first that both pass is printed.
+        out = os.path.join(self.tmp, "mushroom-auto")
+        result = subprocess.run([CLI, "run", os.path.join(self.tmp, "mushroom.obj"), "-o", out, "-q",
+                                 "--orient", "auto"], capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(out, "report.json")) as f:
+            report = json.load(f)
+        tries = report["orient"]["tries"]
+        self.assertGreaterEqual(len(tries), 2, tries)
+        self.assertEqual(tries[0]["colliding_stations"], 0)
+        self.assertFalse(tries[0]["robot_follows"], tries)
+        self.assertGreater(tries[0]["unreachable"], 0)
+        self.assertTrue(tries[-1]["robot_follows"], tries)
+        self.assertEqual(report["orient"]["chosen_rank"], tries[-1]["rank"])
+        self.assertEqual(report["toolpath"]["violating_stations"], 0)
+        program = report["program"]
+        self.assertTrue(program["written"])
+        self.assertEqual(program["unreachable"], 0)
+        self.assertGreaterEqual(program["min_link_part_distance_mm"], 60.0 - 1e-6)
+        self.assertGreaterEqual(program["min_link_nozzle_distance_mm"], 60.0 - 1e-6)
 
     def test_a_flat_part_prints_on_its_own_base(self):
         # The wrench lying flat: the search's best is that side on a 10 mm pedestal (its

@@ -396,6 +396,45 @@ TEST(vtkGLURScriptWriter, UnreachablePointsAreReportedNotSkipped) {
   }
 }
 
+TEST(vtkGLURScriptWriter, SolveRobotPathWritesNothingAndKeepsTheSolution) {
+  // The orientation tries ask the robot before the program is written (GLPrintPipeline::
+  // RobotGate): a solve without a file name writes nothing, and the program of the same
+  // toolpath and cell is then written from that solution (the solver's own time is the kept
+  // one's: a second solve would take another).
+  const fs::path dir = glFreshDirectory("urscript-solve");
+  vtkNew<vtkGLURScriptWriter> w;
+  vtkNew<GLTestErrorObserver> errors;
+  errors->Observe(w);
+  auto path = makeTestToolpath();
+  w->SetInputData(path);
+  ASSERT_EQ(w->SolveRobotPath(), 1) << errors->Errors();
+  EXPECT_FALSE(errors->HasError()) << errors->Errors();
+  EXPECT_EQ(w->GetNumberOfFilesWritten(), 0);
+  EXPECT_EQ(w->GetUnreachableCount(), 0);
+  EXPECT_GT(w->GetSolveSeconds(), 0.0);
+  const double solved = w->GetSolveSeconds();
+  const int branch = w->GetIKBranch();
+  EXPECT_TRUE(glListDirectory(dir).empty());
+  w->SetFileName((dir / "kept.script").string().c_str());
+  ASSERT_EQ(w->Write(), 1) << errors->Errors();
+  EXPECT_EQ(w->GetSolveSeconds(), solved);
+  EXPECT_EQ(w->GetIKBranch(), branch);
+  EXPECT_EQ(glListDirectory(dir), std::vector<std::string>{"kept.script"});
+  // Another cell: solved again.
+  w->SetNozzleTip(0, -450, 350);
+  ASSERT_EQ(w->Write(), 1) << errors->Errors();
+  EXPECT_NE(w->GetSolveSeconds(), solved);
+  // A cell that reaches none of it: 0, nothing reported (the program's Write() reports it).
+  w->SetNozzleTip(3000, 0, 350);
+  EXPECT_EQ(w->SolveRobotPath(), 0);
+  EXPECT_FALSE(errors->HasError()) << errors->Errors();
+  EXPECT_EQ(w->GetUnreachableCount(), path->GetNumberOfPoints());
+  EXPECT_EQ(w->Write(), 0);
+  EXPECT_NE(errors->Errors().find("unreachable cell set-up"), std::string::npos)
+      << errors->Errors();
+  fs::remove_all(dir);
+}
+
 TEST(vtkGLURScriptWriter, ProgressAndAbortWriteNothing) {
   const fs::path dir = glFreshDirectory("urscript-abort");
   vtkNew<vtkGLURScriptWriter> w;
