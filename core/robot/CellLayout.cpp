@@ -75,6 +75,7 @@ CellLayoutResult solveWithCellLayout(const RobotCell& cell,
   ranking.psiSamples = std::max(12, o.psiSamples / 2);
   ranking.refinements = 1;
   ranking.denserPlanFactor = 1;
+  ranking.explainUnreachable = false;
   ranking.threads = 1;  // the layouts are ranked in parallel
   parallelFor(candidates.size(), 0, [&](size_t i, int) {
     Candidate& c = candidates[i];
@@ -95,7 +96,9 @@ CellLayoutResult solveWithCellLayout(const RobotCell& cell,
     ++result.fullSolves;
     RobotPath path;
     try {
-      path = solveRobotPath(c.cell, points, normals, o, kind);
+      RobotPathOptions other = o;  // its error is not shown
+      other.explainUnreachable = false;
+      path = solveRobotPath(c.cell, points, normals, other, kind);
     } catch (const GeoLatticeError&) {
       continue;
     }

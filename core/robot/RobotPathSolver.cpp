@@ -1098,6 +1098,51 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
 
 }  // namespace
 
+namespace {
+
+/// Which of the arm's clearances keeps a coarse path that no plan reaches out of reach (module
+/// comment, "The nozzle", "The part"): the coarse plan of steps 1–3 (one configuration for
+/// the whole path; step 4 may still need a change where this says one clearance alone is
+/// enough) made again with the arm allowed near the part it holds, near the nozzle, or both.
+/// "; ..." naming it, or "" (the reach, the joint limits or the floor stop it, or
+/// explainUnreachable is off). Only after everything else failed: two or three coarse plans.
+std::string bindingClearance(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+                             const std::vector<Eigen::Vector3d>& normals,
+                             const std::vector<size_t>& coarse, const HeldPart& part,
+                             const RobotPathOptions& o) {
+  if (!o.explainUnreachable || !(o.linkPartClearance > 0 || o.linkNozzleClearance > 0))
+    return "";
+  auto reachesWith = [&](double nozzle, double held) {
+    RobotPathOptions r = o;
+    r.linkNozzleClearance = nozzle;
+    r.linkPartClearance = held;
+    StateCache cache(cell, points, normals, r, r.threads, part);
+    return !planCoarse(cell, points, normals, coarse, r, cache).empty();
+  };
+  const auto mm = [](double m) {
+    return std::to_string(static_cast<int>(std::lround(1000 * m)));
+  };
+  const bool withoutPart = o.linkPartClearance > 0 && reachesWith(o.linkNozzleClearance, 0);
+  const bool withoutNozzle = o.linkNozzleClearance > 0 && reachesWith(0, o.linkPartClearance);
+  if (withoutPart && withoutNozzle)
+    return "; what stops it is keeping the arm off the nozzle and off the part at once (one "
+           "configuration throughout reaches the path with either alone)";
+  if (withoutPart)
+    return "; what stops it is the part it holds: one configuration throughout reaches the path "
+           "with the arm nearer than " +
+           mm(o.linkPartClearance) + " mm to the part (it would pass against it)";
+  if (withoutNozzle)
+    return "; what stops it is the nozzle: one configuration throughout reaches the path with "
+           "the arm nearer than " +
+           mm(o.linkNozzleClearance) + " mm to the nozzle";
+  if (reachesWith(0, 0))
+    return "; one configuration throughout reaches the path only with the arm near both the "
+           "nozzle and the part";
+  return "";
+}
+
+}  // namespace
+
 RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                          const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o,
                          const std::vector<int>& kind) {
@@ -1165,7 +1210,7 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
   }
   if (!noPlan.empty() &&
       (!step4 || !solveReconfigured(cell, points, normals, kind, coarse, part, o, path)))
-    throw GeoLatticeError(noPlan);
+    throw GeoLatticeError(noPlan + bindingClearance(cell, points, normals, coarse, part, o));
   if (noPlan.empty() && step4 && !path.works()) {
     RobotPath reconfigured;
     if (solveReconfigured(cell, points, normals, kind, coarse, part, o, reconfigured))

@@ -113,6 +113,10 @@ struct RobotPathOptions {
   /// Steps 1–3 that leave unreachable points or large steps (or find no plan) are made again on
   /// this many times the coarse samples before step 4 (1: not).
   int denserPlanFactor = 4;
+  /// When no plan reaches the path, name the clearance that stops it (the coarse plan made
+  /// again without the part's, the nozzle's, or both) in the error; off for solves whose error
+  /// is not shown (CellLayout's ranking and other mountings).
+  bool explainUnreachable = true;
   bool reconfigure = true;  ///< step 4: allow reconfiguration moves at air moves (needs kinds)
   double reconfigurationCost = 50;  ///< rad-equivalents a change of configuration costs the plan
   double nozzleLength = 0.25;       ///< m: nozzle and holder length kept clear during a joint move

@@ -94,6 +94,8 @@ class ShapesMeshTest(unittest.TestCase):
                                 capture_output=True, text=True, timeout=600)
         self.assertEqual(result.returncode, 5, result.stderr)
         self.assertIn("60 mm off the part it holds", result.stderr)
+        self.assertIn("what stops it is keeping the arm off the nozzle and off the part at once",
+                      result.stderr)
         self.assertIn("or try --orient auto", result.stderr)
         # ... whose best candidate is the same side up: the robot cannot follow that either, so
         # the next candidates are run through the toolpath and the robot's path solver, and the

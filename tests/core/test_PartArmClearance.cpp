@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <string>
 
 using namespace geolattice;
 
@@ -136,14 +137,11 @@ TEST(PartArmClearance, TheSweepFindsTheLeastOfEveryState) {
   EXPECT_DOUBLE_EQ(sweep.least(), least);
 }
 
-TEST(RobotPathSolver, TheArmIsKeptOffThePartItHolds) {
-  // A cylinder wall (radius 40 mm, 80 mm tall, ten laps) printed with the nozzle axis leaning
-  // 30 degrees outwards: without the constraint the chosen plan drives the forearm through
-  // the part it holds; with it (the default) the solver keeps the upper arm, forearm and
-  // wrists 60 mm off, checked by sampling each link every mm against every point printed so far
-  // and the plate.
-  RobotCell cell;
-  std::vector<Eigen::Vector3d> points, normals;
+namespace {
+
+/// A cylinder wall (radius 40 mm, 80 mm tall, ten laps) printed with the nozzle axis leaning
+/// 30 degrees outwards.
+void leaningCylinder(std::vector<Eigen::Vector3d>& points, std::vector<Eigen::Vector3d>& normals) {
   for (int lap = 0; lap < 10; ++lap) {
     for (int k = 0; k < 360; ++k) {
       const double a = k * M_PI / 180, tilt = 30 * M_PI / 180;
@@ -152,6 +150,45 @@ TEST(RobotPathSolver, TheArmIsKeptOffThePartItHolds) {
                            std::cos(tilt));
     }
   }
+}
+
+std::string errorOf(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
+                    const std::vector<Eigen::Vector3d>& normals, const RobotPathOptions& o) {
+  try {
+    solveRobotPath(cell, points, normals, o);
+  } catch (const std::exception& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(RobotPathSolver, AnUnreachableCellNamesTheClearanceThatStopsIt) {
+  RobotCell cell;
+  std::vector<Eigen::Vector3d> points, normals;
+  leaningCylinder(points, normals);
+  RobotPathOptions o;
+  o.linkPartClearance = 0.25;  // no configuration keeps the arm 250 mm off the part
+  std::string e = errorOf(cell, points, normals, o);
+  EXPECT_NE(e.find("unreachable cell set-up"), std::string::npos) << e;
+  EXPECT_NE(e.find("250 mm off the part it holds"), std::string::npos) << e;
+  EXPECT_NE(e.find("what stops it is the part it holds"), std::string::npos) << e;
+  o.explainUnreachable = false;  // e.g. the layout search's ranking
+  e = errorOf(cell, points, normals, o);
+  EXPECT_NE(e.find("unreachable cell set-up"), std::string::npos) << e;
+  EXPECT_EQ(e.find("what stops it"), std::string::npos) << e;
+}
+
+TEST(RobotPathSolver, TheArmIsKeptOffThePartItHolds) {
+  // A cylinder wall (radius 40 mm, 80 mm tall, ten laps) printed with the nozzle axis leaning
+  // 30 degrees outwards: without the constraint the chosen plan drives the forearm through
+  // the part it holds; with it (the default) the solver keeps the upper arm, forearm and
+  // wrists 60 mm off, checked by sampling each link every mm against every point printed so far
+  // and the plate.
+  RobotCell cell;
+  std::vector<Eigen::Vector3d> points, normals;
+  leaningCylinder(points, normals);
   RobotPathOptions o;
   EXPECT_EQ(o.linkPartClearance, kLinkPartSafeDistance);
   o.linkPartClearance = 0;  // measured only
