@@ -236,8 +236,8 @@ public:
   double GetMinLinkNozzleDistance() const { return this->MinLinkNozzleDistance; }
   /// Least distance of the upper arm, the forearm, wrist 1 and wrist 2 (the lines between their
   /// joints) from the part the robot holds, as printed so far, and its plate, over the written
-  /// path (mm, measured up to 1000; kept at 60 mm or more, core's kLinkPartSafeDistance:
-  /// core/robot/PartArmClearance.h).
+  /// path (mm, measured up to 1000, to 1 mm; kept at 60 mm or more, core's
+  /// kLinkPartSafeDistance: core/robot/PartArmClearance.h).
   double GetMinLinkPartDistance() const { return this->MinLinkPartDistance; }
   double GetDuration() const { return this->Duration; }
   vtkIdType GetMaxLineLength() const { return this->MaxLineLength; }

@@ -18,6 +18,9 @@ namespace {
 constexpr double kVoxel = 2.0;
 const double kVoxelDiagonal = kVoxel * std::sqrt(3.0);
 
+/// Part units: PartArmClearance::Sweep's least is at most this much above the least distance.
+constexpr double kSweepTolerance = 1.0;
+
 struct VoxelHash {
   size_t operator()(const std::array<long long, 3>& k) const {
     return static_cast<size_t>(k[0] * 73856093LL ^ k[1] * 19349663LL ^ k[2] * 83492791LL);
@@ -133,9 +136,14 @@ void PartArmClearance::Sweep::add(const Isometry& flange,
       }
     }
   }
-  // Searched where the bound may beat the least so far; else the bound is the state's.
-  raw_ = lower < bound ? part_.nearestSample(ends, i, bound, 0.0) : lower;
-  least_ = std::min(least_, std::max(0.0, raw_ - kVoxelDiagonal) * part_.scale_);
+  // Searched where the bound may beat the least so far by more than kSweepTolerance; else the
+  // bound is the state's.
+  if (lower < bound - kSweepTolerance) {
+    raw_ = part_.nearestSample(ends, i, bound, 0.0);
+    least_ = std::min(least_, std::max(0.0, raw_ - kVoxelDiagonal) * part_.scale_);
+  } else {
+    raw_ = lower;  // not below the least by more than the tolerance: the least stands
+  }
   ends_ = ends;
   index_ = i;
   have_ = true;

@@ -196,7 +196,8 @@ struct RobotPath {
   /// (tip to nozzleLength along it) over the reachable points and the waypoints between them
   double minLinkNozzleDistance = 0;
   /// m: the least distance of the upper arm, the forearm, wrist 1 and wrist 2 from the part
-  /// printed so far and its plate, the same (measured up to 1 m)
+  /// printed so far and its plate, the same (measured up to 1 m, to 1 mm: at most 1 mm above
+  /// the least; PartArmClearance::Sweep)
   double minLinkPartDistance = 0;
   double seconds = 0;
 

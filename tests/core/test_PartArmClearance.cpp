@@ -112,7 +112,7 @@ TEST(PartArmClearance, DistancesOfLinesFromMaterialAndPlate) {
 
 TEST(PartArmClearance, TheSweepFindsTheLeastOfEveryState) {
   // A ring of material (radius 30 mm, 720 points) and random arm states along a path: the
-  // sweep's least equals the least distance() over the states.
+  // sweep's least is the least distance() over the states, to 1 mm (never below it).
   RobotCell cell;
   std::vector<Eigen::Vector3d> points;
   for (int k = 0; k < 720; ++k) {
@@ -120,7 +120,8 @@ TEST(PartArmClearance, TheSweepFindsTheLeastOfEveryState) {
   }
   const PartArmClearance clearance(cell, points);
   std::mt19937 random(7);
-  std::uniform_real_distribution<double> turn(-0.02, 0.02);
+  // Small turns (the links move less than a millimetre a state): most states are not searched.
+  std::uniform_real_distribution<double> turn(-0.002, 0.002);
   JointVector q{0.3, -1.2, 1.6, -1.9, -1.5, 0.2};
   PartArmClearance::Sweep sweep(clearance, 1.0);
   double least = 1.0;
@@ -134,7 +135,8 @@ TEST(PartArmClearance, TheSweepFindsTheLeastOfEveryState) {
     least = std::min(least, clearance.distance(flange, o, i, 1.0));
   }
   EXPECT_LT(least, 1.0);
-  EXPECT_DOUBLE_EQ(sweep.least(), least);
+  EXPECT_GE(sweep.least(), least);
+  EXPECT_LE(sweep.least(), least + 0.001 + 1e-12);
 }
 
 namespace {
