@@ -12,8 +12,6 @@ namespace geolattice {
 
 namespace {
 
-/// The TimedPointTree bound of a query: the spheres nearer to the link than the best distance
-/// found so far (part units).
 /// Voxel edge and diagonal (part units) of the material's samples.
 constexpr double kVoxel = 2.0;
 const double kVoxelDiagonal = kVoxel * std::sqrt(3.0);
@@ -27,6 +25,8 @@ struct VoxelHash {
   }
 };
 
+/// The TimedPointTree bound of a query: the spheres nearer to the link than the best distance
+/// found so far (part units).
 struct NearLink {
   const Eigen::Vector3d& a;
   const Eigen::Vector3d& b;

@@ -8,15 +8,17 @@
 /// it held (0.1 mm from a printed point; within 45 mm, a UR5 link's radius, at 1,507 of 35,670
 /// sampled points), the three-branch tree's within 27 mm. Nothing checked it.
 ///
-/// The part is modelled by its material, the toolpath's print points (not its air moves), each
-/// there from its own index on, and by the plate under it (the footprint of the whole toolpath
-/// at its lowest z, as in PartFloor.h, sampled every kPlateSpacing mm), there from the start; in
-/// a TimedPointTree (collision/TimedPointTree.h: a kd-tree of spheres that knows the earliest
-/// index below each node), so a query visits only the material near a link. The links are the
-/// lines between the joint origins (URKinematics.h: jointOrigins) 0–4; wrist 3 (joint origin 4
-/// to the flange) carries the plate and is not checked. Material between two toolpath points is
-/// within half a line spacing of one of them, the plate within kPlateSpacing / √2 of a sample:
-/// a clearance of tens of millimetres covers both.
+/// The part is modelled by its material, the toolpath's print points (not its air moves) in
+/// 2 mm voxels (one sample per occupied voxel: its first point, there from that point's index
+/// on; a distance is taken less the voxel's diagonal, so it is a lower bound), and by the plate
+/// under it (the footprint of the whole toolpath at its lowest z, as in PartFloor.h, sampled
+/// every kPlateSpacing mm), there from the start; in a TimedPointTree (collision/
+/// TimedPointTree.h: a kd-tree of spheres that knows the earliest index below each node), so a
+/// query visits only the material near a link. The links are the lines between the joint
+/// origins (URKinematics.h: jointOrigins) 0–4; wrist 3 (joint origin 4 to the flange) carries
+/// the plate and is not checked. Material between two toolpath points is within half a line
+/// spacing of one of them, the plate within kPlateSpacing / √2 of a sample: a clearance of tens
+/// of millimetres covers both.
 #include "collision/TimedPointTree.h"
 #include "robot/RobotCell.h"
 
