@@ -414,16 +414,14 @@ GLPrintPipeline::SetUpTries GLPrintPipeline::FindAPrintableSetUp(
     const ToolpathVerdict v = this->UpdateToolpathVerdict();  // the current outputs: cached
     return v.ok && v.colliding > 0;
   };
-  // A collision-free set-up the robot follows is printed as it is (the robot's solution kept
-  // for the program); one it does not follow is worth the other orientations.
-  bool robotRefuses = false;
   if (!collides()) {
-    const ToolpathVerdict v = this->UpdateToolpathVerdict();
+    // A collision-free set-up is printed as it is unless other orientations may be tried and
+    // the robot cannot follow it (its solution is kept for the program).
+    const bool mayTryOthers = this->RobotGate &&
+                              this->Orientation->GetOrient() == vtkGLAutoOrient::AUTO &&
+                              !this->TetMeshInput && this->UpdateToolpathVerdict().ok;
     OrientationTry current;
-    robotRefuses = this->RobotGate && v.ok &&
-                   this->Orientation->GetOrient() == vtkGLAutoOrient::AUTO && !this->TetMeshInput &&
-                   !this->RobotFollows(current);
-    if (!robotRefuses) {
+    if (!mayTryOthers || this->RobotFollows(current)) {
       return tries;
     }
   }
