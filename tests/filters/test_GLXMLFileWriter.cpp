@@ -158,7 +158,11 @@ TEST(GLXMLFileWriterDeathTest, RunningOutOfSpaceIsAFailureNotACrash) {
     limit.rlim_cur = limit.rlim_max = 65536;  // bytes: far less than the data
     setrlimit(RLIMIT_FSIZE, &limit);
     std::signal(SIGXFSZ, SIG_IGN);  // the write fails instead of ending the process
-    std::exit(writeXmlDataFile(data, file, buffered) ? 1 : 0);
+    const bool written = writeXmlDataFile(data, file, buffered);
+    // The threadsafe death-test child re-runs this test under its own pid, so its file is not
+    // the parent's: it removes what it wrote.
+    std::filesystem::remove(file);
+    std::exit(written ? 1 : 0);
   };
   vtkNew<vtkPolyData> poly = polyline(200001);
   vtkNew<vtkUnstructuredGrid> grid;  // 20,000 tets over 80,000 points
