@@ -386,7 +386,7 @@ void reportScript(GLPrintPipeline& p, Json& s) {
   s["min_singularity"] = {{"shoulder_m", w->GetMinShoulderSingularity()},
                           {"elbow", w->GetMinElbowSingularity()},
                           {"wrist", w->GetMinWristSingularity()}};
-  s["lowest_joint_height_mm"] = w->GetLowestJointHeight();
+  s["lowest_arm_height_mm"] = w->GetLowestArmHeight();
   s["lowest_part_height_mm"] = w->GetLowestPartHeight();
   s["min_link_nozzle_distance_mm"] = w->GetMinLinkNozzleDistance();
   s["min_link_part_distance_mm"] = w->GetMinLinkPartDistance();

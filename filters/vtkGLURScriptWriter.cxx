@@ -44,9 +44,8 @@ std::string describeUnreachable(const std::vector<vtkIdType>& unreachable, size_
                                 const std::string& robot) {
   std::ostringstream s;
   s << unreachable.size() << " of " << points << " toolpath points are unreachable for the "
-    << robot << " in this cell (out of reach, past a joint limit, or reached only with a joint "
-    << "of the arm or the part lower than "
-    << kMillimetresPerMetre * gl::RobotPathOptions{}.floorClearance
+    << robot << " in this cell (out of reach, past a joint limit, or reached only with the arm "
+    << "or the part lower than " << kMillimetresPerMetre * gl::RobotPathOptions{}.floorClearance
     << " mm above the floor it stands on, or with the arm nearer than "
     << kMillimetresPerMetre * gl::RobotPathOptions{}.linkNozzleClearance
     << " mm to the nozzle's axis or nearer than "
@@ -142,7 +141,7 @@ void vtkGLURScriptWriter::ResetResults() {
   this->MaxAxisErrorDeg = 0;
   this->MaxJointSpeedDegS = 0;
   std::fill(this->MinSingularity, this->MinSingularity + 3, 0.0);
-  this->LowestJointHeight = 0;
+  this->LowestArmHeight = 0;
   this->LowestPartHeight = 0;
   this->MinLinkNozzleDistance = 0;
   this->MinLinkPartDistance = 0;
@@ -386,7 +385,7 @@ void vtkGLURScriptWriter::WriteData() {
         this->MinSingularity[0] = robotPath.minSingularity.shoulder;
         this->MinSingularity[1] = robotPath.minSingularity.elbow;
         this->MinSingularity[2] = robotPath.minSingularity.wrist;
-        this->LowestJointHeight = kMillimetresPerMetre * robotPath.lowestJoint;
+        this->LowestArmHeight = kMillimetresPerMetre * robotPath.lowestArm;
         this->LowestPartHeight = kMillimetresPerMetre * robotPath.lowestPart;
         this->MinLinkNozzleDistance = kMillimetresPerMetre * robotPath.minLinkNozzleDistance;
         this->MinLinkPartDistance = kMillimetresPerMetre * robotPath.minLinkPartDistance;

@@ -224,20 +224,20 @@ public:
   double GetMinShoulderSingularity() const { return this->MinSingularity[0]; }
   double GetMinElbowSingularity() const { return this->MinSingularity[1]; }
   double GetMinWristSingularity() const { return this->MinSingularity[2]; }
-  /// Height of the arm's lowest joint over the written path above the floor the robot stands
-  /// on (mm; kept at 50 mm or more: a point reached only lower is unreachable).
-  double GetLowestJointHeight() const { return this->LowestJointHeight; }
+  /// Height of the arm's lowest surface (core robot/ArmCapsules.h) over the written path above
+  /// the floor the robot stands on (mm; kept at 20 mm or more: a point reached only lower is
+  /// unreachable).
+  double GetLowestArmHeight() const { return this->LowestArmHeight; }
   /// Height of the part's lowest point (as printed so far, with the plate's footprint: core
-  /// robot/PartFloor.h) over the written path above the same floor (mm; kept at 50 mm or more).
+  /// robot/PartFloor.h) over the written path above the same floor (mm; kept at 20 mm or more).
   double GetLowestPartHeight() const { return this->LowestPartHeight; }
-  /// Least distance of the upper arm, the forearm and wrist 1 (the lines between their joints)
-  /// from the nozzle's axis over the written path (mm; kept at 60 mm or more, core's
+  /// Least distance of the arm's surfaces (base to wrist 1: core robot/ArmCapsules.h) from the
+  /// nozzle's axis over the written path (mm; kept at 35 mm or more, core's
   /// kLinkNozzleSafeDistance: a point reached only nearer is unreachable).
   double GetMinLinkNozzleDistance() const { return this->MinLinkNozzleDistance; }
-  /// Least distance of the upper arm, the forearm, wrist 1 and wrist 2 (the lines between their
-  /// joints) from the part the robot holds, as printed so far, and its plate, over the written
-  /// path (mm, measured up to 1000, to 1 mm; kept at 60 mm or more, core's
-  /// kLinkPartSafeDistance: core/robot/PartArmClearance.h).
+  /// Least distance of the arm's surfaces (base to wrist 2) from the part the robot holds, as
+  /// printed so far, and its plate, over the written path (mm, measured up to 1000, to 1 mm;
+  /// kept at 15 mm or more, core's kLinkPartSafeDistance: core/robot/PartArmClearance.h).
   double GetMinLinkPartDistance() const { return this->MinLinkPartDistance; }
   double GetDuration() const { return this->Duration; }
   vtkIdType GetMaxLineLength() const { return this->MaxLineLength; }
@@ -321,7 +321,7 @@ private:
   double MaxAxisErrorDeg = 0;
   double MaxJointSpeedDegS = 0;
   double MinSingularity[3] = {0, 0, 0};
-  double LowestJointHeight = 0;
+  double LowestArmHeight = 0;
   double LowestPartHeight = 0;
   double MinLinkNozzleDistance = 0;
   double MinLinkPartDistance = 0;

@@ -25,16 +25,19 @@ struct VoxelHash {
   }
 };
 
-/// The TimedPointTree bound of a query: the spheres nearer to the link than the best distance
-/// found so far (part units).
-struct NearLink {
-  const Eigen::Vector3d& a;
-  const Eigen::Vector3d& b;
+/// The TimedPointTree bound of a query: the spheres nearer to the capsule's surface than the
+/// best distance found so far (part units).
+struct NearCapsule {
+  const Capsule& c;
   const double& best;
   bool mayTouch(const Eigen::Vector3d& centre, double radius) const {
-    return segmentDistance(a, b, centre, centre) - radius < best;
+    return segmentDistance(c.a, c.b, centre, centre) - c.radius - radius < best;
   }
 };
+
+double surfaceDistance(const Capsule& c, const Eigen::Vector3d& p) {
+  return segmentDistance(c.a, c.b, p, p) - c.radius;
+}
 
 }  // namespace
 
@@ -80,49 +83,48 @@ PartArmClearance::PartArmClearance(const RobotCell& cell,
 
 PartArmClearance::~PartArmClearance() = default;
 
-std::array<Eigen::Vector3d, 5> PartArmClearance::linkEnds(
-    const Isometry& flange, const std::array<Eigen::Vector3d, 6>& origins) const {
+PartArmClearance::Body PartArmClearance::inPart(const Isometry& flange,
+                                                const ArmCapsules& arm) const {
   const Isometry toPart = (flange * partOnFlange_).inverse();
-  std::array<Eigen::Vector3d, 5> ends;
-  for (int k = 0; k < 5; ++k) {
-    ends[k] = (toPart * origins[k]) / scale_;
+  Body body;
+  for (int k = 0; k < kParts; ++k) {
+    const Capsule& c = arm[kFirstNearPart + k];
+    body[k] = {(toPart * c.a) / scale_, (toPart * c.b) / scale_, c.radius / scale_};
   }
-  return ends;
+  return body;
 }
 
-double PartArmClearance::nearestSample(const std::array<Eigen::Vector3d, 5>& ends, size_t i,
-                                       double bound, double stop) const {
+double PartArmClearance::nearestSample(const Body& body, size_t i, double bound,
+                                       double stop) const {
   double best = bound;
   const int now = static_cast<int>(std::min<size_t>(i, static_cast<size_t>(INT32_MAX - 1))) + 1;
-  for (int l = 0; l + 1 < 5 && !(best < stop); ++l) {
-    const Eigen::Vector3d &a = ends[l], &b = ends[l + 1];
-    tree_->forEachCandidate(NearLink{a, b, best}, now, [&](int q) {
-      best = std::min(best, segmentDistance(a, b, samples_[q], samples_[q]));
+  for (int k = 0; k < kParts && !(best < stop); ++k) {
+    const Capsule& c = body[k];
+    tree_->forEachCandidate(NearCapsule{c, best}, now, [&](int q) {
+      best = std::min(best, surfaceDistance(c, samples_[q]));
       return best < stop;
     });
   }
   return best;
 }
 
-double PartArmClearance::nearest(const Isometry& flange,
-                                 const std::array<Eigen::Vector3d, 6>& origins, size_t i,
+double PartArmClearance::nearest(const Isometry& flange, const ArmCapsules& arm, size_t i,
                                  double limit, bool firstBelow) const {
   // A point of a voxel is within its diagonal of the voxel's sample.
   const double bound = limit / scale_ + kVoxelDiagonal;
-  const double best = nearestSample(linkEnds(flange, origins), i, bound, firstBelow ? bound : 0.0);
+  const double best = nearestSample(inPart(flange, arm), i, bound, firstBelow ? bound : 0.0);
   return std::max(0.0, best - kVoxelDiagonal) * scale_;
 }
 
-void PartArmClearance::Sweep::add(const Isometry& flange,
-                                  const std::array<Eigen::Vector3d, 6>& origins, size_t i) {
-  const std::array<Eigen::Vector3d, 5> ends = part_.linkEnds(flange, origins);
+void PartArmClearance::Sweep::add(const Isometry& flange, const ArmCapsules& arm, size_t i) {
+  const Body body = part_.inPart(flange, arm);
   const double bound = least_ / part_.scale_ + kVoxelDiagonal;  // samples beyond cannot count
   double lower = -std::numeric_limits<double>::infinity();
   if (have_ && i > index_) {
-    // Every point of a link moves at most as far as its ends do.
+    // Every point of a capsule's segment moves at most as far as its ends do.
     double moved = 0;
-    for (int k = 0; k < 5; ++k) {
-      moved = std::max(moved, (ends[k] - ends_[k]).norm());
+    for (int k = 0; k < kParts; ++k) {
+      moved = std::max({moved, (body[k].a - body_[k].a).norm(), (body[k].b - body_[k].b).norm()});
     }
     lower = raw_ - moved;
     // The material printed after the state before: samples with times in (index_, i].
@@ -131,20 +133,20 @@ void PartArmClearance::Sweep::add(const Isometry& flange,
     const auto* last = std::upper_bound(t, t + part_.material_, static_cast<int>(i));
     for (const auto* s = first; s != last; ++s) {
       const Eigen::Vector3d& p = part_.samples_[static_cast<size_t>(s - t)];
-      for (int l = 0; l + 1 < 5; ++l) {
-        lower = std::min(lower, segmentDistance(ends[l], ends[l + 1], p, p));
+      for (const Capsule& c : body) {
+        lower = std::min(lower, surfaceDistance(c, p));
       }
     }
   }
   // Searched where the bound may beat the least so far by more than kSweepTolerance; else the
   // bound is the state's.
   if (lower < bound - kSweepTolerance) {
-    raw_ = part_.nearestSample(ends, i, bound, 0.0);
+    raw_ = part_.nearestSample(body, i, bound, 0.0);
     least_ = std::min(least_, std::max(0.0, raw_ - kVoxelDiagonal) * part_.scale_);
   } else {
     raw_ = lower;  // not below the least by more than the tolerance: the least stands
   }
-  ends_ = ends;
+  body_ = body;
   index_ = i;
   have_ = true;
 }

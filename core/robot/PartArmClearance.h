@@ -1,7 +1,7 @@
 #pragma once
 /// @file PartArmClearance.h
-/// @brief The part the robot holds, against the robot's own arm: how near do the upper arm, the
-/// forearm, wrist 1 and wrist 2 come to the part as printed up to a toolpath point?
+/// @brief The part the robot holds, against the robot's own arm: how near do the arm's bodies
+/// (ArmCapsules.h: base to wrist 2) come to the part as printed up to a toolpath point?
 ///
 /// Measured on the programs of the tenth session (forward kinematics of the written joints, the
 /// links as the lines between their joints): the demo bunny's forearm passed through the bunny
@@ -14,12 +14,12 @@
 /// under it (the footprint of the whole toolpath at its lowest z, as in PartFloor.h, sampled
 /// every kPlateSpacing mm), there from the start; in a TimedPointTree (collision/
 /// TimedPointTree.h: a kd-tree of spheres that knows the earliest index below each node), so a
-/// query visits only the material near a link. The links are the lines between the joint
-/// origins (URKinematics.h: jointOrigins) 0–4; wrist 3 (joint origin 4 to the flange) carries
-/// the plate and is not checked. Material between two toolpath points is within half a line
-/// spacing of one of them, the plate within kPlateSpacing / √2 of a sample: a clearance of tens
-/// of millimetres covers both.
+/// query visits only the material near the arm. Distances are from the capsules' surfaces
+/// (kFirstNearPart to kLastNearPart: wrist 3 carries the plate and is not checked). Material
+/// between two toolpath points is within half a line spacing of one of them, the plate within
+/// kPlateSpacing / √2 of a sample: the clearance kept must cover both.
 #include "collision/TimedPointTree.h"
+#include "robot/ArmCapsules.h"
 #include "robot/RobotCell.h"
 
 #include <Eigen/Core>
@@ -31,6 +31,10 @@
 namespace geolattice {
 
 class PartArmClearance {
+  static constexpr int kParts = kLastNearPart - kFirstNearPart + 1;
+  /// The capsules checked, in the part's frame and units.
+  using Body = std::array<Capsule, kParts>;
+
 public:
   /// Spacing of the plate's samples (part units, mm).
   static constexpr double kPlateSpacing = 5.0;
@@ -43,18 +47,17 @@ public:
   PartArmClearance(const PartArmClearance&) = delete;
   PartArmClearance& operator=(const PartArmClearance&) = delete;
 
-  /// Least distance (m) of the links (joint origins 0–4 of the arm at some q, base frame) from
-  /// the part printed up to point i (its points 0 .. i and the plate) when the flange is at
-  /// `flange`; `limit` (m) when every one is farther than that (the search stops there).
-  double distance(const Isometry& flange, const std::array<Eigen::Vector3d, 6>& origins, size_t i,
-                  double limit) const {
-    return nearest(flange, origins, i, limit, false);
+  /// Least distance (m, 0 when they touch) of the arm's surfaces (`arm`: its capsules at some
+  /// q, base frame) from the part printed up to point i (its points 0 .. i and the plate) when
+  /// the flange is at `flange`; `limit` (m) when every one is farther than that (the search
+  /// stops there).
+  double distance(const Isometry& flange, const ArmCapsules& arm, size_t i, double limit) const {
+    return nearest(flange, arm, i, limit, false);
   }
-  /// Whether every link is at least `clearance` (m) from the part printed up to point i (the
-  /// search stops at the first point nearer).
-  bool clear(const Isometry& flange, const std::array<Eigen::Vector3d, 6>& origins, size_t i,
-             double clearance) const {
-    return !(clearance > 0) || nearest(flange, origins, i, clearance, true) >= clearance;
+  /// Whether the arm's surfaces are at least `clearance` (m) from the part printed up to point
+  /// i (the search stops at the first point nearer).
+  bool clear(const Isometry& flange, const ArmCapsules& arm, size_t i, double clearance) const {
+    return !(clearance > 0) || nearest(flange, arm, i, clearance, true) >= clearance;
   }
 
   /// The least distance() over the arm states of a path, in path order (`add` each state
@@ -67,7 +70,7 @@ public:
   class Sweep {
   public:
     Sweep(const PartArmClearance& part, double limit) : part_(part), least_(limit) {}
-    void add(const Isometry& flange, const std::array<Eigen::Vector3d, 6>& origins, size_t i);
+    void add(const Isometry& flange, const ArmCapsules& arm, size_t i);
     double least() const { return least_; }  ///< m (the limit when none is nearer)
 
   private:
@@ -76,20 +79,17 @@ public:
     bool have_ = false;
     size_t index_ = 0;
     double raw_ = 0;  ///< a lower bound of the state before's sample distance (part units)
-    std::array<Eigen::Vector3d, 5> ends_;
+    Body body_;
   };
 
 private:
-  /// The links' ends (joint origins 0–4) in part units.
-  std::array<Eigen::Vector3d, 5> linkEnds(const Isometry& flange,
-                                          const std::array<Eigen::Vector3d, 6>& origins) const;
-  /// The least distance (part units) of the links from the samples of the part up to point i,
-  /// searched below `bound` (part units; `bound` when none is nearer), stopping at the first
-  /// sample nearer than `stop`.
-  double nearestSample(const std::array<Eigen::Vector3d, 5>& ends, size_t i, double bound,
-                       double stop) const;
-  double nearest(const Isometry& flange, const std::array<Eigen::Vector3d, 6>& origins, size_t i,
-                 double limit, bool firstBelow) const;
+  Body inPart(const Isometry& flange, const ArmCapsules& arm) const;
+  /// The least distance (part units) of the body's surfaces from the samples of the part up to
+  /// point i, searched below `bound` (part units; `bound` when none is nearer), stopping at the
+  /// first sample nearer than `stop`.
+  double nearestSample(const Body& body, size_t i, double bound, double stop) const;
+  double nearest(const Isometry& flange, const ArmCapsules& arm, size_t i, double limit,
+                 bool firstBelow) const;
 
   Isometry partOnFlange_;
   double scale_ = 1;

@@ -84,15 +84,12 @@ JointVector unwrapNear(const RobotModel& r, JointVector q, const JointVector& ne
   return q;
 }
 
-/// Least distance (m) of the upper arm, the forearm and wrist 1 (the DH lines between the joint
-/// origins 1–4) from the nozzle's axis segment (tip to nozzleLength along the axis) at q.
-double linkNozzleDistance(const RobotCell& cell, const std::array<Eigen::Vector3d, 6>& origins,
+/// Least distance (m) of the arm's surfaces near the nozzle (ArmCapsules.h: base to wrist 1)
+/// from the nozzle's axis segment (tip to nozzleLength along the axis).
+double linkNozzleDistance(const RobotCell& cell, const ArmCapsules& arm,
                           const RobotPathOptions& o) {
-  const Eigen::Vector3d q0 = cell.nozzleTip, q1 = cell.nozzleTip + o.nozzleLength * cell.nozzleAxis;
-  double d = kInf;
-  for (int l = 0; l < 3; ++l)
-    d = std::min(d, segmentDistance(origins[l], origins[l + 1], q0, q1));
-  return d;
+  return armSegmentDistance(arm, kFirstNearNozzle, kLastNearNozzle, cell.nozzleTip,
+                            cell.nozzleTip + o.nozzleLength * cell.nozzleAxis);
 }
 
 /// The part the robot holds, as printed up to a toolpath point: against the floor the robot
@@ -114,18 +111,18 @@ bool partAboveFloor(const HeldPart& part, const Isometry& flange, size_t i,
 }
 
 /// Whether the arm at q, holding the part printed up to point i with the flange at `flange`
-/// (= forwardKinematics(q)), is clear of the cell and of that part: every joint floorClearance
-/// above the floor (base z = 0), the upper arm, forearm and wrist 1 linkNozzleClearance from
-/// the nozzle, and the upper arm, forearm, wrist 1 and wrist 2 linkPartClearance from the part
-/// (each when > 0).
+/// (= forwardKinematics(q)), is clear of the cell and of that part (ArmCapsules.h, each when
+/// > 0): the surfaces of upper arm to wrist 3 floorClearance above the floor (base z = 0), of
+/// base to wrist 1 linkNozzleClearance from the nozzle's axis, and of base to wrist 2
+/// linkPartClearance from the part.
 bool armClearHolding(const RobotCell& cell, const JointVector& q, const Isometry& flange,
                      const HeldPart& part, size_t i, const RobotPathOptions& o) {
-  const std::array<Eigen::Vector3d, 6> origins = jointOrigins(cell.robot, q);
-  if (lowestJointHeight(origins) < o.floorClearance)
+  const ArmCapsules arm = armCapsules(cell.robot, q);
+  if (lowestArmSurface(arm) < o.floorClearance)
     return false;
-  if (o.linkNozzleClearance > 0 && linkNozzleDistance(cell, origins, o) < o.linkNozzleClearance)
+  if (o.linkNozzleClearance > 0 && linkNozzleDistance(cell, arm, o) < o.linkNozzleClearance)
     return false;
-  return part.arm.clear(flange, origins, i, o.linkPartClearance);
+  return part.arm.clear(flange, arm, i, o.linkPartClearance);
 }
 
 double singularityPenalty(const RobotModel& r, const JointVector& q, const Isometry& flange,
@@ -610,7 +607,7 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
   path.maxTipError = 0;
   path.maxAxisErrorDeg = 0;
   path.minSingularity = {kInf, kInf, kInf};
-  path.lowestJoint = kInf;
+  path.lowestArm = kInf;
   path.lowestPart = kInf;
   path.minLinkNozzleDistance = kInf;
   path.minLinkPartDistance = kLinkPartReportLimit;
@@ -631,11 +628,11 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
     path.minSingularity.shoulder = std::min(path.minSingularity.shoulder, sd.shoulder);
     path.minSingularity.elbow = std::min(path.minSingularity.elbow, sd.elbow);
     path.minSingularity.wrist = std::min(path.minSingularity.wrist, sd.wrist);
-    const std::array<Eigen::Vector3d, 6> origins = jointOrigins(robot, path.joints[i]);
-    path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(origins));
+    const ArmCapsules arm = armCapsules(robot, path.joints[i]);
+    path.lowestArm = std::min(path.lowestArm, lowestArmSurface(arm));
     path.lowestPart = std::min(path.lowestPart, held.floor.lowest(flange, i));
     path.minLinkNozzleDistance =
-        std::min(path.minLinkNozzleDistance, linkNozzleDistance(cell, origins, o));
+        std::min(path.minLinkNozzleDistance, linkNozzleDistance(cell, arm, o));
   }
   // The arm to the part held (the one costly measure: a search of the material near each
   // link; PartArmClearance::Sweep skips most), in chunks on every core.
@@ -647,7 +644,7 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
       if (std::binary_search(path.unreachable.begin(), path.unreachable.end(), static_cast<int>(i)))
         continue;
       const JointVector& q = path.joints[i];
-      sweep.add(forwardKinematics(robot, q), jointOrigins(robot, q), i);
+      sweep.add(forwardKinematics(robot, q), armCapsules(robot, q), i);
     }
     chunkLeast[c] = sweep.least();
   });
@@ -655,16 +652,16 @@ void checkEmittedJoints(const RobotCell& cell, const std::vector<Eigen::Vector3d
     path.minLinkPartDistance = std::min(path.minLinkPartDistance, least);
   for (const WaypointsBetween& v : path.via) {  // the program moves through these too
     for (const JointVector& q : v.via.joints) {
-      const std::array<Eigen::Vector3d, 6> origins = jointOrigins(robot, q);
-      path.lowestJoint = std::min(path.lowestJoint, lowestJointHeight(origins));
+      const ArmCapsules arm = armCapsules(robot, q);
+      path.lowestArm = std::min(path.lowestArm, lowestArmSurface(arm));
       path.minLinkNozzleDistance =
-          std::min(path.minLinkNozzleDistance, linkNozzleDistance(cell, origins, o));
+          std::min(path.minLinkNozzleDistance, linkNozzleDistance(cell, arm, o));
       const Isometry flange = forwardKinematics(robot, q);
       path.lowestPart =
           std::min(path.lowestPart, held.floor.lowest(flange, static_cast<size_t>(v.point)));
       path.minLinkPartDistance = std::min(
-          path.minLinkPartDistance, held.arm.distance(flange, origins, static_cast<size_t>(v.point),
-                                                      path.minLinkPartDistance));
+          path.minLinkPartDistance,
+          held.arm.distance(flange, arm, static_cast<size_t>(v.point), path.minLinkPartDistance));
     }
   }
 }

@@ -66,17 +66,17 @@
 ///    by 1–3 is kept when this does not remove every unreachable point and large step.
 /// The floor the robot stands on (base z = 0): in every step, a state, a point, a waypoint
 /// between points (the step with it is then a large step), a retreat or a joint move with a
-/// joint of the arm (lowestJointHeight: elbow, wrists, flange) lower than floorClearance is
+/// surface of the arm (ArmCapsules.h: upper arm to wrist 3) lower than floorClearance is
 /// not reachable (IK branches that put the elbow under the base plane reach the same poses: the
 /// bundled 30 mm cube's path was followed with it 225 mm below), nor a state, point or waypoint
 /// with the part as printed so far (PartFloor.h: its box with the plate's footprint) lower than
 /// that (during joint moves and retreats the part's bounding sphere is kept clear). The nozzle:
-/// nor is a state, point, waypoint, retreat or joint move with the upper arm, the forearm or
-/// wrist 1 nearer than linkNozzleClearance to the nozzle's axis (tip to nozzleLength). The part
-/// it holds: nor is one with the upper arm, the forearm, wrist 1 or wrist 2 nearer than
-/// linkPartClearance to the part as printed so far or its plate (PartArmClearance.h). Robot
-/// self-collision, the links' true shapes (they are taken as their DH lines with a clearance)
-/// and other obstacles of the cell are not modelled.
+/// nor is a state, point, waypoint, retreat or joint move with the arm's surfaces (base to
+/// wrist 1) nearer than linkNozzleClearance to the nozzle's axis (tip to nozzleLength). The
+/// part it holds: nor is one with the arm's surfaces (base to wrist 2) nearer than
+/// linkPartClearance to the part as printed so far or its plate (PartArmClearance.h). The arm
+/// is its links' bodies as capsules fitted to the manufacturer's collision meshes
+/// (ArmCapsules.h). Robot self-collision and other obstacles of the cell are not modelled.
 /// Cost O(samples · ψ · 8) IK solutions for the plan and O(N) for each fine pass (the other
 /// branches' passes stop at their first large step), in parallel over `threads` (the result
 /// does not depend on them); 1M points ≈ 1 s; step 4 adds one IK per state at every air
@@ -90,16 +90,16 @@
 
 namespace geolattice {
 
-/// m: the distance of the upper arm, the forearm or wrist 1 (the DH lines between their joints)
-/// from the nozzle's axis below which the arm may hit the nozzle: the UR5's link radius (~45
-/// mm) and a slim hot end's (~15 mm). The wrist 2 and 3 links behind the plate are the
-/// collision verifier's (the plate is an obstacle there).
-constexpr double kLinkNozzleSafeDistance = 0.06;
+/// m: the distance of the arm's surfaces (ArmCapsules.h: base to wrist 1) from the nozzle's
+/// axis below which the arm may hit the nozzle: the radius of a slim hot end with its holder
+/// (testdata/printhead_slim.obj's carriage: 28.3 mm) and a margin. The wrist 2 and 3 links
+/// behind the plate are the collision verifier's (the plate is an obstacle there).
+constexpr double kLinkNozzleSafeDistance = 0.035;
 
-/// m: the distance of the upper arm, the forearm, wrist 1 or wrist 2 (the DH lines between their
-/// joints) from the part the robot holds (PartArmClearance.h) below which the arm may hit it:
-/// the UR5's link radius (~45 mm) and the forearm tube's offset from its DH line (16 mm).
-constexpr double kLinkPartSafeDistance = 0.06;
+/// m: the distance of the arm's surfaces (ArmCapsules.h: base to wrist 2) from the part the
+/// robot holds (PartArmClearance.h) below which the arm may hit it: the part's samples (the
+/// plate's within 3.5 mm of its surface) and a margin.
+constexpr double kLinkPartSafeDistance = 0.015;
 
 struct RobotPathOptions {
   int psiSamples = 72;      ///< grid of ψ over 2π (5° steps)
@@ -122,22 +122,24 @@ struct RobotPathOptions {
   double nozzleLength = 0.25;       ///< m: nozzle and holder length kept clear during a joint move
   double reconfigurationMargin = 0.02;  ///< m added to the part's bounding sphere (the plate)
   double maxRetreat = 0.4;              ///< m: the farthest the part is moved away from the nozzle
-  /// m: every joint of the arm (lowestJointHeight) and the part held (PartFloor) stay this far
-  /// above the floor the robot stands on (base z = 0), at every point, retreat and joint move; a
-  /// point reached only lower is unreachable.
-  double floorClearance = 0.05;
-  /// m: the upper arm, the forearm and wrist 1 (the DH lines between their joints) stay this
-  /// far from the nozzle's axis (tip to nozzleLength along it) at every point, waypoint,
-  /// retreat and joint move; a point reached only nearer is unreachable (0: not kept, only
-  /// measured in RobotPath::minLinkNozzleDistance). Before the tenth session nothing kept it:
-  /// the programs of the demo bunny, the Y and the three-branch tree drove the forearm through
-  /// the nozzle 10 mm above the tip (docs/performance.md).
+  /// m: the arm's surfaces (lowestArmSurface: upper arm to wrist 3) and the part held
+  /// (PartFloor) stay this far above the floor the robot stands on (base z = 0), at every
+  /// point, retreat and joint move; a point reached only lower is unreachable. Until the twelfth
+  /// session 50 mm, from the joints' DH origins: the elbow's housing (62 mm radius) could touch.
+  double floorClearance = 0.02;
+  /// m: the arm's surfaces (ArmCapsules.h: base to wrist 1) stay this far from the nozzle's
+  /// axis (tip to nozzleLength along it) at every point, waypoint, retreat and joint move; a
+  /// point reached only nearer is unreachable (0: not kept, only measured in
+  /// RobotPath::minLinkNozzleDistance). Before the tenth session nothing kept it: the programs
+  /// of the demo bunny, the Y and the three-branch tree drove the forearm through the nozzle 10
+  /// mm above the tip (docs/performance.md); until the twelfth, 60 mm from the DH lines.
   double linkNozzleClearance = kLinkNozzleSafeDistance;
-  /// m: the upper arm, the forearm, wrist 1 and wrist 2 (the DH lines between their joints) stay
-  /// this far from the part as printed so far and its plate (PartArmClearance.h) at every point,
-  /// waypoint, retreat and joint move; a point reached only nearer is unreachable (0: not kept,
-  /// only measured in RobotPath::minLinkPartDistance). Before the eleventh session nothing kept
-  /// it: the demo bunny's program drove the forearm through the bunny it held.
+  /// m: the arm's surfaces (ArmCapsules.h: base to wrist 2) stay this far from the part as
+  /// printed so far and its plate (PartArmClearance.h) at every point, waypoint, retreat and
+  /// joint move; a point reached only nearer is unreachable (0: not kept, only measured in
+  /// RobotPath::minLinkPartDistance). Before the eleventh session nothing kept it: the demo
+  /// bunny's program drove the forearm through the bunny it held; until the twelfth, 60 mm from
+  /// the DH lines (the upper arm's tube runs 136 mm off its line).
   double linkPartClearance = kLinkPartSafeDistance;
   int threads = 0;  ///< workers for the IK (0: every core); results do not depend on it
 };
@@ -188,15 +190,16 @@ struct RobotPath {
   SingularityDistance minSingularity;  ///< smallest distances along the path
   double maxTipError = 0;      ///< m: |FK(q)·partOnFlange·p − nozzle tip| over reachable points
   double maxAxisErrorDeg = 0;  ///< angle between the placed axis n and the nozzle axis
-  /// m above the floor: the lowest joint over the reachable points and the waypoints between them
-  double lowestJoint = 0;
+  /// m above the floor: the arm's lowest surface (lowestArmSurface) over the reachable points
+  /// and the waypoints between them
+  double lowestArm = 0;
   /// m above the floor: the lowest point of the part as printed so far (PartFloor.h), the same
   double lowestPart = 0;
-  /// m: the least distance of the upper arm, the forearm and wrist 1 from the nozzle's axis
-  /// (tip to nozzleLength along it) over the reachable points and the waypoints between them
+  /// m: the least distance of the arm's surfaces (base to wrist 1) from the nozzle's axis (tip
+  /// to nozzleLength along it) over the reachable points and the waypoints between them
   double minLinkNozzleDistance = 0;
-  /// m: the least distance of the upper arm, the forearm, wrist 1 and wrist 2 from the part
-  /// printed so far and its plate, the same (measured up to 1 m, to 1 mm: at most 1 mm above
+  /// m: the least distance of the arm's surfaces (base to wrist 2) from the part printed so
+  /// far and its plate, the same (measured up to 1 m, to 1 mm: at most 1 mm above
   /// the least; PartArmClearance::Sweep)
   double minLinkPartDistance = 0;
   double seconds = 0;

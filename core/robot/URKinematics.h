@@ -14,6 +14,7 @@
 ///    (free at the wrist singularity sin θ5 = 0: then θ6 = the `wristFreeAngle` argument);
 ///  - T14 = T01⁻¹ T06 (T45 T56)⁻¹ is a planar 3R chain in the x1-y1 plane: elbow by the law
 ///    of cosines, θ2 from the triangle, θ4 from the total angle θ2 + θ3 + θ4.
+#include "robot/ArmCapsules.h"
 #include "robot/Pose.h"
 
 #include <array>
@@ -30,6 +31,7 @@ struct RobotModel {
   std::array<double, 6> lowerLimit{}, upperLimit{};  ///< rad
   std::array<double, 6> maxSpeed{};                  ///< rad/s
   double reach = 0;                                  ///< m, nominal
+  ArmShape shape;  ///< the links' bodies around the DH chain (ArmCapsules.h)
 };
 
 RobotModel
@@ -57,17 +59,13 @@ std::vector<JointVector> inverseKinematics(const RobotModel& robot, const Isomet
                                            double wristFreeAngle = 0.0);
 
 /// The origins of the DH frames 1–6 at q (m, base frame): the shoulder (d1 above the base), the
-/// elbow, the three wrist joints and the flange. The links run straight between them: the upper
-/// arm from 1 to 2, the forearm from 2 to 3, wrist 1 from 3 to 4.
+/// elbow, wrist 1 moved onto the DH plane, the wrist 2 and 3 joints and the flange. The DH
+/// lines between them are not the links' bodies (armCapsules: the upper arm's tube, for one,
+/// runs 136 mm off its line).
 std::array<Eigen::Vector3d, 6> jointOrigins(const RobotModel& robot, const JointVector& q);
 
-/// Height (m, base frame z) of the arm's lowest joint at q: the lowest origin of the DH frames
-/// 2–6 (elbow, the three wrist joints, the flange). With the links straight between them, no
-/// part of the arm's chain from the shoulder (d1 above the base) to the flange is lower; the
-/// robot stands on z = 0, so a negative height drives the arm into its own mounting surface.
-double lowestJointHeight(const RobotModel& robot, const JointVector& q);
-/// The same from the joint origins (jointOrigins), when they are at hand.
-double lowestJointHeight(const std::array<Eigen::Vector3d, 6>& origins);
+/// The arm's body at q (m, base frame): ArmCapsules.h.
+ArmCapsules armCapsules(const RobotModel& robot, const JointVector& q);
 
 /// Distances to the singularities at q (0 = singular): shoulder = distance of the wrist centre
 /// from the cylinder of radius d4 about the base axis (m), elbow = |sin θ3|, wrist = |sin θ5|.

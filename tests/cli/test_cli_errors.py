@@ -787,7 +787,7 @@ class CliGateTest(unittest.TestCase):
         self.assertEqual(t["violating_stations"], chosen["colliding_stations"])
         self.assertEqual(t["stations"], chosen["stations"])
         # Measured: 82 stations (79 at the plate) on 10 mm, none on 20 mm: the collision gate
-        # passes. The UR5 in the default cell follows it with the arm 60 mm off the nozzle (the
+        # passes. The UR5 in the default cell follows it with the arm off the nozzle (the
         # tenth session's fixed 3 refinement passes left 97 points unreachable; the eleventh's
         # go on while they make progress: 4).
         self.assertEqual(t["violating_stations"], 0)
@@ -796,9 +796,10 @@ class CliGateTest(unittest.TestCase):
         self.assertIn("print_part.script", programs)
         program = report["program"]
         self.assertEqual(program["unreachable"], 0)
-        self.assertGreaterEqual(program["min_link_nozzle_distance_mm"], 60.0 - 1e-6)
-        self.assertGreaterEqual(program["min_link_part_distance_mm"], 60.0 - 1e-6)
-        self.assertGreaterEqual(program["lowest_part_height_mm"], 50.0 - 1e-6)
+        self.assertGreaterEqual(program["min_link_nozzle_distance_mm"], 35.0 - 1e-6)
+        self.assertGreaterEqual(program["min_link_part_distance_mm"], 15.0 - 1e-6)
+        self.assertGreaterEqual(program["lowest_part_height_mm"], 20.0 - 1e-6)
+        self.assertGreaterEqual(program["lowest_arm_height_mm"], 20.0 - 1e-6)
         with open(os.path.join(out, "orientation.csv")) as f:
             self.assertGreater(len(f.readlines()), 100)
 
@@ -879,7 +880,7 @@ class CliGateTest(unittest.TestCase):
         args = ["--fit-size", "30", "--nozzle-tip", "900,0,400", "--no-layout-search"]
         result, report, programs, out = self.run_cli("cube.obj", *args)
         self.expect_gate(result, report, programs, out, 5, "reachability",
-                         ["unreachable cell set-up", "60 mm off the part it holds"])
+                         ["unreachable cell set-up", "15 mm off the part it holds"])
         self.assertIn("or try --orient auto", result.stderr)  # the part kept as placed
         self.assertEqual(report["program"]["unreachable"], report["toolpath"]["points"])
         # The program stage's own seconds (the writer ran before the gate), not the summary's.
@@ -910,18 +911,31 @@ class CliGateTest(unittest.TestCase):
                            capture_output=True, text=True, timeout=300)
         self.assertEqual(r.returncode, 1)
         self.assertIn("--max-joint-step must be in (0, 30]", r.stderr)
-        # The nozzle pointing along the robot's +x axis: until the eleventh session steps 1-3
-        # wound a joint to its limit there too, and only the layout search (a turned mounting)
-        # or step 4 wrote the program; now the plan on 2,000 samples follows it in the cell as
-        # given, with one IK branch.
+        # The nozzle pointing along the robot's +x axis. With the arm checked as its body
+        # (twelfth session: core/robot/ArmCapsules.h) one IK branch over the whole path steps a
+        # joint by 24 degrees twice in the cell as given: the joint gate stops it ...
         cell = ["--nozzle-tip", "0,-400,350", "--nozzle-axis", "1,0,0", "--allow-collisions"]
         result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-layout-search",
                                                      "--no-reconfiguration")
+        self.assertEqual(result.returncode, 6, result.stderr)
+        self.assertIn("jumps by", result.stderr)
+        self.assertEqual(programs, [])
+        # ... and the cell layout search finds a mounting of the part on the flange that one
+        # branch follows (measured: turned 225 degrees about the flange's z axis, 60 mm further
+        # out), and writes the program for it, saying so.
+        result, report, programs, out = self.run_cli("y_shape.obj", *cell, "--no-reconfiguration")
         self.assertEqual(result.returncode, 0, result.stderr)
-        self.assertFalse(report["program"]["layout"]["changed"])
+        layout = report["program"]["layout"]
+        self.assertTrue(layout["searched"])
+        self.assertTrue(layout["changed"])
+        self.assertGreater(layout["layouts_tried"], 1)
+        self.assertNotEqual((layout["rotation_about_flange_z_deg"], layout["offset_added_mm"]),
+                            (0.0, 0.0))
         self.assertLessEqual(report["program"]["max_joint_step_deg"], 20.0)
         self.assertEqual(report["program"]["unreachable"], 0)
         self.assertEqual(report["program"]["reconfigurations"], [])
+        with open(os.path.join(out, "print_part.script")) as f:
+            self.assertIn("# cell layout: the platform turned by", f.read())
         # With the defaults (step 4: one IK branch per stretch, flips barred, reconfigurations at
         # air moves where needed) the path is followed in the cell as given; where the wrist
         # passes near its singularity the program has waypoints between points.
@@ -934,16 +948,14 @@ class CliGateTest(unittest.TestCase):
         self.assertEqual(program["large_joint_steps"], 0)
         self.assertEqual(program["unreachable"], 0)
         self.assertIn("print_part.script", programs)
-        with open(os.path.join(out, "print_part.script")) as f:
-            text = f.read()
         seams = sum(1 for r in program["reconfigurations"] if r["at_seam"])
-        self.assertEqual(text.count("# reconfiguration "), len(program["reconfigurations"]))
         self.assertGreater(program["via_segments"], 0)
         scripts = ""  # every program file of the split program
         for name in programs:
             if name.endswith(".script"):
                 with open(os.path.join(out, name)) as f:
                     scripts += f.read()
+        self.assertEqual(scripts.count("# reconfiguration "), len(program["reconfigurations"]))
         self.assertEqual(scripts.count(" waypoint(s) between toolpath points "), program["via_segments"])
         # A change at an air move replaces one move by two; a seam adds two.
         self.assertEqual(scripts.count("\n  movel(p["),

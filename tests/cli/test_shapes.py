@@ -86,14 +86,14 @@ class ShapesMeshTest(unittest.TestCase):
 
     def test_the_robot_program_chooses_the_orientation(self):
         # The mushroom (a cap of radius 15 mm on a 5 mm stem) as placed prints collision-free,
-        # but the UR5 in the default cell cannot follow it with its arm 60 mm off the nozzle and
-        # 60 mm off the part it holds (the forearm passes between the two): the reachability
+        # but the UR5 in the default cell cannot follow it with its arm 35 mm off the nozzle and
+        # 15 mm off the part it holds (the forearm passes between the two): the reachability
         # gate stops it and points to --orient auto ...
         out = os.path.join(self.tmp, "mushroom-keep")
         result = subprocess.run([CLI, "run", os.path.join(self.tmp, "mushroom.obj"), "-o", out, "-q"],
                                 capture_output=True, text=True, timeout=600)
         self.assertEqual(result.returncode, 5, result.stderr)
-        self.assertIn("60 mm off the part it holds", result.stderr)
+        self.assertIn("15 mm off the part it holds", result.stderr)
         self.assertIn("what stops it is keeping the arm off the nozzle and off the part at once",
                       result.stderr)
         self.assertIn("or try --orient auto", result.stderr)
@@ -117,8 +117,8 @@ class ShapesMeshTest(unittest.TestCase):
         program = report["program"]
         self.assertTrue(program["written"])
         self.assertEqual(program["unreachable"], 0)
-        self.assertGreaterEqual(program["min_link_part_distance_mm"], 60.0 - 1e-6)
-        self.assertGreaterEqual(program["min_link_nozzle_distance_mm"], 60.0 - 1e-6)
+        self.assertGreaterEqual(program["min_link_part_distance_mm"], 15.0 - 1e-6)
+        self.assertGreaterEqual(program["min_link_nozzle_distance_mm"], 35.0 - 1e-6)
 
     def test_a_flat_part_prints_on_its_own_base(self):
         # The wrench lying flat: the search's best is that side on a 10 mm pedestal (its

@@ -1,7 +1,7 @@
 // The part the robot holds against the robot's own arm (robot/PartArmClearance.h): distances of
-// constructed links from constructed material and plate against analytic values, material
+// constructed capsules from constructed material and plate against analytic values, material
 // counted from its print index on, the sweep equal to a search at every state, and the path
-// solver keeping the forearm off a part it drove it through.
+// solver keeping the arm off a part it drove the forearm through.
 #include "robot/PartArmClearance.h"
 #include "robot/RobotPathSolver.h"
 #include "robot/URKinematics.h"
@@ -34,56 +34,58 @@ struct LineOfMaterial {
   }
 };
 
-/// Joint origins whose links 0-4 all lie on the segment from a to b (m, base frame).
-std::array<Eigen::Vector3d, 6> linksAlong(const Eigen::Vector3d& a, const Eigen::Vector3d& b) {
-  std::array<Eigen::Vector3d, 6> o;
-  for (int k = 0; k < 6; ++k) {
-    o[k] = a + (b - a) * (std::min(k, 4) / 4.0);
-  }
-  return o;
+/// An arm whose every capsule is the segment from a to b (m, base frame) with that radius.
+ArmCapsules armAlong(const Eigen::Vector3d& a, const Eigen::Vector3d& b, double radius = 0) {
+  ArmCapsules arm;
+  arm.fill(Capsule{a, b, radius});
+  return arm;
 }
 
-/// The least distance (m) of the links 0-4 of q from the given part points (part units) with
-/// index <= i and from the plate's footprint rectangle, by sampling each link every mm.
+/// The least distance (m) of the surfaces of the arm's parts near the part (base to wrist 2)
+/// at q from the given part points (part units) with index <= i and from the plate's footprint
+/// rectangle, by sampling each capsule's segment every mm.
 double sampledDistance(const RobotCell& cell, const JointVector& q,
                        const std::vector<Eigen::Vector3d>& points, size_t i) {
   const Isometry flange = forwardKinematics(cell.robot, q);
   const Isometry toPart = (flange * cell.partOnFlange).inverse();
-  const std::array<Eigen::Vector3d, 6> o = jointOrigins(cell.robot, q);
+  const ArmCapsules arm = armCapsules(cell.robot, q);
   Eigen::AlignedBox3d box;
   for (const auto& p : points) {
     box.extend(p);
   }
   double least = 1e9;
-  for (int l = 0; l < 4; ++l) {
-    const int n = 1 + static_cast<int>((o[l + 1] - o[l]).norm() / 0.001);
+  for (int part = kFirstNearPart; part <= kLastNearPart; ++part) {
+    const Capsule& c = arm[part];
+    const int n = 1 + static_cast<int>((c.b - c.a).norm() / 0.001);
     for (int k = 0; k <= n; ++k) {
       const Eigen::Vector3d x =
-          (toPart * (o[l] + (o[l + 1] - o[l]) * (static_cast<double>(k) / n))) / cell.partScale;
+          (toPart * (c.a + (c.b - c.a) * (static_cast<double>(k) / n))) / cell.partScale;
+      double nearest = 1e9;
       for (size_t j = 0; j <= i && j < points.size(); ++j) {
-        least = std::min(least, (x - points[j]).norm());
+        nearest = std::min(nearest, (x - points[j]).norm());
       }
       // The plate: the nearest point of the footprint rectangle at the lowest z.
       const Eigen::Vector3d onPlate(std::clamp(x.x(), box.min().x(), box.max().x()),
                                     std::clamp(x.y(), box.min().y(), box.max().y()), box.min().z());
-      least = std::min(least, (x - onPlate).norm());
+      nearest = std::min(nearest, (x - onPlate).norm());
+      least = std::min(least, nearest * cell.partScale - c.radius);
     }
   }
-  return least * cell.partScale;
+  return least;
 }
 
 }  // namespace
 
-TEST(PartArmClearance, DistancesOfLinesFromMaterialAndPlate) {
+TEST(PartArmClearance, DistancesOfCapsulesFromMaterialAndPlate) {
   LineOfMaterial part;
   part.cell.partOnFlange = Isometry(Eigen::Translation3d(0, 0, 0.04));
   const PartArmClearance clearance(part.cell, part.points, part.kind);
   const Isometry flange = Isometry::Identity();
-  // A link parallel to the material line, 80 mm above it (z = 0.04 + 0.01 + 0.08 m): the
-  // sampled material is within a voxel's diagonal (2√3 mm) of the material, and the result a
-  // lower bound.
+  // An arm of lines parallel to the material line, 80 mm above it (z = 0.04 + 0.01 + 0.08 m):
+  // the sampled material is within a voxel's diagonal (2√3 mm) of the material, and the result
+  // a lower bound.
   const double top = 0.04 + 0.01 + 0.08;
-  const auto above = linksAlong({-0.1, 0, top}, {0.1, 0, top});
+  const auto above = armAlong({-0.1, 0, top}, {0.1, 0, top});
   const double d = clearance.distance(flange, above, part.points.size() - 1, 1.0);
   EXPECT_LE(d, 0.08 + 1e-12);
   EXPECT_GE(d, 0.08 - 0.0035);
@@ -91,10 +93,19 @@ TEST(PartArmClearance, DistancesOfLinesFromMaterialAndPlate) {
   EXPECT_FALSE(clearance.clear(flange, above, part.points.size() - 1, 0.085));
   // Not searched beyond the limit.
   EXPECT_EQ(clearance.distance(flange, above, part.points.size() - 1, 0.05), 0.05);
+  // Distances are from the capsules' surfaces: the same lines 30 mm thick are 30 mm nearer.
+  const auto thick = armAlong({-0.1, 0, top}, {0.1, 0, top}, 0.03);
+  const double t = clearance.distance(flange, thick, part.points.size() - 1, 1.0);
+  EXPECT_NEAR(t, d - 0.03, 1e-12);
+  EXPECT_TRUE(clearance.clear(flange, thick, part.points.size() - 1, 0.04));
+  EXPECT_FALSE(clearance.clear(flange, thick, part.points.size() - 1, 0.055));
+  // A capsule through the material touches it: 0.
+  const auto through = armAlong({-0.1, 0, 0.05}, {0.1, 0, 0.05}, 0.005);
+  EXPECT_EQ(clearance.distance(flange, through, part.points.size() - 1, 1.0), 0.0);
   // A link beside the line's end at x = 40 mm (material up to x = 20 mm): only the points
   // printed so far count. At index 10 the material reaches x = -16 mm; the plate, 10 mm under
   // the material, spans x in [-20, 20] mm.
-  const auto beside = linksAlong({0.04, 0, 0.04 + 0.01}, {0.04, 0, 0.04 + 0.2});
+  const auto beside = armAlong({0.04, 0, 0.04 + 0.01}, {0.04, 0, 0.04 + 0.2});
   const double late = clearance.distance(flange, beside, part.points.size() - 1, 1.0);
   EXPECT_LE(late, 0.02 + 1e-12);
   EXPECT_GE(late, 0.02 - 0.0035);
@@ -103,7 +114,7 @@ TEST(PartArmClearance, DistancesOfLinesFromMaterialAndPlate) {
   EXPECT_LE(early, std::hypot(0.02, 0.01) + 1e-12);
   EXPECT_GE(early, std::hypot(0.02, 0.01) - 0.0035);
   // The plate is there from the start: a link 5 mm under the plate's middle.
-  const auto under = linksAlong({-0.01, 0, 0.04 + 0.01 - 0.015}, {0.01, 0, 0.04 - 0.005});
+  const auto under = armAlong({-0.01, 0, 0.04 + 0.01 - 0.015}, {0.01, 0, 0.04 - 0.005});
   EXPECT_LT(clearance.distance(flange, under, 0, 1.0), 0.006);
   // Air moves are not material: the same line as air is only the plate (10 mm under it).
   const PartArmClearance air(part.cell, part.points, std::vector<int>(part.points.size(), 2));
@@ -130,9 +141,9 @@ TEST(PartArmClearance, TheSweepFindsTheLeastOfEveryState) {
       a += turn(random);
     }
     const Isometry flange = forwardKinematics(cell.robot, q);
-    const std::array<Eigen::Vector3d, 6> o = jointOrigins(cell.robot, q);
-    sweep.add(flange, o, i);
-    least = std::min(least, clearance.distance(flange, o, i, 1.0));
+    const ArmCapsules arm = armCapsules(cell.robot, q);
+    sweep.add(flange, arm, i);
+    least = std::min(least, clearance.distance(flange, arm, i, 1.0));
   }
   EXPECT_LT(least, 1.0);
   EXPECT_GE(sweep.least(), least);
@@ -185,9 +196,9 @@ TEST(RobotPathSolver, AnUnreachableCellNamesTheClearanceThatStopsIt) {
 TEST(RobotPathSolver, TheArmIsKeptOffThePartItHolds) {
   // A cylinder wall (radius 40 mm, 80 mm tall, ten laps) printed with the nozzle axis leaning
   // 30 degrees outwards: without the constraint the chosen plan drives the forearm through
-  // the part it holds; with it (the default) the solver keeps the upper arm, forearm and
-  // wrists 60 mm off, checked by sampling each link every mm against every point printed so far
-  // and the plate.
+  // the part it holds; with it (the default) the solver keeps the arm's surfaces (base to
+  // wrist 2) 15 mm off, checked by sampling each capsule every mm against every point printed
+  // so far and the plate.
   RobotCell cell;
   std::vector<Eigen::Vector3d> points, normals;
   leaningCylinder(points, normals);

@@ -484,19 +484,20 @@ TEST(RobotPathSolver, LapsPrintedInOneRunChangeConfigurationAtSeams) {
 
 namespace {
 
-/// The least distance of the segments between the joint origins 1-4 (upper arm, forearm,
-/// wrist 1) from the nozzle's axis segment over the path, by sampling each link every mm.
+/// The least distance of the surfaces of the arm's parts near the nozzle (base to wrist 1) from
+/// the nozzle's axis segment over the path, by sampling each capsule's segment every mm.
 double sampledLinkNozzleDistance(const RobotCell& cell, const RobotPath& path, double length) {
   double least = 1e9;
   const Eigen::Vector3d a = cell.nozzleTip, b = cell.nozzleTip + length * cell.nozzleAxis;
   for (const JointVector& q : path.joints) {
-    const std::array<Eigen::Vector3d, 6> o = jointOrigins(cell.robot, q);
-    for (int l = 0; l < 3; ++l) {
-      const int n = 1 + static_cast<int>((o[l + 1] - o[l]).norm() / 0.001);
+    const ArmCapsules arm = armCapsules(cell.robot, q);
+    for (int part = kFirstNearNozzle; part <= kLastNearNozzle; ++part) {
+      const Capsule& c = arm[part];
+      const int n = 1 + static_cast<int>((c.b - c.a).norm() / 0.001);
       for (int k = 0; k <= n; ++k) {
-        const Eigen::Vector3d x = o[l] + (o[l + 1] - o[l]) * (static_cast<double>(k) / n);
+        const Eigen::Vector3d x = c.a + (c.b - c.a) * (static_cast<double>(k) / n);
         const double t = std::clamp((x - a).dot(b - a) / (b - a).squaredNorm(), 0.0, 1.0);
-        least = std::min(least, (x - (a + t * (b - a))).norm());
+        least = std::min(least, (x - (a + t * (b - a))).norm() - c.radius);
       }
     }
   }
@@ -509,7 +510,7 @@ TEST(RobotPathSolver, TheArmIsKeptOffTheNozzle) {
   // A ring printed with the nozzle axis leaning 70 degrees outwards, the nozzle 300 mm up (the
   // default cell before the tenth session): the forearm of the plan chosen without the
   // constraint passes through the nozzle's axis above the tip; with it (the default), the
-  // solver keeps the arm 60 mm off.
+  // solver keeps the arm's surfaces 35 mm off.
   RobotCell cell;
   cell.nozzleTip.z() = 0.30;
   std::vector<Eigen::Vector3d> points, normals;

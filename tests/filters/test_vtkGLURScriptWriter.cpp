@@ -374,9 +374,9 @@ TEST(vtkGLURScriptWriter, UnreachablePointsAreReportedNotSkipped) {
     ErrorCase c("unreachable", path);
     c.expectError(
         "2 of 2000 toolpath points are unreachable for the ur5 in this cell (out of "
-        "reach, past a joint limit, or reached only with a joint of the arm or the part lower than "
-        "50 mm above the floor it stands on, or with the arm nearer than 60 mm to the nozzle's "
-        "axis or nearer than 60 mm to the part it holds; first: 6, 1001)");
+        "reach, past a joint limit, or reached only with the arm or the part lower than "
+        "20 mm above the floor it stands on, or with the arm nearer than 35 mm to the nozzle's "
+        "axis or nearer than 15 mm to the part it holds; first: 6, 1001)");
     EXPECT_EQ(c.writer->GetUnreachableCount(), 2);
     EXPECT_EQ(c.writer->GetUnreachablePoint(0), 6);
     EXPECT_EQ(c.writer->GetUnreachablePoint(1), 1001);
