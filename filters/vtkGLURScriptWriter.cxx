@@ -425,8 +425,11 @@ void vtkGLURScriptWriter::WriteData() {
           // mushroom's stem: 359.5 degrees); placed on another side it may wind less.
           if (robotPath.maxJointStepDeg > 330.0) {
             text << ". A step of nearly 360 degrees is a joint wound to its limit: the path "
-                    "circles the part the same way round; another orientation of the part (GL "
-                    "Auto Orient, geolattice run --orient auto) may wind less";
+                    "circles the part the same way round"
+                 << (this->Reconfigure
+                         ? " with no air move before it where the joint could turn back"
+                         : " (reconfiguration, off here, turns it back at an air move)")
+                 << "; another orientation of the part may wind less";
           }
           throw gl::GeoLatticeError(text.str());
         }

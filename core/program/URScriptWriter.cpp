@@ -17,6 +17,21 @@ std::string urNumber(double v) {
 
 namespace {
 
+/// "IK branch a -> b"; for a change within one branch (step 4 of the path solver turns a
+/// joint wound to its limit back at an air move) "IK branch a kept, joint j turned back a
+/// full turn".
+std::string describeChange(const Reconfiguration& r) {
+  if (r.fromBranch != r.toBranch || r.atSeam)
+    return "IK branch " + std::to_string(r.fromBranch) + " -> " + std::to_string(r.toBranch);
+  int turned = 0;
+  for (int j = 1; j < 6; ++j)
+    if (std::abs(r.retreatTo[j] - r.retreatFrom[j]) >
+        std::abs(r.retreatTo[turned] - r.retreatFrom[turned]))
+      turned = j;
+  return "IK branch " + std::to_string(r.fromBranch) + " kept, joint " +
+         std::to_string(turned + 1) + " turned back a full turn";
+}
+
 constexpr double kReconfigurationSpeed = 0.5;         ///< rad/s of the leading joint (movej v)
 constexpr double kReconfigurationAcceleration = 1.0;  ///< rad/s² (movej a)
 
@@ -184,8 +199,7 @@ ProgramStats writeURScript(const RobotCell& cell, const RobotPath& rp, const Pro
     const double back = lineTime(r.retreatTo, r.leave, r.retreat, feed);
     out += "  # reconfiguration " + std::string(r.atSeam ? "at a seam at" : "between") +
            " toolpath points " + std::to_string(r.point) + " and " + std::to_string(r.point + 1) +
-           ": IK branch " + std::to_string(r.fromBranch) + " -> " + std::to_string(r.toBranch) +
-           ", " + urNumber(1000 * r.retreat) +
+           ": " + describeChange(r) + ", " + urNumber(1000 * r.retreat) +
            " mm away from the nozzle, joint move clear of it by " + urNumber(1000 * r.clearance) +
            " mm" + (r.atSeam ? "; the print goes on from point " + std::to_string(r.point) : "") +
            "\n";

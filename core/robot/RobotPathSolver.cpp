@@ -447,10 +447,13 @@ bool turnsByAtMost(const RobotCell& cell, const JointVector& a, const JointVecto
 /// serial pass that unwraps, so the result does not depend on threads.
 /// With stopAtLargeStep the pass ends early (incomplete) once a large step or an unreachable
 /// point is found: the path is then only known not to work.
+/// unwindAt (per point, or empty; step 4): ±(j + 1) at the air move from point i − 1 to i turns
+/// joint j back by a full turn against the direction ± it wound in (a change of configuration
+/// in the same branch at the same ψ, made as any other), where that stays inside its limits.
 RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                     const std::vector<Eigen::Vector3d>& normals, const std::vector<size_t>& coarse,
                     const CoarsePlan& plan, const HeldPart& part, const RobotPathOptions& o,
-                    bool stopAtLargeStep = false) {
+                    bool stopAtLargeStep = false, const std::vector<signed char>& unwindAt = {}) {
   const RobotModel& robot = cell.robot;
   const size_t N = points.size(), S = coarse.size();
   const double dpsi = 2 * M_PI / o.psiSamples;
@@ -546,11 +549,21 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
     if (found && havePrevious) {
       qi = unwrapNear(robot, qi, previous);
     }
+    bool unwound = false;
+    if (found && havePrevious && !changeAt[i] && !unwindAt.empty() && unwindAt[i] != 0) {
+      const int j = std::abs(unwindAt[i]) - 1;
+      const double v = qi[j] - (unwindAt[i] > 0 ? 2 * M_PI : -2 * M_PI);
+      if (v >= robot.lowerLimit[j] && v <= robot.upperLimit[j]) {
+        qi[j] = v;
+        unwound = true;
+      }
+    }
     if (!found || !withinLimits(robot, qi)) {
       path.unreachable.push_back(static_cast<int>(i));
       qi = havePrevious ? previous : JointVector{};
+      unwound = false;
     }
-    if (havePrevious) {
+    if (havePrevious && !unwound) {
       double step = 0;
       for (int j = 0; j < 6; ++j)
         step = std::max(step, std::abs(qi[j] - previous[j]));
@@ -575,7 +588,7 @@ RobotPath solveFine(const RobotCell& cell, const std::vector<Eigen::Vector3d>& p
         path.maxJointStepAt = static_cast<int>(i);
       }
     }
-    if (changeAt[i]) {
+    if (changeAt[i] || unwound) {
       Reconfiguration r;
       r.point = static_cast<int>(i - 1);
       r.fromBranch =
@@ -705,7 +718,8 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
                         const RobotPathOptions& o, StateCache& cache,
                         const std::vector<char>& changePoint = {},
                         const std::vector<std::pair<int, int>>& flips = {},
-                        const std::vector<char>& nearWrist = {}) {
+                        const std::vector<char>& nearWrist = {},
+                        const std::vector<signed char>& unwindAt = {}) {
   const size_t N = points.size();
   const size_t stride = coarseStride(N, o);
   RobotPath path;
@@ -740,13 +754,14 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
           "and the part size)" +
           partUnderTheFloor(cell, points, normals, coarse, cache.part(), o));
     }
-    path = solveFine(cell, points, normals, coarse, plans[0], cache.part(), o);
+    path = solveFine(cell, points, normals, coarse, plans[0], cache.part(), o, false, unwindAt);
     // The cheapest plan flips between its samples or misses points: the plan of the next
     // branch that the fine pass follows, if any, before refining the cheapest one (a flip
     // between samples often stays under denser samples; another branch may have none).
     // A probe that works ran to the end: it is that branch's whole fine pass.
     for (size_t k = 1; k < plans.size() && !path.works(); ++k) {
-      RobotPath probe = solveFine(cell, points, normals, coarse, plans[k], cache.part(), o, true);
+      RobotPath probe =
+          solveFine(cell, points, normals, coarse, plans[k], cache.part(), o, true, unwindAt);
       if (probe.works())
         path = std::move(probe);
     }
@@ -969,6 +984,30 @@ bool planReconfigurationMove(const RobotCell& cell, const Eigen::Vector3d& centr
 
 /// Step 4 (module comment): true and the path with its reconfigurations at air moves in
 /// `result`, or false when no path without unreachable points and large steps is found so.
+/// Where the step from point at to at + 1 of `path` turns a joint by more than half a turn (it
+/// was wound to a limit, and unwrapping it inside the limits turned it back), marks the last
+/// air move a → a + 1 with a ≤ at, not excluded and not yet marked, to turn that joint back
+/// a full turn (unwindAt, as solveFine reads it). Whether one was marked.
+bool unwindAtLastAirMove(const RobotPath& path, const std::vector<int>& kind,
+                         const std::vector<char>& excluded, size_t at,
+                         std::vector<signed char>& unwindAt) {
+  const JointVector &before = path.joints[at], &after = path.joints[at + 1];
+  for (int j = 0; j < 6; ++j) {
+    const double step = after[j] - before[j];
+    if (std::abs(step) <= M_PI)
+      continue;
+    const signed char code = static_cast<signed char>(step < 0 ? j + 1 : -(j + 1));
+    for (size_t a = at + 1; a-- > 0;) {
+      if (kind[a] == 2 && kind[a + 1] == 2 && !excluded[a] && unwindAt[a + 1] == 0) {
+        unwindAt[a + 1] = code;
+        return true;
+      }
+    }
+    return false;
+  }
+  return false;
+}
+
 bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                        const std::vector<Eigen::Vector3d>& normals, const std::vector<int>& kind,
                        const std::vector<size_t>& coarse, const HeldPart& part,
@@ -1004,6 +1043,7 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
   std::vector<std::pair<int, int>> flips;
   std::vector<char> excluded(N, 0);   // a change there could not be made
   std::vector<char> nearWrist(N, 0);  // a large step near the wrist singularity was found here
+  std::vector<signed char> unwindAt(N, 0);  // a joint turned back a full turn here (solveFine)
   const size_t stride = coarseStride(N, o);
   // The coarse samples with both points of every change; kept (densified) across the rounds.
   std::vector<size_t> withChanges = coarse;
@@ -1027,7 +1067,7 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
     RobotPath path;
     try {
       path = planAndRefine(cell, points, normals, withChanges, perRound, cache, changePoint, flips,
-                           nearWrist);
+                           nearWrist, unwindAt);
     } catch (const GeoLatticeError&) {
       return false;
     }
@@ -1058,6 +1098,11 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
     bool newChange = false;
     for (int i : path.largeSteps) {
       const size_t at = static_cast<size_t>(i - 1);
+      // A joint wound to its limit (its step is nearly a full turn: unwrapped inside the
+      // limits): whatever the branch and ψ, it turns back a full turn at the last air move
+      // before (the Y with the nozzle at the edge of the reach: wrist 3 round once per layer).
+      if (unwindAtLastAirMove(path, kind, excluded, at, unwindAt))
+        continue;
       if (std::min(std::abs(std::sin(path.joints[at][4])), std::abs(std::sin(path.joints[i][4]))) <
           kWideWristMargin) {
         std::fill(nearWrist.begin() + static_cast<long>(at - std::min(at, stride)),
@@ -1087,6 +1132,7 @@ bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>
     for (Reconfiguration& r : path.reconfigurations) {
       if (!planReconfigurationMove(cell, centre, radius, part, o, r)) {
         changePoint[static_cast<size_t>(r.point)] = 0;  // excluded; plan again
+        unwindAt[static_cast<size_t>(r.point) + 1] = 0;
         excluded[static_cast<size_t>(r.point)] = 1;
         allMade = false;
       }
@@ -1185,11 +1231,15 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
   const HeldPart part(cell, points, kind);
   RobotPath path;
   std::string noPlan;  // steps 1–3 found no plan: why
+  // The samples (as refined) and options of the plan kept: step 4 starts from them.
+  std::vector<size_t> planSamples = coarse;
+  RobotPathOptions planOptions = o;
   {
     StateCache cache(cell, points, normals, o, o.threads, part);
     try {
       std::vector<size_t> refined = coarse;
       path = planAndRefine(cell, points, normals, refined, o, cache);
+      planSamples = std::move(refined);
     } catch (const GeoLatticeError& e) {
       noPlan = e.what();
     }
@@ -1205,6 +1255,8 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
         RobotPath denser = planAndRefine(cell, points, normals, refined, dense, cache);
         if (!noPlan.empty() || problemCount(denser) < problemCount(path)) {
           path = std::move(denser);
+          planSamples = std::move(refined);
+          planOptions = dense;
           noPlan.clear();
         }
       } catch (const GeoLatticeError&) {
@@ -1217,7 +1269,8 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
     throw GeoLatticeError(noPlan + bindingClearance(cell, points, normals, coarse, part, o));
   if (noPlan.empty() && step4 && !path.works()) {
     RobotPath reconfigured;
-    if (solveReconfigured(cell, points, normals, kind, coarse, part, o, reconfigured))
+    if (solveReconfigured(cell, points, normals, kind, planSamples, part, planOptions,
+                          reconfigured))
       path = std::move(reconfigured);
   }
   checkEmittedJoints(cell, points, normals, part, o, path);

@@ -50,6 +50,11 @@
 ///    to point i in the new one (the extruder stops, retracts and primes meanwhile), then prints
 ///    on to i + 1; and near such a wrist step (|sin θ5| < 0.25) the plans keep ψ away from the
 ///    singularity (its penalty then starts at |sin θ5| = 0.25 instead of singularityMargin).
+///    A joint wound to its limit (a step of more than half a turn: the path circles the part
+///    the same way round, whatever the branch and ψ) is turned back a full turn at the last
+///    air move before it, in the same branch at the same ψ (the Y with the nozzle at the edge
+///    of the reach: wrist 3, once). Step 4 starts from the samples of the plan 1–3 kept, as
+///    refined.
 ///    Each change becomes a reconfiguration move (Reconfiguration): the part is moved straight
 ///    away from the nozzle along the nozzle axis until the bounding sphere of the toolpath is
 ///    reconfigurationMargin (which covers the build plate) clear of the nozzle body (a segment

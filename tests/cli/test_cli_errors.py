@@ -900,11 +900,29 @@ class CliGateTest(unittest.TestCase):
         self.assertEqual(len([l for l in lines if l.startswith("geolattice: stopped: ")]), 1, result.stderr)
         self.assertIn("jumps by", result.stderr)
         self.assertIn("wound to its limit", result.stderr)
+        self.assertIn("reconfiguration, off here, turns it back at an air move", result.stderr)
         self.assertIn("or try --orient auto", result.stderr)  # the part kept as placed
         self.assertNotIn("raise", result.stderr)  # no advice to raise the bound
         self.assertEqual(programs, [])
         self.assertFalse(report["gates"]["joints"]["passed"])
         self.assertFalse(report["program"]["reconfigure"])
+        # With reconfiguration (the default), step 4 turns the wound joint back a full turn at
+        # the last air move before it, in the same IK branch (twelfth session; until then it
+        # was refused the same way).
+        result, report, programs, out = self.run_cli("y_shape.obj", "--nozzle-tip", "860,0,400",
+                                                     "--no-layout-search")
+        self.assertEqual(result.returncode, 0, result.stderr)
+        program = report["program"]
+        self.assertLessEqual(program["max_joint_step_deg"], 20.0)
+        self.assertEqual(program["unreachable"], 0)
+        unwinds = [r for r in program["reconfigurations"] if r["from_branch"] == r["to_branch"]]
+        self.assertGreaterEqual(len(unwinds), 1, program["reconfigurations"])
+        scripts = ""
+        for name in programs:
+            if name.endswith(".script"):
+                with open(os.path.join(out, name)) as f:
+                    scripts += f.read()
+        self.assertIn("turned back a full turn", scripts)
         # The bound is not the way out: above 30 degrees it is refused.
         r = subprocess.run([CLI, "run", os.path.join(TESTDATA, "cube.obj"), "--fit-size", "10", "-o",
                             os.path.join(self.tmp, "bound"), "-q", "--max-joint-step", "360"],
