@@ -388,6 +388,7 @@ void reportScript(GLPrintPipeline& p, Json& s) {
                           {"wrist", w->GetMinWristSingularity()}};
   s["lowest_arm_height_mm"] = w->GetLowestArmHeight();
   s["lowest_part_height_mm"] = w->GetLowestPartHeight();
+  s["printhead_radius_mm"] = w->GetPrintheadRadiusUsed();
   s["min_link_nozzle_distance_mm"] = w->GetMinLinkNozzleDistance();
   s["min_link_part_distance_mm"] = w->GetMinLinkPartDistance();
   s["max_joint_speed_deg_s"] = w->GetMaxJointSpeedDegS();

@@ -64,6 +64,7 @@ GLPrintPipeline::GLPrintPipeline(bool tetMeshInput) {
     a->SetNozzle(this->Nozzle);
   }
   this->ScriptWriter->SetInputConnection(this->Planner->GetOutputPort());
+  this->ScriptWriter->SetNozzle(this->Nozzle);  // its printhead file sets the arm's clearance
   this->GCodeWriter->SetInputConnection(this->Planner->GetOutputPort());
   this->WaypointWriter->SetInputConnection(this->Planner->GetOutputPort());
   this->TetMeshInput = !tetMeshInput;  // force the wiring below

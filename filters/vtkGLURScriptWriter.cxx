@@ -1,6 +1,8 @@
 #include "vtkGLURScriptWriter.h"
 
+#include "GLPrintheadFile.h"
 #include "vtkGLMeshConversion.h"
+#include "vtkGLNozzle.h"
 #include "vtkGLOutputFiles.h"
 #include "vtkGLParallel.h"
 #include "vtkGLProgress.h"
@@ -39,16 +41,20 @@ bool allFinite(const double* v, int n) {
   return std::all_of(v, v + n, [](double x) { return std::isfinite(x); });
 }
 
+/// m: the arm's surfaces keep this from the nozzle's axis for a printhead of `radius` mm.
+double linkNozzleClearanceFor(double radius) {
+  return radius / kMillimetresPerMetre + gl::kLinkNozzleMargin;
+}
+
 /// "N of M toolpath points are unreachable … (first: a, b, …)".
 std::string describeUnreachable(const std::vector<vtkIdType>& unreachable, size_t points,
-                                const std::string& robot) {
+                                const std::string& robot, double linkNozzleClearance) {
   std::ostringstream s;
   s << unreachable.size() << " of " << points << " toolpath points are unreachable for the "
     << robot << " in this cell (out of reach, past a joint limit, or reached only with the arm "
     << "or the part lower than " << kMillimetresPerMetre * gl::RobotPathOptions{}.floorClearance
     << " mm above the floor it stands on, or with the arm nearer than "
-    << kMillimetresPerMetre * gl::RobotPathOptions{}.linkNozzleClearance
-    << " mm to the nozzle's axis or nearer than "
+    << kMillimetresPerMetre * linkNozzleClearance << " mm to the nozzle's axis or nearer than "
     << kMillimetresPerMetre * gl::RobotPathOptions{}.linkPartClearance
     << " mm to the part it holds; first: ";
   const size_t shown = std::min<size_t>(unreachable.size(), 10);
@@ -80,10 +86,23 @@ vtkGLURScriptWriter::vtkGLURScriptWriter() {
   this->AllowUnreachable = false;
   this->SearchCellLayout = gl::CellLayoutOptions{}.search;
   this->Reconfigure = gl::RobotPathOptions{}.reconfigure;
+  this->PrintheadRadius = kMillimetresPerMetre * gl::kPrintheadRadius;
 }
 
 vtkGLURScriptWriter::~vtkGLURScriptWriter() {
   this->SetRobot(nullptr);
+}
+
+void vtkGLURScriptWriter::SetNozzle(vtkGLNozzle* nozzle) {
+  if (this->Nozzle != nozzle) {
+    this->Nozzle = nozzle;
+    this->Modified();
+  }
+}
+
+double vtkGLURScriptWriter::PrintheadRadiusFor() const {
+  const char* file = this->Nozzle ? this->Nozzle->GetPrintheadFile() : nullptr;
+  return file && *file ? gl::readPrintheadFile(file)->maxRadius() : this->PrintheadRadius;
 }
 
 std::string vtkGLURScriptWriter::ProgramFileName(const std::string& fileName, int k) {
@@ -173,6 +192,11 @@ void vtkGLURScriptWriter::CheckParameters() {
   if (!allFinite(this->PartOnFlangePosition, 3) || !allFinite(this->PartOnFlangeRotation, 3)) {
     throw gl::GeoLatticeError("URScript writer: the part-on-flange pose must be finite");
   }
+  if (!(this->PrintheadRadius > 0 && this->PrintheadRadius < 1000)) {
+    throw gl::GeoLatticeError("URScript writer: PrintheadRadius must be in (0, 1000) mm (got " +
+                              std::to_string(this->PrintheadRadius) + ")");
+  }
+  this->PrintheadRadiusUsed = this->PrintheadRadiusFor();  // reads the nozzle's file, if any
   // The program options (checked with the property names; the core checks them again).
   if (this->MaxFileBytes < 10000) {
     throw gl::GeoLatticeError(
@@ -204,7 +228,8 @@ struct vtkGLURScriptWriter::Solution {
   const void* input = nullptr;
   vtkMTimeType inputTime = 0;
   std::string robot;
-  std::array<double, 14> numbers{};  ///< tip, axis, mounting, max step, layout, reconfigure
+  std::array<double, 15> numbers{};  ///< tip, axis, mounting, max step, layout and
+                                     ///< reconfigure, printhead radius
   gl::CellLayoutResult layout;
   std::string unreachableCell;  ///< the error of an unreachable cell set-up, or ""
 
@@ -239,27 +264,28 @@ const gl::CellLayoutResult& vtkGLURScriptWriter::Solve(vtkPolyData* input,
   key->robot = this->Robot ? this->Robot : "";
   const double* p = this->PartOnFlangePosition;
   const double* r = this->PartOnFlangeRotation;
-  key->numbers = {
-      this->NozzleTip[0],
-      this->NozzleTip[1],
-      this->NozzleTip[2],
-      this->NozzleAxis[0],
-      this->NozzleAxis[1],
-      this->NozzleAxis[2],
-      p[0],
-      p[1],
-      p[2],
-      r[0],
-      r[1],
-      r[2],
-      this->MaxJointStep,
-      static_cast<double>(2 * (this->SearchCellLayout != 0) + (this->Reconfigure != 0))};
+  key->numbers = {this->NozzleTip[0],
+                  this->NozzleTip[1],
+                  this->NozzleTip[2],
+                  this->NozzleAxis[0],
+                  this->NozzleAxis[1],
+                  this->NozzleAxis[2],
+                  p[0],
+                  p[1],
+                  p[2],
+                  r[0],
+                  r[1],
+                  r[2],
+                  this->MaxJointStep,
+                  static_cast<double>(2 * (this->SearchCellLayout != 0) + (this->Reconfigure != 0)),
+                  this->PrintheadRadiusUsed};
   if (!this->Solved || !this->Solved->sameAs(*key)) {
     this->Solved.reset();
     // Joints along the path (one core call: progress before and after it).
     gl::RobotPathOptions pathOptions;
     pathOptions.maxJointStepDeg = this->MaxJointStep;
     pathOptions.reconfigure = this->Reconfigure != 0;
+    pathOptions.linkNozzleClearance = linkNozzleClearanceFor(this->PrintheadRadiusUsed);
     // The cell as given, else the best mounting of the part on the flange that the robot
     // can follow (core/robot/CellLayout.h).
     gl::CellLayoutOptions layoutOptions;
@@ -400,7 +426,8 @@ void vtkGLURScriptWriter::WriteData() {
         }
         if (!this->Unreachable.empty()) {
           const std::string text =
-              describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name);
+              describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name,
+                                  linkNozzleClearanceFor(this->PrintheadRadiusUsed));
           if (!this->AllowUnreachable) {
             throw gl::GeoLatticeError(text +
                                       ": nothing written; move the nozzle tip or the part on the "
@@ -471,6 +498,7 @@ void vtkGLURScriptWriter::PrintSelf(ostream& os, vtkIndent indent) {
      << this->NozzleTip[2] << " mm\n";
   os << indent << "NozzleAxis: " << this->NozzleAxis[0] << " " << this->NozzleAxis[1] << " "
      << this->NozzleAxis[2] << "\n";
+  os << indent << "PrintheadRadius: " << this->PrintheadRadius << "\n";
   os << indent << "PartOnFlangePosition: " << this->PartOnFlangePosition[0] << " "
      << this->PartOnFlangePosition[1] << " " << this->PartOnFlangePosition[2] << " mm\n";
   os << indent << "PartOnFlangeRotation: " << this->PartOnFlangeRotation[0] << " "

@@ -49,7 +49,10 @@
  * Parameters (in mm and degrees like every GeoLattice filter; the writer converts to URScript's
  *   metres and radians): Robot ("ur5" default, or "ur5e"), NozzleTip (mm, robot base frame,
  *   default (0, -400, 350)), NozzleAxis (from the tip into the nozzle, base frame, default
- *   (0, 0, 1), normalized), PartOnFlangePosition (mm) and PartOnFlangeRotation (rotation vector,
+ *   (0, 0, 1), normalized), PrintheadRadius (mm, default 28: the printhead's largest distance
+ *   from its axis; the arm's surfaces keep 7 mm more from the axis; with SetNozzle and a nozzle
+ *   whose PrintheadFile is set, that file's largest radius instead), PartOnFlangePosition (mm)
+ *   and PartOnFlangeRotation (rotation vector,
  *   degrees, as the UR teach pendant shows it): the part (platform) frame in the flange frame =
  *   the TCP, default (0, 0, 40) and (0, 0, 0): the platform plate 40 mm in front of the flange;
  *   MaxFileBytes (default 4000000, >= 10000), SpeedFactor (fraction of
@@ -69,11 +72,13 @@
 
 #include "GeoLatticeFiltersModule.h"
 #include "vtkGLToolpathWriter.h"
+#include "vtkSmartPointer.h"  // for the nozzle
 
 #include <memory>  // for the kept solution
 #include <string>  // for the file names
 #include <vector>  // for the results
 
+class vtkGLNozzle;
 class vtkPolyData;
 namespace geolattice {
 struct CellLayoutResult;
@@ -104,6 +109,21 @@ public:
   vtkSetVector3Macro(NozzleAxis, double);
   vtkGetVector3Macro(NozzleAxis, double);
   ///@}
+
+  ///@{
+  /// The printhead's largest distance from its axis (mm, default 28 = core's
+  /// kPrintheadRadius, > 0): the arm's surfaces keep kLinkNozzleMargin (7 mm) more than this
+  /// from the nozzle's axis. A nozzle given with SetNozzle whose PrintheadFile is set
+  /// overrides it with that file's largest radius (GetPrintheadRadiusUsed).
+  vtkSetMacro(PrintheadRadius, double);
+  vtkGetMacro(PrintheadRadius, double);
+  ///@}
+
+  /// The nozzle the toolpath was planned for (optional, not owned beyond a reference; e.g.
+  /// GLPrintPipeline's): its PrintheadFile, when set, gives the printhead's radius.
+  void SetNozzle(vtkGLNozzle* nozzle);
+  /// The printhead radius of the last solve (mm): PrintheadRadius or the nozzle file's.
+  double GetPrintheadRadiusUsed() const { return this->PrintheadRadiusUsed; }
 
   ///@{
   /// The part (platform) frame in the flange frame, the TCP of the program: its origin (mm,
@@ -268,6 +288,7 @@ protected:
   char* Robot = nullptr;
   double NozzleTip[3];
   double NozzleAxis[3];
+  double PrintheadRadius;
   double PartOnFlangePosition[3];
   double PartOnFlangeRotation[3];
   vtkIdType MaxFileBytes;
@@ -286,6 +307,10 @@ private:
   void ResetResults();
   /// The cell of the parameters (m and rad).
   geolattice::RobotCell MakeCell() const;
+  /// PrintheadRadius, or the radius of the nozzle's printhead file (mm).
+  double PrintheadRadiusFor() const;
+  vtkSmartPointer<vtkGLNozzle> Nozzle;
+  double PrintheadRadiusUsed = 0;
   /// The solution of `path` (input `input`) with the current parameters: the one kept if it
   /// is still valid, else solved now and kept; sets the results. Throws for an unreachable
   /// cell set-up (after marking every point unreachable).

@@ -95,11 +95,15 @@
 
 namespace geolattice {
 
+/// m: the printhead's largest distance from its axis when no printhead is given: a slim hot end
+/// with its holder (testdata/printhead_slim.obj's carriage: 28.3 mm).
+constexpr double kPrintheadRadius = 0.028;
+/// m: the arm's surfaces keep this much more than the printhead's radius from its axis.
+constexpr double kLinkNozzleMargin = 0.007;
 /// m: the distance of the arm's surfaces (ArmCapsules.h: base to wrist 1) from the nozzle's
-/// axis below which the arm may hit the nozzle: the radius of a slim hot end with its holder
-/// (testdata/printhead_slim.obj's carriage: 28.3 mm) and a margin. The wrist 2 and 3 links
-/// behind the plate are the collision verifier's (the plate is an obstacle there).
-constexpr double kLinkNozzleSafeDistance = 0.035;
+/// axis below which the arm may hit the nozzle, for the default printhead. The wrist 2 and 3
+/// links behind the plate are the collision verifier's (the plate is an obstacle there).
+constexpr double kLinkNozzleSafeDistance = kPrintheadRadius + kLinkNozzleMargin;
 
 /// m: the distance of the arm's surfaces (ArmCapsules.h: base to wrist 2) from the part the
 /// robot holds (PartArmClearance.h) below which the arm may hit it: the part's samples (the

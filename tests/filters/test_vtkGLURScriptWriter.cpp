@@ -12,11 +12,13 @@
 #include "GLTestToolpath.h"
 #include "../common/URScriptSyntax.h"
 
+#include "robot/RobotPathSolver.h"
 #include "vtkGLArrayNames.h"
 #include "vtkGLCurvedLayerSlicer.h"
 #include "vtkGLGeodesicDistanceFields.h"
 #include "vtkGLLatticeInfill.h"
 #include "vtkGLMeshReader.h"
+#include "vtkGLNozzle.h"
 #include "vtkGLPlaceOnPlatform.h"
 #include "vtkGLPrintSequencer.h"
 #include "vtkGLSkeletonTree.h"
@@ -342,6 +344,65 @@ TEST(vtkGLURScriptWriter, BadInputIsReported) {
     c.expectError("cannot create " + missing);
     EXPECT_EQ(c.writer->GetErrorCode(), vtkErrorCode::CannotOpenFileError);
   }
+}
+
+namespace {
+/// A closed octagonal prism OBJ (mm): circumradius `radius` about the z axis, from z = 0 (the
+/// tip's plane, the origin at the centre of that face) to `height`.
+std::string prismObj(double radius, double height) {
+  std::ostringstream obj;
+  for (double z : {0.0, height}) {
+    for (int k = 0; k < 8; ++k) {
+      obj << "v " << radius * std::cos(k * M_PI / 4) << " " << radius * std::sin(k * M_PI / 4)
+          << " " << z << "\n";
+    }
+  }
+  obj << "v 0 0 0\nv 0 0 " << height << "\n";  // 17, 18: the faces' centres
+  for (int k = 0; k < 8; ++k) {
+    const int a = 1 + k, b = 1 + (k + 1) % 8;
+    obj << "f " << a << " " << b << " " << b + 8 << "\nf " << a << " " << b + 8 << " " << a + 8
+        << "\nf 17 " << b << " " << a << "\nf 18 " << a + 8 << " " << b + 8 << "\n";
+  }
+  return obj.str();
+}
+}  // namespace
+
+// The printhead sets how far the arm keeps off the nozzle's axis: PrintheadRadius (default 28
+// mm = core's kPrintheadRadius), or the largest radius of the PrintheadFile of a nozzle given
+// with SetNozzle; the arm's surfaces keep 7 mm more (kLinkNozzleMargin).
+TEST(vtkGLURScriptWriter, ThePrintheadSetsHowFarTheArmKeepsOffTheNozzle) {
+  const fs::path dir = glFreshDirectory("urscript-printhead");
+  auto path = makeTestToolpath();
+  vtkNew<vtkGLURScriptWriter> w;
+  vtkNew<GLTestErrorObserver> errors;
+  errors->Observe(w);
+  w->SetInputData(path);
+  w->SetFileName((dir / "part.script").string().c_str());
+  EXPECT_EQ(w->GetPrintheadRadius(), 1000 * geolattice::kPrintheadRadius);
+  ASSERT_EQ(w->Write(), 1) << errors->Errors();
+  EXPECT_EQ(w->GetPrintheadRadiusUsed(), 28.0);
+  EXPECT_GE(w->GetMinLinkNozzleDistance(), 35.0 - 1e-9);
+  // A printhead of 60 mm radius from the nozzle's file: kept 67 mm off (the default's program
+  // comes nearer, so this one is planned anew).
+  EXPECT_LT(w->GetMinLinkNozzleDistance(), 67.0);
+  const std::string file = (dir / "fat.obj").string();
+  {
+    std::ofstream out(file);
+    out << prismObj(60, 100);
+  }
+  vtkNew<vtkGLNozzle> nozzle;
+  nozzle->SetPrintheadFile(file.c_str());
+  w->SetNozzle(nozzle);
+  ASSERT_EQ(w->Write(), 1) << errors->Errors();
+  EXPECT_NEAR(w->GetPrintheadRadiusUsed(), 60.0, 1e-9);
+  EXPECT_GE(w->GetMinLinkNozzleDistance(), 67.0 - 1e-9);
+  // Without the file the property counts again; a radius out of (0, 1000) mm is refused.
+  nozzle->SetPrintheadFile(nullptr);
+  w->SetPrintheadRadius(0);
+  EXPECT_EQ(w->Write(), 0);
+  EXPECT_NE(errors->Errors().find("PrintheadRadius must be in (0, 1000) mm"), std::string::npos)
+      << errors->Errors();
+  fs::remove_all(dir);
 }
 
 TEST(vtkGLURScriptWriter, UnreachablePointsAreReportedNotSkipped) {
