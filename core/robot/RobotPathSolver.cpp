@@ -982,8 +982,6 @@ bool planReconfigurationMove(const RobotCell& cell, const Eigen::Vector3d& centr
   return false;
 }
 
-/// Step 4 (module comment): true and the path with its reconfigurations at air moves in
-/// `result`, or false when no path without unreachable points and large steps is found so.
 /// Where the step from point at to at + 1 of `path` turns a joint by more than half a turn (it
 /// was wound to a limit, and unwrapping it inside the limits turned it back), marks the last
 /// air move a → a + 1 with a ≤ at, not excluded and not yet marked, to turn that joint back
@@ -1008,6 +1006,8 @@ bool unwindAtLastAirMove(const RobotPath& path, const std::vector<int>& kind,
   return false;
 }
 
+/// Step 4 (module comment): true and the path with its reconfigurations at air moves in
+/// `result`, or false when no path without unreachable points and large steps is found so.
 bool solveReconfigured(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                        const std::vector<Eigen::Vector3d>& normals, const std::vector<int>& kind,
                        const std::vector<size_t>& coarse, const HeldPart& part,
