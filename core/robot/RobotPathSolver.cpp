@@ -1231,7 +1231,9 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
   const HeldPart part(cell, points, kind);
   RobotPath path;
   std::string noPlan;  // steps 1–3 found no plan: why
-  // The samples (as refined) and options of the plan kept: step 4 starts from them.
+  // The samples (as refined) and options of the plan kept: step 4 starts from them; with no
+  // plan at all, from the denser samples (the generated coil, its nozzle tilted up to 102°:
+  // no plan on 500 or 2,000 samples; step 4 on 2,000 changes configuration three times).
   std::vector<size_t> planSamples = coarse;
   RobotPathOptions planOptions = o;
   {
@@ -1250,8 +1252,12 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
       RobotPathOptions dense = o;
       dense.coarseSamples = o.coarseSamples * o.denserPlanFactor;
       dense.denserPlanFactor = 1;  // none follows it
+      std::vector<size_t> refined = coarseSamplesOf(N, dense);
+      if (!noPlan.empty()) {  // step 4 starts from these if no plan is found on them either
+        planSamples = refined;
+        planOptions = dense;
+      }
       try {
-        std::vector<size_t> refined = coarseSamplesOf(N, dense);
         RobotPath denser = planAndRefine(cell, points, normals, refined, dense, cache);
         if (!noPlan.empty() || problemCount(denser) < problemCount(path)) {
           path = std::move(denser);
@@ -1264,8 +1270,8 @@ RobotPath solveRobotPath(const RobotCell& cell, const std::vector<Eigen::Vector3
       }
     }
   }
-  if (!noPlan.empty() &&
-      (!step4 || !solveReconfigured(cell, points, normals, kind, coarse, part, o, path)))
+  if (!noPlan.empty() && (!step4 || !solveReconfigured(cell, points, normals, kind, planSamples,
+                                                       part, planOptions, path)))
     throw GeoLatticeError(noPlan + bindingClearance(cell, points, normals, coarse, part, o));
   if (noPlan.empty() && step4 && !path.works()) {
     RobotPath reconfigured;

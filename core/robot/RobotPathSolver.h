@@ -54,7 +54,7 @@
 ///    the same way round, whatever the branch and ψ) is turned back a full turn at the last
 ///    air move before it, in the same branch at the same ψ (the Y with the nozzle at the edge
 ///    of the reach: wrist 3, once). Step 4 starts from the samples of the plan 1–3 kept, as
-///    refined.
+///    refined, or where 1–3 found no plan from the denser samples (the generated coil).
 ///    Each change becomes a reconfiguration move (Reconfiguration): the part is moved straight
 ///    away from the nozzle along the nozzle axis until the bounding sphere of the toolpath is
 ///    reconfigurationMargin (which covers the build plate) clear of the nozzle body (a segment

@@ -55,14 +55,15 @@ class ShapesMeshTest(unittest.TestCase):
                 report = self.mesh(name, "--orient", "auto")
                 self.assertGreater(report["orient"]["candidates"], 100)
 
-    def run_coil(self, *args):
+    def run_coil(self, *args, until="toolpath"):
         out = os.path.join(self.tmp, "coil-order" + "".join(args))
         result = subprocess.run([CLI, "run", os.path.join(self.tmp, "coil.obj"), "-o", out, "-q",
-                                 "--until", "toolpath", *args],
+                                 *(["--until", until] if until else []), *args],
                                 capture_output=True, text=True, timeout=600)
         self.assertEqual(result.returncode, 0, result.stderr)
         with open(os.path.join(out, "report.json")) as f:
             report = json.load(f)
+        self.coil_out = out
         return report["sequence"], report["toolpath"]
 
     def test_the_toolpath_chooses_the_print_order(self):
@@ -75,7 +76,7 @@ class ShapesMeshTest(unittest.TestCase):
         self.assertGreater(toolpath["violating_stations"], 0)
         # ... and with --orient auto, the run plans lpt's order too, which prints the disc
         # first, and prints that one (no other side of the coil prints better).
-        sequence, toolpath = self.run_coil("--orient", "auto")
+        sequence, toolpath = self.run_coil("--orient", "auto", until=None)
         tries = sequence["order_tries"]
         self.assertEqual(tries[0]["strategy"], "best")
         self.assertGreater(tries[0]["colliding_stations"], 0)
@@ -83,6 +84,23 @@ class ShapesMeshTest(unittest.TestCase):
         self.assertEqual(sequence["strategy"], tries[-1]["strategy"])
         self.assertEqual(sequence["requested_strategy"], "best")
         self.assertEqual(toolpath["violating_stations"], 0)
+        # The robot prints it too (until the twelfth session it was refused, exit 5: no plan
+        # keeps one configuration over the coil, whose nozzle tilts up to 102 degrees). Step 4,
+        # started from the denser samples, changes configuration at air moves, and where wrist
+        # 3 is wound round the coil to its limit turns it back a full turn in the same branch.
+        with open(os.path.join(self.coil_out, "report.json")) as f:
+            program = json.load(f)["program"]
+        self.assertTrue(program["written"])
+        self.assertEqual(program["unreachable"], 0)
+        self.assertLessEqual(program["max_joint_step_deg"], 20.0)
+        unwinds = [r for r in program["reconfigurations"] if r["from_branch"] == r["to_branch"]]
+        self.assertGreaterEqual(len(unwinds), 1, program["reconfigurations"])
+        scripts = ""
+        for name in sorted(os.listdir(self.coil_out)):
+            if name.endswith(".script"):
+                with open(os.path.join(self.coil_out, name)) as f:
+                    scripts += f.read()
+        self.assertIn("turned back a full turn", scripts)
 
     def test_the_robot_program_chooses_the_orientation(self):
         # The mushroom (a cap of radius 15 mm on a 5 mm stem) as placed prints collision-free,
