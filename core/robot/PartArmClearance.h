@@ -63,7 +63,7 @@ public:
   /// The least distance() over the arm states of a path, in path order (`add` each state
   /// with its toolpath index, increasing), to 1 mm (never below it, at most 1 mm above),
   /// without searching at most states: a state cannot come nearer than the state before's
-  /// distance less how far the links moved (in the part frame), except to material printed in
+  /// distance less how far the capsules moved (in the part frame), except to material printed in
   /// between, which is measured directly; only a state whose bound is more than 1 mm below the
   /// least so far is searched (exactly: a raster of 1M points under a compact part searched at
   /// nearly every state, 5.1 s instead of 1.9 s for the whole path solve).
