@@ -7,12 +7,6 @@
 
 namespace geolattice {
 
-const char* armPartName(int part) {
-  static const char* const kNames[kArmParts] = {"base",    "shoulder", "upper arm", "elbow",
-                                                "forearm", "wrist 1",  "wrist 2",   "wrist 3"};
-  return part >= 0 && part < kArmParts ? kNames[part] : "arm";
-}
-
 ArmCapsules armCapsules(const ArmShape& s, const std::array<Eigen::Vector3d, 6>& o) {
   const Eigen::Vector3d u = (o[3] - o[2]).normalized();  // joints 2–4's axis
   const Eigen::Vector3d joint5 = (o[4] - o[3]).normalized(), joint6 = (o[5] - o[4]).normalized();

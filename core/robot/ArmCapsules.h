@@ -44,9 +44,6 @@ enum ArmPart {
   kArmParts
 };
 
-/// "base", "shoulder", "upper arm", "elbow", "forearm", "wrist 1", "wrist 2", "wrist 3".
-const char* armPartName(int part);
-
 /// The parts checked against each obstacle, as ranges [first, last] of ArmPart:
 ///  - the nozzle: base to wrist 1 (wrist 2 and 3 are behind the plate, which the collision
 ///    verifier checks against the nozzle);
