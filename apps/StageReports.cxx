@@ -290,6 +290,7 @@ void reportToolpath(GLPrintPipeline& p, vtkDataObject* t, Json& s) {
   s["uncleared_stations"] = count(t, arrays::ToolpathUnclearedStations);
   s["max_axis_tilt_deg"] = fieldValue(t, arrays::ToolpathMaxAxisTilt);
   s["replanned_hops"] = count(t, arrays::ToolpathReplannedHops);
+  s["aligned_transitions"] = count(t, arrays::ToolpathAlignedTransitions);
   s["thickness_dev_min"] = fieldValue(t, arrays::ToolpathThicknessDeviation, 0);
   s["thickness_dev_max"] = fieldValue(t, arrays::ToolpathThicknessDeviation, 1);
   s["capped_vertices"] = count(t, arrays::ToolpathCappedVertices);

@@ -309,6 +309,8 @@ constexpr const char* ToolpathCollisionFree = "ToolpathCollisionFree";
 constexpr const char* ToolpathMaxAxisTilt = "ToolpathMaxAxisTilt";  ///< largest AxisTilt (degrees)
 constexpr const char* ToolpathReplannedHops =
     "ToolpathReplannedHops";  ///< hops onto an upper node sent over the safe box (they collided)
+/// transitions whose air stations collided, planned again along their stations' final axes
+constexpr const char* ToolpathAlignedTransitions = "ToolpathAlignedTransitions";
 constexpr const char* ToolpathSeconds = "ToolpathSeconds";  ///< wall time of the planning (s)
 
 /// Field data of vtkGLPrintSummary's table: the verdict in words (one string).

@@ -196,6 +196,7 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   count(gl::arrays::ToolpathCollisionFree, path.unclearedStations == 0 ? 1 : 0);
   count(gl::arrays::ToolpathMaxAxisTilt, path.maxAxisTiltDeg);
   count(gl::arrays::ToolpathReplannedHops, path.replannedHops);
+  count(gl::arrays::ToolpathAlignedTransitions, path.alignedTransitions);
   count(gl::arrays::ToolpathSeconds, path.seconds);
 }
 

@@ -2,6 +2,7 @@
 
 #include "common/Error.h"
 #include "common/Progress.h"
+#include "toolpath/AirMoveRealignment.h"
 #include "toolpath/EulerTour.h"
 #include "toolpath/EulerianTrimming.h"
 #include "toolpath/PathSubdivision.h"
@@ -444,6 +445,7 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
   // Their material is also the same up to inserted points: every pass keeps the obstacles'
   // kd-trees of the first where it can (PathObstacleTrees).
   PathObstacleTrees trees;
+  std::vector<int> uncleared;
   for (int attempt = 0;; ++attempt) {
     path = base;
     loopsAt = loopsAtStart;
@@ -560,9 +562,9 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
              hopped[tour] && !overTheBox[tour];
     };
     constexpr int kLastAttempt = 2;
-    const std::vector<int> uncleared = finishAxes(
-        path, o, attemptProgress.part(0.3, 1.0),
-        attempt < kLastAttempt ? std::function<bool(int)>(replannable) : nullptr, &memos, &trees);
+    uncleared = finishAxes(path, o, attemptProgress.part(0.3, 1.0),
+                           attempt < kLastAttempt ? std::function<bool(int)>(replannable) : nullptr,
+                           &memos, &trees);
     int replan = 0;
     for (int i : uncleared) {
       if (replannable(i)) {
@@ -576,6 +578,9 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
     }
   }
   path.replannedHops = replannedHops;
+  if (o.alignTransitions && !uncleared.empty()) {
+    realignCollidingAirMoves(path, uncleared, o);
+  }
   path.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return path;
 }

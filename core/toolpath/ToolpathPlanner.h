@@ -47,6 +47,10 @@ struct ToolpathOptions {
   double safeMargin = 5.0;        ///< margin of the safe box around the in-process part (mm, >= 0)
   double lift = 2.0;              ///< lift for hops onto an upper node (mm, > 0)
   double retraction = 1.0;  ///< filament retracted before an air move and primed after (mm, >= 0)
+  /// An air move with colliding stations is laid again leaving and reaching its stations along
+  /// their final (cleared) axes instead of their layer normals (AirMoveRealignment.h,
+  /// Toolpath::alignedTransitions). Off only to compare with the paper's air moves.
+  bool alignTransitions = true;
   bool supportPerimeter = true;   ///< add the jagged support perimeter (SupportPerimeter.h)
   double toothLength = 0.0;       ///< l (mm); 0 = 2 w
   double maxSegmentLength = 1.0;  ///< longer segments are subdivided (mm, >= 0; 0 = never), so
@@ -102,6 +106,10 @@ struct Toolpath {
   int unclearedStations = 0;  ///< stations still colliding after the last round
   int clearanceRounds = 0;
   int replannedHops = 0;  ///< hops onto an upper node that collided and went over the safe box
+  /// air moves whose stations collided, laid again along the final axes of the stations they
+  /// leave and reach (AirMoveRealignment.h); rotationSteps and subdivisionPoints stay those of
+  /// the path as planned before
+  int alignedTransitions = 0;
   double maxAxisTiltDeg = 0;
   double filamentLength = 0;   ///< Σ ΔE over print moves (mm)
   double depositedVolume = 0;  ///< Σ μ w h̄ L over print moves (mm³)

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <map>
 #include <string>
 
 using namespace geolattice;
@@ -187,6 +188,61 @@ TEST(ToolpathPlanner, ThreeBranchTreeWideNozzle) {
   // NA 45°: the curved tip caps rise into the nozzle inside their own sub-graph along ∇γ.
   expectGoodToolpath("three-branch tree NA 60",
                      buildPart("three_branch_tree.obj", 50, 2.0, 4.0, 60), 60);
+}
+
+TEST(ToolpathPlanner, AirMovesWhoseStationsCollideAreLaidAlongTheFinalAxes) {
+  // Spot at 40 mm: the axis clearance tilts stations where air moves end, and a move laid along
+  // their untilted normals moves the nozzle sideways to its own axis next to the material. Laid
+  // again along the final axes, fewer air stations collide (the verifier, strict, with the
+  // build plate), the material is the same, and each relaid approach runs along the final axis
+  // of the first material point it reaches.
+  const Part part = buildPart("spot.obj", 40, 2.0, 4.0, 45);
+  ToolpathOptions o;
+  const Toolpath aligned = planToolpath(part.lattice, part.tree, part.sequence.order, o);
+  o.alignTransitions = false;
+  const Toolpath normals = planToolpath(part.lattice, part.tree, part.sequence.order, o);
+  EXPECT_GT(aligned.alignedTransitions, 0);
+  EXPECT_EQ(normals.alignedTransitions, 0);
+  EXPECT_EQ(aligned.printLength, normals.printLength);
+  EXPECT_EQ(aligned.perimeterLength, normals.perimeterLength);
+  EXPECT_EQ(aligned.retractions, normals.retractions);
+  EXPECT_EQ(aligned.points.size(), aligned.axisTilt.size());
+  auto collidingAirStations = [&](const Toolpath& path) {
+    const size_t N = path.points.size();
+    std::vector<int> time(N);
+    std::vector<char> material(N);
+    for (size_t i = 0; i < N; ++i) {
+      time[i] = static_cast<int>(i);
+      material[i] = path.kind[i] != MoveKind::Air;
+    }
+    const CollisionReport r = verifyNozzleClearance(path.points, path.normals, time, o.nozzle, 0,
+                                                    nullptr, &material, &o.plate);
+    long long air = 0;
+    for (int i : r.violatingStationIds)
+      air += path.kind[i] == MoveKind::Air;
+    EXPECT_EQ(r.violatingStations, path.unclearedStations);  // the planner's count is the verdict
+    return air;
+  };
+  const long long before = collidingAirStations(normals), after = collidingAirStations(aligned);
+  // The approaches: the air points from the last one off the approach line (the box's side)
+  // to the air point at the next start vertex; relaid, they keep that start's final axis.
+  int alongTheAxis = 0, approaches = 0;
+  for (size_t i = 1; i + 1 < aligned.points.size(); ++i) {
+    if (aligned.kind[i] != MoveKind::Air || aligned.kind[i + 1] == MoveKind::Air)
+      continue;
+    ++approaches;
+    const Vec3& axis = aligned.normals[i + 1];
+    const Vec3 back = (aligned.points[i - 1] - aligned.points[i]).normalized();
+    if (aligned.normals[i].dot(axis) > std::cos(0.1 * M_PI / 180) &&
+        back.dot(axis) > std::cos(0.1 * M_PI / 180))
+      ++alongTheAxis;
+  }
+  std::printf(
+      "[toolpath] spot 40 mm: %d air moves relaid, colliding air stations %lld -> %lld; %d of %d "
+      "approaches along the first station's final axis\n",
+      aligned.alignedTransitions, before, after, alongTheAxis, approaches);
+  EXPECT_LT(after, before);
+  EXPECT_GE(alongTheAxis, aligned.alignedTransitions);
 }
 
 TEST(RobotPath, YShapeInTheUr5Cell) {
