@@ -27,16 +27,7 @@ struct Chain {
 };
 
 void appendPoint(Toolpath& q, const Toolpath& p, size_t i) {
-  q.points.push_back(p.points[i]);
-  q.normals.push_back(p.normals[i]);
-  q.kind.push_back(p.kind[i]);
-  q.thickness.push_back(p.thickness[i]);
-  q.width.push_back(p.width[i]);
-  q.extrusion.push_back(p.extrusion[i]);
-  q.feedRate.push_back(p.feedRate[i]);
-  q.layer.push_back(p.layer[i]);
-  q.subgraph.push_back(p.subgraph[i]);
-  q.pathIndex.push_back(p.pathIndex[i]);
+  q.appendPointOf(p, i);
   q.axisTilt.push_back(i < p.axisTilt.size() ? p.axisTilt[i] : 0.0);
 }
 
@@ -252,16 +243,7 @@ std::vector<int> realignCollidingAirMoves(Toolpath& path, const std::vector<int>
     }
   }
   std::sort(left.begin(), left.end());
-  path.points.swap(q.points);
-  path.normals.swap(q.normals);
-  path.kind.swap(q.kind);
-  path.thickness.swap(q.thickness);
-  path.width.swap(q.width);
-  path.extrusion.swap(q.extrusion);
-  path.feedRate.swap(q.feedRate);
-  path.layer.swap(q.layer);
-  path.subgraph.swap(q.subgraph);
-  path.pathIndex.swap(q.pathIndex);
+  path.swapPoints(q);
   path.axisTilt.swap(q.axisTilt);
   path.alignedTransitions += kept;
   path.unclearedStations = static_cast<int>(left.size());

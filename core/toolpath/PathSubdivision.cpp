@@ -54,16 +54,7 @@ SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLe
     flagsOut.reserve(total);
   }
   auto pushCopy = [&](size_t i) {
-    q.points.push_back(p.points[i]);
-    q.normals.push_back(p.normals[i]);
-    q.kind.push_back(p.kind[i]);
-    q.thickness.push_back(p.thickness[i]);
-    q.width.push_back(p.width[i]);
-    q.extrusion.push_back(p.extrusion[i]);
-    q.feedRate.push_back(p.feedRate[i]);
-    q.layer.push_back(p.layer[i]);
-    q.subgraph.push_back(p.subgraph[i]);
-    q.pathIndex.push_back(p.pathIndex[i]);
+    q.appendPointOf(p, i);
     if (extra) {
       extraOut.push_back((*extra)[i]);
     }
@@ -103,16 +94,7 @@ SubdivisionCounts subdivideToolpath(Toolpath& p, double maxTurnRad, double maxLe
     }
     pushCopy(i);
   }
-  p.points.swap(q.points);
-  p.normals.swap(q.normals);
-  p.kind.swap(q.kind);
-  p.thickness.swap(q.thickness);
-  p.width.swap(q.width);
-  p.extrusion.swap(q.extrusion);
-  p.feedRate.swap(q.feedRate);
-  p.layer.swap(q.layer);
-  p.subgraph.swap(q.subgraph);
-  p.pathIndex.swap(q.pathIndex);
+  p.swapPoints(q);
   if (extra) {
     extra->swap(extraOut);
   }

@@ -129,6 +129,32 @@ struct Toolpath {
     subgraph.reserve(n);
     pathIndex.reserve(n);
   }
+  /// Appends point i of `from` to every per-point array but axisTilt.
+  void appendPointOf(const Toolpath& from, size_t i) {
+    points.push_back(from.points[i]);
+    normals.push_back(from.normals[i]);
+    kind.push_back(from.kind[i]);
+    thickness.push_back(from.thickness[i]);
+    width.push_back(from.width[i]);
+    extrusion.push_back(from.extrusion[i]);
+    feedRate.push_back(from.feedRate[i]);
+    layer.push_back(from.layer[i]);
+    subgraph.push_back(from.subgraph[i]);
+    pathIndex.push_back(from.pathIndex[i]);
+  }
+  /// Swaps every per-point array but axisTilt with other's (the report fields stay).
+  void swapPoints(Toolpath& other) {
+    points.swap(other.points);
+    normals.swap(other.normals);
+    kind.swap(other.kind);
+    thickness.swap(other.thickness);
+    width.swap(other.width);
+    extrusion.swap(other.extrusion);
+    feedRate.swap(other.feedRate);
+    layer.swap(other.layer);
+    subgraph.swap(other.subgraph);
+    pathIndex.swap(other.pathIndex);
+  }
 };
 
 /// Pieces of split sub-graphs in the printing order (sequence/SubgraphSplitting.h): a piece is
