@@ -1152,27 +1152,32 @@ namespace {
 /// Which of the arm's clearances keeps a coarse path that no plan reaches out of reach (module
 /// comment, "The nozzle", "The part"): the coarse plan of steps 1–3 (one configuration for
 /// the whole path; step 4 may still need a change where this says one clearance alone is
-/// enough) made again with the arm allowed near the part it holds, near the nozzle, or both.
-/// "; ..." naming it, or "" (the reach, the joint limits or the floor stop it, or
-/// explainUnreachable is off). Only after everything else failed: two or three coarse plans.
+/// enough) made again with the arm allowed near the part it holds, near the nozzle, or both,
+/// and then with the arm and the part allowed down to the floor (a part too tall for the
+/// nozzle's height: the robot cannot hold its base low enough). "; ..." naming it, or "" (the
+/// reach or the joint limits stop it, or explainUnreachable is off). Only after everything else
+/// failed: two to four coarse plans.
 std::string bindingClearance(const RobotCell& cell, const std::vector<Eigen::Vector3d>& points,
                              const std::vector<Eigen::Vector3d>& normals,
                              const std::vector<size_t>& coarse, const HeldPart& part,
                              const RobotPathOptions& o) {
-  if (!o.explainUnreachable || !(o.linkPartClearance > 0 || o.linkNozzleClearance > 0))
+  if (!o.explainUnreachable)
     return "";
-  auto reachesWith = [&](double nozzle, double held) {
+  auto reachesWith = [&](double nozzle, double held, double floor) {
     RobotPathOptions r = o;
     r.linkNozzleClearance = nozzle;
     r.linkPartClearance = held;
+    r.floorClearance = floor;
     StateCache cache(cell, points, normals, r, r.threads, part);
     return !planCoarse(cell, points, normals, coarse, r, cache).empty();
   };
   const auto mm = [](double m) {
     return std::to_string(static_cast<int>(std::lround(1000 * m)));
   };
-  const bool withoutPart = o.linkPartClearance > 0 && reachesWith(o.linkNozzleClearance, 0);
-  const bool withoutNozzle = o.linkNozzleClearance > 0 && reachesWith(0, o.linkPartClearance);
+  const double floor = o.floorClearance;
+  const bool withoutPart = o.linkPartClearance > 0 && reachesWith(o.linkNozzleClearance, 0, floor);
+  const bool withoutNozzle =
+      o.linkNozzleClearance > 0 && reachesWith(0, o.linkPartClearance, floor);
   if (withoutPart && withoutNozzle)
     return "; what stops it is keeping the arm off the nozzle and off the part at once (one "
            "configuration throughout reaches the path with either alone)";
@@ -1184,9 +1189,16 @@ std::string bindingClearance(const RobotCell& cell, const std::vector<Eigen::Vec
     return "; what stops it is the nozzle: one configuration throughout reaches the path with "
            "the arm nearer than " +
            mm(o.linkNozzleClearance) + " mm to the nozzle";
-  if (reachesWith(0, 0))
+  if ((o.linkPartClearance > 0 || o.linkNozzleClearance > 0) && reachesWith(0, 0, floor))
     return "; one configuration throughout reaches the path only with the arm near both the "
            "nozzle and the part";
+  // At any height (the floor is z = 0 of the base frame).
+  if (reachesWith(o.linkNozzleClearance, o.linkPartClearance, -1e9))
+    return "; what stops it is the floor: one configuration throughout reaches the path only "
+           "with the arm or the part nearer than " +
+           mm(floor) +
+           " mm to the floor (the part is too tall for the nozzle's height: raise the nozzle "
+           "tip, mount the part nearer the flange or print it lying lower)";
   return "";
 }
 

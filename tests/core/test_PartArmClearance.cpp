@@ -191,6 +191,14 @@ TEST(RobotPathSolver, AnUnreachableCellNamesTheClearanceThatStopsIt) {
   e = errorOf(cell, points, normals, o);
   EXPECT_NE(e.find("unreachable cell set-up"), std::string::npos) << e;
   EXPECT_EQ(e.find("what stops it"), std::string::npos) << e;
+  // The floor: no configuration keeps the arm and the part 300 mm above it (the nozzle tip is
+  // 350 mm up), every one does at any height.
+  o = RobotPathOptions{};
+  o.floorClearance = 0.3;
+  e = errorOf(cell, points, normals, o);
+  EXPECT_NE(e.find("300 mm above the floor"), std::string::npos) << e;
+  EXPECT_NE(e.find("what stops it is the floor"), std::string::npos) << e;
+  EXPECT_NE(e.find("raise the nozzle tip"), std::string::npos) << e;
 }
 
 TEST(RobotPathSolver, TheArmIsKeptOffThePartItHolds) {
