@@ -48,13 +48,13 @@ double linkNozzleClearanceFor(double radius) {
 
 /// "N of M toolpath points are unreachable … (first: a, b, …)".
 std::string describeUnreachable(const std::vector<vtkIdType>& unreachable, size_t points,
-                                const std::string& robot, double linkNozzleClearance) {
+                                const std::string& robot, const std::string& nozzleClearance) {
   std::ostringstream s;
   s << unreachable.size() << " of " << points << " toolpath points are unreachable for the "
     << robot << " in this cell (out of reach, past a joint limit, or reached only with the arm "
     << "or the part lower than " << kMillimetresPerMetre * gl::RobotPathOptions{}.floorClearance
-    << " mm above the floor it stands on, or with the arm nearer than "
-    << kMillimetresPerMetre * linkNozzleClearance << " mm to the nozzle's axis or nearer than "
+    << " mm above the floor it stands on, or with the arm nearer than " << nozzleClearance
+    << " to the nozzle's axis or nearer than "
     << kMillimetresPerMetre * gl::RobotPathOptions{}.linkPartClearance
     << " mm to the part it holds; first: ";
   const size_t shown = std::min<size_t>(unreachable.size(), 10);
@@ -100,9 +100,24 @@ void vtkGLURScriptWriter::SetNozzle(vtkGLNozzle* nozzle) {
   }
 }
 
-double vtkGLURScriptWriter::PrintheadRadiusFor() const {
+gl::RobotPathOptions vtkGLURScriptWriter::PathOptions() const {
+  gl::RobotPathOptions o;
+  o.maxJointStepDeg = this->MaxJointStep;
+  o.reconfigure = this->Reconfigure != 0;
+  o.linkNozzleClearance = linkNozzleClearanceFor(this->PrintheadRadiusUsed);
+  o.nozzleSections = this->NozzleSectionsUsed;
+  return o;
+}
+
+void vtkGLURScriptWriter::UsePrinthead() {
   const char* file = this->Nozzle ? this->Nozzle->GetPrintheadFile() : nullptr;
-  return file && *file ? gl::readPrintheadFile(file)->maxRadius() : this->PrintheadRadius;
+  this->PrintheadRadiusUsed = this->PrintheadRadius;
+  this->NozzleSectionsUsed.clear();
+  if (file && *file) {
+    const auto head = gl::readPrintheadFile(file);
+    this->PrintheadRadiusUsed = head->maxRadius();
+    this->NozzleSectionsUsed = gl::nozzleSectionsFor(*head, gl::kLinkNozzleMargin);
+  }
 }
 
 std::string vtkGLURScriptWriter::ProgramFileName(const std::string& fileName, int k) {
@@ -196,7 +211,7 @@ void vtkGLURScriptWriter::CheckParameters() {
     throw gl::GeoLatticeError("URScript writer: PrintheadRadius must be in (0, 1000) mm (got " +
                               std::to_string(this->PrintheadRadius) + ")");
   }
-  this->PrintheadRadiusUsed = this->PrintheadRadiusFor();  // reads the nozzle's file, if any
+  this->UsePrinthead();  // reads the nozzle's file, if any
   // The program options (checked with the property names; the core checks them again).
   if (this->MaxFileBytes < 10000) {
     throw gl::GeoLatticeError(
@@ -230,11 +245,13 @@ struct vtkGLURScriptWriter::Solution {
   std::string robot;
   std::array<double, 15> numbers{};  ///< tip, axis, mounting, max step, layout and
                                      ///< reconfigure, printhead radius
+  std::vector<double> sections;      ///< the printhead's sections (from, to, clearance)
   gl::CellLayoutResult layout;
   std::string unreachableCell;  ///< the error of an unreachable cell set-up, or ""
 
   bool sameAs(const Solution& o) const {
-    return input == o.input && inputTime == o.inputTime && robot == o.robot && numbers == o.numbers;
+    return input == o.input && inputTime == o.inputTime && robot == o.robot &&
+           numbers == o.numbers && sections == o.sections;
   }
 };
 
@@ -279,13 +296,13 @@ const gl::CellLayoutResult& vtkGLURScriptWriter::Solve(vtkPolyData* input,
                   this->MaxJointStep,
                   static_cast<double>(2 * (this->SearchCellLayout != 0) + (this->Reconfigure != 0)),
                   this->PrintheadRadiusUsed};
+  for (const gl::NozzleSection& s : this->NozzleSectionsUsed) {
+    key->sections.insert(key->sections.end(), {s.from, s.to, s.clearance});
+  }
   if (!this->Solved || !this->Solved->sameAs(*key)) {
     this->Solved.reset();
     // Joints along the path (one core call: progress before and after it).
-    gl::RobotPathOptions pathOptions;
-    pathOptions.maxJointStepDeg = this->MaxJointStep;
-    pathOptions.reconfigure = this->Reconfigure != 0;
-    pathOptions.linkNozzleClearance = linkNozzleClearanceFor(this->PrintheadRadiusUsed);
+    const gl::RobotPathOptions pathOptions = this->PathOptions();
     // The cell as given, else the best mounting of the part on the flange that the robot
     // can follow (core/robot/CellLayout.h).
     gl::CellLayoutOptions layoutOptions;
@@ -427,7 +444,7 @@ void vtkGLURScriptWriter::WriteData() {
         if (!this->Unreachable.empty()) {
           const std::string text =
               describeUnreachable(this->Unreachable, path.points.size(), cell.robot.name,
-                                  linkNozzleClearanceFor(this->PrintheadRadiusUsed));
+                                  gl::nozzleClearanceText(this->PathOptions()));
           if (!this->AllowUnreachable) {
             throw gl::GeoLatticeError(text +
                                       ": nothing written; move the nozzle tip or the part on the "

@@ -82,7 +82,9 @@ class vtkGLNozzle;
 class vtkPolyData;
 namespace geolattice {
 struct CellLayoutResult;
+struct NozzleSection;
 struct RobotCell;
+struct RobotPathOptions;
 struct ToolpathArrays;
 }  // namespace geolattice
 
@@ -114,7 +116,9 @@ public:
   /// The printhead's largest distance from its axis (mm, default 28 = core's
   /// kPrintheadRadius, > 0): the arm's surfaces keep kLinkNozzleMargin (7 mm) more than this
   /// from the nozzle's axis. A nozzle given with SetNozzle whose PrintheadFile is set
-  /// overrides it with that file's largest radius (GetPrintheadRadiusUsed).
+  /// overrides it with that file's profile: its radius + 7 mm in sections along the axis
+  /// (core's nozzleSectionsFor: the slim end near the tip is kept less far off than the
+  /// carriage), its largest radius (GetPrintheadRadiusUsed) + 7 mm above its top.
   vtkSetMacro(PrintheadRadius, double);
   vtkGetMacro(PrintheadRadius, double);
   ///@}
@@ -307,10 +311,15 @@ private:
   void ResetResults();
   /// The cell of the parameters (m and rad).
   geolattice::RobotCell MakeCell() const;
-  /// PrintheadRadius, or the radius of the nozzle's printhead file (mm).
-  double PrintheadRadiusFor() const;
+  /// The printhead the arm keeps off: the nozzle's printhead file when it has one (its largest
+  /// radius, and its profile in sections: the slim part near the tip is kept less far off), else
+  /// a cylinder of PrintheadRadius. Sets PrintheadRadiusUsed and NozzleSectionsUsed.
+  void UsePrinthead();
+  /// The path solver's options of the parameters and the printhead used.
+  geolattice::RobotPathOptions PathOptions() const;
   vtkSmartPointer<vtkGLNozzle> Nozzle;
   double PrintheadRadiusUsed = 0;
+  std::vector<geolattice::NozzleSection> NozzleSectionsUsed;
   /// The solution of `path` (input `input`) with the current parameters: the one kept if it
   /// is still valid, else solved now and kept; sets the results. Throws for an unreachable
   /// cell set-up (after marking every point unreachable).

@@ -3,6 +3,7 @@
 #include "common/Error.h"
 #include "common/ParallelFor.h"
 #include "common/SegmentDistance.h"
+#include "nozzle/Printhead.h"
 #include "robot/PartArmClearance.h"
 #include "robot/PartFloor.h"
 
@@ -85,11 +86,30 @@ JointVector unwrapNear(const RobotModel& r, JointVector q, const JointVector& ne
 }
 
 /// Least distance (m) of the arm's surfaces near the nozzle (ArmCapsules.h: base to wrist 1)
-/// from the nozzle's axis segment (tip to nozzleLength along the axis).
+/// from the nozzle's axis between `from` and `to` m above the tip.
+double linkNozzleDistance(const RobotCell& cell, const ArmCapsules& arm, double from, double to) {
+  return armSegmentDistance(arm, kFirstNearNozzle, kLastNearNozzle,
+                            cell.nozzleTip + from * cell.nozzleAxis,
+                            cell.nozzleTip + to * cell.nozzleAxis);
+}
+
+/// ... from the whole axis (tip to nozzleLength).
 double linkNozzleDistance(const RobotCell& cell, const ArmCapsules& arm,
                           const RobotPathOptions& o) {
-  return armSegmentDistance(arm, kFirstNearNozzle, kLastNearNozzle, cell.nozzleTip,
-                            cell.nozzleTip + o.nozzleLength * cell.nozzleAxis);
+  return linkNozzleDistance(cell, arm, 0.0, o.nozzleLength);
+}
+
+/// Whether the arm's surfaces near the nozzle keep linkNozzleClearance off its axis, or each
+/// section's own clearance along its stretch and linkNozzleClearance above the last.
+bool armClearOfNozzle(const RobotCell& cell, const ArmCapsules& arm, const RobotPathOptions& o) {
+  double from = 0;
+  for (const NozzleSection& s : o.nozzleSections) {
+    if (linkNozzleDistance(cell, arm, s.from, s.to) < s.clearance)
+      return false;
+    from = std::max(from, s.to);
+  }
+  return from >= o.nozzleLength ||
+         linkNozzleDistance(cell, arm, from, o.nozzleLength) >= o.linkNozzleClearance;
 }
 
 /// The part the robot holds, as printed up to a toolpath point: against the floor the robot
@@ -120,7 +140,7 @@ bool armClearHolding(const RobotCell& cell, const JointVector& q, const Isometry
   const ArmCapsules arm = armCapsules(cell.robot, q);
   if (lowestArmSurface(arm) < o.floorClearance)
     return false;
-  if (o.linkNozzleClearance > 0 && linkNozzleDistance(cell, arm, o) < o.linkNozzleClearance)
+  if (o.linkNozzleClearance > 0 && !armClearOfNozzle(cell, arm, o))
     return false;
   return part.arm.clear(flange, arm, i, o.linkPartClearance);
 }
@@ -746,9 +766,7 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
           "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously "
           "with the arm and the part " +
           std::to_string(static_cast<int>(std::lround(1000 * o.floorClearance))) +
-          " mm above the floor and the arm " +
-          std::to_string(static_cast<int>(std::lround(1000 * o.linkNozzleClearance))) +
-          " mm off the nozzle and " +
+          " mm above the floor and the arm " + nozzleClearanceText(o) + " off the nozzle and " +
           std::to_string(static_cast<int>(std::lround(1000 * o.linkPartClearance))) +
           " mm off the part it holds (check the nozzle position, the part-on-flange transform "
           "and the part size)" +
@@ -1188,7 +1206,7 @@ std::string bindingClearance(const RobotCell& cell, const std::vector<Eigen::Vec
   if (withoutNozzle)
     return "; what stops it is the nozzle: one configuration throughout reaches the path with "
            "the arm nearer than " +
-           mm(o.linkNozzleClearance) + " mm to the nozzle";
+           nozzleClearanceText(o) + " to the nozzle";
   if ((o.linkPartClearance > 0 || o.linkNozzleClearance > 0) && reachesWith(0, 0, floor))
     return "; one configuration throughout reaches the path only with the arm near both the "
            "nozzle and the part";
@@ -1335,6 +1353,45 @@ double jointSpeedRatio(const RobotCell& cell, const RobotPath& path,
     }
   }
   return ratio;
+}
+
+}  // namespace geolattice
+
+namespace geolattice {
+
+std::vector<NozzleSection> nozzleSectionsFor(const Printhead& head, double margin, double step,
+                                             int maxSections) {
+  constexpr double kMetresPerMm = 0.001;
+  const double height = head.height();  // mm, as the printhead's profile
+  const double dh = 0.5;                // mm: where a section may end
+  std::vector<NozzleSection> sections;
+  for (double from = 0; from < height;) {
+    const double first = head.maxRadiusBetween(from, from + dh);
+    double to = std::min(from + dh, height);
+    if (static_cast<int>(sections.size()) + 1 < maxSections) {
+      while (to < height &&
+             head.maxRadiusBetween(to, std::min(to + dh, height)) <= first + step / kMetresPerMm)
+        to = std::min(to + dh, height);
+    } else {
+      to = height;
+    }
+    sections.push_back({from * kMetresPerMm, to * kMetresPerMm,
+                        head.maxRadiusBetween(from, to) * kMetresPerMm + margin});
+    from = to;
+  }
+  return sections;
+}
+
+std::string nozzleClearanceText(const RobotPathOptions& o) {
+  const auto mm = [](double m) {
+    return std::to_string(static_cast<int>(std::lround(1000 * m)));
+  };
+  double least = o.linkNozzleClearance;
+  for (const NozzleSection& s : o.nozzleSections)
+    least = std::min(least, s.clearance);
+  if (o.nozzleSections.empty() || mm(least) == mm(o.linkNozzleClearance))
+    return mm(o.linkNozzleClearance) + " mm";
+  return mm(least) + "-" + mm(o.linkNozzleClearance) + " mm (along the printhead's profile)";
 }
 
 }  // namespace geolattice

@@ -91,6 +91,7 @@
 #include "robot/RobotCell.h"
 #include "robot/StraightMove.h"
 
+#include <string>
 #include <vector>
 
 namespace geolattice {
@@ -109,6 +110,26 @@ constexpr double kLinkNozzleSafeDistance = kPrintheadRadius + kLinkNozzleMargin;
 /// robot holds (PartArmClearance.h) below which the arm may hit it: the part's samples (the
 /// plate's within 3.5 mm of its surface) and a margin.
 constexpr double kLinkPartSafeDistance = 0.015;
+
+/// A stretch of the nozzle's axis, `from` to `to` m above the tip, and how far from the axis the
+/// arm's surfaces stay there (m): a printhead's radius over that stretch plus a margin.
+struct NozzleSection {
+  double from = 0, to = 0;
+  double clearance = 0;
+};
+
+class Printhead;
+/// The sections of a printhead's profile (nozzle/Printhead.h, mm) from its tip to its top, each
+/// kept its largest radius plus `margin` (m) off: a new section starts where the radius grows
+/// by more than `step` (m) over the section's first, at most `maxSections` of them (the last
+/// takes the rest), so the slim part near the tip is not kept as far off as the carriage above.
+std::vector<NozzleSection> nozzleSectionsFor(const Printhead& head, double margin,
+                                             double step = 0.005, int maxSections = 4);
+
+struct RobotPathOptions;
+/// How far the arm keeps off the nozzle's axis, for messages: "35 mm", or with a printhead's
+/// sections "10-35 mm (along the printhead's profile)".
+std::string nozzleClearanceText(const RobotPathOptions& o);
 
 struct RobotPathOptions {
   int psiSamples = 72;      ///< grid of ψ over 2π (5° steps)
@@ -143,6 +164,11 @@ struct RobotPathOptions {
   /// of the demo bunny, the Y and the three-branch tree drove the forearm through the nozzle 10
   /// mm above the tip (docs/performance.md); until the twelfth, 60 mm from the DH lines.
   double linkNozzleClearance = kLinkNozzleSafeDistance;
+  /// The nozzle's axis in sections nearer the tip, each with its own clearance (a printhead's
+  /// profile: nozzleSectionsFor); linkNozzleClearance then holds above the last one, to
+  /// nozzleLength (the printhead's mount). Empty: linkNozzleClearance from the tip up. Used only
+  /// where linkNozzleClearance > 0.
+  std::vector<NozzleSection> nozzleSections;
   /// m: the arm's surfaces (ArmCapsules.h: base to wrist 2) stay this far from the part as
   /// printed so far and its plate (PartArmClearance.h) at every point, waypoint, retreat and
   /// joint move; a point reached only nearer is unreachable (0: not kept, only measured in

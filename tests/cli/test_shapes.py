@@ -138,6 +138,24 @@ class ShapesMeshTest(unittest.TestCase):
         self.assertGreaterEqual(program["min_link_part_distance_mm"], 15.0 - 1e-6)
         self.assertGreaterEqual(program["min_link_nozzle_distance_mm"], 35.0 - 1e-6)
 
+    def test_the_printheads_profile_lets_the_arm_near_its_slim_end(self):
+        # The mushroom as placed, with the example printhead: its carriage (28.3 mm radius) is
+        # 70-100 mm above the tip, its nozzle and heater below are 3-11 mm wide. Kept 7 mm off
+        # each section of that profile instead of off the carriage's radius all along, the arm
+        # reaches the path (its forearm passes the slim end nearer than 35 mm to the axis).
+        out = os.path.join(self.tmp, "mushroom-printhead")
+        printhead = os.path.join(SOURCE_DIR, "testdata", "printhead_slim.obj")
+        result = subprocess.run([CLI, "run", os.path.join(self.tmp, "mushroom.obj"), "-o", out, "-q",
+                                 "--printhead", printhead], capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(out, "report.json")) as f:
+            program = json.load(f)["program"]
+        self.assertTrue(program["written"])
+        self.assertEqual(program["unreachable"], 0)
+        self.assertLess(program["min_link_nozzle_distance_mm"], 35.0)
+        self.assertGreaterEqual(program["min_link_nozzle_distance_mm"], 10.0 - 1e-6)
+        self.assertGreaterEqual(program["min_link_part_distance_mm"], 15.0 - 1e-6)
+
     def test_a_flat_part_prints_on_its_own_base(self):
         # The wrench lying flat: the search's best is that side on a 10 mm pedestal (its
         # evaluation, with the nozzle along the layer normals, counts a few stations on the plate

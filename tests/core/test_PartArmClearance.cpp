@@ -2,6 +2,9 @@
 // constructed capsules from constructed material and plate against analytic values, material
 // counted from its print index on, the sweep equal to a search at every state, and the path
 // solver keeping the arm off a part it drove the forearm through.
+#include "io/MeshReader.h"
+#include "nozzle/Printhead.h"
+#include "robot/ArmCapsules.h"
 #include "robot/PartArmClearance.h"
 #include "robot/RobotPathSolver.h"
 #include "robot/URKinematics.h"
@@ -11,6 +14,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 #include <string>
 
@@ -227,4 +231,61 @@ TEST(RobotPathSolver, TheArmIsKeptOffThePartItHolds) {
   EXPECT_GE(sampled, kLinkPartSafeDistance - 1e-3);
   // The solver's measure is a lower bound of the sampled one (within a voxel's diagonal).
   EXPECT_LE(kept.minLinkPartDistance, sampled + 1e-3);
+}
+
+TEST(RobotPathSolver, EachSectionOfThePrintheadKeepsTheArmItsOwnDistanceOff) {
+  // The shipped printhead's profile in sections: its nozzle and heat break (radius <= 3 mm),
+  // heater block and heat sink (11 mm), carriage (28.3 mm), each kept its radius + 7 mm off.
+  const Printhead head(readObj(std::string(GEOLATTICE_TESTDATA) + "/printhead_slim.obj"), "slim");
+  const std::vector<NozzleSection> sections = nozzleSectionsFor(head, kLinkNozzleMargin);
+  ASSERT_EQ(sections.size(), 3u);
+  EXPECT_EQ(sections.front().from, 0.0);
+  EXPECT_NEAR(sections.back().to, 0.100, 1e-9);
+  const double expected[3][2] = {{0.030, 0.003}, {0.070, 0.011}, {0.100, 0.02828}};
+  for (size_t k = 0; k < 3; ++k) {
+    EXPECT_NEAR(sections[k].to, expected[k][0], 0.001) << k;
+    EXPECT_NEAR(sections[k].clearance, expected[k][1] + kLinkNozzleMargin, 0.0006) << k;
+    if (k > 0) {
+      EXPECT_EQ(sections[k].from, sections[k - 1].to);
+    }
+  }
+  RobotCell cell;
+  std::vector<Eigen::Vector3d> points, normals;
+  leaningCylinder(points, normals);
+  // A section is kept: 300 mm off the lowest 50 mm of the axis, no configuration reaches it.
+  RobotPathOptions o;
+  o.nozzleSections = {{0.0, 0.05, 0.30}};
+  EXPECT_NE(errorOf(cell, points, normals, o).find("unreachable cell set-up"), std::string::npos);
+  // The printhead's sections: every state of the solved path keeps each section's clearance
+  // from its stretch of the axis and the carriage's above it (sampled every millimetre along
+  // the axis, each capsule's surface measured here, not by the solver's segment distance).
+  o.nozzleSections = sections;
+  o.linkNozzleClearance = sections.back().clearance;
+  const RobotPath path = solveRobotPath(cell, points, normals, o);
+  ASSERT_TRUE(path.unreachable.empty());
+  auto surfaceDistance = [](const Capsule& c, const Eigen::Vector3d& x) {
+    const Eigen::Vector3d d = c.b - c.a;
+    const double t =
+        d.squaredNorm() > 0 ? std::clamp((x - c.a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    return (x - (c.a + t * d)).norm() - c.radius;
+  };
+  double least = 1e9;
+  for (const JointVector& q : path.joints) {
+    const ArmCapsules arm = armCapsules(cell.robot, q);
+    for (int mm = 0; mm <= 250; ++mm) {
+      const double h = mm / 1000.0;
+      double keep = o.linkNozzleClearance;
+      for (const NozzleSection& s : sections) {
+        if (h >= s.from && h <= s.to)
+          keep = std::min(keep, s.clearance);
+      }
+      for (int part = kFirstNearNozzle; part <= kLastNearNozzle; ++part) {
+        const double d = surfaceDistance(arm[part], cell.nozzleTip + h * cell.nozzleAxis);
+        least = std::min(least, d);
+        ASSERT_GE(d, keep - 1e-4) << "part " << part << " at " << mm << " mm above the tip";
+      }
+    }
+  }
+  std::printf("[robot] leaning cylinder, printhead sections: arm %.1f mm from the nozzle's axis\n",
+              1000 * least);
 }
