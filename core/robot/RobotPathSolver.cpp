@@ -1355,10 +1355,6 @@ double jointSpeedRatio(const RobotCell& cell, const RobotPath& path,
   return ratio;
 }
 
-}  // namespace geolattice
-
-namespace geolattice {
-
 std::vector<NozzleSection> nozzleSectionsFor(const Printhead& head, double margin, double step,
                                              int maxSections) {
   constexpr double kMetresPerMm = 0.001;
