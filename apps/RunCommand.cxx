@@ -89,13 +89,14 @@ private:
     // The notes are said once the set-up is final: those of a set-up that another one replaces
     // (FindAPrintableSetUp) would describe a mesh that is not printed.
     this->HoldNotes(true);
+    // The robot program is a gate of the set-up when it is written (the orientation search
+    // ranks sides too tall for the cell last; --orient auto then tries other orientations where
+    // the robot cannot follow the toolpath).
+    P.RobotGate = R.until == "program";
     if (const std::optional<int> done = this->StagesThroughToolpath()) {
       this->HoldNotes(false);
       return *done;  // --until stopped earlier
     }
-    // The robot program is a gate of the set-up when it is written (--orient auto then tries
-    // other orientations where the robot cannot follow the toolpath).
-    P.RobotGate = R.until == "program";
     this->FindAPrintableSetUp();
     this->HoldNotes(false);
     if (R.until == "toolpath") {
@@ -153,6 +154,7 @@ private:
           }
         }
         reportOrientation(placed, this->Section("orient"));
+        this->Section("orient")["max_height_mm"] = P.Orientation->GetMaxHeight();
         this->Write(P.Orientation->GetOutputDataObject(1), "orientation.vtp");
         this->WriteFile("orientation.csv", [&](const std::string& path) {
           writeOrientationCsv(vtkPolyData::SafeDownCast(P.Orientation->GetOutputDataObject(1)),

@@ -111,6 +111,9 @@ void GLPrintPipeline::MatchOrientationToPrint() {
       std::min(this->LatticeInfill->GetAlphaWidth(), this->LatticeInfill->GetBetaWidth()));
   this->Orientation->SetRefineStrategy(this->Sequencer->GetStrategy());
   this->Orientation->SetMaxAxisTilt(this->Planner->GetMaxAxisTilt());
+  if (this->RobotGate) {  // sides too tall for the robot cell rank last
+    this->Orientation->SetMaxHeight(this->ScriptWriter->TallestPart());
+  }
   // ChooseOrientationByToolpath runs refined candidates only: refine as many as it may try.
   this->Orientation->SetRefineCandidates(
       std::max(geolattice::OrientOptions{}.refineCandidates, this->OrientationTries));

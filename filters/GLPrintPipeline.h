@@ -91,7 +91,8 @@ public:
   /// Gives the orientation search's refinement the print's resolution and order: the slicer's
   /// layer interval, the lattice's (smaller) width, the sequencer's strategy and the planner's
   /// largest axis tilt, and refines at least as many candidates as OrientationTries (only
-  /// refined ones are tried). Call after
+  /// refined ones are tried); with RobotGate, ranks the sides too tall for the robot cell last
+  /// (MaxHeight: ScriptWriter's TallestPart). Call after
   /// setting parameters, before updating; it modifies nothing when they already match or the
   /// orientation is Keep (then a print setting re-runs no orientation).
   void MatchOrientationToPrint();
@@ -240,6 +241,8 @@ public:
   /// for the program) about a collision-free toolpath, and ChooseOrientationByToolpath goes on
   /// to the next candidate where the robot cannot follow it (a small mushroom as placed and
   /// as the search's best: no configuration keeps the arm off the nozzle and off the part).
+  /// Set it before MatchOrientationToPrint: the search then ranks sides too tall for the cell
+  /// last (a 120 mm column stands in none: it lies down).
   bool RobotGate = false;
 
   /// The filter of a stage (Mesh: the tetrahedralizer even when skipped).

@@ -241,6 +241,7 @@ void vtkGLAutoOrient::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "Orient: " << this->Orient << (this->Orient == AUTO ? " (auto)" : " (keep)")
      << "\n";
   os << indent << "MinBaseArea: " << this->Options.minBaseArea << " mm2\n";
+  os << indent << "MaxHeight: " << this->Options.maxHeight << " mm\n";
   os << indent << "SphereCandidates: " << this->Options.sphereCandidates << "\n";
   os << indent << "HullCandidates: " << this->Options.hullCandidates << "\n";
   os << indent << "EvaluationTets: " << this->Options.evaluationTets << "\n";

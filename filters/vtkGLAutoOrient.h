@@ -41,7 +41,10 @@
  *   larger), `Refined`, `CoarseCollidingStations`, `OrientSource` (string: keep, hull or sphere,
  *   and the error of a stage that failed on it).
  * Parameters: Orient (default 0 = Keep), the nozzle (vtkGLNozzle, shared), MinBaseArea (mm²,
- *   default 10), SphereCandidates (default 100), HullCandidates (default 24), EvaluationTets
+ *   default 10), MaxHeight (mm, default 0 = none: sides taller than it rank after those that
+ *   fit and collide as little; the command line sets the robot cell's tallest part when it
+ *   writes the program),
+ *   SphereCandidates (default 100), HullCandidates (default 24), EvaluationTets
  *   (default 15000), EvaluationLayerInterval (mm, default 1.5), EvaluationLatticeWidth (mm,
  *   default 8), Pedestal (0 = Never, 1 = When It Helps (default), 2 = Always), PedestalHeight (mm,
  *   default 10), PedestalContactHeight (mm, default 1), RefineCandidates (default 4),
@@ -80,6 +83,14 @@ public:
   ///@{
   /// Contact area with the plate an orientation needs (mm², default 10, >= 0).
   vtkGLOptionMacro(MinBaseArea, double, minBaseArea);
+  ///@}
+
+  ///@{
+  /// Sides on which the part (with its pedestal) stands taller than this rank after the sides
+  /// that fit and collide as little (mm, default 0 = no limit, >= 0): the robot cell's tallest part
+  /// (vtkGLURScriptWriter::TallestPart), whose top layers a taller part would need below the
+  /// floor.
+  vtkGLOptionMacro(MaxHeight, double, maxHeight);
   ///@}
 
   ///@{

@@ -109,6 +109,15 @@ gl::RobotPathOptions vtkGLURScriptWriter::PathOptions() const {
   return o;
 }
 
+double vtkGLURScriptWriter::TallestPart() {
+  try {
+    this->UsePrinthead();
+    return gl::tallestPart(this->MakeCell(), this->PathOptions());
+  } catch (const std::exception&) {
+    return 0.0;  // the writer's own run (and the nozzle's) report the bad parameter
+  }
+}
+
 void vtkGLURScriptWriter::UsePrinthead() {
   const char* file = this->Nozzle ? this->Nozzle->GetPrintheadFile() : nullptr;
   this->PrintheadRadiusUsed = this->PrintheadRadius;

@@ -259,6 +259,11 @@ public:
   /// nozzle's axis over the written path (mm; kept at 35 mm or more, core's
   /// kLinkNozzleSafeDistance: a point reached only nearer is unreachable).
   double GetMinLinkNozzleDistance() const { return this->MinLinkNozzleDistance; }
+  /// The tallest part (mm) this cell prints standing up (core robot/RobotPathSolver.h
+  /// tallestPart: the arm keeps the floor and the nozzle's clearance, with the printhead used,
+  /// while it holds the plate that far below the tip); 0 when it cannot tell (the cell's
+  /// parameters or the printhead file are bad: the writer's own run reports why).
+  double TallestPart();
   /// Least distance of the arm's surfaces (base to wrist 2) from the part the robot holds, as
   /// printed so far, and its plate, over the written path (mm, measured up to 1000, to 1 mm;
   /// kept at 15 mm or more, core's kLinkPartSafeDistance: core/robot/PartArmClearance.h).

@@ -34,6 +34,9 @@ nozzle is a cone of half-angle 45 deg printing curved layers that grow from the 
   thin_plate.obj         flat plate 60 x 60 x 2 mm, edges rounded 0.5 mm, lying flat: thinner
                          than the orientation search's coarse elements, so the search misjudges
                          it as placed; it prints flat in 4 layers (orientation search test)
+  column.obj             slender column 120 mm tall (r 6 -> 5 mm) on a round pad (r 14, 4 mm):
+                         standing, its top layers need the UR5 cell's arm below the floor (the
+                         cell prints 112 mm standing); it prints lying (orientation search test)
 
 Method (deterministic, no random numbers):
   1. Each part is a signed distance function (SDF, < 0 inside) built from exact primitive SDFs
@@ -381,6 +384,18 @@ def thin_plate_sdf(p):
                         T["edge_radius"])
 
 
+COLUMN = dict(height=115.0, radius_base=6.0, radius_top=5.0, pad_radius=14.0, pad_height=4.0,
+              blend=2.0)
+
+
+def column_sdf(p):
+    C = COLUMN
+    shaft = sd_round_cone(p, (0, 0, 0), (0, 0, C["height"]), C["radius_base"], C["radius_top"])
+    pad = sd_round_cylinder_z(p, (0, 0, C["pad_height"] / 2), C["pad_radius"],
+                              C["pad_height"] / 2, 1.0)
+    return on_platform(union([shaft, pad], C["blend"]), p)
+
+
 def _fmt(params):
     return ", ".join(f"{k} {v}" for k, v in params.items())
 
@@ -413,6 +428,9 @@ PARTS = {
     "two_rings": dict(sdf=two_rings_sdf, bounds=(-27, 27, -14, 14, -1, 7), feature=3.0, genus=2,
                       what="two rings (tori) lying flat side by side, touching, blended 2 mm",
                       params=TWO_RINGS),
+    "column": dict(sdf=column_sdf, bounds=(-15, 15, -15, 15, -1, 121), feature=3.0, genus=0,
+                   what="slender column 120 mm tall on a round pad: taller than the robot cell prints standing",
+                   params=COLUMN),
     "thin_plate": dict(sdf=thin_plate_sdf, bounds=(-31, 31, -31, 31, -1, 3), feature=2.0, genus=0,
                        what="flat plate 60 x 60 x 2 mm lying flat, edges rounded 0.5 mm",
                        params=THIN_PLATE),

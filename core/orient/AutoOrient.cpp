@@ -240,6 +240,9 @@ bool better(const OrientCandidate& a, const OrientCandidate& b) {
   if (a.collidingStations != b.collidingStations) {
     return a.collidingStations < b.collidingStations;
   }
+  if (a.fitsHeight != b.fitsHeight) {
+    return a.fitsHeight;
+  }
   if (a.forcedSteps != b.forcedSteps) {
     return a.forcedSteps < b.forcedSteps;
   }
@@ -268,6 +271,8 @@ void OrientOptions::validate() const {
       << hullCandidates << " hull)";
   } else if (!(minBaseArea >= 0) || !std::isfinite(minBaseArea)) {
     m << "orientation: the minimum base area must be >= 0 mm^2 (got " << minBaseArea << ")";
+  } else if (!(maxHeight >= 0) || !std::isfinite(maxHeight)) {
+    m << "orientation: the maximum height must be >= 0 mm, 0 for none (got " << maxHeight << ")";
   } else if (!(contactHeight > 0) || !(layerInterval > 0) || !(latticeWidth > 0) ||
              !(sampleSpacing > 0) || !(baseTolerance >= 0)) {
     m << "orientation: contact height, layer interval, lattice width and sample spacing must be "
@@ -448,6 +453,7 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
       highest = std::max(highest, z);
     }
     c.height = highest - lowest + pedestal;
+    c.fitsHeight = !(o.maxHeight > 0) || c.height <= o.maxHeight;
     c.baseArea = baseContactArea(surface, c.rotation,
                                  pedestal > 0 ? o.pedestalContactHeight : o.contactHeight);
   };

@@ -36,7 +36,9 @@
 ///   2. fewest strict collision stations (material or plate inside the nozzle, the verifier on
 ///      the printing order of the evaluation lattice; for the part as placed on the plate, a
 ///      plate station whose nozzle the toolpath's tilt, at most maxTiltDeg towards +z, lifts
-///      wholly off the plate is not counted);
+///      wholly off the plate is not counted); then, with a maxHeight, the part with its
+///      pedestal no taller than that (the robot cell holds no taller part: tallestPart; a side
+///      that collides less is still preferred, the robot gate's tries then go on);
 ///   3. fewest forced steps of the order (sub-graphs that block each other);
 ///   4. no pedestal (it costs material and a cut) over a pedestal;
 ///   5. the smallest curved-layer overhang fraction (surface that needs support, paper Fig. 8);
@@ -69,6 +71,11 @@ struct OrientOptions {
   int sphereCandidates = 100;  ///< Fibonacci sphere directions (>= 0)
   int hullCandidates = 24;     ///< normals of the largest convex-hull facets (>= 0)
   double minBaseArea = 10.0;   ///< mm² of contact with the plate a candidate needs (>= 0)
+  /// mm (>= 0; 0 = no limit): sides on which the part with its pedestal stands taller than this
+  /// rank after the sides that fit and collide as little (objective 2), e.g. the robot cell's
+  /// tallest part
+  /// (robot/RobotPathSolver.h tallestPart: its top layers need the arm below the floor).
+  double maxHeight = 0.0;
   double contactHeight = 0.3;  ///< faces within this height of the lowest point touch (mm): half
                                ///< a first layer, squeezed onto the plate
   int evaluationTets = 15000;  ///< tets of the coarse evaluation mesh
@@ -118,6 +125,7 @@ struct OrientCandidate {
   double overhangFraction = 0;  ///< curved-layer overhang area fraction
   int layers = 0;
   double height = 0;  ///< part height in this orientation (mm, the surface's, with the pedestal)
+  bool fitsHeight = true;  ///< height <= OrientOptions::maxHeight (or no limit)
   double seconds = 0;
   bool refined = false;  ///< scored again at the printing resolution (the scores above are those)
   long long coarseCollidingStations = 0;  ///< collidingStations of the coarse pass

@@ -1378,6 +1378,39 @@ std::vector<NozzleSection> nozzleSectionsFor(const Printhead& head, double margi
   return sections;
 }
 
+double tallestPart(const RobotCell& cell, const RobotPathOptions& o, double step) {
+  cell.validate();
+  if (!(step > 0)) {
+    throw GeoLatticeError("robot path: the height step must be > 0");
+  }
+  auto reachable = [&](double h) {
+    const Eigen::Vector3d p(0, 0, h), up(0, 0, 1);
+    for (int k = 0; k < o.psiSamples; ++k) {
+      const Isometry flange = cell.flangePose(p, up, 2 * M_PI * k / o.psiSamples);
+      for (const JointVector& q : inverseKinematics(cell.robot, flange)) {
+        if (!withinLimits(cell.robot, q)) {
+          continue;
+        }
+        const ArmCapsules arm = armCapsules(cell.robot, q);
+        if (lowestArmSurface(arm) >= o.floorClearance &&
+            (o.linkNozzleClearance <= 0 || armClearOfNozzle(cell, arm, o))) {
+          return true;
+        }
+      }
+    }
+    return false;
+  };
+  if (!reachable(0)) {
+    return 0;
+  }
+  const double farthest = 2.0 / cell.partScale;  // 2 m: beyond any UR's reach
+  double h = 0;
+  while (h + step <= farthest && reachable(h + step)) {
+    h += step;
+  }
+  return h;
+}
+
 std::string nozzleClearanceText(const RobotPathOptions& o) {
   const auto mm = [](double m) {
     return std::to_string(static_cast<int>(std::lround(1000 * m)));

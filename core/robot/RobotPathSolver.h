@@ -127,6 +127,16 @@ std::vector<NozzleSection> nozzleSectionsFor(const Printhead& head, double margi
                                              double step = 0.005, int maxSections = 4);
 
 struct RobotPathOptions;
+/// The height (part units) of the tallest part the cell can print standing up: the largest h
+/// (in steps of `step`) such that the part's point (0, 0, h) with its layer normal along the
+/// part's +z can be put at the nozzle tip, turned about the nozzle's axis in RobotPathOptions::
+/// psiSamples steps, by a configuration within the joint limits whose arm keeps floorClearance
+/// above the floor and the nozzle's clearance (the part's own is not checked). The top layers of
+/// a taller part standing on the plate need the arm lower than that (the flange holds the plate
+/// below the part): the orientation search ranks such sides last (OrientOptions::maxHeight).
+/// 0 when not even the plate (h = 0) can be put there.
+double tallestPart(const RobotCell& cell, const RobotPathOptions& o, double step = 2.0);
+
 /// How far the arm keeps off the nozzle's axis, for messages: "35 mm", or with a printhead's
 /// sections "10-35 mm (along the printhead's profile)".
 std::string nozzleClearanceText(const RobotPathOptions& o);

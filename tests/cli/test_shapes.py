@@ -4,7 +4,8 @@ TetGen's output or run can fail (a volume check too strict for finely curved fac
 a refinement that does not end on a simplified surface) that the bundled models never showed; the
 coil, that the print order must be chosen by the real toolpath; the thin plate, that the placement
 must be tried where the orientation search's coarse mesh misjudges it; the mushroom, that the
-orientation must be one the robot can follow."""
+orientation must be one the robot can follow; the column, that the robot cell prints only so tall
+a part standing."""
 import json
 import os
 import shutil
@@ -16,7 +17,7 @@ import unittest
 CLI = os.environ["GEOLATTICE_CLI"]
 SOURCE_DIR = os.environ["GEOLATTICE_SOURCE_DIR"]
 SHAPES = ["genus3_block", "handle_mug", "mushroom", "wrench", "arch", "coil", "thin_plate",
-          "two_rings"]
+          "two_rings", "column"]
 
 
 class ShapesMeshTest(unittest.TestCase):
@@ -155,6 +156,31 @@ class ShapesMeshTest(unittest.TestCase):
         self.assertLess(program["min_link_nozzle_distance_mm"], 35.0)
         self.assertGreaterEqual(program["min_link_nozzle_distance_mm"], 10.0 - 1e-6)
         self.assertGreaterEqual(program["min_link_part_distance_mm"], 15.0 - 1e-6)
+
+    def test_a_part_too_tall_for_the_cell_lies_down(self):
+        # The column (120 mm) standing on a 10 mm pedestal: its top layers would need the UR5's
+        # arm below the floor (the default cell prints 112 mm standing), which the robot's
+        # refusal names ...
+        column = os.path.join(self.tmp, "column.obj")
+        out = os.path.join(self.tmp, "column-standing")
+        result = subprocess.run([CLI, "run", column, "-o", out, "-q", "--pedestal", "10"],
+                                capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 5, result.stderr)
+        self.assertIn("what stops it is the floor", result.stderr)
+        self.assertIn("raise the nozzle tip", result.stderr)
+        # ... and --orient auto, writing the program, ranks the sides too tall for the cell after
+        # those that fit: the column lies down and prints.
+        out = os.path.join(self.tmp, "column-auto")
+        result = subprocess.run([CLI, "run", column, "-o", out, "-q", "--orient", "auto"],
+                                capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 0, result.stderr)
+        with open(os.path.join(out, "report.json")) as f:
+            report = json.load(f)
+        self.assertGreater(report["orient"]["max_height_mm"], 100)
+        self.assertLess(report["orient"]["max_height_mm"], 120)
+        self.assertLess(abs(report["orient"]["up"][2]), 0.9, report["orient"]["up"])
+        self.assertTrue(report["program"]["written"])
+        self.assertEqual(report["toolpath"]["violating_stations"], 0)
 
     def test_a_flat_part_prints_on_its_own_base(self):
         # The wrench lying flat: the search's best is that side on a 10 mm pedestal (its

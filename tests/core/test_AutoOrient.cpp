@@ -426,3 +426,34 @@ TEST(AutoOrient, ALargePartIsScoredAtAResolutionItsSizeScales) {
   EXPECT_GT(ratio, 0.3);
   EXPECT_LT(ratio, 1.2);
 }
+
+TEST(AutoOrient, ASideTallerThanTheCellPrintsRanksAfterTheSidesThatFit) {
+  // A round post (r 6 mm) 60 mm tall: standing on its flat end it needs no pedestal, lying it
+  // does (a round side has no contact), so without a limit it stands. 60 mm is more than the
+  // cell holds (maxHeight 40): the chosen side lies down (at most 40 mm tall with its pedestal).
+  const TriangleSurface post = revolvedSurface({{0, 0}, {6, 0}, {6, 60}, {0, 60}}, 32);
+  OrientOptions o;
+  o.sphereCandidates = 12;
+  o.hullCandidates = 6;
+  o.maxHeight = 40;
+  const OrientResult r = searchOrientation(post, o);
+  const OrientCandidate& best = r.candidates[r.best];
+  EXPECT_TRUE(best.feasible);
+  EXPECT_TRUE(best.fitsHeight);
+  EXPECT_LE(best.height, 40.0) << best.down.transpose();
+  int tall = 0;
+  for (const OrientCandidate& c : r.candidates) {
+    EXPECT_EQ(c.fitsHeight, c.height <= 40.0);
+    tall += c.fitsHeight ? 0 : 1;
+    if (c.feasible && !c.fitsHeight && c.refined == best.refined &&
+        c.collidingStations >= best.collidingStations) {
+      EXPECT_GT(c.rank, best.rank);
+    }
+  }
+  EXPECT_GT(tall, 0);
+  o.maxHeight = 0;  // no limit: the post stands
+  const OrientResult free = searchOrientation(post, o);
+  EXPECT_GT(free.candidates[free.best].height, 40.0);
+  o.maxHeight = -1;
+  EXPECT_THROW(searchOrientation(post, o), GeoLatticeError);
+}

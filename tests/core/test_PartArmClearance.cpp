@@ -2,6 +2,7 @@
 // constructed capsules from constructed material and plate against analytic values, material
 // counted from its print index on, the sweep equal to a search at every state, and the path
 // solver keeping the arm off a part it drove the forearm through.
+#include "common/Error.h"
 #include "io/MeshReader.h"
 #include "nozzle/Printhead.h"
 #include "robot/ArmCapsules.h"
@@ -288,4 +289,28 @@ TEST(RobotPathSolver, EachSectionOfThePrintheadKeepsTheArmItsOwnDistanceOff) {
   }
   std::printf("[robot] leaning cylinder, printhead sections: arm %.1f mm from the nozzle's axis\n",
               1000 * least);
+}
+
+TEST(RobotPathSolver, TheTallestPartTheCellPrintsStandingGrowsWithTheNozzlesHeight) {
+  // The default UR5 cell (nozzle tip 350 mm up): a part's top layers hold its plate that far
+  // below the tip, the flange under the plate and the wrist under the flange; 20 mm above the
+  // floor that leaves about 112 mm. Raised 30 mm, the tip leaves about 30 mm more; out of reach,
+  // nothing.
+  RobotCell cell;
+  const RobotPathOptions o;
+  const double tallest = tallestPart(cell, o);
+  EXPECT_GT(tallest, 90.0);
+  EXPECT_LT(tallest, 130.0);
+  cell.nozzleTip.z() += 0.03;
+  EXPECT_NEAR(tallestPart(cell, o) - tallest, 30.0, 4.0);
+  // The floor decides: with a floor clearance 5 mm larger, 5 mm less (the upper arm's shoulder
+  // end is always 29.2 mm up, so no pose keeps more than that).
+  RobotPathOptions higherFloor = o;
+  higherFloor.floorClearance += 0.005;
+  EXPECT_NEAR(tallestPart(cell, higherFloor), tallestPart(cell, o) - 5.0, 2.5);
+  higherFloor.floorClearance = 0.03;
+  EXPECT_EQ(tallestPart(cell, higherFloor), 0.0);
+  cell.nozzleTip = Eigen::Vector3d(3.0, 0, 0.35);  // 3 m away
+  EXPECT_EQ(tallestPart(cell, o), 0.0);
+  EXPECT_THROW(tallestPart(cell, o, 0.0), GeoLatticeError);
 }
