@@ -73,8 +73,8 @@ struct OrientOptions {
   double minBaseArea = 10.0;   ///< mm² of contact with the plate a candidate needs (>= 0)
   /// mm (>= 0; 0 = no limit): sides on which the part with its pedestal stands taller than this
   /// rank after the sides that fit and collide as little (objective 2), e.g. the robot cell's
-  /// tallest part
-  /// (robot/RobotPathSolver.h tallestPart: its top layers need the arm below the floor).
+  /// tallest part (robot/RobotPathSolver.h tallestPart: a taller one's top layers need the arm
+  /// below the floor).
   double maxHeight = 0.0;
   double contactHeight = 0.3;  ///< faces within this height of the lowest point touch (mm): half
                                ///< a first layer, squeezed onto the plate

@@ -21,6 +21,11 @@ namespace geolattice {
 namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
+
+/// "35" for 0.035 m: a length in whole millimetres, for messages.
+std::string millimetres(double m) {
+  return std::to_string(static_cast<int>(std::lround(1000 * m)));
+}
 constexpr int kReconfigurationRounds = 12;  ///< step 4: plans made before giving up
 /// Steps 1–3: refinement passes in a row that leave no fewer problems before the refinement
 /// ends (planAndRefine).
@@ -765,9 +770,8 @@ RobotPath planAndRefine(const RobotCell& cell, const std::vector<Eigen::Vector3d
       throw GeoLatticeError(
           "robot path: unreachable cell set-up: no IK branch reaches the whole path continuously "
           "with the arm and the part " +
-          std::to_string(static_cast<int>(std::lround(1000 * o.floorClearance))) +
-          " mm above the floor and the arm " + nozzleClearanceText(o) + " off the nozzle and " +
-          std::to_string(static_cast<int>(std::lround(1000 * o.linkPartClearance))) +
+          millimetres(o.floorClearance) + " mm above the floor and the arm " +
+          nozzleClearanceText(o) + " off the nozzle and " + millimetres(o.linkPartClearance) +
           " mm off the part it holds (check the nozzle position, the part-on-flange transform "
           "and the part size)" +
           partUnderTheFloor(cell, points, normals, coarse, cache.part(), o));
@@ -1189,9 +1193,6 @@ std::string bindingClearance(const RobotCell& cell, const std::vector<Eigen::Vec
     StateCache cache(cell, points, normals, r, r.threads, part);
     return !planCoarse(cell, points, normals, coarse, r, cache).empty();
   };
-  const auto mm = [](double m) {
-    return std::to_string(static_cast<int>(std::lround(1000 * m)));
-  };
   const double floor = o.floorClearance;
   const bool withoutPart = o.linkPartClearance > 0 && reachesWith(o.linkNozzleClearance, 0, floor);
   const bool withoutNozzle =
@@ -1202,7 +1203,7 @@ std::string bindingClearance(const RobotCell& cell, const std::vector<Eigen::Vec
   if (withoutPart)
     return "; what stops it is the part it holds: one configuration throughout reaches the path "
            "with the arm nearer than " +
-           mm(o.linkPartClearance) + " mm to the part (it would pass against it)";
+           millimetres(o.linkPartClearance) + " mm to the part (it would pass against it)";
   if (withoutNozzle)
     return "; what stops it is the nozzle: one configuration throughout reaches the path with "
            "the arm nearer than " +
@@ -1214,7 +1215,7 @@ std::string bindingClearance(const RobotCell& cell, const std::vector<Eigen::Vec
   if (reachesWith(o.linkNozzleClearance, o.linkPartClearance, -1e9))
     return "; what stops it is the floor: one configuration throughout reaches the path only "
            "with the arm or the part nearer than " +
-           mm(floor) +
+           millimetres(floor) +
            " mm to the floor (the part is too tall for the nozzle's height: raise the nozzle "
            "tip, mount the part nearer the flange or print it lying lower)";
   return "";
@@ -1412,15 +1413,13 @@ double tallestPart(const RobotCell& cell, const RobotPathOptions& o, double step
 }
 
 std::string nozzleClearanceText(const RobotPathOptions& o) {
-  const auto mm = [](double m) {
-    return std::to_string(static_cast<int>(std::lround(1000 * m)));
-  };
   double least = o.linkNozzleClearance;
   for (const NozzleSection& s : o.nozzleSections)
     least = std::min(least, s.clearance);
-  if (o.nozzleSections.empty() || mm(least) == mm(o.linkNozzleClearance))
-    return mm(o.linkNozzleClearance) + " mm";
-  return mm(least) + "-" + mm(o.linkNozzleClearance) + " mm (along the printhead's profile)";
+  if (o.nozzleSections.empty() || millimetres(least) == millimetres(o.linkNozzleClearance))
+    return millimetres(o.linkNozzleClearance) + " mm";
+  return millimetres(least) + "-" + millimetres(o.linkNozzleClearance) +
+         " mm (along the printhead's profile)";
 }
 
 }  // namespace geolattice
