@@ -32,8 +32,11 @@ std::string reportBaseContact(GLPrintPipeline& pipeline, vtkDataObject* overhang
   std::ostringstream w;
   w << "geolattice: warning: the part touches the plate on " << area
     << " mm^2 only (less than --min-base-area " << least
-    << " mm^2): it may come loose while printing; --orient auto looks for a side with more "
-       "contact\n";
+    << " mm^2): it may come loose while printing; "
+    << (pipeline.Orientation->GetOrient() == vtkGLAutoOrient::AUTO
+            ? "a brim, glue or a clamp holds it"
+            : "--orient auto looks for a side with more contact")
+    << "\n";
   return w.str();
 }
 

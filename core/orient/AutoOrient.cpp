@@ -11,6 +11,7 @@
 #include "mesh/TetMeshTopology.h"
 #include "placement/PlaceOnPlatform.h"
 #include "overhang/OverhangAnalysis.h"
+#include "pedestal/Pedestal.h"
 #include "sequence/PotentialCollisions.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
@@ -454,8 +455,11 @@ OrientResult searchOrientation(const TriangleSurface& surface, const OrientOptio
     }
     c.height = highest - lowest + pedestal;
     c.fitsHeight = !(o.maxHeight > 0) || c.height <= o.maxHeight;
-    c.baseArea = baseContactArea(surface, c.rotation,
-                                 pedestal > 0 ? o.pedestalContactHeight : o.contactHeight);
+    // On a pedestal: the column's cross-section as addPedestal will build it (its footprint
+    // leaves out the faces at pinches and sharp corners: a genus-3 block's side measured
+    // 10.4 mm² of faces near its lowest point, the column built on them 4.2 mm²).
+    c.baseArea = pedestal > 0 ? pedestalFootprintArea(surface, c.rotation, o.pedestalContactHeight)
+                              : baseContactArea(surface, c.rotation, o.contactHeight);
   };
   auto addPedestal = [&](size_t i) {
     OrientCandidate c = result.candidates[i];

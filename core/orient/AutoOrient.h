@@ -21,7 +21,7 @@
 /// pedestalContactHeight mm (PedestalChoice::WhenItHelps, the default). Such a candidate is scored
 /// on the same coarse mesh: γ grows from those lowest vertices (the column's top), the part is
 /// lifted by the height over the plate, the column's own planar layers are not scored. Its base
-/// area is the column's cross-section.
+/// area is the column's cross-section (pedestalFootprintArea: the footprint addPedestal builds).
 ///
 /// Two passes. The coarse pass scores every candidate at layerInterval / latticeWidth; the best
 /// refineCandidates of it and the part as placed are then scored again at the printing layer

@@ -80,7 +80,8 @@ std::vector<int> withoutPinches(const TriangleSurface& part, std::vector<int> fa
 /// standing on a ball, 1 mm reach: an 18° corner, no run finished within the time limit; 42° and
 /// up mesh in seconds). The faces at such a vertex leave the footprint, round by round, pinches
 /// removed each time; the footprint comes back as it was when nothing would be left.
-std::vector<int> withoutSpikes(const TriangleSurface& part, const std::vector<int>& contact) {
+std::vector<int> withoutSpikes(const TriangleSurface& part, const Eigen::Matrix3d& R,
+                               const std::vector<int>& contact) {
   std::vector<int> faces = contact;
   for (;;) {
     faces = withoutPinches(part, std::move(faces));
@@ -90,8 +91,10 @@ std::vector<int> withoutSpikes(const TriangleSurface& part, const std::vector<in
       const auto& t = part.triangles[f];
       for (int k = 0; k < 3; ++k) {
         directed[{t[k], t[(k + 1) % 3]}] = f;
-        const Eigen::Vector2d u = (part.points[t[(k + 1) % 3]] - part.points[t[k]]).head<2>();
-        const Eigen::Vector2d v = (part.points[t[(k + 2) % 3]] - part.points[t[k]]).head<2>();
+        const Eigen::Vector2d u =
+            (R.topRows<2>() * (part.points[t[(k + 1) % 3]] - part.points[t[k]]));
+        const Eigen::Vector2d v =
+            (R.topRows<2>() * (part.points[t[(k + 2) % 3]] - part.points[t[k]]));
         span[t[k]] += std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
       }
     }
@@ -114,7 +117,28 @@ std::vector<int> withoutSpikes(const TriangleSurface& part, const std::vector<in
   }
 }
 
+double facesArea(const TriangleSurface& part, const std::vector<int>& faces) {
+  double area = 0;
+  for (int f : faces) {
+    const auto& t = part.triangles[f];
+    area +=
+        0.5 *
+        (part.points[t[1]] - part.points[t[0]]).cross(part.points[t[2]] - part.points[t[0]]).norm();
+  }
+  return area;
+}
+
 }  // namespace
+
+std::vector<int> pedestalFootprintFaces(const TriangleSurface& part, const Eigen::Matrix3d& R,
+                                        double contactHeight) {
+  return withoutSpikes(part, R, baseContactFaces(part, R, contactHeight));
+}
+
+double pedestalFootprintArea(const TriangleSurface& part, const Eigen::Matrix3d& R,
+                             double contactHeight) {
+  return facesArea(part, pedestalFootprintFaces(part, R, contactHeight));
+}
 
 PedestalResult addPedestal(const TriangleSurface& input, const PedestalOptions& o) {
   o.validate();
@@ -123,13 +147,8 @@ PedestalResult addPedestal(const TriangleSurface& input, const PedestalOptions& 
   TriangleSurface part = input;
   repairSurface(part);
   const std::vector<int> contact =
-      withoutSpikes(part, baseContactFaces(part, Eigen::Matrix3d::Identity(), o.contactHeight));
-  for (int f : contact) {
-    const auto& t = part.triangles[f];
-    result.footprintArea +=
-        0.5 *
-        (part.points[t[1]] - part.points[t[0]]).cross(part.points[t[2]] - part.points[t[0]]).norm();
-  }
+      pedestalFootprintFaces(part, Eigen::Matrix3d::Identity(), o.contactHeight);
+  result.footprintArea = facesArea(part, contact);
   if (o.height == 0.0) {
     result.surface = part;
     return result;

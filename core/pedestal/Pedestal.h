@@ -42,6 +42,17 @@ struct PedestalResult {
   int wallRings = 0;         ///< rings of wall triangles between the part and the bottom
 };
 
+/// The faces of `part` (turned by R) a pedestal stands on: baseContactFaces within contactHeight
+/// of the lowest point, without the pinch and spike faces (see the file comment). `part` is
+/// welded (repairSurface) as addPedestal welds it, or the faces along open seams count as outline.
+std::vector<int> pedestalFootprintFaces(const TriangleSurface& part, const Eigen::Matrix3d& R,
+                                        double contactHeight);
+
+/// mm² of pedestalFootprintFaces: the cross-section of the column addPedestal builds under the
+/// part turned by R. The orientation search scores a side on a pedestal by it.
+double pedestalFootprintArea(const TriangleSurface& part, const Eigen::Matrix3d& R,
+                             double contactHeight);
+
 /// `part`: a closed, outward triangle surface standing on z = 0 (as placed or oriented). With
 /// height 0 the part comes back unchanged. Throws GeoLatticeError for bad options, or a part that
 /// touches the plate with no face (a tip or an edge: nothing to stand a column on).

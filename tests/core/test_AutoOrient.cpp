@@ -7,6 +7,7 @@
 #include "io/MeshReader.h"
 #include "mesh/AnalyticShapes.h"
 #include "orient/AutoOrient.h"
+#include "pedestal/Pedestal.h"
 #include "../common/ErrorOf.h"
 
 #include <gtest/gtest.h>
@@ -164,6 +165,12 @@ TEST(AutoOrient, APartWithNoFlatSideStandsOnAPedestal) {
   EXPECT_GT(best.baseArea, 1.5 * r.candidates[0].baseArea);
   EXPECT_NEAR(best.height, 30 + o.pedestalHeight, 0.5);
   EXPECT_FALSE(r.candidates[0].feasible);  // the ball as placed, on the plate
+  // The side's base area is the cross-section of the column built under it.
+  PedestalOptions column;
+  column.height = best.pedestal;
+  column.contactHeight = o.pedestalContactHeight;
+  const PedestalResult built = addPedestal(orientSurface(ball, best.rotation), column);
+  EXPECT_NEAR(best.baseArea, built.footprintArea, 1e-6 * built.footprintArea);
 }
 
 TEST(AutoOrient, ThePlateInTheNozzlesWayIsLiftedOnAPedestal) {
