@@ -51,6 +51,12 @@ void addModelOptions(std::vector<CliOption>& t) {
                      "GLPlaceOnPlatform.FillHoles", &P::Placement,
                      &vtkGLPlaceOnPlatform::SetFillHoles, &vtkGLPlaceOnPlatform::GetFillHoles,
                      true));
+  t.push_back(toggle("--fill-cavities", place,
+                     "fill the part's sealed inner voids before placing it: it is printed solid\n"
+                     "there (no nozzle reaches inside a sealed void)",
+                     "GLPlaceOnPlatform.FillCavities", &P::Placement,
+                     &vtkGLPlaceOnPlatform::SetFillCavities, &vtkGLPlaceOnPlatform::GetFillCavities,
+                     true));
 
   const char* orient = "Orientation (which side of the part faces the plate)";
   t.push_back({"--orient", "MODE", orient,

@@ -81,7 +81,8 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
     if (cavities > 0) {
       line << "; the part has " << cavities << " closed inner "
            << (cavities == 1 ? "cavity" : "cavities")
-           << " (no nozzle can enter: if the collisions are on its walls, fill it or open it)";
+           << " (no nozzle can enter: if the collisions are on its walls, fill it with "
+              "--fill-cavities or open it)";
     }
     // What to try, cheapest first: the orientation search, then the real printhead's shape.
     std::string hint;

@@ -94,6 +94,7 @@ void reportInput(vtkDataObject* placed, bool tetMesh, Json& s) {
   s["bounds_mm"] = vec(b, 6);
   s["filled_holes"] = fieldValue(placed, arrays::FilledHoles);
   s["filled_hole_triangles"] = fieldValue(placed, arrays::FilledHoleTriangles);
+  s["filled_cavities"] = fieldValue(placed, arrays::FilledCavities);
 }
 
 void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {

@@ -48,6 +48,8 @@ constexpr const char* PlacementScale = "PlacementScale";  ///< 1 value, uniform 
 /// With FillHoles: the holes closed and the triangles of their patches, 1 value each.
 constexpr const char* FilledHoles = "FilledHoles";
 constexpr const char* FilledHoleTriangles = "FilledHoleTriangles";
+/// With FillCavities: the closed inner cavities filled (their shells removed), 1 value.
+constexpr const char* FilledCavities = "FilledCavities";
 constexpr const char* PlacementTranslation =
     "PlacementTranslation";  ///< 3 values (mm), applied after scaling
 // Curved layer slicer output (vtkGLCurvedLayerSlicer).

@@ -7,6 +7,8 @@
 
 #include "common/Error.h"
 #include "mesh/HoleFilling.h"
+#include "mesh/ShellNesting.h"
+#include "mesh/SurfaceRepair.h"
 #include "placement/PlaceOnPlatform.h"
 
 #include <vtkCellData.h>
@@ -35,6 +37,7 @@ void vtkGLPlaceOnPlatform::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "FitSize: " << this->Options.fitSize << " mm\n";
   os << indent << "CenterXY: " << (this->Options.centerXY ? "on" : "off") << "\n";
   os << indent << "FillHoles: " << (this->Options.fillHoles ? "on" : "off") << "\n";
+  os << indent << "FillCavities: " << (this->Options.fillCavities ? "on" : "off") << "\n";
 }
 
 vtkGLPlaceOnPlatform::vtkGLPlaceOnPlatform() = default;
@@ -56,14 +59,23 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
     }
     const gl::PlacementOptions options = this->Options;
     options.validate();
-    // The holes closed first: their patches belong to the part that is placed.
+    // The holes closed first: their patches belong to the part that is placed. Then the
+    // cavities filled, on the welded surface (shells are told apart by shared edges).
     vtkNew<vtkPolyData> closed;
     gl::HoleFillingResult filled;
-    if (options.fillHoles && vtkPolyData::SafeDownCast(input) &&
-        vtkPolyData::SafeDownCast(input)->GetNumberOfPolys() > 0) {
-      gl::TriangleSurface surface = gl::toTriangleSurface(vtkPolyData::SafeDownCast(input));
-      filled = gl::fillHoles(surface);
-      if (filled.holes > 0) {
+    gl::CavityFilling solid;
+    vtkPolyData* surfaceInput = vtkPolyData::SafeDownCast(input);
+    if ((options.fillHoles || options.fillCavities) && surfaceInput &&
+        surfaceInput->GetNumberOfPolys() > 0) {
+      gl::TriangleSurface surface = gl::toTriangleSurface(surfaceInput);
+      if (options.fillHoles) {
+        filled = gl::fillHoles(surface);
+      }
+      if (options.fillCavities) {
+        gl::repairSurface(surface);
+        solid = gl::fillCavities(surface);
+      }
+      if (filled.holes > 0 || solid.cavities > 0) {
         gl::fromTriangleSurface(surface, closed);
         closed->GetFieldData()->PassData(input->GetFieldData());
         input = closed;
@@ -116,6 +128,12 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
     } else {  // not this placement's (e.g. a part saved from an earlier run)
       output->GetFieldData()->RemoveArray(gl::arrays::FilledHoles);
       output->GetFieldData()->RemoveArray(gl::arrays::FilledHoleTriangles);
+    }
+    if (options.fillCavities) {
+      gl::addFieldArray(output->GetFieldData(), gl::arrays::FilledCavities,
+                        {static_cast<double>(solid.cavities)});
+    } else {
+      output->GetFieldData()->RemoveArray(gl::arrays::FilledCavities);
     }
     this->UpdateProgress(1.0);
   });

@@ -18,9 +18,10 @@
  * `PlacementTranslation` (3 values: t, mm), names in vtkGLArrayNames.h.
  *
  * Parameters (core/placement/PlaceOnPlatform.h, defaults there): Scale, FitSize, CenterXY,
- * FillHoles (see the Set/Get blocks below). With FillHoles, a surface's holes are closed first
- * (core/mesh/HoleFilling.h; field data `FilledHoles`, `FilledHoleTriangles`), then placed: the
- * patches count in the bounding box.
+ * FillHoles, FillCavities (see the Set/Get blocks below). With FillHoles, a surface's holes are
+ * closed first (core/mesh/HoleFilling.h; field data `FilledHoles`, `FilledHoleTriangles`), then
+ * placed: the patches count in the bounding box. With FillCavities, its sealed voids are filled
+ * (core/mesh/ShellNesting.h; field data `FilledCavities`).
  *
  * Errors (vtkErrorMacro, empty output, RequestData returns 0): Scale <= 0, FitSize < 0, an empty
  * input, FitSize > 0 for a model whose bounding box has no extent, non-finite coordinates, a
@@ -63,6 +64,14 @@ public:
   /// CGAL's triangulate, refine and fair). Ignored for a tet mesh. The output is then the closed
   /// surface (new points and triangles: the input's point and cell arrays are not passed).
   vtkGLOptionBooleanMacro(FillHoles, fillHoles);
+  ///@}
+
+  ///@{
+  /// Fill the closed inner cavities of a surface (default off; core/mesh/ShellNesting.h): the
+  /// shells of sealed voids (and anything loose inside them) are removed, so the part is printed
+  /// solid there; no nozzle reaches inside a sealed void. Ignored for a tet mesh. The output is
+  /// then the welded, repaired surface (core/mesh/SurfaceRepair.h) without those shells.
+  vtkGLOptionBooleanMacro(FillCavities, fillCavities);
   ///@}
 
 protected:

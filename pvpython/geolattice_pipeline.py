@@ -67,6 +67,7 @@ PARAMETERS = {
     "fit_size": (("place",), "FitSize"),
     "center": (("place",), "CenterXY"),
     "fill_holes": (("place",), "FillHoles"),
+    "fill_cavities": (("place",), "FillCavities"),
     "orient": (("orient",), "Orient"),
     "min_base_area": (("orient",), "MinBaseArea"),
     "edge_length": (("tets",), "TargetEdgeLength"),

@@ -34,6 +34,10 @@ nozzle is a cone of half-angle 45 deg printing curved layers that grow from the 
   thin_plate.obj         flat plate 60 x 60 x 2 mm, edges rounded 0.5 mm, lying flat: thinner
                          than the orientation search's coarse elements, so the search misjudges
                          it as placed; it prints flat in 4 layers (orientation search test)
+  hollow_ball.obj        ball r 20 mm with a sealed spherical void r 14 mm (two shells: the
+                         void's faces inward), cut flat at the base: the layers closing over the
+                         void's roof meet in a funnel the nozzle collides in; --fill-cavities
+                         prints it solid (cavity test)
   column.obj             slender column 120 mm tall (r 6 -> 5 mm) on a round pad (r 14, 4 mm):
                          standing, its top layers need the UR5 cell's arm below the floor (the
                          cell prints 112 mm standing); it prints lying (orientation search test)
@@ -216,7 +220,8 @@ def dir_lean(lean_deg, azimuth_deg):
 
 # --------------------------------------------------------------------------------------------
 # The parts. Each entry: sdf(p), bounds (xmin..zmax, the solid lies inside), smallest feature
-# (mm, bounds the grid spacing), description and parameters for the OBJ header, expected genus.
+# (mm, bounds the grid spacing), description and parameters for the OBJ header, expected genus
+# (of each shell) and, where not 1, the number of shells (components).
 # --------------------------------------------------------------------------------------------
 
 ARCH = dict(half_span=38.0, height=50.0, r_foot=7.0, r_top=5.0, segments=36, blend=0.0,
@@ -396,6 +401,15 @@ def column_sdf(p):
     return on_platform(union([shaft, pad], C["blend"]), p)
 
 
+HOLLOW_BALL = dict(radius=20.0, void_radius=14.0, centre_height=18.0)
+
+
+def hollow_ball_sdf(p):
+    H = HOLLOW_BALL
+    c = (0, 0, H["centre_height"])
+    return on_platform(np.maximum(sd_sphere(p, c, H["radius"]), -sd_sphere(p, c, H["void_radius"])), p)
+
+
 def _fmt(params):
     return ", ".join(f"{k} {v}" for k, v in params.items())
 
@@ -431,6 +445,10 @@ PARTS = {
     "column": dict(sdf=column_sdf, bounds=(-15, 15, -15, 15, -1, 121), feature=3.0, genus=0,
                    what="slender column 120 mm tall on a round pad: taller than the robot cell prints standing",
                    params=COLUMN),
+    "hollow_ball": dict(sdf=hollow_ball_sdf, bounds=(-21, 21, -21, 21, -1, 39), feature=3.0, genus=0,
+                        components=2,
+                        what="ball with a sealed spherical void (two shells, the void's inward), cut flat at the base",
+                        params=HOLLOW_BALL),
     "thin_plate": dict(sdf=thin_plate_sdf, bounds=(-31, 31, -31, 31, -1, 3), feature=2.0, genus=0,
                        what="flat plate 60 x 60 x 2 mm lying flat, edges rounded 0.5 mm",
                        params=THIN_PLATE),
@@ -576,7 +594,9 @@ def write_obj(path, name, spec, V, F, info):
         f.write(f"# Parameters: {_fmt(spec['params'])}; base blend {BASE_BLEND} mm.\n")
         f.write(f"# Method: SDF sampled at h = {info['h']} mm (grid {info['grid']}), vtkFlyingEdges3D, "
                 f"{RELAX_ROUNDS} rounds of tangential relaxation + projection onto the SDF; no decimation.\n")
-        f.write(f"# {len(V)} vertices, {len(F)} triangles; closed, edge-manifold, outward; genus {spec['genus']}.\n")
+        shells = spec.get("components", 1)
+        f.write(f"# {len(V)} vertices, {len(F)} triangles; closed, edge-manifold, outward; genus {spec['genus']}"
+                + (f" ({shells} shells)" if shells > 1 else "") + ".\n")
         np.savetxt(f, V, fmt="v %.6f %.6f %.6f")
         np.savetxt(f, F + 1, fmt="f %d %d %d")
 
@@ -622,9 +642,12 @@ def main(argv):
         path = os.path.join(outdir, name + ".obj")
         write_obj(path, name, spec, V, F, info)
         v = verify_obj(path)
-        ok = (v["boundary"] == 0 and v["nonmanifold"] == 0 and v["components"] == 1 and v["inconsistent"] == 0
-              and v["degenerate"] == 0 and v["signed_volume"] > 0 and v["vtk_volume"] > 0
-              and v["genus"] == spec["genus"] and info["foldovers"] == 0)
+        shells = spec.get("components", 1)
+        # V - E + F = 2 shells - 2 genus (summed over the shells): genus per shell
+        ok = (v["boundary"] == 0 and v["nonmanifold"] == 0 and v["components"] == shells
+              and v["inconsistent"] == 0 and v["degenerate"] == 0 and v["signed_volume"] > 0
+              and v["vtk_volume"] > 0 and v["euler"] == 2 * shells * (1 - spec["genus"])
+              and info["foldovers"] == 0)
         ok_all &= ok
         lo, hi = v["bbox"]
         rows.append([name + ".obj", v["triangles"], v["vertices"],

@@ -4,6 +4,7 @@
 #include "common/UnionFind.h"
 #include "mesh/CgalSurfaceMesh.h"
 #include "mesh/OverlappingBodies.h"
+#include "mesh/ShellNesting.h"
 #include "mesh/SurfaceCheck.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -287,56 +288,13 @@ SurfaceRepairCounts repairSurface(TriangleSurface& surface) {
 }
 
 int orientInvertedBodies(TriangleSurface& surface) {
-  const int n = static_cast<int>(surface.triangles.size());
-  // Shells: triangles joined across their edges.
-  UnionFind joined(n);
-  std::unordered_map<std::uint64_t, int> firstAcross;
-  firstAcross.reserve(3 * static_cast<size_t>(n) / 2);
-  for (int f = 0; f < n; ++f) {
-    const auto& t = surface.triangles[f];
-    for (int k = 0; k < 3; ++k) {
-      const auto a = static_cast<std::uint64_t>(std::min(t[k], t[(k + 1) % 3]));
-      const auto b = static_cast<std::uint64_t>(std::max(t[k], t[(k + 1) % 3]));
-      const auto [it, fresh] = firstAcross.emplace((a << 32) | b, f);
-      if (!fresh) {
-        joined.unite(f, it->second);
-      }
-    }
-  }
-  std::vector<int> shellOf;
-  const int shells = joined.labels(shellOf);
+  const ShellNesting nesting = nestShells(surface);
+  const int shells = nesting.shells;
   if (shells < 2) {
     return 0;
   }
-  std::vector<std::vector<int>> triangles(shells);
-  std::vector<double> volume6(shells, 0.0), largest(shells, -1.0);
-  std::vector<Vec3> probe(shells);
-  std::vector<Eigen::AlignedBox3d> box(shells);
-  for (int f = 0; f < n; ++f) {
-    const int s = shellOf[f];
-    const auto& t = surface.triangles[f];
-    const Vec3 &p0 = surface.points[t[0]], &p1 = surface.points[t[1]], &p2 = surface.points[t[2]];
-    triangles[s].push_back(f);
-    volume6[s] += p0.dot(p1.cross(p2));
-    const double area2 = (p1 - p0).cross(p2 - p0).norm();
-    if (area2 > largest[s]) {
-      largest[s] = area2;
-      probe[s] = (p0 + p1 + p2) / 3.0;
-    }
-    box[s].extend(p0);
-    box[s].extend(p1);
-    box[s].extend(p2);
-  }
-  // inside[s]: the shells s lies in (|winding| 1 whichever way they face).
-  std::vector<std::vector<int>> inside(shells);
-  for (int s = 0; s < shells; ++s) {
-    for (int o = 0; o < shells; ++o) {
-      if (o != s && box[o].contains(box[s]) &&
-          std::abs(windingNumber(surface, probe[s], &triangles[o])) > 0.5) {
-        inside[s].push_back(o);
-      }
-    }
-  }
+  const auto& inside = nesting.inside;
+  const auto& volume6 = nesting.volume6;
   std::vector<int> invertedBodies;
   bool anOutwardBody = false;
   for (int s = 0; s < shells; ++s) {
@@ -361,8 +319,8 @@ int orientInvertedBodies(TriangleSurface& surface) {
       turn[s] |= inside[o].empty() && volume6[o] < 0 ? 1 : 0;
     }
   }
-  for (int f = 0; f < n; ++f) {
-    if (turn[shellOf[f]]) {
+  for (size_t f = 0; f < surface.triangles.size(); ++f) {
+    if (turn[nesting.shellOf[f]]) {
       std::swap(surface.triangles[f][1], surface.triangles[f][2]);
     }
   }

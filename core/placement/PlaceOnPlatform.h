@@ -25,6 +25,9 @@ struct PlacementOptions {
   /// A surface's holes closed before it is placed (mesh/HoleFilling.h); off: an open surface is
   /// refused by the stages that need a solid, naming the holes.
   bool fillHoles = false;
+  /// A surface's closed inner cavities filled before it is placed (mesh/ShellNesting.h: the
+  /// cavities' shells removed, the part printed solid there); off: they stay hollow.
+  bool fillCavities = false;
   /// Checks the options; throws GeoLatticeError naming the bad one (Scale, FitSize).
   void validate() const;
 };

@@ -729,7 +729,8 @@ class CliGateTest(unittest.TestCase):
         model = write(os.path.join(self.tmp, "hollow_cube.obj"), text)
         result, report, programs, out = self.run_cli(model)
         self.expect_gate(result, report, programs, out, 4, "collision",
-                         ["the part has 1 closed inner cavity", "fill it or open it"])
+                         ["the part has 1 closed inner cavity",
+                          "fill it with --fill-cavities or open it"])
         self.assertEqual(report["mesh"]["cavities"], 1)
 
     def test_the_bunny_keeps_the_printhead_out_of_the_plate(self):

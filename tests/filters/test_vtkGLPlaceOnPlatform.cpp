@@ -5,6 +5,7 @@
 #include "vtkGLArrayNames.h"
 #include "vtkGLMeshConversion.h"
 #include "vtkGLMeshReader.h"
+#include "mesh/AnalyticShapes.h"
 #include "mesh/SurfaceCheck.h"
 
 #include <gtest/gtest.h>
@@ -303,4 +304,42 @@ TEST(PlaceOnPlatform, FillHolesClosesAnOpenSurfaceBeforePlacingIt) {
   EXPECT_EQ(fieldValue(closed, geolattice::arrays::FilledHoleTriangles, 0),
             static_cast<double>(closed->GetNumberOfCells() - open->GetNumberOfCells()));
   EXPECT_EQ(pointBounds(closed)[4], 0.0);  // the patches placed with the part
+}
+
+TEST(PlaceOnPlatform, FillCavitiesPrintsAHollowBallSolid) {
+  vtkNew<vtkGLPlaceOnPlatform> defaults;
+  EXPECT_FALSE(defaults->GetFillCavities());
+  // A ball with a sealed void (the void's faces inward), as a hollow part is exported.
+  geolattice::TriangleSurface hollow = geolattice::sphereSurface(geolattice::Vec3::Zero(), 20, 3);
+  const geolattice::TriangleSurface voidShell =
+      geolattice::sphereSurface(geolattice::Vec3::Zero(), 12, 3);
+  const int offset = static_cast<int>(hollow.points.size());
+  hollow.points.insert(hollow.points.end(), voidShell.points.begin(), voidShell.points.end());
+  for (const auto& t : voidShell.triangles) {
+    hollow.triangles.push_back({t[0] + offset, t[2] + offset, t[1] + offset});
+  }
+  vtkNew<vtkPolyData> input;
+  geolattice::fromTriangleSurface(hollow, input);
+
+  Placed asIs = place(input, 1.0, 0.0, true);  // off: passed on as it is
+  EXPECT_EQ(asIs.Output->GetNumberOfCells(), input->GetNumberOfCells());
+  EXPECT_FALSE(asIs.Output->GetFieldData()->GetArray(geolattice::arrays::FilledCavities));
+
+  vtkNew<vtkGLPlaceOnPlatform> filter;
+  vtkNew<GLTestErrorObserver> errors;
+  errors->Observe(filter);
+  filter->SetInputData(input);
+  filter->SetFillCavities(true);
+  filter->Update();
+  EXPECT_FALSE(errors->HasError()) << errors->Errors();
+  vtkPolyData* solid = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0));
+  ASSERT_TRUE(solid);
+  EXPECT_EQ(solid->GetNumberOfCells(),
+            static_cast<vtkIdType>(hollow.triangles.size() - voidShell.triangles.size()));
+  EXPECT_EQ(solid->GetNumberOfPoints(), static_cast<vtkIdType>(offset));
+  EXPECT_EQ(fieldValue(solid, geolattice::arrays::FilledCavities, 0), 1.0);
+  const auto check = geolattice::checkSurface(geolattice::toTriangleSurface(solid));
+  EXPECT_TRUE(check.isClosedManifold());
+  EXPECT_GT(check.signedVolume, 0.97 * 4.0 / 3.0 * M_PI * 20 * 20 * 20);  // solid: no void
+  EXPECT_EQ(pointBounds(solid)[4], 0.0);
 }

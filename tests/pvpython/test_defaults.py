@@ -28,6 +28,7 @@ CLI_CHOICES = {
     "GLGCodeWriter.Kinematics": {"ac": 0, "bc": 1},
     "GLPlaceOnPlatform.CenterXY": {"centred": 1, "kept": 0},
     "GLPlaceOnPlatform.FillHoles": {"on": 1, "off": 0},
+    "GLPlaceOnPlatform.FillCavities": {"on": 1, "off": 0},
     "GLToolpathPlanner.SupportPerimeter": {"perimeter": 1, "none": 0},
     "GLURScriptWriter.AllowUnreachable": {"on": 1, "off": 0},
     "GLNozzle.BuildPlate": {"obstacle": 1, "none": 0},
