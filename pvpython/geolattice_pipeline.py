@@ -129,7 +129,7 @@ def build_pipeline(model, lattice_width=None, **parameters):
         del parameters["reference"]  # the default vector, turned where it lies along the normal
     elif "reference" in parameters:
         parameters.setdefault("turn_reference", 0)  # a given reference is used as given (CLI too)
-    for key in ("center", "fill_holes", "support_perimeter", "turn_reference"):
+    for key in ("center", "fill_holes", "fill_cavities", "support_perimeter", "turn_reference"):
         if key in parameters:
             parameters[key] = int(parameters[key])
     pedestal = parameters.pop("pedestal", None)
@@ -218,6 +218,8 @@ def main(argv=None):
     parser.add_argument("--fit-size", type=float, help="largest bounding-box side in mm")
     parser.add_argument("--fill-holes", action="store_true", default=None,
                         help="close the holes of an open surface (a scan) before placing it")
+    parser.add_argument("--fill-cavities", action="store_true", default=None,
+                        help="fill the part's sealed inner voids before placing it (printed solid)")
     parser.add_argument("--edge-length", type=float, help="target tet edge length in mm (0 = automatic)")
     parser.add_argument("--base-tolerance", type=float,
                         help="vertices this far above the lowest point are the base, mm")
@@ -231,6 +233,7 @@ def main(argv=None):
     load_plugin(args.plugin)
     os.makedirs(args.output, exist_ok=True)
     given = dict(scale=args.scale, fit_size=args.fit_size, fill_holes=args.fill_holes,
+                 fill_cavities=args.fill_cavities,
                  edge_length=args.edge_length,
                  base_tolerance=args.base_tolerance, time_factor=args.time_factor,
                  layer_interval=args.layer_interval, strategy=args.strategy, nozzle_angle=args.nozzle_angle)
