@@ -43,6 +43,18 @@ std::string leastCollidingOnAPedestal(const Json& report) {
   return m.str();
 }
 
+/// How many of the orientation tries (report.json orient.tries) had a collision-free toolpath the
+/// robot could not follow.
+int robotRefusedOrientations(const Json& report) {
+  int refused = 0;
+  if (report.contains("orient") && report["orient"].contains("tries")) {
+    for (const Json& t : report["orient"]["tries"]) {
+      refused += t.contains("robot_follows") && !t["robot_follows"].get<bool>() ? 1 : 0;
+    }
+  }
+  return refused;
+}
+
 }  // namespace
 
 int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
@@ -137,10 +149,25 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
     }
     // A part kept as placed: another side facing the plate turns it less far over, which often
     // suits the arm (a cap tilted 25 deg: refused as placed, printed with --orient auto).
-    const std::string orientHint =
-        P.Orientation->GetOrient() == vtkGLAutoOrient::KEEP && !P.GetTetMeshInput()
-            ? "; or try --orient auto (another side of the part facing the plate)"
-            : "";
+    // Auto-oriented: how many sides the robot refused, and whether more can be tried (a
+    // generated hemispherical shell: its eight best sides all start sideways right above the
+    // flange, where the wrist meets the nozzle).
+    std::string orientHint;
+    if (P.Orientation->GetOrient() == vtkGLAutoOrient::KEEP && !P.GetTetMeshInput()) {
+      orientHint = "; or try --orient auto (another side of the part facing the plate)";
+    } else if (!P.GetTetMeshInput()) {
+      std::ostringstream m;
+      const int refused = robotRefusedOrientations(run.Report);
+      if (refused > 0) {
+        m << "; the robot follows none of the " << refused << " collision-free orientation"
+          << (refused == 1 ? "" : "s") << " tried (report.json orient.tries)";
+      }
+      if (P.OrientationTries < 8) {
+        m << (refused > 0 ? ": " : "; or try ")
+          << "--orient-tries 8 (more of the orientation search's candidates)";
+      }
+      orientHint = m.str();
+    }
     // Unreachable points stop the program unless allowed; a cell that reaches none of them
     // (an unreachable cell set-up: every point counted) even then.
     if (script->GetUnreachableCount() > 0 &&

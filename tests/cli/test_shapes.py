@@ -138,6 +138,15 @@ class ShapesMeshTest(unittest.TestCase):
         self.assertEqual(program["unreachable"], 0)
         self.assertGreaterEqual(program["min_link_part_distance_mm"], 15.0 - 1e-6)
         self.assertGreaterEqual(program["min_link_nozzle_distance_mm"], 35.0 - 1e-6)
+        # With one try, the search's best is refused by the robot, and the stop says how to
+        # try more of its candidates.
+        out = os.path.join(self.tmp, "mushroom-auto-one-try")
+        result = subprocess.run([CLI, "run", os.path.join(self.tmp, "mushroom.obj"), "-o", out, "-q",
+                                 "--orient", "auto", "--orient-tries", "1"],
+                                capture_output=True, text=True, timeout=600)
+        self.assertEqual(result.returncode, 5, result.stderr)
+        self.assertIn("or try --orient-tries 8", result.stderr)
+        self.assertNotIn("or try --orient auto", result.stderr)
 
     def test_the_printheads_profile_lets_the_arm_near_its_slim_end(self):
         # With the example printhead, its carriage (28.3 mm radius) is 70-100 mm above the tip,
