@@ -292,6 +292,8 @@ void reportToolpath(GLPrintPipeline& p, vtkDataObject* t, Json& s) {
   s["max_axis_tilt_deg"] = fieldValue(t, arrays::ToolpathMaxAxisTilt);
   s["replanned_hops"] = count(t, arrays::ToolpathReplannedHops);
   s["aligned_transitions"] = count(t, arrays::ToolpathAlignedTransitions);
+  s["reordered_tours"] = count(t, arrays::ToolpathReorderedTours);
+  s["uncleared_before_reorder"] = count(t, arrays::ToolpathUnclearedBeforeReorder);
   s["thickness_dev_min"] = fieldValue(t, arrays::ToolpathThicknessDeviation, 0);
   s["thickness_dev_max"] = fieldValue(t, arrays::ToolpathThicknessDeviation, 1);
   s["capped_vertices"] = count(t, arrays::ToolpathCappedVertices);

@@ -313,6 +313,10 @@ constexpr const char* ToolpathReplannedHops =
     "ToolpathReplannedHops";  ///< hops onto an upper node sent over the safe box (they collided)
 /// transitions whose air stations collided, planned again along their stations' final axes
 constexpr const char* ToolpathAlignedTransitions = "ToolpathAlignedTransitions";
+/// tours printed from another start or the other way round, because fewer of their stations
+/// collide so (core/toolpath/TourWays.h), and the stations colliding before that
+constexpr const char* ToolpathReorderedTours = "ToolpathReorderedTours";
+constexpr const char* ToolpathUnclearedBeforeReorder = "ToolpathUnclearedBeforeReorder";
 constexpr const char* ToolpathSeconds = "ToolpathSeconds";  ///< wall time of the planning (s)
 
 /// Field data of vtkGLPrintSummary's table: the verdict in words (one string).

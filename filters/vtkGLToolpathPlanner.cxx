@@ -197,6 +197,8 @@ void buildToolpath(const gl::Toolpath& path, const gl::LatticeGraph& graph, vtkP
   count(gl::arrays::ToolpathMaxAxisTilt, path.maxAxisTiltDeg);
   count(gl::arrays::ToolpathReplannedHops, path.replannedHops);
   count(gl::arrays::ToolpathAlignedTransitions, path.alignedTransitions);
+  count(gl::arrays::ToolpathReorderedTours, path.reorderedTours);
+  count(gl::arrays::ToolpathUnclearedBeforeReorder, path.unclearedBeforeReorder);
   count(gl::arrays::ToolpathSeconds, path.seconds);
 }
 

@@ -59,7 +59,9 @@
  *     `ToolpathUnclearedStations`, `ToolpathMaxAxisTilt` (degrees), `ToolpathReplannedHops`
  *     (hops onto an upper node that collided and went over the safe box),
  *     `ToolpathAlignedTransitions` (transitions whose air stations collided, built again along
- *     their stations' final axes), `ToolpathSeconds` (planning wall time) and `SkeletonEdges` from input 0; always of the whole toolpath.
+ *     their stations' final axes), `ToolpathReorderedTours` (tours printed from another start or
+ *     the other way round because fewer of their stations collide so) and
+ *     `ToolpathUnclearedBeforeReorder` (the stations colliding before that), `ToolpathSeconds` (planning wall time) and `SkeletonEdges` from input 0; always of the whole toolpath.
  * No time: the output is always the whole toolpath (GL Toolpath Replay adds the print replay's
  *   time steps).
  * Parameters: PathWidth (w, mm, default 0.6, > 0), FilamentDiameter (mm, default 1.75, > 0; the

@@ -8,6 +8,7 @@
 #include "toolpath/PathSubdivision.h"
 #include "toolpath/SafeBoxAirMove.h"
 #include "toolpath/SupportPerimeter.h"
+#include "toolpath/TourWays.h"
 
 #include <algorithm>
 #include <chrono>
@@ -436,7 +437,10 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
   // the safe box instead and the path is built again.
   const Toolpath base = path;
   const std::vector<std::vector<int>> loopsAtStart = loopsAt;
-  std::vector<char> overTheBox(walks.size() + 1, 0);
+  std::vector<char> overTheBox(walks.size(), 0);  // per walk: its arrival goes over the box
+  std::vector<char> hopped(walks.size(), 0);      // per walk: it was reached by a hop
+  std::vector<int> walkOfTour;                    // the walk printed as each tour
+  std::vector<int> wayOf(walks.size(), 0);        // how each walk is printed (TourWay)
   int replannedHops = 0;
   // The attempts differ only in air moves (not material): each clearance round of a later
   // attempt reuses the same round's detection and least-tilt searches of the earlier one where
@@ -446,13 +450,15 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
   // kd-trees of the first where it can (PathObstacleTrees).
   PathObstacleTrees trees;
   std::vector<int> uncleared;
-  for (int attempt = 0;; ++attempt) {
+  auto buildPath = [&] {
     path = base;
     loopsAt = loopsAtStart;
+    walkOfTour.clear();
+    std::fill(hopped.begin(), hopped.end(), 0);
     PathBuilder b(path, o);
     Eigen::AlignedBox3d printed;  // everything printed so far
     int previous = -1, tourIndex = 0;
-    std::vector<char> hopped(overTheBox.size(), 0);
+    Vec3 nearTo = Vec3::Zero();  // where the next walk starts nearest to
     for (size_t position = 0; position < order.size(); ++position) {
       const int k = order[position];
       std::vector<int> remaining = walksAt[position];
@@ -469,7 +475,7 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
               continue;
             }
             const double d = b.empty() ? static_cast<double>(i)
-                                       : (g.points[walk.vertices[i]] - b.position()).squaredNorm();
+                                       : (g.points[walk.vertices[i]] - nearTo).squaredNorm();
             if (d < bestDistance) {
               bestDistance = d;
               bestWalk = r;
@@ -477,14 +483,24 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
             }
           }
         }
-        const Walk& walk = walks[remaining[bestWalk]];
+        const int w = remaining[bestWalk];
+        const Walk& walk = walks[w];
+        walkOfTour.push_back(w);
         remaining.erase(remaining.begin() + static_cast<long>(bestWalk));
         const std::vector<int>& vs = walk.vertices;
         const size_t n = vs.size() - 1;  // closed: vs[n] == vs[0]; open: n edges
-        // The j-th vertex after the start: around a closed tour, or along (or back along) a run.
+        const TourWay way = tourWay(wayOf[w]);
+        // The next walk starts nearest to where this one ends printed the usual way, so that the
+        // way of one tour leaves the others' as they are (TourWays.h).
+        nearTo = g.points[walk.closed ? vs[bestAt] : (bestAt == 0 ? vs[n] : vs[0])];
+        if (walk.closed && way.fromHalfway) {
+          bestAt = (bestAt + n / 2) % n;
+        }
+        // The j-th vertex after the start: around a closed tour (either way), or along (or back
+        // along) a run.
         auto vertexAfter = [&](size_t j) {
           if (walk.closed) {
-            return vs[(bestAt + j) % n];
+            return vs[(way.backwards ? bestAt + n - j % n : bestAt + j) % n];
           }
           return bestAt == 0 ? vs[j] : vs[n - j];
         };
@@ -501,8 +517,8 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
           const bool liftAbovePlate =
               !o.plate.enabled || ((b.position() + o.lift * b.axis()).z() >= 0 &&
                                    (g.points[start] + o.lift * startAxis).z() >= 0);
-          if (upper && !overTheBox[tourIndex] && liftAbovePlate) {
-            hopped[tourIndex] = 1;
+          if (upper && !overTheBox[w] && liftAbovePlate) {
+            hopped[w] = 1;
             air = liftAirMove(b.position(), b.axis(), g.points[start], startAxis, o.lift);
           } else {
             Eigen::AlignedBox3d box = printed;
@@ -552,14 +568,21 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
       previous = k;
     }
     path.tours = tourIndex;
+  };
+  for (int attempt = 0;; ++attempt) {
+    buildPath();
     // Attempt 0 is the usual run; a replanned attempt only moves some hops over the box.
     const ProgressReporter attemptProgress = progress.part(
         attempt == 0 ? 0.0 : 0.85 + 0.05 * attempt, attempt == 0 ? 0.9 : 0.9 + 0.05 * attempt);
     attemptProgress.part(0, 0.3).report(1.0);
     auto replannable = [&](int i) {
       const int tour = path.pathIndex[i];
-      return path.kind[i] == MoveKind::Air && tour >= 0 && tour < static_cast<int>(hopped.size()) &&
-             hopped[tour] && !overTheBox[tour];
+      if (path.kind[i] != MoveKind::Air || tour < 0 ||
+          tour >= static_cast<int>(walkOfTour.size())) {
+        return false;
+      }
+      const int w = walkOfTour[tour];
+      return hopped[w] && !overTheBox[w];
     };
     constexpr int kLastAttempt = 2;
     uncleared = finishAxes(path, o, attemptProgress.part(0.3, 1.0),
@@ -568,7 +591,7 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
     int replan = 0;
     for (int i : uncleared) {
       if (replannable(i)) {
-        overTheBox[path.pathIndex[i]] = 1;
+        overTheBox[walkOfTour[path.pathIndex[i]]] = 1;
         ++replan;
       }
     }
@@ -577,10 +600,25 @@ Toolpath planToolpath(const LatticeGraph& input, const SkeletonTree& tree,
       break;
     }
   }
-  path.replannedHops = replannedHops;
-  if (o.alignTransitions && !uncleared.empty()) {
-    realignCollidingAirMoves(path, uncleared, o);
+  // Air moves with colliding stations laid again along the cleared axes.
+  auto realign = [&](std::vector<int> stations) {
+    return o.alignTransitions && !stations.empty() ? realignCollidingAirMoves(path, stations, o)
+                                                   : stations;
+  };
+  uncleared = realign(std::move(uncleared));
+  if (o.retryTourWays && !uncleared.empty()) {
+    std::vector<char> closed(walks.size());
+    for (size_t w = 0; w < walks.size(); ++w) {
+      closed[w] = walks[w].closed;
+    }
+    const TourWayRetry retry = retryTourWays(path, uncleared, walkOfTour, wayOf, closed, [&] {
+      buildPath();
+      return realign(finishAxes(path, o, progress.part(1.0, 1.0), nullptr, &memos, &trees));
+    });
+    path.reorderedTours = retry.reorderedTours;
+    path.unclearedBeforeReorder = retry.before;
   }
+  path.replannedHops = replannedHops;
   path.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return path;
 }

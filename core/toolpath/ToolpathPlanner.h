@@ -20,6 +20,9 @@
 /// Finally segments are subdivided (PathSubdivision.h: axis turn <= maxTurnDeg, length <=
 /// maxSegmentLength) and, in up to four rounds, stations where the nozzle along ∇γ would hit
 /// earlier material of the path get a small tilt (NozzleAxisClearance.h); AxisTilt records it.
+/// Air moves with stations left colliding are laid again along the cleared axes
+/// (AirMoveRealignment.h), and tours with stations left colliding are tried backwards and from
+/// half-way round (TourWays.h).
 #include "common/WorkLimit.h"
 #include "lattice/LatticeInfill.h"
 #include "sequence/PrintSequencer.h"
@@ -51,6 +54,10 @@ struct ToolpathOptions {
   /// their final (cleared) axes instead of their layer normals (AirMoveRealignment.h,
   /// Toolpath::alignedTransitions). Off only to compare with the paper's air moves.
   bool alignTransitions = true;
+  /// A tour with stations left colliding is printed again backwards and from half-way round,
+  /// each such tour keeping the way where fewest of its stations collide (TourWays.h,
+  /// Toolpath::reorderedTours). Off only to compare.
+  bool retryTourWays = true;
   bool supportPerimeter = true;   ///< add the jagged support perimeter (SupportPerimeter.h)
   double toothLength = 0.0;       ///< l (mm); 0 = 2 w
   double maxSegmentLength = 1.0;  ///< longer segments are subdivided (mm, >= 0; 0 = never), so
@@ -110,6 +117,10 @@ struct Toolpath {
   /// leave and reach (AirMoveRealignment.h); rotationSteps and subdivisionPoints stay those of
   /// the path as planned before
   int alignedTransitions = 0;
+  /// tours printed from another start or the other way round because fewer of their stations
+  /// collide so (TourWays.h); unclearedStations counted before that
+  int reorderedTours = 0;
+  int unclearedBeforeReorder = 0;
   double maxAxisTiltDeg = 0;
   double filamentLength = 0;   ///< Σ ΔE over print moves (mm)
   double depositedVolume = 0;  ///< Σ μ w h̄ L over print moves (mm³)
