@@ -57,6 +57,12 @@ void addModelOptions(std::vector<CliOption>& t) {
                      "GLPlaceOnPlatform.FillCavities", &P::Placement,
                      &vtkGLPlaceOnPlatform::SetFillCavities, &vtkGLPlaceOnPlatform::GetFillCavities,
                      true));
+  t.push_back(number("--wrap", "MM", place,
+                     "replace the surface by a closed wrap of it, MM fine (CGAL alpha wrap), for\n"
+                     "surfaces nothing else repairs: crossing facets, non-manifold edges; it\n"
+                     "grows by MM/30 and closes gaps narrower than MM (0 = off; e.g. 1)",
+                     "GLPlaceOnPlatform.Wrap", &P::Placement, &vtkGLPlaceOnPlatform::SetWrap,
+                     &vtkGLPlaceOnPlatform::GetWrap));
 
   const char* orient = "Orientation (which side of the part faces the plate)";
   t.push_back({"--orient", "MODE", orient,

@@ -123,6 +123,7 @@ private:
     Json& input = this->Section("input");
     input["file"] = R.model;
     reportInput(placed, tetMesh, input);
+    this->Note(wrapNote(input, P.Placement->GetWrap()));
     this->Note(filledHolesNote(input));
     if (!R.quiet && input.contains("size_mm")) {
       std::cout << "geolattice: the part is " << input["size_mm"][0].get<double>() << " x "

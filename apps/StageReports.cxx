@@ -95,6 +95,7 @@ void reportInput(vtkDataObject* placed, bool tetMesh, Json& s) {
   s["filled_holes"] = fieldValue(placed, arrays::FilledHoles);
   s["filled_hole_triangles"] = fieldValue(placed, arrays::FilledHoleTriangles);
   s["filled_cavities"] = fieldValue(placed, arrays::FilledCavities);
+  s["wrap_triangles"] = fieldValue(placed, arrays::WrapTriangles);
 }
 
 void reportMesh(vtkDataObject* tets, bool meshed, Json& s) {

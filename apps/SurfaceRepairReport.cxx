@@ -6,6 +6,7 @@
 
 #include "mesh/SurfaceRepair.h"
 
+#include <iomanip>
 #include <sstream>
 
 namespace geolattice {
@@ -37,6 +38,18 @@ std::vector<std::string> reportSurfaceRepairs(vtkDataObject* oriented, vtkDataOb
                         : note.text + " (" + where + ")");
   }
   return notes;
+}
+
+std::string wrapNote(const Json& input, double wrap) {
+  std::ostringstream note;
+  if (input.value("wrap_triangles", 0.0) > 0) {
+    note << "the surface was replaced by its alpha wrap, " << wrap
+         << " mm fine: " << input["wrap_triangles"].get<int>() << " triangles, closed, "
+         << wrap / 30
+         << " mm outside the part (--wrap; narrower gaps and features are closed: look at "
+            "tets.vtu before printing; report.json input.wrap_triangles)";
+  }
+  return note.str();
 }
 
 std::string filledHolesNote(const Json& input) {

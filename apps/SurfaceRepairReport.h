@@ -21,6 +21,10 @@ using Json = nlohmann::ordered_json;
 std::vector<std::string> reportSurfaceRepairs(vtkDataObject* oriented, vtkDataObject* tets,
                                               Json& mesh);
 
+/// The note on the wrap --wrap made (report.json input.wrap_triangles), `wrap` mm fine; empty if
+/// none.
+std::string wrapNote(const Json& input, double wrap);
+
 /// The note on the holes --fill-holes closed (report.json input.filled_holes); empty if none.
 std::string filledHolesNote(const Json& input);
 

@@ -50,6 +50,8 @@ constexpr const char* FilledHoles = "FilledHoles";
 constexpr const char* FilledHoleTriangles = "FilledHoleTriangles";
 /// With FillCavities: the closed inner cavities filled (their shells removed), 1 value.
 constexpr const char* FilledCavities = "FilledCavities";
+/// With Wrap > 0: the triangles of the wrap that replaced the surface (1 value).
+constexpr const char* WrapTriangles = "WrapTriangles";
 constexpr const char* PlacementTranslation =
     "PlacementTranslation";  ///< 3 values (mm), applied after scaling
 // Curved layer slicer output (vtkGLCurvedLayerSlicer).

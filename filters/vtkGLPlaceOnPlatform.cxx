@@ -6,9 +6,11 @@
 #include "vtkGLRequest.h"
 
 #include "common/Error.h"
+#include "common/WorkLimit.h"
 #include "mesh/HoleFilling.h"
 #include "mesh/ShellNesting.h"
 #include "mesh/SurfaceRepair.h"
+#include "mesh/SurfaceWrap.h"
 #include "placement/PlaceOnPlatform.h"
 
 #include <vtkCellData.h>
@@ -38,6 +40,7 @@ void vtkGLPlaceOnPlatform::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "CenterXY: " << (this->Options.centerXY ? "on" : "off") << "\n";
   os << indent << "FillHoles: " << (this->Options.fillHoles ? "on" : "off") << "\n";
   os << indent << "FillCavities: " << (this->Options.fillCavities ? "on" : "off") << "\n";
+  os << indent << "Wrap: " << this->Options.wrap << " mm\n";
 }
 
 vtkGLPlaceOnPlatform::vtkGLPlaceOnPlatform() = default;
@@ -59,15 +62,26 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
     }
     const gl::PlacementOptions options = this->Options;
     options.validate();
-    // The holes closed first: their patches belong to the part that is placed. Then the
-    // cavities filled, on the welded surface (shells are told apart by shared edges).
+    // The wrap first (it replaces the surface), then the holes closed: their patches belong to
+    // the part that is placed. Then the cavities filled, on the welded surface (shells are told
+    // apart by shared edges).
     vtkNew<vtkPolyData> closed;
+    gl::SurfaceWrapResult wrapped;
     gl::HoleFillingResult filled;
     gl::CavityFilling solid;
     vtkPolyData* surfaceInput = vtkPolyData::SafeDownCast(input);
-    if ((options.fillHoles || options.fillCavities) && surfaceInput &&
+    if ((options.wrap > 0 || options.fillHoles || options.fillCavities) && surfaceInput &&
         surfaceInput->GetNumberOfPolys() > 0) {
       gl::TriangleSurface surface = gl::toTriangleSurface(surfaceInput);
+      if (options.wrap > 0) {
+        // Wrap is in mm of the placed part: in the input's units through the placement's scale.
+        double b[6];
+        surfaceInput->GetPoints()->GetBounds(b);
+        const double s =
+            gl::placeOnPlatform(gl::Vec3(b[0], b[2], b[4]), gl::Vec3(b[1], b[3], b[5]), options)
+                .scale;
+        wrapped = gl::wrapSurface(surface, options.wrap / s, gl::kDefaultMaxElements);
+      }
       if (options.fillHoles) {
         filled = gl::fillHoles(surface);
       }
@@ -75,7 +89,7 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
         gl::repairSurface(surface);
         solid = gl::fillCavities(surface);
       }
-      if (filled.holes > 0 || solid.cavities > 0) {
+      if (wrapped.triangles > 0 || filled.holes > 0 || solid.cavities > 0) {
         gl::fromTriangleSurface(surface, closed);
         closed->GetFieldData()->PassData(input->GetFieldData());
         input = closed;
@@ -128,6 +142,12 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
     } else {  // not this placement's (e.g. a part saved from an earlier run)
       output->GetFieldData()->RemoveArray(gl::arrays::FilledHoles);
       output->GetFieldData()->RemoveArray(gl::arrays::FilledHoleTriangles);
+    }
+    if (options.wrap > 0) {
+      gl::addFieldArray(output->GetFieldData(), gl::arrays::WrapTriangles,
+                        {static_cast<double>(wrapped.triangles)});
+    } else {
+      output->GetFieldData()->RemoveArray(gl::arrays::WrapTriangles);
     }
     if (options.fillCavities) {
       gl::addFieldArray(output->GetFieldData(), gl::arrays::FilledCavities,

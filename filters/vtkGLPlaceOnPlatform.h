@@ -18,13 +18,15 @@
  * `PlacementTranslation` (3 values: t, mm), names in vtkGLArrayNames.h.
  *
  * Parameters (core/placement/PlaceOnPlatform.h, defaults there): Scale, FitSize, CenterXY,
- * FillHoles, FillCavities (see the Set/Get blocks below). With FillHoles, a surface's holes are
+ * FillHoles, FillCavities, Wrap (see the Set/Get blocks below). With FillHoles, a surface's holes are
  * closed first (core/mesh/HoleFilling.h; field data `FilledHoles`, `FilledHoleTriangles`), then
  * placed: the patches count in the bounding box. With FillCavities, its sealed voids are filled
- * (core/mesh/ShellNesting.h; field data `FilledCavities`).
+ * (core/mesh/ShellNesting.h; field data `FilledCavities`). With Wrap > 0, a surface is replaced
+ * by its alpha wrap before all of that (core/mesh/SurfaceWrap.h; field data `WrapTriangles`: the
+ * wrap's triangles): closed and free of crossing facets whatever the input's defects.
  *
- * Errors (vtkErrorMacro, empty output, RequestData returns 0): Scale <= 0, FitSize < 0, an empty
- * input, FitSize > 0 for a model whose bounding box has no extent, non-finite coordinates, a
+ * Errors (vtkErrorMacro, empty output, RequestData returns 0): Scale <= 0, FitSize < 0, Wrap < 0,
+ * a wrap estimated above the work limit, an empty input, FitSize > 0 for a model whose bounding box has no extent, non-finite coordinates, a
  * placed part whose largest side is outside 1 mm - 2 m (the likely unit mistake and its fix are
  * named: "is the file in metres? use Scale 1000 or FitSize MM"). Out-of-domain values are
  * reported rather than clamped so that a wrong unit is noticed.
@@ -72,6 +74,16 @@ public:
   /// solid there; no nozzle reaches inside a sealed void. Ignored for a tet mesh. The output is
   /// then the welded, repaired surface (core/mesh/SurfaceRepair.h) without those shells.
   vtkGLOptionBooleanMacro(FillCavities, fillCavities);
+  ///@}
+
+  ///@{
+  /// Replace a surface by its alpha wrap at this resolution before placing it (mm of the placed
+  /// part, default 0 = off, >= 0; core/mesh/SurfaceWrap.h: CGAL::alpha_wrap_3, offset Wrap / 30
+  /// outward). For surfaces nothing else repairs: facets crossing each other, non-manifold
+  /// edges, overlapping or touching bodies, holes. The wrap approximates the part: features and
+  /// gaps narrower than Wrap close, sealed voids fill. Ignored for a tet mesh. The output is
+  /// then the wrap (the input's point and cell arrays are not passed).
+  vtkGLOptionMacro(Wrap, double, wrap);
   ///@}
 
 protected:

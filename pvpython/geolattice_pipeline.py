@@ -68,6 +68,7 @@ PARAMETERS = {
     "center": (("place",), "CenterXY"),
     "fill_holes": (("place",), "FillHoles"),
     "fill_cavities": (("place",), "FillCavities"),
+    "wrap": (("place",), "Wrap"),
     "orient": (("orient",), "Orient"),
     "min_base_area": (("orient",), "MinBaseArea"),
     "edge_length": (("tets",), "TargetEdgeLength"),
@@ -220,6 +221,8 @@ def main(argv=None):
                         help="close the holes of an open surface (a scan) before placing it")
     parser.add_argument("--fill-cavities", action="store_true", default=None,
                         help="fill the part's sealed inner voids before placing it (printed solid)")
+    parser.add_argument("--wrap", type=float,
+                        help="replace the surface by a closed wrap of it this fine, mm (CGAL alpha wrap)")
     parser.add_argument("--edge-length", type=float, help="target tet edge length in mm (0 = automatic)")
     parser.add_argument("--base-tolerance", type=float,
                         help="vertices this far above the lowest point are the base, mm")
@@ -233,7 +236,7 @@ def main(argv=None):
     load_plugin(args.plugin)
     os.makedirs(args.output, exist_ok=True)
     given = dict(scale=args.scale, fit_size=args.fit_size, fill_holes=args.fill_holes,
-                 fill_cavities=args.fill_cavities,
+                 fill_cavities=args.fill_cavities, wrap=args.wrap,
                  edge_length=args.edge_length,
                  base_tolerance=args.base_tolerance, time_factor=args.time_factor,
                  layer_interval=args.layer_interval, strategy=args.strategy, nozzle_angle=args.nozzle_angle)

@@ -1,6 +1,7 @@
 #include "mesh/OverlappingBodies.h"
 
 #include "common/Error.h"
+#include "mesh/SurfaceWrap.h"
 #include "common/UnionFind.h"
 #include "mesh/CgalSurfaceMesh.h"
 #include "mesh/SurfaceCheck.h"
@@ -126,7 +127,8 @@ OverlappingBodiesResult mergeOverlappingBodies(TriangleSurface& surface) {
             throw GeoLatticeError("self-intersecting surface: the body near " +
                                   where(bodies[k].box) +
                                   " crosses itself (and another body); repair it in its CAD "
-                                  "tool and export it again");
+                                  "tool and export it again" +
+                                  kWrapHint);
           }
         }
         Mesh united;

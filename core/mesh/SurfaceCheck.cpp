@@ -1,6 +1,7 @@
 #include "mesh/SurfaceCheck.h"
 
 #include "common/Error.h"
+#include "mesh/SurfaceWrap.h"
 
 #include <algorithm>
 #include <cmath>
@@ -150,7 +151,8 @@ SurfaceCheckReport requireClosedManifold(const TriangleSurface& surface) {
     throw GeoLatticeError("non-manifold surface: " + std::to_string(r.nonManifoldEdges) +
                           " edges shared by more than two triangles" + at(r.firstNonManifoldEdge) +
                           ". Separate the touching bodies or merge them into one solid in the "
-                          "CAD tool (a Boolean union)");
+                          "CAD tool (a Boolean union)" +
+                          kWrapHint);
   }
   if (r.inconsistentEdges > 0) {
     throw GeoLatticeError(

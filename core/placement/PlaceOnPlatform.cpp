@@ -21,6 +21,11 @@ void PlacementOptions::validate() const {
     m << "FitSize must be >= 0 mm (0 = off), got " << fitSize;
     throw GeoLatticeError(m.str());
   }
+  if (!(wrap >= 0.0) || !std::isfinite(wrap)) {
+    std::ostringstream m;
+    m << "Wrap must be >= 0 mm (0 = off), got " << wrap;
+    throw GeoLatticeError(m.str());
+  }
 }
 
 Placement placeOnPlatform(const Vec3& lo, const Vec3& hi, const PlacementOptions& options) {

@@ -28,7 +28,12 @@ struct PlacementOptions {
   /// A surface's closed inner cavities filled before it is placed (mesh/ShellNesting.h: the
   /// cavities' shells removed, the part printed solid there); off: they stay hollow.
   bool fillCavities = false;
-  /// Checks the options; throws GeoLatticeError naming the bad one (Scale, FitSize).
+  /// A surface replaced by its alpha wrap at this resolution (mm of the placed part; 0 = off)
+  /// before it is placed (mesh/SurfaceWrap.h): closed and free of crossing facets whatever the
+  /// input's defects, an approximation of the part (offset by wrap / 30 outward, features and
+  /// gaps narrower than wrap closed, sealed voids filled).
+  double wrap = 0.0;
+  /// Checks the options; throws GeoLatticeError naming the bad one (Scale, FitSize, Wrap).
   void validate() const;
 };
 

@@ -1,6 +1,7 @@
 #include "tetrahedralize/TetGenRunner.h"
 
 #include "common/Error.h"
+#include "mesh/SurfaceWrap.h"
 
 #include <tetgen.h>
 
@@ -376,7 +377,7 @@ std::vector<char> finishChild(Child& child, const std::function<bool()>& shouldA
       throw GeoLatticeError(tetgenErrorMessage(h.code));
     case kSelfIntersecting:
       throw GeoLatticeError("self-intersecting surface: TetGen found " + std::to_string(h.code) +
-                            " intersecting facets");
+                            " intersecting facets; repair it in its CAD tool" + kWrapHint);
     case kOutOfMemory:
       throw GeoLatticeError(tetgenErrorMessage(1));
     default:

@@ -109,14 +109,22 @@ class CliErrorTest(unittest.TestCase):
     def test_non_manifold_surface(self):
         # The cube plus a fin: a third triangle on the edge (1,2).
         fin = CUBE_OBJ + "v 0.5 -1 0\nf 1 2 9\nf 2 1 9\n"
-        self.expect_error([write(os.path.join(self.tmp, "fin.obj"), fin)], "non-manifold")
+        model = write(os.path.join(self.tmp, "fin.obj"), fin)
+        self.expect_error([model], "non-manifold", "--wrap 1")
+        report = self.meshed_with_note(model, "replaced by its alpha wrap", "--scale", "20", "--wrap", "1")
+        self.assertGreater(report["input"]["wrap_triangles"], 100)
 
     def test_self_intersecting_surface(self):
         # One body crossing itself: the cube's top face folded down through its bottom (a vertex
         # in the top face's middle pushed below the bottom).
         folded = CUBE_OBJ + "v 0.5 0.5 -0.3\n"
         folded = folded.replace("f 5 6 7\nf 5 7 8\n", "f 5 6 9\nf 6 7 9\nf 7 8 9\nf 8 5 9\n")
-        self.expect_error([write(os.path.join(self.tmp, "folded.obj"), folded)], "self-intersecting")
+        model = write(os.path.join(self.tmp, "folded.obj"), folded)
+        self.expect_error([model], "self-intersecting", "--wrap 1")
+        # Asked for, the surface is replaced by its alpha wrap: closed, without crossing facets,
+        # meshed.
+        report = self.meshed_with_note(model, "replaced by its alpha wrap", "--scale", "20", "--wrap", "1")
+        self.assertGreater(report["input"]["wrap_triangles"], 100)
 
     def test_overlapping_bodies_print_as_their_union(self):
         # Two closed cubes that overlap (an assembly exported as it is): meshed as one solid, said on

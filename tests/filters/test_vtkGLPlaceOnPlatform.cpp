@@ -343,3 +343,56 @@ TEST(PlaceOnPlatform, FillCavitiesPrintsAHollowBallSolid) {
   EXPECT_GT(check.signedVolume, 0.97 * 4.0 / 3.0 * M_PI * 20 * 20 * 20);  // solid: no void
   EXPECT_EQ(pointBounds(solid)[4], 0.0);
 }
+
+TEST(PlaceOnPlatform, WrapReplacesACrossingSurfaceByAClosedOneInPlacedMillimetres) {
+  vtkNew<vtkGLPlaceOnPlatform> defaults;
+  EXPECT_EQ(defaults->GetWrap(), 0.0);
+  // Two unit boxes overlapping by half, their points not shared (facets cross), in metres-like
+  // units: FitSize 30 scales by 20, so Wrap 1 mm is 0.05 input units and the wrap's offset
+  // 1/30 mm of the placed part.
+  geolattice::TriangleSurface soup = geolattice::boxSurface(geolattice::Vec3(1, 1, 1), 0.25);
+  const geolattice::TriangleSurface second =
+      geolattice::boxSurface(geolattice::Vec3(1, 1, 1), 0.25);
+  const int offset = static_cast<int>(soup.points.size());
+  for (const geolattice::Vec3& p : second.points) {
+    soup.points.push_back(p + geolattice::Vec3(0.5, 0, 0));
+  }
+  for (const auto& t : second.triangles) {
+    soup.triangles.push_back({t[0] + offset, t[1] + offset, t[2] + offset});
+  }
+  vtkNew<vtkPolyData> input;
+  geolattice::fromTriangleSurface(soup, input);
+
+  vtkNew<vtkGLPlaceOnPlatform> filter;
+  vtkNew<GLTestErrorObserver> errors;
+  errors->Observe(filter);
+  filter->SetInputData(input);
+  filter->SetFitSize(30);
+  filter->SetWrap(1.0);
+  filter->Update();
+  EXPECT_FALSE(errors->HasError()) << errors->Errors();
+  vtkPolyData* wrapped = vtkPolyData::SafeDownCast(filter->GetOutputDataObject(0));
+  ASSERT_TRUE(wrapped);
+  const double triangles = fieldValue(wrapped, geolattice::arrays::WrapTriangles, 0);
+  EXPECT_EQ(triangles, static_cast<double>(wrapped->GetNumberOfCells()));
+  const auto check = geolattice::checkSurface(geolattice::toTriangleSurface(wrapped));
+  EXPECT_TRUE(check.isClosedManifold());
+  // The union, 30 x 20 x 20 mm placed, within the offset and the rounding of its edges.
+  EXPECT_GT(check.signedVolume, 0.99 * 30 * 20 * 20);
+  EXPECT_LT(check.signedVolume, 30.1 * 20.1 * 20.1);
+  const auto b = pointBounds(wrapped);
+  EXPECT_NEAR(b[1] - b[0], 30.0, 1e-9);  // FitSize holds for the wrap
+  EXPECT_EQ(b[4], 0.0);
+  // Facets about 1 mm across (1 mm of the placed part; 1 input unit would be 20 mm and give a
+  // few dozen): more than facets 2 mm across (0.43 x 2² mm² each) would need for 3,200 mm².
+  EXPECT_GT(triangles, 3200 / (0.43 * 2 * 2));
+
+  vtkNew<vtkGLPlaceOnPlatform> bad;
+  vtkNew<GLTestErrorObserver> badErrors;
+  badErrors->Observe(bad);
+  bad->SetInputData(input);
+  bad->SetWrap(-1);
+  EXPECT_FALSE(bad->Update(0, nullptr));
+  EXPECT_NE(badErrors->Errors().find("Wrap must be >= 0"), std::string::npos)
+      << badErrors->Errors();
+}
