@@ -24,9 +24,12 @@
 /// half-way backwards 25, each way from a quarter or three quarters round 12 to 35.
 ///
 /// Cost: nothing where no station collides, or where more than kMaxRetriedFraction of the
-/// stations do (that placement is far from printable; a pass searches each again); otherwise
-/// at most four more planning passes (ToolpathPlanner's subdivision and clearance rounds, which
-/// reuse the earlier passes' detection where the material before a station is unchanged).
+/// stations do: that placement is far from printable (of the 27 runs, the path that came out
+/// clear had 0.02 % of its stations colliding, the elbow's 10 of 46,541), and each pass
+/// searches them all again (the bunny as placed under the example printhead, 0.4 %: 12 s
+/// instead of 2 for 1,061 -> 808). Otherwise at most four more planning passes
+/// (ToolpathPlanner's subdivision and clearance rounds, which reuse the earlier passes'
+/// detection where the material before a station is unchanged).
 #include "toolpath/ToolpathPlanner.h"
 
 #include <functional>
@@ -48,8 +51,8 @@ constexpr int kTourWays = 4;
 /// half-way round, 3 backwards from there.
 TourWay tourWay(int index);
 
-/// Above this fraction of colliding stations no other way is tried.
-constexpr double kMaxRetriedFraction = 0.01;
+/// Above this fraction of colliding stations (one in a thousand) no other way is tried.
+constexpr double kMaxRetriedFraction = 0.001;
 
 /// What retryTourWays did (Toolpath::reorderedTours, unclearedBeforeReorder).
 struct TourWayRetry {

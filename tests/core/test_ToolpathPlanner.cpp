@@ -176,6 +176,20 @@ void expectGoodToolpath(const char* name, const Part& part, double nozzleAngle) 
   EXPECT_TRUE(r.collisionFree) << name << ": " << r.violatingStations << " stations";
 }
 
+/// The verifier on a whole toolpath, strict (no exemption), the build plate included: every
+/// point at its own time, the print points material.
+CollisionReport verifyStrictly(const Toolpath& path, const ToolpathOptions& o) {
+  const size_t N = path.points.size();
+  std::vector<int> time(N);
+  std::vector<char> material(N);
+  for (size_t i = 0; i < N; ++i) {
+    time[i] = static_cast<int>(i);
+    material[i] = path.kind[i] != MoveKind::Air;
+  }
+  return verifyNozzleClearance(path.points, path.normals, time, o.nozzle, 0, nullptr, &material,
+                               &o.plate);
+}
+
 }  // namespace
 
 TEST(ToolpathPlanner, YShape) {
@@ -210,15 +224,7 @@ TEST(ToolpathPlanner, AirMovesWhoseStationsCollideAreLaidAlongTheFinalAxes) {
   EXPECT_EQ(aligned.retractions, normals.retractions);
   EXPECT_EQ(aligned.points.size(), aligned.axisTilt.size());
   auto collidingAirStations = [&](const Toolpath& path) {
-    const size_t N = path.points.size();
-    std::vector<int> time(N);
-    std::vector<char> material(N);
-    for (size_t i = 0; i < N; ++i) {
-      time[i] = static_cast<int>(i);
-      material[i] = path.kind[i] != MoveKind::Air;
-    }
-    const CollisionReport r = verifyNozzleClearance(path.points, path.normals, time, o.nozzle, 0,
-                                                    nullptr, &material, &o.plate);
+    const CollisionReport r = verifyStrictly(path, o);
     long long air = 0;
     for (int i : r.violatingStationIds)
       air += path.kind[i] == MoveKind::Air;
@@ -392,14 +398,5 @@ TEST(ToolpathPlanner, ToursWithCollidingStationsArePrintedTheWayFewestCollide) {
     return count;
   };
   EXPECT_TRUE(visits(retried) == visits(usual));
-  const size_t N = retried.points.size();
-  std::vector<int> time(N);
-  std::vector<char> material(N);
-  for (size_t i = 0; i < N; ++i) {
-    time[i] = static_cast<int>(i);
-    material[i] = retried.kind[i] != MoveKind::Air;
-  }
-  const CollisionReport r = verifyNozzleClearance(retried.points, retried.normals, time, o.nozzle,
-                                                  0, nullptr, &material, &o.plate);
-  EXPECT_EQ(r.violatingStations, retried.unclearedStations);
+  EXPECT_EQ(verifyStrictly(retried, o).violatingStations, retried.unclearedStations);
 }

@@ -90,7 +90,7 @@ TEST(TourWays, EachTourKeepsTheWayWhereFewestOfItsStationsCollide) {
   f.colliding = {{{0, 0}, 4}, {{0, 1}, 1}, {{0, 2}, 3}, {{0, 3}, 2},   // walk 0: backwards best
                  {{1, 0}, 0}, {{1, 1}, 5},                             // walk 1: clear, untouched
                  {{2, 0}, 3}, {{2, 1}, 6}, {{2, 2}, 6}, {{2, 3}, 0}};  // walk 2: half-way back
-  f.extraStations = 1000;  // below the fraction that is retried
+  f.extraStations = 10000;  // below the fraction that is retried
   const Retried r = retry(f, {1, 1, 1});
   EXPECT_EQ(r.wayOf, (std::vector<int>{1, 0, 3}));
   EXPECT_EQ(r.retry.retriedTours, 2);
@@ -106,7 +106,7 @@ TEST(TourWays, AClearTourStopsBeingTried) {
   FakePlanner f;
   f.walks = 1;
   f.colliding = {{{0, 0}, 2}, {{0, 1}, 0}, {{0, 2}, 7}, {{0, 3}, 7}};
-  f.extraStations = 1000;
+  f.extraStations = 10000;
   const Retried r = retry(f, {1});
   EXPECT_EQ(r.wayOf, std::vector<int>{1});
   EXPECT_EQ(r.retry.after, 0);
@@ -117,7 +117,7 @@ TEST(TourWays, OpenRunsAndAirStationsAreNotRetried) {
   FakePlanner f;
   f.colliding = {{{0, 0}, 2}, {{0, 1}, 0}, {{1, 0}, 3}, {{1, 1}, 0}};
   f.air = 2;  // air stations before walk 0 collide in every way
-  f.extraStations = 1000;
+  f.extraStations = 10000;
   const Retried r = retry(f, {0, 1, 1});  // walk 0 is an open run
   EXPECT_EQ(r.wayOf, (std::vector<int>{0, 1, 0}));
   EXPECT_EQ(r.retry.retriedTours, 1);
@@ -131,7 +131,7 @@ TEST(TourWays, ThePathIsKeptOnlyWhereFewerCollideInAll) {
   FakePlanner f;
   f.walks = 2;
   f.colliding = {{{0, 0}, 3}, {{0, 1}, 1}, {{0, 2}, 3}, {{0, 3}, 3}};
-  f.extraStations = 1000;
+  f.extraStations = 10000;
   Retried r;
   r.wayOf.assign(2, 0);
   r.uncleared = f.plan(r.path, r.walkOfTour, r.wayOf);
