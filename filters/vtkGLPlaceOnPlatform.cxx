@@ -62,9 +62,10 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
     }
     const gl::PlacementOptions options = this->Options;
     options.validate();
-    // The wrap first (it replaces the surface), then the holes closed: their patches belong to
-    // the part that is placed. Then the cavities filled, on the welded surface (shells are told
-    // apart by shared edges).
+    // The holes closed first: their patches belong to the part that is placed (and wrapped: a
+    // hole wider than the wrap's resolution lets the wrap inside, around the sheet). Then the
+    // wrap, which replaces the surface; then the cavities filled, on the welded surface
+    // (shells are told apart by shared edges).
     vtkNew<vtkPolyData> closed;
     gl::SurfaceWrapResult wrapped;
     gl::HoleFillingResult filled;
@@ -73,6 +74,9 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
     if ((options.wrap > 0 || options.fillHoles || options.fillCavities) && surfaceInput &&
         surfaceInput->GetNumberOfPolys() > 0) {
       gl::TriangleSurface surface = gl::toTriangleSurface(surfaceInput);
+      if (options.fillHoles) {
+        filled = gl::fillHoles(surface);
+      }
       if (options.wrap > 0) {
         // Wrap is in mm of the placed part: in the input's units through the placement's scale.
         double b[6];
@@ -81,9 +85,6 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
             gl::placeOnPlatform(gl::Vec3(b[0], b[2], b[4]), gl::Vec3(b[1], b[3], b[5]), options)
                 .scale;
         wrapped = gl::wrapSurface(surface, options.wrap / s, gl::kDefaultMaxElements);
-      }
-      if (options.fillHoles) {
-        filled = gl::fillHoles(surface);
       }
       if (options.fillCavities) {
         gl::repairSurface(surface);

@@ -22,8 +22,9 @@
  * closed first (core/mesh/HoleFilling.h; field data `FilledHoles`, `FilledHoleTriangles`), then
  * placed: the patches count in the bounding box. With FillCavities, its sealed voids are filled
  * (core/mesh/ShellNesting.h; field data `FilledCavities`). With Wrap > 0, a surface is replaced
- * by its alpha wrap before all of that (core/mesh/SurfaceWrap.h; field data `WrapTriangles`: the
- * wrap's triangles): closed and free of crossing facets whatever the input's defects.
+ * by its alpha wrap after its holes are closed (with FillHoles) and before its cavities are
+ * filled (core/mesh/SurfaceWrap.h; field data `WrapTriangles`: the wrap's triangles): closed
+ * and free of crossing facets whatever the input's defects.
  *
  * Errors (vtkErrorMacro, empty output, RequestData returns 0): Scale <= 0, FitSize < 0, Wrap < 0,
  * a wrap estimated above the work limit, an empty input, FitSize > 0 for a model whose bounding box has no extent, non-finite coordinates, a
@@ -81,8 +82,10 @@ public:
   /// part, default 0 = off, >= 0; core/mesh/SurfaceWrap.h: CGAL::alpha_wrap_3, offset Wrap / 30
   /// outward). For surfaces nothing else repairs: facets crossing each other, non-manifold
   /// edges, overlapping or touching bodies, holes. The wrap approximates the part: features and
-  /// gaps narrower than Wrap close, sealed voids fill. Ignored for a tet mesh. The output is
-  /// then the wrap (the input's point and cell arrays are not passed).
+  /// gaps narrower than Wrap close, sealed voids fill; a hole wider than Wrap lets the wrap
+  /// inside (a thin shell around an open sheet): close such holes with FillHoles, which runs
+  /// first. Ignored for a tet mesh. The output is then the wrap (the input's point and cell
+  /// arrays are not passed).
   vtkGLOptionMacro(Wrap, double, wrap);
   ///@}
 

@@ -1,7 +1,7 @@
 #pragma once
 /// @file SurfaceWrap.h
 /// @brief Replaces a surface that cannot be meshed as it is (facets crossing each other,
-/// non-manifold edges, holes, overlapping shells: what a scan or a careless export gives) by a
+/// non-manifold edges, small holes, overlapping shells: what a careless export gives) by a
 /// closed, 2-manifold, non-self-intersecting wrap of it. Asked for explicitly (GL Place On
 /// Platform's Wrap, `geolattice run --wrap MM`): the wrap is an approximation of the part.
 ///
@@ -10,8 +10,11 @@
 /// offset of alpha / 30 (CGAL's default) outside the input. So the result is watertight and free
 /// of self-intersections whatever the input's defects, grows by the offset everywhere, loses
 /// features and closes channels narrower than alpha, and fills sealed inner voids (a wrap from
-/// outside never sees them). alpha is the resolution: 1 mm keeps what the 0.6 mm beads and the
-/// 4 mm lattice of the default print resolve.
+/// outside never sees them). A hole wider than alpha lets the wrap inside: an open sheet (a scan
+/// seen from too few sides) becomes a thin shell around it, 2 alpha / 30 thick, not the solid
+/// meant (the full-resolution bunny scan at 2 mm: 49k triangles in 15 s, and TetGen then meets
+/// knife edges); its holes are closed first (HoleFilling.h). alpha is the resolution: 1 mm keeps
+/// what the 0.6 mm beads and the 4 mm lattice of the default print resolve.
 ///
 /// Cost: CGAL's wrap is about linear in the output's size, which grows as the area / alpha²
 /// (about 7,000 output triangles a second here: a 34 x 34 x 40 mm twisted star 15k triangles in

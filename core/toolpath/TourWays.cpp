@@ -60,6 +60,13 @@ TourWayRetry retryTourWays(Toolpath& path, std::vector<int>& uncleared,
   const std::vector<int> keptWays = wayOf;
   std::vector<int> chosen = wayOf;
   bool changed = false;
+  // The trial with the fewest colliding stations, kept: where every tour's way chosen is that
+  // trial's (one tour retried, or all best the same way), it is the path, with no pass more.
+  struct Trial {
+    Toolpath path;
+    std::vector<int> uncleared, walkOfTour, ways;
+  } bestTrial;
+  bestTrial.uncleared = keptUncleared;
   // Every retried tour tries the same way in one pass: tours on different layers hardly meet,
   // and a pass is the cost (the whole path's subdivision and clearance).
   for (int way = 1; way < kTourWays && !retried.empty(); ++way) {
@@ -83,11 +90,21 @@ TourWayRetry retryTourWays(Toolpath& path, std::vector<int>& uncleared,
       }
     }
     retried.swap(still);
+    if (trial.size() < bestTrial.uncleared.size()) {
+      bestTrial = Trial{path, trial, walkOfTour, wayOf};
+    }
   }
   if (changed) {
     wayOf = chosen;
-    std::vector<int> result = plan();
-    ++r.passes;
+    std::vector<int> result;
+    if (chosen == bestTrial.ways) {
+      path = std::move(bestTrial.path);
+      walkOfTour = std::move(bestTrial.walkOfTour);
+      result = std::move(bestTrial.uncleared);
+    } else {
+      result = plan();
+      ++r.passes;
+    }
     if (result.size() < keptUncleared.size()) {
       uncleared = std::move(result);
       r.after = static_cast<int>(uncleared.size());

@@ -29,7 +29,9 @@
 /// searches them all again (the bunny as placed under the example printhead, 0.4 %: 12 s
 /// instead of 2 for 1,061 -> 808). Otherwise at most four more planning passes
 /// (ToolpathPlanner's subdivision and clearance rounds, which reuse the earlier passes'
-/// detection where the material before a station is unchanged).
+/// detection where the material before a station is unchanged): a trial pass per way until
+/// every retried tour is clear, and one with the ways chosen, unless they are all one trial's
+/// (one tour retried, or every tour best the same way): then that trial's path is kept.
 #include "toolpath/ToolpathPlanner.h"
 
 #include <functional>

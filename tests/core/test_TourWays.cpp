@@ -110,7 +110,9 @@ TEST(TourWays, AClearTourStopsBeingTried) {
   const Retried r = retry(f, {1});
   EXPECT_EQ(r.wayOf, std::vector<int>{1});
   EXPECT_EQ(r.retry.after, 0);
-  EXPECT_EQ(r.retry.passes, 2);  // backwards cleared it: no other way tried
+  // Backwards cleared it: no other way tried, and that pass's path is the one kept.
+  EXPECT_EQ(r.retry.passes, 1);
+  EXPECT_EQ(f.passes, 1);
 }
 
 TEST(TourWays, OpenRunsAndAirStationsAreNotRetried) {
@@ -126,11 +128,13 @@ TEST(TourWays, OpenRunsAndAirStationsAreNotRetried) {
 }
 
 TEST(TourWays, ThePathIsKeptOnlyWhereFewerCollideInAll) {
-  // Backwards, walk 0 alone collides less, but the last pass (the ways chosen together) does
-  // not: the usual path is restored, with its ways, stations and tours.
+  // Walk 0 collides less backwards, walk 1 from half-way, but the last pass (their ways chosen
+  // together, a path no trial planned) collides more in all: the usual path is restored, with
+  // its ways, stations and tours.
   FakePlanner f;
   f.walks = 2;
-  f.colliding = {{{0, 0}, 3}, {{0, 1}, 1}, {{0, 2}, 3}, {{0, 3}, 3}};
+  f.colliding = {{{0, 0}, 3}, {{0, 1}, 1}, {{0, 2}, 3}, {{0, 3}, 3},
+                 {{1, 0}, 3}, {{1, 1}, 3}, {{1, 2}, 1}, {{1, 3}, 3}};
   f.extraStations = 10000;
   Retried r;
   r.wayOf.assign(2, 0);
@@ -140,15 +144,16 @@ TEST(TourWays, ThePathIsKeptOnlyWhereFewerCollideInAll) {
   int pass = 0;
   r.retry = retryTourWays(r.path, r.uncleared, r.walkOfTour, r.wayOf, {1, 1}, [&] {
     std::vector<int> u = f.plan(r.path, r.walkOfTour, r.wayOf);
-    if (++pass == kTourWays) {  // the path with the chosen ways: walk 1 collides there now
-      for (int i = 0; i < 5; ++i) {
+    if (++pass == kTourWays) {  // the path with the chosen ways: more collide there
+      for (int i = 0; i < 10; ++i) {
         u.push_back(static_cast<int>(stations) - 1 - i);
       }
     }
     return u;
   });
+  EXPECT_EQ(pass, kTourWays);
   EXPECT_EQ(r.retry.reorderedTours, 0);
-  EXPECT_EQ(r.retry.after, 3);
+  EXPECT_EQ(r.retry.after, 6);
   EXPECT_EQ(r.uncleared, before);
   EXPECT_EQ(r.wayOf, (std::vector<int>{0, 0}));
   EXPECT_EQ(r.path.points.size(), stations);
