@@ -3,11 +3,13 @@
 // trimming + crossover-free Euler tours + layer thickness (the paper's steps), and the whole
 // planner (with support perimeters, rotation steps, air moves, extrusion). Also the point tree
 // of the axis clearance and the verifier (TimedPointTree) over 470k points along a helix, the
-// stations of a topopt-sized toolpath, built once per clearance round.
+// stations of a topopt-sized toolpath, built once per clearance round. And the planner on
+// topopt at 80 mm under a 30° nozzle with and without trying its colliding tours in other ways.
 // Run: build/bin/bench_toolpath
 #include "../tests/common/CoreStages.h"
 #include "collision/TimedPointTree.h"
 #include "lattice/LatticeInfill.h"
+#include "sequence/PotentialCollisions.h"
 #include "sequence/PrintMaterial.h"
 #include "sequence/PrintSequencer.h"
 #include "skeleton/SkeletonTree.h"
@@ -97,6 +99,42 @@ void BM_PlanToolpath(benchmark::State& state) {
   state.counters["inserted"] = p.subdivisionPoints;
 }
 BENCHMARK(BM_PlanToolpath)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+/// topopt at 80 mm under a 30° nozzle (tet edge 2 mm, lattice 4 mm, the rollout order): 47
+/// stations collide after the axis clearance, in few enough tours that they are planned again
+/// in the other ways (toolpath/TourWays.h). Argument 0: tour ways off; 1: on (the default).
+void BM_PlanToolpathTourWays(benchmark::State& state) {
+  static const Bunny part = [] {
+    fixtures::CoreStageOptions o;
+    o.edgeLength = 2.0;
+    o.latticeWidth = 4.0;
+    fixtures::CoreStages stages =
+        fixtures::runCoreStages(fixtures::scaledModel("topopt_new4_surf.obj", 80, true), o);
+    Bunny r;
+    r.lattice = std::move(stages.lattice);
+    r.tree = std::move(stages.tree);
+    const MaterialSamples m = sampleLatticeMaterial(r.lattice, 1.0);
+    NozzleModel n;
+    n.halfAngleDeg = 30;
+    const PotentialCollisions pcg = computePotentialCollisions(m, n);
+    SequenceOptions so;
+    so.strategy = SequenceStrategy::Rollout;
+    r.order = sequencePrint(r.tree, m, &pcg, so).order;
+    return r;
+  }();
+  ToolpathOptions options;
+  options.nozzle.halfAngleDeg = 30;
+  options.retryTourWays = state.range(0) != 0;
+  Toolpath p;
+  for (auto _ : state) {
+    p = planToolpath(part.lattice, part.tree, part.order, options);
+    benchmark::DoNotOptimize(p.points.data());
+  }
+  state.counters["points"] = static_cast<double>(p.points.size());
+  state.counters["uncleared"] = p.unclearedStations;
+  state.counters["reordered_tours"] = p.reorderedTours;
+}
+BENCHMARK(BM_PlanToolpathTourWays)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
 void BM_BuildTimedPointTree(benchmark::State& state) {
   const int n = 470000;
