@@ -65,17 +65,22 @@ void BM_TrimToursThickness(benchmark::State& state) {
 }
 BENCHMARK(BM_TrimToursThickness)->Unit(benchmark::kMillisecond);
 
-/// Argument 0: the paper's axes (no clearance, only its detection pass); 1: the axis clearance.
-void BM_PlanToolpath(benchmark::State& state) {
-  const Bunny& b = bunny();
+/// Plans the part's toolpath once per iteration; returns the last one (its points counted).
+Toolpath timePlanning(benchmark::State& state, const Bunny& part, const ToolpathOptions& options) {
   Toolpath p;
-  ToolpathOptions options;
-  options.clearance.maxTiltDeg = state.range(0) ? 15.0 : 0.0;
   for (auto _ : state) {
-    p = planToolpath(b.lattice, b.tree, b.order, options);
+    p = planToolpath(part.lattice, part.tree, part.order, options);
     benchmark::DoNotOptimize(p.points.data());
   }
   state.counters["points"] = static_cast<double>(p.points.size());
+  return p;
+}
+
+/// Argument 0: the paper's axes (no clearance, only its detection pass); 1: the axis clearance.
+void BM_PlanToolpath(benchmark::State& state) {
+  ToolpathOptions options;
+  options.clearance.maxTiltDeg = state.range(0) ? 15.0 : 0.0;
+  const Toolpath p = timePlanning(state, bunny(), options);
   state.counters["print_mm"] = p.printLength;
   state.counters["perimeter_mm"] = p.perimeterLength;
   state.counters["air_mm"] = p.airLength;
@@ -125,12 +130,7 @@ void BM_PlanToolpathTourWays(benchmark::State& state) {
   ToolpathOptions options;
   options.nozzle.halfAngleDeg = 30;
   options.retryTourWays = state.range(0) != 0;
-  Toolpath p;
-  for (auto _ : state) {
-    p = planToolpath(part.lattice, part.tree, part.order, options);
-    benchmark::DoNotOptimize(p.points.data());
-  }
-  state.counters["points"] = static_cast<double>(p.points.size());
+  const Toolpath p = timePlanning(state, part, options);
   state.counters["uncleared"] = p.unclearedStations;
   state.counters["reordered_tours"] = p.reorderedTours;
 }
