@@ -158,6 +158,12 @@ void addModelOptions(std::vector<CliOption>& t) {
                      "GLGeodesicDistanceFields.BaseTolerance", &P::GeodesicFields,
                      &vtkGLGeodesicDistanceFields::SetBaseTolerance,
                      &vtkGLGeodesicDistanceFields::GetBaseTolerance));
+  t.push_back(number("--base-flat-band", "MM", gdf,
+                     "lowest: also the faces facing down within --base-angle up to MM above\n"
+                     "the lowest point (a near-flat bottom that is not level); 0 = off",
+                     "GLGeodesicDistanceFields.BaseFlatBand", &P::GeodesicFields,
+                     &vtkGLGeodesicDistanceFields::SetBaseFlatBand,
+                     &vtkGLGeodesicDistanceFields::GetBaseFlatBand));
   t.push_back(number("--base-angle", "DEG", gdf,
                      "max angle between a base face's outward normal and -z",
                      "GLGeodesicDistanceFields.BaseFaceAngle", &P::GeodesicFields,

@@ -110,6 +110,7 @@ void GLPrintPipeline::MatchOrientationToPrint() {
   this->Orientation->SetRefineLatticeWidth(
       std::min(this->LatticeInfill->GetAlphaWidth(), this->LatticeInfill->GetBetaWidth()));
   this->Orientation->SetRefineStrategy(this->Sequencer->GetStrategy());
+  this->Orientation->SetBaseFlatBand(this->GeodesicFields->GetBaseFlatBand());
   this->Orientation->SetMaxAxisTilt(this->Planner->GetMaxAxisTilt());
   if (this->RobotGate) {  // sides too tall for the robot cell rank last
     this->Orientation->SetMaxHeight(this->ScriptWriter->TallestPart());

@@ -253,6 +253,7 @@ void vtkGLAutoOrient::PrintSelf(ostream& os, vtkIndent indent) {
   os << indent << "RefineCandidates: " << this->Options.refineCandidates << "\n";
   os << indent << "RefineLayerInterval: " << this->Options.refineLayerInterval << " mm\n";
   os << indent << "RefineLatticeWidth: " << this->Options.refineLatticeWidth << " mm\n";
+  os << indent << "BaseFlatBand: " << this->Options.baseFlatBand << " mm\n";
   os << indent << "RefineStrategy: " << this->GetRefineStrategy() << "\n";
   os << indent << "MaxAxisTilt: " << this->Options.maxTiltDeg << " deg\n";
   os << indent << "CandidateRank: " << this->CandidateRank << "\n";

@@ -142,6 +142,12 @@ public:
   ///@}
 
   ///@{
+  /// The base's flat band of the scoring (mm, default 0.6 = GL Geodesic Distance Fields' Base
+  /// Flat Band, >= 0): downward faces this close to the lowest point start the layers too.
+  vtkGLOptionMacro(BaseFlatBand, double, baseFlatBand);
+  ///@}
+
+  ///@{
   /// Layer interval of that refinement (mm, default 0.6 = the slicer's default, > 0).
   vtkGLOptionMacro(RefineLayerInterval, double, refineLayerInterval);
   ///@}

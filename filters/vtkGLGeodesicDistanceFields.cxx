@@ -64,6 +64,7 @@ vtkGLGeodesicDistanceFields::vtkGLGeodesicDistanceFields() : Cache(new SolverCac
   const geolattice::BaseOptions base;
   this->SourceMode = LOWEST_Z;
   this->BaseTolerance = base.tolerance;
+  this->BaseFlatBand = base.flatBand;
   this->BaseFaceAngle = base.maxFaceAngleDeg;
   for (int k = 0; k < 3; ++k) {
     this->ReferenceVector[k] = fields.reference[k];
@@ -84,6 +85,10 @@ int vtkGLGeodesicDistanceFields::RequestInformation(vtkInformation*, vtkInformat
     if (!(this->BaseTolerance >= 0) || !std::isfinite(this->BaseTolerance)) {
       throw geolattice::GeoLatticeError("base tolerance must be >= 0 mm (got " +
                                         std::to_string(this->BaseTolerance) + ")");
+    }
+    if (!(this->BaseFlatBand >= 0) || !std::isfinite(this->BaseFlatBand)) {
+      throw geolattice::GeoLatticeError("base flat band must be >= 0 mm (got " +
+                                        std::to_string(this->BaseFlatBand) + ")");
     }
   });
 }
@@ -140,7 +145,8 @@ int vtkGLGeodesicDistanceFields::RequestData(vtkInformation*, vtkInformationVect
         sources = gl::sourcesFromDownwardFaces(mesh, cache.Solver->topology(), this->BaseFaceAngle);
         break;
       default:
-        sources = gl::sourcesNearLowestZ(mesh, this->BaseTolerance);
+        sources = gl::sourcesNearLowestZ(mesh, this->BaseTolerance, cache.Solver->topology(),
+                                         this->BaseFlatBand, this->BaseFaceAngle);
     }
     cache.ProgressLo = 0.6;
     cache.ProgressHi = 0.95;
@@ -198,6 +204,7 @@ void vtkGLGeodesicDistanceFields::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "SourceMode: " << this->SourceMode << "\n";
   os << indent << "BaseTolerance: " << this->BaseTolerance << " mm\n";
+  os << indent << "BaseFlatBand: " << this->BaseFlatBand << " mm\n";
   os << indent << "BaseFaceAngle: " << this->BaseFaceAngle << " deg\n";
   os << indent << "TimeFactor: " << this->Options.timeFactor << "\n";
   os << indent << "ReferenceVector: " << this->ReferenceVector[0] << " " << this->ReferenceVector[1]

@@ -25,6 +25,9 @@
  *     DOWNWARD_FACES (vertices of boundary faces whose outward normal is within BaseFaceAngle
  *     degrees of -z).
  *   - BaseTolerance (mm, default 0.05), BaseFaceAngle (degrees, default 10).
+ *   - BaseFlatBand (mm, default 0.6): LOWEST_Z also takes the boundary faces facing down within
+ *     BaseFaceAngle that lie within this height of the lowest point (a near-flat bottom that is
+ *     not level starts its layers on the plate, not in a fan from its lowest patch); 0 = off.
  *   - TimeFactor: heat time t = TimeFactor * h^2, h = mean edge length (default 4).
  *   - ReferenceVector: r of Eq. 3 (default 1 0 0). ReferenceParallelAngle (degrees, default 1):
  *     where g_γ is within this angle of ±r, g_α comes from neighbouring tets (counted in
@@ -70,7 +73,15 @@ public:
   ///@}
 
   ///@{
-  /// DOWNWARD_FACES: max angle between a boundary face's outward normal and -z (deg, default 10).
+  /// LOWEST_Z: also the vertices of boundary faces facing down within BaseFaceAngle whose
+  /// vertices all lie within BaseFlatBand of the lowest z (mm, default 0.6; 0 = off).
+  vtkSetMacro(BaseFlatBand, double);
+  vtkGetMacro(BaseFlatBand, double);
+  ///@}
+
+  ///@{
+  /// DOWNWARD_FACES, and LOWEST_Z's flat band: max angle between a boundary face's outward
+  /// normal and -z (deg, default 10).
   vtkSetMacro(BaseFaceAngle, double);
   vtkGetMacro(BaseFaceAngle, double);
   ///@}
@@ -124,6 +135,7 @@ protected:
   geolattice::GeodesicFieldOptions Options;  ///< the parameters, defaults from core
   int SourceMode;
   double BaseTolerance;
+  double BaseFlatBand;
   double BaseFaceAngle;
   double ReferenceVector[3];
   vtkTypeBool UseCholmod;

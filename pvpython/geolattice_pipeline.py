@@ -74,6 +74,7 @@ PARAMETERS = {
     "edge_length": (("tets",), "TargetEdgeLength"),
     "radius_edge": (("tets",), "RadiusEdgeRatio"),
     "base_tolerance": (("fields",), "BaseTolerance"),
+    "base_flat_band": (("fields",), "BaseFlatBand"),
     "time_factor": (("fields",), "TimeFactor"),
     "reference": (("fields",), "ReferenceVector"),
     "turn_reference": (("fields",), "TurnReference"),
@@ -226,6 +227,8 @@ def main(argv=None):
     parser.add_argument("--edge-length", type=float, help="target tet edge length in mm (0 = automatic)")
     parser.add_argument("--base-tolerance", type=float,
                         help="vertices this far above the lowest point are the base, mm")
+    parser.add_argument("--base-flat-band", type=float,
+                        help="faces facing down this far above the lowest point are base too, mm (0 = off)")
     parser.add_argument("--time-factor", type=float, help="heat time factor")
     parser.add_argument("--layer-interval", type=float, help="curved layer interval, mm")
     parser.add_argument("--lattice-width", type=float, help="lattice line spacing, mm")
@@ -238,7 +241,8 @@ def main(argv=None):
     given = dict(scale=args.scale, fit_size=args.fit_size, fill_holes=args.fill_holes,
                  fill_cavities=args.fill_cavities, wrap=args.wrap,
                  edge_length=args.edge_length,
-                 base_tolerance=args.base_tolerance, time_factor=args.time_factor,
+                 base_tolerance=args.base_tolerance, base_flat_band=args.base_flat_band,
+                 time_factor=args.time_factor,
                  layer_interval=args.layer_interval, strategy=args.strategy, nozzle_angle=args.nozzle_angle)
     p = build_pipeline(args.model, lattice_width=args.lattice_width,
                        **{k: v for k, v in given.items() if v is not None})

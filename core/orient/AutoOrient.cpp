@@ -132,7 +132,9 @@ void evaluate(OrientCandidate& c, GeodesicDistanceFields& gdf, const OrientOptio
   // On a pedestal the layers grow from the column's top, the part's lowest vertices up to the
   // column's reach into it.
   const std::vector<int> sources =
-      sourcesNearLowestZ(mesh, c.pedestal > 0 ? o.pedestalContactHeight : o.baseTolerance);
+      c.pedestal > 0 ? sourcesNearLowestZ(mesh, o.pedestalContactHeight)
+                     : sourcesNearLowestZ(mesh, o.baseTolerance, gdf.topology(), o.baseFlatBand,
+                                          BaseOptions{}.maxFaceAngleDeg);
   // γ, α, β do not change under rotation, but the reference vector r of Eq. 3 is fixed in the
   // printing frame: in the placed frame it is Rᵀ r.
   gdf.setReference(c.rotation.transpose() * Vec3::UnitX());
@@ -275,7 +277,7 @@ void OrientOptions::validate() const {
   } else if (!(maxHeight >= 0) || !std::isfinite(maxHeight)) {
     m << "orientation: the maximum height must be >= 0 mm, 0 for none (got " << maxHeight << ")";
   } else if (!(contactHeight > 0) || !(layerInterval > 0) || !(latticeWidth > 0) ||
-             !(sampleSpacing > 0) || !(baseTolerance >= 0)) {
+             !(sampleSpacing > 0) || !(baseTolerance >= 0) || !(baseFlatBand >= 0)) {
     m << "orientation: contact height, layer interval, lattice width and sample spacing must be "
          "> 0 mm and the base tolerance >= 0 mm";
   } else if (evaluationTets < 100) {

@@ -45,6 +45,7 @@
 ///   6. the fewest layers;
 ///   7. the part as placed, then the larger base area.
 /// When no candidate has the base area, the search fails naming the best area found.
+#include "gdf/HeatSources.h"
 #include "lattice/LatticeInfill.h"
 #include "mesh/TetMesh.h"
 #include "nozzle/BuildPlate.h"
@@ -82,7 +83,11 @@ struct OrientOptions {
   double layerInterval = 1.5;  ///< layer spacing of the evaluation (mm, > 0; coarser than printing)
   double latticeWidth = 8.0;   ///< lattice width of the evaluation (mm, > 0)
   double sampleSpacing = 2.0;  ///< material samples of the evaluation's collision check (mm)
-  double baseTolerance = 0.05;  ///< the base: vertices this close to the lowest point (mm)
+  /// The base: vertices this close to the lowest point (mm).
+  double baseTolerance = BaseOptions{}.tolerance;
+  /// The base's near-flat bottom too: downward faces this close to the lowest point (mm, >= 0;
+  /// sourcesNearLowestZ with a flat band), as the print's fields take it.
+  double baseFlatBand = BaseOptions{}.flatBand;
   double overhangThresholdDeg = 135.0;
   PedestalChoice pedestal = PedestalChoice::WhenItHelps;
   double pedestalHeight = 10.0;  ///< height of a pedestal under a candidate (mm, > 0)

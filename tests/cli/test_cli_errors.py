@@ -714,14 +714,20 @@ class CliGateTest(unittest.TestCase):
         self.assertEqual(result.stderr, "")
         self.assertFalse(report["overhang"]["small_base"])
         # The contact is the one the orientation search asks of a side (faces facing down within
-        # half a first layer, 0.3 mm, of the lowest point), not the layers' base vertices (0.05
-        # mm): topopt's uneven underside has 10.8 mm^2 so (its orientation.csv row "keep"), none
-        # on base vertices. It used to be warned of as placed, and when --orient auto chose it.
+        # half a first layer, 0.3 mm, of the lowest point), not the layers' base (0.05 mm and the
+        # 0.6 mm flat band): topopt's uneven underside has 10.8 mm^2 so (its orientation.csv row
+        # "keep"), almost none within 0.05 mm, more within the band. It used to be warned of as
+        # placed, and when --orient auto chose it.
         result, report, programs, out = self.run_cli("topopt_new4_surf.obj", "--until", "layers")
         self.assertEqual(result.returncode, 0, result.stderr)
         self.assertEqual(result.stderr, "")
         self.assertFalse(report["overhang"]["small_base"])
         self.assertGreaterEqual(report["overhang"]["base_contact_mm2"], 10)
+        overhang = report["overhang"]
+        self.assertGreater(overhang["base_area_mm2"], overhang["base_contact_mm2"])
+        result, report, programs, out = self.run_cli("topopt_new4_surf.obj", "--until", "layers",
+                                                     "--base-flat-band", "0")
+        self.assertEqual(result.stderr, "")
         self.assertLess(report["overhang"]["base_area_mm2"], 10)
 
     def test_a_closed_cavity_is_named_in_the_collision_gate(self):

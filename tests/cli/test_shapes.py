@@ -196,22 +196,26 @@ class ShapesMeshTest(unittest.TestCase):
         self.assertEqual(report["toolpath"]["violating_stations"], 0)
 
     def test_a_flat_part_prints_on_its_own_base(self):
-        # The wrench lying flat: the search's best is that side on a 10 mm pedestal (its
-        # evaluation, with the nozzle along the layer normals, counts a few stations on the plate
-        # without one), and the same side without the pedestal is within 1 % of collision-free,
-        # so that one is tried first through the toolpath: it prints, on its own base.
-        out = os.path.join(self.tmp, "wrench-base")
-        result = subprocess.run([CLI, "run", os.path.join(self.tmp, "wrench.obj"), "-o", out, "-q",
-                                 "--orient", "auto", "--until", "toolpath"],
-                                capture_output=True, text=True, timeout=600)
-        self.assertEqual(result.returncode, 0, result.stderr)
-        with open(os.path.join(out, "report.json")) as f:
-            report = json.load(f)
+        # The wrench lying flat: the search's best is that side on its own base, and it prints.
+        report = self.orient_auto("wrench", "wrench-base", "--until", "toolpath")
+        orient = report["orient"]
+        self.assertEqual(orient["chosen_rank"], 0)
+        self.assertNotIn("base_first_rank", orient)
+        self.assertEqual(orient["pedestal_mm"], 0)
+        self.assertNotIn("pedestal", report)  # no pedestal stage ran
+        self.assertEqual(report["toolpath"]["violating_stations"], 0)
+        # With the base only the lowest 0.05 mm (no flat band), the search's evaluation, with the
+        # nozzle along the layer normals, counts a few stations on the plate on that side, so its
+        # best is the side on a 10 mm pedestal; the same side without the pedestal is within 1 %
+        # of collision-free, so that one is tried first through the toolpath: it prints, on its
+        # own base.
+        report = self.orient_auto("wrench", "wrench-base-no-band", "--until", "toolpath",
+                                  "--base-flat-band", "0")
         orient = report["orient"]
         self.assertIn("base_first_rank", orient)
         self.assertEqual(orient["chosen_rank"], orient["base_first_rank"])
         self.assertEqual(orient["pedestal_mm"], 0)
-        self.assertNotIn("pedestal", report)  # no pedestal stage ran
+        self.assertNotIn("pedestal", report)
         self.assertEqual(report["toolpath"]["violating_stations"], 0)
 
     def orient_auto(self, name, out, *args):
@@ -225,18 +229,31 @@ class ShapesMeshTest(unittest.TestCase):
     def test_touching_rings_print_as_placed_without_a_pedestal(self):
         # Two rings lying flat, touching: the search's coarse mesh counts collisions against the
         # placement (forced steps where the rings meet) that the print does not have, and its
-        # best stands the part on a 10 mm pedestal. The placement is tried first: it prints.
+        # best stands the part as placed on a 10 mm pedestal. Without the pedestal it is within
+        # 1 % of collision-free there (48 of 16,943 coarse stations), so that is tried first: it
+        # prints.
         report = self.orient_auto("two_rings", "rings-auto", "--until", "toolpath")
+        orient = report["orient"]
+        self.assertIn("base_first_rank", orient)
+        self.assertEqual(orient["chosen_rank"], orient["base_first_rank"])
+        self.assertEqual(orient["up"], [0, 0, 1])
+        self.assertEqual(orient["pedestal_mm"], 0)
+        self.assertNotIn("pedestal", report)  # no pedestal stage ran
+        self.assertEqual(report["toolpath"]["violating_stations"], 0)
+        # Without the flat band the coarse count as placed is 440 (2.6 %): not the base first,
+        # but the placement first, for a print without a pedestal.
+        report = self.orient_auto("two_rings", "rings-auto-no-band", "--until", "toolpath",
+                                  "--base-flat-band", "0")
         orient = report["orient"]
         self.assertIn("placement_first_rank", orient)
         self.assertEqual(orient["chosen_rank"], orient["placement_first_rank"])
         self.assertEqual(orient["up"], [0, 0, 1])
         self.assertEqual(orient["pedestal_mm"], 0)
-        self.assertNotIn("pedestal", report)  # no pedestal stage ran
         self.assertEqual(report["toolpath"]["violating_stations"], 0)
-        # With one try the search's best is printed as it is: on a pedestal.
+        # With one try the search's best is printed as it is: on a pedestal (the placement
+        # first is a second try).
         report = self.orient_auto("two_rings", "rings-auto-one-try", "--orient-tries", "1",
-                                  "--until", "mesh")
+                                  "--until", "mesh", "--base-flat-band", "0")
         self.assertNotIn("placement_first_rank", report["orient"])
         self.assertGreater(report["orient"]["pedestal_mm"], 0)
 

@@ -180,6 +180,9 @@ TEST(AutoOrient, ThePlateInTheNozzlesWayIsLiftedOnAPedestal) {
   OrientOptions o = fewCandidates(0);
   o.pedestal = PedestalChoice::Never;
   o.maxTiltDeg = 0;  // a toolpath that never tilts: a 30° tilt lifts these off the plate (below)
+  // The flat alone is the base: the coarse ball's first ring of facets round it lies within the
+  // flat band (0.6 mm, within 10° of level) and would start the layers on the plate too.
+  o.baseFlatBand = 0;
   const OrientResult onPlate = searchOrientation(blob, o);
   ASSERT_EQ(onPlate.candidates.size(), 1u);
   const OrientCandidate& keep = onPlate.candidates[0];

@@ -225,6 +225,59 @@ TEST(GeodesicDistanceFields, SourceSelectionsAgreeOnTheBox) {
   EXPECT_THROW(sourcesNearLowestZ(mesh, -1.0), GeoLatticeError);
 }
 
+// A slab whose flat bottom is 2 degrees off level (rising 1.05 mm over its 30 mm): the band's
+// lowest vertices are one edge, and the layers fan out sideways from it; with the flat band the
+// bottom up to 0.6 mm is the base too, and the first layers lie along the bottom.
+TEST(GeodesicDistanceFields, FlatBandTakesABottomThatIsNotLevel) {
+  TetMesh slab = boxTetMesh(Vec3(30, 10, 6), 30, 10, 6);
+  const double tilt = 2.0 * M_PI / 180.0;
+  const Eigen::Matrix3d turn = Eigen::AngleAxisd(-tilt, Vec3::UnitY()).toRotationMatrix();
+  for (Vec3& p : slab.points) {
+    p = turn * p;
+  }
+  const Vec3 up = turn * Vec3::UnitZ();
+  const TetMeshTopology topology(slab);
+  const BaseOptions base;
+  const std::vector<int> edge = sourcesNearLowestZ(slab, base.tolerance);
+  const std::vector<int> bottom =
+      sourcesNearLowestZ(slab, base.tolerance, topology, base.flatBand, base.maxFaceAngleDeg);
+  EXPECT_EQ(sourcesNearLowestZ(slab, base.tolerance, topology, 0.0, base.maxFaceAngleDeg), edge);
+  EXPECT_TRUE(std::includes(bottom.begin(), bottom.end(), edge.begin(), edge.end()));
+  double zmin = slab.points[edge.front()].z();
+  int onBottom = 0;
+  for (int v : bottom) {
+    EXPECT_LE(slab.points[v].z(), zmin + base.flatBand + 1e-9);
+    EXPECT_NEAR(slab.points[v].dot(up), 0.0, 1e-9) << "vertex " << v << " is not on the bottom";
+    onBottom += 1;
+  }
+  // The bottom's vertices of faces lying wholly within 0.6 mm: its columns x = 0..17 mm
+  // (0.6 / sin 2° = 17.2 mm), 11 vertices each; within 0.05 mm, x = 0 and 1 mm.
+  EXPECT_EQ(onBottom, 18 * 11);
+  EXPECT_EQ(edge.size(), 2u * 11u);
+
+  // The first layers' normal over the band: along the slab's up with the flat band, leaning
+  // sideways (a fan from the lowest edge) without it.
+  const auto leanOverBand = [&](const std::vector<int>& sources) {
+    const GeodesicFields f = computeGeodesicDistanceFields(slab, sources);
+    double worst = 0;
+    for (size_t t = 0; t < slab.tets.size(); ++t) {
+      Vec3 c = Vec3::Zero();
+      for (int v : slab.tets[t]) {
+        c += slab.points[v] / 4.0;
+      }
+      const Vec3 local = turn.transpose() * c;  // the slab's own frame
+      if (local.x() > 4 && local.x() < 14 && local.z() < 2) {
+        worst = std::max(worst, std::acos(std::min(1.0, f.gammaDirection[t].dot(up))));
+      }
+    }
+    return worst * 180.0 / M_PI;
+  };
+  EXPECT_LT(leanOverBand(bottom), 10.0);
+  EXPECT_GT(leanOverBand(edge), 30.0);
+  EXPECT_THROW(sourcesNearLowestZ(slab, base.tolerance, topology, -1.0, 10.0), GeoLatticeError);
+  EXPECT_THROW(sourcesNearLowestZ(slab, base.tolerance, topology, 0.6, 200.0), GeoLatticeError);
+}
+
 TEST(GeodesicDistanceFields, BackendsAgree) {
   const TetMesh mesh = boxTetMesh(Vec3(10, 12, 20), 6, 6, 10);
   GeodesicFieldOptions options;
