@@ -84,7 +84,7 @@ int vtkGLPlaceOnPlatform::RequestData(vtkInformation*, vtkInformationVector** in
         const double s =
             gl::placeOnPlatform(gl::Vec3(b[0], b[2], b[4]), gl::Vec3(b[1], b[3], b[5]), options)
                 .scale;
-        wrapped = gl::wrapSurface(surface, options.wrap / s, gl::kDefaultMaxElements);
+        wrapped = gl::wrapSurface(surface, options.wrap / s, gl::kDefaultMaxElements, s);
       }
       if (options.fillCavities) {
         gl::repairSurface(surface);

@@ -12,11 +12,17 @@
 
 namespace geolattice {
 
-SurfaceWrapResult wrapSurface(TriangleSurface& surface, double alpha, double maxTriangles) {
+SurfaceWrapResult wrapSurface(TriangleSurface& surface, double alpha, double maxTriangles,
+                              double mmPerUnit) {
   const auto t0 = std::chrono::steady_clock::now();
+  if (!(mmPerUnit > 0) || !std::isfinite(mmPerUnit)) {
+    std::ostringstream s;
+    s << "wrap: the scale must be > 0 mm per unit (got " << mmPerUnit << ")";
+    throw GeoLatticeError(s.str());
+  }
   if (!(alpha > 0) || !std::isfinite(alpha)) {
     std::ostringstream s;
-    s << "wrap: the resolution (alpha) must be > 0 (got " << alpha << ")";
+    s << "wrap: the resolution (alpha) must be > 0 mm (got " << alpha * mmPerUnit << ")";
     throw GeoLatticeError(s.str());
   }
   requireValidWorkLimit(maxTriangles, "the wrap's size limit");
@@ -34,8 +40,8 @@ SurfaceWrapResult wrapSurface(TriangleSurface& surface, double alpha, double max
   // estimate is for the input's area, which the wrap does not exceed by much.
   const double estimate = area / (0.43 * alpha * alpha);
   std::ostringstream because;
-  because << "for " << std::llround(area) << " mm^2 of surface at a resolution of " << alpha
-          << " mm";
+  because << "for " << std::llround(area * mmPerUnit * mmPerUnit)
+          << " mm^2 of surface at a resolution of " << alpha * mmPerUnit << " mm";
   requireWithinWorkLimit(estimate, maxTriangles, "wrap", "triangles", because.str(),
                          "use a coarser resolution (a larger --wrap), or raise the size limit "
                          "(MaximumElements)");

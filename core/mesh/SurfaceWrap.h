@@ -37,8 +37,11 @@ struct SurfaceWrapResult {
 
 /// Replaces `surface` (any triangle soup with at least one non-degenerate triangle) by its alpha
 /// wrap. alpha in the surface's units (> 0). maxTriangles bounds the wrap's estimated size
-/// (common/WorkLimit.h). Throws GeoLatticeError for alpha <= 0, an empty surface, a wrap
-/// estimated above the limit or an empty wrap.
-SurfaceWrapResult wrapSurface(TriangleSurface& surface, double alpha, double maxTriangles);
+/// (common/WorkLimit.h). mmPerUnit (> 0): millimetres of the printed part per surface unit (the
+/// placement's scale), for the messages, which speak in the user's --wrap mm. Throws
+/// GeoLatticeError for alpha <= 0, an empty surface, a wrap estimated above the limit or an
+/// empty wrap.
+SurfaceWrapResult wrapSurface(TriangleSurface& surface, double alpha, double maxTriangles,
+                              double mmPerUnit = 1.0);
 
 }  // namespace geolattice

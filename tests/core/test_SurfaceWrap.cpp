@@ -77,4 +77,14 @@ TEST(SurfaceWrap, BadInput) {
     EXPECT_NE(std::string(e.what()).find("--wrap"), std::string::npos) << e.what();
   }
   EXPECT_EQ(box.triangles.size(), boxSurface(Vec3(10, 10, 10), 5.0).triangles.size());
+  // In a part scaled 1000 times when placed (metres to mm), the message speaks in mm of it.
+  try {
+    wrapSurface(box, 0.001, 40e6, 1000.0);
+    ADD_FAILURE() << "a wrap of a billion triangles was not refused";
+  } catch (const GeoLatticeError& e) {
+    EXPECT_NE(std::string(e.what()).find("600000000 mm^2 of surface at a resolution of 1 mm"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_THROW(wrapSurface(box, 1.0, 40e6, 0.0), GeoLatticeError);
 }
