@@ -24,9 +24,9 @@
 
 namespace geolattice {
 
-/// The way out named by the errors of surfaces that cannot be meshed as they are.
-inline constexpr const char* kWrapHint =
-    "; or wrap it: GL Place On Platform's Wrap (geolattice run --wrap 1)";
+/// The way out named by the errors of surfaces that cannot be meshed as they are. The CLI turns
+/// the property's name into its flag (apps/CliOptions.h withFlagNames): "--wrap 1 mm in ...".
+inline constexpr const char* kWrapHint = "; or wrap it: Wrap 1 mm in GL Place On Platform";
 
 struct SurfaceWrapResult {
   int inputTriangles = 0;

@@ -98,8 +98,7 @@ TEST(SurfaceCheck, TwoBoxesSharingAnEdgeAreNonManifold) {
       errorOf([&] { requireClosedManifold(both); }),
       "non-manifold surface: 1 edges shared by more than two triangles; the first is between "
       "points 5 and 6, at (1, 1, 0.5). Separate the touching bodies or merge them into one solid "
-      "in the CAD tool (a Boolean union); or wrap it: GL Place On Platform's Wrap (geolattice run "
-      "--wrap 1)");
+      "in the CAD tool (a Boolean union); or wrap it: Wrap 1 mm in GL Place On Platform");
 }
 
 TEST(SurfaceCheck, TriangleFanWithAnEdgeInThreeTrianglesIsNonManifold) {
