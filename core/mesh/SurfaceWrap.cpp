@@ -43,8 +43,7 @@ SurfaceWrapResult wrapSurface(TriangleSurface& surface, double alpha, double max
   because << "for " << std::llround(area * mmPerUnit * mmPerUnit)
           << " mm^2 of surface at a resolution of " << alpha * mmPerUnit << " mm";
   requireWithinWorkLimit(estimate, maxTriangles, "wrap", "triangles", because.str(),
-                         "use a coarser resolution (a larger --wrap), or raise the size limit "
-                         "(MaximumElements)");
+                         "use a coarser resolution (a larger --wrap)");
   std::vector<cgal::Kernel::Point_3> points;
   points.reserve(surface.points.size());
   for (const Vec3& p : surface.points) {

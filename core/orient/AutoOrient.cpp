@@ -279,7 +279,7 @@ void OrientOptions::validate() const {
   } else if (!(contactHeight > 0) || !(layerInterval > 0) || !(latticeWidth > 0) ||
              !(sampleSpacing > 0) || !(baseTolerance >= 0) || !(baseFlatBand >= 0)) {
     m << "orientation: contact height, layer interval, lattice width and sample spacing must be "
-         "> 0 mm and the base tolerance >= 0 mm";
+         "> 0 mm and the base tolerance and flat band >= 0 mm";
   } else if (evaluationTets < 100) {
     m << "orientation: the evaluation mesh needs at least 100 tets (got " << evaluationTets << ")";
   } else if (pedestal != PedestalChoice::Never &&
