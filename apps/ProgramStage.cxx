@@ -55,6 +55,9 @@ int robotRefusedOrientations(const Json& report) {
   return refused;
 }
 
+/// The tilt limit the collision stop suggests where the toolpath used all of a smaller one.
+constexpr double kLargerTiltDeg = 45.0;
+
 }  // namespace
 
 int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
@@ -104,6 +107,13 @@ int runProgramStage(RunSession& run, vtkDataObject* pathCollisions) {
     const char* head = P.Nozzle->GetPrintheadFile();
     if (!head || !*head) {
       hint += std::string(hint.empty() ? "" : " or ") + "--printhead FILE";
+    }
+    // The stations left are those no tilt within the limit clears: a larger limit may (topopt
+    // auto-oriented under the cone: 13 -> 0 stations at 45°; docs/performance.md). Not where
+    // the user turned the tilt off (0: the paper's axes).
+    const double tiltLimit = P.Planner->GetMaxAxisTilt();
+    if (tiltLimit > 0 && tiltLimit < kLargerTiltDeg) {
+      hint += std::string(hint.empty() ? "" : " or ") + "--max-tilt 45";
     }
     std::string pedestalTried;  // when --orient auto printed candidates on a pedestal already
     if (plate > 0 && !P.GetTetMeshInput() &&

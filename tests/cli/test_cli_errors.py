@@ -876,6 +876,8 @@ class CliGateTest(unittest.TestCase):
         self.expect_gate(result, report, programs, out, 4, "collision",
                          ["toolpath collides at", "stations", "see toolpath_collisions.vtp", "--allow-collisions"])
         self.assertGreater(report["toolpath"]["violating_stations"], 0)
+        # The stations left are those no tilt within 30° clears: the stop suggests a larger limit.
+        self.assertIn("--max-tilt 45", result.stderr)
         result, report, programs, out = self.run_cli("y_shape.obj", *args, "--allow-collisions")
         self.assertEqual(result.returncode, 0, result.stderr)
         lines = [l for l in result.stderr.splitlines() if l.strip()]
