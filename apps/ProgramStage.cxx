@@ -55,7 +55,7 @@ int robotRefusedOrientations(const Json& report) {
   return refused;
 }
 
-/// The tilt limit the collision stop suggests where the toolpath used all of a smaller one.
+/// The tilt limit the collision stop suggests where the toolpath's limit is smaller.
 constexpr double kLargerTiltDeg = 45.0;
 
 }  // namespace
